@@ -1,0 +1,37 @@
+"""Shared fixtures: small real YADE scenes of a few blocks."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from yadearch.yade_env import YADE_PY_DIRS
+
+HAS_YADE = any(Path(d, "yade", "__init__.py").is_file() for d in YADE_PY_DIRS)
+needs_yade = pytest.mark.skipif(not HAS_YADE, reason="Debian's yade package is not installed")
+
+
+def box(x0: float, x1: float, y0: float, y1: float, depth: float) -> np.ndarray:
+    """Prism vertices of an axis-aligned x-y rectangle extruded over `depth` along z."""
+    h = depth / 2
+    front = [(x0, y0, -h), (x1, y0, -h), (x1, y1, -h), (x0, y1, -h)]
+    return np.array(front + [(x, y, h) for x, y, _ in front])
+
+
+def stacked_pairs(offsets_x: list[float], width: float, height: float, depth: float,
+                  overlap: float = 0.0):
+    """For each x offset, a base block under y = 0 and a top block above it pressed down by
+    `overlap`; returns an ArchGeometry-like assembly with one horizontal joint per pair."""
+    from yadearch.geometry import ArchGeometry, Joint
+
+    blocks, joints = [], []
+    for k, x in enumerate(offsets_x):
+        blocks.append(box(x - width / 2, x + width / 2, -height, 0.0, depth))
+        blocks.append(box(x - width / 2, x + width / 2, -overlap, height - overlap, depth))
+        joints.append(Joint(k + 1, 2 * k, 2 * k + 1, np.array([x - width / 2, 0.0]),
+                            np.array([x + width / 2, 0.0]), np.array([0.0, 1.0])))
+    return ArchGeometry(blocks, joints, internal_radius=1.0, thickness=width, depth=depth,
+                        embrace_rad=math.pi / 2)

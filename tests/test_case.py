@@ -1,0 +1,59 @@
+"""Case presets, TOML round trip, overrides and one-line validation errors."""
+
+import pytest
+
+from yadearch.case import case_from_dict, load_case, preset
+from yadearch.cli import main
+from yadearch.errors import CaseError
+
+
+def test_presets_carry_the_paper_values():
+    s1, s2 = preset("set1"), preset("set2")
+    assert (s1.interface.kn_N_per_mm3, s2.interface.kn_N_per_mm3) == (0.25, 5.2)
+    assert s1.ks_N_per_mm3 == pytest.approx(0.125) and s2.ks_N_per_mm3 == pytest.approx(2.6)
+    g = s2.geometry
+    assert (g.n_voussoirs, g.embrace_deg, g.internal_radius_mm, g.thickness_mm, g.depth_mm) == (
+        55, 125.0, 300.0, 24.0, 120.0)
+    assert (s2.material.density_g_per_cm3, s2.material.friction_deg) == (1.64, 41.2)
+
+
+def test_toml_round_trip(tmp_path):
+    case = preset("set1").with_overrides({"numerics.damping": 0.3, "n_voussoirs": 11})
+    path = tmp_path / "c.toml"
+    path.write_text(case.to_toml())
+    again = load_case(path)
+    assert again == case
+    assert again.geometry.n_voussoirs == 11 and again.numerics.damping == 0.3
+
+
+@pytest.mark.parametrize("override, message", [
+    ({"kn_N_per_mm3": -1}, "kn_N_per_mm3 must be > 0, got -1"),
+    ({"embrace_deg": 200}, "embrace_deg must be in (0, 180], got 200"),
+    ({"n_voussoirs": 2.5}, "n_voussoirs must be an integer, got 2.5"),
+    ({"damping": 1.0}, "damping must be in [0, 1), got 1.0"),
+    ({"friction_deg": "steep"}, "friction_deg must be a number, got 'steep'"),
+])
+def test_bad_values_give_one_line_errors(override, message):
+    with pytest.raises(CaseError) as info:
+        preset("set2").with_overrides(override)
+    assert str(info.value) == message
+
+
+def test_unknown_keys_are_refused():
+    with pytest.raises(CaseError, match="unknown parameter"):
+        preset("set2").with_overrides({"kn": 3})
+    with pytest.raises(CaseError, match="unknown parameter"):
+        case_from_dict({"interface": {"kn": 3}})
+
+
+def test_cli_reports_bad_input_in_one_line_without_traceback(capsys):
+    code = main(["run", "--preset", "set2", "--kn", "-1"])
+    err = capsys.readouterr().err
+    assert code != 0
+    assert err.strip() == "error: kn_N_per_mm3 must be > 0, got -1.0"
+
+
+def test_cli_reports_a_missing_case_file(capsys, tmp_path):
+    code = main(["run", "--case", str(tmp_path / "nope.toml")])
+    assert code != 0
+    assert "does not exist" in capsys.readouterr().err

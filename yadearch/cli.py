@@ -1,0 +1,125 @@
+"""The `yadearch` command line: run cases, reproduce the paper, list parameters."""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from typing import Any
+
+import click
+
+from .case import ArchCase, load_case, parameter_docs, preset
+from .errors import YadearchError
+from .process import run_case_process
+
+
+def _parse_value(text: str) -> Any:
+    """A `--set` value: TOML scalar syntax (numbers, true/false, quoted strings) or a bare string."""
+    import tomllib
+
+    try:
+        return tomllib.loads(f"v = {text}")["v"]
+    except tomllib.TOMLDecodeError:
+        return text
+
+
+def resolve_case(preset_name: str | None, case_file: str | None, kn: float | None,
+                 settings: tuple[str, ...]) -> ArchCase:
+    """The case from a preset or a TOML file, with `--kn` and `--set key=value` overrides applied."""
+    if preset_name and case_file:
+        raise click.UsageError("give either --preset or --case, not both")
+    case = load_case(case_file) if case_file else preset(preset_name or "set2")
+    overrides: dict[str, Any] = {}
+    for item in settings:
+        if "=" not in item:
+            raise click.UsageError(f"--set expects key=value, got {item!r}")
+        key, value = item.split("=", 1)
+        overrides[key.strip()] = _parse_value(value.strip())
+    if kn is not None:
+        overrides["interface.kn_N_per_mm3"] = kn
+    return case.with_overrides(overrides) if overrides else case
+
+
+def _report_summary(out: Path) -> None:
+    summary = json.loads((out / "summary.json").read_text())
+    du = summary["du_mm"]
+    hinges = " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"])
+    click.echo(f"{summary['name']}: du = {'no collapse' if du is None else f'{du:.2f} mm'}, "
+               f"hinges at collapse {hinges or '-'}, {summary['steps']} steps, "
+               f"{summary['wall_s']:.0f} s -> {out}")
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(package_name="yadearch")
+def cli() -> None:
+    """Masonry arches on moving supports, simulated with YADE (polyhedral blocks, dry joints)."""
+
+
+case_options = [
+    click.option("--preset", "preset_name", type=click.Choice(["set1", "set2"]),
+                 help="paper arch with the kn of voussoir set 1 (0.25 N/mm3) or set 2 (5.2 N/mm3)"),
+    click.option("--case", "case_file", type=click.Path(dir_okay=False), help="case TOML file"),
+    click.option("--kn", type=float, help="interface normal stiffness kn (N/mm3)"),
+    click.option("--set", "settings", multiple=True, metavar="KEY=VALUE",
+                 help="override any parameter, e.g. --set numerics.damping=0.3 (see `yadearch params`)"),
+]
+
+
+def with_case_options(func: Any) -> Any:
+    for option in reversed(case_options):
+        func = option(func)
+    return func
+
+
+@cli.command()
+@with_case_options
+@click.option("--name", help="run name (default: the preset's or case's)")
+@click.option("--out", type=click.Path(file_okay=False), help="run folder (default runs/NAME)")
+def run(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
+        name: str | None, out: str | None) -> None:
+    """Run one case to collapse and write its run folder."""
+    case = resolve_case(preset_name, case_file, kn, settings)
+    if name:
+        case.name = name
+    folder = Path(out or Path("runs") / case.name)
+    run_case_process(case, folder)
+    _report_summary(folder)
+
+
+@cli.command()
+@click.option("--out", type=click.Path(file_okay=False), default="reports", show_default=True,
+              help="folder that receives set1/ and set2/")
+def reproduce(out: str) -> None:
+    """Run both paper cases (set1, set2) into OUT/set1 and OUT/set2."""
+    for name in ("set1", "set2"):
+        folder = Path(out) / name
+        run_case_process(preset(name), folder)
+        _report_summary(folder)
+
+
+@cli.command()
+def params() -> None:
+    """List every case parameter with its default and meaning."""
+    for qualified, default, doc in parameter_docs():
+        click.echo(f"{qualified:40s} {default:>10s}  {doc}")
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point: user mistakes and failed runs end in one line and a non-zero exit code."""
+    try:
+        cli.main(args=argv, standalone_mode=False)
+    except click.exceptions.Abort:
+        click.echo("aborted", err=True)
+        return 130
+    except click.ClickException as exc:
+        exc.show()
+        return exc.exit_code
+    except YadearchError as exc:
+        click.echo(f"error: {exc}", err=True)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

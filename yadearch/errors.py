@@ -1,0 +1,17 @@
+"""Errors that mean a user mistake or an unusable environment: the CLI prints them as one line."""
+
+
+class YadearchError(Exception):
+    """Base of the errors the CLI reports as one line, without a traceback."""
+
+
+class CaseError(YadearchError, ValueError):
+    """A case parameter is unknown or outside its accepted range."""
+
+
+class YadeMissingError(YadearchError):
+    """YADE cannot be imported in this Python."""
+
+
+class RunFailedError(YadearchError):
+    """A simulation process failed (crash, NaN, timeout)."""

@@ -1,0 +1,71 @@
+"""Per-interface kinematics in pure numpy: relative rotation, intrados/extrados opening and where the
+contact force sits across each joint, from the rigid-body states of the blocks.
+
+A material point X of block b (undeformed position) is now at pos_b + Rz(rot_b) (X - pos0_b): blocks
+move in the x-y plane and rotate about z only.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .geometry import ArchGeometry
+
+
+@dataclass(frozen=True)
+class JointState:
+    """Arrays over the n+1 interfaces (index k = interface k+1), SI units.
+
+    opening_*: gap normal to the joint at its intrados / extrados end (m, > 0 open, < 0 overlap);
+    rotation: rotation of the right block minus the left block (rad, > 0 counter-clockwise);
+    force_position: contact-force point across the joint, 0 = intrados, 1 = extrados (NaN if none).
+    """
+
+    rotation: np.ndarray
+    opening_intrados: np.ndarray
+    opening_extrados: np.ndarray
+    force_position: np.ndarray
+
+
+def _rotate(vectors: np.ndarray, angles: np.ndarray) -> np.ndarray:
+    c, s = np.cos(angles), np.sin(angles)
+    x, y = vectors[..., 0], vectors[..., 1]
+    return np.stack([c * x - s * y, s * x + c * y], axis=-1)
+
+
+def joint_states(geometry: ArchGeometry, pos0: np.ndarray, pos: np.ndarray, rot: np.ndarray,
+                 contact_points: np.ndarray) -> JointState:
+    """Kinematics of every joint; `pos0`, `pos` (n_blocks, >=2), `rot` (n_blocks,) in geometry
+    order, `contact_points` (n_joints, 2) with NaN rows for joints without contact."""
+    left = np.array([j.left for j in geometry.joints])
+    right = np.array([j.right for j in geometry.joints])
+    intrados = np.array([j.intrados for j in geometry.joints])
+    extrados = np.array([j.extrados for j in geometry.joints])
+    normals = np.array([j.normal for j in geometry.joints])
+
+    def placed(points: np.ndarray, blocks: np.ndarray) -> np.ndarray:
+        return pos[blocks, :2] + _rotate(points - pos0[blocks, :2], rot[blocks])
+
+    a_in, a_ex = placed(intrados, left), placed(extrados, left)
+    b_in, b_ex = placed(intrados, right), placed(extrados, right)
+    normal_now = _rotate(normals, rot[left])
+    across = a_ex - a_in
+    position = np.einsum("ij,ij->i", contact_points - a_in, across) / np.einsum("ij,ij->i", across, across)
+    return JointState(
+        rotation=rot[right] - rot[left],
+        opening_intrados=np.einsum("ij,ij->i", b_in - a_in, normal_now),
+        opening_extrados=np.einsum("ij,ij->i", b_ex - a_ex, normal_now),
+        force_position=position,
+    )
+
+
+def block_outlines(geometry: ArchGeometry, pos0: np.ndarray, pos: np.ndarray,
+                   rot: np.ndarray) -> list[np.ndarray]:
+    """Current x-y outline (front face) of every block, for drawing the deformed arch."""
+    outlines = []
+    for b, vertices in enumerate(geometry.blocks):
+        front = vertices[: len(vertices) // 2, :2]
+        outlines.append(pos[b, :2] + _rotate(front - pos0[b, :2], np.full(len(front), rot[b])))
+    return outlines

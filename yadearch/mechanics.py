@@ -1,0 +1,88 @@
+"""Contact mechanics of the dry joints, in pure Python: the mapping from the paper's interface
+stiffnesses to YADE's volumetric law, the shear stiffness per contact, and the time step.
+
+Normal: the volumetric law gives F = kn_yade * V; for faces pressed by an approach u over an area A,
+V = A u, so the joint pressure is kn_yade * u: kn_yade [N/m^3] is exactly the interface kn.
+Shear: the shear force grows by ks_yade * (shear displacement), so ks_yade is a force per length (N/m):
+ks_yade = ks [N/m^3] * depth * (compressed length of the joint), see `compressed_length`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from . import units
+from .case import ArchCase
+from .geometry import ArchGeometry
+
+
+@dataclass(frozen=True)
+class ContactStiffness:
+    """SI stiffnesses of a joint: `kn` (N/m^3, per unit area), `ks` (N/m^3, per unit area)."""
+
+    kn: float
+    ks: float
+    tan_friction: float
+
+    @property
+    def material_young(self) -> float:
+        """`young` to give both YADE materials so that Ip2's harmonic mean young/2 equals kn."""
+        return 2.0 * self.kn
+
+
+def effective_kn_N_per_mm3(case: ArchCase, voussoir_width_mm: float) -> float:
+    """Interface kn, optionally in series with the blocks' axial stiffness E / width.
+
+    Two half-blocks of width w/2 on each side of a joint act as springs E/(w/2) per unit area in
+    series, i.e. E/w together; rigid blocks (the default) leave kn unchanged.
+    """
+    kn = case.interface.kn_N_per_mm3
+    if not case.material.block_elasticity:
+        return kn
+    block = case.material.young_MPa / voussoir_width_mm  # MPa/mm = N/mm^3
+    return 1.0 / (1.0 / kn + 1.0 / block)
+
+
+def contact_stiffness(case: ArchCase, geometry: ArchGeometry) -> ContactStiffness:
+    """SI joint stiffnesses for a case; ks keeps the ratio ks/kn of the case."""
+    width_mm = units.to_mm(voussoir_width(geometry))
+    kn = units.stiffness_per_volume(effective_kn_N_per_mm3(case, width_mm))
+    return ContactStiffness(kn=kn, ks=kn * case.interface.ks_over_kn,
+                            tan_friction=math.tan(units.radians(case.material.friction_deg)))
+
+
+def voussoir_width(geometry: ArchGeometry) -> float:
+    """Voussoir width along the arch at mid-thickness (m)."""
+    mid_radius = geometry.internal_radius + geometry.thickness / 2.0
+    return 2.0 * mid_radius * math.sin(geometry.embrace_rad / geometry.n_voussoirs / 2.0)
+
+
+def compressed_length(offset_from_intrados: float, joint_length: float) -> float:
+    """Length of the compressed zone of a joint from where its contact force sits (m).
+
+    A joint that rotates about one edge carries a triangular pressure whose resultant sits at a third
+    of the compressed length from that edge, so the length is three times the distance of the
+    resultant from the nearer edge, capped at the full joint (uniform or trapezoidal pressure).
+    """
+    position = min(max(offset_from_intrados, 0.0), joint_length)
+    edge_distance = min(position, joint_length - position)
+    return min(joint_length, 3.0 * edge_distance)
+
+
+def critical_timestep(case: ArchCase, geometry: ArchGeometry, stiffness: ContactStiffness) -> float:
+    """Critical explicit time step of the stiffest joint mode of a voussoir between its two joints (s).
+
+    A voussoir of mass m and polar inertia J sits between two joints of area A = t*d: translation
+    stiffness 2*kn*A, rocking stiffness 2*kn*d*t^3/12. In a chain of such blocks the highest mode
+    reaches sqrt(2) times this single-block frequency; dt_crit = 2/omega_max.
+    """
+    t, d = geometry.thickness, geometry.depth
+    w = voussoir_width(geometry)
+    rho = units.density(case.material.density_g_per_cm3)
+    mass = rho * t * w * d
+    inertia = mass * (t * t + w * w) / 12.0
+    k_translation = 2.0 * stiffness.kn * t * d
+    k_rocking = 2.0 * stiffness.kn * d * t**3 / 12.0
+    omega = math.sqrt(2.0) * max(math.sqrt(k_translation / mass), math.sqrt(k_rocking / inertia))
+    return 2.0 / omega

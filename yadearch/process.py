@@ -1,0 +1,44 @@
+"""Launch one simulation in its own Python process and report its outcome."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+from .case import ArchCase
+from .errors import RunFailedError, YadeMissingError
+from .rundir import LOG_FILE, SUMMARY_FILE
+from .yade_env import YADE_PY_DIRS
+
+
+def check_yade_installed() -> None:
+    """Fail early, in one line, when Debian's YADE is not installed."""
+    if not any(Path(d, "yade", "__init__.py").is_file() for d in YADE_PY_DIRS):
+        raise YadeMissingError("YADE is not installed (no yade package under "
+                               f"{' or '.join(YADE_PY_DIRS)}); run `sudo apt-get install -y yade` "
+                               "or `bash scripts/setup.sh`")
+
+
+def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
+                     quiet: bool = False) -> Path:
+    """Run `case` in a child process writing `out`; raise RunFailedError with the reason if it fails."""
+    check_yade_installed()
+    out.mkdir(parents=True, exist_ok=True)
+    case_file = out / "case.toml"
+    case_file.write_text(case.to_toml())
+    (out / SUMMARY_FILE).unlink(missing_ok=True)
+    env = dict(os.environ, OMP_NUM_THREADS=str(case.numerics.threads))
+    cmd = [sys.executable, "-m", "yadearch.simulate", str(case_file), str(out)]
+    try:
+        proc = subprocess.run(cmd, env=env, timeout=timeout_s, text=True,
+                              stdout=subprocess.DEVNULL if quiet else None, stderr=subprocess.PIPE)
+    except subprocess.TimeoutExpired:
+        raise RunFailedError(f"run {case.name!r} timed out after {timeout_s:.0f} s") from None
+    if proc.returncode != 0 or not (out / SUMMARY_FILE).is_file():
+        lines = [line for line in proc.stderr.splitlines()
+                 if line.strip() and not line.startswith(("Using python", "<WARNING>"))]
+        reason = lines[-1] if lines else f"exit code {proc.returncode}"
+        raise RunFailedError(f"run {case.name!r} failed: {reason} (see {out / LOG_FILE})")
+    return out

@@ -1,0 +1,25 @@
+"""Where a result came from: versions and the git revision of the code that produced it."""
+
+from __future__ import annotations
+
+import subprocess
+from pathlib import Path
+
+from . import __version__
+
+
+def git_revision() -> str | None:
+    """The git commit of the yadearch source tree (with '+dirty' if modified), or None."""
+    root = Path(__file__).resolve().parent.parent
+    try:
+        rev = subprocess.run(["git", "rev-parse", "--short=12", "HEAD"], cwd=root, capture_output=True,
+                             text=True, check=True).stdout.strip()
+        dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no", "--", "yadearch"],
+                               cwd=root, capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    return rev + ("+dirty" if dirty else "")
+
+
+def provenance(yade_version: str) -> dict[str, str | None]:
+    return {"yade_version": yade_version, "yadearch_version": __version__, "git_revision": git_revision()}

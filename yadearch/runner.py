@@ -1,0 +1,511 @@
+"""Run a case in YADE: self-weight, then the support settlement, then the search for du.
+
+Collapse criterion (rate-independent by construction): du is the smallest support displacement at
+which the arch, with the support held still, cannot find equilibrium. Continuous loading at
+`settlement_rate_mm_per_s` only locates collapse roughly (a block moving `trigger_speed_ratio` times
+faster than the support, or four open hinges); the runner then goes back to the last saved state
+that holds equilibrium and brackets du with hold tests (support fixed: equilibrium = unbalanced force
+below `equilibrium_tolerance`; no equilibrium = a block moves `runaway_mm` or `hold_max_s` passes)
+until the bracket is narrower than `du_tolerance_mm`. du is the bracket's midpoint.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from . import units
+from .case import ArchCase
+from .errors import RunFailedError
+from .hinges import Hinge, hinges_at
+from .joints import joint_states
+from .scene import CALLBACK_NAME, ArchScene, body_states, build_scene
+
+CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, trigger, records)
+FOUR_HINGE_OPENING_MM = 0.5
+STILL_SPEED_FRACTION = 1e-3  # blocks slower than this fraction of the loading speed are at rest  # four joints open by this much also start the du search
+
+
+class SupportDriver:
+    """Moves the driven support towards a target displacement with a trapezoidal speed profile
+    (accelerate over `ramp` of travel, cruise, decelerate to stop exactly on target)."""
+
+    def __init__(self, scene: ArchScene, direction: np.ndarray, speed: float, ramp: float):
+        self.scene = scene
+        self.direction = direction
+        self.speed = speed
+        self.accel = speed * speed / (2.0 * ramp) if ramp > 0 else math.inf
+        self.target = 0.0
+        self.current_speed = 0.0
+        self.origin = np.zeros(3)
+        self._state = None
+
+    def bind(self) -> None:
+        """(Re)attach to the support body (after a scene reload)."""
+        from yade import O
+
+        self._state = O.bodies[self.scene.right_support].state
+
+    def zero_here(self) -> None:
+        """Measure displacements from the support's current position and stop it there."""
+        self.origin = np.array(self._state.pos)
+        self.target = 0.0
+
+    def displacement(self) -> float:
+        """Support displacement along the loading direction since `origin` (m)."""
+        return float(np.dot(np.array(self._state.pos) - self.origin, self.direction))
+
+    def step(self) -> None:
+        """Set the support velocity for this step (called every step before the integrator)."""
+        from yade import O
+
+        remaining = self.target - self.displacement()
+        dt = O.dt
+        if remaining <= 0.0:
+            speed = 0.0
+        else:
+            speed = min(self.speed, self.current_speed + self.accel * dt,
+                        math.sqrt(2.0 * self.accel * remaining), remaining / dt)
+        self.current_speed = speed
+        v = speed * self.direction
+        self._state.vel = (float(v[0]), float(v[1]), 0.0)
+
+    def reached(self) -> bool:
+        return self.target - self.displacement() <= 1e-12
+
+
+@dataclass
+class Records:
+    """Everything the run folder gets: time series rows, per-interface rows, events, snapshots."""
+
+    series: list[dict] = field(default_factory=list)
+    joints: list[dict] = field(default_factory=list)
+    events: list[str] = field(default_factory=list)
+    snapshots: dict[str, dict] = field(default_factory=dict)
+
+
+@dataclass
+class RunResult:
+    case: ArchCase
+    records: Records
+    summary: dict
+
+
+class Runner:
+    """Drives one scene through the stages and records it."""
+
+    def __init__(self, case: ArchCase, log: Callable[[str], None] = print):
+        self.case = case
+        self.num = case.numerics
+        self.log = log
+        self.records = Records()
+        self.scene = build_scene(case)
+        angle = units.radians(case.loading.settlement_direction_deg)
+        direction = np.array([math.cos(angle), math.sin(angle), 0.0])
+        self.driver = SupportDriver(self.scene, direction, units.mm(self.num.settlement_rate_mm_per_s),
+                                    units.mm(self.num.ramp_mm))
+        self._install_driver()
+        self.driver.zero_here()
+        self.stage = "selfweight"
+        self.wall0 = time.time()
+        self.steps_by_stage: dict[str, int] = {}
+        self._next_joint_record = 0.0
+        self._last_series_iter = -10**9
+        self._last_progress = time.time()
+        self._saved: list[tuple[float, str, dict]] = []
+        self.weight = 0.0
+
+    # ---- scene plumbing -------------------------------------------------------------------
+    def _install_driver(self) -> None:
+        from yade import O
+        from yade.wrapper import PyRunner
+
+        import __main__
+
+        setattr(__main__, CALLBACK_NAME + "_driver", self.driver)
+        engines = list(O.engines)
+        engines.insert(len(engines) - 1, PyRunner(command=f"{CALLBACK_NAME}_driver.step()",
+                                                  iterPeriod=1))
+        O.engines = engines
+        self.driver.bind()
+
+    def _save(self, name: str) -> dict:
+        """Save YADE's scene and the Python-side state that YADE does not hold."""
+        from yade import O
+
+        O.saveTmp(name)
+        return {"shear": dict(self.scene.shear.shear), "target": self.driver.target,
+                "speed": self.driver.current_speed}
+
+    def _restore(self, name: str, extra: dict) -> None:
+        from yade import O
+
+        O.loadTmp(name)
+        self.scene.shear.shear = dict(extra["shear"])
+        self.scene.shear.bind(self.scene.pos0, self.scene.ori0)
+        self.driver.bind()
+        self.driver.target = extra["target"]
+        self.driver.current_speed = extra["speed"]
+
+    # ---- measurements ---------------------------------------------------------------------
+    def delta(self) -> float:
+        return self.driver.displacement()
+
+    def _voussoir_speeds(self) -> np.ndarray:
+        from yade import O
+
+        return np.array([O.bodies[i].state.vel.norm() for i in self.scene.voussoir_ids])
+
+    def _unbalanced(self) -> float:
+        """YADE's unbalanced force: mean resultant force on the blocks / mean contact force."""
+        from yade import utils
+
+        return float(utils.unbalancedForce())
+
+    def _contacts(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Contact point (n_joints, 2), normal and shear force (n_joints,) of every joint."""
+        from yade import O
+
+        geo = self.scene.geometry
+        ids = self.scene.body_ids
+        points = np.full((len(geo.joints), 2), np.nan)
+        normal = np.zeros(len(geo.joints))
+        shear = np.zeros(len(geo.joints))
+        for k, joint in enumerate(geo.joints):
+            a, b = ids[joint.left], ids[joint.right]
+            inter = O.interactions[a, b] if O.interactions.has(a, b) else None
+            if inter is None or not inter.isReal or inter.geom.penetrationVolume <= 0:
+                continue
+            cp = inter.geom.contactPoint
+            points[k] = (cp[0], cp[1])
+            normal[k] = inter.phys.normalForce.norm()
+            shear[k] = self.scene.shear.shear_force(a, b)
+        return points, normal, shear
+
+    def joint_snapshot(self) -> tuple[dict, list[Hinge]]:
+        """Per-interface state now, and its hinges."""
+        pos, rot = body_states(self.scene)
+        if not np.all(np.isfinite(pos)):
+            raise RunFailedError(f"NaN in block positions at step {self._iter()}")
+        points, normal, shear = self._contacts()
+        js = joint_states(self.scene.geometry, self.scene.pos0, pos, rot, points)
+        hinges = hinges_at(js.opening_intrados, js.opening_extrados, units.mm(self.num.hinge_opening_mm))
+        return {"pos": pos, "rot": rot, "js": js, "normal": normal, "shear": shear}, hinges
+
+    def _iter(self) -> int:
+        from yade import O
+
+        return O.iter
+
+    def _reactions(self) -> tuple[np.ndarray, np.ndarray]:
+        """Forces the left and right supports exert on the arch (N)."""
+        from yade import O
+
+        left = -np.array(O.forces.f(self.scene.left_support))[:2]
+        right = -np.array(O.forces.f(self.scene.right_support))[:2]
+        return left, right
+
+    def _record_series(self, force: bool = False) -> None:
+        from yade import O, utils
+
+        if not force and O.iter - self._last_series_iter < self.num.series_every_steps:
+            return
+        self._last_series_iter = O.iter
+        left, right = self._reactions()
+        crown = self.scene.geometry.crown_voussoir
+        crown_id = self.scene.body_ids[crown]
+        crown_disp = np.array(O.bodies[crown_id].state.pos) - self.scene.pos0[crown]
+        self.records.series.append({
+            "stage": self.stage, "step": O.iter, "time_s": O.time,
+            "delta_mm": units.to_mm(self.delta()),
+            "left_Rx_N": left[0], "left_Ry_N": left[1], "right_Rx_N": right[0], "right_Ry_N": right[1],
+            "crown_dx_mm": units.to_mm(crown_disp[0]), "crown_dy_mm": units.to_mm(crown_disp[1]),
+            "kinetic_J": utils.kineticEnergy(), "unbalanced": self._unbalanced(),
+            "max_block_speed_mm_per_s": units.to_mm(float(self._voussoir_speeds().max())),
+        })
+
+    def _record_joints(self, label: str | None = None) -> list[Hinge]:
+        snap, hinges = self.joint_snapshot()
+        js = snap["js"]
+        delta_mm = units.to_mm(self.delta())
+        for k in range(len(js.rotation)):
+            self.records.joints.append({
+                "stage": self.stage, "step": self._iter(), "delta_mm": delta_mm, "interface": k + 1,
+                "rotation_rad": js.rotation[k],
+                "opening_intrados_mm": units.to_mm(js.opening_intrados[k]),
+                "opening_extrados_mm": units.to_mm(js.opening_extrados[k]),
+                "force_position": js.force_position[k],
+                "normal_force_N": snap["normal"][k], "shear_force_N": snap["shear"][k],
+            })
+        if label:
+            self.records.snapshots[label] = {
+                "delta_mm": delta_mm, "step": self._iter(),
+                "pos_m": snap["pos"][:, :2].tolist(), "rot_rad": snap["rot"].tolist(),
+                "hinges": [h.to_json() for h in hinges],
+            }
+        return hinges
+
+    def _progress(self, extra: str = "", force: bool = False) -> None:
+        from yade import O
+
+        now = time.time()
+        if not force and now - self._last_progress < self.num.progress_every_s:
+            return
+        self._last_progress = now
+        wall = now - self.wall0
+        rate = O.iter / wall if wall > 0 else 0.0
+        delta = units.to_mm(self.delta())
+        eta = ""
+        if self.stage == "loading" and delta > 0 and self.driver.current_speed > 0:
+            remaining_s = (self.case.loading.max_settlement_mm - delta) / units.to_mm(
+                self.driver.current_speed) / O.dt / max(rate, 1e-9)
+            eta = f" ETA<= {remaining_s / 60:.1f} min"
+        self.log(f"[{self.case.name}] {self.stage:10s} delta={delta:7.2f} mm step={O.iter} "
+                 f"{rate:6.0f} steps/s wall={wall:6.0f} s{eta} {extra}")
+
+    def _run_steps(self, n: int) -> None:
+        from yade import O
+
+        O.run(n, True)
+        self._record_series()
+
+    def _check_finite(self) -> None:
+        from yade import O
+
+        if not all(math.isfinite(c) for i in self.scene.voussoir_ids for c in O.bodies[i].state.pos):
+            raise RunFailedError(f"NaN in block positions at step {O.iter} ({self.stage})")
+
+    # ---- stages ---------------------------------------------------------------------------
+    def selfweight(self) -> dict:
+        """Settle under gravity with the supports still until equilibrium; zero du's origin there."""
+        from yade import O
+
+        self.stage = "selfweight"
+        start = O.iter
+        max_steps = int(self.num.selfweight_max_s / O.dt)
+        unbalanced = math.inf
+        while O.iter - start < max_steps:
+            self._run_steps(CHECK_EVERY_STEPS)
+            self._check_finite()
+            unbalanced = self._unbalanced()
+            self._progress(f"unbalanced {unbalanced:.2e}")
+            if unbalanced < self.num.equilibrium_tolerance and O.iter - start > 10 * CHECK_EVERY_STEPS:
+                break
+        else:
+            raise RunFailedError(f"no equilibrium under self-weight within {self.num.selfweight_max_s} s "
+                                 f"(unbalanced force ratio {unbalanced:.3g} > "
+                                 f"{self.num.equilibrium_tolerance})")
+        self.driver.zero_here()
+        self.weight = sum(O.bodies[i].state.mass for i in self.scene.voussoir_ids) \
+            * self.case.loading.gravity_m_per_s2
+        self._record_series(force=True)
+        self._record_joints("selfweight")
+        left, right = self._reactions()
+        crown = self.scene.geometry.crown_voussoir
+        info = {
+            "steps": O.iter - start, "unbalanced": unbalanced,
+            "arch_weight_N": self.weight,
+            "vertical_reaction_sum_N": float(left[1] + right[1]),
+            "horizontal_reaction_sum_N": float(left[0] + right[0]),
+            "thrust_N": float(abs(left[0])),
+            "crown_settlement_mm": -units.to_mm(float(O.bodies[self.scene.body_ids[crown]].state.pos[1]
+                                                      - self.scene.pos0[crown][1])),
+        }
+        self.steps_by_stage["selfweight"] = O.iter - start
+        self.log(f"[{self.case.name}] self-weight equilibrium after {info['steps']} steps: "
+                 f"unbalanced {unbalanced:.2e}, reactions {info['vertical_reaction_sum_N']:.3f} N "
+                 f"for a weight of {self.weight:.3f} N, thrust {info['thrust_N']:.3f} N")
+        return info
+
+    def _trigger(self, speed_history: list[float]) -> bool:
+        need = 3
+        return len(speed_history) >= need and min(speed_history[-need:]) > self.num.trigger_speed_ratio
+
+    def load_until_trigger(self) -> float | None:
+        """Continuous settlement, saving states every `probe_step_mm`, until collapse looks near."""
+        from yade import O
+
+        self.stage = "loading"
+        start = O.iter
+        max_delta = units.mm(self.case.loading.max_settlement_mm)
+        self.driver.target = max_delta
+        probe = units.mm(self.num.probe_step_mm)
+        next_save = 0.0
+        ratios: list[float] = []
+        triggered = None
+        while True:
+            O.run(CHECK_EVERY_STEPS, True)
+            self._check_finite()
+            delta = self.delta()
+            self._record_series()
+            if delta >= self._next_joint_record:
+                hinges = self._record_joints()
+                self._next_joint_record += units.mm(self.num.joint_record_every_mm)
+                open_hinges = [h for h in hinges if h.opening > units.mm(FOUR_HINGE_OPENING_MM)]
+                if len(open_hinges) >= 4:
+                    triggered = delta
+                    self.log(f"[{self.case.name}] four open hinges at delta={units.to_mm(delta):.2f} mm: "
+                             + " ".join(f"{h.interface}{h.side}" for h in open_hinges))
+            if delta >= next_save:
+                name = f"loading_{len(self._saved)}"
+                self._saved.append((delta, name, self._save(name)))
+                next_save += probe
+            support_speed = self.driver.current_speed
+            if support_speed >= 0.5 * self.driver.speed:
+                ratios.append(float(self._voussoir_speeds().max()) / support_speed)
+                if triggered is None and self._trigger(ratios):
+                    triggered = delta
+                    self.log(f"[{self.case.name}] block speed {ratios[-1]:.1f}x the support's at "
+                             f"delta={units.to_mm(delta):.2f} mm")
+            self._progress(f"speed ratio {ratios[-1]:.2f}" if ratios else "")
+            if triggered is not None:
+                break
+            if self.driver.reached():
+                break
+        self.steps_by_stage["loading"] = O.iter - start
+        return triggered
+
+    def hold(self, runaway: float | None = None, max_s: float | None = None) -> str:
+        """Keep the support still; 'stable' if equilibrium is found, else 'runaway' or 'timeout'."""
+        from yade import O
+
+        self.driver.target = self.delta()
+        self._stop_blocks()
+        runaway = runaway if runaway is not None else units.mm(self.num.runaway_mm)
+        max_steps = int((max_s if max_s is not None else self.num.hold_max_s) / O.dt)
+        start_pos = np.array([list(O.bodies[i].state.pos) for i in self.scene.voussoir_ids])
+        start = O.iter
+        while O.iter - start < max_steps:
+            self._run_steps(CHECK_EVERY_STEPS)
+            self._check_finite()
+            pos = np.array([list(O.bodies[i].state.pos) for i in self.scene.voussoir_ids])
+            moved = np.linalg.norm(pos - start_pos, axis=1).max()
+            self._progress(f"holding: max block move {units.to_mm(moved):.3f} mm")
+            if moved > runaway:
+                return "runaway"
+            if O.iter - start >= 4 * CHECK_EVERY_STEPS and self.driver.current_speed == 0.0 \
+                    and self._unbalanced() < self.num.equilibrium_tolerance \
+                    and self._voussoir_speeds().max() < STILL_SPEED_FRACTION * self.driver.speed:
+                return "stable"
+        return "timeout"
+
+    def _stop_blocks(self) -> None:
+        """Zero the blocks' velocities: the hold then tests the configuration statically, without
+        kinetic energy from the loading that could carry the arch over a barrier it would not cross."""
+        from yade import O
+
+        for i in self.scene.voussoir_ids:
+            O.bodies[i].state.vel = (0.0, 0.0, 0.0)
+            O.bodies[i].state.angVel = (0.0, 0.0, 0.0)
+
+    def move_to(self, delta: float) -> None:
+        """Move the support to `delta` along the trapezoidal profile."""
+        self.driver.target = delta
+        while not self.driver.reached() or self.driver.current_speed > 0.0:
+            self._run_steps(CHECK_EVERY_STEPS // 5)
+            self._check_finite()
+
+    def find_du(self, triggered: float) -> tuple[float, float, int, dict]:
+        """Bracket du between a state in equilibrium and one without.
+
+        Returns (lo, hi, number of holds, the saved extras of the `search_lo` state)."""
+        from yade import O
+
+        self.stage = "search"
+        start = O.iter
+        holds = 0
+        lo_state = None
+        for delta, name, extra in reversed([s for s in self._saved if s[0] <= triggered]):
+            self._restore(name, extra)
+            holds += 1
+            verdict = self.hold()
+            self.log(f"[{self.case.name}] saved state at delta={units.to_mm(delta):.2f} mm held: {verdict}")
+            if verdict == "stable":
+                lo_state = (self.delta(), "search_lo", self._save("search_lo"))
+                break
+        if lo_state is None:
+            raise RunFailedError("no saved loading state holds equilibrium: collapse happened before "
+                                 "the first saved state; lower settlement_rate_mm_per_s or probe_step_mm")
+        probe = units.mm(self.num.probe_step_mm)
+        hi = None
+        while hi is None:
+            target = lo_state[0] + probe
+            self.move_to(target)
+            holds += 1
+            verdict = self.hold()
+            self.log(f"[{self.case.name}] hold at delta={units.to_mm(target):.2f} mm: {verdict}")
+            if verdict == "stable":
+                lo_state = (self.delta(), "search_lo", self._save("search_lo"))
+            else:
+                hi = target
+            if units.to_mm(lo_state[0]) >= self.case.loading.max_settlement_mm:
+                return lo_state[0], math.inf, holds, lo_state[2]
+        lo = lo_state[0]
+        while hi - lo > units.mm(self.num.du_tolerance_mm):
+            mid = 0.5 * (lo + hi)
+            self._restore("search_lo", lo_state[2])
+            self.move_to(mid)
+            holds += 1
+            verdict = self.hold()
+            self.log(f"[{self.case.name}] hold at delta={units.to_mm(mid):.3f} mm: {verdict}")
+            if verdict == "stable":
+                lo = self.delta()
+                lo_state = (lo, "search_lo", self._save("search_lo"))
+            else:
+                hi = mid
+        self.steps_by_stage["search"] = O.iter - start
+        return lo, hi, holds, lo_state[2]
+
+    def collapse_state(self, hi: float, lo_extra: dict) -> list[Hinge]:
+        """Replay the first unstable step and let the mechanism develop to show its hinges."""
+        from yade import O
+
+        self.stage = "collapse"
+        start = O.iter
+        self._restore("search_lo", lo_extra)
+        self.move_to(hi)
+        self.hold(runaway=10.0 * units.mm(self.num.runaway_mm))
+        hinges = self._record_joints("collapse")
+        self._record_series(force=True)
+        self.steps_by_stage["collapse"] = O.iter - start
+        return hinges
+
+    def run(self) -> dict:
+        """All stages; returns the summary dict (records are in `self.records`)."""
+        from yade import O
+
+        selfweight = self.selfweight()
+        triggered = self.load_until_trigger()
+        summary: dict = {"selfweight": selfweight}
+        if triggered is None:
+            self.log(f"[{self.case.name}] no collapse up to {self.case.loading.max_settlement_mm} mm")
+            summary.update(collapsed=False, du_mm=None, hinges_at_collapse=[], du_bracket_mm=None)
+            hinges = self._record_joints("end")
+        else:
+            lo, hi, holds, lo_extra = self.find_du(triggered)
+            if math.isinf(hi):
+                summary.update(collapsed=False, du_mm=None, hinges_at_collapse=[], du_bracket_mm=None)
+                hinges = self._record_joints("end")
+            else:
+                hinges = self.collapse_state(hi, lo_extra)
+                du = 0.5 * (lo + hi)
+                summary.update(collapsed=True, du_mm=units.to_mm(du),
+                               du_bracket_mm=[units.to_mm(lo), units.to_mm(hi)], holds=holds,
+                               trigger_delta_mm=units.to_mm(triggered))
+                self.log(f"[{self.case.name}] du = {units.to_mm(du):.2f} mm "
+                         f"(no equilibrium at {units.to_mm(hi):.2f}, equilibrium at {units.to_mm(lo):.2f})")
+        summary["hinges_at_collapse"] = [{"interface": h.interface, "side": h.side} for h in hinges] \
+            if summary["collapsed"] else []
+        summary["hinges_detail"] = [h.to_json() for h in hinges]
+        summary["steps"] = O.iter
+        summary["steps_by_stage"] = dict(self.steps_by_stage)
+        summary["dt_s"] = O.dt
+        wall = time.time() - self.wall0
+        summary["wall_s"] = wall
+        summary["steps_per_s"] = O.iter / wall if wall > 0 else None
+        self._progress("done", force=True)
+        return summary

@@ -1,0 +1,79 @@
+"""One simulation in this process: `python -m yadearch.simulate CASE.toml OUT_DIR`.
+
+Each run gets its own process (YADE keeps one global scene per interpreter; a crash must not take a
+campaign down). Exit code 0: run folder complete; 1: the run failed (reason in run.log and stderr).
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+from pathlib import Path
+
+from . import units
+from .case import ArchCase, load_case
+from .errors import YadearchError
+from .provenance import provenance
+from .rundir import LOG_FILE, write_run
+
+
+def simulate(case: ArchCase, out: Path) -> dict:
+    """Run `case` to collapse and write its run folder to `out`; returns the summary."""
+    from .runner import Runner
+    from .yade_env import import_yade
+
+    out.mkdir(parents=True, exist_ok=True)
+    log_file = (out / LOG_FILE).open("w")
+
+    def log(line: str) -> None:
+        stamped = f"{time.strftime('%H:%M:%S')} {line}"
+        print(stamped, flush=True)
+        log_file.write(stamped + "\n")
+        log_file.flush()
+
+    import_yade(case.numerics.threads)
+    import yade.config
+
+    log(f"[{case.name}] kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
+        f"rate={case.numerics.settlement_rate_mm_per_s} mm/s, damping={case.numerics.damping}")
+    runner = Runner(case, log=log)
+    log(f"[{case.name}] dt={runner.scene.dt:.3e} s, {len(runner.scene.body_ids)} bodies")
+    started = time.strftime("%Y-%m-%dT%H:%M:%S")
+    summary: dict = {"name": case.name, "started": started,
+                     "kn_N_per_mm3": case.interface.kn_N_per_mm3, "ks_N_per_mm3": case.ks_N_per_mm3,
+                     "kn_effective_N_per_mm3": runner.scene.stiffness.kn / units.N_PER_MM3,
+                     "collapse_criterion": (
+                         "du = midpoint of the narrowest bracket [last support displacement where the arch "
+                         "holds equilibrium with the support fixed, first where it does not]; "
+                         f"equilibrium: max |F+W|/W per voussoir < {case.numerics.equilibrium_tolerance}; "
+                         f"no equilibrium: a voussoir moves > {case.numerics.runaway_mm} mm or "
+                         f"{case.numerics.hold_max_s} s pass; bracket < {case.numerics.du_tolerance_mm} mm")}
+    summary.update(runner.run())
+    summary.update(provenance(str(yade.config.version)))
+    write_run(out, case.to_toml(), runner.records.series, runner.records.joints,
+              runner.records.snapshots, summary)
+    du = summary["du_mm"]
+    hinges = " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"])
+    log(f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} hinges={hinges or '-'} "
+        f"steps={summary['steps']} wall={summary['wall_s']:.0f} s -> {out}")
+    log_file.close()
+    return summary
+
+
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if len(argv) != 2:
+        print("usage: python -m yadearch.simulate CASE.toml OUT_DIR", file=sys.stderr)
+        return 2
+    try:
+        simulate(load_case(argv[0]), Path(argv[1]))
+    except YadearchError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        with (Path(argv[1]) / LOG_FILE).open("a") as f:
+            f.write(f"FAILED: {exc}\n")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

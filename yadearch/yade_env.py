@@ -1,0 +1,44 @@
+"""Import YADE as a library (never through the `yade` launcher, which opens network ports)."""
+
+from __future__ import annotations
+
+import os
+import sys
+from types import ModuleType
+
+from .errors import YadeMissingError
+
+YADE_PY_DIRS = ("/usr/lib/x86_64-linux-gnu/yade-double/py", "/usr/lib/x86_64-linux-gnu/yade/py")
+
+
+def import_yade(threads: int = 1) -> ModuleType:
+    """Import YADE with `threads` OpenMP threads and its polyhedra chatter silenced.
+
+    OMP_NUM_THREADS must be set before the first import, so call this before anything imports YADE.
+    """
+    os.environ.setdefault("OMP_NUM_THREADS", str(threads))
+    for path in YADE_PY_DIRS:
+        if os.path.isdir(path) and path not in sys.path:
+            sys.path.insert(0, path)
+    try:
+        import yade  # noqa: F401  (registers the C++ classes)
+        import yade.log
+    except ImportError as exc:
+        raise YadeMissingError(
+            f"YADE is not importable from {sys.executable} ({exc}); on Debian run "
+            "`sudo apt-get install -y yade` and use /usr/bin/python3 or a venv with "
+            "--system-site-packages (see README)"
+        ) from None
+    yade.log.setLevel("Polyhedra_support.cpp", yade.log.ERROR)
+    return yade
+
+
+def yade_version() -> str:
+    """The version string of the importable YADE, or 'unavailable'."""
+    try:
+        import_yade()
+        import yade.config
+
+        return str(yade.config.version)
+    except YadeMissingError:
+        return "unavailable"
