@@ -2,7 +2,9 @@
 
 import numpy as np
 
-from yadearch.hinges import hinges_at
+from yadearch.hinges import hinge_rotation, hinges_at
+
+T = 0.024
 
 
 def test_three_hinge_pattern_with_a_spread_hinge():
@@ -10,12 +12,19 @@ def test_three_hinge_pattern_with_a_spread_hinge():
     intrados = np.full(n, -1e-6)
     extrados = np.full(n, -1e-6)
     extrados[3] = 0.8e-3  # I hinge at interface 4 (extrados opens, pivot at intrados)
-    intrados[6], intrados[7], intrados[8] = 0.3e-3, 0.9e-3, 0.4e-3  # spread E hinge 7-8-9
+    intrados[5], intrados[6], intrados[7], intrados[8] = 0.2e-3, 0.5e-3, 0.9e-3, 0.6e-3  # spread E hinge 7-8-9
     intrados[11] = 1.2e-3  # E hinge at the right support
-    hinges = hinges_at(intrados, extrados, 0.2e-3)
+    hinges = hinges_at(hinge_rotation(intrados, extrados, T), 0.2e-3 / T)
     assert [(h.interface, h.side) for h in hinges] == [(4, "I"), (8, "E"), (12, "E")]
     assert hinges[1].interfaces == (7, 8, 9)
 
 
-def test_closed_joints_give_no_hinge():
-    assert hinges_at(np.full(5, -1e-6), np.full(5, 1e-5), 0.2e-3) == []
+def test_a_soft_joint_rotating_by_compression_alone_is_a_hinge():
+    intrados = np.array([-1e-5, -0.30e-3, -1e-5])  # intrados crushed into the joint, extrados closed
+    extrados = np.array([-1e-5, -0.01e-3, -1e-5])
+    hinges = hinges_at(hinge_rotation(intrados, extrados, T), 5e-3)
+    assert [(h.interface, h.side) for h in hinges] == [(2, "I")]
+
+
+def test_uniformly_pressed_joints_give_no_hinge():
+    assert hinges_at(hinge_rotation(np.full(5, -1e-5), np.full(5, -1e-5), T), 1e-3) == []

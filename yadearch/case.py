@@ -82,7 +82,7 @@ class LoadingConfig:
 class NumericsConfig:
     """Numerical settings. None of them is physics: du must not depend on them (scripts/convergence.py)."""
 
-    settlement_rate_mm_per_s: float = field(default=20.0, metadata=_num(0, low_open=True,
+    settlement_rate_mm_per_s: float = field(default=40.0, metadata=_num(0, low_open=True,
                                             doc="support speed during continuous loading (mm/s)"))
     ramp_mm: float = field(default=0.5, metadata=_num(0, doc="support displacement over which the "
                                                            "speed ramps up from zero (mm)"))
@@ -97,6 +97,10 @@ class NumericsConfig:
                                     doc="simulated time allowed for the self-weight stage (s)"))
     hold_max_s: float = field(default=1.0, metadata=_num(0, low_open=True,
                               doc="simulated time allowed to find equilibrium at a fixed support (s)"))
+    hold_min_s: float = field(default=0.1, metadata=_num(0, doc="simulated time a hold lasts at least "
+                                                          "before it may end in equilibrium (s)"))
+    still_speed_mm_per_s: float = field(default=0.5, metadata=_num(0, low_open=True,
+                                        doc="blocks slower than this are at rest (mm/s)"))
     runaway_mm: float = field(default=1.0, metadata=_num(0, low_open=True,
                               doc="block displacement at a fixed support that means no equilibrium (mm)"))
     probe_step_mm: float = field(default=1.0, metadata=_num(0, low_open=True,
@@ -105,8 +109,8 @@ class NumericsConfig:
                                    doc="width of the bracket that locates du (mm)"))
     trigger_speed_ratio: float = field(default=3.0, metadata=_num(1, low_open=True,
                                        doc="max block speed / support speed that starts the du search"))
-    hinge_opening_mm: float = field(default=0.2, metadata=_num(0, low_open=True,
-                                    doc="joint opening that counts as a hinge (mm)"))
+    hinge_rotation_mrad: float = field(default=2.0, metadata=_num(0, low_open=True,
+                                       doc="relative joint rotation that counts as a hinge (mrad)"))
     joint_record_every_mm: float = field(default=0.5, metadata=_num(0, low_open=True,
                                          doc="support displacement between per-interface records (mm)"))
     series_every_steps: int = field(default=200, metadata=_num(1, doc="steps between time-series rows"))

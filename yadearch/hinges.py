@@ -1,56 +1,62 @@
-"""Hinges of one state from the joint openings, in pure numpy.
+"""Hinges of one state from the joints' relative rotations, in pure numpy.
 
-A joint whose extrados opens pivots about its intrados: an I hinge; intrados open: an E hinge
-(paper's labels: the side of the pivot). Adjacent joints open on the same side form one spread hinge,
-reported by its interfaces and its peak.
+A joint's hinge rotation is (extrados opening - intrados opening) / joint length: positive when the
+extrados opens (or the intrados is the more compressed edge), i.e. the joint pivots about its
+intrados: an I hinge; negative: an E hinge (the paper labels a hinge by the side of its pivot).
+Rotation rather than opening, because soft joints rotate by compressing one edge before the other
+opens. Adjacent joints rotating the same way form one spread hinge, reported with its peak.
 """
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass
 
 import numpy as np
 
 
 @dataclass(frozen=True)
 class Hinge:
-    """One hinge: interfaces it spans (1-based), the peak interface, pivot side and peak opening (m)."""
+    """One hinge: interfaces it spans (1-based), its peak interface, pivot side, peak rotation (rad)."""
 
     interfaces: tuple[int, ...]
     interface: int
     side: str
-    opening: float
+    rotation: float
 
     def to_json(self) -> dict:
-        data = asdict(self)
-        data["interfaces"] = list(self.interfaces)
-        data["opening_mm"] = self.opening * 1e3
-        del data["opening"]
-        return data
+        return {"interface": self.interface, "side": self.side, "interfaces": list(self.interfaces),
+                "rotation_mrad": abs(self.rotation) * 1e3}
 
 
-def hinges_at(opening_intrados: np.ndarray, opening_extrados: np.ndarray,
-              threshold: float) -> list[Hinge]:
-    """Hinges, left to right, of the joints whose larger opening exceeds `threshold` (m)."""
-    sides: list[str | None] = []
-    for gap_in, gap_ex in zip(opening_intrados, opening_extrados):
-        if max(gap_in, gap_ex) <= threshold:
-            sides.append(None)
-        else:
-            sides.append("E" if gap_in > gap_ex else "I")
+def hinge_rotation(opening_intrados: np.ndarray, opening_extrados: np.ndarray,
+                   joint_length: float) -> np.ndarray:
+    """Signed hinge rotation of every joint (rad): > 0 pivots about the intrados (I)."""
+    return (np.asarray(opening_extrados) - np.asarray(opening_intrados)) / joint_length
+
+
+SPREAD_FRACTION = 0.5  # joints beside a hinge's peak rotating at least this fraction of it belong to it
+
+
+def hinges_at(rotation: np.ndarray, threshold: float) -> list[Hinge]:
+    """Hinges, left to right: runs of adjacent joints whose |rotation| exceeds `threshold` (rad)
+    with the same sign, each reported at its peak; the hinge spans the contiguous joints around the
+    peak that rotate at least SPREAD_FRACTION of it (the paper's "29-30-31-32")."""
+    sides = [None if abs(r) <= threshold else ("I" if r > 0 else "E") for r in rotation]
     hinges: list[Hinge] = []
     k = 0
     while k < len(sides):
-        side = sides[k]
-        if side is None:
+        if sides[k] is None:
             k += 1
             continue
         end = k
-        while end + 1 < len(sides) and sides[end + 1] == side:
+        while end + 1 < len(sides) and sides[end + 1] == sides[k]:
             end += 1
-        gaps = opening_intrados if side == "E" else opening_extrados
-        members = range(k, end + 1)
-        peak = max(members, key=lambda m: gaps[m])
-        hinges.append(Hinge(tuple(m + 1 for m in members), peak + 1, side, float(gaps[peak])))
+        peak = max(range(k, end + 1), key=lambda m: abs(rotation[m]))
+        first, last = peak, peak
+        while first > k and abs(rotation[first - 1]) >= SPREAD_FRACTION * abs(rotation[peak]):
+            first -= 1
+        while last < end and abs(rotation[last + 1]) >= SPREAD_FRACTION * abs(rotation[peak]):
+            last += 1
+        hinges.append(Hinge(tuple(range(first + 1, last + 2)), peak + 1, sides[k], float(rotation[peak])))
         k = end + 1
     return hinges

@@ -5,7 +5,8 @@ which the arch, with the support held still, cannot find equilibrium. Continuous
 `settlement_rate_mm_per_s` only locates collapse roughly (a block moving `trigger_speed_ratio` times
 faster than the support, or four open hinges); the runner then goes back to the last saved state
 that holds equilibrium and brackets du with hold tests (support fixed: equilibrium = unbalanced force
-below `equilibrium_tolerance`; no equilibrium = a block moves `runaway_mm` or `hold_max_s` passes)
+below `equilibrium_tolerance` and blocks slower than `still_speed_mm_per_s` after `hold_min_s`;
+no equilibrium = a block moves `runaway_mm` or `hold_max_s` passes)
 until the bracket is narrower than `du_tolerance_mm`. du is the bracket's midpoint.
 """
 
@@ -21,12 +22,12 @@ import numpy as np
 from . import units
 from .case import ArchCase
 from .errors import RunFailedError
-from .hinges import Hinge, hinges_at
+from .hinges import Hinge, hinge_rotation, hinges_at
 from .joints import joint_states
 from .scene import CALLBACK_NAME, ArchScene, body_states, build_scene
 
 CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, trigger, records)
-FOUR_HINGE_OPENING_MM = 0.5
+FOUR_HINGE_ROTATION = 0.5 / 24.0  # four hinges rotating this much (0.5 mm over a 24 mm joint)
 STILL_SPEED_FRACTION = 1e-3  # blocks slower than this fraction of the loading speed are at rest  # four joints open by this much also start the du search
 
 
@@ -113,6 +114,7 @@ class Runner:
         self.stage = "selfweight"
         self.wall0 = time.time()
         self.steps_by_stage: dict[str, int] = {}
+        self.total_steps = 0  # every step computed, including those of states later reloaded
         self._next_joint_record = 0.0
         self._last_series_iter = -10**9
         self._last_progress = time.time()
@@ -193,7 +195,8 @@ class Runner:
             raise RunFailedError(f"NaN in block positions at step {self._iter()}")
         points, normal, shear = self._contacts()
         js = joint_states(self.scene.geometry, self.scene.pos0, pos, rot, points)
-        hinges = hinges_at(js.opening_intrados, js.opening_extrados, units.mm(self.num.hinge_opening_mm))
+        rotation = hinge_rotation(js.opening_intrados, js.opening_extrados, self.scene.geometry.thickness)
+        hinges = hinges_at(rotation, self.num.hinge_rotation_mrad * 1e-3)
         return {"pos": pos, "rot": rot, "js": js, "normal": normal, "shear": shear}, hinges
 
     def _iter(self) -> int:
@@ -257,20 +260,26 @@ class Runner:
             return
         self._last_progress = now
         wall = now - self.wall0
-        rate = O.iter / wall if wall > 0 else 0.0
+        rate = self.total_steps / wall if wall > 0 else 0.0
         delta = units.to_mm(self.delta())
         eta = ""
         if self.stage == "loading" and delta > 0 and self.driver.current_speed > 0:
             remaining_s = (self.case.loading.max_settlement_mm - delta) / units.to_mm(
                 self.driver.current_speed) / O.dt / max(rate, 1e-9)
             eta = f" ETA<= {remaining_s / 60:.1f} min"
-        self.log(f"[{self.case.name}] {self.stage:10s} delta={delta:7.2f} mm step={O.iter} "
+        self.log(f"[{self.case.name}] {self.stage:10s} delta={delta:7.2f} mm step={self.total_steps} "
                  f"{rate:6.0f} steps/s wall={wall:6.0f} s{eta} {extra}")
 
-    def _run_steps(self, n: int) -> None:
+    def _advance(self, n: int) -> None:
+        """Run n steps (the only place that steps the scene, so that steps are counted)."""
         from yade import O
 
         O.run(n, True)
+        self.total_steps += n
+        self.steps_by_stage[self.stage] = self.steps_by_stage.get(self.stage, 0) + n
+
+    def _run_steps(self, n: int) -> None:
+        self._advance(n)
         self._record_series()
 
     def _check_finite(self) -> None:
@@ -315,7 +324,6 @@ class Runner:
             "crown_settlement_mm": -units.to_mm(float(O.bodies[self.scene.body_ids[crown]].state.pos[1]
                                                       - self.scene.pos0[crown][1])),
         }
-        self.steps_by_stage["selfweight"] = O.iter - start
         self.log(f"[{self.case.name}] self-weight equilibrium after {info['steps']} steps: "
                  f"unbalanced {unbalanced:.2e}, reactions {info['vertical_reaction_sum_N']:.3f} N "
                  f"for a weight of {self.weight:.3f} N, thrust {info['thrust_N']:.3f} N")
@@ -327,10 +335,7 @@ class Runner:
 
     def load_until_trigger(self) -> float | None:
         """Continuous settlement, saving states every `probe_step_mm`, until collapse looks near."""
-        from yade import O
-
         self.stage = "loading"
-        start = O.iter
         max_delta = units.mm(self.case.loading.max_settlement_mm)
         self.driver.target = max_delta
         probe = units.mm(self.num.probe_step_mm)
@@ -338,14 +343,14 @@ class Runner:
         ratios: list[float] = []
         triggered = None
         while True:
-            O.run(CHECK_EVERY_STEPS, True)
+            self._advance(CHECK_EVERY_STEPS)
             self._check_finite()
             delta = self.delta()
             self._record_series()
             if delta >= self._next_joint_record:
                 hinges = self._record_joints()
                 self._next_joint_record += units.mm(self.num.joint_record_every_mm)
-                open_hinges = [h for h in hinges if h.opening > units.mm(FOUR_HINGE_OPENING_MM)]
+                open_hinges = [h for h in hinges if abs(h.rotation) > FOUR_HINGE_ROTATION]
                 if len(open_hinges) >= 4:
                     triggered = delta
                     self.log(f"[{self.case.name}] four open hinges at delta={units.to_mm(delta):.2f} mm: "
@@ -366,17 +371,22 @@ class Runner:
                 break
             if self.driver.reached():
                 break
-        self.steps_by_stage["loading"] = O.iter - start
         return triggered
 
     def hold(self, runaway: float | None = None, max_s: float | None = None) -> str:
-        """Keep the support still; 'stable' if equilibrium is found, else 'runaway' or 'timeout'."""
+        """Keep the support still, blocks started from rest.
+
+        'stable': after `hold_min_s`, unbalanced force below tolerance and every block slower than
+        `still_speed_mm_per_s` (a mechanism past its limit point would be accelerating by then);
+        'runaway': a block moved `runaway_mm`; 'timeout': neither within `hold_max_s`."""
         from yade import O
 
         self.driver.target = self.delta()
         self._stop_blocks()
         runaway = runaway if runaway is not None else units.mm(self.num.runaway_mm)
         max_steps = int((max_s if max_s is not None else self.num.hold_max_s) / O.dt)
+        min_steps = int(self.num.hold_min_s / O.dt)
+        still_speed = units.mm(self.num.still_speed_mm_per_s)
         start_pos = np.array([list(O.bodies[i].state.pos) for i in self.scene.voussoir_ids])
         start = O.iter
         while O.iter - start < max_steps:
@@ -387,9 +397,8 @@ class Runner:
             self._progress(f"holding: max block move {units.to_mm(moved):.3f} mm")
             if moved > runaway:
                 return "runaway"
-            if O.iter - start >= 4 * CHECK_EVERY_STEPS and self.driver.current_speed == 0.0 \
-                    and self._unbalanced() < self.num.equilibrium_tolerance \
-                    and self._voussoir_speeds().max() < STILL_SPEED_FRACTION * self.driver.speed:
+            if O.iter - start >= min_steps and self._unbalanced() < self.num.equilibrium_tolerance \
+                    and self._voussoir_speeds().max() < still_speed:
                 return "stable"
         return "timeout"
 
@@ -413,10 +422,7 @@ class Runner:
         """Bracket du between a state in equilibrium and one without.
 
         Returns (lo, hi, number of holds, the saved extras of the `search_lo` state)."""
-        from yade import O
-
         self.stage = "search"
-        start = O.iter
         holds = 0
         lo_state = None
         for delta, name, extra in reversed([s for s in self._saved if s[0] <= triggered]):
@@ -457,22 +463,28 @@ class Runner:
                 lo_state = (lo, "search_lo", self._save("search_lo"))
             else:
                 hi = mid
-        self.steps_by_stage["search"] = O.iter - start
         return lo, hi, holds, lo_state[2]
 
     def collapse_state(self, hi: float, lo_extra: dict) -> list[Hinge]:
-        """Replay the first unstable step and let the mechanism develop to show its hinges."""
-        from yade import O
-
+        """Show the mechanism: from the last equilibrium state, move one probe step past du's
+        bracket and let the arch run away (up to 10 runaway distances) before reading its hinges."""
         self.stage = "collapse"
-        start = O.iter
         self._restore("search_lo", lo_extra)
-        self.move_to(hi)
+        self.move_to(hi + units.mm(self.num.probe_step_mm))
         self.hold(runaway=10.0 * units.mm(self.num.runaway_mm))
         hinges = self._record_joints("collapse")
         self._record_series(force=True)
-        self.steps_by_stage["collapse"] = O.iter - start
         return hinges
+
+    def criterion_text(self) -> str:
+        """The collapse criterion with this case's numbers, for summary.json."""
+        n = self.num
+        return ("du = midpoint of the bracket [last support displacement at which the arch, support "
+                "held still and blocks started from rest, finds equilibrium; first at which it does "
+                f"not], narrowed to < {n.du_tolerance_mm} mm. Equilibrium: after {n.hold_min_s} s, "
+                f"unbalanced force < {n.equilibrium_tolerance} and all blocks slower than "
+                f"{n.still_speed_mm_per_s} mm/s. No equilibrium: a block moves > {n.runaway_mm} mm, "
+                f"or {n.hold_max_s} s pass without equilibrium.")
 
     def run(self) -> dict:
         """All stages; returns the summary dict (records are in `self.records`)."""
@@ -501,11 +513,11 @@ class Runner:
         summary["hinges_at_collapse"] = [{"interface": h.interface, "side": h.side} for h in hinges] \
             if summary["collapsed"] else []
         summary["hinges_detail"] = [h.to_json() for h in hinges]
-        summary["steps"] = O.iter
+        summary["steps"] = self.total_steps
         summary["steps_by_stage"] = dict(self.steps_by_stage)
         summary["dt_s"] = O.dt
         wall = time.time() - self.wall0
         summary["wall_s"] = wall
-        summary["steps_per_s"] = O.iter / wall if wall > 0 else None
+        summary["steps_per_s"] = self.total_steps / wall if wall > 0 else None
         self._progress("done", force=True)
         return summary

@@ -42,12 +42,7 @@ def simulate(case: ArchCase, out: Path) -> dict:
     summary: dict = {"name": case.name, "started": started,
                      "kn_N_per_mm3": case.interface.kn_N_per_mm3, "ks_N_per_mm3": case.ks_N_per_mm3,
                      "kn_effective_N_per_mm3": runner.scene.stiffness.kn / units.N_PER_MM3,
-                     "collapse_criterion": (
-                         "du = midpoint of the narrowest bracket [last support displacement where the arch "
-                         "holds equilibrium with the support fixed, first where it does not]; "
-                         f"equilibrium: max |F+W|/W per voussoir < {case.numerics.equilibrium_tolerance}; "
-                         f"no equilibrium: a voussoir moves > {case.numerics.runaway_mm} mm or "
-                         f"{case.numerics.hold_max_s} s pass; bracket < {case.numerics.du_tolerance_mm} mm")}
+                     "collapse_criterion": runner.criterion_text()}
     summary.update(runner.run())
     summary.update(provenance(str(yade.config.version)))
     write_run(out, case.to_toml(), runner.records.series, runner.records.joints,

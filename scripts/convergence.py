@@ -1,0 +1,75 @@
+"""Numerics must not decide the answer: run a case at the default settlement rate, at half of it,
+and with another damping, and print du, the hinges and the relative differences.
+
+    .venv/bin/python scripts/convergence.py [--preset set2] [--jobs 2] [--out runs/convergence]
+
+Exit code 1 if du moves by more than 1 % or a hinge moves.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+from yadearch.case import preset
+from yadearch.process import run_case_process
+
+TOLERANCE = 0.01
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--preset", default="set2", choices=["set1", "set2"])
+    parser.add_argument("--jobs", type=int, default=2, help="runs at once (one core each)")
+    parser.add_argument("--out", default="runs/convergence")
+    parser.add_argument("--damping", type=float, default=None,
+                        help="the other damping (default: the default damping + 0.1)")
+    args = parser.parse_args()
+
+    base = preset(args.preset)
+    rate, damping = base.numerics.settlement_rate_mm_per_s, base.numerics.damping
+    other_damping = args.damping if args.damping is not None else round(damping + 0.1, 3)
+    variants = {
+        "default": {},
+        "half_rate": {"numerics.settlement_rate_mm_per_s": rate / 2},
+        "other_damping": {"numerics.damping": other_damping},
+    }
+    cases = {}
+    for label, overrides in variants.items():
+        case = base.with_overrides(overrides)
+        case.name = f"{args.preset}_{label}"
+        cases[label] = case
+
+    def run(label: str) -> dict:
+        folder = Path(args.out) / cases[label].name
+        run_case_process(cases[label], folder, quiet=True)
+        return json.loads((folder / "summary.json").read_text())
+
+    with ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        summaries = dict(zip(variants, pool.map(run, variants)))
+
+    def hinges(summary: dict) -> str:
+        return " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"])
+
+    reference = summaries["default"]
+    ok = reference["du_mm"] is not None
+    print(f"{'variant':14s} {'rate mm/s':>9s} {'damping':>7s} {'du mm':>8s} {'rel diff':>9s} "
+          f"{'steps':>8s} {'wall s':>7s}  hinges at collapse")
+    for label, summary in summaries.items():
+        case = cases[label]
+        du = summary["du_mm"]
+        rel = (du - reference["du_mm"]) / reference["du_mm"] if du is not None and ok else float("nan")
+        same = hinges(summary) == hinges(reference)
+        ok = ok and du is not None and abs(rel) <= TOLERANCE and same
+        print(f"{label:14s} {case.numerics.settlement_rate_mm_per_s:9.2f} {case.numerics.damping:7.2f} "
+              f"{du if du is not None else float('nan'):8.2f} {rel:+9.2%} {summary['steps']:8d} "
+              f"{summary['wall_s']:7.0f}  {hinges(summary)}{'' if same else '  (differs)'}")
+    print(f"verdict: {'PASS' if ok else 'FAIL'} (du within {TOLERANCE:.0%} and same hinges)")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

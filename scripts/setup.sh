@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Set up yadearch on Debian 12: YADE and the scientific stack from Debian (one consistent numpy 1.24),
+# then a virtual environment that sees them (--system-site-packages) with yadearch installed editable.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+DEBIAN_PACKAGES=(yade python3-venv python3-pip python3-setuptools python3-numpy python3-pandas
+                 python3-matplotlib python3-scipy python3-click python3-tomli-w python3-tqdm
+                 python3-dask python3-distributed python3-pytest)
+
+missing=()
+for pkg in "${DEBIAN_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+    echo "setup: installing Debian packages: ${missing[*]}"
+    SUDO=""
+    [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+    $SUDO apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+# YADE runs on Debian's /usr/bin/python3 (3.11); the venv is built on it and sees Debian's packages.
+if [ ! -x .venv/bin/python ]; then
+    /usr/bin/python3 -m venv --system-site-packages .venv
+fi
+.venv/bin/python -m pip install -q --no-build-isolation --no-deps -e .
+.venv/bin/python - <<'PY'
+import numpy, pandas, matplotlib, click, tomli_w, dask, distributed  # noqa: F401  the whole stack imports
+from yadearch.yade_env import import_yade
+import_yade()
+import yade.config
+print(f"setup: ok (numpy {numpy.__version__}, YADE {yade.config.version})")
+PY

@@ -1,0 +1,36 @@
+"""The reference study's numbers, copied into the project so that it stands on its own.
+
+Source: "Effect of geometrical imperfections on the response of dry-joint masonry arches to support
+settlements" (1:10 segmental arch, 55 voussoirs; FE micro-model in DIANA), sections 2-4 and Table 1.
+Interfaces are numbered 1..56 from the left support; hinge lists hold every interface the paper names
+(a spread hinge such as "29-30-31-32" lists all four).
+"""
+
+from __future__ import annotations
+
+PAPER = "Effect of geometrical imperfections on the response of dry-joint masonry arches to support settlements"
+
+GEOMETRY = {"n_voussoirs": 55, "embrace_deg": 125.0, "internal_radius_mm": 300.0,
+            "thickness_mm": 24.0, "depth_mm": 120.0, "net_span_mm": 533.0}
+MATERIAL = {"density_g_per_cm3": 1.64, "friction_deg": 41.2, "young_MPa": 941.0, "poisson": 0.2}
+KS_OVER_KN = 0.5
+KN_SENSITIVITY_RANGE_N_PER_MM3 = (0.1, 100.0)  # paper Fig. 8
+
+SETS = {
+    "set1": {
+        "description": "1st set: manually milled moulds, more imperfections",
+        "kn_N_per_mm3": 0.25,
+        "experimental": {"hinge_A": [13], "hinge_B": [32], "hinge_C": [56], "du_mm": 48.9},
+        "numerical": {"hinge_A": [11, 12], "hinge_B": [29, 30, 31, 32], "hinge_C": [56], "du_mm": 48.8},
+        "sequence_at_collapse": "E-I-E-E (D at the left support, extrados)",
+    },
+    "set2": {
+        "description": "2nd set: CNC-machined moulds, accurate voussoirs",
+        "kn_N_per_mm3": 5.2,
+        "experimental": {"hinge_A": [9], "hinge_B": [31], "hinge_C": [56], "du_mm": 91.5},
+        "numerical": {"hinge_A": [9], "hinge_B": [30], "hinge_C": [56], "du_mm": 91.8},
+        "sequence_at_collapse": "E-I-E-E (D at the left support, extrados)",
+    },
+}
+HINGE_SIDES = {"hinge_A": "I", "hinge_B": "E", "hinge_C": "E", "hinge_D": "E"}
+HINGE_D_INTERFACE = 1  # both sets: the fourth hinge opens at the left support, extrados
