@@ -1,0 +1,70 @@
+"""The arch's blocks from a run's case.toml, undeformed and as placed by a snapshot (pure numpy)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ..geometry import ArchGeometry, segmental_arch
+from ..joints import block_outlines
+
+MM = 1e-3
+
+
+def case_geometry(case: dict[str, Any]) -> ArchGeometry:
+    """The SI geometry of the [geometry] section of a run's case.toml (lengths in mm)."""
+    g = case["geometry"]
+    return segmental_arch(int(g["n_voussoirs"]), float(g["embrace_deg"]), g["internal_radius_mm"] * MM,
+                          g["thickness_mm"] * MM, g["depth_mm"] * MM, g["support_length_mm"] * MM)
+
+
+def polygon_centroid(xy: np.ndarray) -> np.ndarray:
+    """Area centroid of a simple polygon given in order (not the vertex mean)."""
+    x, y = xy[:, 0], xy[:, 1]
+    cross = x * np.roll(y, -1) - np.roll(x, -1) * y
+    area = cross.sum() / 2.0
+    return np.array([((x + np.roll(x, -1)) * cross).sum(), ((y + np.roll(y, -1)) * cross).sum()]) / (6.0 * area)
+
+
+def block_centroids(geometry: ArchGeometry) -> np.ndarray:
+    """(n_blocks, 2) centroids of the prisms: YADE's body positions before anything moves."""
+    return np.array([polygon_centroid(b[: len(b) // 2, :2]) for b in geometry.blocks])
+
+
+def snapshot_outlines(geometry: ArchGeometry, snapshot: dict[str, Any]) -> list[np.ndarray]:
+    """Front-face outline (m) of every block as placed in a snapshots.json entry."""
+    pos = np.asarray(snapshot["pos_m"], float)
+    rot = np.asarray(snapshot["rot_rad"], float)
+    return block_outlines(geometry, block_centroids(geometry), pos, rot)
+
+
+def _placed(point: np.ndarray, block: int, pos0: np.ndarray, pos: np.ndarray, rot: np.ndarray) -> np.ndarray:
+    c, s = np.cos(rot[block]), np.sin(rot[block])
+    d = point - pos0[block]
+    return pos[block] + np.array([c * d[0] - s * d[1], s * d[0] + c * d[1]])
+
+
+def joint_points(geometry: ArchGeometry, snapshot: dict[str, Any], side: str) -> np.ndarray:
+    """(n_joints, 2) intrados (side "I") or extrados ("E") end of every joint, carried by the block on
+    its left, as placed in the snapshot (m): where a hinge's pivot is drawn."""
+    pos0 = block_centroids(geometry)
+    pos, rot = np.asarray(snapshot["pos_m"], float), np.asarray(snapshot["rot_rad"], float)
+    return np.array([_placed(j.intrados if side == "I" else j.extrados, j.left, pos0, pos, rot)
+                     for j in geometry.joints])
+
+
+def tangential_slip_mm(geometry: ArchGeometry, snapshot: dict[str, Any]) -> np.ndarray:
+    """Slip of every joint (mm): displacement of the right block relative to the left at the joint's
+    mid-point, along the joint. A hinge rotation about either edge gives almost none."""
+    pos0 = block_centroids(geometry)
+    pos, rot = np.asarray(snapshot["pos_m"], float), np.asarray(snapshot["rot_rad"], float)
+    slips = []
+    for j in geometry.joints:
+        mid = (j.intrados + j.extrados) / 2.0
+        relative = _placed(mid, j.right, pos0, pos, rot) - _placed(mid, j.left, pos0, pos, rot)
+        along = j.extrados - j.intrados
+        c, s = np.cos(rot[j.left]), np.sin(rot[j.left])
+        along_now = np.array([c * along[0] - s * along[1], s * along[0] + c * along[1]])
+        slips.append(float(relative @ along_now / np.linalg.norm(along_now)) / MM)
+    return np.array(slips)

@@ -1,0 +1,74 @@
+"""What kind of collapse: sliding joints (Coulomb cap reached and real slip) or a hinge mechanism,
+described as the paper does ("asymmetric four-hinge mechanism, E-I-E-E, D at the left support")."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .tracking import HingeTrack, sequence
+
+CAP_TOLERANCE = 0.05  # |shear| >= (1 - this) tan(phi) |normal| counts as at the Coulomb cap
+SLIP_THRESHOLD_MM = 0.2  # tangential slip that is sliding, not elastic shear (ks) deformation
+HINGE_COUNT_NAMES = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
+
+
+@dataclass(frozen=True)
+class SlidingJoint:
+    """A joint at the Coulomb cap in the final state; slip_mm is None when no snapshot shows it."""
+
+    interface: int
+    shear_ratio: float  # |shear| / (tan(phi) |normal|)
+    slip_mm: float | None
+
+
+def sliding_joints(normal_N: np.ndarray, shear_N: np.ndarray, friction_deg: float,
+                   slip_mm: np.ndarray | None = None, cap_tolerance: float = CAP_TOLERANCE,
+                   slip_threshold_mm: float = SLIP_THRESHOLD_MM) -> list[SlidingJoint]:
+    """Joints (one state) whose shear force sits at the friction cap and, when the slip is known,
+    that slipped more than `slip_threshold_mm` (mm)."""
+    mu = math.tan(math.radians(friction_deg))
+    normal = np.nan_to_num(np.abs(np.asarray(normal_N, float)))
+    shear = np.nan_to_num(np.abs(np.asarray(shear_N, float)))
+    ratio = np.divide(shear, mu * normal, out=np.zeros_like(shear), where=normal > 0)
+    sliding = []
+    for k in np.flatnonzero(ratio >= 1.0 - cap_tolerance):
+        slip = None if slip_mm is None else float(slip_mm[k])
+        if slip is None or abs(slip) >= slip_threshold_mm:
+            sliding.append(SlidingJoint(int(k) + 1, float(ratio[k]), slip))
+    return sliding
+
+
+def _place(interface: int, n_interfaces: int) -> str:
+    if interface == 1:
+        return "the left support"
+    if interface == n_interfaces:
+        return "the right support"
+    return f"interface {interface}"
+
+
+def is_symmetric(tracks: list[HingeTrack], n_interfaces: int, tolerance: int = 1) -> bool:
+    """True if every hinge has a mirror image (interface k <-> n+2-k, same side) within `tolerance`."""
+    def mirrored(t: HingeTrack) -> bool:
+        return any(o.side == t.side and abs(o.interface - (n_interfaces + 1 - t.interface)) <= tolerance
+                   for o in tracks)
+    return bool(tracks) and all(mirrored(t) for t in tracks)
+
+
+def describe_mechanism(tracks: list[HingeTrack], sliding: list[SlidingJoint], n_interfaces: int,
+                       collapsed: bool) -> str:
+    """One line: the collapse mechanism in the paper's words."""
+    if sliding:
+        where = ", ".join(str(s.interface) for s in sliding)
+        text = f"sliding at interface{'s' if len(sliding) > 1 else ''} {where}"
+        return text + (f", with hinges {sequence(tracks)}" if tracks else "")
+    if not tracks:
+        return "no hinges" if collapsed else "no collapse, no hinges"
+    count = HINGE_COUNT_NAMES.get(len(tracks), str(len(tracks)))
+    symmetry = "symmetric" if is_symmetric(tracks, n_interfaces) else "asymmetric"
+    last = tracks[-1]
+    text = (f"{symmetry} {count}-hinge mechanism, {sequence(tracks)}, "
+            f"{last.label} at {_place(last.interface, n_interfaces)}")
+    return text if collapsed else f"no collapse; {text.replace(' mechanism', ' pattern')}"

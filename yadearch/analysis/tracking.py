@@ -1,0 +1,166 @@
+"""Hinges through a run's history: which hinges exist at every record, when each formed (labels A,
+B, C, D in order of formation, as the paper does), and whether a hinge migrated.
+
+Single-state detection is `yadearch.hinges.hinges_at` (rotation above a threshold, spread hinges
+reported at their peak). A hinge *forms* when it is detected and its joint has opened: soft joints
+rotate elastically by compressing one edge long before a hinge opens, so rotation alone would date
+hinges by the joint stiffness rather than by the mechanism.
+"""
+
+from __future__ import annotations
+
+import string
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from ..hinges import Hinge, hinges_at
+from .history import JointHistory
+
+ROTATION_THRESHOLD_MRAD = 2.0  # runner's default: 0.05 mm across a 24 mm joint
+OPENING_THRESHOLD_MM = 0.02  # a hinge has formed once its joint has opened this much
+MAX_JUMP_INTERFACES = 5  # a hinge is followed to the strongest same-side hinge this close
+
+
+@dataclass(frozen=True)
+class Migration:
+    """A hinge's peak moved out of its own spread to another interface at `delta_mm`."""
+
+    delta_mm: float
+    from_interface: int
+    to_interface: int
+
+
+@dataclass
+class HingeTrack:
+    """One hinge of the final state followed back through the history.
+
+    `per_record[r]` is the hinge detected at record r (None if absent); `formed_record` is the first
+    record of the final unbroken run in which the hinge is detected and open.
+    """
+
+    side: str
+    per_record: list[Hinge | None]
+    opening_mm: np.ndarray
+    formed_record: int
+    label: str = ""
+    migrations: list[Migration] = field(default_factory=list)
+
+    @property
+    def final(self) -> Hinge:
+        return self.per_record[-1]
+
+    @property
+    def interface(self) -> int:
+        return self.final.interface
+
+    @property
+    def rotation_mrad(self) -> np.ndarray:
+        """|hinge rotation| at every record (mrad), NaN where the hinge is absent."""
+        return np.array([np.nan if h is None else abs(h.rotation) * 1e3 for h in self.per_record])
+
+
+def format_interfaces(interfaces: tuple[int, ...] | list[int]) -> str:
+    """The paper's notation for a (spread) hinge: "29-30-31-32"."""
+    return "-".join(str(k) for k in interfaces)
+
+
+def hinges_per_record(history: JointHistory, threshold_rad: float) -> list[list[Hinge]]:
+    """`hinges_at` applied to every record of the history."""
+    return [hinges_at(history.rotation[r], threshold_rad) for r in range(history.n_records)]
+
+
+def _follow_back(final: Hinge, detected: list[list[Hinge]], claimed: list[set[int]],
+                 max_jump: int) -> list[Hinge | None]:
+    """From the last record backwards, the strongest same-side hinge within `max_jump` interfaces
+    of where this hinge was seen next (later)."""
+    n = len(detected)
+    per_record: list[Hinge | None] = [None] * n
+    per_record[-1] = final
+    claimed[-1].add(final.interface)
+    position = final.interface
+    for r in range(n - 2, -1, -1):
+        near = [h for h in detected[r] if h.side == final.side and abs(h.interface - position) <= max_jump
+                and h.interface not in claimed[r]]
+        if near:
+            chosen = max(near, key=lambda h: abs(h.rotation))
+            per_record[r] = chosen
+            claimed[r].add(chosen.interface)
+            position = chosen.interface
+    return per_record
+
+
+def _formed_record(present: np.ndarray) -> int:
+    """Start of the final unbroken run of True (the last record if it is False)."""
+    r = len(present) - 1
+    while r > 0 and present[r - 1] and present[r]:
+        r -= 1
+    return r
+
+
+def _migrations(per_record: list[Hinge | None], deltas: np.ndarray, start: int) -> list[Migration]:
+    """Jumps of the hinge's peak out of the spread it had at the previous record where it was seen;
+    a spread hinge whose peak drifts within its own spread has not migrated."""
+    moves: list[Migration] = []
+    previous: Hinge | None = None
+    for r in range(start, len(per_record)):
+        hinge = per_record[r]
+        if hinge is None:
+            continue
+        if previous is not None and hinge.interface not in previous.interfaces:
+            moves.append(Migration(float(deltas[r]), previous.interface, hinge.interface))
+        previous = hinge
+    return moves
+
+
+def track_hinges(history: JointHistory, rotation_threshold_mrad: float = ROTATION_THRESHOLD_MRAD,
+                 opening_threshold_mm: float = OPENING_THRESHOLD_MM,
+                 max_jump: int = MAX_JUMP_INTERFACES) -> list[HingeTrack]:
+    """The hinges of the final record, each followed back, dated and labelled A, B, C... in order of
+    formation (hinges forming at the same record: left to right), returned in that order."""
+    detected = hinges_per_record(history, rotation_threshold_mrad * 1e-3)
+    claimed: list[set[int]] = [set() for _ in detected]
+    tracks = []
+    for final in sorted(detected[-1], key=lambda h: -abs(h.rotation)):
+        per_record = _follow_back(final, detected, claimed, max_jump)
+        opening = np.array([0.0 if h is None else history.hinge_opening_mm(r, h.interfaces, h.side)
+                            for r, h in enumerate(per_record)])
+        present = np.array([h is not None for h in per_record]) & (opening >= opening_threshold_mm)
+        formed = _formed_record(present)
+        tracks.append(HingeTrack(final.side, per_record, opening, formed,
+                                 migrations=_migrations(per_record, history.delta_mm, formed)))
+    tracks.sort(key=lambda t: (t.formed_record, t.interface))
+    for label, track in zip(string.ascii_uppercase, tracks):
+        track.label = label
+    return tracks
+
+
+def sequence(tracks: list[HingeTrack]) -> str:
+    """Pivot sides left to right, the paper's "E-I-E-E"."""
+    return "-".join(t.side for t in sorted(tracks, key=lambda t: t.interface))
+
+
+def formation_steps(tracks: list[HingeTrack], deltas: np.ndarray) -> list[tuple[str, float, str]]:
+    """(label, delta at formation, sequence of the hinges formed so far) in order of formation."""
+    return [(t.label, float(deltas[t.formed_record]), sequence(tracks[: k + 1]))
+            for k, t in enumerate(tracks)]
+
+
+def hinge_table(history: JointHistory, tracks: list[HingeTrack],
+                rotation_threshold_mrad: float = ROTATION_THRESHOLD_MRAD) -> pd.DataFrame:
+    """Every hinge at every record: delta, interface (peak), spread, side, rotation, opening and the
+    label of the final hinge it belongs to (empty for hinges that do not last to collapse)."""
+    labels = {(r, t.per_record[r].interface): t.label
+              for t in tracks for r in range(history.n_records) if t.per_record[r] is not None}
+    rows = []
+    for r, hinges in enumerate(hinges_per_record(history, rotation_threshold_mrad * 1e-3)):
+        for h in hinges:
+            rows.append({"stage": history.stage[r], "step": int(history.step[r]),
+                         "delta_mm": float(history.delta_mm[r]), "label": labels.get((r, h.interface), ""),
+                         "interface": h.interface, "interfaces": format_interfaces(h.interfaces),
+                         "side": h.side, "rotation_mrad": abs(h.rotation) * 1e3,
+                         "opening_mm": history.hinge_opening_mm(r, h.interfaces, h.side)})
+    columns = ["stage", "step", "delta_mm", "label", "interface", "interfaces", "side", "rotation_mrad",
+               "opening_mm"]
+    return pd.DataFrame(rows, columns=columns)
