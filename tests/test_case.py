@@ -57,3 +57,13 @@ def test_cli_reports_a_missing_case_file(capsys, tmp_path):
     code = main(["run", "--case", str(tmp_path / "nope.toml")])
     assert code != 0
     assert "does not exist" in capsys.readouterr().err
+
+
+def test_cli_says_in_one_line_when_yade_is_missing(capsys, monkeypatch, tmp_path):
+    import yadearch.process
+
+    monkeypatch.setattr(yadearch.process, "YADE_PY_DIRS", (str(tmp_path / "nowhere"),))
+    code = main(["run", "--preset", "set1", "--out", str(tmp_path / "run")])
+    err = capsys.readouterr().err.strip()
+    assert code == 1
+    assert err.startswith("error: YADE is not installed") and "\n" not in err

@@ -82,9 +82,9 @@ class LoadingConfig:
 class NumericsConfig:
     """Numerical settings. None of them is physics: du must not depend on them (scripts/convergence.py)."""
 
-    settlement_rate_mm_per_s: float = field(default=40.0, metadata=_num(0, low_open=True,
+    settlement_rate_mm_per_s: float = field(default=80.0, metadata=_num(0, low_open=True,
                                             doc="support speed during continuous loading (mm/s)"))
-    ramp_mm: float = field(default=0.5, metadata=_num(0, doc="support displacement over which the "
+    ramp_mm: float = field(default=5.0, metadata=_num(0, doc="support displacement over which the "
                                                            "speed ramps up from zero (mm)"))
     damping: float = field(default=0.2, metadata=_num(0, 1, high_open=True,
                            doc="YADE local (non-viscous) damping coefficient"))

@@ -1,0 +1,324 @@
+"""Parametric campaigns: a table of cases, one run folder each, resumable, one tidy results table.
+
+A campaign is a base case plus rows of overrides (a grid or an explicit CSV table). Each row becomes a
+run named deterministically from its overrides (`kn_N_per_mm3=0.1` -> `kn0.1`), so re-running the same
+campaign finds the finished folders and only redoes the others.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import itertools
+import json
+import math
+import re
+import time
+import tomllib
+from concurrent.futures import FIRST_COMPLETED, Future, wait
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+import pandas as pd
+from tqdm import tqdm
+
+from .case import ArchCase, parameter_docs
+from .errors import CaseError, RunFailedError, YadearchError
+from .executors import Pool
+from .process import check_yade_installed, run_case_process
+from .rundir import CASE_FILE, SUMMARY_FILE, is_complete
+
+FAILED_FILE = "failed.json"
+RUNS_FILE = "runs.csv"
+RESULTS_FILE = "results.csv"
+RUN_COLUMN = "run"  # optional column of an explicit table: the run's name
+MAX_TAG = 64
+_UNIT_SUFFIXES = ("_N_per_mm3", "_mm_per_s", "_g_per_cm3", "_m_per_s2", "_mm", "_deg", "_MPa", "_s")
+_BARE_NAMES = {q.split(".")[-1]: q for q, _, _ in parameter_docs()}
+
+
+# ---------------------------------------------------------------- parameter values and grids
+
+def parse_scalar(text: str) -> Any:
+    """A value in TOML scalar syntax (numbers, true/false, quoted strings), else the bare string."""
+    try:
+        return tomllib.loads(f"v = {text.strip()}")["v"]
+    except tomllib.TOMLDecodeError:
+        return text.strip()
+
+
+def round_sig(value: float, digits: int = 4) -> float:
+    """`value` rounded to `digits` significant figures (so generated values name folders cleanly)."""
+    return float(f"{value:.{digits}g}")
+
+
+def parse_values(spec: str) -> list[Any]:
+    """Values of one parameter: `v1,v2,...`, or `start:stop:log:n` / `start:stop:lin:n` (n values,
+    rounded to 4 significant figures; integers stay integers)."""
+    parts = spec.split(":")
+    if len(parts) == 1:
+        values = [parse_scalar(v) for v in spec.split(",") if v.strip()]
+        if not values:
+            raise YadearchError(f"no values in {spec!r}")
+        return values
+    if len(parts) != 4 or parts[2] not in ("log", "lin"):
+        raise YadearchError(f"range {spec!r} must read start:stop:log:n or start:stop:lin:n")
+    start, stop, count = parse_scalar(parts[0]), parse_scalar(parts[1]), parse_scalar(parts[3])
+    if not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in (start, stop)) \
+            or not isinstance(count, int) or count < 1:
+        raise YadearchError(f"range {spec!r}: start and stop must be numbers and n a positive integer")
+    if parts[2] == "log":
+        if start <= 0 or stop <= 0:
+            raise YadearchError(f"log range {spec!r} needs positive start and stop")
+        return [round_sig(v) for v in np.geomspace(start, stop, count)]
+    values = np.linspace(start, stop, count)
+    if isinstance(start, int) and isinstance(stop, int) and np.allclose(values, np.round(values)):
+        return [int(v) for v in np.round(values)]
+    return [round_sig(v) for v in values]
+
+
+def check_parameter(key: str) -> None:
+    """Raise CaseError unless `key` names a case parameter (`section.key` or a bare key)."""
+    qualified = {q for q, _, _ in parameter_docs()}
+    if key not in qualified and key not in _BARE_NAMES:
+        raise CaseError(f"unknown parameter {key!r}; see `yadearch params` for the list")
+
+
+def grid(params: dict[str, list[Any]]) -> list[dict[str, Any]]:
+    """Every combination of the values of `params` (last parameter varies fastest)."""
+    for key in params:
+        check_parameter(key)
+    keys = list(params)
+    return [dict(zip(keys, combo)) for combo in itertools.product(*(params[k] for k in keys))]
+
+
+def read_table(path: str | Path) -> list[dict[str, Any]]:
+    """Rows of an explicit CSV campaign table: one column per parameter (an empty cell keeps the base
+    value), optionally a `run` column naming each run."""
+    path = Path(path)
+    if not path.is_file():
+        raise YadearchError(f"campaign table {str(path)!r} does not exist")
+    with path.open(newline="") as f:
+        reader = csv.DictReader(f)
+        for key in reader.fieldnames or []:
+            if key != RUN_COLUMN:
+                check_parameter(key)
+        rows = [{k: (v if k == RUN_COLUMN else parse_scalar(v)) for k, v in row.items()
+                 if v is not None and v.strip()} for row in reader]
+    if not rows:
+        raise YadearchError(f"campaign table {str(path)!r} has no rows")
+    return rows
+
+
+# ---------------------------------------------------------------- runs
+
+def short_name(key: str) -> str:
+    """A parameter's name in run tags: the bare name without its unit (`kn_N_per_mm3` -> `kn`)."""
+    bare = key.split(".")[-1]
+    for suffix in _UNIT_SUFFIXES:
+        if bare.endswith(suffix):
+            return bare[: -len(suffix)]
+    return bare
+
+
+def _format(value: Any) -> str:
+    if isinstance(value, bool):
+        return str(value).lower()
+    if isinstance(value, float):
+        return f"{value:.6g}"
+    return str(value)
+
+
+def run_tag(overrides: dict[str, Any]) -> str:
+    """Deterministic, readable run name from the overrides (`kn0.1_n_voussoirs15`); long or odd
+    names are cut and get a short hash of the overrides so that they stay unique."""
+    tag = "_".join(f"{short_name(k)}{_format(v)}" for k, v in overrides.items())
+    safe = re.sub(r"[^A-Za-z0-9._+-]", "-", tag)
+    if safe == tag and len(tag) <= MAX_TAG:
+        return tag
+    digest = hashlib.sha1(json.dumps(overrides, sort_keys=True, default=str).encode()).hexdigest()[:8]
+    return f"{safe[:MAX_TAG - 9]}-{digest}"
+
+
+@dataclass
+class RunSpec:
+    """One run of a campaign: its name, overrides, folder, and the case (or why it is invalid)."""
+
+    name: str
+    overrides: dict[str, Any]
+    folder: Path
+    case: ArchCase | None
+    error: str | None = None
+
+
+def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]:
+    """The runs of a campaign. An invalid parameter value makes that run fail (not the campaign);
+    a finished folder that holds a different case is an error (resuming would mix campaigns)."""
+    specs: list[RunSpec] = []
+    for row in rows:
+        overrides = {k: v for k, v in row.items() if k != RUN_COLUMN}
+        name = str(row.get(RUN_COLUMN) or (run_tag(overrides) if overrides else base.name))
+        case, error = None, None
+        try:
+            case = base.with_overrides({**overrides, "name": name})
+        except CaseError as exc:
+            error = f"invalid case: {exc}"
+        spec = RunSpec(name, overrides, out / name, case, error)
+        if case is not None and is_complete(spec.folder):
+            _check_same_case(spec)
+        specs.append(spec)
+    names = [s.name for s in specs]
+    duplicates = sorted({n for n in names if names.count(n) > 1})
+    if duplicates:
+        raise YadearchError(f"campaign has duplicate runs {duplicates}")
+    return specs
+
+
+def _check_same_case(spec: RunSpec) -> None:
+    """Refuse to resume over a finished run folder that ran another case."""
+    done = tomllib.loads((spec.folder / CASE_FILE).read_text())
+    wanted = spec.case.to_dict()
+    for section, values in wanted.items():
+        if section == "name":
+            continue
+        for key, value in values.items():
+            if done.get(section, {}).get(key) != value:
+                raise YadearchError(
+                    f"run folder {spec.folder} holds a different case ({section}.{key} = "
+                    f"{done.get(section, {}).get(key)!r}, this campaign: {value!r}); use another --out")
+
+
+def execute(case: ArchCase, folder: Path, timeout_s: float | None) -> dict[str, Any]:
+    """Run one case in its own process (the task of every executor); a failure writes failed.json."""
+    started = time.time()
+    (folder / FAILED_FILE).unlink(missing_ok=True)
+    try:
+        run_case_process(case, folder, timeout_s=timeout_s, quiet=True)
+    except RunFailedError as exc:
+        record_failure(folder, case.name, str(exc), time.time() - started)
+        return {"status": "failed", "reason": str(exc)}
+    return {"status": "done", "reason": ""}
+
+
+def record_failure(folder: Path, name: str, reason: str, wall_s: float) -> None:
+    """Write failed.json: why the run failed and how long it took."""
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / FAILED_FILE).write_text(json.dumps({"name": name, "status": "failed", "reason": reason,
+                                                  "wall_s": wall_s}, indent=2) + "\n")
+
+
+Task = Callable[[ArchCase, Path, float | None], dict[str, Any]]
+
+
+def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Pool,
+                 timeout_s: float | None = None, progress: bool = True,
+                 task: Task = execute) -> pd.DataFrame:
+    """Run every unfinished run of the campaign on `pool`, then write and return the results table.
+
+    Finished folders are skipped; failed, interrupted and new runs are (re)done. `task` runs one case
+    (default: a child process through `execute`; tests inject stand-ins)."""
+    out = Path(out)
+    specs = plan(base, rows, out)
+    out.mkdir(parents=True, exist_ok=True)
+    write_run_table(specs, out)
+    todo = [s for s in specs if s.case is not None and not is_complete(s.folder)]
+    for spec in specs:
+        if spec.case is None:
+            record_failure(spec.folder, spec.name, spec.error or "", 0.0)
+    if todo and task is execute:
+        check_yade_installed()
+    skipped = sum(1 for s in specs if s.case is not None) - len(todo)
+    bar = tqdm(total=len(specs), initial=len(specs) - len(todo), unit="run", disable=not progress,
+               desc=out.name, dynamic_ncols=True)
+    counts = {"done": skipped, "failed": len(specs) - len(todo) - skipped}
+    futures: dict[Future, RunSpec] = {}
+    try:
+        futures = {pool.executor.submit(task, s.case, s.folder, timeout_s): s for s in todo}
+        pending = set(futures)
+        while pending:
+            bar.set_postfix(done=counts["done"], failed=counts["failed"],
+                            running=min(pool.slots, len(pending)), refresh=True)
+            finished, pending = wait(pending, return_when=FIRST_COMPLETED)
+            for future in finished:
+                counts[future.result()["status"]] += 1
+                bar.update(1)
+        bar.set_postfix(done=counts["done"], failed=counts["failed"], running=0)
+    finally:
+        for future in futures:
+            future.cancel()
+        bar.close()
+        table = results_table(specs, out)
+        table.to_csv(out / RESULTS_FILE, index=False, float_format="%.6g")
+    return table
+
+
+def write_run_table(specs: list[RunSpec], out: Path) -> None:
+    """runs.csv: what the campaign runs (name, folder, overrides), written before anything runs."""
+    pd.DataFrame([{RUN_COLUMN: s.name, "folder": s.folder.name, **_columns(s.overrides)}
+                  for s in specs]).to_csv(out / RUNS_FILE, index=False)
+
+
+def _columns(overrides: dict[str, Any]) -> dict[str, Any]:
+    return {k.split(".")[-1]: v for k, v in overrides.items()}
+
+
+# ---------------------------------------------------------------- results
+
+def label_hinges(summary: dict[str, Any], n_voussoirs: int) -> dict[str, int | None]:
+    """The paper's hinge labels from a run's hinges at collapse: D = the E hinge at interface 1,
+    C = the E hinge at interface n+1, A = the I hinge, B = the remaining E hinge (the most rotated
+    one when there are several)."""
+    hinges = [(h["interface"], h["side"]) for h in summary.get("hinges_at_collapse") or []]
+    rotation = {(h["interface"], h["side"]): h.get("rotation_mrad", 0.0)
+                for h in summary.get("hinges_detail") or []}
+
+    def most_rotated(candidates: list[tuple[int, str]]) -> int | None:
+        return max(candidates, key=lambda h: rotation.get(h, 0.0))[0] if candidates else None
+
+    last = n_voussoirs + 1
+    labels = {"hinge_D": 1 if (1, "E") in hinges else None,
+              "hinge_C": last if (last, "E") in hinges else None,
+              "hinge_A": most_rotated([h for h in hinges if h[1] == "I"])}
+    labels["hinge_B"] = most_rotated([h for h in hinges if h[1] == "E" and h[0] not in (1, last)])
+    return {k: labels[k] for k in ("hinge_A", "hinge_B", "hinge_C", "hinge_D")}
+
+
+def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
+    """One results row: the run's parameters and what its folder says (done, failed or pending)."""
+    case = spec.case
+    row: dict[str, Any] = {RUN_COLUMN: spec.name, **_columns(spec.overrides)}
+    if case is not None:
+        row.setdefault("kn_N_per_mm3", case.interface.kn_N_per_mm3)
+        row.setdefault("n_voussoirs", case.geometry.n_voussoirs)
+    empty = {"du_mm": math.nan, "collapsed": None, "hinges": "", "mechanism": "", "hinge_A": None,
+             "hinge_B": None, "hinge_C": None, "hinge_D": None, "steps": None, "wall_s": math.nan}
+    if case is not None and is_complete(spec.folder):
+        summary = json.loads((spec.folder / SUMMARY_FILE).read_text())
+        hinges = summary.get("hinges_at_collapse") or []
+        du = summary.get("du_mm")
+        row.update(du_mm=math.nan if du is None else du, collapsed=bool(summary.get("collapsed")),
+                   hinges=" ".join(f"{h['interface']}{h['side']}" for h in hinges),
+                   mechanism="-".join(h["side"] for h in hinges),
+                   **label_hinges(summary, case.geometry.n_voussoirs),
+                   steps=summary.get("steps"), wall_s=summary.get("wall_s"), status="done",
+                   reason="" if summary.get("collapsed") else
+                   f"no collapse up to {case.loading.max_settlement_mm:g} mm")
+    elif (spec.folder / FAILED_FILE).is_file():
+        failed = json.loads((spec.folder / FAILED_FILE).read_text())
+        row.update(empty, wall_s=failed.get("wall_s", math.nan), status="failed",
+                   reason=failed.get("reason", ""))
+    else:
+        row.update(empty, status="pending", reason="not run yet (interrupted?)")
+    row["folder"] = str(spec.folder.relative_to(out)) if spec.folder.is_relative_to(out) \
+        else str(spec.folder)
+    return row
+
+
+def results_table(specs: list[RunSpec], out: Path) -> pd.DataFrame:
+    """The tidy results table of a campaign (one row per run), read from its run folders."""
+    table = pd.DataFrame([run_row(s, out) for s in specs])
+    for column in ("hinge_A", "hinge_B", "hinge_C", "hinge_D", "steps"):
+        table[column] = table[column].astype("Int64")
+    return table

@@ -1,0 +1,143 @@
+"""`yadearch sweep` (parametric campaigns, the kn sweep) and `yadearch calibrate` (kn from a measured
+du), as click commands for the main group: `cli.add_command(sweep)`, `cli.add_command(calibrate)`."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import click
+
+from . import reference
+from .calibration import calibrate as calibrate_kn
+from .calibration import campaign_evaluator
+from .campaign import RESULTS_FILE, grid, parse_values, read_table, run_campaign, short_name
+from .case import ArchCase
+from .errors import YadearchError
+from .executors import open_pool
+
+KN_KEY = "kn_N_per_mm3"
+
+
+def _base_options(func: Any) -> Any:
+    """--preset/--case/--set: the base case every run starts from."""
+    func = click.option("--set", "settings", multiple=True, metavar="KEY=VALUE",
+                        help="override a parameter of every run, e.g. --set n_voussoirs=15")(func)
+    func = click.option("--case", "case_file", type=click.Path(dir_okay=False),
+                        help="base case TOML file")(func)
+    return click.option("--preset", "preset_name", type=click.Choice(["set1", "set2"]),
+                        help="base case: the paper arch with the kn of voussoir set 1 or 2")(func)
+
+
+def _pool_options(func: Any) -> Any:
+    """--jobs/--scheduler/--timeout-min: where and how long runs may execute."""
+    func = click.option("--timeout-min", type=float,
+                        help="fail a run that takes longer than this (minutes)")(func)
+    func = click.option("--scheduler", metavar="ADDRESS",
+                        help="run on this dask.distributed scheduler (e.g. tcp://host:8786)")(func)
+    return click.option("--jobs", type=click.IntRange(min=1),
+                        help="runs at once on this machine [default: one per core]")(func)
+
+
+def _base_case(preset_name: str | None, case_file: str | None, settings: tuple[str, ...]) -> ArchCase:
+    from .cli import resolve_case  # imported here: cli imports this module to add the commands
+
+    return resolve_case(preset_name, case_file, None, settings)
+
+
+def _timeout_s(timeout_min: float | None) -> float | None:
+    return None if timeout_min is None else 60.0 * timeout_min
+
+
+@click.command()
+@_base_options
+@click.option("--kn", "kn_spec", metavar="VALUES",
+              help="kn values (N/mm3): 0.25,5.2 or start:stop:log:n, e.g. 0.1:100:log:13")
+@click.option("--param", "param_specs", multiple=True, metavar="NAME=VALUES",
+              help="another grid axis, e.g. --param n_voussoirs=15,31,55 or damping=0.1:0.3:lin:3")
+@click.option("--table", "table_file", type=click.Path(dir_okay=False),
+              help="explicit CSV table of runs instead of a grid (one column per parameter)")
+@click.option("--out", required=True, type=click.Path(file_okay=False),
+              help="campaign folder: one run folder per run, runs.csv, results.csv")
+@_pool_options
+@click.option("--figure/--no-figure", default=True, show_default=True,
+              help="draw du and hinges against kn when kn is the only swept parameter")
+def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, ...],
+          kn_spec: str | None, param_specs: tuple[str, ...], table_file: str | None, out: str,
+          jobs: int | None, scheduler: str | None, timeout_min: float | None, figure: bool) -> None:
+    """Run a campaign (a grid or a table of cases), resuming a previous one in OUT."""
+    base = _base_case(preset_name, case_file, settings)
+    if table_file and (kn_spec or param_specs):
+        raise click.UsageError("give either --table or --kn/--param, not both")
+    if table_file:
+        rows = read_table(table_file)
+    else:
+        axes: dict[str, list[Any]] = {}
+        if kn_spec:
+            axes[KN_KEY] = parse_values(kn_spec)
+        for spec in param_specs:
+            if "=" not in spec:
+                raise click.UsageError(f"--param expects NAME=VALUES, got {spec!r}")
+            name, values = spec.split("=", 1)
+            axes[name.strip()] = parse_values(values)
+        if not axes:
+            raise click.UsageError("nothing to sweep: give --kn, --param or --table")
+        rows = grid(axes)
+    folder = Path(out)
+    with open_pool(jobs, scheduler) as pool:
+        click.echo(f"campaign {folder}: {len(rows)} runs on {pool.where}")
+        table = run_campaign(base, rows, folder, pool, timeout_s=_timeout_s(timeout_min))
+    counts = table["status"].value_counts().to_dict()
+    click.echo(f"{len(table)} runs: {counts.get('done', 0)} done, {counts.get('failed', 0)} failed, "
+               f"{counts.get('pending', 0)} pending -> {folder / RESULTS_FILE}")
+    swept = {short_name(k) for row in rows for k in row if k != "run"}
+    if figure and swept == {short_name(KN_KEY)}:
+        try:
+            from .sweep_figure import kn_sweep_figure
+
+            paths = kn_sweep_figure(table, folder / "du_vs_kn")
+            click.echo(f"figure -> {', '.join(map(str, paths))}")
+        except ValueError as exc:
+            click.echo(f"no figure: {exc}", err=True)
+    if counts.get("failed"):
+        raise YadearchError(f"{counts['failed']} of {len(table)} runs failed; reasons in "
+                            f"{folder / RESULTS_FILE}")
+
+
+@click.command()
+@_base_options
+@click.option("--target-du", "target_du", type=float, required=True,
+              help="measured collapse displacement to match (mm)")
+@click.option("--tolerance-mm", type=click.FloatRange(min=0, min_open=True), default=0.5,
+              show_default=True, help="accepted |du - target| (mm)")
+@click.option("--kn-min", type=float, default=reference.KN_SENSITIVITY_RANGE_N_PER_MM3[0],
+              show_default=True, help="lower end of the kn bracket (N/mm3)")
+@click.option("--kn-max", type=float, default=reference.KN_SENSITIVITY_RANGE_N_PER_MM3[1],
+              show_default=True, help="upper end of the kn bracket (N/mm3)")
+@click.option("--max-runs", type=click.IntRange(min=3), default=12, show_default=True,
+              help="give up after this many runs")
+@click.option("--out", required=True, type=click.Path(dir_okay=False),
+              help="result JSON, e.g. reports/calibration/set1.json")
+@click.option("--runs-dir", type=click.Path(file_okay=False),
+              help="run folders [default: OUT without .json]")
+@_pool_options
+def calibrate(preset_name: str | None, case_file: str | None, settings: tuple[str, ...],
+              target_du: float, tolerance_mm: float, kn_min: float, kn_max: float, max_runs: int,
+              out: str, runs_dir: str | None, jobs: int | None, scheduler: str | None,
+              timeout_min: float | None) -> None:
+    """Find the kn whose du matches a measured du (bracketing search on log kn)."""
+    base = _base_case(preset_name, case_file, settings)
+    out_path = Path(out)
+    runs = Path(runs_dir) if runs_dir else out_path.with_suffix("")
+    click.echo(f"calibrating kn of {base.name} to du = {target_du:g} +- {tolerance_mm:g} mm, "
+               f"kn in [{kn_min:g}, {kn_max:g}] N/mm3; runs in {runs}")
+    with open_pool(jobs or 2, scheduler) as pool:
+        result = calibrate_kn(campaign_evaluator(base, runs, pool, _timeout_s(timeout_min)),
+                              target_du, tolerance_mm, kn_min, kn_max, max_runs, log=click.echo)
+    result.write(out_path)
+    click.echo(f"kn = {result.kn_N_per_mm3:.4g} N/mm3 gives du = {result.du_mm:.2f} mm "
+               f"(target {target_du:g} +- {tolerance_mm:g}) after {result.runs} runs "
+               f"({result.new_runs} new), hinges {result.hinges or '-'} -> {out_path}")
+    if not result.converged:
+        raise YadearchError(f"no kn within {tolerance_mm:g} mm of the target after {result.runs} "
+                            f"runs; closest above (see {out_path})")

@@ -1,0 +1,74 @@
+"""The kn sweep figure (paper Fig. 8): du against kn, and the hinges' interfaces against kn.
+
+Drawn from a campaign's results table, with the paper's two calibrated points for comparison.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import pandas as pd  # noqa: E402
+
+from . import reference  # noqa: E402
+
+COLUMN_WIDTH_IN = 3.5  # one journal column
+HINGE_STYLE = {"hinge_A": ("o", "A (intrados)"), "hinge_B": ("s", "B (extrados)"),
+               "hinge_C": ("^", "C (right support)")}
+
+
+def kn_sweep_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
+    """Write STEM.pdf and STEM.png from the collapsed runs of a kn sweep; returns both paths."""
+    runs = table[(table["status"] == "done") & (table["collapsed"] == True)]  # noqa: E712
+    runs = runs.sort_values("kn_N_per_mm3")
+    if runs.empty:
+        raise ValueError("no collapsed run to plot")
+    with plt.rc_context({"font.size": 8, "axes.labelsize": 8, "legend.fontsize": 6.5,
+                         "xtick.labelsize": 7, "ytick.labelsize": 7}):
+        fig, (ax_du, ax_h) = plt.subplots(2, 1, figsize=(COLUMN_WIDTH_IN, 4.4), sharex=True,
+                                          gridspec_kw={"height_ratios": [3, 2]},
+                                          constrained_layout=True)
+        _du_panel(ax_du, runs)
+        _hinge_panel(ax_h, runs)
+        ax_h.set_xscale("log")
+        ax_h.set_xlabel(r"joint normal stiffness $k_n$ (N/mm$^3$)")
+        stem.parent.mkdir(parents=True, exist_ok=True)
+        paths = [stem.with_suffix(".pdf"), stem.with_suffix(".png")]
+        for path in paths:
+            fig.savefig(path, dpi=300)
+        plt.close(fig)
+    return paths
+
+
+def _du_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
+    ax.plot(runs["kn_N_per_mm3"], runs["du_mm"], "o-", color="C0", ms=3.5, lw=1,
+            label="yadearch (DEM)")
+    stiffest = runs.iloc[-1]
+    ax.axhline(stiffest["du_mm"], color="0.5", ls="--", lw=0.8,
+               label=f"stiffest run, kn = {stiffest['kn_N_per_mm3']:g}: {stiffest['du_mm']:.1f} mm")
+    kn = [s["kn_N_per_mm3"] for s in reference.SETS.values()]
+    du = [s["numerical"]["du_mm"] for s in reference.SETS.values()]
+    ax.plot(kn, du, "D", mfc="none", color="C3", ms=5, label="paper FE, calibrated (sets 1, 2)")
+    ax.set_ylabel(r"collapse displacement $d_u$ (mm)")
+    ax.legend(loc="lower right", frameon=False)
+    ax.grid(True, which="major", lw=0.3, alpha=0.5)
+
+
+def _hinge_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
+    for column, (marker, label) in HINGE_STYLE.items():
+        present = runs[runs[column].notna()]
+        ax.plot(present["kn_N_per_mm3"], present[column].astype(float), marker, ms=3.5,
+                mfc="none", label=label)
+    if set(runs["n_voussoirs"]) == {reference.GEOMETRY["n_voussoirs"]}:
+        for s in reference.SETS.values():
+            for column in HINGE_STYLE:
+                interfaces = s["numerical"][column]
+                ax.plot([s["kn_N_per_mm3"]] * 2, [min(interfaces), max(interfaces)], "-",
+                        color="C3", lw=2.5, alpha=0.5, solid_capstyle="round")
+        ax.plot([], [], "-", color="C3", lw=2.5, alpha=0.5, label="paper FE")
+    ax.set_ylabel("hinge interface\n(1 = left support)")
+    ax.legend(loc="center left", frameon=False, ncol=2)
+    ax.grid(True, which="major", lw=0.3, alpha=0.5)
