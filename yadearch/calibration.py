@@ -2,7 +2,8 @@
 
 du grows with kn (stiffer joints, larger du), so a bracket [kn_min, kn_max] whose ends straddle the
 target holds the answer; Brent's method (scipy's brentq) on du(log kn) narrows it in a few runs,
-stopping at the first run within the tolerance. Each run is a campaign run folder, so a repeated calibration reuses them.
+stopping at the first run within the tolerance. Each run is a campaign run folder, so a repeated
+calibration reuses them.
 """
 
 from __future__ import annotations

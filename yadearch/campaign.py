@@ -319,6 +319,6 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
 def results_table(specs: list[RunSpec], out: Path) -> pd.DataFrame:
     """The tidy results table of a campaign (one row per run), read from its run folders."""
     table = pd.DataFrame([run_row(s, out) for s in specs])
-    for column in ("hinge_A", "hinge_B", "hinge_C", "hinge_D", "steps"):
+    for column in ("n_voussoirs", "hinge_A", "hinge_B", "hinge_C", "hinge_D", "steps"):
         table[column] = table[column].astype("Int64")
     return table

@@ -11,6 +11,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from . import reference  # noqa: E402
@@ -48,7 +49,7 @@ def _du_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
             label="yadearch (DEM)")
     stiffest = runs.iloc[-1]
     ax.axhline(stiffest["du_mm"], color="0.5", ls="--", lw=0.8,
-               label=f"stiffest run, kn = {stiffest['kn_N_per_mm3']:g}: {stiffest['du_mm']:.1f} mm")
+               label=f"stiffest run ({stiffest['kn_N_per_mm3']:g} N/mm$^3$): {stiffest['du_mm']:.1f} mm")
     kn = [s["kn_N_per_mm3"] for s in reference.SETS.values()]
     du = [s["numerical"]["du_mm"] for s in reference.SETS.values()]
     ax.plot(kn, du, "D", mfc="none", color="C3", ms=5, label="paper FE, calibrated (sets 1, 2)")
@@ -70,5 +71,6 @@ def _hinge_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
                         color="C3", lw=2.5, alpha=0.5, solid_capstyle="round")
         ax.plot([], [], "-", color="C3", lw=2.5, alpha=0.5, label="paper FE")
     ax.set_ylabel("hinge interface\n(1 = left support)")
-    ax.legend(loc="center left", frameon=False, ncol=2)
+    ax.yaxis.set_major_locator(MaxNLocator(integer=True))
+    ax.legend(loc="best", frameon=False, ncol=2)
     ax.grid(True, which="major", lw=0.3, alpha=0.5)
