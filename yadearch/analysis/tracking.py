@@ -20,7 +20,7 @@ from .history import JointHistory
 
 ROTATION_THRESHOLD_MRAD = 2.0  # runner's default: 0.05 mm across a 24 mm joint
 OPENING_THRESHOLD_MM = 0.02  # a hinge has formed once its joint has opened this much
-MAX_JUMP_INTERFACES = 5  # a hinge is followed to the strongest same-side hinge this close
+MAX_JUMP_INTERFACES = 5  # a hinge is followed back to hinges of its side at most this many interfaces away
 
 
 @dataclass(frozen=True)
@@ -71,24 +71,25 @@ def hinges_per_record(history: JointHistory, threshold_rad: float) -> list[list[
     return [hinges_at(history.rotation[r], threshold_rad) for r in range(history.n_records)]
 
 
-def _follow_back(final: Hinge, detected: list[list[Hinge]], claimed: list[set[int]],
-                 max_jump: int) -> list[Hinge | None]:
-    """From the last record backwards, the strongest same-side hinge within `max_jump` interfaces
-    of where this hinge was seen next (later)."""
+def _follow_back(finals: list[Hinge], detected: list[list[Hinge]], max_jump: int) -> list[list[Hinge | None]]:
+    """Every final hinge followed from the last record backwards: at each record, a detected hinge
+    belongs to the nearest track of its side within `max_jump` interfaces, and each track takes the
+    strongest hinge that belongs to it (so a hinge overtaken by a new one migrates there)."""
     n = len(detected)
-    per_record: list[Hinge | None] = [None] * n
-    per_record[-1] = final
-    claimed[-1].add(final.interface)
-    position = final.interface
+    tracks: list[list[Hinge | None]] = [[None] * (n - 1) + [h] for h in finals]
+    positions = [h.interface for h in finals]
     for r in range(n - 2, -1, -1):
-        near = [h for h in detected[r] if h.side == final.side and abs(h.interface - position) <= max_jump
-                and h.interface not in claimed[r]]
-        if near:
-            chosen = max(near, key=lambda h: abs(h.rotation))
-            per_record[r] = chosen
-            claimed[r].add(chosen.interface)
-            position = chosen.interface
-    return per_record
+        owned: list[list[Hinge]] = [[] for _ in finals]
+        for hinge in detected[r]:
+            near = [(abs(hinge.interface - p), t) for t, p in enumerate(positions)
+                    if finals[t].side == hinge.side and abs(hinge.interface - p) <= max_jump]
+            if near:
+                owned[min(near)[1]].append(hinge)
+        for t, candidates in enumerate(owned):
+            if candidates:
+                tracks[t][r] = max(candidates, key=lambda h: abs(h.rotation))
+                positions[t] = tracks[t][r].interface
+    return tracks
 
 
 def _formed_record(present: np.ndarray) -> int:
@@ -120,15 +121,13 @@ def track_hinges(history: JointHistory, rotation_threshold_mrad: float = ROTATIO
     """The hinges of the final record, each followed back, dated and labelled A, B, C... in order of
     formation (hinges forming at the same record: left to right), returned in that order."""
     detected = hinges_per_record(history, rotation_threshold_mrad * 1e-3)
-    claimed: list[set[int]] = [set() for _ in detected]
     tracks = []
-    for final in sorted(detected[-1], key=lambda h: -abs(h.rotation)):
-        per_record = _follow_back(final, detected, claimed, max_jump)
+    for per_record in _follow_back(detected[-1], detected, max_jump):
         opening = np.array([0.0 if h is None else history.hinge_opening_mm(r, h.interfaces, h.side)
                             for r, h in enumerate(per_record)])
         present = np.array([h is not None for h in per_record]) & (opening >= opening_threshold_mm)
         formed = _formed_record(present)
-        tracks.append(HingeTrack(final.side, per_record, opening, formed,
+        tracks.append(HingeTrack(per_record[-1].side, per_record, opening, formed,
                                  migrations=_migrations(per_record, history.delta_mm, formed)))
     tracks.sort(key=lambda t: (t.formed_record, t.interface))
     for label, track in zip(string.ascii_uppercase, tracks):
