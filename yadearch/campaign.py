@@ -24,7 +24,7 @@ import numpy as np
 import pandas as pd
 from tqdm import tqdm
 
-from .case import ArchCase, parameter_docs
+from .case import ArchCase, parameter_docs, preset
 from .errors import CaseError, RunFailedError, YadearchError
 from .executors import Pool
 from .process import check_yade_installed, run_case_process
@@ -188,6 +188,22 @@ def _check_same_case(spec: RunSpec) -> None:
                 raise YadearchError(
                     f"run folder {spec.folder} holds a different case ({section}.{key} = "
                     f"{done.get(section, {}).get(key)!r}, this campaign: {value!r}); use another --out")
+
+
+BATCH_KEYS = ("description", "preset", "out")  # yade-batch table columns that are not case parameters
+
+
+def batch_run(params: dict[str, Any]) -> tuple[ArchCase, Path]:
+    """The case and run folder of one yade-batch table line (`preset`, `out` = campaign folder, case
+    parameters by name), named as `yadearch sweep` names the same run so either can resume the other."""
+    overrides = {k: v for k, v in params.items() if k not in BATCH_KEYS}
+    for key in overrides:
+        check_parameter(key)
+    spec = plan(preset(str(params.get("preset", "set2"))), [overrides],
+                Path(str(params.get("out", "runs/yade-batch"))))[0]
+    if spec.case is None:
+        raise CaseError(spec.error)
+    return spec.case, spec.folder
 
 
 def execute(case: ArchCase, folder: Path, timeout_s: float | None) -> dict[str, Any]:
