@@ -36,8 +36,9 @@ class Migration:
 class HingeTrack:
     """One hinge of the final state followed back through the history.
 
-    `per_record[r]` is the hinge detected at record r (None if absent); `formed_record` is the first
-    record of the final unbroken run in which the hinge is detected and open.
+    `per_record[r]` is the hinge detected at record r (None if absent), `opening_mm[r]` its opening
+    (NaN if absent); `formed_record` is the first record of the final unbroken run in which the hinge
+    is detected and open.
     """
 
     side: str
@@ -123,9 +124,9 @@ def track_hinges(history: JointHistory, rotation_threshold_mrad: float = ROTATIO
     detected = hinges_per_record(history, rotation_threshold_mrad * 1e-3)
     tracks = []
     for per_record in _follow_back(detected[-1], detected, max_jump):
-        opening = np.array([0.0 if h is None else history.hinge_opening_mm(r, h.interfaces, h.side)
+        opening = np.array([np.nan if h is None else history.hinge_opening_mm(r, h.interfaces, h.side)
                             for r, h in enumerate(per_record)])
-        present = np.array([h is not None for h in per_record]) & (opening >= opening_threshold_mm)
+        present = np.nan_to_num(opening) >= opening_threshold_mm
         formed = _formed_record(present)
         tracks.append(HingeTrack(per_record[-1].side, per_record, opening, formed,
                                  migrations=_migrations(per_record, history.delta_mm, formed)))

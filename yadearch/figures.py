@@ -1,0 +1,217 @@
+"""Figures of a run for a paper: the arch at collapse with its hinges, support reactions, hinge
+openings and crown displacement against the support settlement delta.
+
+One style for all: 8 pt text, sized for a journal column (8.5 cm; 17 cm double column), constrained
+layout so no label is clipped, written as vector PDF and 300 dpi PNG. Uses matplotlib's Figure
+directly (no pyplot), so it never touches an interactive backend.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from matplotlib.figure import Figure
+from matplotlib.patches import Polygon
+
+from .analysis import RunAnalysis
+from .analysis.blocks import case_geometry, joint_points, snapshot_outlines
+from .rundir import RunFolder
+
+CM = 1 / 2.54  # inches
+COLUMN_CM = 8.5
+DOUBLE_COLUMN_CM = 17.0
+PNG_DPI = 300
+STYLE = {
+    "font.size": 8, "axes.labelsize": 8, "axes.titlesize": 8, "legend.fontsize": 7,
+    "xtick.labelsize": 7, "ytick.labelsize": 7, "lines.linewidth": 1.0, "axes.linewidth": 0.6,
+    "xtick.major.width": 0.6, "ytick.major.width": 0.6, "legend.frameon": False,
+    "pdf.fonttype": 42, "ps.fonttype": 42, "savefig.dpi": PNG_DPI,
+}
+HINGE_COLOURS = ["#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9"]  # Okabe-Ito
+LEFT_COLOUR, RIGHT_COLOUR = "#0072B2", "#D55E00"
+PAST_DU_ALPHA = 0.35
+LABEL_ROOM = 0.15  # fraction of the arch's width left free on each side for hinge labels at the supports
+AXIS_MARGINS_CM = (1.3, 1.1)  # room the axis labels and ticks take across and down an equal-aspect plot
+
+
+def new_figure(height_cm: float, width_cm: float = COLUMN_CM) -> Figure:
+    """A figure in the house style at its print size."""
+    fig = Figure(figsize=(width_cm * CM, height_cm * CM), layout="constrained")
+    fig.get_layout_engine().set(w_pad=0.02, h_pad=0.02)
+    return fig
+
+
+def save_figure(fig: Figure, stem: Path) -> tuple[Path, Path]:
+    """Write `stem`.pdf (vector) and `stem`.png (300 dpi); returns both paths."""
+    stem.parent.mkdir(parents=True, exist_ok=True)
+    pdf, png = stem.with_suffix(".pdf"), stem.with_suffix(".png")
+    fig.savefig(pdf)
+    fig.savefig(png, dpi=PNG_DPI)
+    return pdf, png
+
+
+def _styled(draw):
+    """Run a figure builder under the house rcParams."""
+    import matplotlib
+
+    def wrapper(*args, **kwargs):
+        with matplotlib.rc_context(STYLE):
+            return draw(*args, **kwargs)
+    wrapper.__name__, wrapper.__doc__ = draw.__name__, draw.__doc__
+    return wrapper
+
+
+def loading_path(series: pd.DataFrame) -> pd.DataFrame:
+    """Series rows along the settlement: the end of the self-weight stage, then the loading stage
+    (monotonic in delta). The du search reloads saved states, so its rows are left out."""
+    selfweight = series[series["stage"] == "selfweight"].tail(1)
+    return pd.concat([selfweight, series[series["stage"] == "loading"]]).sort_values("delta_mm", kind="stable")
+
+
+def _mark_du(ax, du_mm: float | None, legend: bool = False) -> None:
+    """A dotted vertical line at du, named in the legend of the axes that has one."""
+    if du_mm is not None:
+        ax.axvline(du_mm, color="0.4", lw=0.7, ls=":", zorder=0,
+                   label=rf"$d_u$ = {du_mm:.2f} mm" if legend else None)
+
+
+def _plot_until_du(ax, delta: np.ndarray, value: np.ndarray, du_mm: float | None, **style) -> None:
+    """A curve, solid up to du and faded past it (the arch is already running away there)."""
+    if du_mm is None:
+        ax.plot(delta, value, **style)
+        return
+    before = delta <= du_mm
+    ax.plot(delta[before], value[before], **style)
+    after = np.flatnonzero(~before)
+    if len(after):
+        tail = np.r_[after[0] - 1, after] if after[0] > 0 else after
+        ax.plot(delta[tail], value[tail], **{**style, "label": None, "alpha": PAST_DU_ALPHA})
+
+
+@_styled
+def plot_collapse(run: RunFolder, analysis: RunAnalysis, stem: Path, width_cm: float = COLUMN_CM,
+                  snapshot: str = "collapse") -> tuple[Path, Path]:
+    """The arch at collapse drawn to scale over its undeformed outline, hinges marked and labelled
+    (label, pivot side); the counterpart of the paper's Fig. 9."""
+    geometry = case_geometry(run.case)
+    state = run.snapshots.get(snapshot) or run.snapshots.get("end")
+    outlines = snapshot_outlines(geometry, state)
+    all_xy = np.vstack([b[: len(b) // 2, :2] for b in geometry.blocks] + outlines) * 1e3
+    span = np.ptp(all_xy[:, 0])
+    xlim = (all_xy[:, 0].min() - LABEL_ROOM * span, all_xy[:, 0].max() + LABEL_ROOM * span)
+    ylim = (all_xy[:, 1].min() - 0.03 * span, all_xy[:, 1].max() + 0.07 * span)
+    axes_width_cm = width_cm - AXIS_MARGINS_CM[0]
+    height_cm = axes_width_cm * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1]
+    fig = new_figure(height_cm=height_cm, width_cm=width_cm)
+    ax = fig.add_subplot()
+    n_blocks = len(geometry.blocks)
+    for b, (vertices, moved) in enumerate(zip(geometry.blocks, outlines)):
+        support = b in (0, n_blocks - 1)
+        ax.add_patch(Polygon(vertices[: len(vertices) // 2, :2] * 1e3, closed=True, fill=False,
+                             ec="0.65", lw=0.4, ls="--", zorder=1))
+        ax.add_patch(Polygon(moved * 1e3, closed=True, fc="0.45" if support else "#EADDCA",
+                             ec="0.15", lw=0.3, zorder=2))
+    pivots = {side: joint_points(geometry, state, side) * 1e3 for side in ("I", "E")}
+    centre = np.array([0.0, 0.0])
+    for k, track in enumerate(analysis.tracks):
+        colour = HINGE_COLOURS[k % len(HINGE_COLOURS)]
+        point = pivots[track.side][track.interface - 1]
+        outward = (point - centre) / np.linalg.norm(point - centre)
+        direction = outward if track.side == "E" else -outward
+        ax.plot(*point, "o", ms=4, mfc=colour, mec="white", mew=0.5, zorder=4)
+        ax.annotate(f"{track.label} ({track.interface}{track.side})", point, xytext=direction * 5,
+                    textcoords="offset points", ha="left" if direction[0] > 0 else "right",
+                    va="bottom" if direction[1] > 0 else "top", color=colour, fontweight="bold", zorder=5)
+    ax.plot([], [], color="0.65", lw=0.6, ls="--", label="undeformed")
+    ax.add_patch(Polygon(np.zeros((3, 2)), fc="#EADDCA", ec="0.15", lw=0.3, label=rf"$\delta$ = {state['delta_mm']:.2f} mm"))
+    ax.legend(loc="lower center", ncols=1, handlelength=1.5)  # inside the arch, under the crown
+    ax.set_aspect("equal")
+    ax.set_xlim(*xlim)
+    ax.set_ylim(*ylim)
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+    return save_figure(fig, stem)
+
+
+@_styled
+def plot_reactions(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
+    """Vertical and horizontal forces of both supports on the arch against the settlement."""
+    path = loading_path(run.series)
+    delta = path["delta_mm"].to_numpy()
+    fig = new_figure(height_cm=9.0)
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    for ax, component, name in ((top, "Ry", "vertical"), (bottom, "Rx", "horizontal")):
+        for support, colour, ls in (("left", LEFT_COLOUR, "-"), ("right", RIGHT_COLOUR, "--")):
+            _plot_until_du(ax, delta, path[f"{support}_{component}_N"].to_numpy(), analysis.du_mm,
+                           color=colour, ls=ls, label=f"{support} support")
+        _mark_du(ax, analysis.du_mm, legend=ax is top)
+        ax.set_ylabel(f"{name} reaction (N)")
+    top.legend(loc="best")
+    bottom.set_xlabel(r"support settlement $\delta$ (mm)")
+    return save_figure(fig, stem)
+
+
+@_styled
+def plot_hinge_openings(analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
+    """Opening and rotation of every hinge against the settlement, its formation marked."""
+    delta = analysis.history.delta_mm
+    fig = new_figure(height_cm=9.0)
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    for k, track in enumerate(analysis.tracks):
+        colour = HINGE_COLOURS[k % len(HINGE_COLOURS)]
+        label = f"{track.label}: {track.interface}{track.side}"
+        r = track.formed_record
+        top.plot(delta, track.opening_mm, color=colour, label=label)
+        top.plot(delta[r], track.opening_mm[r], "o", ms=3.5, color=colour)
+        rotation = track.rotation_mrad
+        bottom.plot(delta, rotation, color=colour)
+        bottom.plot(delta[r], rotation[r], "o", ms=3.5, color=colour)
+    for ax in (top, bottom):
+        _mark_du(ax, analysis.du_mm, legend=ax is top)
+        ax.set_ylim(bottom=0)
+    top.plot([], [], "o", ms=3.5, color="0.3", label="hinge formed")
+    top.legend(loc="upper left", ncols=1)
+    top.set_ylabel("hinge opening (mm)")
+    bottom.set_ylabel("hinge rotation (mrad)")
+    bottom.set_xlabel(r"support settlement $\delta$ (mm)")
+    return save_figure(fig, stem)
+
+
+@_styled
+def plot_crown_displacement(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
+    """Horizontal and vertical displacement of the crown voussoir against the settlement."""
+    path = loading_path(run.series)
+    delta = path["delta_mm"].to_numpy()
+    fig = new_figure(height_cm=5.5)
+    ax = fig.add_subplot()
+    _plot_until_du(ax, delta, path["crown_dx_mm"].to_numpy(), analysis.du_mm, color=LEFT_COLOUR,
+                   label="horizontal")
+    _plot_until_du(ax, delta, path["crown_dy_mm"].to_numpy(), analysis.du_mm, color=RIGHT_COLOUR,
+                   ls="--", label="vertical")
+    _mark_du(ax, analysis.du_mm, legend=True)
+    ax.legend(loc="lower left")
+    ax.set_xlabel(r"support settlement $\delta$ (mm)")
+    ax.set_ylabel("crown displacement (mm)")
+    return save_figure(fig, stem)
+
+
+FIGURES = {
+    "collapse": "arch at collapse",
+    "reactions": "support reactions",
+    "hinges": "hinge openings and rotations",
+    "crown": "crown displacement",
+}
+
+
+def write_figures(run: RunFolder, analysis: RunAnalysis, out: Path) -> dict[str, tuple[Path, Path]]:
+    """Every figure of a run into `out`; returns {figure name: (pdf, png)} keyed as in FIGURES."""
+    figures = {
+        "reactions": plot_reactions(run, analysis, out / "reactions"),
+        "hinges": plot_hinge_openings(analysis, out / "hinges"),
+        "crown": plot_crown_displacement(run, analysis, out / "crown"),
+    }
+    if run.snapshots.get("collapse") or run.snapshots.get("end"):
+        figures = {"collapse": plot_collapse(run, analysis, out / "collapse"), **figures}
+    return figures
