@@ -197,16 +197,9 @@ def plot_crown_displacement(run: RunFolder, analysis: RunAnalysis, stem: Path) -
     return save_figure(fig, stem)
 
 
-FIGURES = {
-    "collapse": "arch at collapse",
-    "reactions": "support reactions",
-    "hinges": "hinge openings and rotations",
-    "crown": "crown displacement",
-}
-
-
 def write_figures(run: RunFolder, analysis: RunAnalysis, out: Path) -> dict[str, tuple[Path, Path]]:
-    """Every figure of a run into `out`; returns {figure name: (pdf, png)} keyed as in FIGURES."""
+    """Every figure of a run into `out`; returns {name: (pdf, png)}: collapse (if the run has a final
+    snapshot), reactions, hinges, crown."""
     figures = {
         "reactions": plot_reactions(run, analysis, out / "reactions"),
         "hinges": plot_hinge_openings(analysis, out / "hinges"),

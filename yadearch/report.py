@@ -1,0 +1,237 @@
+"""`yadearch report RUN [RUN ...] --out DIR`: a Markdown report per set of runs with the paper's
+Table 1 comparison, hinge formation, mechanism, figures and provenance.
+
+Every number about a run's outcome (du, hinges at collapse) is taken from its summary.json; the
+analysis adds how the hinges formed. Runs are matched to the paper's sets by name or kn.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import click
+
+from . import reference
+from .analysis import RunAnalysis, analyse_run, load_run
+from .analysis.tracking import format_interfaces
+from .figures import write_figures
+from .rundir import RunFolder
+
+REPORT_FILE = "report.md"
+HINGE_ROWS = ("hinge_A", "hinge_B", "hinge_C")
+KN_MATCH_RELATIVE = 1e-6
+CAPTIONS = {
+    "collapse": "The arch at collapse (one probe step past du, after it ran away), drawn to scale over its "
+                "undeformed outline (dashed); hinges labelled in order of formation, with interface and "
+                "pivot side.",
+    "reactions": "Forces of the supports on the arch against the settlement δ of the right support; "
+                 "faded past du, where the arch is already moving.",
+    "hinges": "Opening (gap at the edge opposite the pivot) and rotation of each hinge against δ; dots "
+              "mark formation, the last point is the collapse state.",
+    "crown": "Displacement of the crown voussoir against δ (from the unloaded geometry, self-weight "
+             "included); faded past du.",
+}
+
+
+@dataclass
+class ReportedRun:
+    """A run, its analysis, its reference set (None if it matches neither) and its figure folder."""
+
+    run: RunFolder
+    analysis: RunAnalysis
+    reference_name: str | None
+    folder: str
+    figures: list[str]
+
+
+def match_reference(summary: dict[str, Any]) -> str | None:
+    """The paper set a run reproduces: by its name ("set1"/"set2"), else by its kn (N/mm3)."""
+    if summary.get("name") in reference.SETS:
+        return summary["name"]
+    kn = summary.get("kn_N_per_mm3")
+    for name, ref in reference.SETS.items():
+        if kn is not None and math.isclose(kn, ref["kn_N_per_mm3"], rel_tol=KN_MATCH_RELATIVE):
+            return name
+    return None
+
+
+def _hinge_text(interfaces: list[int], side: str) -> str:
+    return f"{format_interfaces(interfaces)} {side}"
+
+
+def _difference(run_interface: int, paper: list[int]) -> str:
+    """Interfaces between the run's hinge and the paper's (0 inside a spread hinge's range)."""
+    below, above = run_interface - min(paper), run_interface - max(paper)
+    gap = 0 if below >= 0 >= above else (below if below < 0 else above)
+    return f"{gap:+d}" if gap else "0"
+
+
+def match_hinges(summary_hinges: list[dict], paper_rows: list[tuple[str, list[int], str]]) -> dict[str, dict | None]:
+    """Each paper hinge (row, interfaces, side) paired with the run's hinge of the same side nearest
+    to it; a run hinge is used once, rows in the order given."""
+    free = list(summary_hinges)
+    pairs: dict[str, dict | None] = {}
+    for row, interfaces, side in paper_rows:
+        same = [h for h in free if h["side"] == side]
+        best = min(same, key=lambda h: min(abs(h["interface"] - k) for k in interfaces), default=None)
+        pairs[row] = best
+        if best is not None:
+            free.remove(best)
+    return pairs
+
+
+def table_one(reported: ReportedRun) -> list[str]:
+    """The paper's Table 1 for this run's set: experimental, numerical, this run and differences."""
+    ref = reference.SETS[reported.reference_name]
+    summary = reported.run.summary
+    labels = {t.interface: t.label for t in reported.analysis.tracks}
+    rows = [(row, ref["numerical"][row], reference.HINGE_SIDES[row]) for row in HINGE_ROWS]
+    rows.append(("hinge_D", [reference.HINGE_D_INTERFACE], reference.HINGE_SIDES["hinge_D"]))
+    pairs = match_hinges(summary["hinges_at_collapse"], rows)
+    lines = ["| | paper experimental | paper numerical | this run | run − exp. | run − num. |",
+             "|---|---|---|---|---|---|"]
+    for row, _, side in rows:
+        exp = ref["experimental"].get(row, [reference.HINGE_D_INTERFACE])
+        num = ref["numerical"].get(row, [reference.HINGE_D_INTERFACE])
+        hinge = pairs[row]
+        if hinge is None:
+            run_text, d_exp, d_num = "—", "—", "—"
+        else:
+            label = labels.get(hinge["interface"])
+            run_text = f"{hinge['interface']} {hinge['side']}" + (f" (formed {label})" if label else "")
+            d_exp, d_num = _difference(hinge["interface"], exp), _difference(hinge["interface"], num)
+        name = row.replace("hinge_", "hinge ") + ("¹" if row == "hinge_D" else "")
+        lines.append(f"| {name} | {_hinge_text(exp, side)} | {_hinge_text(num, side)} | {run_text} | "
+                     f"{d_exp} | {d_num} |")
+    du = summary.get("du_mm")
+    exp_du, num_du = ref["experimental"]["du_mm"], ref["numerical"]["du_mm"]
+    if du is None:
+        lines.append(f"| du (mm) | {exp_du:.1f} | {num_du:.1f} | no collapse | — | — |")
+    else:
+        lines.append(f"| du (mm) | {exp_du:.1f} | {num_du:.1f} | {du:.2f} | {du - exp_du:+.2f} "
+                     f"({(du - exp_du) / exp_du:+.1%}) | {du - num_du:+.2f} ({(du - num_du) / num_du:+.1%}) |")
+    lines += ["", "Hinges are interfaces numbered 1..n+1 from the left support, I/E the pivot side; the "
+              "paper's A, B, C are paired with the run's hinge of the same side nearest to them, and "
+              "'formed X' gives the run's own label (order of formation). Differences are in interfaces "
+              "(0 = inside the paper's range). ¹ D is named in the paper's text, not in its Table 1."]
+    return lines
+
+
+def formation_table(analysis: RunAnalysis) -> list[str]:
+    """Each hinge at collapse: label (order of formation), where, when it formed, how far it opened."""
+    deltas = analysis.history.delta_mm
+    lines = ["| hinge | interface | spread | side | formed at δ (mm) | peak when formed | opening at collapse (mm) "
+             "| rotation at collapse (mrad) | migrations |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for t in analysis.tracks:
+        moves = "; ".join(f"{m.from_interface} → {m.to_interface} at {m.delta_mm:.2f} mm" for m in t.migrations)
+        lines.append(f"| {t.label} | {t.interface} | {format_interfaces(t.final.interfaces)} | {t.side} | "
+                     f"{deltas[t.formed_record]:.2f} | {t.per_record[t.formed_record].interface} | "
+                     f"{t.opening_mm[-1]:.3f} | {abs(t.final.rotation) * 1e3:.1f} | {moves or '—'} |")
+    return lines
+
+
+def run_section(reported: ReportedRun) -> list[str]:
+    """The Markdown section of one run."""
+    run, analysis = reported.run, reported.analysis
+    summary = run.summary
+    du = summary.get("du_mm")
+    hinges = " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"]) or "—"
+    lines = [f"## {summary.get('name', run.path.name)}", "",
+             f"- run folder: `{run.path}`",
+             f"- kn = {summary.get('kn_N_per_mm3')} N/mm3, ks = {summary.get('ks_N_per_mm3')} N/mm3",
+             f"- du = {'no collapse' if du is None else f'{du:.2f} mm'}"
+             + (f" (bracket {summary['du_bracket_mm'][0]:.2f}–{summary['du_bracket_mm'][1]:.2f} mm)"
+                if summary.get("du_bracket_mm") else ""),
+             f"- hinges at collapse: {hinges}",
+             f"- mechanism: {analysis.mechanism}",
+             "- formation: " + (", then ".join(f"{label} at {delta:.2f} mm ({seq})"
+                                               for label, delta, seq in analysis.formation) or "—"),
+             "- sliding joints: " + (", ".join(f"{s.interface} (|V|/(μN) = {s.shear_ratio:.2f}"
+                                                + (f", slip {s.slip_mm:.2f} mm)" if s.slip_mm is not None else ")")
+                                                for s in analysis.sliding) or "none"),
+             ""]
+    own = [(t.interface, t.side) for t in sorted(analysis.tracks, key=lambda t: t.interface)]
+    if own != [(h["interface"], h["side"]) for h in summary["hinges_at_collapse"]] and summary.get("collapsed"):
+        lines += [f"**Note:** the analysis finds hinges {' '.join(f'{k}{s}' for k, s in own)} at collapse, "
+                  "summary.json lists the ones above (different hinge threshold?).", ""]
+    if reported.reference_name:
+        ref = reference.SETS[reported.reference_name]
+        lines += [f"### Comparison with the paper ({reported.reference_name}: {ref['description']}, "
+                  f"kn = {ref['kn_N_per_mm3']} N/mm3)", ""] + table_one(reported) + [
+                  "", f"Paper, sequence at collapse: {ref['sequence_at_collapse']}.", ""]
+    else:
+        lines += ["This run matches neither of the paper's sets (by name or kn): no comparison.", ""]
+    th = analysis.thresholds
+    lines += ["### Hinges and how they formed", ""] + formation_table(analysis) + [
+        "", f"A hinge is a run of joints rotating more than {th.rotation_mrad:g} mrad the same way, "
+        f"reported at its peak with the joints rotating at least half as much (spread); it has formed "
+        f"once it is also open by {th.opening_mm:g} mm, for good. Labels follow the order of formation. "
+        f"Every hinge at every recorded δ: [hinges.csv]({reported.folder}/hinges.csv).", ""]
+    lines += ["### Figures", ""]
+    for name in reported.figures:
+        lines += [f"![{name}]({reported.folder}/{name}.png)", "",
+                  f"*{CAPTIONS[name]}* ([PDF]({reported.folder}/{name}.pdf))", ""]
+    lines += ["### Provenance", "", "| | |", "|---|---|"]
+    for key in ("yade_version", "yadearch_version", "git_revision", "steps", "wall_s"):
+        value = summary.get(key)
+        lines.append(f"| {key} | {f'{value:.0f}' if key == 'wall_s' and value is not None else value} |")
+    return lines + [""]
+
+
+def overview(reported: list[ReportedRun]) -> list[str]:
+    """One line per run: its reference set, du against the paper's."""
+    lines = ["| run | paper set | du (mm) | paper numerical du (mm) | paper experimental du (mm) | hinges at collapse |",
+             "|---|---|---|---|---|---|"]
+    for r in reported:
+        s = r.run.summary
+        ref = reference.SETS.get(r.reference_name or "", {})
+        du = s.get("du_mm")
+        hinges = " ".join(f"{h['interface']}{h['side']}" for h in s["hinges_at_collapse"]) or "—"
+        lines.append(f"| {s.get('name', r.run.path.name)} | {r.reference_name or '—'} | "
+                     f"{'no collapse' if du is None else f'{du:.2f}'} | "
+                     f"{ref['numerical']['du_mm'] if ref else '—'} | {ref['experimental']['du_mm'] if ref else '—'} | "
+                     f"{hinges} |")
+    return lines
+
+
+def _folder_name(summary: dict[str, Any], path: Path, taken: set[str]) -> str:
+    base = str(summary.get("name") or path.name).replace("/", "_")
+    name, k = base, 2
+    while name in taken:
+        name, k = f"{base}-{k}", k + 1
+    taken.add(name)
+    return name
+
+
+def write_report(run_paths: list[str | Path], out: str | Path) -> Path:
+    """Analyse every run, write its figures and hinge table under `out`, and `out`/report.md."""
+    out = Path(out)
+    runs = [load_run(p) for p in run_paths]  # every path checked before anything is written
+    taken: set[str] = set()
+    reported = []
+    for run in runs:
+        analysis = analyse_run(run)
+        folder = _folder_name(run.summary, run.path, taken)
+        figures = write_figures(run, analysis, out / folder)
+        analysis.hinges.to_csv(out / folder / "hinges.csv", index=False, float_format="%.6g")
+        reported.append(ReportedRun(run, analysis, match_reference(run.summary), folder, list(figures)))
+    lines = ["# yadearch report", "", f"Reference: *{reference.PAPER}*.", ""] + overview(reported) + [""]
+    for r in reported:
+        lines += run_section(r)
+    path = out / REPORT_FILE
+    path.write_text("\n".join(lines))
+    return path
+
+
+@click.command("report")
+@click.argument("runs", nargs=-1, required=True, type=click.Path())
+@click.option("--out", required=True, type=click.Path(file_okay=False),
+              help="folder that receives report.md and the figures")
+def report(runs: tuple[str, ...], out: str) -> None:
+    """Write OUT/report.md for the run folders RUNS: comparison with the paper, hinges, figures."""
+    path = write_report(list(runs), out)
+    click.echo(f"report -> {path}")
