@@ -209,7 +209,6 @@ def batch_run(params: dict[str, Any]) -> tuple[ArchCase, Path]:
 def execute(case: ArchCase, folder: Path, timeout_s: float | None) -> dict[str, Any]:
     """Run one case in its own process (the task of every executor); a failure writes failed.json."""
     started = time.time()
-    (folder / FAILED_FILE).unlink(missing_ok=True)
     try:
         run_case_process(case, folder, timeout_s=timeout_s, quiet=True)
     except RunFailedError as exc:
@@ -243,6 +242,8 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
     for spec in specs:
         if spec.case is None:
             record_failure(spec.folder, spec.name, spec.error or "", 0.0)
+    for spec in todo:
+        (spec.folder / FAILED_FILE).unlink(missing_ok=True)
     if todo and task is execute:
         check_yade_installed()
     skipped = sum(1 for s in specs if s.case is not None) - len(todo)

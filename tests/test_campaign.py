@@ -1,0 +1,181 @@
+"""Campaigns without YADE: values and grids, run names, tables, resumability and failures with a
+stand-in task, hinge labels, the yade-batch table, the kn figure and the sweep command's usage errors."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+import threading
+from pathlib import Path
+
+import pandas as pd
+import pytest
+from click.testing import CliRunner
+
+from yadearch.campaign import (FAILED_FILE, RESULTS_FILE, batch_run, grid, label_hinges, parse_values,
+                               plan, read_table, record_failure, run_campaign, run_tag)
+from yadearch.campaign_cli import sweep
+from yadearch.case import preset
+from yadearch.errors import CaseError, YadearchError
+from yadearch.executors import local_pool
+from yadearch.sweep_figure import kn_sweep_figure
+
+REPO = Path(__file__).resolve().parents[1]
+BASE = preset("set1").with_overrides({"n_voussoirs": 15})
+HINGES = [{"interface": 1, "side": "E"}, {"interface": 3, "side": "I"}, {"interface": 8, "side": "E"},
+          {"interface": 12, "side": "I"}, {"interface": 16, "side": "E"}]
+
+
+class FakeRuns:
+    """A stand-in for the simulation process: du = 50 + 10 log10(kn); kn in `fail` fails; counts calls."""
+
+    def __init__(self, fail: tuple[float, ...] = (), interrupt_after: int | None = None) -> None:
+        self.fail, self.interrupt_after, self.calls = fail, interrupt_after, []
+        self.lock = threading.Lock()
+
+    def __call__(self, case, folder: Path, timeout_s):
+        with self.lock:
+            self.calls.append(case.name)
+            if self.interrupt_after is not None and len(self.calls) > self.interrupt_after:
+                raise KeyboardInterrupt
+        folder.mkdir(parents=True, exist_ok=True)
+        (folder / "case.toml").write_text(case.to_toml())
+        kn = case.interface.kn_N_per_mm3
+        if kn in self.fail:
+            record_failure(folder, case.name, f"run {case.name!r} timed out after 1 s", 1.0)
+            return {"status": "failed", "reason": "timed out"}
+        (folder / "summary.json").write_text(json.dumps({
+            "du_mm": 50 + 10 * math.log10(kn), "collapsed": True, "hinges_at_collapse": HINGES,
+            "steps": 100, "wall_s": 2.0}))
+        return {"status": "done", "reason": ""}
+
+
+def campaign(out: Path, task: FakeRuns, rows: list[dict]) -> pd.DataFrame:
+    with local_pool(2) as pool:
+        return run_campaign(BASE, rows, out, pool, progress=False, task=task)
+
+
+def test_parse_values_lists_and_ranges():
+    assert parse_values("0.25,5.2") == [0.25, 5.2]
+    assert parse_values("0.1:100:log:13") == [0.1, 0.1778, 0.3162, 0.5623, 1.0, 1.778, 3.162, 5.623,
+                                               10.0, 17.78, 31.62, 56.23, 100.0]
+    assert parse_values("9:15:lin:4") == [9, 11, 13, 15]
+    assert parse_values("true,false") == [True, False]
+    for bad in ("1:2:cubic:3", "0:10:log:3", "1:2:lin:0", ""):
+        with pytest.raises(YadearchError):
+            parse_values(bad)
+
+
+def test_grid_is_the_product_and_names_are_deterministic():
+    rows = grid({"kn_N_per_mm3": [0.1, 1.0], "numerics.damping": [0.1, 0.2]})
+    assert rows[1] == {"kn_N_per_mm3": 0.1, "numerics.damping": 0.2} and len(rows) == 4
+    assert [run_tag(r) for r in rows] == ["kn0.1_damping0.1", "kn0.1_damping0.2", "kn1_damping0.1",
+                                          "kn1_damping0.2"]
+    long = {"kn_N_per_mm3": 0.1, "settlement_direction_deg": -90.0, "max_settlement_mm": 150.0,
+            "hinge_rotation_mrad": 2.0, "joint_record_every_mm": 0.5}
+    assert run_tag(long) == run_tag(dict(long)) and len(run_tag(long)) <= 64
+    assert run_tag(long) != run_tag({**long, "joint_record_every_mm": 0.25})
+    with pytest.raises(CaseError, match="unknown parameter 'knn'"):
+        grid({"knn": [1]})
+
+
+def test_explicit_table(tmp_path):
+    table = tmp_path / "runs.csv"
+    table.write_text("run,kn_N_per_mm3,interface.ks_over_kn\nsoft,0.1,\nstiff,10,0.4\n")
+    rows = read_table(table)
+    assert rows == [{"run": "soft", "kn_N_per_mm3": 0.1}, {"run": "stiff", "kn_N_per_mm3": 10,
+                                                           "interface.ks_over_kn": 0.4}]
+    specs = plan(BASE, rows, tmp_path / "c")
+    assert [s.folder.name for s in specs] == ["soft", "stiff"]
+    assert specs[1].case.interface.ks_over_kn == 0.4 and specs[0].case.interface.ks_over_kn == 0.5
+    table.write_text("kn_N_per_mm3,colour\n1,red\n")
+    with pytest.raises(CaseError, match="colour"):
+        read_table(table)
+
+
+def test_results_table_failures_and_invalid_cases(tmp_path):
+    task = FakeRuns(fail=(10.0,))
+    rows = grid({"kn_N_per_mm3": [0.1, 1.0, 10.0, -1.0]})
+    table = campaign(tmp_path, task, rows)
+    assert sorted(task.calls) == ["kn0.1", "kn1", "kn10"]  # the invalid case never starts
+    read = pd.read_csv(tmp_path / RESULTS_FILE)
+    for column in ("run", "kn_N_per_mm3", "du_mm", "hinges", "mechanism", "hinge_A", "hinge_B",
+                   "hinge_C", "hinge_D", "status", "reason", "wall_s"):
+        assert column in read.columns
+    assert list(read["status"]) == ["done", "done", "failed", "failed"]
+    assert read["du_mm"].tolist()[:2] == pytest.approx([40.0, 50.0])
+    assert "timed out" in read.loc[2, "reason"] and "kn_N_per_mm3 must be > 0" in read.loc[3, "reason"]
+    assert json.loads((tmp_path / "kn10" / FAILED_FILE).read_text())["reason"].endswith("after 1 s")
+    assert read.loc[0, "mechanism"] == "E-I-E-I-E" and read.loc[0, "hinges"] == "1E 3I 8E 12I 16E"
+    assert table.loc[0, ["hinge_A", "hinge_B", "hinge_C", "hinge_D"]].tolist() == [3, 8, 16, 1]
+
+
+def test_resume_redoes_only_unfinished_runs(tmp_path):
+    rows = grid({"kn_N_per_mm3": [0.1, 1.0, 10.0]})
+    with pytest.raises(KeyboardInterrupt):  # "killed" after its first finished run
+        with local_pool(1) as pool:
+            run_campaign(BASE, rows, tmp_path, pool, progress=False, task=FakeRuns(interrupt_after=1))
+    statuses = pd.read_csv(tmp_path / RESULTS_FILE)["status"].tolist()
+    assert statuses == ["done", "pending", "pending"]
+    first = (tmp_path / "kn0.1" / "summary.json").stat().st_mtime_ns
+    again = FakeRuns(fail=(10.0,))
+    campaign(tmp_path, again, rows)
+    assert sorted(again.calls) == ["kn1", "kn10"]
+    assert (tmp_path / "kn0.1" / "summary.json").stat().st_mtime_ns == first
+    third = FakeRuns()
+    table = campaign(tmp_path, third, rows)
+    assert third.calls == ["kn10"] and set(table["status"]) == {"done"}  # failed runs are redone
+    assert not (tmp_path / "kn10" / FAILED_FILE).exists()
+
+
+def test_resume_refuses_a_folder_of_another_case(tmp_path):
+    rows = grid({"kn_N_per_mm3": [0.1]})
+    campaign(tmp_path, FakeRuns(), rows)
+    with local_pool(1) as pool, pytest.raises(YadearchError, match="damping"):
+        run_campaign(BASE.with_overrides({"damping": 0.3}), rows, tmp_path, pool, progress=False,
+                     task=FakeRuns())
+
+
+def test_hinge_labels_follow_the_paper():
+    detail = [{**h, "rotation_mrad": r} for h, r in zip(HINGES, (147, 460, 231, 8, 93))]
+    labels = label_hinges({"hinges_at_collapse": HINGES, "hinges_detail": detail}, 15)
+    assert labels == {"hinge_A": 3, "hinge_B": 8, "hinge_C": 16, "hinge_D": 1}
+    assert label_hinges({"hinges_at_collapse": []}, 15) == dict.fromkeys(labels)
+
+
+def read_batch_table(path: Path) -> list[dict]:
+    """The yade-batch table as yade.utils.readParamsFromTable reads it (blank-separated, # comments,
+    values evaluated as Python)."""
+    lines = [re.sub(r"\s*#.*", "", line).split() for line in path.read_text().splitlines()]
+    lines = [line for line in lines if line]
+    return [{k: eval(v, math.__dict__) if k != "description" else v for k, v in zip(lines[0], line)}
+            for line in lines[1:]]
+
+
+def test_yade_batch_table_maps_to_the_sweep_runs():
+    rows = read_batch_table(REPO / "scripts" / "yade_batch_table.txt")
+    runs = [batch_run(row) for row in rows]
+    assert [r["kn_N_per_mm3"] for r in rows] == parse_values("0.1:100:log:13")
+    for row, (case, folder) in zip(rows, runs):
+        assert folder == Path("reports/kn-sweep") / row["description"]
+        assert case.interface.kn_N_per_mm3 == row["kn_N_per_mm3"] and case.name == row["description"]
+        assert case.geometry.n_voussoirs == 55
+    with pytest.raises(CaseError):
+        batch_run({"preset": "set2", "kn_N_per_mm3": -1})
+
+
+def test_kn_figure(tmp_path):
+    table = campaign(tmp_path, FakeRuns(fail=(10.0,)), grid({"kn_N_per_mm3": [0.1, 1.0, 10.0, 100.0]}))
+    paths = kn_sweep_figure(table, tmp_path / "du_vs_kn")
+    assert [p.suffix for p in paths] == [".pdf", ".png"] and all(p.stat().st_size > 1000 for p in paths)
+
+
+@pytest.mark.parametrize("args, message", [
+    ([], "nothing to sweep"),
+    (["--kn", "1,2", "--table", "t.csv"], "either --table"),
+    (["--param", "kn_N_per_mm3"], "NAME=VALUES"),
+])
+def test_sweep_usage_errors(tmp_path, args, message):
+    result = CliRunner().invoke(sweep, ["--preset", "set1", "--out", str(tmp_path), *args])
+    assert result.exit_code != 0 and message in result.output
