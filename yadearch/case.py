@@ -95,7 +95,7 @@ class NumericsConfig:
                                          doc="YADE unbalanced force (mean resultant / mean contact force) below which the arch is in equilibrium"))
     selfweight_max_s: float = field(default=2.0, metadata=_num(0, low_open=True,
                                     doc="simulated time allowed for the self-weight stage (s)"))
-    hold_max_s: float = field(default=1.0, metadata=_num(0, low_open=True,
+    hold_max_s: float = field(default=0.5, metadata=_num(0, low_open=True,
                               doc="simulated time allowed to find equilibrium at a fixed support (s)"))
     hold_min_s: float = field(default=0.1, metadata=_num(0, doc="simulated time a hold lasts at least "
                                                           "before it may end in equilibrium (s)"))

@@ -421,21 +421,44 @@ class Runner:
     def find_du(self, triggered: float) -> tuple[float, float, int, dict]:
         """Bracket du between a state in equilibrium and one without.
 
+        First the highest saved loading state that holds equilibrium (strides doubling back from
+        the trigger, then bisection among saved states); then forward probes of `probe_step_mm`
+        from it, each a quasi-static move and a hold, until one fails; then bisection by moves.
         Returns (lo, hi, number of holds, the saved extras of the `search_lo` state)."""
         self.stage = "search"
+        saved = [s for s in self._saved if s[0] <= triggered]
         holds = 0
         lo_state = None
-        for delta, name, extra in reversed([s for s in self._saved if s[0] <= triggered]):
+
+        def held(index: int) -> bool:
+            nonlocal holds, lo_state
+            delta, name, extra = saved[index]
             self._restore(name, extra)
             holds += 1
             verdict = self.hold()
             self.log(f"[{self.case.name}] saved state at delta={units.to_mm(delta):.2f} mm held: {verdict}")
-            if verdict == "stable":
+            if verdict == "stable" and (lo_state is None or self.delta() > lo_state[0]):
                 lo_state = (self.delta(), "search_lo", self._save("search_lo"))
+            return verdict == "stable"
+
+        unstable, stride, index = len(saved), 1, len(saved) - 1
+        while index >= 0 and not held(index):
+            unstable = index
+            if index == 0:
                 break
+            index = max(0, index - stride)
+            stride *= 2
         if lo_state is None:
             raise RunFailedError("no saved loading state holds equilibrium: collapse happened before "
                                  "the first saved state; lower settlement_rate_mm_per_s or probe_step_mm")
+        stable = index
+        while unstable - stable > 1:
+            middle = (stable + unstable) // 2
+            if held(middle):
+                stable = middle
+            else:
+                unstable = middle
+        self._restore(lo_state[1], lo_state[2])
         probe = units.mm(self.num.probe_step_mm)
         hi = None
         while hi is None:
