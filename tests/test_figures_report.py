@@ -1,0 +1,170 @@
+"""Figures and the report on a small synthetic run folder written with rundir.write_run (no YADE):
+files are produced, and the report's numbers are summary.json's."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from test_analysis import BuiltRun, paper_like_run
+from yadearch import figures
+from yadearch.analysis import analyse_run, load_run
+from yadearch.analysis.blocks import block_centroids, case_geometry, snapshot_outlines
+from yadearch.errors import YadearchError
+from yadearch.report import match_reference, report, write_report
+from yadearch.rundir import write_run
+
+CASE_TOML = """name = "{name}"
+
+[geometry]
+n_voussoirs = 10
+embrace_deg = 125.0
+internal_radius_mm = 300.0
+thickness_mm = 24.0
+depth_mm = 120.0
+support_length_mm = 36.0
+
+[material]
+friction_deg = 41.2
+
+[interface]
+kn_N_per_mm3 = {kn}
+
+[numerics]
+hinge_rotation_mrad = 2.0
+"""
+
+
+def placed(case: dict, delta_mm: float) -> dict:
+    """A snapshot with the right support settled by delta and the voussoirs following linearly."""
+    pos0 = block_centroids(case_geometry(case))
+    share = np.linspace(0.0, 1.0, len(pos0))
+    pos = pos0 - np.outer(share, [0.0, delta_mm * 1e-3])
+    return {"delta_mm": delta_mm, "step": 1, "pos_m": pos.tolist(), "rot_rad": (2e-4 * delta_mm * share).tolist(),
+            "hinges": []}
+
+
+def series_rows(built: BuiltRun) -> list[dict]:
+    rows = []
+    for stage, deltas in (("selfweight", [0.0, 0.0]), ("loading", np.arange(0.5, built.du_mm + 5, 0.5)),
+                          ("search", [built.du_mm + 3, built.du_mm - 1, built.du_mm + 1]),
+                          ("collapse", [built.du_mm + 0.05])):
+        for d in deltas:
+            rows.append({"stage": stage, "step": len(rows), "time_s": 0.01 * len(rows), "delta_mm": d,
+                         "left_Rx_N": 12.0, "left_Ry_N": 15.8 - 0.02 * d, "right_Rx_N": -12.0,
+                         "right_Ry_N": 15.8 + 0.02 * d, "crown_dx_mm": 0.2 * d, "crown_dy_mm": -2 - 0.6 * d,
+                         "kinetic_J": 1e-5, "unbalanced": 1e-3, "max_block_speed_mm_per_s": 0.1})
+    return rows
+
+
+def make_run(folder: Path, name: str = "set2", kn: float = 5.2) -> dict:
+    """A complete run folder with the paper-like hinges 1E 4I 7E 11E; returns its summary."""
+    import tomllib
+
+    built = paper_like_run()
+    case_toml = CASE_TOML.format(name=name, kn=kn)
+    case = tomllib.loads(case_toml)
+    summary = {
+        "name": name, "du_mm": built.du_mm + 0.0123, "collapsed": True,
+        "du_bracket_mm": [built.du_mm - 0.02, built.du_mm + 0.05],
+        "hinges_at_collapse": [{"interface": 1, "side": "E"}, {"interface": 4, "side": "I"},
+                               {"interface": 7, "side": "E"}, {"interface": 11, "side": "E"}],
+        "kn_N_per_mm3": kn, "ks_N_per_mm3": kn / 2, "steps": 12345, "wall_s": 67.8,
+        "yade_version": "2023.02a", "yadearch_version": "0.1.0", "git_revision": "abc123",
+    }
+    snapshots = {"selfweight": placed(case, 0.0), "collapse": placed(case, built.du_mm + 0.05)}
+    write_run(folder, case_toml, series_rows(built), built.joints().to_dict("records"), snapshots, summary)
+    return summary
+
+
+@pytest.fixture(scope="module")
+def written(tmp_path_factory) -> tuple[Path, dict, str]:
+    root = tmp_path_factory.mktemp("report")
+    summary = make_run(root / "runs" / "set2")
+    path = write_report([root / "runs" / "set2"], root / "out")
+    return root, summary, path.read_text()
+
+
+def table_row(markdown: str, first_cell: str) -> list[str]:
+    line = next(l for l in markdown.splitlines() if l.startswith(f"| {first_cell} |"))
+    return [cell.strip() for cell in line.strip("|").split("|")]
+
+
+def test_report_numbers_are_those_of_summary_json(written):
+    _, summary, markdown = written
+    du = f"{summary['du_mm']:.2f}"
+    assert table_row(markdown, "du (mm)")[3] == du
+    assert table_row(markdown, "set2")[2] == du
+    hinges = " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"])
+    assert f"- hinges at collapse: {hinges}" in markdown
+    assert table_row(markdown, "set2")[5] == hinges
+    run_hinges = {table_row(markdown, f"hinge {x}")[3].split(" (")[0] for x in "ABC"}
+    assert run_hinges <= {f"{h['interface']} {h['side']}" for h in summary["hinges_at_collapse"]}
+    assert "**Note:**" not in markdown  # the analysis agrees with summary.json
+
+
+def test_report_compares_with_the_matching_paper_set(written):
+    _, summary, markdown = written
+    assert "### Comparison with the paper (set2" in markdown
+    row = table_row(markdown, "du (mm)")
+    assert row[1:3] == ["91.5", "91.8"]
+    assert row[5].startswith(f"{summary['du_mm'] - 91.8:+.2f}")
+    assert "asymmetric four-hinge mechanism, E-I-E-E, D at the left support" in markdown
+
+
+def test_report_shows_provenance_and_links_every_figure(written):
+    root, summary, markdown = written
+    for key in ("yade_version", "yadearch_version", "git_revision", "steps"):
+        assert f"| {key} | {summary[key]} |" in markdown
+    links = re.findall(r"\]\((set2/[^)]+)\)", markdown)
+    assert {Path(l).suffix for l in links} == {".png", ".pdf", ".csv"}
+    for link in links:
+        assert (root / "out" / link).stat().st_size > 0
+
+
+def test_every_figure_is_a_non_empty_pdf_and_png(tmp_path):
+    make_run(tmp_path / "run")
+    run = load_run(tmp_path / "run")
+    analysis = analyse_run(run)
+    written = [figures.plot_collapse(run, analysis, tmp_path / "f" / "collapse"),
+               figures.plot_reactions(run, analysis, tmp_path / "f" / "reactions"),
+               figures.plot_hinge_openings(analysis, tmp_path / "f" / "hinges"),
+               figures.plot_crown_displacement(run, analysis, tmp_path / "f" / "crown")]
+    for pdf, png in written:
+        assert pdf.read_bytes()[:4] == b"%PDF" and pdf.stat().st_size > 1000
+        assert png.read_bytes()[:4] == b"\x89PNG" and png.stat().st_size > 1000
+
+
+def test_the_selfweight_snapshot_puts_every_block_in_place(tmp_path):
+    make_run(tmp_path / "run")
+    run = load_run(tmp_path / "run")
+    geometry = case_geometry(run.case)
+    for block, outline in zip(geometry.blocks, snapshot_outlines(geometry, run.snapshots["selfweight"])):
+        assert outline == pytest.approx(block[:4, :2], abs=1e-12)
+
+
+def test_a_run_matching_neither_set_gets_figures_and_its_own_numbers(tmp_path):
+    summary = make_run(tmp_path / "k1", name="stiff", kn=1.0)
+    markdown = write_report([tmp_path / "k1"], tmp_path / "out").read_text()
+    assert "matches neither" in markdown and "Comparison with the paper" not in markdown
+    assert table_row(markdown, "stiff")[2] == f"{summary['du_mm']:.2f}"
+    assert (tmp_path / "out" / "stiff" / "collapse.png").stat().st_size > 0
+
+
+def test_runs_are_matched_to_the_paper_by_name_or_kn():
+    assert match_reference({"name": "set1", "kn_N_per_mm3": 9.0}) == "set1"
+    assert match_reference({"name": "mine", "kn_N_per_mm3": 5.2}) == "set2"
+    assert match_reference({"name": "mine", "kn_N_per_mm3": 0.25}) == "set1"
+    assert match_reference({"name": "mine", "kn_N_per_mm3": 1.0}) is None
+
+
+def test_a_path_that_is_not_a_run_folder_is_a_one_line_error(tmp_path):
+    with pytest.raises(YadearchError, match=re.escape(str(tmp_path / "nope"))):
+        write_report([tmp_path / "nope"], tmp_path / "out")
+    result = CliRunner().invoke(report, [str(tmp_path), "--out", str(tmp_path / "out")])
+    assert isinstance(result.exception, YadearchError) and str(tmp_path) in str(result.exception)
+    assert not (tmp_path / "out").exists()
