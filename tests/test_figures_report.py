@@ -168,3 +168,10 @@ def test_a_path_that_is_not_a_run_folder_is_a_one_line_error(tmp_path):
     result = CliRunner().invoke(report, [str(tmp_path), "--out", str(tmp_path / "out")])
     assert isinstance(result.exception, YadearchError) and str(tmp_path) in str(result.exception)
     assert not (tmp_path / "out").exists()
+
+
+def test_the_report_command_writes_the_report(tmp_path):
+    make_run(tmp_path / "run")
+    result = CliRunner().invoke(report, [str(tmp_path / "run"), "--out", str(tmp_path / "out")])
+    assert result.exit_code == 0, result.output
+    assert result.output.strip() == f"report -> {tmp_path / 'out' / 'report.md'}"

@@ -1,7 +1,7 @@
 """Figures of a run for a paper: the arch at collapse with its hinges, support reactions, hinge
 openings and crown displacement against the support settlement delta.
 
-One style for all: 8 pt text, sized for a journal column (8.5 cm; 17 cm double column), constrained
+One style for all: 8 pt text, sized for a journal column (8.5 cm; `width_cm` for wider), constrained
 layout so no label is clipped, written as vector PDF and 300 dpi PNG. Uses matplotlib's Figure
 directly (no pyplot), so it never touches an interactive backend.
 """
@@ -21,7 +21,6 @@ from .rundir import RunFolder
 
 CM = 1 / 2.54  # inches
 COLUMN_CM = 8.5
-DOUBLE_COLUMN_CM = 17.0
 PNG_DPI = 300
 STYLE = {
     "font.size": 8, "axes.labelsize": 8, "axes.titlesize": 8, "legend.fontsize": 7,

@@ -34,6 +34,8 @@ CAPTIONS = {
     "crown": "Displacement of the crown voussoir against δ (from the unloaded geometry, self-weight "
              "included); faded past du.",
 }
+FINAL_STATE_CAPTION = ("The arch at the end of the run (no collapse), drawn to scale over its undeformed "
+                       "outline (dashed); hinges labelled in order of formation, with interface and pivot side.")
 
 
 @dataclass
@@ -173,8 +175,9 @@ def run_section(reported: ReportedRun) -> list[str]:
         f"Every hinge at every recorded δ: [hinges.csv]({reported.folder}/hinges.csv).", ""]
     lines += ["### Figures", ""]
     for name in reported.figures:
+        caption = CAPTIONS[name] if summary.get("collapsed") or name != "collapse" else FINAL_STATE_CAPTION
         lines += [f"![{name}]({reported.folder}/{name}.png)", "",
-                  f"*{CAPTIONS[name]}* ([PDF]({reported.folder}/{name}.pdf))", ""]
+                  f"*{caption}* ([PDF]({reported.folder}/{name}.pdf))", ""]
     lines += ["### Provenance", "", "| | |", "|---|---|"]
     for key in ("yade_version", "yadearch_version", "git_revision", "steps", "wall_s"):
         value = summary.get(key)
