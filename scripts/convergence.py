@@ -3,7 +3,9 @@ and with another damping, and print du, the hinges and the relative differences.
 
     .venv/bin/python scripts/convergence.py [--preset set2] [--jobs 2] [--out runs/convergence]
 
-Exit code 1 if du moves by more than 1 % or a hinge moves.
+Exit code 1 if du moves by more than 1 % or a hinge moves. A complete run folder of the same case
+under --out is reused (copy `reports/set2` to `runs/convergence/set2_default` to reuse the
+reproduction run).
 """
 
 from __future__ import annotations
@@ -14,10 +16,20 @@ import sys
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from yadearch.case import preset
+from yadearch.case import ArchCase, load_case, preset
 from yadearch.process import run_case_process
+from yadearch.rundir import is_complete
 
 TOLERANCE = 0.01
+
+
+def reusable(folder: Path, case: ArchCase) -> bool:
+    """A complete run folder of exactly this case (name aside) is reused, not run again."""
+    if not is_complete(folder):
+        return False
+    ran = load_case(folder / "case.toml")
+    ran.name = case.name
+    return ran == case
 
 
 def main() -> int:
@@ -45,7 +57,8 @@ def main() -> int:
 
     def run(label: str) -> dict:
         folder = Path(args.out) / cases[label].name
-        run_case_process(cases[label], folder, quiet=True)
+        if not reusable(folder, cases[label]):
+            run_case_process(cases[label], folder, quiet=True)
         return json.loads((folder / "summary.json").read_text())
 
     with ThreadPoolExecutor(max_workers=args.jobs) as pool:

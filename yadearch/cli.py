@@ -12,6 +12,7 @@ import click
 from .case import ArchCase, load_case, parameter_docs, preset
 from .errors import YadearchError
 from .process import run_case_process
+from .report import report, write_report
 
 
 def _parse_value(text: str) -> Any:
@@ -90,12 +91,18 @@ def run(preset_name: str | None, case_file: str | None, kn: float | None, settin
 @cli.command()
 @click.option("--out", type=click.Path(file_okay=False), default="reports", show_default=True,
               help="folder that receives set1/ and set2/")
-def reproduce(out: str) -> None:
-    """Run both paper cases (set1, set2) into OUT/set1 and OUT/set2."""
-    for name in ("set1", "set2"):
-        folder = Path(out) / name
-        run_case_process(preset(name), folder)
+@click.option("--jobs", type=click.IntRange(1, 2), default=2, show_default=True,
+              help="cases run at once (one core each)")
+def reproduce(out: str, jobs: int) -> None:
+    """Run both paper cases into OUT/set1 and OUT/set2, then write OUT/report.md with figures."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    folders = [Path(out) / name for name in ("set1", "set2")]
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        list(pool.map(lambda folder: run_case_process(preset(folder.name), folder), folders))
+    for folder in folders:
         _report_summary(folder)
+    click.echo(f"report: {write_report(folders, out)}")
 
 
 @cli.command()
@@ -103,6 +110,9 @@ def params() -> None:
     """List every case parameter with its default and meaning."""
     for qualified, default, doc in parameter_docs():
         click.echo(f"{qualified:40s} {default:>10s}  {doc}")
+
+
+cli.add_command(report)
 
 
 def main(argv: list[str] | None = None) -> int:
