@@ -1,0 +1,124 @@
+"""Campaigns and calibration on real YADE with a coarse arch (9 voussoirs, soft joints, 30 mm/s:
+~15-40 s a run): local and dask executors agree, a restart redoes nothing finished, failures are
+recorded, and a short calibration converges. The kn sweep runs once (module fixture) and the others reuse its folders."""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pandas as pd
+import pytest
+from click.testing import CliRunner
+from conftest import needs_yade
+
+from yadearch.campaign import RESULTS_FILE, batch_run
+from yadearch.campaign_cli import calibrate, sweep
+from yadearch.errors import YadearchError
+
+pytestmark = [pytest.mark.yade, needs_yade]
+
+REPO = Path(__file__).resolve().parents[1]
+COARSE = ["--preset", "set1", "--set", "n_voussoirs=9", "--set", "settlement_rate_mm_per_s=30",
+          "--set", "progress_every_s=1e9"]
+TABLE = "kn_N_per_mm3\n0.1\n0.15\n0.2\n-1\n"  # three coarse arches and one invalid case
+COMPARED = ["run", "kn_N_per_mm3", "collapsed", "hinges", "mechanism", "hinge_A", "hinge_B", "hinge_C",
+            "hinge_D", "status", "reason"]
+# YADE is not bit-reproducible here: identical runs differ from the self-weight stage on (measured: 3
+# distinct states in 4 runs of one case, also with PYTHONHASHSEED fixed), so du agrees to a tolerance.
+DU_ATOL_MM = 0.5
+
+
+def run_sweep(out: Path, *extra: str):
+    table = out.parent / "table.csv"
+    table.write_text(TABLE)
+    return CliRunner().invoke(sweep, [*COARSE, "--table", str(table), "--out", str(out), *extra])
+
+
+@pytest.fixture(scope="module")
+def local_sweep(tmp_path_factory) -> Path:
+    """The coarse campaign through `yadearch sweep` on two local processes."""
+    out = tmp_path_factory.mktemp("local") / "sweep"
+    result = run_sweep(out, "--jobs", "2")
+    assert isinstance(result.exception, YadearchError), result.output
+    assert "1 of 4 runs failed" in str(result.exception)
+    return out
+
+
+def test_local_campaign_writes_the_results_table(local_sweep):
+    table = pd.read_csv(local_sweep / RESULTS_FILE)
+    assert table["status"].tolist() == ["done", "done", "done", "failed"]
+    assert "kn_N_per_mm3 must be > 0" in table.loc[3, "reason"]
+    done = table[table["status"] == "done"]
+    assert done["du_mm"].between(50, 150).all() and done["collapsed"].all()
+    assert (done["hinge_C"] == 10).all() and done["hinge_A"].notna().all()
+    assert (done["wall_s"] > 0).all()
+    assert (local_sweep / "du_vs_kn.pdf").is_file() and (local_sweep / "du_vs_kn.png").is_file()
+
+
+def test_dask_cluster_gives_the_same_results(local_sweep, tmp_path):
+    from distributed import LocalCluster
+
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                      dashboard_address=None) as cluster:
+        result = run_sweep(tmp_path / "sweep", "--scheduler", cluster.scheduler_address, "--no-figure")
+    assert "1 of 4 runs failed" in str(result.exception), result.output
+    local = pd.read_csv(local_sweep / RESULTS_FILE)
+    remote = pd.read_csv(tmp_path / "sweep" / RESULTS_FILE)
+    pd.testing.assert_frame_equal(local[COMPARED], remote[COMPARED])
+    assert remote["du_mm"].tolist() == pytest.approx(local["du_mm"].tolist(), abs=DU_ATOL_MM, nan_ok=True)
+
+
+def test_restart_redoes_nothing_finished_and_records_a_timeout(local_sweep, tmp_path):
+    out = tmp_path / "sweep"
+    for name in ("kn0.1", "kn0.15", "kn0.2"):
+        shutil.copytree(local_sweep / name, out / name)
+    (out / "kn0.2" / "summary.json").unlink()  # killed while kn0.2 ran
+    finished = {p: p.stat().st_mtime_ns for p in out.glob("kn0.1*/*")}
+    result = run_sweep(out, "--jobs", "1", "--timeout-min", str(1 / 60), "--no-figure")
+    assert "2 of 4 runs failed" in str(result.exception), result.output
+    assert {p: p.stat().st_mtime_ns for p in out.glob("kn0.1*/*")} == finished
+    table = pd.read_csv(out / RESULTS_FILE)
+    assert table["status"].tolist() == ["done", "done", "failed", "failed"]
+    assert "timed out after 1 s" in table.loc[2, "reason"]
+    assert "timed out" in json.loads((out / "kn0.2" / "failed.json").read_text())["reason"]
+    local = pd.read_csv(local_sweep / RESULTS_FILE)
+    assert table["du_mm"][:2].tolist() == local["du_mm"][:2].tolist()
+
+
+def test_short_real_calibration(local_sweep, tmp_path):
+    local = pd.read_csv(local_sweep / RESULTS_FILE).set_index("run")
+    runs = tmp_path / "set1"
+    for name in ("kn0.1", "kn0.15"):  # the bracket ends are reused, the search runs in between
+        shutil.copytree(local_sweep / name, runs / name)
+    low, high = local.loc["kn0.1", "du_mm"], local.loc["kn0.15", "du_mm"]
+    assert high - low > 2.0, "the coarse arch's du must grow with kn for this test"
+    target, tolerance = 0.5 * (low + high), max(0.5, (high - low) / 5)
+    args = [*COARSE, "--kn-min", "0.1", "--kn-max", "0.15", "--tolerance-mm", f"{tolerance:.3f}",
+            "--max-runs", "6", "--jobs", "1", "--runs-dir", str(runs), "--out", str(tmp_path / "set1.json")]
+    result = CliRunner().invoke(calibrate, [*args, "--target-du", f"{target:.3f}"])
+    assert result.exit_code == 0, result.output
+    data = json.loads((tmp_path / "set1.json").read_text())
+    assert abs(data["du_mm"] - target) <= tolerance and 0.1 < data["kn_N_per_mm3"] < 0.15
+    assert data["runs"] == len(data["history"]) >= 3 and data["new_runs"] == data["runs"] - 2
+    assert "run 3: kn = " in result.output
+    refused = CliRunner().invoke(calibrate, [*args, "--target-du", f"{high + 30:.3f}"])
+    assert isinstance(refused.exception, YadearchError) and "outside what kn" in str(refused.exception)
+
+
+def test_yade_reads_the_batch_table():
+    """yade's own TableParamReader parses scripts/yade_batch_table.txt; every line maps to a run."""
+    code = ("import json, sys; from yadearch.yade_env import import_yade; import_yade(); "
+            "from yade.utils import TableParamReader; "
+            "print(json.dumps(TableParamReader(sys.argv[1]).paramDict()))")
+    done = subprocess.run([sys.executable, "-c", code, str(REPO / "scripts" / "yade_batch_table.txt")],
+                          capture_output=True, text=True, timeout=120, check=True)
+    lines = json.loads(done.stdout.strip().splitlines()[-1])
+    assert len(lines) == 13
+    for line in lines.values():
+        params = {k: (v if k == "description" else eval(v)) for k, v in line.items()}
+        case, folder = batch_run(params)
+        assert folder.name == line["description"] and case.geometry.n_voussoirs == 55
