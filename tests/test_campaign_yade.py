@@ -1,6 +1,7 @@
 """Campaigns and calibration on real YADE with a coarse arch (9 voussoirs, soft joints, 30 mm/s:
 ~15-40 s a run): local and dask executors agree, a restart redoes nothing finished, failures are
-recorded, and a short calibration converges. The kn sweep runs once (module fixture) and the others reuse its folders."""
+recorded, and a short calibration converges. The sweep runs once (module fixture); the other tests
+reuse its run folders."""
 
 from __future__ import annotations
 

@@ -254,14 +254,13 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
     try:
         futures = {pool.executor.submit(task, s.case, s.folder, timeout_s): s for s in todo}
         pending = set(futures)
+        bar.set_postfix(counts, running=min(pool.slots, len(pending)))
         while pending:
-            bar.set_postfix(done=counts["done"], failed=counts["failed"],
-                            running=min(pool.slots, len(pending)), refresh=True)
             finished, pending = wait(pending, return_when=FIRST_COMPLETED)
             for future in finished:
                 counts[future.result()["status"]] += 1
-                bar.update(1)
-        bar.set_postfix(done=counts["done"], failed=counts["failed"], running=0)
+            bar.set_postfix(counts, running=min(pool.slots, len(pending)), refresh=False)
+            bar.update(len(finished))
     finally:
         for future in futures:
             future.cancel()

@@ -75,6 +75,9 @@ def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, .
         axes: dict[str, list[Any]] = {}
         if kn_spec:
             axes[KN_KEY] = parse_values(kn_spec)
+            bad = [v for v in axes[KN_KEY] if isinstance(v, (bool, str))]
+            if bad:
+                raise click.UsageError(f"--kn values must be numbers, got {bad[0]!r}")
         for spec in param_specs:
             if "=" not in spec:
                 raise click.UsageError(f"--param expects NAME=VALUES, got {spec!r}")
@@ -131,7 +134,7 @@ def calibrate(preset_name: str | None, case_file: str | None, settings: tuple[st
     runs = Path(runs_dir) if runs_dir else out_path.with_suffix("")
     click.echo(f"calibrating kn of {base.name} to du = {target_du:g} +- {tolerance_mm:g} mm, "
                f"kn in [{kn_min:g}, {kn_max:g}] N/mm3; runs in {runs}")
-    with open_pool(jobs or 2, scheduler) as pool:
+    with open_pool(jobs, scheduler) as pool:
         result = calibrate_kn(campaign_evaluator(base, runs, pool, _timeout_s(timeout_min)),
                               target_du, tolerance_mm, kn_min, kn_max, max_runs, log=click.echo)
     result.write(out_path)
