@@ -153,12 +153,13 @@ def read_batch_table(path: Path) -> list[dict]:
             for line in lines[1:]]
 
 
-def test_yade_batch_table_maps_to_the_sweep_runs():
+def test_yade_batch_table_maps_to_the_sweep_runs(tmp_path):
     rows = read_batch_table(REPO / "scripts" / "yade_batch_table.txt")
-    runs = [batch_run(row) for row in rows]
     assert [r["kn_N_per_mm3"] for r in rows] == parse_values("0.1:100:log:13")
+    assert {r["out"] for r in rows} == {"reports/kn-sweep"} and {r["preset"] for r in rows} == {"set2"}
+    runs = [batch_run({**row, "out": str(tmp_path)}) for row in rows]  # not the real reports/
     for row, (case, folder) in zip(rows, runs):
-        assert folder == Path("reports/kn-sweep") / row["description"]
+        assert folder == tmp_path / row["description"]
         assert case.interface.kn_N_per_mm3 == row["kn_N_per_mm3"] and case.name == row["description"]
         assert case.geometry.n_voussoirs == 55
     with pytest.raises(CaseError):

@@ -110,7 +110,7 @@ def test_short_real_calibration(local_sweep, tmp_path):
     assert isinstance(refused.exception, YadearchError) and "outside what kn" in str(refused.exception)
 
 
-def test_yade_reads_the_batch_table():
+def test_yade_reads_the_batch_table(tmp_path):
     """yade's own TableParamReader parses scripts/yade_batch_table.txt; every line maps to a run."""
     code = ("import json, sys; from yadearch.yade_env import import_yade; import_yade(); "
             "from yade.utils import TableParamReader; "
@@ -121,5 +121,6 @@ def test_yade_reads_the_batch_table():
     assert len(lines) == 13
     for line in lines.values():
         params = {k: (v if k == "description" else eval(v)) for k, v in line.items()}
+        params["out"] = str(tmp_path)  # not the real reports/
         case, folder = batch_run(params)
         assert folder.name == line["description"] and case.geometry.n_voussoirs == 55
