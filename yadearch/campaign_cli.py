@@ -143,4 +143,4 @@ def calibrate(preset_name: str | None, case_file: str | None, settings: tuple[st
                f"({result.new_runs} new), hinges {result.hinges or '-'} -> {out_path}")
     if not result.converged:
         raise YadearchError(f"no kn within {tolerance_mm:g} mm of the target after {result.runs} "
-                            f"runs; closest above (see {out_path})")
+                            f"runs (du jumps, or too few runs); the closest run is in {out_path}")
