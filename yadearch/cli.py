@@ -12,6 +12,7 @@ import click
 from .case import ArchCase, load_case, parameter_docs, preset
 from .errors import YadearchError
 from .process import run_case_process
+from .campaign_cli import calibrate, sweep
 from .report import report, write_report
 
 
@@ -113,6 +114,8 @@ def params() -> None:
 
 
 cli.add_command(report)
+cli.add_command(sweep)
+cli.add_command(calibrate)
 
 
 def main(argv: list[str] | None = None) -> int:
