@@ -26,6 +26,7 @@ from .hinges import Hinge, hinge_rotation, hinges_at
 from .joints import joint_states
 from .scene import CALLBACK_NAME, ArchScene, body_states, build_scene
 
+SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
 CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, trigger, records)
 FOUR_HINGE_ROTATION = 0.5 / 24.0  # four hinges rotating this much (0.5 mm over a 24 mm joint)
 STILL_SPEED_FRACTION = 1e-3  # blocks slower than this fraction of the loading speed are at rest  # four joints open by this much also start the du search
@@ -290,19 +291,30 @@ class Runner:
 
     # ---- stages ---------------------------------------------------------------------------
     def selfweight(self) -> dict:
-        """Settle under gravity with the supports still until equilibrium; zero du's origin there."""
+        """Apply gravity gradually (over `gravity_ramp_s`, so that a soft arch does not overshoot
+        past its equilibrium), settle with the supports still, and zero du's origin there."""
         from yade import O
 
         self.stage = "selfweight"
         start = O.iter
-        max_steps = int(self.num.selfweight_max_s / O.dt)
+        max_steps = int((self.num.selfweight_max_s + self.num.gravity_ramp_s) / O.dt)
+        newton = O.engines[-1]
+        gravity = np.array(newton.gravity)
+        ramp_steps = max(1, int(self.num.gravity_ramp_s / O.dt))
         unbalanced = math.inf
         while O.iter - start < max_steps:
+            fraction = min(1.0, (O.iter - start) / ramp_steps)
+            newton.gravity = tuple(gravity * fraction)
             self._run_steps(CHECK_EVERY_STEPS)
             self._check_finite()
             unbalanced = self._unbalanced()
-            self._progress(f"unbalanced {unbalanced:.2e}")
-            if unbalanced < self.num.equilibrium_tolerance and O.iter - start > 10 * CHECK_EVERY_STEPS:
+            self._progress(f"gravity {fraction:.0%}, unbalanced {unbalanced:.2e}")
+            sag = float(np.max(np.abs(body_states(self.scene)[0] - self.scene.pos0)))
+            if sag > units.mm(SELFWEIGHT_COLLAPSE_MM):
+                raise RunFailedError(f"the arch does not stand under its own weight: a block fell "
+                                     f"{units.to_mm(sag):.0f} mm (kn {self.case.interface.kn_N_per_mm3} N/mm3)")
+            if fraction >= 1.0 and unbalanced < self.num.equilibrium_tolerance \
+                    and O.iter - start > ramp_steps + 10 * CHECK_EVERY_STEPS:
                 break
         else:
             raise RunFailedError(f"no equilibrium under self-weight within {self.num.selfweight_max_s} s "
