@@ -9,21 +9,12 @@ from typing import Any
 
 import click
 
+from .campaign import parse_scalar
 from .case import ArchCase, load_case, parameter_docs, preset
 from .errors import YadearchError
 from .process import run_case_process
 from .campaign_cli import calibrate, sweep
 from .report import report, write_report
-
-
-def _parse_value(text: str) -> Any:
-    """A `--set` value: TOML scalar syntax (numbers, true/false, quoted strings) or a bare string."""
-    import tomllib
-
-    try:
-        return tomllib.loads(f"v = {text}")["v"]
-    except tomllib.TOMLDecodeError:
-        return text
 
 
 def resolve_case(preset_name: str | None, case_file: str | None, kn: float | None,
@@ -37,7 +28,7 @@ def resolve_case(preset_name: str | None, case_file: str | None, kn: float | Non
         if "=" not in item:
             raise click.UsageError(f"--set expects key=value, got {item!r}")
         key, value = item.split("=", 1)
-        overrides[key.strip()] = _parse_value(value.strip())
+        overrides[key.strip()] = parse_scalar(value)
     if kn is not None:
         overrides["interface.kn_N_per_mm3"] = kn
     return case.with_overrides(overrides) if overrides else case
