@@ -85,6 +85,8 @@ def main() -> int:
     parser.add_argument("--out", default="reports/benchmark.json")
     parser.add_argument("--runs", default="runs/benchmark")
     parser.add_argument("--reference", help="stored slow reference run folder of set 2")
+    parser.add_argument("--set1-run", help="use this complete set 1 run folder instead of running")
+    parser.add_argument("--set2-run", help="use this complete set 2 run folder instead of running")
     parser.add_argument("--stiff", action="store_true", help="also run the stiffest sweep case (kn 100)")
     parser.add_argument("--overhead-steps", type=int, default=2000)
     args = parser.parse_args()
@@ -93,8 +95,14 @@ def main() -> int:
 
     runs = Path(args.runs)
     results: dict = {}
+    stored = {"set1": args.set1_run, "set2": args.set2_run}
     for name in ("set1", "set2"):
-        summary = timed_run(preset(name), runs / name)
+        if stored[name]:
+            summary = json.loads((Path(stored[name]) / "summary.json").read_text())
+            print(f"{name}: stored run {stored[name]} (yadearch {summary.get('git_revision')}, "
+                  f"{summary.get('started')})")
+        else:
+            summary = timed_run(preset(name), runs / name)
         results[name] = summary
         print(f"{name}: steps {summary['steps']}, wall {summary['wall_s']:.0f} s, "
               f"{summary['steps_per_s']:.0f} steps/s, du {summary['du_mm']} mm", flush=True)

@@ -90,13 +90,6 @@ class Records:
     snapshots: dict[str, dict] = field(default_factory=dict)
 
 
-@dataclass
-class RunResult:
-    case: ArchCase
-    records: Records
-    summary: dict
-
-
 class Runner:
     """Drives one scene through the stages and records it."""
 
