@@ -152,7 +152,7 @@ def test_a_run_matching_neither_set_gets_figures_and_its_own_numbers(tmp_path):
     markdown = write_report([tmp_path / "k1"], tmp_path / "out").read_text()
     assert "matches neither" in markdown and "Comparison with the paper" not in markdown
     assert table_row(markdown, "stiff")[2] == f"{summary['du_mm']:.2f}"
-    assert (tmp_path / "out" / "stiff" / "collapse.png").stat().st_size > 0
+    assert (tmp_path / "out" / "k1" / "collapse.png").stat().st_size > 0  # figures beside the run folder name
 
 
 def test_runs_are_matched_to_the_paper_by_name_or_kn():

@@ -202,7 +202,8 @@ def overview(reported: list[ReportedRun]) -> list[str]:
 
 
 def _folder_name(summary: dict[str, Any], path: Path, taken: set[str]) -> str:
-    base = str(summary.get("name") or path.name).replace("/", "_")
+    """Sub-folder of the report for a run's figures: the run folder's own name (unique)."""
+    base = str(path.resolve().name or summary.get("name")).replace("/", "_")
     name, k = base, 2
     while name in taken:
         name, k = f"{base}-{k}", k + 1
