@@ -27,7 +27,8 @@ from .joints import joint_states
 from .scene import CALLBACK_NAME, ArchScene, body_states, build_scene
 
 SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
-CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, trigger, records)
+CHECK_EVERY_STEPS = 50
+STALL_S = 120.0  # wall seconds without a single step before a run is declared stalled  # steps between the runner's checks (speed, trigger, records)
 FOUR_HINGE_ROTATION = 0.5 / 24.0  # four hinges rotating this much (0.5 mm over a 24 mm joint)
 STILL_SPEED_FRACTION = 1e-3  # blocks slower than this fraction of the loading speed are at rest  # four joints open by this much also start the du search
 
@@ -265,10 +266,26 @@ class Runner:
                  f"{rate:6.0f} steps/s wall={wall:6.0f} s{eta} {extra}")
 
     def _advance(self, n: int) -> None:
-        """Run n steps (the only place that steps the scene, so that steps are counted)."""
+        """Run n steps (the only place that steps the scene, so that steps are counted).
+
+        Polls instead of `O.run(n, True)`: when an engine raises, YADE 2023.02a can lose its
+        simulation thread while `wait()` sleeps forever (seen in a campaign); a stalled step count
+        ends the run with a clear reason instead."""
         from yade import O
 
-        O.run(n, True)
+        target = O.iter + n
+        O.run(n)
+        last_iter, last_change = O.iter, time.time()
+        while O.iter < target:
+            time.sleep(0.0005)
+            if O.iter != last_iter:
+                last_iter, last_change = O.iter, time.time()
+            elif time.time() - last_change > STALL_S:
+                O.pause()
+                raise RunFailedError(f"YADE stopped stepping at step {O.iter} ({self.stage}); an engine "
+                                     "probably raised, see stderr")
+        while O.running:
+            time.sleep(0.0005)
         self.total_steps += n
         self.steps_by_stage[self.stage] = self.steps_by_stage.get(self.stage, 0) + n
 
