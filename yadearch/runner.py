@@ -28,6 +28,7 @@ from .scene import CALLBACK_NAME, ArchScene, body_states, build_scene
 
 SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
 CHECK_EVERY_STEPS = 50
+ARRIVED_M = 1e-12  # the support is on target within this distance (m)
 STALL_S = 120.0  # wall seconds without a single step before a run is declared stalled  # steps between the runner's checks (speed, trigger, records)
 FOUR_HINGE_ROTATION = 0.5 / 24.0  # four hinges rotating this much (0.5 mm over a 24 mm joint)
 STILL_SPEED_FRACTION = 1e-3  # blocks slower than this fraction of the loading speed are at rest  # four joints open by this much also start the du search
@@ -68,7 +69,7 @@ class SupportDriver:
 
         remaining = self.target - self.displacement()
         dt = O.dt
-        if remaining <= 0.0:
+        if remaining <= ARRIVED_M:  # a float-rounding remainder must not keep the support creeping
             speed = 0.0
         else:
             speed = min(self.speed, self.current_speed + self.accel * dt,
@@ -78,7 +79,7 @@ class SupportDriver:
         self._state.vel = (float(v[0]), float(v[1]), 0.0)
 
     def reached(self) -> bool:
-        return self.target - self.displacement() <= 1e-12
+        return self.target - self.displacement() <= ARRIVED_M
 
 
 @dataclass
