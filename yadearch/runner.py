@@ -294,11 +294,17 @@ class Runner:
         self._advance(n)
         self._record_series()
 
-    def _check_finite(self) -> None:
+    def _voussoir_positions(self) -> np.ndarray:
+        """Current voussoir centroids (n, 3); a NaN ends the run (the law calls exit(1) on NaN)."""
         from yade import O
 
-        if not all(math.isfinite(c) for i in self.scene.voussoir_ids for c in O.bodies[i].state.pos):
+        pos = np.array([list(O.bodies[i].state.pos) for i in self.scene.voussoir_ids])
+        if not np.all(np.isfinite(pos)):
             raise RunFailedError(f"NaN in block positions at step {O.iter} ({self.stage})")
+        return pos
+
+    def _check_finite(self) -> None:
+        self._voussoir_positions()
 
     # ---- stages ---------------------------------------------------------------------------
     def selfweight(self) -> dict:
@@ -410,13 +416,11 @@ class Runner:
         max_steps = int((max_s if max_s is not None else self.num.hold_max_s) / O.dt)
         min_steps = int(self.num.hold_min_s / O.dt)
         still_speed = units.mm(self.num.still_speed_mm_per_s)
-        start_pos = np.array([list(O.bodies[i].state.pos) for i in self.scene.voussoir_ids])
+        start_pos = self._voussoir_positions()
         start = O.iter
         while O.iter - start < max_steps:
             self._run_steps(CHECK_EVERY_STEPS)
-            self._check_finite()
-            pos = np.array([list(O.bodies[i].state.pos) for i in self.scene.voussoir_ids])
-            moved = np.linalg.norm(pos - start_pos, axis=1).max()
+            moved = np.linalg.norm(self._voussoir_positions() - start_pos, axis=1).max()
             self._progress(f"holding: max block move {units.to_mm(moved):.3f} mm")
             if moved > runaway:
                 return "runaway"
