@@ -93,8 +93,10 @@ class NumericsConfig:
     threads: int = field(default=1, metadata=_num(1, 256, doc="OpenMP threads of the YADE process"))
     equilibrium_tolerance: float = field(default=1e-3, metadata=_num(0, 1, low_open=True,
                                          doc="YADE unbalanced force (mean resultant / mean contact force) below which the arch is in equilibrium"))
-    gravity_ramp_s: float = field(default=0.3, metadata=_num(0, doc="simulated time over which gravity "
-                                  "grows from 0 to its full value (s); a sudden load overshoots"))
+    gravity_ramp_periods: float = field(default=200.0, metadata=_num(0, doc="gravity grows from 0 to "
+                                        "full over this many periods of a voussoir vibrating on its "
+                                        "joints (pi x critical time step), equally gentle at any kn; a "
+                                        "sudden load overshoots"))
     selfweight_max_s: float = field(default=2.0, metadata=_num(0, low_open=True,
                                     doc="simulated time allowed for the self-weight stage (s)"))
     hold_max_s: float = field(default=0.5, metadata=_num(0, low_open=True,

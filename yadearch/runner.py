@@ -116,6 +116,7 @@ class Runner:
         self._last_progress = time.time()
         self._saved: list[tuple[float, str, dict]] = []
         self.weight = 0.0
+        self._hi_extra: dict = {}
 
     # ---- scene plumbing -------------------------------------------------------------------
     def _install_driver(self) -> None:
@@ -308,16 +309,18 @@ class Runner:
 
     # ---- stages ---------------------------------------------------------------------------
     def selfweight(self) -> dict:
-        """Apply gravity gradually (over `gravity_ramp_s`, so that a soft arch does not overshoot
-        past its equilibrium), settle with the supports still, and zero du's origin there."""
+        """Apply gravity gradually (over `gravity_ramp_periods` joint periods, so that a soft arch
+        does not overshoot past its equilibrium), settle with the supports still, and zero du's
+        origin there."""
         from yade import O
 
         self.stage = "selfweight"
         start = O.iter
-        max_steps = int((self.num.selfweight_max_s + self.num.gravity_ramp_s) / O.dt)
+        ramp_s = self.num.gravity_ramp_periods * math.pi * O.dt / self.num.timestep_safety
+        max_steps = int((self.num.selfweight_max_s + ramp_s) / O.dt)
         newton = O.engines[-1]
         gravity = np.array(newton.gravity)
-        ramp_steps = max(1, int(self.num.gravity_ramp_s / O.dt))
+        ramp_steps = max(1, int(ramp_s / O.dt))
         unbalanced = math.inf
         while O.iter - start < max_steps:
             fraction = min(1.0, (O.iter - start) / ramp_steps)
@@ -402,8 +405,9 @@ class Runner:
                 break
         return triggered
 
-    def hold(self, runaway: float | None = None, max_s: float | None = None) -> str:
-        """Keep the support still, blocks started from rest.
+    def hold(self, runaway: float | None = None, max_s: float | None = None,
+             from_rest: bool = True) -> str:
+        """Keep the support still, blocks started from rest (or, `from_rest` false, in their motion).
 
         'stable': after `hold_min_s`, unbalanced force below tolerance and every block slower than
         `still_speed_mm_per_s` (a mechanism past its limit point would be accelerating by then);
@@ -411,7 +415,8 @@ class Runner:
         from yade import O
 
         self.driver.target = self.delta()
-        self._stop_blocks()
+        if from_rest:
+            self._stop_blocks()
         runaway = runaway if runaway is not None else units.mm(self.num.runaway_mm)
         max_steps = int((max_s if max_s is not None else self.num.hold_max_s) / O.dt)
         min_steps = int(self.num.hold_min_s / O.dt)
@@ -445,28 +450,39 @@ class Runner:
             self._run_steps(CHECK_EVERY_STEPS // 5)
             self._check_finite()
 
-    def find_du(self, triggered: float) -> tuple[float, float, int, dict]:
+    def find_du(self, triggered: float) -> tuple[float, float, int]:
         """Bracket du between a state in equilibrium and one without.
 
         First the highest saved loading state that holds equilibrium (strides doubling back from
-        the trigger, then bisection among saved states); then forward probes of `probe_step_mm`
-        from it, each a quasi-static move and a hold, until one fails; then bisection by moves.
-        Returns (lo, hi, number of holds, the saved extras of the `search_lo` state)."""
+        the trigger, then bisection among saved states); the lowest saved state that does not hold
+        closes the bracket, or else forward probes of `probe_step_mm` from the stable one (each a
+        quasi-static move and a hold) until one fails; then bisection by moves.
+        Returns (lo, hi, number of holds). The state at
+        the end of the failed hold at `hi` is kept as `search_hi` for `collapse_state`."""
         self.stage = "search"
         saved = [s for s in self._saved if s[0] <= triggered]
         holds = 0
         lo_state = None
+        hi = math.inf
+
+        def judge(delta: float, verdict: str, what: str) -> bool:
+            """Log a hold, keep the new bracket end it makes; True if it held."""
+            nonlocal lo_state, hi, holds
+            holds += 1
+            self.log(f"[{self.case.name}] {what} at delta={units.to_mm(delta):.3f} mm: {verdict}")
+            if verdict == "stable":
+                if lo_state is None or self.delta() > lo_state[0]:
+                    lo_state = (self.delta(), "search_lo", self._save("search_lo"))
+                return True
+            if delta < hi:
+                hi = delta
+                self._hi_extra = self._save("search_hi")
+            return False
 
         def held(index: int) -> bool:
-            nonlocal holds, lo_state
             delta, name, extra = saved[index]
             self._restore(name, extra)
-            holds += 1
-            verdict = self.hold()
-            self.log(f"[{self.case.name}] saved state at delta={units.to_mm(delta):.2f} mm held: {verdict}")
-            if verdict == "stable" and (lo_state is None or self.delta() > lo_state[0]):
-                lo_state = (self.delta(), "search_lo", self._save("search_lo"))
-            return verdict == "stable"
+            return judge(delta, self.hold(), "saved state")
 
         unstable, stride, index = len(saved), 1, len(saved) - 1
         while index >= 0 and not held(index):
@@ -485,43 +501,27 @@ class Runner:
                 stable = middle
             else:
                 unstable = middle
-        self._restore(lo_state[1], lo_state[2])
         probe = units.mm(self.num.probe_step_mm)
-        hi = None
-        while hi is None:
+        while math.isinf(hi):
+            if units.to_mm(lo_state[0]) >= self.case.loading.max_settlement_mm:
+                return lo_state[0], math.inf, holds
+            self._restore(lo_state[1], lo_state[2])
             target = lo_state[0] + probe
             self.move_to(target)
-            holds += 1
-            verdict = self.hold()
-            self.log(f"[{self.case.name}] hold at delta={units.to_mm(target):.2f} mm: {verdict}")
-            if verdict == "stable":
-                lo_state = (self.delta(), "search_lo", self._save("search_lo"))
-            else:
-                hi = target
-            if units.to_mm(lo_state[0]) >= self.case.loading.max_settlement_mm:
-                return lo_state[0], math.inf, holds, lo_state[2]
-        lo = lo_state[0]
-        while hi - lo > units.mm(self.num.du_tolerance_mm):
-            mid = 0.5 * (lo + hi)
-            self._restore("search_lo", lo_state[2])
+            judge(target, self.hold(), "hold")
+        while hi - lo_state[0] > units.mm(self.num.du_tolerance_mm):
+            mid = 0.5 * (lo_state[0] + hi)
+            self._restore(lo_state[1], lo_state[2])
             self.move_to(mid)
-            holds += 1
-            verdict = self.hold()
-            self.log(f"[{self.case.name}] hold at delta={units.to_mm(mid):.3f} mm: {verdict}")
-            if verdict == "stable":
-                lo = self.delta()
-                lo_state = (lo, "search_lo", self._save("search_lo"))
-            else:
-                hi = mid
-        return lo, hi, holds, lo_state[2]
+            judge(mid, self.hold(), "hold")
+        return lo_state[0], hi, holds
 
-    def collapse_state(self, hi: float, lo_extra: dict) -> list[Hinge]:
-        """Show the mechanism: from the last equilibrium state, move one probe step past du's
-        bracket and let the arch run away (up to 10 runaway distances) before reading its hinges."""
+    def collapse_state(self) -> list[Hinge]:
+        """Show the mechanism: continue the failed hold at du's upper bracket end until the arch
+        has run away (10 runaway distances more, at most `hold_max_s` more), then read its hinges."""
         self.stage = "collapse"
-        self._restore("search_lo", lo_extra)
-        self.move_to(hi + units.mm(self.num.probe_step_mm))
-        self.hold(runaway=10.0 * units.mm(self.num.runaway_mm))
+        self._restore("search_hi", self._hi_extra)
+        self.hold(runaway=10.0 * units.mm(self.num.runaway_mm), from_rest=False)
         hinges = self._record_joints("collapse")
         self._record_series(force=True)
         return hinges
@@ -548,12 +548,12 @@ class Runner:
             summary.update(collapsed=False, du_mm=None, hinges_at_collapse=[], du_bracket_mm=None)
             hinges = self._record_joints("end")
         else:
-            lo, hi, holds, lo_extra = self.find_du(triggered)
+            lo, hi, holds = self.find_du(triggered)
             if math.isinf(hi):
                 summary.update(collapsed=False, du_mm=None, hinges_at_collapse=[], du_bracket_mm=None)
                 hinges = self._record_joints("end")
             else:
-                hinges = self.collapse_state(hi, lo_extra)
+                hinges = self.collapse_state()
                 du = 0.5 * (lo + hi)
                 summary.update(collapsed=True, du_mm=units.to_mm(du),
                                du_bracket_mm=[units.to_mm(lo), units.to_mm(hi)], holds=holds,
