@@ -13,8 +13,9 @@ import pandas as pd
 import pytest
 from click.testing import CliRunner
 
-from yadearch.campaign import (FAILED_FILE, RESULTS_FILE, batch_run, grid, label_hinges, parse_values,
-                               plan, read_table, record_failure, run_campaign, run_tag)
+from yadearch.campaign import (FAILED_FILE, RESULTS_FILE, SESSIONS_FILE, batch_run, campaign_wall_s,
+                               grid, label_hinges, parse_values, plan, read_table, record_failure,
+                               run_campaign, run_tag)
 from yadearch.campaign_cli import sweep
 from yadearch.case import preset
 from yadearch.errors import CaseError, YadearchError
@@ -127,6 +128,11 @@ def test_resume_redoes_only_unfinished_runs(tmp_path):
     table = campaign(tmp_path, third, rows)
     assert third.calls == ["kn10"] and set(table["status"]) == {"done"}  # failed runs are redone
     assert not (tmp_path / "kn10" / FAILED_FILE).exists()
+    sessions = json.loads((tmp_path / SESSIONS_FILE).read_text())
+    assert [s["runs_attempted"] for s in sessions] == [3, 2, 1]  # every invocation, the killed one too
+    assert campaign_wall_s(tmp_path) == pytest.approx(sum(s["wall_s"] for s in sessions))
+    campaign(tmp_path, FakeRuns(), rows)  # nothing to do: no session recorded
+    assert len(json.loads((tmp_path / SESSIONS_FILE).read_text())) == 3
 
 
 def test_resume_refuses_a_folder_of_another_case(tmp_path):

@@ -33,6 +33,7 @@ from .rundir import CASE_FILE, SUMMARY_FILE, is_complete
 FAILED_FILE = "failed.json"
 RUNS_FILE = "runs.csv"
 RESULTS_FILE = "results.csv"
+SESSIONS_FILE = "sessions.json"  # one entry per invocation: when, where, how many runs, wall time
 RUN_COLUMN = "run"  # optional column of an explicit table: the run's name
 MAX_TAG = 64
 _UNIT_SUFFIXES = ("_N_per_mm3", "_mm_per_s", "_g_per_cm3", "_m_per_s2", "_mm", "_deg", "_MPa", "_s")
@@ -251,6 +252,7 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
                desc=out.name, dynamic_ncols=True)
     counts = {"done": skipped, "failed": len(specs) - len(todo) - skipped}
     futures: dict[Future, RunSpec] = {}
+    started = time.time()
     try:
         futures = {pool.executor.submit(task, s.case, s.folder, timeout_s): s for s in todo}
         pending = set(futures)
@@ -267,7 +269,27 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
         bar.close()
         table = results_table(specs, out)
         table.to_csv(out / RESULTS_FILE, index=False, float_format="%.6g")
+        if todo:
+            record_session(out, started, pool, len(todo), table)
     return table
+
+
+def record_session(out: Path, started: float, pool: Pool, attempted: int, table: pd.DataFrame) -> None:
+    """Append this invocation's wall time to sessions.json, so that a resumed campaign's total wall
+    time is the sum of its sessions."""
+    path = out / SESSIONS_FILE
+    sessions = json.loads(path.read_text()) if path.is_file() else []
+    sessions.append({"started": time.strftime("%Y-%m-%dT%H:%M:%S", time.localtime(started)),
+                     "wall_s": round(time.time() - started, 1), "where": pool.where,
+                     "slots": pool.slots, "runs_attempted": attempted,
+                     "status_after": table["status"].value_counts().to_dict()})
+    path.write_text(json.dumps(sessions, indent=2) + "\n")
+
+
+def campaign_wall_s(out: Path) -> float | None:
+    """Total wall time of a campaign over all its sessions (None if none was recorded)."""
+    path = Path(out) / SESSIONS_FILE
+    return sum(s["wall_s"] for s in json.loads(path.read_text())) if path.is_file() else None
 
 
 def write_run_table(specs: list[RunSpec], out: Path) -> None:

@@ -113,6 +113,9 @@ class NumericsConfig:
                                    doc="width of the bracket that locates du (mm)"))
     trigger_speed_ratio: float = field(default=3.0, metadata=_num(1, low_open=True,
                                        doc="max block speed / support speed that starts the du search"))
+    trigger_hinge_rotation_mrad: float = field(default=4.0, metadata=_num(0, low_open=True,
+                                               doc="four hinges rotating this much since self-weight "
+                                               "(mrad) also start the du search"))
     hinge_rotation_mrad: float = field(default=2.0, metadata=_num(0, low_open=True,
                                        doc="relative joint rotation that counts as a hinge (mrad)"))
     joint_record_every_mm: float = field(default=0.5, metadata=_num(0, low_open=True,

@@ -3,7 +3,8 @@
 Collapse criterion (rate-independent by construction): du is the smallest support displacement at
 which the arch, with the support held still, cannot find equilibrium. Continuous loading at
 `settlement_rate_mm_per_s` only locates collapse roughly (a block moving `trigger_speed_ratio` times
-faster than the support, or four open hinges); the runner then goes back to the last saved state
+faster than the support, or four hinges rotating `trigger_hinge_rotation_mrad` since self-weight);
+the runner then goes back to the last saved state
 that holds equilibrium and brackets du with hold tests (support fixed: equilibrium = unbalanced force
 below `equilibrium_tolerance` and blocks slower than `still_speed_mm_per_s` after `hold_min_s`;
 no equilibrium = a block moves `runaway_mm` or `hold_max_s` passes)
@@ -21,17 +22,16 @@ import numpy as np
 
 from . import units
 from .case import ArchCase
+from .engine_timing import EngineClock
 from .errors import RunFailedError
 from .hinges import Hinge, hinge_rotation, hinges_at
 from .joints import joint_states
 from .scene import CALLBACK_NAME, ArchScene, body_states, build_scene
 
 SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
-CHECK_EVERY_STEPS = 50
+CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, trigger, records)
 ARRIVED_M = 1e-12  # the support is on target within this distance (m)
-STALL_S = 120.0  # wall seconds without a single step before a run is declared stalled  # steps between the runner's checks (speed, trigger, records)
-FOUR_HINGE_ROTATION = 0.5 / 24.0  # four hinges rotating this much (0.5 mm over a 24 mm joint)
-STILL_SPEED_FRACTION = 1e-3  # blocks slower than this fraction of the loading speed are at rest  # four joints open by this much also start the du search
+STALL_S = 120.0  # wall seconds without a single step before a run is declared stalled
 
 
 class SupportDriver:
@@ -107,6 +107,7 @@ class Runner:
                                     units.mm(self.num.ramp_mm))
         self._install_driver()
         self.driver.zero_here()
+        self.clock = EngineClock()
         self.stage = "selfweight"
         self.wall0 = time.time()
         self.steps_by_stage: dict[str, int] = {}
@@ -117,6 +118,8 @@ class Runner:
         self._saved: list[tuple[float, str, dict]] = []
         self.weight = 0.0
         self._hi_extra: dict = {}
+        self._last_rotation = np.zeros(0)  # joint rotations of the last joint record (rad)
+        self._rotation_selfweight = np.zeros(0)
 
     # ---- scene plumbing -------------------------------------------------------------------
     def _install_driver(self) -> None:
@@ -143,7 +146,9 @@ class Runner:
     def _restore(self, name: str, extra: dict) -> None:
         from yade import O
 
+        self.clock.harvest()
         O.loadTmp(name)
+        self.clock.harvest(count=False)  # the counters saved with the scene were counted already
         self.scene.shear.shear = dict(extra["shear"])
         self.scene.shear.bind(self.scene.pos0, self.scene.ori0)
         self.driver.bind()
@@ -231,6 +236,7 @@ class Runner:
     def _record_joints(self, label: str | None = None) -> list[Hinge]:
         snap, hinges = self.joint_snapshot()
         js = snap["js"]
+        self._last_rotation = js.rotation
         delta_mm = units.to_mm(self.delta())
         for k in range(len(js.rotation)):
             self.records.joints.append({
@@ -310,8 +316,9 @@ class Runner:
     # ---- stages ---------------------------------------------------------------------------
     def selfweight(self) -> dict:
         """Apply gravity gradually (over `gravity_ramp_periods` joint periods, so that a soft arch
-        does not overshoot past its equilibrium), settle with the supports still, and zero du's
-        origin there."""
+        does not overshoot past its equilibrium), settle with the supports still (unbalanced force
+        and block speeds as in a hold, and the supports carrying the weight within the same
+        tolerance, so that the reactions read there are static), and zero du's origin there."""
         from yade import O
 
         self.stage = "selfweight"
@@ -334,17 +341,20 @@ class Runner:
                 raise RunFailedError(f"the arch does not stand under its own weight: a block fell "
                                      f"{units.to_mm(sag):.0f} mm (kn {self.case.interface.kn_N_per_mm3} N/mm3)")
             if fraction >= 1.0 and unbalanced < self.num.equilibrium_tolerance \
-                    and O.iter - start > ramp_steps + 10 * CHECK_EVERY_STEPS:
+                    and O.iter - start > ramp_steps + 10 * CHECK_EVERY_STEPS \
+                    and self._voussoir_speeds().max() < units.mm(self.num.still_speed_mm_per_s) \
+                    and self._weight_carried_error(gravity) < self.num.equilibrium_tolerance:
                 break
         else:
             raise RunFailedError(f"no equilibrium under self-weight within {self.num.selfweight_max_s} s "
                                  f"(unbalanced force ratio {unbalanced:.3g} > "
-                                 f"{self.num.equilibrium_tolerance})")
+                                 f"{self.num.equilibrium_tolerance} or blocks still moving)")
         self.driver.zero_here()
         self.weight = sum(O.bodies[i].state.mass for i in self.scene.voussoir_ids) \
             * self.case.loading.gravity_m_per_s2
         self._record_series(force=True)
         self._record_joints("selfweight")
+        self._rotation_selfweight = self._last_rotation
         left, right = self._reactions()
         crown = self.scene.geometry.crown_voussoir
         info = {
@@ -360,6 +370,14 @@ class Runner:
                  f"unbalanced {unbalanced:.2e}, reactions {info['vertical_reaction_sum_N']:.3f} N "
                  f"for a weight of {self.weight:.3f} N, thrust {info['thrust_N']:.3f} N")
         return info
+
+    def _weight_carried_error(self, gravity: np.ndarray) -> float:
+        """|sum of vertical support reactions / weight of the voussoirs - 1| (0 in static equilibrium)."""
+        from yade import O
+
+        weight = sum(O.bodies[i].state.mass for i in self.scene.voussoir_ids) * float(np.linalg.norm(gravity))
+        left, right = self._reactions()
+        return abs((left[1] + right[1]) / weight - 1.0)
 
     def _trigger(self, speed_history: list[float]) -> bool:
         need = 3
@@ -380,9 +398,10 @@ class Runner:
             delta = self.delta()
             self._record_series()
             if delta >= self._next_joint_record:
-                hinges = self._record_joints()
+                self._record_joints()
                 self._next_joint_record += units.mm(self.num.joint_record_every_mm)
-                open_hinges = [h for h in hinges if abs(h.rotation) > FOUR_HINGE_ROTATION]
+                open_hinges = hinges_at(self._last_rotation - self._rotation_selfweight,
+                                        self.num.trigger_hinge_rotation_mrad * 1e-3)
                 if len(open_hinges) >= 4:
                     triggered = delta
                     self.log(f"[{self.case.name}] four open hinges at delta={units.to_mm(delta):.2f} mm: "
@@ -569,5 +588,6 @@ class Runner:
         wall = time.time() - self.wall0
         summary["wall_s"] = wall
         summary["steps_per_s"] = self.total_steps / wall if wall > 0 else None
+        summary["profile"] = self.clock.profile(wall)
         self._progress("done", force=True)
         return summary

@@ -19,6 +19,7 @@ from . import reference  # noqa: E402
 COLUMN_WIDTH_IN = 3.5  # one journal column
 HINGE_STYLE = {"hinge_A": ("o", "A (intrados)"), "hinge_B": ("s", "B (extrados)"),
                "hinge_C": ("^", "C (right support)")}
+LEGEND_HEADROOM = 1.45  # hinge panel's y range as a multiple of the last interface
 
 
 def kn_sweep_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
@@ -59,6 +60,8 @@ def _du_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
 
 
 def _hinge_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
+    """Hinge interfaces against kn; the paper's ranges as bars half an interface beyond each end,
+    so that a single interface still shows."""
     for column, (marker, label) in HINGE_STYLE.items():
         present = runs[runs[column].notna()]
         ax.plot(present["kn_N_per_mm3"], present[column].astype(float), marker, ms=3.5,
@@ -67,10 +70,12 @@ def _hinge_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
         for s in reference.SETS.values():
             for column in HINGE_STYLE:
                 interfaces = s["numerical"][column]
-                ax.plot([s["kn_N_per_mm3"]] * 2, [min(interfaces), max(interfaces)], "-",
+                ax.plot([s["kn_N_per_mm3"]] * 2, [min(interfaces) - 0.5, max(interfaces) + 0.5], "-",
                         color="C3", lw=2.5, alpha=0.5, solid_capstyle="round")
         ax.plot([], [], "-", color="C3", lw=2.5, alpha=0.5, label="paper FE")
     ax.set_ylabel("hinge interface\n(1 = left support)")
     ax.yaxis.set_major_locator(MaxNLocator(integer=True))
-    ax.legend(loc="best", frameon=False, ncol=2)
+    last_interface = int(runs["n_voussoirs"].max()) + 1
+    ax.set_ylim(0, LEGEND_HEADROOM * last_interface)  # room above the right-support hinge for the legend
+    ax.legend(loc="upper center", frameon=False, ncol=2)
     ax.grid(True, which="major", lw=0.3, alpha=0.5)
