@@ -1,5 +1,6 @@
 """Numerics must not decide the answer: run a case at the default settlement rate, at half of it,
-and with another damping, and print du, the hinges and the relative differences.
+with another damping and with two thirds of the time step, and print du, the hinges and the
+relative differences.
 
     .venv/bin/python scripts/convergence.py [--preset set2] [--jobs 2] [--out runs/convergence]
 
@@ -48,6 +49,7 @@ def main() -> int:
         "default": {},
         "half_rate": {"numerics.settlement_rate_mm_per_s": rate / 2},
         "other_damping": {"numerics.damping": other_damping},
+        "small_timestep": {"numerics.timestep_safety": round(base.numerics.timestep_safety * 2 / 3, 3)},
     }
     cases = {}
     for label, overrides in variants.items():
@@ -69,7 +71,7 @@ def main() -> int:
 
     reference = summaries["default"]
     ok = reference["du_mm"] is not None
-    print(f"{'variant':14s} {'rate mm/s':>9s} {'damping':>7s} {'du mm':>8s} {'rel diff':>9s} "
+    print(f"{'variant':14s} {'rate mm/s':>9s} {'damping':>7s} {'dt safety':>9s} {'du mm':>8s} {'rel diff':>9s} "
           f"{'steps':>8s} {'wall s':>7s}  hinges at collapse")
     for label, summary in summaries.items():
         case = cases[label]
@@ -78,6 +80,7 @@ def main() -> int:
         same = hinges(summary) == hinges(reference)
         ok = ok and du is not None and abs(rel) <= TOLERANCE and same
         print(f"{label:14s} {case.numerics.settlement_rate_mm_per_s:9.2f} {case.numerics.damping:7.2f} "
+              f"{case.numerics.timestep_safety:9.2f} "
               f"{du if du is not None else float('nan'):8.2f} {rel:+9.2%} {summary['steps']:8d} "
               f"{summary['wall_s']:7.0f}  {hinges(summary)}{'' if same else '  (differs)'}")
     print(f"verdict: {'PASS' if ok else 'FAIL'} (du within {TOLERANCE:.0%} and same hinges)")

@@ -109,7 +109,7 @@ class NumericsConfig:
                               doc="block displacement at a fixed support that means no equilibrium (mm)"))
     probe_step_mm: float = field(default=1.0, metadata=_num(0, low_open=True,
                                  doc="support step between equilibrium checks near collapse (mm)"))
-    du_tolerance_mm: float = field(default=0.1, metadata=_num(0, low_open=True,
+    du_tolerance_mm: float = field(default=0.25, metadata=_num(0, low_open=True,
                                    doc="width of the bracket that locates du (mm)"))
     trigger_speed_ratio: float = field(default=3.0, metadata=_num(1, low_open=True,
                                        doc="max block speed / support speed that starts the du search"))

@@ -40,12 +40,12 @@ class SupportDriver:
 
     def __init__(self, scene: ArchScene, direction: np.ndarray, speed: float, ramp: float):
         self.scene = scene
-        self.direction = direction
+        self.direction = (float(direction[0]), float(direction[1]))
         self.speed = speed
         self.accel = speed * speed / (2.0 * ramp) if ramp > 0 else math.inf
         self.target = 0.0
         self.current_speed = 0.0
-        self.origin = np.zeros(3)
+        self.origin = (0.0, 0.0)
         self._state = None
 
     def bind(self) -> None:
@@ -56,12 +56,14 @@ class SupportDriver:
 
     def zero_here(self) -> None:
         """Measure displacements from the support's current position and stop it there."""
-        self.origin = np.array(self._state.pos)
+        self.origin = (float(self._state.pos[0]), float(self._state.pos[1]))
         self.target = 0.0
 
     def displacement(self) -> float:
-        """Support displacement along the loading direction since `origin` (m)."""
-        return float(np.dot(np.array(self._state.pos) - self.origin, self.direction))
+        """Support displacement along the loading direction since `origin` (m); plain floats, as
+        it runs every step."""
+        pos, origin, direction = self._state.pos, self.origin, self.direction
+        return (pos[0] - origin[0]) * direction[0] + (pos[1] - origin[1]) * direction[1]
 
     def step(self) -> None:
         """Set the support velocity for this step (called every step before the integrator)."""
@@ -75,8 +77,7 @@ class SupportDriver:
             speed = min(self.speed, self.current_speed + self.accel * dt,
                         math.sqrt(2.0 * self.accel * remaining), remaining / dt)
         self.current_speed = speed
-        v = speed * self.direction
-        self._state.vel = (float(v[0]), float(v[1]), 0.0)
+        self._state.vel = (speed * self.direction[0], speed * self.direction[1], 0.0)
 
     def reached(self) -> bool:
         return self.target - self.displacement() <= ARRIVED_M
@@ -118,7 +119,7 @@ class Runner:
         self._saved: list[tuple[float, str, dict]] = []
         self.weight = 0.0
         self._hi_extra: dict = {}
-        self._last_rotation = np.zeros(0)  # joint rotations of the last joint record (rad)
+        self._last_rotation = np.zeros(0)  # hinge rotations of the last joint record (rad)
         self._rotation_selfweight = np.zeros(0)
 
     # ---- scene plumbing -------------------------------------------------------------------
@@ -199,7 +200,8 @@ class Runner:
         js = joint_states(self.scene.geometry, self.scene.pos0, pos, rot, points)
         rotation = hinge_rotation(js.opening_intrados, js.opening_extrados, self.scene.geometry.thickness)
         hinges = hinges_at(rotation, self.num.hinge_rotation_mrad * 1e-3)
-        return {"pos": pos, "rot": rot, "js": js, "normal": normal, "shear": shear}, hinges
+        return {"pos": pos, "rot": rot, "js": js, "normal": normal, "shear": shear,
+                "hinge_rotation": rotation}, hinges
 
     def _iter(self) -> int:
         from yade import O
@@ -236,7 +238,7 @@ class Runner:
     def _record_joints(self, label: str | None = None) -> list[Hinge]:
         snap, hinges = self.joint_snapshot()
         js = snap["js"]
-        self._last_rotation = js.rotation
+        self._last_rotation = snap["hinge_rotation"]
         delta_mm = units.to_mm(self.delta())
         for k in range(len(js.rotation)):
             self.records.joints.append({
