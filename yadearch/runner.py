@@ -472,14 +472,18 @@ class Runner:
             self._check_finite()
 
     def find_du(self, triggered: float) -> tuple[float, float, int]:
-        """Bracket du between a state in equilibrium and one without.
+        """Bracket du between a state in equilibrium and one without, both ends reached by
+        quasi-static moves.
 
         First the highest saved loading state that holds equilibrium (strides doubling back from
-        the trigger, then bisection among saved states); the lowest saved state that does not hold
-        closes the bracket, or else forward probes of `probe_step_mm` from the stable one (each a
-        quasi-static move and a hold) until one fails; then bisection by moves.
-        Returns (lo, hi, number of holds). The state at
-        the end of the failed hold at `hi` is kept as `search_hi` for `collapse_state`."""
+        the trigger, then bisection among saved states). A saved state that does not hold only
+        hints where du is: it was reached by the continuous loading, a path that can fail earlier
+        than the quasi-static one (kn 0.1778: a saved state at 41.2 mm failed, quasi-static moves
+        held to 41.9 mm). So from the stable state the support moves quasi-statically to the
+        lowest failed saved state (or `probe_step_mm` on) and holds, step after step, until a hold
+        fails; then bisection by moves from the last stable state.
+        Returns (lo, hi, number of holds). The state at the end of the failed hold at `hi` is kept
+        as `search_hi` for `collapse_state`."""
         self.stage = "search"
         saved = [s for s in self._saved if s[0] <= triggered]
         holds = 0
@@ -487,23 +491,30 @@ class Runner:
         hi = math.inf
 
         def judge(delta: float, verdict: str, what: str) -> bool:
-            """Log a hold, keep the new bracket end it makes; True if it held."""
-            nonlocal lo_state, hi, holds
+            """Log a hold; a stable one is the new lower end. True if it held."""
+            nonlocal lo_state, holds
             holds += 1
             self.log(f"[{self.case.name}] {what} at delta={units.to_mm(delta):.3f} mm: {verdict}")
-            if verdict == "stable":
-                if lo_state is None or self.delta() > lo_state[0]:
-                    lo_state = (self.delta(), "search_lo", self._save("search_lo"))
-                return True
-            if delta < hi:
-                hi = delta
-                self._hi_extra = self._save("search_hi")
-            return False
+            if verdict == "stable" and (lo_state is None or self.delta() > lo_state[0]):
+                lo_state = (self.delta(), "search_lo", self._save("search_lo"))
+            return verdict == "stable"
 
         def held(index: int) -> bool:
             delta, name, extra = saved[index]
             self._restore(name, extra)
             return judge(delta, self.hold(), "saved state")
+
+        def moved_and_held(target: float) -> bool:
+            """Quasi-static move from the last stable state to `target`, then a hold; a failed
+            hold is the new upper end, its final state kept for the collapse figure."""
+            nonlocal hi
+            self._restore(lo_state[1], lo_state[2])
+            self.move_to(target)
+            if judge(target, self.hold(), "hold"):
+                return True
+            hi = target
+            self._hi_extra = self._save("search_hi")
+            return False
 
         unstable, stride, index = len(saved), 1, len(saved) - 1
         while index >= 0 and not held(index):
@@ -523,18 +534,14 @@ class Runner:
             else:
                 unstable = middle
         probe = units.mm(self.num.probe_step_mm)
+        hint = saved[unstable][0] if unstable < len(saved) else math.inf
         while math.isinf(hi):
             if units.to_mm(lo_state[0]) >= self.case.loading.max_settlement_mm:
                 return lo_state[0], math.inf, holds
-            self._restore(lo_state[1], lo_state[2])
-            target = lo_state[0] + probe
-            self.move_to(target)
-            judge(target, self.hold(), "hold")
+            target = hint if lo_state[0] < hint < lo_state[0] + probe else lo_state[0] + probe
+            moved_and_held(target)
         while hi - lo_state[0] > units.mm(self.num.du_tolerance_mm):
-            mid = 0.5 * (lo_state[0] + hi)
-            self._restore(lo_state[1], lo_state[2])
-            self.move_to(mid)
-            judge(mid, self.hold(), "hold")
+            moved_and_held(0.5 * (lo_state[0] + hi))
         return lo_state[0], hi, holds
 
     def collapse_state(self) -> list[Hinge]:
