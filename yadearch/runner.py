@@ -4,11 +4,11 @@ Collapse criterion (rate-independent by construction): du is the smallest suppor
 which the arch, with the support held still, cannot find equilibrium. Continuous loading at
 `settlement_rate_mm_per_s` only locates collapse roughly (a block moving `trigger_speed_ratio` times
 faster than the support, or four hinges rotating `trigger_hinge_rotation_mrad` since self-weight);
-the runner then goes back to the last saved state
-that holds equilibrium and brackets du with hold tests (support fixed: equilibrium = unbalanced force
-below `equilibrium_tolerance` and blocks slower than `still_speed_mm_per_s` after `hold_min_s`;
-no equilibrium = a block moves `runaway_mm` or `hold_max_s` passes)
-until the bracket is narrower than `du_tolerance_mm`. du is the bracket's midpoint.
+the runner then goes back to the last saved state that holds equilibrium and brackets du with
+quasi-static moves and hold tests (support fixed: equilibrium = unbalanced force below
+`equilibrium_tolerance` and blocks slower than `still_speed_mm_per_s` after `hold_min_s`; no
+equilibrium = a block moves `runaway_mm` or `hold_max_s` passes) until the bracket is narrower than
+`du_tolerance_mm`. du is the bracket's midpoint.
 """
 
 from __future__ import annotations
