@@ -36,8 +36,13 @@ def timed_run(case, folder: Path) -> dict:
     return json.loads((folder / "summary.json").read_text())
 
 
-def stored(folder: str) -> dict:
-    """The summary of a stored run folder, its provenance printed."""
+def stored(folder: str) -> dict | None:
+    """The summary of a stored run folder, its provenance printed; None (reason printed) if the
+    run failed, e.g. a sweep point that timed out."""
+    failed = Path(folder) / "failed.json"
+    if failed.is_file():
+        print(f"  stored run {folder} failed: {json.loads(failed.read_text()).get('reason')}")
+        return None
     summary = json.loads((Path(folder) / "summary.json").read_text())
     print(f"  stored run {folder} (yadearch {summary.get('git_revision')}, {summary.get('started')})")
     return summary
@@ -84,7 +89,8 @@ def main() -> int:
     results: dict = {}
     for name, case in cases.items():
         results[name] = stored(given[name]) if given[name] else timed_run(case, runs / name)
-        print(line(name, results[name]), flush=True)
+        if results[name] is not None:
+            print(line(name, results[name]), flush=True)
     reference = stored(args.reference) if args.reference else \
         timed_run(slow_reference(cases["set2"]), runs / "set2_slow_reference")
     print(line("slow reference", reference))
@@ -96,7 +102,7 @@ def main() -> int:
     overhead = s2["profile"]["driver_overhead_ratio"]
     sweep_wall = campaign_wall_s(Path(args.sweep)) if args.sweep else None
     report = {
-        **{f"{n}_{k}": results[n][k] for n in results for k in ("wall_s", "du_mm", "steps", "steps_per_s")},
+        **{f"{n}_{k}": (results[n] or {}).get(k) for n in results for k in ("wall_s", "du_mm", "steps", "steps_per_s")},
         "set2_du_reference_mm": du_ref, "set2_du_rel_diff": rel, "set2_same_hinges": same_hinges,
         "set2_reference_wall_s": reference["wall_s"], "set2_speedup_vs_reference": speedup,
         "driver_overhead_ratio": overhead, "set2_profile": s2["profile"],

@@ -123,13 +123,17 @@ def test_resume_redoes_only_unfinished_runs(tmp_path):
     again = FakeRuns(fail=(10.0,))
     campaign(tmp_path, again, rows)
     assert sorted(again.calls) == ["kn1", "kn10"]
+    kept = FakeRuns()
+    with local_pool(1) as pool:
+        run_campaign(BASE, rows, tmp_path, pool, progress=False, task=kept, retry_failed=False)
+    assert kept.calls == [] and (tmp_path / "kn10" / FAILED_FILE).exists()  # the failure stays
     assert (tmp_path / "kn0.1" / "summary.json").stat().st_mtime_ns == first
     third = FakeRuns()
     table = campaign(tmp_path, third, rows)
     assert third.calls == ["kn10"] and set(table["status"]) == {"done"}  # failed runs are redone
     assert not (tmp_path / "kn10" / FAILED_FILE).exists()
     sessions = json.loads((tmp_path / SESSIONS_FILE).read_text())
-    assert [s["runs_attempted"] for s in sessions] == [3, 2, 1]  # every invocation, the killed one too
+    assert [s["runs_attempted"] for s in sessions] == [3, 2, 1]  # invocations that ran something
     assert campaign_wall_s(tmp_path) == pytest.approx(sum(s["wall_s"] for s in sessions))
     campaign(tmp_path, FakeRuns(), rows)  # nothing to do: no session recorded
     assert len(json.loads((tmp_path / SESSIONS_FILE).read_text())) == 3

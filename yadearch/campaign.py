@@ -230,16 +230,18 @@ Task = Callable[[ArchCase, Path, float | None], dict[str, Any]]
 
 def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Pool,
                  timeout_s: float | None = None, progress: bool = True,
-                 task: Task = execute) -> pd.DataFrame:
+                 task: Task = execute, retry_failed: bool = True) -> pd.DataFrame:
     """Run every unfinished run of the campaign on `pool`, then write and return the results table.
 
-    Finished folders are skipped; failed, interrupted and new runs are (re)done. `task` runs one case
-    (default: a child process through `execute`; tests inject stand-ins)."""
+    Finished folders are skipped; interrupted and new runs are (re)done, failed ones too unless
+    `retry_failed` is false (they keep their recorded reason). `task` runs one case (default: a
+    child process through `execute`; tests inject stand-ins)."""
     out = Path(out)
     specs = plan(base, rows, out)
     out.mkdir(parents=True, exist_ok=True)
     write_run_table(specs, out)
-    todo = [s for s in specs if s.case is not None and not is_complete(s.folder)]
+    todo = [s for s in specs if s.case is not None and not is_complete(s.folder)
+            and (retry_failed or not (s.folder / FAILED_FILE).is_file())]
     for spec in specs:
         if spec.case is None:
             record_failure(spec.folder, spec.name, spec.error or "", 0.0)

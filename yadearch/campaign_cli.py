@@ -62,9 +62,12 @@ def _timeout_s(timeout_min: float | None) -> float | None:
 @_pool_options
 @click.option("--figure/--no-figure", default=True, show_default=True,
               help="draw du and hinges against kn when kn is the only swept parameter")
+@click.option("--retry-failed/--keep-failed", default=True, show_default=True,
+              help="redo runs recorded as failed, or keep them (and their reasons) as they are")
 def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, ...],
           kn_spec: str | None, param_specs: tuple[str, ...], table_file: str | None, out: str,
-          jobs: int | None, scheduler: str | None, timeout_min: float | None, figure: bool) -> None:
+          jobs: int | None, scheduler: str | None, timeout_min: float | None, figure: bool,
+          retry_failed: bool) -> None:
     """Run a campaign (a grid or a table of cases), resuming a previous one in OUT."""
     base = _base_case(preset_name, case_file, settings)
     if table_file and (kn_spec or param_specs):
@@ -89,7 +92,8 @@ def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, .
     folder = Path(out)
     with open_pool(jobs, scheduler) as pool:
         click.echo(f"campaign {folder}: {len(rows)} runs on {pool.where}")
-        table = run_campaign(base, rows, folder, pool, timeout_s=_timeout_s(timeout_min))
+        table = run_campaign(base, rows, folder, pool, timeout_s=_timeout_s(timeout_min),
+                             retry_failed=retry_failed)
     counts = table["status"].value_counts().to_dict()
     click.echo(f"{len(table)} runs: {counts.get('done', 0)} done, {counts.get('failed', 0)} failed, "
                f"{counts.get('pending', 0)} pending -> {folder / RESULTS_FILE}")
