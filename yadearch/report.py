@@ -24,7 +24,8 @@ REPORT_FILE = "report.md"
 HINGE_ROWS = ("hinge_A", "hinge_B", "hinge_C")
 KN_MATCH_RELATIVE = 1e-6
 CAPTIONS = {
-    "collapse": "The arch at collapse (one probe step past du, after it ran away), drawn to scale over its "
+    "collapse": "The arch at collapse (at the upper end of du's bracket, after the failed hold went on "
+                "until a block moved 10 mm or another hold time passed), drawn to scale over its "
                 "undeformed outline (dashed); hinges labelled in order of formation, with interface and "
                 "pivot side.",
     "reactions": "Forces of the supports on the arch against the settlement δ of the right support; "
