@@ -34,6 +34,7 @@ def kn_sweep_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
                                           gridspec_kw={"height_ratios": [3, 2]},
                                           constrained_layout=True)
         _du_panel(ax_du, runs)
+        _failed_marks(ax_du, table[table["status"] == "failed"])
         _hinge_panel(ax_h, runs)
         ax_h.set_xscale("log")
         ax_h.set_xlabel(r"joint normal stiffness $k_n$ (N/mm$^3$)")
@@ -57,6 +58,15 @@ def _du_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
     ax.set_ylabel(r"collapse displacement $d_u$ (mm)")
     ax.legend(loc="lower right", frameon=False)
     ax.grid(True, which="major", lw=0.3, alpha=0.5)
+
+
+def _failed_marks(ax: plt.Axes, failed: pd.DataFrame) -> None:
+    """Runs without a converged du, as crosses on the kn axis (their reasons are in results.csv)."""
+    if failed.empty:
+        return
+    ax.plot(failed["kn_N_per_mm3"], [0.02] * len(failed), "x", color="0.4", ms=4, clip_on=False,
+            transform=ax.get_xaxis_transform(), label="no converged du (failed, see results.csv)")
+    ax.legend(loc="lower right", frameon=False)
 
 
 def _hinge_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
