@@ -330,6 +330,8 @@ class Runner:
         newton = O.engines[-1]
         gravity = np.array(newton.gravity)
         ramp_steps = max(1, int(ramp_s / O.dt))
+        self.weight = sum(O.bodies[i].state.mass for i in self.scene.voussoir_ids) \
+            * self.case.loading.gravity_m_per_s2
         unbalanced = math.inf
         while O.iter - start < max_steps:
             fraction = min(1.0, (O.iter - start) / ramp_steps)
@@ -345,15 +347,13 @@ class Runner:
             if fraction >= 1.0 and unbalanced < self.num.equilibrium_tolerance \
                     and O.iter - start > ramp_steps + 10 * CHECK_EVERY_STEPS \
                     and self._voussoir_speeds().max() < units.mm(self.num.still_speed_mm_per_s) \
-                    and self._weight_carried_error(gravity) < self.num.equilibrium_tolerance:
+                    and self._weight_carried_error() < self.num.equilibrium_tolerance:
                 break
         else:
             raise RunFailedError(f"no equilibrium under self-weight within {self.num.selfweight_max_s} s "
                                  f"(unbalanced force ratio {unbalanced:.3g} > "
                                  f"{self.num.equilibrium_tolerance} or blocks still moving)")
         self.driver.zero_here()
-        self.weight = sum(O.bodies[i].state.mass for i in self.scene.voussoir_ids) \
-            * self.case.loading.gravity_m_per_s2
         self._record_series(force=True)
         self._record_joints("selfweight")
         self._rotation_selfweight = self._last_rotation
@@ -373,13 +373,10 @@ class Runner:
                  f"for a weight of {self.weight:.3f} N, thrust {info['thrust_N']:.3f} N")
         return info
 
-    def _weight_carried_error(self, gravity: np.ndarray) -> float:
+    def _weight_carried_error(self) -> float:
         """|sum of vertical support reactions / weight of the voussoirs - 1| (0 in static equilibrium)."""
-        from yade import O
-
-        weight = sum(O.bodies[i].state.mass for i in self.scene.voussoir_ids) * float(np.linalg.norm(gravity))
         left, right = self._reactions()
-        return abs((left[1] + right[1]) / weight - 1.0)
+        return abs((left[1] + right[1]) / self.weight - 1.0)
 
     def _trigger(self, speed_history: list[float]) -> bool:
         need = 3
