@@ -48,3 +48,28 @@ def test_settlement_opens_three_hinges_where_the_mechanism_puts_them(settled):
     assert a.side == "I" and 2 <= a.interface <= n // 2  # A: intrados, left haunch
     assert b.side == "E" and n // 2 < b.interface < n + 1  # B: extrados, right of the crown
     assert (c.interface, c.side) == (n + 1, "E")  # C: extrados at the settling support
+
+
+def test_collider_pairs_only_blocks_that_share_a_joint(settled):
+    from yade import O
+
+    runner, _ = settled
+    ids = runner.scene.body_ids
+    pairs = {(min(i.id1, i.id2), max(i.id1, i.id2)) for i in O.interactions}
+    assert pairs == {(ids[k], ids[k + 1]) for k in range(len(ids) - 1)}  # 16 joints, no other pair
+
+
+def test_support_follows_the_trapezoidal_profile_to_its_target(settled):
+    """The driver sleeps while it cruises and while the support stands still; the support must still
+    arrive exactly, in the steps the trapezoid takes (ramp up, cruise, ramp down)."""
+    from yade import O
+
+    runner, _ = settled
+    driver = runner.driver
+    start, start_iter = runner.delta(), O.iter
+    runner.move_to(start + units.mm(12.0))
+    assert runner.delta() - start == pytest.approx(units.mm(12.0), abs=1e-9)
+    v, ramp = driver.speed, driver.ramp  # 12 mm = 5 mm up + 2 mm cruise + 5 mm down
+    expected_steps = (2 * (2 * ramp / v) + units.mm(2.0) / v) / O.dt
+    assert O.iter - start_iter == pytest.approx(expected_steps, rel=0.02, abs=3 + 50)
+    assert tuple(O.bodies[runner.scene.right_support].state.vel) == (0.0, 0.0, 0.0)

@@ -147,6 +147,18 @@ def test_resume_refuses_a_folder_of_another_case(tmp_path):
                      task=FakeRuns())
 
 
+def test_resume_accepts_a_run_that_predates_a_parameter_at_its_default(tmp_path):
+    rows = grid({"kn_N_per_mm3": [0.1]})
+    campaign(tmp_path, FakeRuns(), rows)
+    case_file = tmp_path / "kn0.1" / "case.toml"
+    text = case_file.read_text()
+    assert "hold_damping = 0.2\n" in text
+    case_file.write_text(text.replace("hold_damping = 0.2\n", ""))
+    again = FakeRuns()
+    campaign(tmp_path, again, rows)
+    assert again.calls == []  # a run made before hold_damping existed ran it at its default
+
+
 def test_hinge_labels_follow_the_paper():
     detail = [{**h, "rotation_mrad": r} for h, r in zip(HINGES, (147, 460, 231, 8, 93))]
     labels = label_hinges({"hinges_at_collapse": HINGES, "hinges_detail": detail}, 15)

@@ -178,17 +178,19 @@ def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]
 
 
 def _check_same_case(spec: RunSpec) -> None:
-    """Refuse to resume over a finished run folder that ran another case."""
+    """Refuse to resume over a finished run folder that ran another case. A parameter the run
+    predates counts as its default (a new parameter's default keeps the behaviour it had before)."""
     done = tomllib.loads((spec.folder / CASE_FILE).read_text())
-    wanted = spec.case.to_dict()
+    wanted, defaults = spec.case.to_dict(), ArchCase().to_dict()
     for section, values in wanted.items():
         if section == "name":
             continue
         for key, value in values.items():
-            if done.get(section, {}).get(key) != value:
+            ran = done.get(section, {}).get(key, defaults[section][key])
+            if ran != value:
                 raise YadearchError(
                     f"run folder {spec.folder} holds a different case ({section}.{key} = "
-                    f"{done.get(section, {}).get(key)!r}, this campaign: {value!r}); use another --out")
+                    f"{ran!r}, this campaign: {value!r}); use another --out")
 
 
 BATCH_KEYS = ("description", "preset", "out")  # yade-batch table columns that are not case parameters

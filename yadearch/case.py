@@ -88,6 +88,10 @@ class NumericsConfig:
                                                            "speed ramps up from zero (mm)"))
     damping: float = field(default=0.2, metadata=_num(0, 1, high_open=True,
                            doc="YADE local (non-viscous) damping coefficient"))
+    hold_damping: float = field(default=0.2, metadata=_num(0, 1, high_open=True,
+                                doc="YADE local damping during the equilibrium holds that decide du; "
+                                "fixed apart from `damping`, because it decides how fast a creeping "
+                                "near-critical arch moves and so the hold's verdict"))
     timestep_safety: float = field(default=0.6, metadata=_num(0, 1, low_open=True,
                                    doc="time step as a fraction of the critical step of a joint"))
     threads: int = field(default=1, metadata=_num(1, 256, doc="OpenMP threads of the YADE process"))

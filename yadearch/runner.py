@@ -31,6 +31,8 @@ from .scene import CALLBACK_NAME, ArchScene, body_states, build_scene
 SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
 CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, trigger, records)
 ARRIVED_M = 1e-12  # the support is on target within this distance (m)
+DRIVER_LABEL = "yadearch_support_driver"
+DRIVER_CRUISE_PERIOD = 50  # steps between the support driver's calls while it cruises
 STALL_S = 120.0  # wall seconds without a single step before a run is declared stalled
 
 
@@ -43,16 +45,36 @@ class SupportDriver:
         self.direction = (float(direction[0]), float(direction[1]))
         self.speed = speed
         self.accel = speed * speed / (2.0 * ramp) if ramp > 0 else math.inf
-        self.target = 0.0
+        self.ramp = ramp
+        self._target = 0.0
         self.current_speed = 0.0
         self.origin = (0.0, 0.0)
         self._state = None
+        self._engine = None
+
+    def engine(self):
+        """The PyRunner that calls `step`, labelled so that `bind` finds it again after a reload."""
+        from yade.wrapper import PyRunner
+
+        return PyRunner(command=f"{CALLBACK_NAME}_driver.step()", iterPeriod=1, label=DRIVER_LABEL)
 
     def bind(self) -> None:
-        """(Re)attach to the support body (after a scene reload)."""
+        """(Re)attach to the support body and to the driver's engine (after a scene reload)."""
         from yade import O
 
         self._state = O.bodies[self.scene.right_support].state
+        self._engine = next(e for e in O.engines if getattr(e, "label", "") == DRIVER_LABEL)
+
+    @property
+    def target(self) -> float:
+        return self._target
+
+    @target.setter
+    def target(self, value: float) -> None:
+        """A new target wakes the engine up: it is put to sleep while the support stands still."""
+        self._target = value
+        self._engine.dead = False
+        self._engine.iterPeriod = 1
 
     def zero_here(self) -> None:
         """Measure displacements from the support's current position and stop it there."""
@@ -78,6 +100,19 @@ class SupportDriver:
                         math.sqrt(2.0 * self.accel * remaining), remaining / dt)
         self.current_speed = speed
         self._state.vel = (speed * self.direction[0], speed * self.direction[1], 0.0)
+        self._schedule(remaining, speed, dt)
+
+    def _schedule(self, remaining: float, speed: float, dt: float) -> None:
+        """Call `step` only when the speed can change: never while the support stands on target
+        (holds, self-weight), and every `DRIVER_CRUISE_PERIOD` steps at most while it cruises short of
+        its braking distance. The support's path is the same as with a call every step."""
+        if speed == 0.0 and remaining <= ARRIVED_M:
+            self._engine.dead = True
+            return
+        cruise_steps = 0
+        if speed == self.speed:
+            cruise_steps = int((remaining - self.ramp) / (speed * dt))
+        self._engine.iterPeriod = max(1, min(DRIVER_CRUISE_PERIOD, cruise_steps - 1))
 
     def reached(self) -> bool:
         return self.target - self.displacement() <= ARRIVED_M
@@ -125,14 +160,12 @@ class Runner:
     # ---- scene plumbing -------------------------------------------------------------------
     def _install_driver(self) -> None:
         from yade import O
-        from yade.wrapper import PyRunner
 
         import __main__
 
         setattr(__main__, CALLBACK_NAME + "_driver", self.driver)
         engines = list(O.engines)
-        engines.insert(len(engines) - 1, PyRunner(command=f"{CALLBACK_NAME}_driver.step()",
-                                                  iterPeriod=1))
+        engines.insert(len(engines) - 1, self.driver.engine())
         O.engines = engines
         self.driver.bind()
 
@@ -433,6 +466,7 @@ class Runner:
         from yade import O
 
         self.driver.target = self.delta()
+        self._set_damping(self.num.hold_damping)
         if from_rest:
             self._stop_blocks()
         runaway = runaway if runaway is not None else units.mm(self.num.runaway_mm)
@@ -452,6 +486,13 @@ class Runner:
                 return "stable"
         return "timeout"
 
+    def _set_damping(self, damping: float) -> None:
+        """Local damping of the integrator: `damping` while the support moves, `hold_damping` while
+        a hold decides equilibrium (set by each stage, as a reload brings back the saved value)."""
+        from yade import O
+
+        O.engines[-1].damping = damping
+
     def _stop_blocks(self) -> None:
         """Zero the blocks' velocities: the hold then tests the configuration statically, without
         kinetic energy from the loading that could carry the arch over a barrier it would not cross."""
@@ -464,6 +505,7 @@ class Runner:
     def move_to(self, delta: float) -> None:
         """Move the support to `delta` along the trapezoidal profile."""
         self.driver.target = delta
+        self._set_damping(self.num.damping)
         while not self.driver.reached() or self.driver.current_speed > 0.0:
             self._run_steps(CHECK_EVERY_STEPS // 5)
             self._check_finite()
@@ -559,7 +601,8 @@ class Runner:
                 f"not], narrowed to < {n.du_tolerance_mm} mm. Equilibrium: after {n.hold_min_s} s, "
                 f"unbalanced force < {n.equilibrium_tolerance} and all blocks slower than "
                 f"{n.still_speed_mm_per_s} mm/s. No equilibrium: a block moves > {n.runaway_mm} mm, "
-                f"or {n.hold_max_s} s pass without equilibrium.")
+                f"or {n.hold_max_s} s pass without equilibrium. Holds run at local damping "
+                f"{n.hold_damping}.")
 
     def run(self) -> dict:
         """All stages; returns the summary dict (records are in `self.records`)."""

@@ -24,6 +24,9 @@ from .yade_env import import_yade
 _NEGLIGIBLE_POISSON = 1e-12
 # Name under which the scene's Python callbacks are reachable from PyRunner commands.
 CALLBACK_NAME = "_yadearch_scene"
+# Joint j sets bit j % JOINT_MASK_BITS of the collision masks of its two blocks, so the collider only
+# pairs blocks sharing a joint (or JOINT_MASK_BITS - 1 or more joints apart, which never touch).
+JOINT_MASK_BITS = 6
 
 
 @dataclass
@@ -93,6 +96,8 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
         if index not in fixed:
             body.state.blockedDOFs = "zXY"  # planar motion: no z translation, rotation about z only
         body_ids.append(O.bodies.append(body))
+    for body_id, mask in zip(body_ids, joint_masks(geometry)):
+        O.bodies[body_id].mask = mask
 
     shear = PerContactShear(stiffness, geometry, body_ids)
     setattr(__main__, CALLBACK_NAME, shear)
@@ -110,6 +115,21 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
     ori0 = np.array([_quat_wxyz(O.bodies[i].state.ori) for i in body_ids])
     shear.bind(pos0, ori0)
     return ArchScene(geometry, stiffness, body_ids, pos0, ori0, shear, dt)
+
+
+def joint_masks(geometry: ArchGeometry) -> list[int]:
+    """Collision mask of each block: one bit per joint number modulo `JOINT_MASK_BITS`.
+
+    Tilted voussoirs two apart have overlapping bounding boxes, so without masks the collider hands
+    CGAL about 30 pairs that never touch (55-voussoir arch: 86 interactions for 56 joints, 10 % of
+    the step time). A block without joints keeps all bits and may touch anything."""
+    all_bits = (1 << JOINT_MASK_BITS) - 1
+    masks = [0] * len(geometry.blocks)
+    for joint in geometry.joints:
+        bit = 1 << (joint.number % JOINT_MASK_BITS)
+        masks[joint.left] |= bit
+        masks[joint.right] |= bit
+    return [mask or all_bits for mask in masks]
 
 
 def _quat_wxyz(q: Any) -> list[float]:
