@@ -1,17 +1,16 @@
 """Speed benchmark of issue 5: full runs of set 1, set 2 (and the stiffest sweep case), set 2's du
 against a slow reference, the driver's overhead over YADE's engine loop, and the sweep's wall time.
 
-    .venv/bin/python scripts/benchmark.py [--out reports/benchmark.json] [--stiff] [--sweep DIR] [--rate-steps N]
+    .venv/bin/python scripts/benchmark.py [--out reports/benchmark.json] [--stiff] [--sweep DIR] [--measure-mm X]
 
 Each run goes through the same process launcher as `yadearch run`. The slow reference is set 2 at
 half the default settlement rate, run in this invocation (or a stored run folder given by
 --reference, e.g. the convergence script's, whose provenance is printed); the speed-up is the
-reference's wall time over the default run's. The driver overhead comes from each
-run's own profile (YADE's `O.timingEnabled`): run wall time / time inside YADE's C++ engines, on the
-very same steps. The sweep's wall time is the sum of the sessions a campaign folder recorded.
-Stored runs made while other runs shared the cores are slower than a free core; --rate-steps N
-times N loading steps of set 2 here and gives the set 2 wall time at that rate (with the load
-average, to show whether the core was free).
+reference's wall time over the default run's. --measure-mm X times the first X mm of set 2's
+loading with the full runner and with a bare `O.run` of the same scene and steps: their ratio is the
+driver overhead (each run's summary also keeps its per-engine profile). It also gives the runner's
+steps/s here, hence set 2's wall time on this core: stored runs made while other runs shared the
+cores are slower. The sweep's wall time is the sum of the sessions a campaign folder recorded.
 Prints a verdict line per target and writes everything to the JSON file.
 """
 
@@ -67,34 +66,61 @@ def sweep_status(folder: Path) -> dict:
             "run_wall_s": float(table["wall_s"].sum())}
 
 
-def free_core_rate(steps: int, set2_steps: int) -> dict:
-    """Steps per second of the settled set 2 arch under continuous loading with the full runner, and
-    the set 2 wall time this rate gives for `set2_steps`; the load average shows whether the core
-    was free."""
+def loading_measurement(settle_mm: float, set2_steps: int) -> dict:
+    """Set 2's first `settle_mm` of loading, timed twice on the same steps from the same self-weight
+    state: the full runner (driver callback, checks, records, state snapshots) and a bare `O.run` of
+    the same scene (its engines, the per-contact shear law included, the support moved by a constant
+    velocity instead of the driver; the shear law's own time from YADE's engine timing). Also the
+    runner's steps/s here (set 2's wall time at that rate) and the load average, which says whether
+    the core was free."""
     import os
 
     from yadearch.case import preset
-    from yadearch.runner import Runner
+    from yadearch.runner import DRIVER_LABEL, Runner
+    from yadearch.yade_env import import_yade
 
-    runner = Runner(preset("set2").with_overrides({"progress_every_s": 1e9}), log=lambda text: None)
+    import_yade()
+    from yade import O
+
+    # no speed ramp: the bare run moves the support at constant speed, so the runner must too
+    case = preset("set2").with_overrides({"progress_every_s": 1e9, "max_settlement_mm": settle_mm,
+                                          "ramp_mm": 0.0})
+    runner = Runner(case, log=lambda text: None)
     runner.selfweight()
+    settled = runner._save()
     runner.stage = "loading"
-    runner.driver.target = 1.0
-    start, first = time.time(), runner.total_steps
-    while runner.total_steps - first < steps:
-        runner._run_steps(50)
-    rate = steps / (time.time() - start)
-    print(f"free-core check: {rate:.0f} steps/s over {steps} loading steps (load average "
-          f"{os.getloadavg()[0]:.2f}); set 2's {set2_steps} steps would take {set2_steps / rate:.0f} s")
-    return {"steps_per_s": rate, "set2_wall_estimate_s": set2_steps / rate,
-            "load_average": os.getloadavg()[0]}
+    first, start = runner.total_steps, time.time()
+    runner.load_until_trigger()
+    runner_s, steps = time.time() - start, runner.total_steps - first
+
+    runner._restore(settled)
+    O.engines = [e for e in O.engines if getattr(e, "label", "") != DRIVER_LABEL]
+    O.bodies[runner.scene.right_support].state.vel = (0.0, -runner.driver.speed, 0.0)
+    shear_engine = next(e for e in O.engines if type(e).__name__ == "PyRunner")
+    O.timingEnabled, shear_engine.execTime = True, 0
+    begin = time.time()
+    O.run(steps, True)
+    bare_s, shear_s = time.time() - begin, shear_engine.execTime * 1e-9
+    rate = steps / runner_s
+    result = {"settle_mm": settle_mm, "steps": steps, "runner_s": runner_s, "bare_scene_s": bare_s,
+              "bare_shear_law_s": shear_s, "driver_overhead_ratio": runner_s / bare_s,
+              "python_overhead_ratio": runner_s / (bare_s - shear_s), "steps_per_s": rate,
+              "set2_wall_estimate_s": set2_steps / rate, "load_average": os.getloadavg()[0]}
+    print(f"loading {settle_mm:g} mm of set 2 ({steps} steps): runner {runner_s:.1f} s, bare O.run of the "
+          f"same scene {bare_s:.1f} s (ratio {result['driver_overhead_ratio']:.3f}), of which the "
+          f"per-contact shear law in Python {shear_s:.1f} s (runner / C++ engines = "
+          f"{result['python_overhead_ratio']:.3f}); {rate:.0f} steps/s (load average "
+          f"{result['load_average']:.2f}): set 2's {set2_steps} steps would take "
+          f"{result['set2_wall_estimate_s']:.0f} s")
+    return result
 
 
 def line(name: str, s: dict) -> str:
     """One printed line per run."""
     profile = s.get("profile") or {}
     hinges = " ".join(f"{h['interface']}{h['side']}" for h in s["hinges_at_collapse"])
-    overhead = f", overhead {profile['driver_overhead_ratio']:.3f}" if profile.get("driver_overhead_ratio") else ""
+    overhead = f", wall / YADE C++ engine time {profile['driver_overhead_ratio']:.3f}" \
+        if profile.get("driver_overhead_ratio") else ""
     return (f"{name}: steps {s['steps']}, wall {s['wall_s']:.0f} s, {s['steps_per_s']:.0f} steps/s, "
             f"du {s['du_mm']:.2f} mm, hinges {hinges}{overhead}")
 
@@ -109,8 +135,9 @@ def main() -> int:
     parser.add_argument("--stiff", action="store_true", help="also run the stiffest sweep case (kn 100)")
     parser.add_argument("--stiff-run", help="use this complete kn 100 run folder instead of running")
     parser.add_argument("--sweep", help="campaign folder of the 13-point kn sweep (its sessions.json)")
-    parser.add_argument("--rate-steps", type=int, default=0,
-                        help="also time this many loading steps of set 2 here (on a free core)")
+    parser.add_argument("--measure-mm", type=float, default=0.0,
+                        help="also time this much of set 2's loading here, runner vs bare O.run "
+                        "(the overhead target; run it on a free core)")
     args = parser.parse_args()
 
     from yadearch.campaign import campaign_wall_s
@@ -136,16 +163,16 @@ def main() -> int:
     rel = abs(du - du_ref) / du_ref if du is not None and du_ref else None
     same_hinges = s2["hinges_at_collapse"] == reference["hinges_at_collapse"]
     speedup = reference["wall_s"] / s2["wall_s"]
-    overhead = s2["profile"]["driver_overhead_ratio"]
+    measured = loading_measurement(args.measure_mm, s2["steps"]) if args.measure_mm else None
+    overhead = measured["driver_overhead_ratio"] if measured else None
     sweep_wall = campaign_wall_s(Path(args.sweep)) if args.sweep else None
     sweep = sweep_status(Path(args.sweep)) if args.sweep else None
     report = {
         **{f"{n}_{k}": (results[n] or {}).get(k) for n in results for k in ("wall_s", "du_mm", "steps", "steps_per_s")},
         "set2_du_reference_mm": du_ref, "set2_du_rel_diff": rel, "set2_same_hinges": same_hinges,
         "set2_reference_wall_s": reference["wall_s"], "set2_speedup_vs_reference": speedup,
-        "driver_overhead_ratio": overhead, "set2_profile": s2["profile"],
+        "driver_overhead_ratio": overhead, "loading_measurement": measured, "set2_profile": s2["profile"],
         "sweep_wall_s": sweep_wall, "sweep_folder": args.sweep, "sweep": sweep,
-        "free_core": free_core_rate(args.rate_steps, s2["steps"]) if args.rate_steps else None,
         "measured": time.strftime("%Y-%m-%dT%H:%M:%S"),
     }
     Path(args.out).parent.mkdir(parents=True, exist_ok=True)
@@ -159,7 +186,9 @@ def main() -> int:
          f"{du:.2f} vs {du_ref:.2f} mm ({rel:.2%}), hinges {'same' if same_hinges else 'differ'}"
          if rel is not None else "no du"),
         ("driver overhead <= 5 %", overhead is not None and overhead <= TARGET_OVERHEAD,
-         f"run wall / YADE C++ engine time = {overhead:.3f}"),
+         f"runner / bare O.run of the same scene and steps = {overhead:.3f}; with the per-contact "
+         f"shear law (a Python engine of the scene) also counted as overhead: "
+         f"{measured['python_overhead_ratio']:.3f}" if measured else "not measured (--measure-mm)"),
         ("13-point sweep <= 15 min", sweep_wall is not None and sweep_wall <= TARGET_SWEEP_WALL_S
          and sweep["failed"] == 0 and sweep["done"] == 13,
          f"{sweep_wall / 60:.1f} min in its recorded sessions ({sweep_wall / TARGET_SWEEP_WALL_S:.1f}x the "

@@ -1,9 +1,8 @@
-"""Time spent in each YADE engine over a whole run, across scene reloads (YADE layer).
+"""Time spent in each YADE engine over a whole run (YADE layer).
 
-YADE's `O.timingEnabled` makes every engine accumulate its own `execTime`; `O.loadTmp` brings back
-the counters of the saved scene, so the runner harvests them before every reload and zeroes them
-after it. The profile splits a run's wall time into YADE's C++ engines, the Python callbacks that
-run inside the engine loop, and the rest (the driver's own checks, records, saves and reloads).
+YADE's `O.timingEnabled` makes every engine accumulate its own `execTime`. The profile splits a
+run's wall time into YADE's C++ engines, the Python callbacks that run inside the engine loop, and
+the rest (the driver's own checks, records and state snapshots).
 """
 
 from __future__ import annotations
@@ -27,14 +26,13 @@ class EngineClock:
             return f"{name}({engine.command.split('(')[0]})"
         return name
 
-    def harvest(self, count: bool = True) -> None:
-        """Add the engines' counters to the totals (unless `count` is false) and zero them."""
+    def harvest(self) -> None:
+        """Add the engines' counters to the totals and zero them."""
         from yade import O
 
         for engine in O.engines:
-            if count:
-                label = self._label(engine)
-                self.totals_ns[label] = self.totals_ns.get(label, 0) + engine.execTime
+            label = self._label(engine)
+            self.totals_ns[label] = self.totals_ns.get(label, 0) + engine.execTime
             engine.execTime = 0
             engine.execCount = 0
 
