@@ -73,3 +73,22 @@ def test_support_follows_the_trapezoidal_profile_to_its_target(settled):
     expected_steps = (2 * (2 * ramp / v) + units.mm(2.0) / v) / O.dt
     assert O.iter - start_iter == pytest.approx(expected_steps, rel=0.02, abs=3 + 50)
     assert tuple(O.bodies[runner.scene.right_support].state.vel) == (0.0, 0.0, 0.0)
+
+
+def test_a_snapshot_puts_the_arch_back_where_it_was(settled):
+    """The search goes back to saved states: a restored snapshot must be the saved configuration
+    (support included), with its shear forces, and stand in equilibrium as it did."""
+    runner, _ = settled
+    runner.stage = "loading"
+    runner.move_to(runner.delta() + units.mm(2.0))
+    assert runner.hold() == "stable"
+    snapshot, delta = runner._save(), runner.delta()
+    positions, shear = runner._voussoir_positions(), dict(runner.scene.shear.shear)
+    runner.move_to(delta + units.mm(3.0))
+    assert abs(runner._voussoir_positions() - positions).max() > units.mm(0.5)  # it did move
+    runner._restore(snapshot)
+    assert runner.delta() == pytest.approx(delta, abs=1e-12)
+    assert abs(runner._voussoir_positions() - positions).max() < 1e-12
+    assert runner.scene.shear.shear == shear
+    assert runner.hold() == "stable"
+    assert abs(runner._voussoir_positions() - positions).max() < units.mm(0.05)
