@@ -92,3 +92,21 @@ def test_a_snapshot_puts_the_arch_back_where_it_was(settled):
     assert runner.scene.shear.shear == shear
     assert runner.hold() == "stable"
     assert abs(runner._voussoir_positions() - positions).max() < units.mm(0.05)
+
+
+def test_holds_run_at_hold_damping_and_moves_at_the_loading_damping(settled):
+    """du must not depend on the loading damping: the equilibrium verdicts use their own damping."""
+    from yade import O
+
+    runner, _ = settled
+    num = runner.num
+    loading, num.hold_damping = num.hold_damping, 0.35
+    try:
+        runner.move_to(runner.delta() + units.mm(0.5))
+        assert O.engines[-1].damping == num.damping
+        assert runner.hold() == "stable"
+        assert O.engines[-1].damping == 0.35
+        runner.move_to(runner.delta() + units.mm(0.5))
+        assert O.engines[-1].damping == num.damping
+    finally:
+        num.hold_damping = loading
