@@ -17,6 +17,8 @@ COARSE = {"n_voussoirs": 15, "kn_N_per_mm3": 0.25, "equilibrium_tolerance": 1e-4
           "progress_every_s": 1e9}
 
 
+# The tests share one arch and run in file order, each settling the support further: the holds come
+# first, while the arch is far from collapse (a hold near it may time out), the 12 mm move last.
 @pytest.fixture(scope="module")
 def settled():
     """A 15-voussoir version of the paper's arch after the self-weight stage."""
@@ -59,22 +61,6 @@ def test_collider_pairs_only_blocks_that_share_a_joint(settled):
     assert pairs == {(ids[k], ids[k + 1]) for k in range(len(ids) - 1)}  # 16 joints, no other pair
 
 
-def test_support_follows_the_trapezoidal_profile_to_its_target(settled):
-    """The driver sleeps while it cruises and while the support stands still; the support must still
-    arrive exactly, in the steps the trapezoid takes (ramp up, cruise, ramp down)."""
-    from yade import O
-
-    runner, _ = settled
-    driver = runner.driver
-    start, start_iter = runner.delta(), O.iter
-    runner.move_to(start + units.mm(12.0))
-    assert runner.delta() - start == pytest.approx(units.mm(12.0), abs=1e-9)
-    v, ramp = driver.speed, driver.ramp  # 12 mm = 5 mm up + 2 mm cruise + 5 mm down
-    expected_steps = (2 * (2 * ramp / v) + units.mm(2.0) / v) / O.dt
-    assert O.iter - start_iter == pytest.approx(expected_steps, rel=0.02, abs=3 + 50)
-    assert tuple(O.bodies[runner.scene.right_support].state.vel) == (0.0, 0.0, 0.0)
-
-
 def test_a_snapshot_puts_the_arch_back_where_it_was(settled):
     """The search goes back to saved states: a restored snapshot must be the saved configuration
     (support included), with its shear forces, and stand in equilibrium as it did."""
@@ -110,3 +96,19 @@ def test_holds_run_at_hold_damping_and_moves_at_the_loading_damping(settled):
         assert O.engines[-1].damping == num.damping
     finally:
         num.hold_damping = loading
+
+
+def test_support_follows_the_trapezoidal_profile_to_its_target(settled):
+    """The driver sleeps while it cruises and while the support stands still; the support must still
+    arrive exactly, in the steps the trapezoid takes (ramp up, cruise, ramp down)."""
+    from yade import O
+
+    runner, _ = settled
+    driver = runner.driver
+    start, start_iter = runner.delta(), O.iter
+    runner.move_to(start + units.mm(12.0))
+    assert runner.delta() - start == pytest.approx(units.mm(12.0), abs=1e-9)
+    v, ramp = driver.speed, driver.ramp  # 12 mm = 5 mm up + 2 mm cruise + 5 mm down
+    expected_steps = (2 * (2 * ramp / v) + units.mm(2.0) / v) / O.dt
+    assert O.iter - start_iter == pytest.approx(expected_steps, rel=0.02, abs=3 + 50)
+    assert tuple(O.bodies[runner.scene.right_support].state.vel) == (0.0, 0.0, 0.0)
