@@ -87,13 +87,13 @@ def loading_measurement(settle_mm: float, set2_steps: int) -> dict:
                                           "ramp_mm": 0.0})
     runner = Runner(case, log=lambda text: None)
     runner.selfweight()
-    settled = runner._save()
+    settled = runner.snapshot()
     runner.stage = "loading"
     first, start = runner.total_steps, time.time()
     runner.load_until_trigger()
     runner_s, steps = time.time() - start, runner.total_steps - first
 
-    runner._restore(settled)
+    runner.restore(settled)
     O.engines = [e for e in O.engines if getattr(e, "label", "") != DRIVER_LABEL]
     O.bodies[runner.scene.right_support].state.vel = (0.0, -runner.driver.speed, 0.0)
     shear_engine = next(e for e in O.engines if type(e).__name__ == "PyRunner")

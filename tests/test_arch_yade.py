@@ -68,11 +68,11 @@ def test_a_snapshot_puts_the_arch_back_where_it_was(settled):
     runner.stage = "loading"
     runner.move_to(runner.delta() + units.mm(2.0))
     assert runner.hold() == "stable"
-    snapshot, delta = runner._save(), runner.delta()
+    snapshot, delta = runner.snapshot(), runner.delta()
     positions, shear = runner._voussoir_positions(), dict(runner.scene.shear.shear)
     runner.move_to(delta + units.mm(3.0))
     assert abs(runner._voussoir_positions() - positions).max() > units.mm(0.5)  # it did move
-    runner._restore(snapshot)
+    runner.restore(snapshot)
     assert runner.delta() == pytest.approx(delta, abs=1e-12)
     assert abs(runner._voussoir_positions() - positions).max() < 1e-12
     assert runner.scene.shear.shear == shear

@@ -169,7 +169,7 @@ class Runner:
         O.engines = engines
         self.driver.bind()
 
-    def _save(self) -> dict:
+    def snapshot(self) -> dict:
         """Snapshot, in memory, of everything that evolves: body states, the contacts' geometry
         (the intersection's starting hints), per-contact shear forces and the support driver.
 
@@ -184,8 +184,8 @@ class Runner:
         return {"bodies": bodies, "contacts": contacts, "shear": dict(self.scene.shear.shear),
                 "target": self.driver.target, "speed": self.driver.current_speed}
 
-    def _restore(self, snapshot: dict) -> None:
-        """Put the live scene back in a `_save` snapshot (contacts absent now are recreated by the
+    def restore(self, snapshot: dict) -> None:
+        """Put the live scene back in a `snapshot` (contacts absent now are recreated by the
         collider at the next step)."""
         from yade import O
 
@@ -451,7 +451,7 @@ class Runner:
                     self.log(f"[{self.case.name}] four open hinges at delta={units.to_mm(delta):.2f} mm: "
                              + " ".join(f"{h.interface}{h.side}" for h in open_hinges))
             if delta >= next_save:
-                self._saved.append((delta, self._save()))
+                self._saved.append((delta, self.snapshot()))
                 next_save += probe
             support_speed = self.driver.current_speed
             if support_speed >= 0.5 * self.driver.speed:
@@ -546,24 +546,24 @@ class Runner:
             holds += 1
             self.log(f"[{self.case.name}] {what} at delta={units.to_mm(delta):.3f} mm: {verdict}")
             if verdict == "stable" and (lo_state is None or self.delta() > lo_state[0]):
-                lo_state = (self.delta(), self._save())
+                lo_state = (self.delta(), self.snapshot())
             return verdict == "stable"
 
         def held(index: int) -> bool:
             delta, snapshot = saved[index]
-            self._restore(snapshot)
+            self.restore(snapshot)
             return judge(delta, self.hold(), "saved state")
 
         def moved_and_held(target: float) -> bool:
             """Quasi-static move from the last stable state to `target`, then a hold; a failed
             hold is the new upper end, its final state kept for the collapse figure."""
             nonlocal hi
-            self._restore(lo_state[1])
+            self.restore(lo_state[1])
             self.move_to(target)
             if judge(target, self.hold(), "hold"):
                 return True
             hi = target
-            self._hi_snapshot = self._save()
+            self._hi_snapshot = self.snapshot()
             return False
 
         unstable, stride, index = len(saved), 1, len(saved) - 1
@@ -598,7 +598,7 @@ class Runner:
         """Show the mechanism: continue the failed hold at du's upper bracket end until the arch
         has run away (10 runaway distances more, at most `hold_max_s` more), then read its hinges."""
         self.stage = "collapse"
-        self._restore(self._hi_snapshot)
+        self.restore(self._hi_snapshot)
         self.hold(runaway=10.0 * units.mm(self.num.runaway_mm), from_rest=False)
         hinges = self._record_joints("collapse")
         self._record_series(force=True)
