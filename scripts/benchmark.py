@@ -2,6 +2,7 @@
 against a slow reference, the driver's overhead over YADE's engine loop, and the sweep's wall time.
 
     .venv/bin/python scripts/benchmark.py [--out reports/benchmark.json] [--stiff] [--sweep DIR] [--measure-mm X]
+        [--threads-steps N]
 
 Each run goes through the same process launcher as `yadearch run`. The slow reference is set 2 at
 half the default settlement rate, run in this invocation (or a stored run folder given by
@@ -11,6 +12,7 @@ loading with the full runner and with a bare `O.run` of the same scene and steps
 driver overhead (each run's summary also keeps its per-engine profile). It also gives the runner's
 steps/s here, hence set 2's wall time on this core: stored runs made while other runs shared the
 cores are slower. The sweep's wall time is the sum of the sessions a campaign folder recorded.
+--threads-steps N times N steps of the set 2 scene with 1 and with 2 OpenMP threads.
 Prints a verdict line per target and writes everything to the JSON file.
 """
 
@@ -115,6 +117,41 @@ def loading_measurement(settle_mm: float, set2_steps: int) -> dict:
     return result
 
 
+def scene_rate(steps: int) -> float:
+    """Steps per second of a bare `O.run` of the set 2 scene under self-weight (this process's
+    OpenMP threads)."""
+    from yadearch.case import preset
+    from yadearch.scene import build_scene
+    from yadearch.yade_env import import_yade
+
+    import_yade()
+    from yade import O
+
+    build_scene(preset("set2"))
+    O.run(200, True)
+    start = time.time()
+    O.run(steps, True)
+    return steps / (time.time() - start)
+
+
+def threads_measurement(steps: int) -> dict:
+    """`scene_rate` with 1 and with 2 OpenMP threads, each in its own process (the thread count is
+    fixed when YADE is imported)."""
+    import os
+    import subprocess
+
+    rates = {}
+    for threads in (1, 2):
+        out = subprocess.run([sys.executable, __file__, "--scene-rate", str(steps)], check=True,
+                             capture_output=True, text=True,
+                             env=dict(os.environ, OMP_NUM_THREADS=str(threads))).stdout
+        rates[threads] = float(out.strip().splitlines()[-1])
+    print(f"OpenMP threads: 1 thread {rates[1]:.0f} steps/s, 2 threads {rates[2]:.0f} steps/s "
+          f"(x{rates[2] / rates[1]:.2f}) over {steps} steps of the set 2 scene")
+    return {"steps": steps, "steps_per_s_1_thread": rates[1], "steps_per_s_2_threads": rates[2],
+            "speedup": rates[2] / rates[1]}
+
+
 def line(name: str, s: dict) -> str:
     """One printed line per run."""
     profile = s.get("profile") or {}
@@ -138,7 +175,13 @@ def main() -> int:
     parser.add_argument("--measure-mm", type=float, default=0.0,
                         help="also time this much of set 2's loading here, runner vs bare O.run "
                         "(the overhead target; run it on a free core)")
+    parser.add_argument("--threads-steps", type=int, default=0,
+                        help="also time this many steps of the set 2 scene with 1 and 2 OpenMP threads")
+    parser.add_argument("--scene-rate", type=int, default=0, help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.scene_rate:  # the child process of --threads-steps
+        print(scene_rate(args.scene_rate))
+        return 0
 
     from yadearch.campaign import campaign_wall_s
     from yadearch.case import preset
@@ -172,6 +215,7 @@ def main() -> int:
         "set2_du_reference_mm": du_ref, "set2_du_rel_diff": rel, "set2_same_hinges": same_hinges,
         "set2_reference_wall_s": reference["wall_s"], "set2_speedup_vs_reference": speedup,
         "driver_overhead_ratio": overhead, "loading_measurement": measured, "set2_profile": s2["profile"],
+        "threads": threads_measurement(args.threads_steps) if args.threads_steps else None,
         "sweep_wall_s": sweep_wall, "sweep_folder": args.sweep, "sweep": sweep,
         "measured": time.strftime("%Y-%m-%dT%H:%M:%S"),
     }
