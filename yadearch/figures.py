@@ -64,7 +64,7 @@ def _styled(draw):
 
 def loading_path(series: pd.DataFrame) -> pd.DataFrame:
     """Series rows along the settlement: the end of the self-weight stage, then the loading stage
-    (monotonic in delta). The du search reloads saved states, so its rows are left out."""
+    (monotonic in delta). The du search goes back to saved states, so its rows are left out."""
     selfweight = series[series["stage"] == "selfweight"].tail(1)
     return pd.concat([selfweight, series[series["stage"] == "loading"]]).sort_values("delta_mm", kind="stable")
 

@@ -53,13 +53,13 @@ class SupportDriver:
         self._engine = None
 
     def engine(self):
-        """The PyRunner that calls `step`, labelled so that `bind` finds it again after a reload."""
+        """The PyRunner that calls `step`, labelled so that `bind` (and the benchmark) find it."""
         from yade.wrapper import PyRunner
 
         return PyRunner(command=f"{CALLBACK_NAME}_driver.step()", iterPeriod=1, label=DRIVER_LABEL)
 
     def bind(self) -> None:
-        """(Re)attach to the support body and to the driver's engine (after a scene reload)."""
+        """Attach to the support body and to the driver's engine."""
         from yade import O
 
         self._state = O.bodies[self.scene.right_support].state
@@ -147,7 +147,7 @@ class Runner:
         self.stage = "selfweight"
         self.wall0 = time.time()
         self.steps_by_stage: dict[str, int] = {}
-        self.total_steps = 0  # every step computed, including those of states later reloaded
+        self.total_steps = 0  # every step computed, including those a restore later went back on
         self._next_joint_record = 0.0
         self._last_series_iter = -10**9
         self._last_progress = time.time()
@@ -499,7 +499,7 @@ class Runner:
 
     def _set_damping(self, damping: float) -> None:
         """Local damping of the integrator: `damping` while the support moves, `hold_damping` while
-        a hold decides equilibrium (set by each stage, as a reload brings back the saved value)."""
+        a hold decides equilibrium (each stage sets its own)."""
         from yade import O
 
         O.engines[-1].damping = damping
