@@ -20,6 +20,7 @@ from yadearch.campaign_cli import sweep
 from yadearch.case import preset
 from yadearch.errors import CaseError, YadearchError
 from yadearch.executors import local_pool
+from yadearch.process import exit_reason
 from yadearch.sweep_figure import kn_sweep_figure
 
 REPO = Path(__file__).resolve().parents[1]
@@ -202,3 +203,9 @@ def test_kn_figure(tmp_path):
 def test_sweep_usage_errors(tmp_path, args, message):
     result = CliRunner().invoke(sweep, ["--preset", "set1", "--out", str(tmp_path), *args])
     assert result.exit_code != 0 and message in result.output
+
+
+def test_exit_reason_names_the_signal_that_ended_a_run():
+    assert exit_reason(-15) == "killed by SIGTERM"
+    assert exit_reason(-9) == "killed by SIGKILL"
+    assert exit_reason(1) == "exit code 1"

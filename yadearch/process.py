@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -19,6 +20,16 @@ def check_yade_installed() -> None:
         raise YadeMissingError("YADE is not installed (no yade package under "
                                f"{' or '.join(YADE_PY_DIRS)}); run `sudo apt-get install -y yade` "
                                "or `bash scripts/setup.sh`")
+
+
+def exit_reason(returncode: int) -> str:
+    """A child's exit status in words: a negative code is the signal that ended it."""
+    if returncode < 0:
+        try:
+            return f"killed by {signal.Signals(-returncode).name}"
+        except ValueError:
+            return f"killed by signal {-returncode}"
+    return f"exit code {returncode}"
 
 
 def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
@@ -39,6 +50,6 @@ def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
     if proc.returncode != 0 or not (out / SUMMARY_FILE).is_file():
         lines = [line for line in proc.stderr.splitlines()
                  if line.strip() and not line.startswith(("Using python", "<WARNING>"))]
-        reason = lines[-1] if lines else f"exit code {proc.returncode}"
+        reason = lines[-1] if lines else exit_reason(proc.returncode)
         raise RunFailedError(f"run {case.name!r} failed: {reason} (see {out / LOG_FILE})")
     return out
