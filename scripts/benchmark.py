@@ -170,7 +170,8 @@ def main() -> int:
     parser.add_argument("--set1-run", help="use this complete set 1 run folder instead of running")
     parser.add_argument("--set2-run", help="use this complete set 2 run folder instead of running")
     parser.add_argument("--stiff", action="store_true", help="also run the stiffest sweep case (kn 100)")
-    parser.add_argument("--stiff-run", help="use this complete kn 100 run folder instead of running")
+    parser.add_argument("--stiff-run", help="use this stored run folder of a stiff sweep case (e.g. the "
+                        "stiffest that finished) instead of running kn 100")
     parser.add_argument("--sweep", help="campaign folder of the 13-point kn sweep (its sessions.json)")
     parser.add_argument("--measure-mm", type=float, default=0.0,
                         help="also time this much of set 2's loading here, runner vs bare O.run "
@@ -190,14 +191,14 @@ def main() -> int:
     cases = {"set1": preset("set1"), "set2": preset("set2")}
     stiff_case = preset("set2").with_overrides({"kn_N_per_mm3": 100.0})
     stiff_case.name = "kn100"
-    given = {"set1": args.set1_run, "set2": args.set2_run, "kn100": args.stiff_run}
+    given = {"set1": args.set1_run, "set2": args.set2_run, "stiff": args.stiff_run}
     if args.stiff or args.stiff_run:
-        cases["kn100"] = stiff_case
+        cases["stiff"] = stiff_case
     results: dict = {}
     for name, case in cases.items():
         results[name] = stored(given[name]) if given[name] else timed_run(case, runs / name)
         if results[name] is not None:
-            print(line(name, results[name]), flush=True)
+            print(line(f"{name} ({results[name]['name']})", results[name]), flush=True)
     reference = stored(args.reference) if args.reference else \
         timed_run(slow_reference(cases["set2"]), runs / "set2_slow_reference")
     print(line("slow reference", reference))
@@ -212,7 +213,7 @@ def main() -> int:
     sweep = sweep_status(Path(args.sweep)) if args.sweep else None
     report = {
         **{f"{n}_{k}": (results[n] or {}).get(k) for n in results for k in ("wall_s", "du_mm", "steps", "steps_per_s")},
-        "set2_du_reference_mm": du_ref, "set2_du_rel_diff": rel, "set2_same_hinges": same_hinges,
+        "stiff_name": (results.get("stiff") or {}).get("name"), "set2_du_reference_mm": du_ref, "set2_du_rel_diff": rel, "set2_same_hinges": same_hinges,
         "set2_reference_wall_s": reference["wall_s"], "set2_speedup_vs_reference": speedup,
         "driver_overhead_ratio": overhead, "loading_measurement": measured, "set2_profile": s2["profile"],
         "threads": threads_measurement(args.threads_steps) if args.threads_steps else None,
