@@ -588,7 +588,12 @@ class Runner:
         while math.isinf(hi):
             if units.to_mm(lo_state[0]) >= self.case.loading.max_settlement_mm:
                 return lo_state[0], math.inf, holds
-            target = hint if lo_state[0] < hint < lo_state[0] + probe else lo_state[0] + probe
+            if lo_state[0] < hint < lo_state[0] + probe:
+                # tried once: a move stops a hair short of its target, so a stable hold at the hint
+                # would otherwise leave lo just below it and send every next probe there again
+                target, hint = hint, math.inf
+            else:
+                target = lo_state[0] + probe
             moved_and_held(target)
         while hi - lo_state[0] > units.mm(self.num.du_tolerance_mm):
             moved_and_held(0.5 * (lo_state[0] + hi))
