@@ -63,7 +63,9 @@ def sweep_status(folder: Path) -> dict:
     """Done and failed runs of a campaign and the sum of its runs' wall times (results.csv)."""
     import pandas as pd
 
-    table = pd.read_csv(folder / "results.csv")
+    from yadearch.campaign import RESULTS_FILE
+
+    table = pd.read_csv(folder / RESULTS_FILE)
     return {"done": int((table["status"] == "done").sum()), "failed": int((table["status"] == "failed").sum()),
             "run_wall_s": float(table["wall_s"].sum())}
 
@@ -97,7 +99,8 @@ def loading_measurement(settle_mm: float, set2_steps: int) -> dict:
 
     runner.restore(settled)
     O.engines = [e for e in O.engines if getattr(e, "label", "") != DRIVER_LABEL]
-    O.bodies[runner.scene.right_support].state.vel = (0.0, -runner.driver.speed, 0.0)
+    dx, dy = runner.driver.direction
+    O.bodies[runner.scene.right_support].state.vel = (runner.driver.speed * dx, runner.driver.speed * dy, 0.0)
     shear_engine = next(e for e in O.engines if type(e).__name__ == "PyRunner")
     O.timingEnabled, shear_engine.execTime = True, 0
     begin = time.time()
@@ -213,7 +216,8 @@ def main() -> int:
     sweep = sweep_status(Path(args.sweep)) if args.sweep else None
     report = {
         **{f"{n}_{k}": (results[n] or {}).get(k) for n in results for k in ("wall_s", "du_mm", "steps", "steps_per_s")},
-        "stiff_name": (results.get("stiff") or {}).get("name"), "set2_du_reference_mm": du_ref, "set2_du_rel_diff": rel, "set2_same_hinges": same_hinges,
+        "stiff_name": (results.get("stiff") or {}).get("name"),
+        "set2_du_reference_mm": du_ref, "set2_du_rel_diff": rel, "set2_same_hinges": same_hinges,
         "set2_reference_wall_s": reference["wall_s"], "set2_speedup_vs_reference": speedup,
         "driver_overhead_ratio": overhead, "loading_measurement": measured, "set2_profile": s2["profile"],
         "threads": threads_measurement(args.threads_steps) if args.threads_steps else None,
