@@ -7,6 +7,8 @@ the rest (the driver's own checks, records and state snapshots).
 
 from __future__ import annotations
 
+from .stepping import GATE_LABEL
+
 PYTHON_ENGINES = ("PyRunner",)
 
 
@@ -31,6 +33,8 @@ class EngineClock:
         from yade import O
 
         for engine in O.engines:
+            if getattr(engine, "label", "") == GATE_LABEL:  # its time is the runner's, between steps
+                continue
             label = self._label(engine)
             self.totals_ns[label] = self.totals_ns.get(label, 0) + engine.execTime
             engine.execTime = 0

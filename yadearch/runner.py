@@ -27,13 +27,13 @@ from .errors import RunFailedError
 from .hinges import Hinge, hinge_rotation, hinges_at
 from .joints import joint_states
 from .scene import CALLBACK_NAME, ArchScene, body_states, build_scene
+from .stepping import SteppingGate
 
 SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
 CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, trigger, records)
 ARRIVED_M = 1e-12  # the support is on target within this distance (m)
 DRIVER_LABEL = "yadearch_support_driver"
 DRIVER_CRUISE_PERIOD = 50  # steps between the support driver's calls while it cruises
-STALL_S = 120.0  # wall seconds without a single step before a run is declared stalled
 
 
 class SupportDriver:
@@ -142,6 +142,8 @@ class Runner:
         self.driver = SupportDriver(self.scene, direction, units.mm(self.num.settlement_rate_mm_per_s),
                                     units.mm(self.num.ramp_mm))
         self._install_driver()
+        self.gate = SteppingGate()
+        self.gate.install()
         self.driver.zero_here()
         self.clock = EngineClock()
         self.stage = "selfweight"
@@ -321,28 +323,14 @@ class Runner:
                  f"{rate:6.0f} steps/s wall={wall:6.0f} s{eta} {extra}")
 
     def _advance(self, n: int) -> None:
-        """Run n steps (the only place that steps the scene, so that steps are counted).
-
-        Polls instead of `O.run(n, True)`: when an engine raises, YADE 2023.02a can lose its
-        simulation thread while `wait()` sleeps forever (seen in a campaign); a stalled step count
-        ends the run with a clear reason instead."""
-        from yade import O
-
-        target = O.iter + n
-        O.run(n)
-        last_iter, last_change = O.iter, time.time()
-        while O.iter < target:
-            time.sleep(0.0005)
-            if O.iter != last_iter:
-                last_iter, last_change = O.iter, time.time()
-            elif time.time() - last_change > STALL_S:
-                O.pause()
-                raise RunFailedError(f"YADE stopped stepping at step {O.iter} ({self.stage}); an engine "
-                                     "probably raised, see stderr")
-        while O.running:
-            time.sleep(0.0005)
+        """Run n steps (the only place that steps the scene, so that steps are counted)."""
+        self.gate.advance(n)
         self.total_steps += n
         self.steps_by_stage[self.stage] = self.steps_by_stage.get(self.stage, 0) + n
+
+    def close(self) -> None:
+        """Stop YADE's simulation thread (it finishes the step it is in)."""
+        self.gate.close()
 
     def _run_steps(self, n: int) -> None:
         self._advance(n)
@@ -621,7 +609,14 @@ class Runner:
                 f"{n.hold_damping}.")
 
     def run(self) -> dict:
-        """All stages; returns the summary dict (records are in `self.records`)."""
+        """All stages, then YADE's simulation thread stopped; returns the summary dict (records are
+        in `self.records`)."""
+        try:
+            return self._stages()
+        finally:
+            self.close()
+
+    def _stages(self) -> dict:
         from yade import O
 
         selfweight = self.selfweight()

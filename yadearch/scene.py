@@ -1,7 +1,8 @@
 """Build the YADE scene of an arch case: polyhedral blocks, materials, engines, time step.
 
-Only this module, `shear` and `runner` import YADE. The volumetric law's own shear is switched off
-(its running shear force is shared by all contacts in YADE 2023.02a); `PerContactShear` replaces it.
+Only this module, `shear`, `stepping` and `runner` import YADE. The volumetric law's own shear is
+switched off (its running shear force is shared by all contacts in YADE 2023.02a); `PerContactShear`
+replaces it.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from .case import ArchCase
 from .geometry import ArchGeometry, segmental_arch
 from .mechanics import ContactStiffness, contact_stiffness, critical_timestep
 from .shear import PerContactShear
+from .stepping import close_active
 from .yade_env import import_yade
 
 # Poisson ratio given to YADE materials so that Ip2's ks = young*poisson is negligible but not the
@@ -85,6 +87,7 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
                               Law2_PolyhedraGeom_PolyhedraPhys_Volumetric, NewtonIntegrator,
                               PyRunner, PolyhedraMat)
 
+    close_active()
     O.reset()
     material = PolyhedraMat(young=stiffness.material_young, poisson=_NEGLIGIBLE_POISSON,
                             frictionAngle=float(np.arctan(stiffness.tan_friction)), density=density,
