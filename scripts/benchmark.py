@@ -97,6 +97,7 @@ def loading_measurement(settle_mm: float, set2_steps: int) -> dict:
     runner.load_until_trigger()
     runner_s, steps = time.time() - start, runner.total_steps - first
 
+    runner.close()  # the bare run below is YADE's own O.run, without the runner's stepping gate
     runner.restore(settled)
     O.engines = [e for e in O.engines if getattr(e, "label", "") != DRIVER_LABEL]
     dx, dy = runner.driver.direction

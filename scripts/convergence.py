@@ -17,20 +17,11 @@ import sys
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from yadearch.case import ArchCase, load_case, preset
+from yadearch.case import preset
 from yadearch.process import run_case_process
-from yadearch.rundir import is_complete
+from yadearch.rundir import holds_case
 
 TOLERANCE = 0.01
-
-
-def reusable(folder: Path, case: ArchCase) -> bool:
-    """A complete run folder of exactly this case (name aside) is reused, not run again."""
-    if not is_complete(folder):
-        return False
-    ran = load_case(folder / "case.toml")
-    ran.name = case.name
-    return ran == case
 
 
 def main() -> int:
@@ -59,7 +50,7 @@ def main() -> int:
 
     def run(label: str) -> dict:
         folder = Path(args.out) / cases[label].name
-        if not reusable(folder, cases[label]):
+        if not holds_case(folder, cases[label]):
             run_case_process(cases[label], folder, quiet=True)
         return json.loads((folder / "summary.json").read_text())
 

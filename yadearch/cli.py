@@ -13,6 +13,7 @@ from .campaign import parse_scalar
 from .case import ArchCase, load_case, parameter_docs, preset
 from .errors import YadearchError
 from .process import run_case_process
+from .rundir import holds_case
 from .campaign_cli import calibrate, sweep
 from .report import report, write_report
 
@@ -85,13 +86,20 @@ def run(preset_name: str | None, case_file: str | None, kn: float | None, settin
               help="folder that receives set1/ and set2/")
 @click.option("--jobs", type=click.IntRange(1, 2), default=2, show_default=True,
               help="cases run at once (one core each)")
-def reproduce(out: str, jobs: int) -> None:
-    """Run both paper cases into OUT/set1 and OUT/set2, then write OUT/report.md with figures."""
+@click.option("--rerun", is_flag=True, help="run both cases again even if OUT holds finished runs of them")
+def reproduce(out: str, jobs: int, rerun: bool) -> None:
+    """Run both paper cases into OUT/set1 and OUT/set2, then write OUT/report.md with figures.
+
+    A finished run of exactly the same case already in OUT is reused (an interrupted reproduction
+    resumes), unless --rerun."""
     from concurrent.futures import ThreadPoolExecutor
 
     folders = [Path(out) / name for name in ("set1", "set2")]
+    todo = [f for f in folders if rerun or not holds_case(f, preset(f.name))]
+    for folder in sorted(set(folders) - set(todo)):
+        click.echo(f"{folder.name}: reusing the finished run in {folder} (--rerun to run it again)")
     with ThreadPoolExecutor(max_workers=jobs) as pool:
-        list(pool.map(lambda folder: run_case_process(preset(folder.name), folder), folders))
+        list(pool.map(lambda folder: run_case_process(preset(folder.name), folder), todo))
     for folder in folders:
         _report_summary(folder)
     click.echo(f"report: {write_report(folders, out)}")

@@ -10,6 +10,8 @@ from typing import Any
 
 import pandas as pd
 
+from .case import ArchCase, load_case
+
 CASE_FILE = "case.toml"
 SERIES_FILE = "series.csv"
 JOINTS_FILE = "joints.csv"
@@ -52,6 +54,16 @@ def _json_default(value: Any) -> Any:
 def is_complete(path: Path) -> bool:
     """True if the folder holds a finished run (its summary.json is written last)."""
     return (Path(path) / SUMMARY_FILE).is_file()
+
+
+def holds_case(path: Path, case: ArchCase) -> bool:
+    """True if the folder holds a finished run of exactly `case` (its name aside; parameters the
+    run predates count as their defaults), which can be reused instead of run again."""
+    if not is_complete(path):
+        return False
+    ran = load_case(Path(path) / CASE_FILE)
+    ran.name = case.name
+    return ran == case
 
 
 def read_run(path: str | Path) -> RunFolder:

@@ -1,0 +1,51 @@
+"""`yadearch reproduce` resumes: a finished run of exactly the preset's case is reused, anything else
+runs (no YADE: the runs and the report are replaced by recorders)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from click.testing import CliRunner
+
+from yadearch import cli
+from yadearch.case import preset
+from yadearch.rundir import CASE_FILE, SUMMARY_FILE, holds_case
+
+
+def finished(folder: Path, case_toml: str) -> None:
+    folder.mkdir(parents=True)
+    (folder / CASE_FILE).write_text(case_toml)
+    (folder / SUMMARY_FILE).write_text(json.dumps({"name": folder.name, "du_mm": 48.0, "steps": 10,
+                                                   "wall_s": 1.0, "hinges_at_collapse": []}))
+
+
+def test_only_a_finished_run_of_the_same_case_is_reusable(tmp_path):
+    case = preset("set1")
+    finished(tmp_path / "same", case.to_toml())
+    finished(tmp_path / "other", case.with_overrides({"numerics.damping": 0.3}).to_toml())
+    (tmp_path / "unfinished").mkdir()
+    (tmp_path / "unfinished" / CASE_FILE).write_text(case.to_toml())
+    assert holds_case(tmp_path / "same", case)
+    assert not holds_case(tmp_path / "other", case)
+    assert not holds_case(tmp_path / "unfinished", case)
+    renamed = preset("set1")
+    renamed.name = "mine"
+    assert holds_case(tmp_path / "same", renamed)  # the name is not part of the physics
+
+
+def test_reproduce_runs_only_what_is_missing(tmp_path, monkeypatch):
+    ran: list[str] = []
+
+    def fake_run(case, folder):
+        ran.append(folder.name)
+        finished(folder, case.to_toml())
+
+    monkeypatch.setattr(cli, "run_case_process", fake_run)
+    monkeypatch.setattr(cli, "write_report", lambda folders, out: Path(out) / "report.md")
+    finished(tmp_path / "set1", preset("set1").to_toml())
+    result = CliRunner().invoke(cli.cli, ["reproduce", "--out", str(tmp_path), "--jobs", "1"])
+    assert result.exit_code == 0, result.output
+    assert ran == ["set2"] and "set1: reusing the finished run" in result.output
+    CliRunner().invoke(cli.cli, ["reproduce", "--out", str(tmp_path), "--jobs", "1", "--rerun"])
+    assert ran == ["set2", "set1", "set2"]
