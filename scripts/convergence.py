@@ -2,7 +2,7 @@
 with another damping and with two thirds of the time step, and print du, the hinges and the
 relative differences.
 
-    .venv/bin/python scripts/convergence.py [--preset set2] [--jobs 2] [--out runs/convergence]
+    .venv/bin/python scripts/convergence.py [--preset set2] [--kn 31.62] [--jobs 2] [--out runs/convergence]
 
 Exit code 1 if du moves by more than 1 % or a hinge moves. A complete run folder of the same case
 under --out is reused (copy `reports/set2` to `runs/convergence/set2_default` to reuse the
@@ -29,11 +29,17 @@ def main() -> int:
     parser.add_argument("--preset", default="set2", choices=["set1", "set2"])
     parser.add_argument("--jobs", type=int, default=2, help="runs at once (one core each)")
     parser.add_argument("--out", default="runs/convergence")
+    parser.add_argument("--kn", type=float, default=None,
+                        help="interface kn (N/mm3) instead of the preset's, e.g. a stiff sweep point")
     parser.add_argument("--damping", type=float, default=None,
                         help="the other damping (default: the default damping + 0.1)")
     args = parser.parse_args()
 
     base = preset(args.preset)
+    prefix = args.preset
+    if args.kn is not None:
+        base = base.with_overrides({"kn_N_per_mm3": args.kn})
+        prefix = f"kn{args.kn:g}"
     rate, damping = base.numerics.settlement_rate_mm_per_s, base.numerics.damping
     other_damping = args.damping if args.damping is not None else round(damping + 0.1, 3)
     variants = {
@@ -45,7 +51,7 @@ def main() -> int:
     cases = {}
     for label, overrides in variants.items():
         case = base.with_overrides(overrides)
-        case.name = f"{args.preset}_{label}"
+        case.name = f"{prefix}_{label}"
         cases[label] = case
 
     def run(label: str) -> dict:
@@ -63,7 +69,7 @@ def main() -> int:
     reference = summaries["default"]
     has_reference = reference["du_mm"] is not None
     ok = has_reference
-    print(f"{'variant':14s} {'rate mm/s':>9s} {'damping':>7s} {'dt safety':>9s} {'du mm':>8s} {'rel diff':>9s} "
+    print(f"{'variant':14s} {'speed mm/s':>9s} {'damping':>7s} {'dt safety':>9s} {'du mm':>8s} {'rel diff':>9s} "
           f"{'steps':>8s} {'wall s':>7s}  hinges at collapse")
     for label, summary in summaries.items():
         case = cases[label]
@@ -71,7 +77,7 @@ def main() -> int:
         rel = (du - reference["du_mm"]) / reference["du_mm"] if du is not None and has_reference else float("nan")
         same = hinges(summary) == hinges(reference)
         ok = ok and du is not None and abs(rel) <= TOLERANCE and same
-        print(f"{label:14s} {case.numerics.settlement_rate_mm_per_s:9.2f} {case.numerics.damping:7.2f} "
+        print(f"{label:14s} {case.settlement_speed_mm_per_s:9.2f} {case.numerics.damping:7.2f} "
               f"{case.numerics.timestep_safety:9.2f} "
               f"{du if du is not None else float('nan'):8.2f} {rel:+9.2%} {summary['steps']:8d} "
               f"{summary['wall_s']:7.0f}  {hinges(summary)}{'' if same else '  (differs)'}")

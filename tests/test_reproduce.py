@@ -14,7 +14,7 @@ from yadearch.rundir import CASE_FILE, SUMMARY_FILE, holds_case
 
 
 def finished(folder: Path, case_toml: str) -> None:
-    folder.mkdir(parents=True)
+    folder.mkdir(parents=True, exist_ok=True)
     (folder / CASE_FILE).write_text(case_toml)
     (folder / SUMMARY_FILE).write_text(json.dumps({"name": folder.name, "du_mm": 48.0, "steps": 10,
                                                    "wall_s": 1.0, "hinges_at_collapse": []}))
@@ -47,5 +47,6 @@ def test_reproduce_runs_only_what_is_missing(tmp_path, monkeypatch):
     result = CliRunner().invoke(cli.cli, ["reproduce", "--out", str(tmp_path), "--jobs", "1"])
     assert result.exit_code == 0, result.output
     assert ran == ["set2"] and "set1: reusing the finished run" in result.output
-    CliRunner().invoke(cli.cli, ["reproduce", "--out", str(tmp_path), "--jobs", "1", "--rerun"])
+    result = CliRunner().invoke(cli.cli, ["reproduce", "--out", str(tmp_path), "--jobs", "1", "--rerun"])
+    assert result.exit_code == 0, result.output
     assert ran == ["set2", "set1", "set2"]

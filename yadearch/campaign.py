@@ -28,7 +28,7 @@ from .case import ArchCase, parameter_docs, preset
 from .errors import CaseError, RunFailedError, YadearchError
 from .executors import Pool
 from .process import check_yade_installed, run_case_process
-from .rundir import CASE_FILE, SUMMARY_FILE, is_complete
+from .rundir import SUMMARY_FILE, case_differences, is_complete
 
 FAILED_FILE = "failed.json"
 RUNS_FILE = "runs.csv"
@@ -178,19 +178,12 @@ def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]
 
 
 def _check_same_case(spec: RunSpec) -> None:
-    """Refuse to resume over a finished run folder that ran another case. A parameter the run
-    predates counts as its default (a new parameter's default keeps the behaviour it had before)."""
-    done = tomllib.loads((spec.folder / CASE_FILE).read_text())
-    wanted, defaults = spec.case.to_dict(), ArchCase().to_dict()
-    for section, values in wanted.items():
-        if section == "name":
-            continue
-        for key, value in values.items():
-            ran = done.get(section, {}).get(key, defaults[section][key])
-            if ran != value:
-                raise YadearchError(
-                    f"run folder {spec.folder} holds a different case ({section}.{key} = "
-                    f"{ran!r}, this campaign: {value!r}); use another --out")
+    """Refuse to resume over a finished run folder that ran another case (`rundir.case_differences`:
+    a parameter the run predates counts as the value that keeps its old behaviour)."""
+    differences = case_differences(spec.folder, spec.case)
+    if differences:
+        raise YadearchError(f"run folder {spec.folder} holds a different case ({differences[0]}); "
+                            "use another --out")
 
 
 BATCH_KEYS = ("description", "preset", "out")  # yade-batch table columns that are not case parameters

@@ -84,6 +84,11 @@ class NumericsConfig:
 
     settlement_rate_mm_per_s: float = field(default=80.0, metadata=_num(0, low_open=True,
                                             doc="support speed during continuous loading (mm/s)"))
+    rate_reference_kn_N_per_mm3: float = field(default=10.0, metadata={**_num(
+        0, doc="joints stiffer than this (N/mm^3) load more slowly: the support speed is "
+        "settlement_rate x sqrt(this / kn), so that a step moves the support the same fraction of a "
+        "joint's elastic deflection as at this kn (at 80 mm/s kn 31.6 formed another mechanism, at "
+        "40 mm/s the paper's); 0 = no scaling"), "predates": 0.0})
     ramp_mm: float = field(default=5.0, metadata=_num(0, doc="support displacement over which the "
                                                            "speed ramps up from zero (mm)"))
     damping: float = field(default=0.2, metadata=_num(0, 1, high_open=True,
@@ -152,6 +157,13 @@ class ArchCase:
     @property
     def ks_N_per_mm3(self) -> float:
         return self.interface.kn_N_per_mm3 * self.interface.ks_over_kn
+
+    @property
+    def settlement_speed_mm_per_s(self) -> float:
+        """Support speed of the continuous loading and of the du search's moves (mm/s)."""
+        rate = self.numerics.settlement_rate_mm_per_s
+        reference, kn = self.numerics.rate_reference_kn_N_per_mm3, self.interface.kn_N_per_mm3
+        return rate * math.sqrt(reference / kn) if 0 < reference < kn else rate
 
     def validate(self) -> "ArchCase":
         """Check every number against its accepted range; raise CaseError naming the first bad one."""
@@ -243,6 +255,23 @@ def case_from_dict(data: dict[str, Any]) -> ArchCase:
                     values[f.name] = int(values[f.name])
         kwargs[section_name] = cls(**values)
     return ArchCase(**kwargs).validate()
+
+
+def as_ran(data: dict[str, Any]) -> dict[str, Any]:
+    """What a stored case.toml (`data`) ran with, comparable across versions: a parameter the run
+    predates takes the value that reproduces the behaviour it had ("predates" in its metadata, else
+    its default), and the support speed replaces the parameters it derives from, so that a run
+    whose speed they do not change stays comparable."""
+    filled: dict[str, Any] = {"name": data.get("name", "custom")}
+    for section_name, cls in SECTIONS.items():
+        stored = data.get(section_name, {})
+        filled[section_name] = {
+            f.name: stored.get(f.name, f.metadata.get("predates", getattr(cls(), f.name)))
+            for f in fields(cls)}
+    numerics = filled["numerics"]
+    numerics["settlement_speed_mm_per_s"] = case_from_dict(filled).settlement_speed_mm_per_s
+    del numerics["settlement_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"]
+    return filled
 
 
 def load_case(path: str | Path) -> ArchCase:

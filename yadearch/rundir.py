@@ -10,7 +10,7 @@ from typing import Any
 
 import pandas as pd
 
-from .case import ArchCase, load_case
+from .case import ArchCase, as_ran
 
 CASE_FILE = "case.toml"
 SERIES_FILE = "series.csv"
@@ -56,14 +56,24 @@ def is_complete(path: Path) -> bool:
     return (Path(path) / SUMMARY_FILE).is_file()
 
 
+def case_differences(path: Path, case: ArchCase) -> list[str]:
+    """How the finished or started run in `path` differs from `case` ("section.key: ran X, wanted
+    Y"), comparing what each runs with (`as_ran`; the name aside)."""
+    import tomllib
+
+    ran = as_ran(tomllib.loads((Path(path) / CASE_FILE).read_text()))
+    wanted = as_ran(case.to_dict())
+    def show(value: Any) -> str:
+        return f"{value:.6g}" if isinstance(value, float) else repr(value)
+
+    return [f"{section}.{key}: ran {show(value)}, wanted {show(wanted[section][key])}"
+            for section, values in ran.items() if section != "name"
+            for key, value in values.items() if value != wanted[section][key]]
+
+
 def holds_case(path: Path, case: ArchCase) -> bool:
-    """True if the folder holds a finished run of exactly `case` (its name aside; parameters the
-    run predates count as their defaults), which can be reused instead of run again."""
-    if not is_complete(path):
-        return False
-    ran = load_case(Path(path) / CASE_FILE)
-    ran.name = case.name
-    return ran == case
+    """True if the folder holds a finished run of `case`, which can be reused instead of run again."""
+    return is_complete(path) and not case_differences(path, case)
 
 
 def read_run(path: str | Path) -> RunFolder:

@@ -139,7 +139,7 @@ class Runner:
         self.scene = build_scene(case)
         angle = units.radians(case.loading.settlement_direction_deg)
         direction = np.array([math.cos(angle), math.sin(angle), 0.0])
-        self.driver = SupportDriver(self.scene, direction, units.mm(self.num.settlement_rate_mm_per_s),
+        self.driver = SupportDriver(self.scene, direction, units.mm(case.settlement_speed_mm_per_s),
                                     units.mm(self.num.ramp_mm))
         self._install_driver()
         self.gate = SteppingGate()

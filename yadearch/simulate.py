@@ -35,13 +35,14 @@ def simulate(case: ArchCase, out: Path) -> dict:
     import yade.config
 
     log(f"[{case.name}] kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
-        f"rate={case.numerics.settlement_rate_mm_per_s} mm/s, damping={case.numerics.damping}")
+        f"support speed={case.settlement_speed_mm_per_s:.4g} mm/s, damping={case.numerics.damping}")
     runner = Runner(case, log=log)
     log(f"[{case.name}] dt={runner.scene.dt:.3e} s, {len(runner.scene.body_ids)} bodies")
     started = time.strftime("%Y-%m-%dT%H:%M:%S")
     summary: dict = {"name": case.name, "started": started,
                      "kn_N_per_mm3": case.interface.kn_N_per_mm3, "ks_N_per_mm3": case.ks_N_per_mm3,
                      "kn_effective_N_per_mm3": runner.scene.stiffness.kn / units.N_PER_MM3,
+                     "settlement_speed_mm_per_s": case.settlement_speed_mm_per_s,
                      "collapse_criterion": runner.criterion_text()}
     summary.update(runner.run())
     summary.update(provenance(str(yade.config.version)))
