@@ -2,7 +2,7 @@
 
 YADE 2023.02a does not reproduce a polyhedra scene across `O.run` restarts: a restart changes the
 trajectory in its last bits, differently in each process (9-voussoir arch, 700 steps: one `O.run`
-gives one state in every process, 14 runs of 50 steps give a different state in 2 of 3 processes),
+gives one state in every process, 14 runs of 50 steps gave two different states in two processes),
 and near collapse those bits decide a hold's verdict. So the simulation thread is started once; a
 gate engine, first in the engine list, parks it between batches, and the runner reads and changes
 the scene while it is parked, as it would between two steps.
