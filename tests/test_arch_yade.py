@@ -112,3 +112,18 @@ def test_support_follows_the_trapezoidal_profile_to_its_target(settled):
     expected_steps = (2 * (2 * ramp / v) + units.mm(2.0) / v) / O.dt
     assert O.iter - start_iter == pytest.approx(expected_steps, rel=0.02, abs=3 + 50)
     assert tuple(O.bodies[runner.scene.right_support].state.vel) == (0.0, 0.0, 0.0)
+
+
+def test_an_engine_error_fails_the_run_in_one_line_instead_of_hanging(settled):
+    from yadearch.errors import RunFailedError
+
+    runner, _ = settled
+    shear = runner.scene.shear
+    original = shear.step
+    shear.step = lambda: 1 / 0  # a Python engine of the scene raises inside YADE's loop
+    try:
+        with pytest.raises(RunFailedError, match="an engine probably raised"):
+            runner._run_steps(100)
+    finally:
+        shear.step = original
+        runner.close()

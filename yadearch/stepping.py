@@ -22,6 +22,7 @@ GATE_LABEL = "yadearch_stepping_gate"
 GATE_NAME = "_yadearch_gate"  # where the gate engine's command finds the gate
 STALL_S = 120.0  # wall seconds without a single step before a run is declared stalled
 POLL_S = 0.5  # how often a waiting runner checks that the simulation thread is alive
+CLOSE_S = 10.0  # wall seconds a closing gate waits for the thread to end its last step
 
 _active: list["SteppingGate"] = []  # the gate whose simulation thread is running, if any
 
@@ -101,7 +102,8 @@ class SteppingGate:
         self._resume.set()
         # the thread's last step runs Python engines: wait for it to end, or a caller holding the
         # GIL (O.reset) would wait for the thread forever
-        while O.running or (parked_at is not None and O.iter == parked_at):
+        deadline = time.time() + CLOSE_S  # a thread lost in an engine error never ends its step
+        while (O.running or (parked_at is not None and O.iter == parked_at)) and time.time() < deadline:
             time.sleep(0.001)
         self.started = False
         if self in _active:
