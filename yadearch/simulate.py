@@ -36,6 +36,7 @@ def simulate(case: ArchCase, out: Path) -> dict:
 
     log(f"[{case.name}] kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
         f"support speed={case.settlement_speed_mm_per_s:.4g} mm/s, damping={case.numerics.damping}")
+    origin = provenance(str(yade.config.version))  # now: the code that runs was imported at start
     runner = Runner(case, log=log)
     log(f"[{case.name}] dt={runner.scene.dt:.3e} s, {len(runner.scene.body_ids)} bodies")
     started = time.strftime("%Y-%m-%dT%H:%M:%S")
@@ -45,7 +46,7 @@ def simulate(case: ArchCase, out: Path) -> dict:
                      "settlement_speed_mm_per_s": case.settlement_speed_mm_per_s,
                      "collapse_criterion": runner.criterion_text()}
     summary.update(runner.run())
-    summary.update(provenance(str(yade.config.version)))
+    summary.update(origin)
     write_run(out, case.to_toml(), runner.records.series, runner.records.joints,
               runner.records.snapshots, summary)
     du = summary["du_mm"]
