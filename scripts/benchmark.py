@@ -81,6 +81,7 @@ def loading_measurement(settle_mm: float, set2_steps: int) -> dict:
 
     from yadearch.case import preset
     from yadearch.runner import DRIVER_LABEL, Runner
+    from yadearch.scene import CALLBACK_NAME
     from yadearch.yade_env import import_yade
 
     import_yade()
@@ -102,7 +103,7 @@ def loading_measurement(settle_mm: float, set2_steps: int) -> dict:
     O.engines = [e for e in O.engines if getattr(e, "label", "") != DRIVER_LABEL]
     dx, dy = runner.driver.direction
     O.bodies[runner.scene.right_support].state.vel = (runner.driver.speed * dx, runner.driver.speed * dy, 0.0)
-    shear_engine = next(e for e in O.engines if type(e).__name__ == "PyRunner")
+    shear_engine = next(e for e in O.engines if getattr(e, "command", "") == f"{CALLBACK_NAME}.step()")
     O.timingEnabled, shear_engine.execTime = True, 0
     begin = time.time()
     O.run(steps, True)
