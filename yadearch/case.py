@@ -264,9 +264,9 @@ def as_ran(data: dict[str, Any]) -> dict[str, Any]:
     whose speed they do not change stays comparable."""
     filled: dict[str, Any] = {"name": data.get("name", "custom")}
     for section_name, cls in SECTIONS.items():
-        stored = data.get(section_name, {})
+        stored, defaults = data.get(section_name, {}), cls()
         filled[section_name] = {
-            f.name: stored.get(f.name, f.metadata.get("predates", getattr(cls(), f.name)))
+            f.name: stored.get(f.name, f.metadata.get("predates", getattr(defaults, f.name)))
             for f in fields(cls)}
     numerics = filled["numerics"]
     numerics["settlement_speed_mm_per_s"] = case_from_dict(filled).settlement_speed_mm_per_s

@@ -95,9 +95,12 @@ def reproduce(out: str, jobs: int, rerun: bool) -> None:
     from concurrent.futures import ThreadPoolExecutor
 
     folders = [Path(out) / name for name in ("set1", "set2")]
-    todo = [f for f in folders if rerun or not holds_case(f, preset(f.name))]
-    for folder in sorted(set(folders) - set(todo)):
-        click.echo(f"{folder.name}: reusing the finished run in {folder} (--rerun to run it again)")
+    todo = []
+    for folder in folders:
+        if rerun or not holds_case(folder, preset(folder.name)):
+            todo.append(folder)
+        else:
+            click.echo(f"{folder.name}: reusing the finished run in {folder} (--rerun to run it again)")
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         list(pool.map(lambda folder: run_case_process(preset(folder.name), folder), todo))
     for folder in folders:

@@ -24,7 +24,7 @@ STALL_S = 120.0  # wall seconds without a single step before a run is declared s
 POLL_S = 0.5  # how often a waiting runner checks that the simulation thread is alive
 CLOSE_S = 10.0  # wall seconds a closing gate waits for the thread to end its last step
 
-_active: list["SteppingGate"] = []  # the gate whose simulation thread is running, if any
+_active: list["SteppingGate"] = []  # the gate whose simulation thread is running (started), if any
 
 
 class SteppingGate:
@@ -35,7 +35,6 @@ class SteppingGate:
         self._resume = threading.Event()
         self._closing = False
         self._engine = None
-        self.started = False
 
     def install(self) -> None:
         """Put the gate engine first in `O.engines` (before the forces are reset: a parked scene is
@@ -65,11 +64,10 @@ class SteppingGate:
         """Run exactly `n` more steps and return with the thread parked."""
         from yade import O
 
-        if not self.started:
+        if self not in _active:  # first batch: start the thread
             close_active()
             self._parked.clear()
             O.run()
-            self.started = True
             _active.append(self)
             self._wait_parked(O.iter)
         self._engine.iterPeriod = n
@@ -95,7 +93,7 @@ class SteppingGate:
         """Let the thread finish its step and stop; the scene can then be reset or run directly."""
         from yade import O
 
-        if not self.started:
+        if self not in _active:
             return
         parked_at = O.iter if self._parked.is_set() else None
         self._closing = True
@@ -105,9 +103,7 @@ class SteppingGate:
         deadline = time.time() + CLOSE_S  # a thread lost in an engine error never ends its step
         while (O.running or (parked_at is not None and O.iter == parked_at)) and time.time() < deadline:
             time.sleep(0.001)
-        self.started = False
-        if self in _active:
-            _active.remove(self)
+        _active.remove(self)
 
 
 def close_active() -> None:
