@@ -29,10 +29,21 @@ class JointState:
     force_position: np.ndarray
 
 
-def _rotate(vectors: np.ndarray, angles: np.ndarray) -> np.ndarray:
+def rotate(vectors: np.ndarray, angles: np.ndarray) -> np.ndarray:
+    """Rotate 2-D `vectors` (..., 2) about z by `angles` (rad), element by element."""
     c, s = np.cos(angles), np.sin(angles)
     x, y = vectors[..., 0], vectors[..., 1]
     return np.stack([c * x - s * y, s * x + c * y], axis=-1)
+
+
+def z_rotation(ori: np.ndarray, ori0: np.ndarray) -> np.ndarray:
+    """Rotation angle about z of ori * conj(ori0) for arrays of (w, x, y, z) quaternions (rad)."""
+    w0, x0, y0, z0 = ori0.T
+    w1, x1, y1, z1 = ori.T
+    # q = q1 * conj(q0); only w and z are needed for a rotation about z
+    w = w1 * w0 + x1 * x0 + y1 * y0 + z1 * z0
+    z = -w1 * z0 - x1 * y0 + y1 * x0 + z1 * w0
+    return 2.0 * np.arctan2(z, w)
 
 
 def joint_states(geometry: ArchGeometry, pos0: np.ndarray, pos: np.ndarray, rot: np.ndarray,
@@ -46,11 +57,11 @@ def joint_states(geometry: ArchGeometry, pos0: np.ndarray, pos: np.ndarray, rot:
     normals = np.array([j.normal for j in geometry.joints])
 
     def placed(points: np.ndarray, blocks: np.ndarray) -> np.ndarray:
-        return pos[blocks, :2] + _rotate(points - pos0[blocks, :2], rot[blocks])
+        return pos[blocks, :2] + rotate(points - pos0[blocks, :2], rot[blocks])
 
     a_in, a_ex = placed(intrados, left), placed(extrados, left)
     b_in, b_ex = placed(intrados, right), placed(extrados, right)
-    normal_now = _rotate(normals, rot[left])
+    normal_now = rotate(normals, rot[left])
     across = a_ex - a_in
     position = np.einsum("ij,ij->i", contact_points - a_in, across) / np.einsum("ij,ij->i", across, across)
     return JointState(
@@ -67,5 +78,5 @@ def block_outlines(geometry: ArchGeometry, pos0: np.ndarray, pos: np.ndarray,
     outlines = []
     for b, vertices in enumerate(geometry.blocks):
         front = vertices[: len(vertices) // 2, :2]
-        outlines.append(pos[b, :2] + _rotate(front - pos0[b, :2], np.full(len(front), rot[b])))
+        outlines.append(pos[b, :2] + rotate(front - pos0[b, :2], np.full(len(front), rot[b])))
     return outlines

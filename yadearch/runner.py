@@ -172,8 +172,8 @@ class Runner:
         self.driver.bind()
 
     def snapshot(self) -> dict:
-        """Snapshot, in memory, of everything that evolves: body states, the contacts' geometry
-        (the intersection's starting hints), per-contact shear forces and the support driver.
+        """Snapshot, in memory, of everything that evolves: body states, the contact model's state
+        (per-contact shear forces, CGAL's intersection hints) and the support driver.
 
         Not `O.saveTmp`: a scene brought back by `O.loadTmp` steps 28 % slower in YADE 2023.02a's
         polyhedra contact than the live scene (70 vs 97 steps/s, same state), and the search and
@@ -181,25 +181,17 @@ class Runner:
         from yade import O
 
         bodies = [(s.pos, s.ori, s.vel, s.angVel) for s in (b.state for b in O.bodies)]
-        contacts = {(i.id1, i.id2): (i.geom.contactPoint, i.geom.normal) for i in O.interactions
-                    if i.geom is not None}
-        return {"bodies": bodies, "contacts": contacts, "shear": dict(self.scene.shear.shear),
+        return {"bodies": bodies, "contacts": self.scene.contacts.snapshot(),
                 "target": self.driver.target, "speed": self.driver.current_speed}
 
     def restore(self, snapshot: dict) -> None:
-        """Put the live scene back in a `snapshot` (contacts absent now are recreated by the
-        collider at the next step)."""
+        """Put the live scene back in a `snapshot`."""
         from yade import O
 
         for body, (pos, ori, vel, ang_vel) in zip(O.bodies, snapshot["bodies"]):
             state = body.state
             state.pos, state.ori, state.vel, state.angVel = pos, ori, vel, ang_vel
-        contacts = snapshot["contacts"]
-        for interaction in O.interactions:
-            saved = contacts.get((interaction.id1, interaction.id2))
-            if saved is not None and interaction.geom is not None:
-                interaction.geom.contactPoint, interaction.geom.normal = saved
-        self.scene.shear.shear = dict(snapshot["shear"])
+        self.scene.contacts.restore(snapshot["contacts"])
         self.driver.target = snapshot["target"]
         self.driver.current_speed = snapshot["speed"]
 
@@ -213,37 +205,15 @@ class Runner:
         return np.array([O.bodies[i].state.vel.norm() for i in self.scene.voussoir_ids])
 
     def _unbalanced(self) -> float:
-        """YADE's unbalanced force: mean resultant force on the blocks / mean contact force."""
-        from yade import utils
-
-        return float(utils.unbalancedForce())
-
-    def _contacts(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Contact point (n_joints, 2), normal and shear force (n_joints,) of every joint."""
-        from yade import O
-
-        geo = self.scene.geometry
-        ids = self.scene.body_ids
-        points = np.full((len(geo.joints), 2), np.nan)
-        normal = np.zeros(len(geo.joints))
-        shear = np.zeros(len(geo.joints))
-        for k, joint in enumerate(geo.joints):
-            a, b = ids[joint.left], ids[joint.right]
-            inter = O.interactions[a, b] if O.interactions.has(a, b) else None
-            if inter is None or not inter.isReal or inter.geom.penetrationVolume <= 0:
-                continue
-            cp = inter.geom.contactPoint
-            points[k] = (cp[0], cp[1])
-            normal[k] = inter.phys.normalForce.norm()
-            shear[k] = self.scene.shear.shear_force(a, b)
-        return points, normal, shear
+        """Unbalanced force: mean resultant force on the blocks / mean contact force."""
+        return self.scene.contacts.unbalanced()
 
     def joint_snapshot(self) -> tuple[dict, list[Hinge]]:
         """Per-interface state now, and its hinges."""
         pos, rot = body_states(self.scene)
         if not np.all(np.isfinite(pos)):
             raise RunFailedError(f"NaN in block positions at step {self._iter()}")
-        points, normal, shear = self._contacts()
+        points, normal, shear = self.scene.contacts.joint_contacts()
         js = joint_states(self.scene.geometry, self.scene.pos0, pos, rot, points)
         rotation = hinge_rotation(js.opening_intrados, js.opening_extrados, self.scene.geometry.thickness)
         hinges = hinges_at(rotation, self.num.hinge_rotation_mrad * 1e-3)

@@ -1,23 +1,25 @@
 """Build the YADE scene of an arch case: polyhedral blocks, materials, engines, time step.
 
-Only this module, `shear`, `stepping` and `runner` import YADE. The volumetric law's own shear is
-switched off (its running shear force is shared by all contacts in YADE 2023.02a); `PerContactShear`
-replaces it.
+Only this module, the contact models (`joint_elements`, `cgal_contacts`, `shear`), `stepping` and
+`runner` import YADE. The dry joints are either zero-thickness joint elements evaluated in numpy
+("joint", the default) or YADE's CGAL polyhedra contacts with a per-contact shear ("cgal").
 """
 
 from __future__ import annotations
 
 import __main__
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
 from . import units
 from .case import ArchCase
+from .cgal_contacts import CgalContacts
 from .geometry import ArchGeometry, segmental_arch
+from .joint_elements import JointElementContacts
+from .joints import z_rotation
 from .mechanics import ContactStiffness, contact_stiffness, critical_timestep
-from .shear import PerContactShear
 from .stepping import close_active
 from .yade_env import import_yade
 
@@ -26,9 +28,20 @@ from .yade_env import import_yade
 _NEGLIGIBLE_POISSON = 1e-12
 # Name under which the scene's Python callbacks are reachable from PyRunner commands.
 CALLBACK_NAME = "_yadearch_scene"
-# Joint j sets bit j % JOINT_MASK_BITS of the collision masks of its two blocks, so the collider only
-# pairs blocks sharing a joint (or JOINT_MASK_BITS - 1 or more joints apart, which never touch).
-JOINT_MASK_BITS = 6
+CONTACT_MODELS = {"joint": JointElementContacts, "cgal": CgalContacts}
+
+
+class ContactModel(Protocol):
+    """What the runner needs from the dry joints of a scene, whichever engines compute them."""
+
+    name: str
+
+    def bind(self, pos0: np.ndarray, ori0: np.ndarray, callback: str) -> list[Any]: ...
+    def step(self) -> None: ...
+    def joint_contacts(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]: ...
+    def snapshot(self) -> dict: ...
+    def restore(self, snapshot: dict) -> None: ...
+    def unbalanced(self) -> float: ...
 
 
 @dataclass
@@ -40,7 +53,7 @@ class ArchScene:
     body_ids: list[int]
     pos0: np.ndarray
     ori0: np.ndarray  # quaternions (w, x, y, z)
-    shear: PerContactShear
+    contacts: ContactModel
     dt: float
 
     @property
@@ -71,21 +84,18 @@ def build_scene(case: ArchCase) -> ArchScene:
     return build_block_scene(
         geometry, stiffness, density=units.density(case.material.density_g_per_cm3),
         gravity=(0.0, -case.loading.gravity_m_per_s2, 0.0), damping=case.numerics.damping, dt=dt,
-        fixed={0, len(geometry.blocks) - 1}, threads=case.numerics.threads)
+        fixed={0, len(geometry.blocks) - 1}, threads=case.numerics.threads,
+        contact_model=case.numerics.contact_model)
 
 
 def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, density: float,
                       gravity: tuple[float, float, float], damping: float, dt: float,
-                      fixed: set[int], threads: int = 1) -> ArchScene:
+                      fixed: set[int], threads: int = 1, contact_model: str = "joint") -> ArchScene:
     """Reset YADE's global scene and fill it with `geometry.blocks` (indices in `fixed` do not move
-    unless driven; the others move in the x-y plane) and the dry-joint contact engines."""
+    unless driven; the others move in the x-y plane) and the engines of `contact_model`."""
     import_yade(threads)
     from yade import O, polyhedra_utils
-    from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Polyhedra_Aabb,
-                              InteractionLoop, Ig2_Polyhedra_Polyhedra_PolyhedraGeom,
-                              Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys,
-                              Law2_PolyhedraGeom_PolyhedraPhys_Volumetric, NewtonIntegrator,
-                              PyRunner, PolyhedraMat)
+    from yade.wrapper import ForceResetter, NewtonIntegrator, PolyhedraMat
 
     close_active()
     O.reset()
@@ -99,40 +109,15 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
         if index not in fixed:
             body.state.blockedDOFs = "zXY"  # planar motion: no z translation, rotation about z only
         body_ids.append(O.bodies.append(body))
-    for body_id, mask in zip(body_ids, joint_masks(geometry)):
-        O.bodies[body_id].mask = mask
 
-    shear = PerContactShear(stiffness, geometry, body_ids)
-    setattr(__main__, CALLBACK_NAME, shear)
-    O.engines = [
-        ForceResetter(),
-        InsertionSortCollider([Bo1_Polyhedra_Aabb()]),
-        InteractionLoop([Ig2_Polyhedra_Polyhedra_PolyhedraGeom()],
-                        [Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys()],
-                        [Law2_PolyhedraGeom_PolyhedraPhys_Volumetric()]),
-        PyRunner(command=f"{CALLBACK_NAME}.step()", iterPeriod=1),
-        NewtonIntegrator(damping=damping, gravity=gravity),
-    ]
-    O.dt = dt
+    contacts = CONTACT_MODELS[contact_model](stiffness, geometry, body_ids)
+    setattr(__main__, CALLBACK_NAME, contacts)
     pos0 = np.array([list(O.bodies[i].state.pos) for i in body_ids])
     ori0 = np.array([_quat_wxyz(O.bodies[i].state.ori) for i in body_ids])
-    shear.bind(pos0, ori0)
-    return ArchScene(geometry, stiffness, body_ids, pos0, ori0, shear, dt)
-
-
-def joint_masks(geometry: ArchGeometry) -> list[int]:
-    """Collision mask of each block: one bit per joint number modulo `JOINT_MASK_BITS`.
-
-    Tilted voussoirs two apart have overlapping bounding boxes, so without masks the collider hands
-    CGAL about 30 pairs that never touch (55-voussoir arch: 86 interactions for 56 joints, 10 % of
-    the step time). A block without joints keeps all bits and may touch anything."""
-    all_bits = (1 << JOINT_MASK_BITS) - 1
-    masks = [0] * len(geometry.blocks)
-    for joint in geometry.joints:
-        bit = 1 << (joint.number % JOINT_MASK_BITS)
-        masks[joint.left] |= bit
-        masks[joint.right] |= bit
-    return [mask or all_bits for mask in masks]
+    O.engines = [ForceResetter(), *contacts.bind(pos0, ori0, CALLBACK_NAME),
+                 NewtonIntegrator(damping=damping, gravity=gravity)]
+    O.dt = dt
+    return ArchScene(geometry, stiffness, body_ids, pos0, ori0, contacts, dt)
 
 
 def _quat_wxyz(q: Any) -> list[float]:
@@ -151,13 +136,3 @@ def body_states(scene: ArchScene) -> tuple[np.ndarray, np.ndarray]:
         pos[k] = list(state.pos)
         ori[k] = _quat_wxyz(state.ori)
     return pos, z_rotation(ori, scene.ori0)
-
-
-def z_rotation(ori: np.ndarray, ori0: np.ndarray) -> np.ndarray:
-    """Rotation angle about z of ori * conj(ori0) for arrays of (w, x, y, z) quaternions (rad)."""
-    w0, x0, y0, z0 = ori0.T
-    w1, x1, y1, z1 = ori.T
-    # q = q1 * conj(q0); only w and z are needed for a rotation about z
-    w = w1 * w0 + x1 * x0 + y1 * y0 + z1 * z0
-    z = -w1 * z0 - x1 * y0 + y1 * x0 + z1 * w0
-    return 2.0 * np.arctan2(z, w)

@@ -1,0 +1,84 @@
+"""The dry joints as zero-thickness joint elements evaluated in numpy (`joint_law`) by one Python
+engine of the YADE scene: no collider and no CGAL, YADE integrates the blocks' motion."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from .geometry import ArchGeometry
+from .joint_law import JointForces, JointLaw, joint_forces, joint_table, unbalanced_force
+from .joints import z_rotation
+from .mechanics import ContactStiffness
+
+
+class JointElementContacts:
+    """Contact model "joint": reads the block states each step, evaluates every joint at once and
+    adds the joint forces and torques to YADE's force container."""
+
+    name = "joint"
+
+    def __init__(self, stiffness: ContactStiffness, geometry: ArchGeometry, body_ids: list[int]):
+        self.law = JointLaw(stiffness.kn, stiffness.ks, stiffness.tan_friction, geometry.depth)
+        self.geometry = geometry
+        self.body_ids = body_ids
+        self.shear = np.zeros(len(geometry.joints))
+        self.last: JointForces | None = None
+
+    def bind(self, pos0: np.ndarray, ori0: np.ndarray, callback: str) -> list[Any]:
+        """Keep the block states and weights at hand and return the one engine this model needs."""
+        from yade import O
+        from yade.minieigenHP import Vector3
+        from yade.wrapper import PyRunner
+
+        self.table = joint_table(self.geometry, pos0)
+        self.ori0 = ori0
+        self._states = [O.bodies[i].state for i in self.body_ids]
+        self._free = np.array([O.bodies[i].dynamic for i in self.body_ids])
+        self._masses = np.array([s.mass for s in self._states])
+        self._vector = Vector3
+        return [PyRunner(command=f"{callback}.step()", iterPeriod=1)]
+
+    def _evaluate(self) -> JointForces:
+        from yade import O
+
+        rows = np.array([(p[0], p[1], q[3], q[0], q[1], q[2], v[0], v[1], w[2]) for p, q, v, w in
+                         ((s.pos, s.ori, s.vel, s.angVel) for s in self._states)])
+        return joint_forces(self.table, self.law, rows[:, 0:2], z_rotation(rows[:, 2:6], self.ori0),
+                            rows[:, 6:8], rows[:, 8], self.shear, O.dt)
+
+    def step(self) -> None:
+        """Evaluate the joints for the current states and add their forces (called every step)."""
+        from yade import O
+
+        forces = self._evaluate()
+        self.shear = forces.shear_force
+        self.last = forces
+        vector, add_force, add_torque = self._vector, O.forces.addF, O.forces.addT
+        for body_id, (fx, fy), tz in zip(self.body_ids, forces.block_force.tolist(),
+                                         forces.block_torque.tolist()):
+            add_force(body_id, vector(fx, fy, 0.0))
+            add_torque(body_id, vector(0.0, 0.0, tz))
+
+    def joint_contacts(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Contact point (n_joints, 2; NaN if open), normal and shear force (n_joints,) of every joint."""
+        forces = self.last if self.last is not None else self._evaluate()
+        return forces.point, forces.normal_force, forces.shear_force
+
+    def snapshot(self) -> dict:
+        return {"shear": self.shear.copy(), "last": self.last}
+
+    def restore(self, snapshot: dict) -> None:
+        self.shear = snapshot["shear"].copy()
+        self.last = snapshot["last"]
+
+    def unbalanced(self) -> float:
+        """YADE's unbalanced-force ratio computed from the joint forces of the last step."""
+        from yade import O
+        from yade.wrapper import NewtonIntegrator
+
+        forces = self.last if self.last is not None else self._evaluate()
+        newton = next(e for e in O.engines if isinstance(e, NewtonIntegrator))
+        gravity = np.array(newton.gravity)[:2]
+        return unbalanced_force(forces, self._free, self._masses[self._free, None] * gravity)
