@@ -1,4 +1,5 @@
-"""A coarse arch on real YADE: equilibrium under self-weight, then three hinges under settlement."""
+"""A coarse arch on real YADE, with each contact model: equilibrium under self-weight, then three
+hinges under settlement."""
 
 from __future__ import annotations
 
@@ -19,14 +20,16 @@ COARSE = {"n_voussoirs": 15, "kn_N_per_mm3": 0.25, "equilibrium_tolerance": 1e-4
 
 # The tests share one arch and run in file order, each settling the support further: the holds come
 # first, while the arch is far from collapse (a hold near it may time out), the 12 mm move last.
-@pytest.fixture(scope="module")
-def settled():
+@pytest.fixture(scope="module", params=["joint", "cgal"])
+def settled(request):
     """A 15-voussoir version of the paper's arch after the self-weight stage."""
     from yadearch.runner import Runner
 
-    runner = Runner(preset("set1").with_overrides(COARSE), log=lambda line: None)
+    case = preset("set1").with_overrides({**COARSE, "contact_model": request.param})
+    runner = Runner(case, log=lambda line: None)
     info = runner.selfweight()
-    return runner, info
+    yield runner, info
+    runner.close()
 
 
 def test_self_weight_is_carried_by_the_supports(settled):
@@ -52,11 +55,14 @@ def test_settlement_opens_three_hinges_where_the_mechanism_puts_them(settled):
     assert (c.interface, c.side) == (n + 1, "E")  # C: extrados at the settling support
 
 
-def test_collider_pairs_only_blocks_that_share_a_joint(settled):
+def test_collider_pairs_only_blocks_that_share_a_joint():
     from yade import O
 
-    runner, _ = settled
-    ids = runner.scene.body_ids
+    from yadearch.scene import build_scene
+
+    scene = build_scene(preset("set1").with_overrides({**COARSE, "contact_model": "cgal"}))
+    O.run(200, True)  # the arch settles onto its joints
+    ids = scene.body_ids
     pairs = {(min(i.id1, i.id2), max(i.id1, i.id2)) for i in O.interactions}
     assert pairs == {(ids[k], ids[k + 1]) for k in range(len(ids) - 1)}  # 16 joints, no other pair
 
@@ -69,13 +75,13 @@ def test_a_snapshot_puts_the_arch_back_where_it_was(settled):
     runner.move_to(runner.delta() + units.mm(2.0))
     assert runner.hold() == "stable"
     snapshot, delta = runner.snapshot(), runner.delta()
-    positions, shear = runner._voussoir_positions(), dict(runner.scene.shear.shear)
+    positions, shear = runner._voussoir_positions(), runner.scene.contacts.joint_contacts()[2]
     runner.move_to(delta + units.mm(3.0))
     assert abs(runner._voussoir_positions() - positions).max() > units.mm(0.5)  # it did move
     runner.restore(snapshot)
     assert runner.delta() == pytest.approx(delta, abs=1e-12)
     assert abs(runner._voussoir_positions() - positions).max() < 1e-12
-    assert runner.scene.shear.shear == shear
+    assert (runner.scene.contacts.joint_contacts()[2] == shear).all()
     assert runner.hold() == "stable"
     assert abs(runner._voussoir_positions() - positions).max() < units.mm(0.05)
 
@@ -118,12 +124,12 @@ def test_an_engine_error_fails_the_run_in_one_line_instead_of_hanging(settled):
     from yadearch.errors import RunFailedError
 
     runner, _ = settled
-    shear = runner.scene.shear
-    original = shear.step
-    shear.step = lambda: 1 / 0  # a Python engine of the scene raises inside YADE's loop
+    contacts = runner.scene.contacts
+    original = contacts.step
+    contacts.step = lambda: 1 / 0  # a Python engine of the scene raises inside YADE's loop
     try:
         with pytest.raises(RunFailedError, match="an engine probably raised"):
             runner._run_steps(100)
     finally:
-        shear.step = original
+        contacts.step = original
         runner.close()

@@ -1,4 +1,5 @@
-"""Real YADE on a few blocks: the joint's normal stiffness, per-contact shear, Coulomb friction."""
+"""Real YADE on a few blocks, for both contact models (joint elements and CGAL polyhedra): the
+joint's normal stiffness, per-contact shear, Coulomb friction."""
 
 from __future__ import annotations
 
@@ -21,33 +22,44 @@ TAN_PHI = math.tan(math.radians(41.2))
 RHO = 1640.0
 
 
-def _scene(geometry, fixed, gravity=(0.0, 0.0, 0.0), damping=0.0, dt=1e-6):
+@pytest.fixture(params=["joint", "cgal"])
+def model(request) -> str:
+    return request.param
+
+
+def _scene(model, geometry, fixed, gravity=(0.0, 0.0, 0.0), damping=0.0, dt=1e-6, overlap=0.0):
+    """A scene of `geometry` whose top blocks (odd indices) are pushed `overlap` into their bases."""
+    from yade import O
+
     from yadearch.scene import build_block_scene
 
-    return build_block_scene(geometry, ContactStiffness(KN, KS, TAN_PHI), density=RHO,
-                             gravity=gravity, damping=damping, dt=dt, fixed=fixed)
+    scene = build_block_scene(geometry, ContactStiffness(KN, KS, TAN_PHI), density=RHO,
+                              gravity=gravity, damping=damping, dt=dt, fixed=fixed, contact_model=model)
+    for top in scene.body_ids[1::2]:
+        O.bodies[top].state.pos = O.bodies[top].state.pos - (0.0, overlap, 0.0)
+    return scene
 
 
-def test_pressed_joint_carries_kn_times_area_times_approach():
+def test_pressed_joint_carries_kn_times_area_times_approach(model):
     from yade import O
 
     width, depth, overlap = 0.05, 0.1, 2e-6
-    scene = _scene(stacked_pairs([0.0], width, 0.02, depth, overlap), fixed={0, 1})
+    scene = _scene(model, stacked_pairs([0.0], width, 0.02, depth), fixed={0, 1}, overlap=overlap)
     O.run(1, True)
-    inter = O.interactions[scene.body_ids[0], scene.body_ids[1]]
+    _, normal, _ = scene.contacts.joint_contacts()
     expected = KN * width * depth * overlap  # 52 N
-    assert inter.phys.normalForce.norm() == pytest.approx(expected, rel=0.02)
-    assert np.array(inter.phys.normalForce)[1] == pytest.approx(expected, rel=0.02)  # along the joint normal
+    assert normal[0] == pytest.approx(expected, rel=0.02)
+    assert O.forces.f(scene.body_ids[1])[1] == pytest.approx(expected, rel=0.02)  # along the joint normal
 
 
-def test_tilted_joint_force_follows_the_compressed_wedge():
+def test_tilted_joint_force_follows_the_compressed_wedge(model):
     """A wedge-shaped overlap: force kn*V at the wedge's centroid, a third of its length from the
     deep edge (how soft joints move the thrust line)."""
     from yade import O
     from yade.minieigenHP import Quaternion, Vector3
 
     width, depth = 0.05, 0.1
-    scene = _scene(stacked_pairs([0.0], width, 0.02, depth), fixed={0, 1})
+    scene = _scene(model, stacked_pairs([0.0], width, 0.02, depth), fixed={0, 1})
     top = O.bodies[scene.body_ids[1]]
     angle, deep = 2e-4, 4e-6  # rotate about the point 4 um below the joint at the left edge
     pivot = Vector3(-width / 2, 0.0, 0.0)
@@ -55,54 +67,54 @@ def test_tilted_joint_force_follows_the_compressed_wedge():
     top.state.pos = pivot + rotation * (top.state.pos - pivot) - Vector3(0, deep, 0)
     top.state.ori = rotation * top.state.ori
     O.run(1, True)
-    inter = O.interactions[scene.body_ids[0], scene.body_ids[1]]
+    points, normal, _ = scene.contacts.joint_contacts()
     length = deep / math.tan(angle)  # 20 mm of the 50 mm joint are compressed
     volume = 0.5 * deep * length * depth
-    assert inter.geom.penetrationVolume == pytest.approx(volume, rel=0.02)
-    assert inter.phys.normalForce.norm() == pytest.approx(KN * volume, rel=0.02)
-    assert inter.geom.contactPoint[0] == pytest.approx(-width / 2 + length / 3, abs=0.02 * length)
+    assert normal[0] == pytest.approx(KN * volume, rel=0.02)
+    assert points[0, 0] == pytest.approx(-width / 2 + length / 3, abs=0.02 * length)
 
 
-def test_two_contacts_sheared_differently_keep_their_own_shear_forces():
+def test_two_contacts_sheared_differently_keep_their_own_shear_forces(model):
     """YADE's volumetric law shares one running shear force among contacts; ours must not."""
     from yade import O
 
     width, depth, overlap = 0.05, 0.1, 4e-6
-    scene = _scene(stacked_pairs([0.0, 1.0], width, 0.02, depth, overlap), fixed={0, 1, 2, 3})
+    scene = _scene(model, stacked_pairs([0.0, 1.0], width, 0.02, depth), fixed={0, 1, 2, 3},
+                   overlap=overlap)
     speeds = (1e-3, -3e-3)  # m/s along x, opposite directions and different magnitudes
     for top, v in zip((1, 3), speeds):
         O.bodies[scene.body_ids[top]].state.vel = (v, 0.0, 0.0)
     steps = 100
     O.run(steps, True)
     ks_contact = KS * depth * width  # uniform pressure: the whole joint is compressed
+    _, _, shear = scene.contacts.joint_contacts()
     for pair, v in enumerate(speeds):
-        a, b = scene.body_ids[2 * pair], scene.body_ids[2 * pair + 1]
         slip = v * steps * O.dt
-        force = O.forces.f(b)[0]  # shear on the moving top block, opposing its motion
+        force = O.forces.f(scene.body_ids[2 * pair + 1])[0]  # on the moving top block, opposing its motion
         assert force == pytest.approx(-ks_contact * slip, rel=0.02)
-        assert abs(scene.shear.shear_force(a, b)) == pytest.approx(ks_contact * abs(slip), rel=0.02)
+        assert abs(shear[pair]) == pytest.approx(ks_contact * abs(slip), rel=0.02)
 
 
-def test_shear_force_is_capped_by_coulomb_friction():
+def test_shear_force_is_capped_by_coulomb_friction(model):
     from yade import O
 
     width, depth, overlap = 0.05, 0.1, 1e-6
-    scene = _scene(stacked_pairs([0.0], width, 0.02, depth, overlap), fixed={0, 1})
+    scene = _scene(model, stacked_pairs([0.0], width, 0.02, depth), fixed={0, 1}, overlap=overlap)
     O.bodies[scene.body_ids[1]].state.vel = (0.05, 0.0, 0.0)
     O.run(200, True)  # 10 um of slip: far beyond the elastic limit
-    normal = O.interactions[scene.body_ids[0], scene.body_ids[1]].phys.normalForce.norm()
-    shear = abs(scene.shear.shear_force(scene.body_ids[0], scene.body_ids[1]))
-    assert shear == pytest.approx(TAN_PHI * normal, rel=1e-6)
+    _, normal, shear = scene.contacts.joint_contacts()
+    assert normal[0] == pytest.approx(KN * width * depth * overlap, rel=0.02)
+    assert abs(shear[0]) == pytest.approx(TAN_PHI * normal[0], rel=1e-6)
 
 
 @pytest.mark.parametrize("tilt_deg, slides", [(36.2, False), (46.2, True)])
-def test_block_on_tilted_plane_stays_below_the_friction_angle_and_slides_above(tilt_deg, slides):
+def test_block_on_tilted_plane_stays_below_the_friction_angle_and_slides_above(model, tilt_deg, slides):
     """Tilting gravity tilts the plane. Sliding: a = g (sin a - cos a tan phi), measured undamped."""
     from yade import O
 
     g = 9.81
     tilt = math.radians(tilt_deg)
-    scene = _scene(stacked_pairs([0.0], 0.1, 0.02, 0.05), fixed={0}, gravity=(0.0, -g, 0.0),
+    scene = _scene(model, stacked_pairs([0.0], 0.1, 0.02, 0.05), fixed={0}, gravity=(0.0, -g, 0.0),
                    damping=0.5, dt=2e-6)
     newton = O.engines[-1]
     for k in range(1, 41):  # settle, then tilt gradually so that no impact makes the block jump

@@ -7,7 +7,7 @@ import pytest
 
 from yadearch.geometry import segmental_arch
 from yadearch.joints import joint_states
-from yadearch.scene import z_rotation
+from yadearch.joints import z_rotation
 
 
 def _centroids(arch):

@@ -41,7 +41,7 @@ class CgalContacts:
                 InteractionLoop([Ig2_Polyhedra_Polyhedra_PolyhedraGeom()],
                                 [Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys()],
                                 [Law2_PolyhedraGeom_PolyhedraPhys_Volumetric()]),
-                PyRunner(command=f"{callback}.step()", iterPeriod=1)]
+                PyRunner(command=f"{callback}.step()", iterPeriod=1, initRun=True)]
 
     def step(self) -> None:
         self.shear.step()

@@ -1,8 +1,9 @@
 """Time spent in each YADE engine over a whole run (YADE layer).
 
 YADE's `O.timingEnabled` makes every engine accumulate its own `execTime`. The profile splits a
-run's wall time into YADE's C++ engines, the Python callbacks that run inside the engine loop, and
-the rest (the driver's own checks, records and state snapshots).
+run's wall time into the scene's engines (the physics: YADE's C++ engines and the contact model's
+Python engine), the driver's callbacks inside the engine loop (the support driver), and the rest
+(the driver's own checks, records and state snapshots).
 """
 
 from __future__ import annotations
@@ -13,12 +14,15 @@ PYTHON_ENGINES = ("PyRunner",)
 
 
 class EngineClock:
-    """Accumulated nanoseconds per engine label over the run."""
+    """Accumulated nanoseconds per engine label over the run; Python engines whose command starts
+    with one of `driver_callbacks` count as the driver's, every other engine as the scene's."""
 
-    def __init__(self) -> None:
+    def __init__(self, driver_callbacks: tuple[str, ...]) -> None:
         from yade import O
 
         O.timingEnabled = True
+        self.driver_labels = tuple(f"{name}({callback}" for name in PYTHON_ENGINES
+                                   for callback in driver_callbacks)
         self.totals_ns: dict[str, int] = {}
 
     @staticmethod
@@ -41,13 +45,13 @@ class EngineClock:
             engine.execCount = 0
 
     def profile(self, wall_s: float) -> dict:
-        """Seconds per engine, the C++ and Python shares, and wall time / C++ engine time."""
+        """Seconds per engine, the scene's and the driver's shares, and wall time / scene time."""
         self.harvest()
         seconds = {label: ns * 1e-9 for label, ns in self.totals_ns.items()}
-        python_s = sum(s for label, s in seconds.items() if label.startswith(PYTHON_ENGINES))
-        cpp_s = sum(seconds.values()) - python_s
+        driver_s = sum(s for label, s in seconds.items() if label.startswith(self.driver_labels))
+        scene_s = sum(seconds.values()) - driver_s
         return {
-            "engine_s": seconds, "yade_cpp_engines_s": cpp_s, "python_callbacks_s": python_s,
-            "driver_rest_s": wall_s - cpp_s - python_s,
-            "driver_overhead_ratio": wall_s / cpp_s if cpp_s > 0 else None,
+            "engine_s": seconds, "scene_engines_s": scene_s, "driver_callbacks_s": driver_s,
+            "driver_rest_s": wall_s - scene_s - driver_s,
+            "driver_overhead_ratio": wall_s / scene_s if scene_s > 0 else None,
         }

@@ -38,7 +38,7 @@ class JointElementContacts:
         self._free = np.array([O.bodies[i].dynamic for i in self.body_ids])
         self._masses = np.array([s.mass for s in self._states])
         self._vector = Vector3
-        return [PyRunner(command=f"{callback}.step()", iterPeriod=1)]
+        return [PyRunner(command=f"{callback}.step()", iterPeriod=1, initRun=True)]
 
     def _evaluate(self) -> JointForces:
         from yade import O

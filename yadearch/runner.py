@@ -145,7 +145,7 @@ class Runner:
         self.gate = SteppingGate()
         self.gate.install()
         self.driver.zero_here()
-        self.clock = EngineClock()
+        self.clock = EngineClock(driver_callbacks=(f"{CALLBACK_NAME}_driver",))
         self.stage = "selfweight"
         self.wall0 = time.time()
         self.steps_by_stage: dict[str, int] = {}
