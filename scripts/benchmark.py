@@ -1,5 +1,6 @@
 """Speed benchmark of issue 5: full runs of set 1, set 2 (and the stiffest sweep case), set 2's du
-against a slow reference, the driver's overhead over YADE's engine loop, and the sweep's wall time.
+against a slow reference, the contact models' speeds on the same steps, the driver's overhead over
+YADE's engine loop, and the sweep's wall time.
 
     .venv/bin/python scripts/benchmark.py [--out reports/benchmark.json] [--stiff] [--sweep DIR] [--measure-mm X]
         [--threads-steps N]
@@ -9,9 +10,9 @@ half the default settlement rate, run in this invocation (or a stored run folder
 --reference, e.g. the convergence script's, whose provenance is printed); the speed-up is the
 reference's wall time over the default run's. --measure-mm X times the first X mm of set 2's
 loading with the full runner and with a bare `O.run` of the same scene and steps: their ratio is the
-driver overhead (each run's summary also keeps its per-engine profile). It also gives the runner's
-steps/s here, hence set 2's wall time on this core: stored runs made while other runs shared the
-cores are slower. The sweep's wall time is the sum of the sessions a campaign folder recorded.
+driver overhead (each run's summary also keeps its per-engine profile). It does so for the default
+contact model (joint elements) and for YADE's CGAL polyhedra contacts, the baseline: the ratio of
+their steps/s on the same steps is the contact model's speed-up. The sweep's wall time is the sum of the sessions a campaign folder recorded.
 --threads-steps N times N steps of the set 2 scene with 1 and with 2 OpenMP threads.
 Prints a verdict line per target and writes everything to the JSON file.
 """
@@ -70,13 +71,13 @@ def sweep_status(folder: Path) -> dict:
             "run_wall_s": float(table["wall_s"].sum())}
 
 
-def loading_measurement(settle_mm: float, set2_steps: int) -> dict:
-    """Set 2's first `settle_mm` of loading, timed twice on the same steps from the same self-weight
-    state: the full runner (driver callback, checks, records, state snapshots) and a bare `O.run` of
-    the same scene (its engines, the per-contact shear law included, the support moved by a constant
-    velocity instead of the driver; the shear law's own time from YADE's engine timing). Also the
-    runner's steps/s here (set 2's wall time at that rate) and the load average, which says whether
-    the core was free."""
+def loading_measurement(settle_mm: float, set2_steps: int, contact_model: str) -> dict:
+    """Set 2's first `settle_mm` of loading with `contact_model`, timed twice on the same steps from
+    the same self-weight state: the full runner (driver callback, checks, records, state snapshots)
+    and a bare `O.run` of the same scene (its engines, the contact model's Python engine included,
+    the support moved by a constant velocity instead of the driver; that engine's own time from
+    YADE's engine timing). Also the runner's steps/s here (set 2's wall time at that rate) and the
+    load average, which says whether the core was free."""
     import os
 
     from yadearch.case import preset
@@ -89,7 +90,7 @@ def loading_measurement(settle_mm: float, set2_steps: int) -> dict:
 
     # no speed ramp: the bare run moves the support at constant speed, so the runner must too
     case = preset("set2").with_overrides({"progress_every_s": 1e9, "max_settlement_mm": settle_mm,
-                                          "ramp_mm": 0.0})
+                                          "ramp_mm": 0.0, "contact_model": contact_model})
     runner = Runner(case, log=lambda text: None)
     runner.selfweight()
     settled = runner.snapshot()
@@ -103,28 +104,28 @@ def loading_measurement(settle_mm: float, set2_steps: int) -> dict:
     O.engines = [e for e in O.engines if getattr(e, "label", "") != DRIVER_LABEL]
     dx, dy = runner.driver.direction
     O.bodies[runner.scene.right_support].state.vel = (runner.driver.speed * dx, runner.driver.speed * dy, 0.0)
-    shear_engine = next(e for e in O.engines if getattr(e, "command", "") == f"{CALLBACK_NAME}.step()")
-    O.timingEnabled, shear_engine.execTime = True, 0
+    contact_engine = next(e for e in O.engines if getattr(e, "command", "") == f"{CALLBACK_NAME}.step()")
+    O.timingEnabled, contact_engine.execTime = True, 0
     begin = time.time()
     O.run(steps, True)
-    bare_s, shear_s = time.time() - begin, shear_engine.execTime * 1e-9
+    bare_s, contact_s = time.time() - begin, contact_engine.execTime * 1e-9
     rate = steps / runner_s
-    result = {"settle_mm": settle_mm, "steps": steps, "runner_s": runner_s, "bare_scene_s": bare_s,
-              "bare_shear_law_s": shear_s, "driver_overhead_ratio": runner_s / bare_s,
-              "python_overhead_ratio": runner_s / (bare_s - shear_s), "steps_per_s": rate,
+    result = {"contact_model": contact_model, "settle_mm": settle_mm, "steps": steps, "runner_s": runner_s,
+              "bare_scene_s": bare_s, "bare_contact_python_engine_s": contact_s,
+              "driver_overhead_ratio": runner_s / bare_s, "steps_per_s": rate,
               "set2_wall_estimate_s": set2_steps / rate, "load_average": os.getloadavg()[0]}
-    print(f"loading {settle_mm:g} mm of set 2 ({steps} steps): runner {runner_s:.1f} s, bare O.run of the "
-          f"same scene {bare_s:.1f} s (ratio {result['driver_overhead_ratio']:.3f}), of which the "
-          f"per-contact shear law in Python {shear_s:.1f} s (runner / C++ engines = "
-          f"{result['python_overhead_ratio']:.3f}); {rate:.0f} steps/s (load average "
+    print(f"[{contact_model}] loading {settle_mm:g} mm of set 2 ({steps} steps): runner {runner_s:.1f} s, "
+          f"bare O.run of the same scene {bare_s:.1f} s (ratio {result['driver_overhead_ratio']:.3f}), of "
+          f"which the contact model's Python engine {contact_s:.1f} s; {rate:.0f} steps/s (load average "
           f"{result['load_average']:.2f}): set 2's {set2_steps} steps would take "
           f"{result['set2_wall_estimate_s']:.0f} s")
+    runner.close()
     return result
 
 
-def scene_rate(steps: int) -> float:
-    """Steps per second of a bare `O.run` of the set 2 scene under self-weight (this process's
-    OpenMP threads)."""
+def scene_rate(steps: int, contact_model: str) -> float:
+    """Steps per second of a bare `O.run` of the set 2 scene with `contact_model` under self-weight
+    (this process's OpenMP threads)."""
     from yadearch.case import preset
     from yadearch.scene import build_scene
     from yadearch.yade_env import import_yade
@@ -132,7 +133,7 @@ def scene_rate(steps: int) -> float:
     import_yade()
     from yade import O
 
-    build_scene(preset("set2"))
+    build_scene(preset("set2").with_overrides({"contact_model": contact_model}))
     O.run(200, True)
     start = time.time()
     O.run(steps, True)
@@ -140,29 +141,32 @@ def scene_rate(steps: int) -> float:
 
 
 def threads_measurement(steps: int) -> dict:
-    """`scene_rate` with 1 and with 2 OpenMP threads, each in its own process (the thread count is
-    fixed when YADE is imported)."""
+    """`scene_rate` of each contact model with 1 and with 2 OpenMP threads, each in its own process
+    (the thread count is fixed when YADE is imported)."""
     import os
     import subprocess
 
-    rates = {}
-    for threads in (1, 2):
-        out = subprocess.run([sys.executable, __file__, "--scene-rate", str(steps)], check=True,
-                             capture_output=True, text=True,
-                             env=dict(os.environ, OMP_NUM_THREADS=str(threads))).stdout
-        rates[threads] = float(out.strip().splitlines()[-1])
-    print(f"OpenMP threads: 1 thread {rates[1]:.0f} steps/s, 2 threads {rates[2]:.0f} steps/s "
-          f"(x{rates[2] / rates[1]:.2f}) over {steps} steps of the set 2 scene")
-    return {"steps": steps, "steps_per_s_1_thread": rates[1], "steps_per_s_2_threads": rates[2],
-            "speedup": rates[2] / rates[1]}
+    result = {}
+    for model in ("joint", "cgal"):
+        rates = {}
+        for threads in (1, 2):
+            out = subprocess.run([sys.executable, __file__, "--scene-rate", str(steps), "--scene-model", model],
+                                 check=True, capture_output=True, text=True,
+                                 env=dict(os.environ, OMP_NUM_THREADS=str(threads))).stdout
+            rates[threads] = float(out.strip().splitlines()[-1])
+        print(f"[{model}] OpenMP threads: 1 thread {rates[1]:.0f} steps/s, 2 threads {rates[2]:.0f} steps/s "
+              f"(x{rates[2] / rates[1]:.2f}) over {steps} steps of the set 2 scene")
+        result[model] = {"steps": steps, "steps_per_s_1_thread": rates[1], "steps_per_s_2_threads": rates[2],
+                         "speedup": rates[2] / rates[1]}
+    return result
 
 
 def line(name: str, s: dict) -> str:
     """One printed line per run."""
     profile = s.get("profile") or {}
     hinges = " ".join(f"{h['interface']}{h['side']}" for h in s["hinges_at_collapse"])
-    overhead = f", wall / YADE C++ engine time {profile['driver_overhead_ratio']:.3f}" \
-        if profile.get("driver_overhead_ratio") else ""
+    overhead = f", wall / scene engine time {profile['driver_overhead_ratio']:.3f}" \
+        if profile.get("driver_overhead_ratio") and "scene_engines_s" in profile else ""
     return (f"{name}: steps {s['steps']}, wall {s['wall_s']:.0f} s, {s['steps_per_s']:.0f} steps/s, "
             f"du {s['du_mm']:.2f} mm, hinges {hinges}{overhead}")
 
@@ -184,9 +188,10 @@ def main() -> int:
     parser.add_argument("--threads-steps", type=int, default=0,
                         help="also time this many steps of the set 2 scene with 1 and 2 OpenMP threads")
     parser.add_argument("--scene-rate", type=int, default=0, help=argparse.SUPPRESS)
+    parser.add_argument("--scene-model", default="joint", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.scene_rate:  # the child process of --threads-steps
-        print(scene_rate(args.scene_rate))
+        print(scene_rate(args.scene_rate, args.scene_model))
         return 0
 
     from yadearch.campaign import campaign_wall_s
@@ -212,8 +217,11 @@ def main() -> int:
     rel = abs(du - du_ref) / du_ref if du is not None and du_ref else None
     same_hinges = s2["hinges_at_collapse"] == reference["hinges_at_collapse"]
     speedup = reference["wall_s"] / s2["wall_s"]
-    measured = loading_measurement(args.measure_mm, s2["steps"]) if args.measure_mm else None
-    overhead = measured["driver_overhead_ratio"] if measured else None
+    measured = {model: loading_measurement(args.measure_mm, s2["steps"], model)
+                for model in ("joint", "cgal")} if args.measure_mm else None
+    default_model = s2.get("contact_model", "joint")
+    overhead = measured[default_model]["driver_overhead_ratio"] if measured else None
+    model_speedup = measured["joint"]["steps_per_s"] / measured["cgal"]["steps_per_s"] if measured else None
     sweep_wall = campaign_wall_s(Path(args.sweep)) if args.sweep else None
     sweep = sweep_status(Path(args.sweep)) if args.sweep else None
     report = {
@@ -222,6 +230,7 @@ def main() -> int:
         "set2_du_reference_mm": du_ref, "set2_du_rel_diff": rel, "set2_same_hinges": same_hinges,
         "set2_reference_wall_s": reference["wall_s"], "set2_speedup_vs_reference": speedup,
         "driver_overhead_ratio": overhead, "loading_measurement": measured, "set2_profile": s2["profile"],
+        "joint_over_cgal_steps_per_s": model_speedup,
         "threads": threads_measurement(args.threads_steps) if args.threads_steps else None,
         "sweep_wall_s": sweep_wall, "sweep_folder": args.sweep, "sweep": sweep,
         "measured": time.strftime("%Y-%m-%dT%H:%M:%S"),
@@ -229,6 +238,9 @@ def main() -> int:
     Path(args.out).parent.mkdir(parents=True, exist_ok=True)
     Path(args.out).write_text(json.dumps(report, indent=2) + "\n")
     print(f"set 2: {speedup:.1f}x faster than the slow reference ({reference['wall_s']:.0f} s)")
+    if model_speedup:
+        print(f"joint elements / CGAL polyhedra, steps/s on the same {args.measure_mm:g} mm of set 2: "
+              f"{model_speedup:.1f}x")
     verdicts = [
         ("set 2 wall <= 60 s", s2["wall_s"] <= TARGET_SET2_WALL_S,
          f"{s2['wall_s']:.0f} s ({s2['wall_s'] / TARGET_SET2_WALL_S:.1f}x the target)"),
@@ -237,9 +249,8 @@ def main() -> int:
          f"{du:.2f} vs {du_ref:.2f} mm ({rel:.2%}), hinges {'same' if same_hinges else 'differ'}"
          if rel is not None else "no du"),
         ("driver overhead <= 5 %", overhead is not None and overhead <= TARGET_OVERHEAD,
-         f"runner / bare O.run of the same scene and steps = {overhead:.3f}; with the per-contact "
-         f"shear law (a Python engine of the scene) also counted as overhead: "
-         f"{measured['python_overhead_ratio']:.3f}" if measured else "not measured (--measure-mm)"),
+         f"runner / bare O.run of the same scene and steps = {overhead:.3f} ({default_model} contacts; "
+         f"CGAL: {measured['cgal']['driver_overhead_ratio']:.3f})" if measured else "not measured (--measure-mm)"),
         ("13-point sweep <= 15 min", sweep_wall is not None and sweep_wall <= TARGET_SWEEP_WALL_S
          and sweep["failed"] == 0 and sweep["done"] == 13,
          f"{sweep_wall / 60:.1f} min in its recorded sessions ({sweep_wall / TARGET_SWEEP_WALL_S:.1f}x the "

@@ -29,7 +29,6 @@ class JointElementContacts:
     def bind(self, pos0: np.ndarray, ori0: np.ndarray, callback: str) -> list[Any]:
         """Keep the block states and weights at hand and return the one engine this model needs."""
         from yade import O
-        from yade.minieigenHP import Vector3
         from yade.wrapper import PyRunner
 
         self.table = joint_table(self.geometry, pos0)
@@ -37,7 +36,6 @@ class JointElementContacts:
         self._states = [O.bodies[i].state for i in self.body_ids]
         self._free = np.array([O.bodies[i].dynamic for i in self.body_ids])
         self._masses = np.array([s.mass for s in self._states])
-        self._vector = Vector3
         return [PyRunner(command=f"{callback}.step()", iterPeriod=1, initRun=True)]
 
     def _evaluate(self) -> JointForces:
@@ -55,11 +53,11 @@ class JointElementContacts:
         forces = self._evaluate()
         self.shear = forces.shear_force
         self.last = forces
-        vector, add_force, add_torque = self._vector, O.forces.addF, O.forces.addT
+        add_force, add_torque = O.forces.addF, O.forces.addT
         for body_id, (fx, fy), tz in zip(self.body_ids, forces.block_force.tolist(),
                                          forces.block_torque.tolist()):
-            add_force(body_id, vector(fx, fy, 0.0))
-            add_torque(body_id, vector(0.0, 0.0, tz))
+            add_force(body_id, (fx, fy, 0.0))  # a tuple converts faster than a built Vector3
+            add_torque(body_id, (0.0, 0.0, tz))
 
     def joint_contacts(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Contact point (n_joints, 2; NaN if open), normal and shear force (n_joints,) of every joint."""

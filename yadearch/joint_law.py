@@ -23,19 +23,24 @@ from .joints import rotate
 
 @dataclass(frozen=True)
 class JointTable:
-    """The joints of a scene as arrays: block indices and each face's end points relative to its
-    block's initial centroid (m), the initial normal (left -> right) and direction (intrados ->
-    extrados)."""
+    """The joints of a scene as arrays: block indices, each joint's intrados point relative to its
+    two blocks' initial centroids (m), its initial normal (left -> right) and direction (intrados ->
+    extrados), its length (m) and the sign of direction x normal."""
 
     left: np.ndarray
     right: np.ndarray
     left_intrados: np.ndarray
-    left_extrados: np.ndarray
     right_intrados: np.ndarray
-    right_extrados: np.ndarray
     normal0: np.ndarray
     along0: np.ndarray
+    length: np.ndarray
+    handedness: np.ndarray
     n_blocks: int
+
+    @property
+    def both_ends(self) -> np.ndarray:
+        """Block indices [right..., left...], for summing each joint's force on its two blocks."""
+        return np.concatenate([self.right, self.left])
 
 
 @dataclass(frozen=True)
@@ -74,73 +79,76 @@ def joint_table(geometry: ArchGeometry, centroids0: np.ndarray) -> JointTable:
     intrados = np.array([j.intrados for j in joints])
     extrados = np.array([j.extrados for j in joints])
     normal = np.array([j.normal for j in joints])
-    along = (extrados - intrados) / np.linalg.norm(extrados - intrados, axis=1)[:, None]
+    length = np.linalg.norm(extrados - intrados, axis=1)
+    along = (extrados - intrados) / length[:, None]
+    handedness = np.sign(along[:, 0] * normal[:, 1] - along[:, 1] * normal[:, 0])
     c0 = centroids0[:, :2]
-    return JointTable(left, right, intrados - c0[left], extrados - c0[left], intrados - c0[right],
-                      extrados - c0[right], normal, along, len(centroids0))
+    return JointTable(left, right, intrados - c0[left], intrados - c0[right], normal, along, length,
+                      handedness, len(centroids0))
 
 
 def joint_forces(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.ndarray,
                  vel: np.ndarray, ang_vel: np.ndarray, shear: np.ndarray, dt: float) -> JointForces:
     """Evaluate every joint for blocks at `pos` (n_blocks, 2) rotated by `rot` (rad, about z, since
     the start) moving at `vel` (n_blocks, 2) and `ang_vel` (rad/s); `shear` holds each joint's shear
-    force from the previous step and `dt` is the step over which the slip rate acts."""
+    force from the previous step and `dt` is the step over which the slip rate acts.
+
+    In the frame of the faces' mean direction, centred between the two faces' intrados points a_l
+    and a_r, the faces are straight lines at -+ half their relative rotation r, so the overlap at
+    abscissa s is (a_l - a_r).n - 2 h tan(r/2) s (h = +-1, the joint's handedness), over the
+    abscissae both faces cover: |(a_l - a_r).e| / 2 to length cos(r/2) - that."""
     left, right = table.left, table.right
-    a_left = pos[left] + rotate(table.left_intrados, rot[left])
-    b_left = pos[left] + rotate(table.left_extrados, rot[left])
-    a_right = pos[right] + rotate(table.right_intrados, rot[right])
-    b_right = pos[right] + rotate(table.right_extrados, rot[right])
-    mean_rotation = 0.5 * (rot[left] + rot[right])
-    normal = rotate(table.normal0, mean_rotation)
-    along = rotate(table.along0, mean_rotation)
-    origin = 0.5 * (a_left + a_right)
+    rot_left, rot_right = rot[left], rot[right]
+    a_left = pos[left] + rotate(table.left_intrados, rot_left)
+    a_right = pos[right] + rotate(table.right_intrados, rot_right)
+    half_turn = 0.5 * (rot_right - rot_left)
+    mean_rotation = rot_left + half_turn
+    cos_mean, sin_mean = np.cos(mean_rotation), np.sin(mean_rotation)
+    n0, e0 = table.normal0, table.along0
+    nx, ny = cos_mean * n0[:, 0] - sin_mean * n0[:, 1], sin_mean * n0[:, 0] + cos_mean * n0[:, 1]
+    ex, ey = cos_mean * e0[:, 0] - sin_mean * e0[:, 1], sin_mean * e0[:, 0] + cos_mean * e0[:, 1]
+    gap_x, gap_y = a_left[:, 0] - a_right[:, 0], a_left[:, 1] - a_right[:, 1]
+    gap_along = gap_x * ex + gap_y * ey
+    gap_normal = gap_x * nx + gap_y * ny
+    slope = 2.0 * table.handedness * np.tan(half_turn)
+    start = 0.5 * np.abs(gap_along)
+    shared = table.length * np.cos(half_turn) - 2.0 * start
+    p0 = gap_normal - slope * start
+    p1 = p0 - slope * shared
 
-    def coordinates(point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        offset = point - origin
-        return np.einsum("ij,ij->i", offset, along), np.einsum("ij,ij->i", offset, normal)
-
-    (sla, hla), (slb, hlb) = coordinates(a_left), coordinates(b_left)
-    (sra, hra), (srb, hrb) = coordinates(a_right), coordinates(b_right)
-    start, end = np.maximum(sla, sra), np.minimum(slb, srb)
-    shared = end - start
-
-    def height(s: np.ndarray, sa: np.ndarray, ha: np.ndarray, sb: np.ndarray, hb: np.ndarray) -> np.ndarray:
-        return ha + (hb - ha) * (s - sa) / (sb - sa)
-
-    def overlap(s: np.ndarray) -> np.ndarray:  # > 0 where the faces interpenetrate
-        return height(s, sla, hla, slb, hlb) - height(s, sra, hra, srb, hrb)
-
-    p0, p1 = overlap(start), overlap(end)
     touching = (shared > 0.0) & ((p0 > 0.0) | (p1 > 0.0))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        zero_at = np.where(touching, p0 / (p0 - p1), 0.0)  # fraction of `shared` where overlap is 0
-    first = np.where(p0 > 0.0, 0.0, zero_at)
-    last = np.where(p1 > 0.0, 1.0, zero_at)
     q0, q1 = np.maximum(p0, 0.0), np.maximum(p1, 0.0)
+    crossing = np.where(touching & (p0 != p1), p0 / np.where(p0 != p1, p0 - p1, 1.0), 0.0)
+    first = np.where(p0 > 0.0, 0.0, crossing)  # fractions of `shared` where the overlap starts, ends
+    last = np.where(p1 > 0.0, 1.0, crossing)
     length = np.where(touching, shared * (last - first), 0.0)
-    area = 0.5 * length * (q0 + q1)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        centroid = start + shared * first + np.where(touching, length * (q0 + 2.0 * q1) / (3.0 * (q0 + q1)), 0.0)
-    mid_height = 0.5 * (height(centroid, sla, hla, slb, hlb) + height(centroid, sra, hra, srb, hrb))
-    point = origin + centroid[:, None] * along + mid_height[:, None] * normal
+    total = q0 + q1
+    area = 0.5 * length * total
+    centroid = start + shared * first + length * (q0 + 2.0 * q1) / (3.0 * np.where(touching, total, 1.0))
+    mid_height = 0.5 * slope * 0.5 * gap_along  # the faces' mid-line is at the mean of their heights
+    px = 0.5 * (a_left[:, 0] + a_right[:, 0]) + centroid * ex + mid_height * nx
+    py = 0.5 * (a_left[:, 1] + a_right[:, 1]) + centroid * ey + mid_height * ny
 
     normal_force = law.kn * law.depth * area
-    arm_left, arm_right = point - pos[left], point - pos[right]
-    velocity_left = vel[left] + ang_vel[left, None] * np.stack([-arm_left[:, 1], arm_left[:, 0]], axis=1)
-    velocity_right = vel[right] + ang_vel[right, None] * np.stack([-arm_right[:, 1], arm_right[:, 0]], axis=1)
-    slip = np.einsum("ij,ij->i", velocity_right - velocity_left, along) * dt
+    arm_lx, arm_ly = px - pos[left, 0], py - pos[left, 1]
+    arm_rx, arm_ry = px - pos[right, 0], py - pos[right, 1]
+    w_left, w_right = ang_vel[left], ang_vel[right]
+    slip_x = vel[right, 0] - w_right * arm_ry - vel[left, 0] + w_left * arm_ly
+    slip_y = vel[right, 1] + w_right * arm_rx - vel[left, 1] - w_left * arm_lx
+    slip = (slip_x * ex + slip_y * ey) * dt
     cap = law.tan_friction * normal_force
     shear_force = np.where(touching, np.clip(shear - law.ks * law.depth * length * slip, -cap, cap), 0.0)
 
-    force = normal_force[:, None] * normal + shear_force[:, None] * along  # on the right block
-    torque_right = arm_right[:, 0] * force[:, 1] - arm_right[:, 1] * force[:, 0]
-    torque_left = arm_left[:, 0] * force[:, 1] - arm_left[:, 1] * force[:, 0]
-    n = table.n_blocks
-    block_force = np.stack([np.bincount(right, force[:, k], n) - np.bincount(left, force[:, k], n)
-                            for k in (0, 1)], axis=1)
-    block_torque = np.bincount(right, torque_right, n) - np.bincount(left, torque_left, n)
-    point = np.where(touching[:, None], point, np.nan)
-    return JointForces(normal_force, shear_force, point, normal, length, block_force, block_torque)
+    fx = normal_force * nx + shear_force * ex  # on the right block; the left one gets the opposite
+    fy = normal_force * ny + shear_force * ey
+    ends, n = table.both_ends, table.n_blocks
+    block_force = np.stack([np.bincount(ends, np.concatenate([fx, -fx]), n),
+                            np.bincount(ends, np.concatenate([fy, -fy]), n)], axis=1)
+    torque = np.concatenate([arm_rx * fy - arm_ry * fx, arm_ly * fx - arm_lx * fy])
+    block_torque = np.bincount(ends, torque, n)
+    point = np.where(touching[:, None], np.stack([px, py], axis=1), np.nan)
+    return JointForces(normal_force, shear_force, point, np.stack([nx, ny], axis=1), length,
+                       block_force, block_torque)
 
 
 def unbalanced_force(forces: JointForces, free: np.ndarray, weights: np.ndarray) -> float:

@@ -35,7 +35,8 @@ def simulate(case: ArchCase, out: Path) -> dict:
     import yade.config
 
     log(f"[{case.name}] kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
-        f"support speed={case.settlement_speed_mm_per_s:.4g} mm/s, damping={case.numerics.damping}")
+        f"support speed={case.settlement_speed_mm_per_s:.4g} mm/s, damping={case.numerics.damping}, "
+        f"contacts={case.numerics.contact_model}")
     origin = provenance(str(yade.config.version))  # now: the code that runs was imported at start
     runner = Runner(case, log=log)
     log(f"[{case.name}] dt={runner.scene.dt:.3e} s, {len(runner.scene.body_ids)} bodies")
@@ -44,6 +45,7 @@ def simulate(case: ArchCase, out: Path) -> dict:
                      "kn_N_per_mm3": case.interface.kn_N_per_mm3, "ks_N_per_mm3": case.ks_N_per_mm3,
                      "kn_effective_N_per_mm3": runner.scene.stiffness.kn / units.N_PER_MM3,
                      "settlement_speed_mm_per_s": case.settlement_speed_mm_per_s,
+                     "contact_model": case.numerics.contact_model,
                      "collapse_criterion": runner.criterion_text()}
     summary.update(runner.run())
     summary.update(origin)
