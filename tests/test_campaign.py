@@ -96,6 +96,15 @@ def test_explicit_table(tmp_path):
         read_table(table)
 
 
+def test_the_costliest_runs_start_first(tmp_path):
+    """Stiff joints need the most steps (smaller time step, slower loading): they start first."""
+    task = FakeRuns()
+    with local_pool(1) as pool:
+        run_campaign(BASE, grid({"kn_N_per_mm3": [0.1, 100.0, 1.0, 31.62]}), tmp_path, pool,
+                     progress=False, task=task)
+    assert task.calls == ["kn100", "kn31.62", "kn1", "kn0.1"]
+
+
 def test_results_table_failures_and_invalid_cases(tmp_path):
     task = FakeRuns(fail=(10.0,))
     rows = grid({"kn_N_per_mm3": [0.1, 1.0, 10.0, -1.0]})
@@ -115,24 +124,24 @@ def test_results_table_failures_and_invalid_cases(tmp_path):
 
 def test_resume_redoes_only_unfinished_runs(tmp_path):
     rows = grid({"kn_N_per_mm3": [0.1, 1.0, 10.0]})
-    with pytest.raises(KeyboardInterrupt):  # "killed" after its first finished run
+    with pytest.raises(KeyboardInterrupt):  # "killed" after its first finished run (the stiffest)
         with local_pool(1) as pool:
             run_campaign(BASE, rows, tmp_path, pool, progress=False, task=FakeRuns(interrupt_after=1))
     statuses = pd.read_csv(tmp_path / RESULTS_FILE)["status"].tolist()
-    assert statuses == ["done", "pending", "pending"]
-    first = (tmp_path / "kn0.1" / "summary.json").stat().st_mtime_ns
-    again = FakeRuns(fail=(10.0,))
+    assert statuses == ["pending", "pending", "done"]
+    first = (tmp_path / "kn10" / "summary.json").stat().st_mtime_ns
+    again = FakeRuns(fail=(0.1,))
     campaign(tmp_path, again, rows)
-    assert sorted(again.calls) == ["kn1", "kn10"]
+    assert sorted(again.calls) == ["kn0.1", "kn1"]
     kept = FakeRuns()
     with local_pool(1) as pool:
         run_campaign(BASE, rows, tmp_path, pool, progress=False, task=kept, retry_failed=False)
-    assert kept.calls == [] and (tmp_path / "kn10" / FAILED_FILE).exists()  # the failure stays
-    assert (tmp_path / "kn0.1" / "summary.json").stat().st_mtime_ns == first
+    assert kept.calls == [] and (tmp_path / "kn0.1" / FAILED_FILE).exists()  # the failure stays
+    assert (tmp_path / "kn10" / "summary.json").stat().st_mtime_ns == first
     third = FakeRuns()
     table = campaign(tmp_path, third, rows)
-    assert third.calls == ["kn10"] and set(table["status"]) == {"done"}  # failed runs are redone
-    assert not (tmp_path / "kn10" / FAILED_FILE).exists()
+    assert third.calls == ["kn0.1"] and set(table["status"]) == {"done"}  # failed runs are redone
+    assert not (tmp_path / "kn0.1" / FAILED_FILE).exists()
     sessions = json.loads((tmp_path / SESSIONS_FILE).read_text())
     assert [s["runs_attempted"] for s in sessions] == [3, 2, 1]  # invocations that ran something
     assert campaign_wall_s(tmp_path) == pytest.approx(sum(s["wall_s"] for s in sessions))
