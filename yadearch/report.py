@@ -50,6 +50,10 @@ class ReportedRun:
     figures: list[str]
 
 
+# What each `numerics.contact_model` is, for the report (runs from before the option used CGAL).
+CONTACT_MODEL_NAMES = {"joint": "zero-thickness joint elements", "cgal": "YADE's CGAL polyhedra contacts"}
+
+
 def match_reference(summary: dict[str, Any]) -> str | None:
     """The paper set a run reproduces: by its name ("set1"/"set2"), else by its kn (N/mm3)."""
     if summary.get("name") in reference.SETS:
@@ -145,7 +149,8 @@ def run_section(reported: ReportedRun) -> list[str]:
     hinges = " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"]) or "—"
     lines = [f"## {summary.get('name', run.path.name)}", "",
              f"- run folder: `{run.path}`",
-             f"- kn = {summary.get('kn_N_per_mm3')} N/mm3, ks = {summary.get('ks_N_per_mm3')} N/mm3",
+             f"- kn = {summary.get('kn_N_per_mm3')} N/mm3, ks = {summary.get('ks_N_per_mm3')} N/mm3, "
+             f"joints computed by {CONTACT_MODEL_NAMES.get(summary.get('contact_model', 'cgal'))}",
              f"- du = {'no collapse' if du is None else f'{du:.2f} mm'}"
              + (f" (bracket {summary['du_bracket_mm'][0]:.2f}–{summary['du_bracket_mm'][1]:.2f} mm)"
                 if summary.get("du_bracket_mm") else ""),
