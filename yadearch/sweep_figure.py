@@ -20,6 +20,7 @@ COLUMN_WIDTH_IN = 3.5  # one journal column
 HINGE_STYLE = {"hinge_A": ("o", "A (intrados)"), "hinge_B": ("s", "B (extrados)"),
                "hinge_C": ("^", "C (right support)")}
 LEGEND_HEADROOM = 1.45  # hinge panel's y range as a multiple of the last interface
+PAPER_MECHANISM = "E-I-E-E"  # hinges D, A, B, C from left to right (paper: collapse when D opens)
 
 
 def kn_sweep_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
@@ -49,6 +50,10 @@ def kn_sweep_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
 def _du_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
     ax.plot(runs["kn_N_per_mm3"], runs["du_mm"], "o-", color="C0", ms=3.5, lw=1,
             label="yadearch (DEM)")
+    other = runs[runs["mechanism"] != PAPER_MECHANISM]
+    if not other.empty:
+        ax.plot(other["kn_N_per_mm3"], other["du_mm"], "o", mfc="white", mec="C3", ms=5.5, mew=1,
+                label="collapse by another mechanism (see results.csv)")
     stiffest = runs.iloc[-1]
     ax.axhline(stiffest["du_mm"], color="0.5", ls="--", lw=0.8,
                label=f"stiffest run ({stiffest['kn_N_per_mm3']:g} N/mm$^3$): {stiffest['du_mm']:.1f} mm")
