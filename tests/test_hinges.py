@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from yadearch.hinges import hinge_rotation, hinges_at
+from yadearch.hinges import hinge_rotation, hinges_at, same_hinges
 
 T = 0.024
 
@@ -28,3 +28,17 @@ def test_a_soft_joint_rotating_by_compression_alone_is_a_hinge():
 
 def test_uniformly_pressed_joints_give_no_hinge():
     assert hinges_at(hinge_rotation(np.full(5, -1e-5), np.full(5, -1e-5), T), 1e-3) == []
+
+
+def test_a_hinge_whose_peak_moves_within_its_spread_is_the_same_hinge():
+    default = [{"interface": 1, "side": "E", "interfaces": [1]},
+               {"interface": 11, "side": "I", "interfaces": [10, 11, 12]}]
+    shifted = [{"interface": 1, "side": "E", "interfaces": [1]},
+               {"interface": 12, "side": "I", "interfaces": [11, 12, 13]}]
+    moved = [{"interface": 1, "side": "E", "interfaces": [1]},
+             {"interface": 14, "side": "I", "interfaces": [13, 14]}]
+    assert same_hinges(default, shifted)
+    assert not same_hinges(default, moved)
+    assert not same_hinges(default, default[:1])
+    assert not same_hinges(default, [default[0], {**default[1], "side": "E"}])
+    assert same_hinges([{"interface": 9, "side": "I"}], [{"interface": 9, "side": "I"}])  # no spread kept

@@ -60,3 +60,14 @@ def hinges_at(rotation: np.ndarray, threshold: float) -> list[Hinge]:
         hinges.append(Hinge(tuple(range(first + 1, last + 2)), peak + 1, sides[k], float(rotation[peak])))
         k = end + 1
     return hinges
+
+
+def same_hinges(a: list[dict], b: list[dict]) -> bool:
+    """Whether two runs collapsed on the same hinges, given their summaries' `hinges_detail` (or
+    `hinges_at_collapse`): as many, on the same sides in the same order, each one's peak interface
+    inside the other's spread. A hinge spread over adjacent joints whose peak moves within the
+    spread is the same hinge (the paper reports such a hinge as the range, e.g. 11-12 I)."""
+    if len(a) != len(b):
+        return False
+    return all(x["side"] == y["side"] and x["interface"] in y.get("interfaces", [y["interface"]])
+               and y["interface"] in x.get("interfaces", [x["interface"]]) for x, y in zip(a, b))
