@@ -132,6 +132,8 @@ class Runner:
     """Drives one scene through the stages and records it."""
 
     def __init__(self, case: ArchCase, log: Callable[[str], None] = print):
+        from yade import O
+
         self.case = case
         self.num = case.numerics
         self.log = log
@@ -142,6 +144,8 @@ class Runner:
         self.driver = SupportDriver(self.scene, direction, units.mm(case.settlement_speed_mm_per_s),
                                     units.mm(self.num.ramp_mm))
         self._install_driver()
+        # the voussoirs' State objects, read at every check (a restore assigns into them)
+        self._voussoir_states = [O.bodies[i].state for i in self.scene.voussoir_ids]
         self.gate = SteppingGate()
         self.gate.install()
         self.driver.zero_here()
@@ -200,9 +204,7 @@ class Runner:
         return self.driver.displacement()
 
     def _voussoir_speeds(self) -> np.ndarray:
-        from yade import O
-
-        return np.array([O.bodies[i].state.vel.norm() for i in self.scene.voussoir_ids])
+        return np.array([state.vel.norm() for state in self._voussoir_states])
 
     def _unbalanced(self) -> float:
         """Unbalanced force: mean resultant force on the blocks / mean contact force."""
@@ -310,7 +312,7 @@ class Runner:
         """Current voussoir centroids (n, 3); a NaN ends the run (the law calls exit(1) on NaN)."""
         from yade import O
 
-        pos = np.array([list(O.bodies[i].state.pos) for i in self.scene.voussoir_ids])
+        pos = np.array([(p[0], p[1], p[2]) for p in (state.pos for state in self._voussoir_states)])
         if not np.all(np.isfinite(pos)):
             raise RunFailedError(f"NaN in block positions at step {O.iter} ({self.stage})")
         return pos
