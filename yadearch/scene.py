@@ -129,10 +129,6 @@ def body_states(scene: ArchScene) -> tuple[np.ndarray, np.ndarray]:
     """Current positions (n, 3) and z-rotations since the start (n,) of all blocks, in geometry order."""
     from yade import O
 
-    pos = np.empty((len(scene.body_ids), 3))
-    ori = np.empty((len(scene.body_ids), 4))
-    for k, i in enumerate(scene.body_ids):
-        state = O.bodies[i].state
-        pos[k] = list(state.pos)
-        ori[k] = _quat_wxyz(state.ori)
-    return pos, z_rotation(ori, scene.ori0)
+    rows = np.array([(p[0], p[1], p[2], q[3], q[0], q[1], q[2]) for p, q in
+                     ((state.pos, state.ori) for state in (O.bodies[i].state for i in scene.body_ids))])
+    return rows[:, :3], z_rotation(rows[:, 3:], scene.ori0)
