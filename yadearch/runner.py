@@ -132,8 +132,6 @@ class Runner:
     """Drives one scene through the stages and records it."""
 
     def __init__(self, case: ArchCase, log: Callable[[str], None] = print):
-        from yade import O
-
         self.case = case
         self.num = case.numerics
         self.log = log
@@ -144,6 +142,8 @@ class Runner:
         self.driver = SupportDriver(self.scene, direction, units.mm(case.settlement_speed_mm_per_s),
                                     units.mm(self.num.ramp_mm))
         self._install_driver()
+        from yade import O  # importable once build_scene has set YADE up
+
         # the voussoirs' State objects, read at every check (a restore assigns into them)
         self._voussoir_states = [O.bodies[i].state for i in self.scene.voussoir_ids]
         self.gate = SteppingGate()
@@ -259,15 +259,15 @@ class Runner:
         js = snap["js"]
         self._last_rotation = snap["hinge_rotation"]
         delta_mm = units.to_mm(self.delta())
-        for k in range(len(js.rotation)):
-            self.records.joints.append({
-                "stage": self.stage, "step": self._iter(), "delta_mm": delta_mm, "interface": k + 1,
-                "rotation_rad": js.rotation[k],
-                "opening_intrados_mm": units.to_mm(js.opening_intrados[k]),
-                "opening_extrados_mm": units.to_mm(js.opening_extrados[k]),
-                "force_position": js.force_position[k],
-                "normal_force_N": snap["normal"][k], "shear_force_N": snap["shear"][k],
-            })
+        common = {"stage": self.stage, "step": self._iter(), "delta_mm": delta_mm}
+        columns = zip(js.rotation.tolist(), units.to_mm(js.opening_intrados).tolist(),
+                      units.to_mm(js.opening_extrados).tolist(), js.force_position.tolist(),
+                      snap["normal"].tolist(), snap["shear"].tolist())
+        self.records.joints.extend(
+            {**common, "interface": k + 1, "rotation_rad": rotation, "opening_intrados_mm": intrados,
+             "opening_extrados_mm": extrados, "force_position": position, "normal_force_N": normal,
+             "shear_force_N": shear}
+            for k, (rotation, intrados, extrados, position, normal, shear) in enumerate(columns))
         if label:
             self.records.snapshots[label] = {
                 "delta_mm": delta_mm, "step": self._iter(),
