@@ -100,7 +100,7 @@ class NumericsConfig:
     timestep_safety: float = field(default=0.6, metadata=_num(0, 1, low_open=True,
                                    doc="time step as a fraction of the critical step of a joint"))
     threads: int = field(default=1, metadata=_num(1, 256, doc="OpenMP threads of the YADE process "
-                         "(they speed up CGAL contacts, x1.8 with 2, but slow joint elements, x0.15 "
+                         "(they speed up CGAL contacts, x1.8 with 2, not joint elements, x0.15-0.93 "
                          "with 2; runs are bit-reproducible with 1 only)"))
     contact_model: str = field(default="joint", metadata={
         "choices": ("joint", "cgal"), "predates": "cgal",
