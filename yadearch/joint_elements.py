@@ -39,6 +39,7 @@ class JointElementContacts:
         return [PyRunner(command=f"{callback}.step()", iterPeriod=1, initRun=True)]
 
     def _evaluate(self) -> JointForces:
+        """The joints for the blocks' current states (one read of each State; 9 numbers a block)."""
         from yade import O
 
         rows = np.array([(p[0], p[1], q[3], q[0], q[1], q[2], v[0], v[1], w[2]) for p, q, v, w in
@@ -65,9 +66,11 @@ class JointElementContacts:
         return forces.point, forces.normal_force, forces.shear_force
 
     def snapshot(self) -> dict:
+        """The joints' history (shear forces) and last evaluation, for `restore`."""
         return {"shear": self.shear.copy(), "last": self.last}
 
     def restore(self, snapshot: dict) -> None:
+        """Back to a `snapshot` (the bodies are restored by the runner)."""
         self.shear = snapshot["shear"].copy()
         self.last = snapshot["last"]
 
