@@ -119,7 +119,6 @@ def loading_measurement(settle_mm: float, set2_steps: int, contact_model: str) -
           f"which the contact model's Python engine {contact_s:.1f} s; {rate:.0f} steps/s (load average "
           f"{result['load_average']:.2f}): set 2's {set2_steps} steps would take "
           f"{result['set2_wall_estimate_s']:.0f} s")
-    runner.close()
     return result
 
 

@@ -35,12 +35,8 @@ class JointTable:
     along0: np.ndarray
     length: np.ndarray
     handedness: np.ndarray
+    both_ends: np.ndarray  # block indices [right..., left...], to sum each joint's force on its blocks
     n_blocks: int
-
-    @property
-    def both_ends(self) -> np.ndarray:
-        """Block indices [right..., left...], for summing each joint's force on its two blocks."""
-        return np.concatenate([self.right, self.left])
 
 
 @dataclass(frozen=True)
@@ -61,7 +57,6 @@ class JointForces:
     normal_force: np.ndarray
     shear_force: np.ndarray
     point: np.ndarray  # (n_joints, 2), NaN where the joint carries nothing
-    normal: np.ndarray  # (n_joints, 2), unit, from the left block to the right one
     compressed_length: np.ndarray
     block_force: np.ndarray
     block_torque: np.ndarray
@@ -84,7 +79,7 @@ def joint_table(geometry: ArchGeometry, centroids0: np.ndarray) -> JointTable:
     handedness = np.sign(along[:, 0] * normal[:, 1] - along[:, 1] * normal[:, 0])
     c0 = centroids0[:, :2]
     return JointTable(left, right, intrados - c0[left], intrados - c0[right], normal, along, length,
-                      handedness, len(centroids0))
+                      handedness, np.concatenate([right, left]), len(centroids0))
 
 
 def joint_forces(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.ndarray,
@@ -147,8 +142,7 @@ def joint_forces(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.ndar
     torque = np.concatenate([arm_rx * fy - arm_ry * fx, arm_ly * fx - arm_lx * fy])
     block_torque = np.bincount(ends, torque, n)
     point = np.where(touching[:, None], np.stack([px, py], axis=1), np.nan)
-    return JointForces(normal_force, shear_force, point, np.stack([nx, ny], axis=1), length,
-                       block_force, block_torque)
+    return JointForces(normal_force, shear_force, point, length, block_force, block_torque)
 
 
 def unbalanced_force(forces: JointForces, free: np.ndarray, weights: np.ndarray) -> float:

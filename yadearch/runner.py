@@ -142,10 +142,6 @@ class Runner:
         self.driver = SupportDriver(self.scene, direction, units.mm(case.settlement_speed_mm_per_s),
                                     units.mm(self.num.ramp_mm))
         self._install_driver()
-        from yade import O  # importable once build_scene has set YADE up
-
-        # the voussoirs' State objects, read at every check (a restore assigns into them)
-        self._voussoir_states = [O.bodies[i].state for i in self.scene.voussoir_ids]
         self.gate = SteppingGate()
         self.gate.install()
         self.driver.zero_here()
@@ -204,7 +200,7 @@ class Runner:
         return self.driver.displacement()
 
     def _voussoir_speeds(self) -> np.ndarray:
-        return np.array([state.vel.norm() for state in self._voussoir_states])
+        return np.array([state.vel.norm() for state in self.scene.voussoir_states])
 
     def _unbalanced(self) -> float:
         """Unbalanced force: mean resultant force on the blocks / mean contact force."""
@@ -312,7 +308,8 @@ class Runner:
         """Current voussoir centroids (n, 3); a NaN ends the run (the law calls exit(1) on NaN)."""
         from yade import O
 
-        pos = np.array([(p[0], p[1], p[2]) for p in (state.pos for state in self._voussoir_states)])
+        pos = np.array([(p[0], p[1], p[2])
+                        for p in (state.pos for state in self.scene.voussoir_states)])
         if not np.all(np.isfinite(pos)):
             raise RunFailedError(f"NaN in block positions at step {O.iter} ({self.stage})")
         return pos

@@ -55,6 +55,11 @@ class ArchScene:
     ori0: np.ndarray  # quaternions (w, x, y, z)
     contacts: ContactModel
     dt: float
+    states: list[Any]  # YADE State objects in geometry order; a restore assigns into them
+
+    @property
+    def voussoir_states(self) -> list[Any]:
+        return self.states[1:-1]
 
     @property
     def left_support(self) -> int:
@@ -117,7 +122,8 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
     O.engines = [ForceResetter(), *contacts.bind(pos0, ori0, CALLBACK_NAME),
                  NewtonIntegrator(damping=damping, gravity=gravity)]
     O.dt = dt
-    return ArchScene(geometry, stiffness, body_ids, pos0, ori0, contacts, dt)
+    return ArchScene(geometry, stiffness, body_ids, pos0, ori0, contacts, dt,
+                     [O.bodies[i].state for i in body_ids])
 
 
 def _quat_wxyz(q: Any) -> list[float]:
@@ -127,8 +133,6 @@ def _quat_wxyz(q: Any) -> list[float]:
 
 def body_states(scene: ArchScene) -> tuple[np.ndarray, np.ndarray]:
     """Current positions (n, 3) and z-rotations since the start (n,) of all blocks, in geometry order."""
-    from yade import O
-
     rows = np.array([(p[0], p[1], p[2], q[3], q[0], q[1], q[2]) for p, q in
-                     ((state.pos, state.ori) for state in (O.bodies[i].state for i in scene.body_ids))])
+                     ((state.pos, state.ori) for state in scene.states)])
     return rows[:, :3], z_rotation(rows[:, 3:], scene.ori0)
