@@ -237,8 +237,8 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
 
     Finished folders are skipped; interrupted and new runs are (re)done, failed ones too unless
     `retry_failed` is false (they keep their recorded reason). Runs start in decreasing
-    `expected_cost`. `task` runs one case (default: a
-    child process through `execute`; tests inject stand-ins)."""
+    `expected_cost`. `task` runs one case (default: a child process through `execute`; tests
+    inject stand-ins)."""
     out = Path(out)
     specs = plan(base, rows, out)
     out.mkdir(parents=True, exist_ok=True)
