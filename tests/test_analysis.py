@@ -56,10 +56,11 @@ class BuiltRun:
     sliding: dict[int, float] = field(default_factory=dict)  # interface -> |shear| / (mu normal)
 
     def records(self) -> list[tuple[str, float, float]]:
-        """(stage, recorded delta, delta that sets the state): self-weight, loading past du (as the
-        runner records it), the collapse record one probe past du showing the run-away arch."""
-        loading = np.arange(1, int((self.du_mm + 6) / self.record_every_mm)) * self.record_every_mm
-        return ([("selfweight", 0.0, 0.0)] + [("loading", d, d) for d in loading]
+        """(stage, recorded delta, delta that sets the state): self-weight, the loading's equilibria
+        below du (as the runner records them), the collapse record just past du showing the
+        run-away arch."""
+        loading = np.arange(1, int(self.du_mm / self.record_every_mm)) * self.record_every_mm
+        return ([("selfweight", 0.0, 0.0)] + [("equilibrium", d, d) for d in loading]
                 + [("collapse", self.du_mm + 0.05, self.du_mm + RUNAWAY_MM)])
 
     def joints(self) -> pd.DataFrame:
@@ -127,7 +128,7 @@ def test_a_joint_rotated_by_compression_alone_has_not_formed_a_hinge():
 
 def test_loading_records_past_du_are_not_on_the_path():
     a = paper_like_run().analyse()
-    assert list(a.history.stage[[0, 1, -1]]) == ["selfweight", "loading", "collapse"]
+    assert list(a.history.stage[[0, 1, -1]]) == ["selfweight", "equilibrium", "collapse"]
     assert a.history.delta_mm[-2] <= 30.0
     assert np.all(np.diff(a.history.delta_mm) > 0)
 

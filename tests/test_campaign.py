@@ -75,9 +75,9 @@ def test_grid_is_the_product_and_names_are_deterministic():
     assert [run_tag(r) for r in rows] == ["kn0.1_damping0.1", "kn0.1_damping0.2", "kn1_damping0.1",
                                           "kn1_damping0.2"]
     long = {"kn_N_per_mm3": 0.1, "settlement_direction_deg": -90.0, "max_settlement_mm": 150.0,
-            "hinge_rotation_mrad": 2.0, "joint_record_every_mm": 0.5}
+            "hinge_rotation_mrad": 2.0, "first_increment_mm": 2.0}
     assert run_tag(long) == run_tag(dict(long)) and len(run_tag(long)) <= 64
-    assert run_tag(long) != run_tag({**long, "joint_record_every_mm": 0.25})
+    assert run_tag(long) != run_tag({**long, "first_increment_mm": 1.0})
     with pytest.raises(CaseError, match="unknown parameter 'knn'"):
         grid({"knn": [1]})
 

@@ -50,8 +50,8 @@ def placed(case: dict, delta_mm: float) -> dict:
 
 def series_rows(built: BuiltRun) -> list[dict]:
     rows = []
-    for stage, deltas in (("selfweight", [0.0, 0.0]), ("loading", np.arange(0.5, built.du_mm + 5, 0.5)),
-                          ("search", [built.du_mm + 3, built.du_mm - 1, built.du_mm + 1]),
+    for stage, deltas in (("selfweight", [0.0, 0.0]), ("equilibrium", np.arange(0.5, built.du_mm, 0.5)),
+                          ("increment", [built.du_mm + 3, built.du_mm - 1, built.du_mm + 1]),
                           ("collapse", [built.du_mm + 0.05])):
         for d in deltas:
             rows.append({"stage": stage, "step": len(rows), "time_s": 0.01 * len(rows), "delta_mm": d,

@@ -339,11 +339,16 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
         row.setdefault("kn_N_per_mm3", case.interface.kn_N_per_mm3)
         row.setdefault("n_voussoirs", case.geometry.n_voussoirs)
     empty = {"du_mm": math.nan, "collapsed": None, "hinges": "", "mechanism": "", "hinge_A": None,
-             "hinge_B": None, "hinge_C": None, "hinge_D": None, "steps": None, "wall_s": math.nan}
+             "hinge_B": None, "hinge_C": None, "hinge_D": None, "steps": None, "wall_s": math.nan,
+             "max_slip_mm": math.nan, "max_friction_use": math.nan, "friction_interface": None}
     if case is not None and is_complete(spec.folder):
         summary = json.loads((spec.folder / SUMMARY_FILE).read_text())
         hinges = summary.get("hinges_at_collapse") or []
         du = summary.get("du_mm")
+        friction = summary.get("friction") or {}
+        row.update(max_slip_mm=friction.get("max_slip_mm", math.nan),
+                   max_friction_use=friction.get("max_friction_use", math.nan),
+                   friction_interface=friction.get("friction_interface"))
         row.update(du_mm=math.nan if du is None else du, collapsed=bool(summary.get("collapsed")),
                    hinges=" ".join(f"{h['interface']}{h['side']}" for h in hinges),
                    mechanism="-".join(h["side"] for h in hinges),
@@ -365,6 +370,7 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
 def results_table(specs: list[RunSpec], out: Path) -> pd.DataFrame:
     """The tidy results table of a campaign (one row per run), read from its run folders."""
     table = pd.DataFrame([run_row(s, out) for s in specs])
-    for column in ("n_voussoirs", "hinge_A", "hinge_B", "hinge_C", "hinge_D", "steps"):
+    for column in ("n_voussoirs", "hinge_A", "hinge_B", "hinge_C", "hinge_D", "steps",
+                   "friction_interface"):
         table[column] = table[column].astype("Int64")
     return table

@@ -1,5 +1,5 @@
-"""`yadearch sweep` (parametric campaigns, the kn sweep) and `yadearch calibrate` (kn from a measured
-du), as click commands for the main group: `cli.add_command(sweep)`, `cli.add_command(calibrate)`."""
+"""`yadearch sweep` (parametric campaigns, the kn sweep), `yadearch calibrate` (kn from a measured
+du) and `yadearch robustness` (du against the numerics), as click commands for the main group."""
 
 from __future__ import annotations
 
@@ -15,6 +15,7 @@ from .campaign import RESULTS_FILE, grid, parse_values, read_table, run_campaign
 from .case import ArchCase
 from .errors import YadearchError
 from .executors import open_pool
+from .robustness import KN_VALUES, VARIANTS, run_study, verdicts
 
 KN_KEY = "kn_N_per_mm3"
 
@@ -148,3 +149,30 @@ def calibrate(preset_name: str | None, case_file: str | None, settings: tuple[st
     if not result.converged:
         raise YadearchError(f"no kn within {tolerance_mm:g} mm of the target after {result.runs} "
                             f"runs (du jumps, or too few runs); the closest run is in {out_path}")
+
+
+@click.command()
+@_base_options
+@click.option("--kn", "kn_spec", metavar="VALUES", default=",".join(f"{k:g}" for k in KN_VALUES),
+              show_default=True, help="kn values (N/mm3)")
+@click.option("--variant", "variant_names", multiple=True, type=click.Choice(list(VARIANTS)),
+              help="run only these variants [default: all]")
+@click.option("--out", default="reports/robustness", show_default=True, type=click.Path(file_okay=False),
+              help="study folder: run folders, robustness.csv, robustness.md")
+@_pool_options
+def robustness(preset_name: str | None, case_file: str | None, settings: tuple[str, ...],
+               kn_spec: str, variant_names: tuple[str, ...], out: str, jobs: int | None,
+               scheduler: str | None, timeout_min: float | None) -> None:
+    """Run every kn with each numerical variant and with higher friction (resumable); write
+    OUT/robustness.csv and OUT/robustness.md with a verdict per kn."""
+    base = _base_case(preset_name or "set2", case_file, settings)
+    kn_values = tuple(float(v) for v in parse_values(kn_spec))
+    folder = Path(out)
+    with open_pool(jobs, scheduler) as pool:
+        table = run_study(base, folder, pool, kn_values, variant_names or tuple(VARIANTS),
+                          timeout_s=_timeout_s(timeout_min))
+    for _, row in verdicts(table).iterrows():
+        click.echo(f"kn {row.kn_N_per_mm3:g}: base du {row.base_du_mm:.2f} mm ({row.base_hinges}), numerics "
+                   f"spread {row.numerics_spread:.2%}, hinges {'kept' if row.hinges_kept else 'moved'}, "
+                   f"friction moves du {row.friction_move:.2%}: {row.verdict}")
+    click.echo(f"-> {folder / 'robustness.csv'}, {folder / 'robustness.md'}")

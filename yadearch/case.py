@@ -89,8 +89,10 @@ class NumericsConfig:
         "settlement_rate x sqrt(this / kn), so that a step moves the support the same fraction of a "
         "joint's elastic deflection as at this kn (at 80 mm/s kn 31.6 formed another mechanism, at "
         "40 mm/s the paper's); 0 = no scaling"), "predates": 0.0})
-    ramp_mm: float = field(default=5.0, metadata=_num(0, doc="support displacement over which the "
-                                                           "speed ramps up from zero (mm)"))
+    support_acceleration_mm_per_s2: float = field(default=640.0, metadata={**_num(
+        0, doc="acceleration and braking of the support at the start and end of each move (mm/s^2); "
+        "0 = instantaneous. The same at any kn: it sets the inertial load of the moving arch (640 = "
+        "0.065 g)"), "predates": 0.0})
     damping: float = field(default=0.2, metadata=_num(0, 1, high_open=True,
                            doc="YADE local (non-viscous) damping coefficient"))
     hold_damping: float = field(default=0.2, metadata=_num(0, 1, high_open=True,
@@ -126,19 +128,18 @@ class NumericsConfig:
                                         doc="blocks slower than this are at rest (mm/s)"))
     runaway_mm: float = field(default=1.0, metadata=_num(0, low_open=True,
                               doc="block displacement at a fixed support that means no equilibrium (mm)"))
-    probe_step_mm: float = field(default=1.0, metadata=_num(0, low_open=True,
-                                 doc="support step between equilibrium checks near collapse (mm)"))
-    du_tolerance_mm: float = field(default=0.25, metadata=_num(0, low_open=True,
+    first_increment_mm: float = field(default=2.0, metadata={**_num(
+        0, low_open=True, doc="support displacement of the first loading increment (mm); each "
+        "increment ends in a relaxation to equilibrium"), "predates": 0.0})
+    max_increment_mm: float = field(default=5.0, metadata=_num(0, low_open=True,
+                                    doc="largest loading increment (mm), reached while the arch "
+                                    "follows the support"))
+    increment_growth: float = field(default=1.5, metadata=_num(1, doc="factor on the increment after "
+                                    "one that ended in equilibrium"))
+    du_tolerance_mm: float = field(default=0.1, metadata=_num(0, low_open=True,
                                    doc="width of the bracket that locates du (mm)"))
-    trigger_speed_ratio: float = field(default=3.0, metadata=_num(1, low_open=True,
-                                       doc="max block speed / support speed that starts the du search"))
-    trigger_hinge_rotation_mrad: float = field(default=4.0, metadata=_num(0, low_open=True,
-                                               doc="four hinges rotating this much since self-weight "
-                                               "(mrad) also start the du search"))
     hinge_rotation_mrad: float = field(default=2.0, metadata=_num(0, low_open=True,
                                        doc="relative joint rotation that counts as a hinge (mrad)"))
-    joint_record_every_mm: float = field(default=0.5, metadata=_num(0, low_open=True,
-                                         doc="support displacement between per-interface records (mm)"))
     series_every_steps: int = field(default=200, metadata=_num(1, doc="steps between time-series rows"))
     progress_every_s: float = field(default=10.0, metadata=_num(0, low_open=True,
                                     doc="wall seconds between progress lines"))
@@ -171,9 +172,8 @@ class ArchCase:
     @property
     def settlement_speed_mm_per_s(self) -> float:
         """Support speed of the continuous loading and of the du search's moves (mm/s)."""
-        rate = self.numerics.settlement_rate_mm_per_s
-        reference, kn = self.numerics.rate_reference_kn_N_per_mm3, self.interface.kn_N_per_mm3
-        return rate * math.sqrt(reference / kn) if 0 < reference < kn else rate
+        return support_speed(self.numerics.settlement_rate_mm_per_s,
+                             self.numerics.rate_reference_kn_N_per_mm3, self.interface.kn_N_per_mm3)
 
     def validate(self) -> "ArchCase":
         """Check every number against its accepted range; raise CaseError naming the first bad one."""
@@ -199,6 +199,12 @@ class ArchCase:
             else:
                 data[section][name] = value
         return case_from_dict(data)
+
+
+def support_speed(rate: float, reference_kn: float, kn: float) -> float:
+    """Support speed (mm/s): `rate`, slowed by sqrt(reference_kn / kn) for joints stiffer than
+    `reference_kn` (0 = no scaling)."""
+    return rate * math.sqrt(reference_kn / kn) if 0 < reference_kn < kn else rate
 
 
 def _resolve_key(key: str) -> tuple[str | None, str]:
@@ -283,7 +289,9 @@ def as_ran(data: dict[str, Any]) -> dict[str, Any]:
             f.name: stored.get(f.name, f.metadata.get("predates", getattr(defaults, f.name)))
             for f in fields(cls)}
     numerics = filled["numerics"]
-    numerics["settlement_speed_mm_per_s"] = case_from_dict(filled).settlement_speed_mm_per_s
+    numerics["settlement_speed_mm_per_s"] = support_speed(
+        numerics["settlement_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"],
+        filled["interface"]["kn_N_per_mm3"])
     del numerics["settlement_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"]
     return filled
 

@@ -65,6 +65,10 @@ class CgalContacts:
             shear[k] = self.shear.shear_force(a, b)
         return points, normal, shear
 
+    def joint_slip(self) -> np.ndarray:
+        """Not tracked by this model: NaN for every joint."""
+        return np.full(len(self.geometry.joints), np.nan)
+
     def snapshot(self) -> dict:
         """The contacts' geometry (the intersection's starting hints) and per-contact shear forces."""
         from yade import O

@@ -14,7 +14,7 @@ from .case import ArchCase, load_case, parameter_docs, preset
 from .errors import YadearchError
 from .process import run_case_process
 from .rundir import holds_case
-from .campaign_cli import calibrate, sweep
+from .campaign_cli import calibrate, robustness, sweep
 from .report import report, write_report
 
 
@@ -118,6 +118,7 @@ def params() -> None:
 cli.add_command(report)
 cli.add_command(sweep)
 cli.add_command(calibrate)
+cli.add_command(robustness)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -17,6 +17,7 @@ from matplotlib.patches import Polygon
 
 from .analysis import RunAnalysis
 from .analysis.blocks import case_geometry, joint_points, snapshot_outlines
+from .analysis.history import EQUILIBRIUM_STAGE
 from .rundir import RunFolder
 
 CM = 1 / 2.54  # inches
@@ -63,10 +64,12 @@ def _styled(draw):
 
 
 def loading_path(series: pd.DataFrame) -> pd.DataFrame:
-    """Series rows along the settlement: the end of the self-weight stage, then the loading stage
-    (monotonic in delta). The du search goes back to saved states, so its rows are left out."""
+    """Series rows on the equilibrium path: the end of the self-weight stage, then each accepted
+    equilibrium of the loading (monotonic in delta); the moves and relaxations between them, and
+    the increments that failed, are left out."""
     selfweight = series[series["stage"] == "selfweight"].tail(1)
-    return pd.concat([selfweight, series[series["stage"] == "loading"]]).sort_values("delta_mm", kind="stable")
+    equilibria = series[series["stage"] == EQUILIBRIUM_STAGE]
+    return pd.concat([selfweight, equilibria]).sort_values("delta_mm", kind="stable")
 
 
 def _mark_du(ax, du_mm: float | None, legend: bool = False) -> None:

@@ -24,6 +24,7 @@ class JointElementContacts:
         self.geometry = geometry
         self.body_ids = body_ids
         self.shear = np.zeros(len(geometry.joints))
+        self.slip = np.zeros(len(geometry.joints))  # accumulated sliding beyond the Coulomb cap (m)
         self.last: JointForces | None = None
 
     def bind(self, pos0: np.ndarray, ori0: np.ndarray, callback: str) -> list[Any]:
@@ -53,6 +54,7 @@ class JointElementContacts:
 
         forces = self._evaluate()
         self.shear = forces.shear_force
+        self.slip += forces.plastic_slip
         self.last = forces
         add_force, add_torque = O.forces.addF, O.forces.addT
         for body_id, (fx, fy), tz in zip(self.body_ids, forces.block_force.tolist(),
@@ -65,13 +67,18 @@ class JointElementContacts:
         forces = self.last if self.last is not None else self._evaluate()
         return forces.point, forces.normal_force, forces.shear_force
 
+    def joint_slip(self) -> np.ndarray:
+        """Sliding each joint has accumulated beyond its Coulomb cap since the start (m)."""
+        return self.slip.copy()
+
     def snapshot(self) -> dict:
-        """The joints' history (shear forces) and last evaluation, for `restore`."""
-        return {"shear": self.shear.copy(), "last": self.last}
+        """The joints' history (shear forces, slip) and last evaluation, for `restore`."""
+        return {"shear": self.shear.copy(), "slip": self.slip.copy(), "last": self.last}
 
     def restore(self, snapshot: dict) -> None:
         """Back to a `snapshot` (the bodies are restored by the runner)."""
         self.shear = snapshot["shear"].copy()
+        self.slip = snapshot["slip"].copy()
         self.last = snapshot["last"]
 
     def unbalanced(self) -> float:

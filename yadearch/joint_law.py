@@ -58,6 +58,7 @@ class JointForces:
     shear_force: np.ndarray
     point: np.ndarray  # (n_joints, 2), NaN where the joint carries nothing
     compressed_length: np.ndarray
+    plastic_slip: np.ndarray  # |sliding| beyond the Coulomb cap in this evaluation (m)
     block_force: np.ndarray
     block_torque: np.ndarray
 
@@ -132,7 +133,11 @@ def joint_forces(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.ndar
     slip_y = vel[right, 1] + w_right * arm_rx - vel[left, 1] - w_left * arm_lx
     slip = (slip_x * ex + slip_y * ey) * dt
     cap = law.tan_friction * normal_force
-    shear_force = np.where(touching, np.clip(shear - law.ks * law.depth * length * slip, -cap, cap), 0.0)
+    stiffness = law.ks * law.depth * length
+    trial = shear - stiffness * slip
+    shear_force = np.where(touching, np.clip(trial, -cap, cap), 0.0)
+    excess = np.where(touching, np.abs(trial) - cap, 0.0)
+    plastic_slip = np.where(excess > 0.0, excess / np.where(stiffness > 0.0, stiffness, 1.0), 0.0)
 
     fx = normal_force * nx + shear_force * ex  # on the right block; the left one gets the opposite
     fy = normal_force * ny + shear_force * ey
@@ -142,7 +147,8 @@ def joint_forces(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.ndar
     torque = np.concatenate([arm_rx * fy - arm_ry * fx, arm_ly * fx - arm_lx * fy])
     block_torque = np.bincount(ends, torque, n)
     point = np.where(touching[:, None], np.stack([px, py], axis=1), np.nan)
-    return JointForces(normal_force, shear_force, point, length, block_force, block_torque)
+    return JointForces(normal_force, shear_force, point, length, plastic_slip, block_force,
+                       block_torque)
 
 
 def unbalanced_force(forces: JointForces, free: np.ndarray, weights: np.ndarray) -> float:

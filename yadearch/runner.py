@@ -1,14 +1,10 @@
-"""Run a case in YADE: self-weight, then the support settlement, then the search for du.
+"""Run a case in YADE: self-weight, then the support movement along the equilibrium path to collapse.
 
-Collapse criterion (rate-independent by construction): du is the smallest support displacement at
-which the arch, with the support held still, cannot find equilibrium. Continuous loading at
-`settlement_rate_mm_per_s` only locates collapse roughly (a block moving `trigger_speed_ratio` times
-faster than the support, or four hinges rotating `trigger_hinge_rotation_mrad` since self-weight);
-the runner then goes back to the last saved state that holds equilibrium and brackets du with
-quasi-static moves and hold tests (support fixed: equilibrium = unbalanced force below
-`equilibrium_tolerance` and blocks slower than `still_speed_mm_per_s` after `hold_min_s`; no
-equilibrium = a block moves `runaway_mm` or `hold_max_s` passes) until the bracket is narrower than
-`du_tolerance_mm`. du is the bracket's midpoint.
+The support advances by increments, each from the last equilibrium state: a move at the support
+speed, then a relaxation with the support held (`hold`). An increment that ends in equilibrium is
+accepted and the next one grows; one that does not bounds du from above and the increments halve
+(`solve.path`). du is the midpoint of the final bracket, both ends reached from the same equilibrium
+state, so the loading rate, damping and time step decide only how fast it is found (docs: theory).
 """
 
 from __future__ import annotations
@@ -27,10 +23,11 @@ from .errors import RunFailedError
 from .hinges import Hinge, hinge_rotation, hinges_at
 from .joints import joint_states
 from .scene import CALLBACK_NAME, ArchScene, body_states, build_scene
+from .solve.path import STABLE, PathResult, PathSettings, PathStep, follow_path
 from .stepping import SteppingGate
 
 SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
-CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, trigger, records)
+CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, equilibrium, records)
 ARRIVED_M = 1e-12  # the support is on target within this distance (m)
 DRIVER_LABEL = "yadearch_support_driver"
 DRIVER_CRUISE_PERIOD = 50  # steps between the support driver's calls while it cruises
@@ -38,14 +35,15 @@ DRIVER_CRUISE_PERIOD = 50  # steps between the support driver's calls while it c
 
 class SupportDriver:
     """Moves the driven support towards a target displacement with a trapezoidal speed profile
-    (accelerate over `ramp` of travel, cruise, decelerate to stop exactly on target)."""
+    (accelerate at `accel` up to `speed`, cruise, brake at `accel` to stop exactly on target; accel
+    0 = instantaneous)."""
 
-    def __init__(self, scene: ArchScene, direction: np.ndarray, speed: float, ramp: float):
+    def __init__(self, scene: ArchScene, direction: np.ndarray, speed: float, accel: float):
         self.scene = scene
         self.direction = (float(direction[0]), float(direction[1]))
         self.speed = speed
-        self.accel = speed * speed / (2.0 * ramp) if ramp > 0 else math.inf
-        self.ramp = ramp
+        self.accel = accel if accel > 0 else math.inf
+        self.ramp = speed * speed / (2.0 * self.accel)  # braking distance from full speed
         self._target = 0.0
         self.current_speed = 0.0
         self.origin = (0.0, 0.0)
@@ -140,7 +138,7 @@ class Runner:
         angle = units.radians(case.loading.settlement_direction_deg)
         direction = np.array([math.cos(angle), math.sin(angle), 0.0])
         self.driver = SupportDriver(self.scene, direction, units.mm(case.settlement_speed_mm_per_s),
-                                    units.mm(self.num.ramp_mm))
+                                    units.mm(self.num.support_acceleration_mm_per_s2))
         self._install_driver()
         self.gate = SteppingGate()
         self.gate.install()
@@ -150,14 +148,15 @@ class Runner:
         self.wall0 = time.time()
         self.steps_by_stage: dict[str, int] = {}
         self.total_steps = 0  # every step computed, including those a restore later went back on
-        self._next_joint_record = 0.0
         self._last_series_iter = -10**9
         self._last_progress = time.time()
-        self._saved: list[tuple[float, dict]] = []  # (support displacement, snapshot)
         self.weight = 0.0
-        self._hi_snapshot: dict = {}
-        self._last_rotation = np.zeros(0)  # hinge rotations of the last joint record (rad)
-        self._rotation_selfweight = np.zeros(0)
+        self._accepted: dict = {}  # snapshot of the last equilibrium state on the loading path
+        self._at_accepted = True  # the live scene is that state
+        self._hi_snapshot: dict = {}  # the state a failed increment ended in
+        self._last_equilibrium_hinges: list[dict] = []
+        self._last_joint_snapshot: dict = {}
+        self._friction: dict = {}
 
     # ---- scene plumbing -------------------------------------------------------------------
     def _install_driver(self) -> None:
@@ -212,10 +211,14 @@ class Runner:
         if not np.all(np.isfinite(pos)):
             raise RunFailedError(f"NaN in block positions at step {self._iter()}")
         points, normal, shear = self.scene.contacts.joint_contacts()
+        tan_friction = self.scene.stiffness.tan_friction
+        friction_use = np.divide(np.abs(shear), normal * tan_friction, out=np.zeros_like(shear),
+                                 where=normal > 0.0)
         js = joint_states(self.scene.geometry, self.scene.pos0, pos, rot, points)
         rotation = hinge_rotation(js.opening_intrados, js.opening_extrados, self.scene.geometry.thickness)
         hinges = hinges_at(rotation, self.num.hinge_rotation_mrad * 1e-3)
         return {"pos": pos, "rot": rot, "js": js, "normal": normal, "shear": shear,
+                "friction_use": friction_use, "slip": self.scene.contacts.joint_slip(),
                 "hinge_rotation": rotation}, hinges
 
     def _iter(self) -> int:
@@ -253,24 +256,42 @@ class Runner:
     def _record_joints(self, label: str | None = None) -> list[Hinge]:
         snap, hinges = self.joint_snapshot()
         js = snap["js"]
-        self._last_rotation = snap["hinge_rotation"]
         delta_mm = units.to_mm(self.delta())
         common = {"stage": self.stage, "step": self._iter(), "delta_mm": delta_mm}
         columns = zip(js.rotation.tolist(), units.to_mm(js.opening_intrados).tolist(),
                       units.to_mm(js.opening_extrados).tolist(), js.force_position.tolist(),
-                      snap["normal"].tolist(), snap["shear"].tolist())
+                      snap["normal"].tolist(), snap["shear"].tolist(), snap["friction_use"].tolist(),
+                      units.to_mm(snap["slip"]).tolist())
         self.records.joints.extend(
             {**common, "interface": k + 1, "rotation_rad": rotation, "opening_intrados_mm": intrados,
              "opening_extrados_mm": extrados, "force_position": position, "normal_force_N": normal,
-             "shear_force_N": shear}
-            for k, (rotation, intrados, extrados, position, normal, shear) in enumerate(columns))
+             "shear_force_N": shear, "friction_use": use, "slip_mm": slip}
+            for k, (rotation, intrados, extrados, position, normal, shear, use, slip)
+            in enumerate(columns))
         if label:
             self.records.snapshots[label] = {
                 "delta_mm": delta_mm, "step": self._iter(),
                 "pos_m": snap["pos"][:, :2].tolist(), "rot_rad": snap["rot"].tolist(),
                 "hinges": [h.to_json() for h in hinges],
             }
+        self._last_joint_snapshot = snap
         return hinges
+
+    def _track_friction(self, snap: dict) -> None:
+        """Keep the largest mobilised friction |T| / (N tan phi) and the largest accumulated slip
+        met in the equilibrium states, with their interfaces: friction can move du only where
+        some joint slides."""
+        use, slip = snap["friction_use"], snap["slip"]
+        k = int(np.argmax(use))
+        if use[k] > self._friction.get("max_friction_use", -1.0):
+            self._friction.update(max_friction_use=float(use[k]), friction_interface=k + 1,
+                                  friction_delta_mm=units.to_mm(self.delta()))
+        finite = np.nan_to_num(slip, nan=0.0)
+        j = int(np.argmax(finite))
+        self._friction.update(max_slip_mm=units.to_mm(float(slip[j])), slip_interface=j + 1)
+
+    def _friction_summary(self) -> dict:
+        return dict(self._friction)
 
     def _progress(self, extra: str = "", force: bool = False) -> None:
         from yade import O
@@ -358,7 +379,6 @@ class Runner:
         self.driver.zero_here()
         self._record_series(force=True)
         self._record_joints("selfweight")
-        self._rotation_selfweight = self._last_rotation
         left, right = self._reactions()
         crown = self.scene.geometry.crown_voussoir
         info = {
@@ -379,50 +399,6 @@ class Runner:
         """|sum of vertical support reactions / weight of the voussoirs - 1| (0 in static equilibrium)."""
         left, right = self._reactions()
         return abs((left[1] + right[1]) / self.weight - 1.0)
-
-    def _trigger(self, speed_history: list[float]) -> bool:
-        need = 3
-        return len(speed_history) >= need and min(speed_history[-need:]) > self.num.trigger_speed_ratio
-
-    def load_until_trigger(self) -> float | None:
-        """Continuous settlement, saving states every `probe_step_mm`, until collapse looks near."""
-        self.stage = "loading"
-        max_delta = units.mm(self.case.loading.max_settlement_mm)
-        self.driver.target = max_delta
-        probe = units.mm(self.num.probe_step_mm)
-        next_save = 0.0
-        ratios: list[float] = []
-        triggered = None
-        while True:
-            self._advance(CHECK_EVERY_STEPS)
-            self._check_finite()
-            delta = self.delta()
-            self._record_series()
-            if delta >= self._next_joint_record:
-                self._record_joints()
-                self._next_joint_record += units.mm(self.num.joint_record_every_mm)
-                open_hinges = hinges_at(self._last_rotation - self._rotation_selfweight,
-                                        self.num.trigger_hinge_rotation_mrad * 1e-3)
-                if len(open_hinges) >= 4:
-                    triggered = delta
-                    self.log(f"[{self.case.name}] four open hinges at delta={units.to_mm(delta):.2f} mm: "
-                             + " ".join(f"{h.interface}{h.side}" for h in open_hinges))
-            if delta >= next_save:
-                self._saved.append((delta, self.snapshot()))
-                next_save += probe
-            support_speed = self.driver.current_speed
-            if support_speed >= 0.5 * self.driver.speed:
-                ratios.append(float(self._voussoir_speeds().max()) / support_speed)
-                if triggered is None and self._trigger(ratios):
-                    triggered = delta
-                    self.log(f"[{self.case.name}] block speed {ratios[-1]:.1f}x the support's at "
-                             f"delta={units.to_mm(delta):.2f} mm")
-            self._progress(f"speed ratio {ratios[-1]:.2f}" if ratios else "")
-            if triggered is not None:
-                break
-            if self.driver.reached():
-                break
-        return triggered
 
     def hold(self, runaway: float | None = None, max_s: float | None = None,
              from_rest: bool = True) -> str:
@@ -478,83 +454,45 @@ class Runner:
             self._run_steps(CHECK_EVERY_STEPS // 5)
             self._check_finite()
 
-    def find_du(self, triggered: float) -> tuple[float, float, int]:
-        """Bracket du between a state in equilibrium and one without, both ends reached by
-        quasi-static moves.
-
-        First the highest saved loading state that holds equilibrium (strides doubling back from
-        the trigger, then bisection among saved states). A saved state that does not hold only
-        hints where du is: it was reached by the continuous loading, a path that can fail earlier
-        than the quasi-static one (kn 0.1778: a saved state at 41.2 mm failed, quasi-static moves
-        held to 41.9 mm). So from the stable state the support moves quasi-statically to the
-        lowest failed saved state (or `probe_step_mm` on) and holds, step after step, until a hold
-        fails; then bisection by moves from the last stable state.
-        Returns (lo, hi, number of holds). The state at the end of the failed hold at `hi` is kept
+    # ---- the equilibrium path (EquilibriumOracle) ------------------------------------------
+    def try_increment(self, target: float) -> str:
+        """From the last accepted equilibrium state, move the support to `target` and relax there
+        with the support held: 'stable', 'runaway' or 'timeout' (see `hold`). A failed state is kept
         for `collapse_state`."""
-        self.stage = "search"
-        saved = [s for s in self._saved if s[0] <= triggered]
-        holds = 0
-        lo_state = None
-        hi = math.inf
-
-        def judge(delta: float, verdict: str, what: str) -> bool:
-            """Log a hold; a stable one is the new lower end. True if it held."""
-            nonlocal lo_state, holds
-            holds += 1
-            self.log(f"[{self.case.name}] {what} at delta={units.to_mm(delta):.3f} mm: {verdict}")
-            if verdict == "stable" and (lo_state is None or self.delta() > lo_state[0]):
-                lo_state = (self.delta(), self.snapshot())
-            return verdict == "stable"
-
-        def held(index: int) -> bool:
-            delta, snapshot = saved[index]
-            self.restore(snapshot)
-            return judge(delta, self.hold(), "saved state")
-
-        def moved_and_held(target: float) -> bool:
-            """Quasi-static move from the last stable state to `target`, then a hold; a failed
-            hold is the new upper end, its final state kept for the collapse figure."""
-            nonlocal hi
-            self.restore(lo_state[1])
-            self.move_to(target)
-            if judge(target, self.hold(), "hold"):
-                return True
-            hi = target
+        if not self._at_accepted:
+            self.restore(self._accepted)
+        self.stage = "increment"
+        self.move_to(target)
+        self.stage = "relax"
+        verdict = self.hold()
+        self._at_accepted = False
+        if verdict != STABLE:
             self._hi_snapshot = self.snapshot()
-            return False
+        return verdict
 
-        unstable, stride, index = len(saved), 1, len(saved) - 1
-        while index >= 0 and not held(index):
-            unstable = index
-            if index == 0:
-                break
-            index = max(0, index - stride)
-            stride *= 2
-        if lo_state is None:
-            raise RunFailedError("no saved loading state holds equilibrium: collapse happened before "
-                                 "the first saved state; lower settlement_rate_mm_per_s or probe_step_mm")
-        stable = index
-        while unstable - stable > 1:
-            middle = (stable + unstable) // 2
-            if held(middle):
-                stable = middle
-            else:
-                unstable = middle
-        probe = units.mm(self.num.probe_step_mm)
-        hint = saved[unstable][0] if unstable < len(saved) else math.inf
-        while math.isinf(hi):
-            if units.to_mm(lo_state[0]) >= self.case.loading.max_settlement_mm:
-                return lo_state[0], math.inf, holds
-            if lo_state[0] < hint < lo_state[0] + probe:
-                # tried once: a move stops a hair short of its target, so a stable hold at the hint
-                # would otherwise leave lo just below it and send every next probe there again
-                target, hint = hint, math.inf
-            else:
-                target = lo_state[0] + probe
-            moved_and_held(target)
-        while hi - lo_state[0] > units.mm(self.num.du_tolerance_mm):
-            moved_and_held(0.5 * (lo_state[0] + hi))
-        return lo_state[0], hi, holds
+    def accept(self) -> None:
+        """The state the last increment relaxed to is the new equilibrium state: keep and record it."""
+        self._accepted = self.snapshot()
+        self._at_accepted = True
+        self.stage = "equilibrium"
+        self._record_series(force=True)
+        hinges = self._record_joints()
+        self._last_equilibrium_hinges = [h.to_json() for h in hinges]
+        self._track_friction(self._last_joint_snapshot)
+
+    def follow_equilibrium_path(self) -> PathResult:
+        """Load by increments relaxed to equilibrium until du is bracketed (`solve.path`)."""
+        num, mm = self.num, units.mm
+        settings = PathSettings(first_increment=mm(num.first_increment_mm),
+                                max_increment=mm(max(num.max_increment_mm, num.first_increment_mm)),
+                                growth=num.increment_growth, tolerance=mm(num.du_tolerance_mm),
+                                max_displacement=mm(self.case.loading.max_settlement_mm))
+        self._accepted, self._at_accepted = self.snapshot(), True
+        return follow_path(self, settings, on_step=self._log_increment)
+
+    def _log_increment(self, step: PathStep) -> None:
+        self.log(f"[{self.case.name}] increment {units.to_mm(step.start):7.3f} -> "
+                 f"{units.to_mm(step.target):7.3f} mm: {step.verdict} (step {self.total_steps})")
 
     def collapse_state(self) -> list[Hinge]:
         """Show the mechanism: continue the failed hold at du's upper bracket end until the arch
@@ -567,15 +505,18 @@ class Runner:
         return hinges
 
     def criterion_text(self) -> str:
-        """The collapse criterion with this case's numbers, for summary.json."""
+        """The loading protocol and collapse criterion with this case's numbers, for summary.json."""
         n = self.num
-        return ("du = midpoint of the bracket [last support displacement at which the arch, support "
-                "held still and blocks started from rest, finds equilibrium; first at which it does "
-                f"not], narrowed to < {n.du_tolerance_mm} mm. Equilibrium: after {n.hold_min_s} s, "
-                f"unbalanced force < {n.equilibrium_tolerance} and all blocks slower than "
-                f"{n.still_speed_mm_per_s} mm/s. No equilibrium: a block moves > {n.runaway_mm} mm, "
-                f"or {n.hold_max_s} s pass without equilibrium. Holds run at local damping "
-                f"{n.hold_damping}.")
+        return ("Loading by support increments (first {0} mm, growing x{1} up to {2} mm after each "
+                "equilibrium), each from the last equilibrium state: a move at the support speed, then "
+                "a relaxation with the support held and the blocks started from rest. Equilibrium: after "
+                f"{n.hold_min_s} s, unbalanced force < {n.equilibrium_tolerance} and all blocks slower "
+                f"than {n.still_speed_mm_per_s} mm/s. No equilibrium: a block moves > {n.runaway_mm} mm, "
+                f"or {n.hold_max_s} s pass without equilibrium. Relaxations run at local damping "
+                f"{n.hold_damping}. After a failed increment the increment halves (bisection); du = "
+                "midpoint of the bracket [last support displacement in equilibrium; first without, "
+                f"reached from that state], narrowed to < {n.du_tolerance_mm} mm."
+                ).format(n.first_increment_mm, n.increment_growth, n.max_increment_mm)
 
     def run(self) -> dict:
         """All stages, then YADE's simulation thread stopped; returns the summary dict (records are
@@ -589,25 +530,23 @@ class Runner:
         from yade import O
 
         selfweight = self.selfweight()
-        triggered = self.load_until_trigger()
+        path = self.follow_equilibrium_path()
         summary: dict = {"selfweight": selfweight}
-        if triggered is None:
-            self.log(f"[{self.case.name}] no collapse up to {self.case.loading.max_settlement_mm} mm")
-            summary.update(collapsed=False, du_mm=None, hinges_at_collapse=[], du_bracket_mm=None)
-            hinges = self._record_joints("end")
+        lo = units.to_mm(path.lower)
+        summary.update(increments=len(path.steps), equilibria=len(path.equilibria),
+                       last_equilibrium_mm=lo, hinges_last_equilibrium=self._last_equilibrium_hinges,
+                       friction=self._friction_summary())
+        if path.collapsed:
+            hinges = self.collapse_state()
+            du, hi = units.to_mm(path.du), units.to_mm(path.upper)
+            summary.update(collapsed=True, du_mm=du, du_bracket_mm=[lo, hi])
+            self.log(f"[{self.case.name}] du = {du:.2f} mm (no equilibrium at {hi:.2f}, "
+                     f"equilibrium at {lo:.2f})")
         else:
-            lo, hi, holds = self.find_du(triggered)
-            if math.isinf(hi):
-                summary.update(collapsed=False, du_mm=None, hinges_at_collapse=[], du_bracket_mm=None)
-                hinges = self._record_joints("end")
-            else:
-                hinges = self.collapse_state()
-                du = 0.5 * (lo + hi)
-                summary.update(collapsed=True, du_mm=units.to_mm(du),
-                               du_bracket_mm=[units.to_mm(lo), units.to_mm(hi)], holds=holds,
-                               trigger_delta_mm=units.to_mm(triggered))
-                self.log(f"[{self.case.name}] du = {units.to_mm(du):.2f} mm "
-                         f"(no equilibrium at {units.to_mm(hi):.2f}, equilibrium at {units.to_mm(lo):.2f})")
+            self.log(f"[{self.case.name}] no collapse up to {self.case.loading.max_settlement_mm} mm")
+            summary.update(collapsed=False, du_mm=None, du_bracket_mm=None)
+            self.stage = "end"
+            hinges = self._record_joints("end")
         summary["hinges_at_collapse"] = [{"interface": h.interface, "side": h.side} for h in hinges] \
             if summary["collapsed"] else []
         summary["hinges_detail"] = [h.to_json() for h in hinges]

@@ -1,8 +1,7 @@
 """The per-interface history of a run along its quasi-static path, as record-by-interface arrays.
 
-The path is the self-weight record, the loading records up to du and the final record ("collapse",
-one probe step past du). Loading records beyond du are left out: there the arch is already running
-away while the support keeps moving, so they are not equilibrium states.
+The path is the self-weight record, the equilibrium records of the loading (each accepted increment,
+all below du) and the final record ("collapse": the runaway from the first state past du).
 """
 
 from __future__ import annotations
@@ -14,7 +13,8 @@ import pandas as pd
 
 from ..hinges import hinge_rotation
 
-PATH_STAGES = ("selfweight", "loading", "collapse")
+EQUILIBRIUM_STAGE = "equilibrium"  # series.csv / joints.csv rows of the accepted loading states
+PATH_STAGES = ("selfweight", EQUILIBRIUM_STAGE, "collapse")
 
 
 @dataclass(frozen=True)
@@ -51,12 +51,11 @@ class JointHistory:
 
 
 def path_records(joints: pd.DataFrame, du_mm: float | None) -> pd.DataFrame:
-    """The rows of joints.csv on the quasi-static path, ordered: self-weight, loading (up to du when
-    the arch collapsed), then the final collapse record."""
+    """The rows of joints.csv on the quasi-static path, ordered: self-weight, the loading's
+    equilibria (up to du when the arch collapsed), then the final collapse record."""
     rows = joints[joints["stage"].isin(PATH_STAGES)]
-    has_collapse = (rows["stage"] == "collapse").any()
-    if du_mm is not None and has_collapse:
-        rows = rows[(rows["stage"] != "loading") | (rows["delta_mm"] <= du_mm)]
+    if du_mm is not None and (rows["stage"] == "collapse").any():
+        rows = rows[(rows["stage"] != EQUILIBRIUM_STAGE) | (rows["delta_mm"] <= du_mm)]
     order = rows["stage"].map({s: k for k, s in enumerate(PATH_STAGES)})
     return rows.assign(_order=order).sort_values(["_order", "step", "interface"], kind="stable")
 

@@ -1,0 +1,51 @@
+"""The robustness study's rows, comparisons and verdicts, on a results table built by hand."""
+
+from __future__ import annotations
+
+import pandas as pd
+
+from yadearch.case import preset
+from yadearch.robustness import VARIANTS, robustness_table, same_hinge_set, study_rows, verdicts
+
+
+def test_rows_cover_every_kn_and_variant_and_name_them():
+    rows = study_rows(preset("set2"), (0.1, 100.0))
+    assert len(rows) == 2 * len(VARIANTS)
+    names = {r["run"] for r in rows}
+    assert {"kn0.1_base", "kn100_timestep_x0.6", "kn100_friction_80"} <= names
+    small = next(r for r in rows if r["run"] == "kn0.1_timestep_x0.6")
+    assert small["timestep_safety"] == 0.6 * preset("set2").numerics.timestep_safety
+
+
+def test_hinges_may_move_one_interface_not_two_nor_change_side():
+    assert same_hinge_set("1E 9I 29E 56E", "1E 10I 28E 56E")
+    assert not same_hinge_set("1E 9I 29E 56E", "1E 11I 29E 56E")
+    assert not same_hinge_set("1E 9I 29E 56E", "1E 9E 29E 56E")
+    assert not same_hinge_set("1E 9I 29E 56E", "9I 29E 56E")
+
+
+def results(du: dict[str, float], hinges: dict[str, str], slip: float = 0.0) -> pd.DataFrame:
+    return pd.DataFrame([{"run": f"kn5.2_{v}", "kn_N_per_mm3": 5.2, "du_mm": d,
+                          "hinges": hinges.get(v, "1E 9I 29E 56E"), "max_slip_mm": slip,
+                          "max_friction_use": 0.3, "friction_interface": 1, "steps": 1000,
+                          "wall_s": 10.0, "status": "done"} for v, d in du.items()])
+
+
+def test_a_numerical_variant_beyond_one_percent_fails_the_kn():
+    du = {v: 88.0 for v in VARIANTS}
+    assert verdicts(robustness_table(results(du, {})))["verdict"].tolist() == ["PASS"]
+    du["damping_0.3"] = 89.0  # +1.1 %
+    assert verdicts(robustness_table(results(du, {})))["verdict"].tolist() == ["FAIL"]
+
+
+def test_friction_may_move_du_only_where_a_joint_slides():
+    du = {**{v: 88.0 for v in VARIANTS}, "friction_60": 95.0}
+    assert verdicts(robustness_table(results(du, {}, slip=0.0)))["verdict"].tolist() == ["FAIL"]
+    assert verdicts(robustness_table(results(du, {}, slip=0.5)))["verdict"].tolist() == ["PASS"]
+
+
+def test_a_moved_hinge_fails_the_kn():
+    du = {v: 88.0 for v in VARIANTS}
+    table = robustness_table(results(du, {"timestep_x0.6": "1E 12I 29E 56E"}))
+    assert not table.set_index("variant").loc["timestep_x0.6", "same_hinges"]
+    assert verdicts(table)["verdict"].tolist() == ["FAIL"]

@@ -1,0 +1,1 @@
+"""Rigid-block solvers of the arch in pure numpy/scipy (no YADE): the kn -> infinity reference."""

@@ -1,0 +1,124 @@
+"""Follow the equilibrium path of an arch under a support movement and bracket its collapse: pure
+logic over an injected equilibrium oracle (YADE in a run, a fake in the tests).
+
+The support advances by increments; each increment starts from the last equilibrium state and ends in
+a relaxation that either finds equilibrium (the state is accepted and the increment grows) or does not
+(the increment's end is an upper bound of du and the next increment is half the gap). du is therefore
+bracketed by two states reached from the same equilibrium state, never from a dynamic path
+(docs: the collapse criterion).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Callable, Protocol
+
+STABLE = "stable"
+RUNAWAY = "runaway"
+TIMEOUT = "timeout"
+VERDICTS = (STABLE, RUNAWAY, TIMEOUT)
+
+
+class EquilibriumOracle(Protocol):
+    """Moves the support from the last accepted equilibrium state and relaxes the arch there."""
+
+    def try_increment(self, target: float) -> str:
+        """Restore the last accepted state, move the support to `target`, relax: one of VERDICTS."""
+
+    def accept(self) -> None:
+        """Make the state the last `try_increment` ended in (a STABLE one) the accepted state."""
+
+
+@dataclass(frozen=True)
+class PathSettings:
+    """Increments of support displacement (any length unit, the oracle's): the first one, the
+    largest one, the growth factor after an accepted increment, the bracket width that ends the
+    search and the displacement at which the path stops without collapse."""
+
+    first_increment: float
+    max_increment: float
+    growth: float
+    tolerance: float
+    max_displacement: float
+
+    def __post_init__(self) -> None:
+        if not 0 < self.tolerance < self.first_increment <= self.max_increment:
+            raise ValueError("increments must satisfy 0 < tolerance < first <= max")
+        if self.growth < 1.0:
+            raise ValueError(f"growth must be >= 1, got {self.growth}")
+
+
+@dataclass(frozen=True)
+class PathStep:
+    """One increment tried: where it started and ended, and the relaxation's verdict."""
+
+    start: float
+    target: float
+    verdict: str
+
+
+@dataclass
+class PathResult:
+    """The bracket [lower, upper] of du (upper = inf: no collapse up to the maximum displacement)
+    and every increment tried, in order."""
+
+    lower: float = 0.0
+    upper: float = math.inf
+    upper_from: float = math.inf  # where the increment that failed at `upper` started
+    steps: list[PathStep] = field(default_factory=list)
+
+    @property
+    def collapsed(self) -> bool:
+        return math.isfinite(self.upper)
+
+    @property
+    def du(self) -> float:
+        """The bracket's midpoint (inf without collapse)."""
+        return 0.5 * (self.lower + self.upper) if self.collapsed else math.inf
+
+    @property
+    def equilibria(self) -> list[float]:
+        """Support displacements of the accepted equilibrium states, in order."""
+        return [s.target for s in self.steps if s.verdict == STABLE]
+
+
+def follow_path(oracle: EquilibriumOracle, settings: PathSettings,
+                on_step: Callable[[PathStep], None] | None = None) -> PathResult:
+    """Advance by increments until the bracket of du is narrower than `settings.tolerance` or the
+    support reaches `settings.max_displacement` in equilibrium.
+
+    The failure that closes the bracket must come from the bracket's own lower state: a failure
+    reached by a longer increment is tried again from there (an increment that crossed a change of
+    mechanism can fail dynamically where shorter ones hold); if it then holds, the path goes on."""
+    result = PathResult()
+    increment = settings.first_increment
+    while True:
+        narrow = result.upper - result.lower <= settings.tolerance
+        if narrow and result.upper_from >= result.lower:
+            break
+        if result.lower >= settings.max_displacement:
+            break
+        if narrow:
+            target = result.upper
+        elif result.collapsed:
+            target = 0.5 * (result.lower + result.upper)
+        else:
+            target = min(result.lower + increment, settings.max_displacement)
+        verdict = oracle.try_increment(target)
+        if verdict not in VERDICTS:
+            raise ValueError(f"oracle verdict must be one of {VERDICTS}, got {verdict!r}")
+        step = PathStep(result.lower, target, verdict)
+        result.steps.append(step)
+        if on_step is not None:
+            on_step(step)
+        if verdict == STABLE:
+            oracle.accept()
+            if target >= result.upper:  # the retried failure holds: the path goes on from here
+                result.upper, result.upper_from = math.inf, math.inf
+                increment = 2.0 * settings.tolerance
+            result.lower = target
+            increment = min(increment * settings.growth, settings.max_increment)
+        else:
+            result.upper, result.upper_from = target, result.lower
+    return result
