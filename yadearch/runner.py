@@ -41,14 +41,18 @@ class SupportDriver:
     def __init__(self, scene: ArchScene, direction: np.ndarray, speed: float, accel: float):
         self.scene = scene
         self.direction = (float(direction[0]), float(direction[1]))
-        self.speed = speed
         self.accel = accel if accel > 0 else math.inf
-        self.ramp = speed * speed / (2.0 * self.accel)  # braking distance from full speed
+        self.set_speed(speed)
         self._target = 0.0
         self.current_speed = 0.0
         self.origin = (0.0, 0.0)
         self._state = None
         self._engine = None
+
+    def set_speed(self, speed: float) -> None:
+        """The cruise speed of the next moves (m/s)."""
+        self.speed = speed
+        self.ramp = speed * speed / (2.0 * self.accel)  # braking distance from full speed
 
     def engine(self):
         """The PyRunner that calls `step`, labelled so that `bind` (and the benchmark) find it."""
@@ -137,7 +141,8 @@ class Runner:
         self.scene = build_scene(case)
         angle = units.radians(case.loading.settlement_direction_deg)
         direction = np.array([math.cos(angle), math.sin(angle), 0.0])
-        self.driver = SupportDriver(self.scene, direction, units.mm(case.settlement_speed_mm_per_s),
+        self._full_speed = units.mm(case.settlement_speed_mm_per_s)
+        self.driver = SupportDriver(self.scene, direction, self._full_speed,
                                     units.mm(self.num.support_acceleration_mm_per_s2))
         self._install_driver()
         self.gate = SteppingGate()
@@ -462,6 +467,10 @@ class Runner:
         if not self._at_accepted:
             self.restore(self._accepted)
         self.stage = "increment"
+        # every move lasts as long as the largest increment's: the short moves near collapse are
+        # gentle, and the arch ends them close to its equilibrium configuration
+        fraction = abs(target - self.delta()) / units.mm(self.num.max_increment_mm)
+        self.driver.set_speed(self._full_speed * min(1.0, fraction))
         self.move_to(target)
         self.stage = "relax"
         verdict = self.hold()
@@ -508,7 +517,8 @@ class Runner:
         """The loading protocol and collapse criterion with this case's numbers, for summary.json."""
         n = self.num
         return ("Loading by support increments (first {0} mm, growing x{1} up to {2} mm after each "
-                "equilibrium), each from the last equilibrium state: a move at the support speed, then "
+                "equilibrium), each from the last equilibrium state: a move (the largest at the support speed, "
+                "shorter ones slower in proportion, so that every move lasts as long), then "
                 "a relaxation with the support held and the blocks started from rest. Equilibrium: after "
                 f"{n.hold_min_s} s, unbalanced force < {n.equilibrium_tolerance} and all blocks slower "
                 f"than {n.still_speed_mm_per_s} mm/s. No equilibrium: a block moves > {n.runaway_mm} mm, "

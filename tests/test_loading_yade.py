@@ -1,0 +1,53 @@
+"""The equilibrium-path loading on a coarse arch in real YADE: every accepted state is a static
+equilibrium, and du does not move with the size of the loading increments."""
+
+from __future__ import annotations
+
+import pandas as pd
+import pytest
+
+from conftest import HAS_YADE, needs_yade
+from yadearch.case import preset
+from yadearch.hinges import same_hinges
+
+pytestmark = [needs_yade, pytest.mark.yade]
+
+COARSE = {"n_voussoirs": 9, "kn_N_per_mm3": 0.15, "progress_every_s": 1e9}
+DU_TOLERANCE = 0.01  # du may move by 1 % at most when only the numerics change
+
+
+def run(overrides: dict) -> tuple[dict, pd.DataFrame]:
+    from yadearch.runner import Runner
+
+    runner = Runner(preset("set1").with_overrides({**COARSE, **overrides}), log=lambda line: None)
+    summary = runner.run()
+    return summary, pd.DataFrame(runner.records.series)
+
+
+@pytest.fixture(scope="module")
+def base_run():
+    if not HAS_YADE:
+        pytest.skip("no YADE")
+    return run({})
+
+
+def test_every_accepted_state_of_the_loading_is_a_static_equilibrium(base_run):
+    summary, series = base_run
+    assert summary["collapsed"]
+    weight = summary["selfweight"]["arch_weight_N"]
+    path = series[series["stage"] == "equilibrium"]
+    assert len(path) == summary["equilibria"] >= 5
+    assert (path["delta_mm"].diff().dropna() > 0).all()  # monotonic along the support path
+    assert (path["delta_mm"] < summary["du_mm"]).all()
+    tolerance = preset("set1").numerics.equilibrium_tolerance
+    assert (path["unbalanced"] < tolerance).all()
+    carried = (path["left_Ry_N"] + path["right_Ry_N"]) / weight
+    assert carried.sub(1.0).abs().max() < 0.01  # the supports carry the weight: nothing accelerates
+    assert (path["left_Rx_N"] + path["right_Rx_N"]).abs().max() < 0.01 * path["left_Rx_N"].abs().min()
+
+
+def test_du_does_not_move_with_the_loading_increment(base_run):
+    summary, _ = base_run
+    halved, _ = run({"first_increment_mm": 1.0, "max_increment_mm": 2.5})
+    assert halved["du_mm"] == pytest.approx(summary["du_mm"], rel=DU_TOLERANCE)
+    assert same_hinges(halved["hinges_detail"], summary["hinges_detail"])
