@@ -10,25 +10,42 @@ from yadearch.solve.path import RUNAWAY, STABLE, TIMEOUT, PathSettings, follow_p
 
 
 class FakeArch:
-    """An arch that holds equilibrium up to `du`; moves from its accepted state longer than
-    `dynamic_reach` fail even below du (a dynamic overshoot), like a long increment across a
-    change of mechanism."""
+    """An arch that holds equilibrium up to `du`. Moves from its accepted state longer than
+    `dynamic_reach` fail even below du (a dynamic overshoot); a state reached by a move longer than
+    `creep_reach` is accepted still creeping, and every move from it fails until it is settled; a
+    relaxation judges states up to `du + false_margin` stable, but those beyond du never settle."""
 
-    def __init__(self, du: float, dynamic_reach: float = math.inf, verdict: str = RUNAWAY):
+    def __init__(self, du: float, dynamic_reach: float = math.inf, verdict: str = RUNAWAY,
+                 creep_reach: float = math.inf, false_margin: float = 0.0):
         self.du, self.dynamic_reach, self.verdict = du, dynamic_reach, verdict
-        self.accepted, self.reached = 0.0, 0.0
+        self.creep_reach, self.false_margin = creep_reach, false_margin
+        self.stack, self.reached, self.reached_from = [(0.0, True)], 0.0, 0.0
         self.tries: list[tuple[float, float]] = []
+
+    @property
+    def accepted(self) -> float:
+        return self.stack[-1][0]
 
     def try_increment(self, target: float) -> str:
         self.tries.append((self.accepted, target))
-        self.reached = target
-        if target > self.du or target - self.accepted > self.dynamic_reach:
+        self.reached, self.reached_from = target, self.accepted
+        if not self.stack[-1][1] or target > self.du + self.false_margin \
+                or target - self.accepted > self.dynamic_reach:
             return self.verdict
         return STABLE
 
     def accept(self) -> None:
-        assert self.reached <= self.du  # only equilibrium states are ever accepted
-        self.accepted = self.reached
+        assert self.reached <= self.du + self.false_margin
+        self.stack.append((self.reached, self.reached - self.reached_from <= self.creep_reach))
+
+    def settle(self) -> bool:
+        if self.accepted > self.du:
+            return False
+        self.stack[-1] = (self.accepted, True)
+        return True
+
+    def discard(self) -> None:
+        self.stack.pop()
 
 
 SETTINGS = PathSettings(first_increment=2.0, max_increment=5.0, growth=1.5, tolerance=0.1,
@@ -62,6 +79,22 @@ def test_the_failure_that_closes_the_bracket_comes_from_the_lower_state():
     assert result.upper - result.lower <= SETTINGS.tolerance
     start, target = arch.tries[-1]
     assert target - start <= SETTINGS.tolerance  # the last failure was a short move
+
+
+def test_a_state_accepted_while_creeping_is_settled_before_it_bounds_du():
+    """Every move from a state reached by a 5 mm increment fails until that state is settled."""
+    arch = FakeArch(88.29, creep_reach=3.0)
+    result = follow_path(arch, SETTINGS)
+    assert result.lower <= 88.29 < result.upper <= 88.29 + SETTINGS.tolerance
+
+
+def test_a_state_that_never_comes_to_rest_is_discarded():
+    """Relaxations judge states up to 0.5 mm past du stable; settling shows they are not."""
+    arch = FakeArch(40.0, false_margin=0.5)
+    result = follow_path(arch, SETTINGS)
+    assert result.lower <= 40.0 < result.upper
+    assert result.upper - result.lower <= SETTINGS.tolerance
+    assert all(e <= 40.0 + 0.5 for e in result.equilibria) and result.equilibria[-1] <= 40.0
 
 
 def test_timeouts_count_as_no_equilibrium():

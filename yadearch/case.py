@@ -126,6 +126,10 @@ class NumericsConfig:
                                                           "before it may end in equilibrium (s)"))
     still_speed_mm_per_s: float = field(default=0.5, metadata=_num(0, low_open=True,
                                         doc="blocks slower than this are at rest (mm/s)"))
+    settle_speed_mm_per_s: float = field(default=0.01, metadata={**_num(
+        0, low_open=True, doc="before du is bracketed, its lower state relaxes until every block is "
+        "slower than this (mm/s): a state accepted while still creeping fails every move near "
+        "collapse"), "predates": 1e9})
     runaway_mm: float = field(default=1.0, metadata=_num(0, low_open=True,
                               doc="block displacement at a fixed support that means no equilibrium (mm)"))
     first_increment_mm: float = field(default=2.0, metadata={**_num(

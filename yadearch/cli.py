@@ -115,6 +115,27 @@ def params() -> None:
         click.echo(f"{qualified:40s} {default:>10s}  {doc}")
 
 
+@cli.command()
+@with_case_options
+@click.option("--out", type=click.Path(file_okay=False), default="reports/limit", show_default=True,
+              help="folder that receives NAME.json, NAME.pdf and NAME.png")
+def limit(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
+          out: str) -> None:
+    """Rigid-block limit analysis, no YADE (kn is ignored): du_rigid, hinges, thrust-line figure."""
+    from .plotting.thrust_line import save_thrust_line
+    from .solve.limit import limit_analysis
+    from .solve.limit_result import write_result_json
+
+    case = resolve_case(preset_name, case_file, kn, settings)
+    result = limit_analysis(case)
+    path = write_result_json(result, case, Path(out) / f"{case.name}.json")
+    save_thrust_line(result, case, Path(out) / case.name)
+    du = "no collapse" if result.du_rigid_mm is None else f"{result.du_rigid_mm:.2f} mm"
+    new = f" (new: {' '.join(result.new_at_collapse)})" if result.new_at_collapse else ""
+    click.echo(f"{case.name}: du_rigid = {du}, {result.collapse_mode} on {' '.join(result.collapse_hinges)}"
+               f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}")
+
+
 cli.add_command(report)
 cli.add_command(sweep)
 cli.add_command(calibrate)

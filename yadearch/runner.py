@@ -30,6 +30,7 @@ SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight mean
 CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, equilibrium, records)
 ARRIVED_M = 1e-12  # the support is on target within this distance (m)
 DRIVER_LABEL = "yadearch_support_driver"
+SETTLE_TOLERANCE_FACTOR = 0.01  # a settled state's unbalanced force, relative to equilibrium_tolerance
 DRIVER_CRUISE_PERIOD = 50  # steps between the support driver's calls while it cruises
 
 
@@ -156,7 +157,7 @@ class Runner:
         self._last_series_iter = -10**9
         self._last_progress = time.time()
         self.weight = 0.0
-        self._accepted: dict = {}  # snapshot of the last equilibrium state on the loading path
+        self._accepted: list[dict] = []  # snapshots of the equilibrium states of the loading path
         self._at_accepted = True  # the live scene is that state
         self._hi_snapshot: dict = {}  # the state a failed increment ended in
         self._last_equilibrium_hinges: list[dict] = []
@@ -406,11 +407,13 @@ class Runner:
         return abs((left[1] + right[1]) / self.weight - 1.0)
 
     def hold(self, runaway: float | None = None, max_s: float | None = None,
-             from_rest: bool = True) -> str:
+             from_rest: bool = True, still_speed: float | None = None,
+             tolerance: float | None = None) -> str:
         """Keep the support still, blocks started from rest (or, `from_rest` false, in their motion).
 
-        'stable': after `hold_min_s`, unbalanced force below tolerance and every block slower than
-        `still_speed_mm_per_s` (a mechanism past its limit point would be accelerating by then);
+        'stable': after `hold_min_s`, unbalanced force below `tolerance` (default
+        `equilibrium_tolerance`) and every block slower than `still_speed` (m/s, default
+        `still_speed_mm_per_s`; a mechanism past its limit point would be accelerating by then);
         'runaway': a block moved `runaway_mm`; 'timeout': neither within `hold_max_s`."""
         from yade import O
 
@@ -421,7 +424,8 @@ class Runner:
         runaway = runaway if runaway is not None else units.mm(self.num.runaway_mm)
         max_steps = int((max_s if max_s is not None else self.num.hold_max_s) / O.dt)
         min_steps = int(self.num.hold_min_s / O.dt)
-        still_speed = units.mm(self.num.still_speed_mm_per_s)
+        still_speed = still_speed if still_speed is not None else units.mm(self.num.still_speed_mm_per_s)
+        tolerance = tolerance if tolerance is not None else self.num.equilibrium_tolerance
         start_pos = self._voussoir_positions()
         start = O.iter
         while O.iter - start < max_steps:
@@ -430,9 +434,9 @@ class Runner:
             self._progress(f"holding: max block move {units.to_mm(moved):.3f} mm")
             if moved > runaway:
                 return "runaway"
-            if O.iter - start >= min_steps and self._unbalanced() < self.num.equilibrium_tolerance \
+            if O.iter - start >= min_steps and self._unbalanced() < tolerance \
                     and self._voussoir_speeds().max() < still_speed:
-                return "stable"
+                return STABLE
         return "timeout"
 
     def _set_damping(self, damping: float) -> None:
@@ -465,7 +469,7 @@ class Runner:
         with the support held: 'stable', 'runaway' or 'timeout' (see `hold`). A failed state is kept
         for `collapse_state`."""
         if not self._at_accepted:
-            self.restore(self._accepted)
+            self.restore(self._accepted[-1])
         self.stage = "increment"
         # every move lasts as long as the largest increment's: the short moves near collapse are
         # gentle, and the arch ends them close to its equilibrium configuration
@@ -481,13 +485,35 @@ class Runner:
 
     def accept(self) -> None:
         """The state the last increment relaxed to is the new equilibrium state: keep and record it."""
-        self._accepted = self.snapshot()
+        self._accepted.append(self.snapshot())
         self._at_accepted = True
         self.stage = "equilibrium"
         self._record_series(force=True)
         hinges = self._record_joints()
         self._last_equilibrium_hinges = [h.to_json() for h in hinges]
         self._track_friction(self._last_joint_snapshot)
+
+    def settle(self) -> bool:
+        """Relax the accepted state, support held and blocks in their motion, until every block is
+        slower than `settle_speed_mm_per_s` and the unbalanced force below SETTLE_TOLERANCE_FACTOR x
+        `equilibrium_tolerance`; keep the settled state. False if it runs away or times out."""
+        if not self._at_accepted:
+            self.restore(self._accepted[-1])
+        self.stage = "settle"
+        verdict = self.hold(from_rest=False, still_speed=units.mm(self.num.settle_speed_mm_per_s),
+                            tolerance=SETTLE_TOLERANCE_FACTOR * self.num.equilibrium_tolerance)
+        self.log(f"[{self.case.name}] settling the state at {units.to_mm(self.delta()):.3f} mm: {verdict}")
+        if verdict != STABLE:
+            self._at_accepted = False
+            return False
+        self._accepted[-1] = self.snapshot()
+        self._at_accepted = True
+        return True
+
+    def discard(self) -> None:
+        """Drop the last accepted state (it did not settle): the one before is the accepted one."""
+        self._accepted.pop()
+        self._at_accepted = False
 
     def follow_equilibrium_path(self) -> PathResult:
         """Load by increments relaxed to equilibrium until du is bracketed (`solve.path`)."""
@@ -496,7 +522,7 @@ class Runner:
                                 max_increment=mm(max(num.max_increment_mm, num.first_increment_mm)),
                                 growth=num.increment_growth, tolerance=mm(num.du_tolerance_mm),
                                 max_displacement=mm(self.case.loading.max_settlement_mm))
-        self._accepted, self._at_accepted = self.snapshot(), True
+        self._accepted, self._at_accepted = [self.snapshot()], True
         return follow_path(self, settings, on_step=self._log_increment)
 
     def _log_increment(self, step: PathStep) -> None:

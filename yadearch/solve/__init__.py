@@ -1,1 +1,1 @@
-"""Rigid-block solvers of the arch in pure numpy/scipy (no YADE): the kn -> infinity reference."""
+"""Pure-Python solvers (no YADE): rigid-block limit analysis (limit*, rigid) and loading-path logic (path)."""

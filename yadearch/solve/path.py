@@ -3,9 +3,10 @@ logic over an injected equilibrium oracle (YADE in a run, a fake in the tests).
 
 The support advances by increments; each increment starts from the last equilibrium state and ends in
 a relaxation that either finds equilibrium (the state is accepted and the increment grows) or does not
-(the increment's end is an upper bound of du and the next increment is half the gap). du is therefore
-bracketed by two states reached from the same equilibrium state, never from a dynamic path
-(docs: the collapse criterion).
+(the increment's end is an upper bound of du and the next increment is half the gap). Before the
+bracket closes, its lower state is settled completely and the failure is tried again from there. du
+is therefore bracketed by two states reached from the same settled equilibrium state, never from a
+dynamic path (docs/numerics.md).
 """
 
 from __future__ import annotations
@@ -28,6 +29,13 @@ class EquilibriumOracle(Protocol):
 
     def accept(self) -> None:
         """Make the state the last `try_increment` ended in (a STABLE one) the accepted state."""
+
+    def settle(self) -> bool:
+        """Relax the accepted state until it is completely at rest and keep that as the accepted
+        state; False if it does not come to rest (it was not an equilibrium)."""
+
+    def discard(self) -> None:
+        """Drop the accepted state: the one accepted before it is the accepted state again."""
 
 
 @dataclass(frozen=True)
@@ -67,6 +75,7 @@ class PathResult:
     upper: float = math.inf
     upper_from: float = math.inf  # where the increment that failed at `upper` started
     steps: list[PathStep] = field(default_factory=list)
+    equilibria: list[float] = field(default_factory=list)  # accepted displacements, in order
 
     @property
     def collapsed(self) -> bool:
@@ -77,26 +86,37 @@ class PathResult:
         """The bracket's midpoint (inf without collapse)."""
         return 0.5 * (self.lower + self.upper) if self.collapsed else math.inf
 
-    @property
-    def equilibria(self) -> list[float]:
-        """Support displacements of the accepted equilibrium states, in order."""
-        return [s.target for s in self.steps if s.verdict == STABLE]
-
 
 def follow_path(oracle: EquilibriumOracle, settings: PathSettings,
                 on_step: Callable[[PathStep], None] | None = None) -> PathResult:
     """Advance by increments until the bracket of du is narrower than `settings.tolerance` or the
     support reaches `settings.max_displacement` in equilibrium.
 
-    The failure that closes the bracket must come from the bracket's own lower state: a failure
-    reached by a longer increment is tried again from there (an increment that crossed a change of
-    mechanism can fail dynamically where shorter ones hold); if it then holds, the path goes on."""
+    The failure that closes the bracket must come from the bracket's own lower state, settled
+    completely: a failure reached by a longer move, or from a state that was still creeping, is tried
+    again from the settled state (near collapse, a state accepted while creeping by a few hundredths
+    of a millimetre fails every move, where the same state at rest holds further); if the arch then
+    holds, the path goes on. A lower state that does not come to rest is discarded."""
     result = PathResult()
     increment = settings.first_increment
+    settled = False  # the accepted state has been settled completely
+    firm_upper = math.inf  # the lowest discarded state: no equilibrium there, whatever the path
     while True:
         narrow = result.upper - result.lower <= settings.tolerance
-        if narrow and result.upper_from >= result.lower:
-            break
+        if narrow and (result.upper_from >= result.lower or result.upper >= firm_upper):
+            if settled or not result.equilibria:
+                break
+            settled = True
+            if oracle.settle():
+                if result.upper < firm_upper:
+                    result.upper_from = -math.inf  # try the failure again from the settled state
+                continue
+            oracle.discard()  # not an equilibrium: an upper bound, whatever the path
+            firm_upper = result.equilibria.pop()
+            result.lower = result.equilibria[-1] if result.equilibria else 0.0
+            result.upper, result.upper_from = firm_upper, result.lower
+            settled = False
+            continue
         if result.lower >= settings.max_displacement:
             break
         if narrow:
@@ -114,8 +134,10 @@ def follow_path(oracle: EquilibriumOracle, settings: PathSettings,
             on_step(step)
         if verdict == STABLE:
             oracle.accept()
+            settled = False
+            result.equilibria.append(target)
             if target >= result.upper:  # the retried failure holds: the path goes on from here
-                result.upper, result.upper_from = math.inf, math.inf
+                result.upper, result.upper_from = firm_upper, math.inf
                 increment = 2.0 * settings.tolerance
             result.lower = target
             increment = min(increment * settings.growth, settings.max_increment)

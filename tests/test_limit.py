@@ -1,0 +1,199 @@
+"""Rigid-block limit analysis (no YADE): a hand-solved arch, equilibrium and exact kinematics of the
+returned state, Milankovitch's minimum thickness, symmetry, and the paper arch's collapse."""
+
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from yadearch.case import ArchCase, preset
+from yadearch.cli import main
+from yadearch.geometry import block_volume, segmental_arch
+from yadearch.solve.limit import limit_analysis, stands
+
+TOLERANCE_MM = 1e-3  # limit_analysis's default bisection width
+DEM_STIFFEST_DU_MM = 109.07  # reports/kn-sweep/kn100: DEM du at kn = 100 N/mm3, 1E 8I 31E 56E
+
+
+def arch_case(**overrides) -> ArchCase:
+    return preset("set2").with_overrides(overrides) if overrides else preset("set2")
+
+
+@pytest.fixture(scope="module")
+def paper():
+    case = arch_case()
+    return case, limit_analysis(case)
+
+
+@pytest.fixture(scope="module")
+def coarse():
+    """A 15-voussoir version of the paper arch: the same mechanics, ten times fewer unknowns."""
+    case = arch_case(n_voussoirs=15)
+    return case, limit_analysis(case)
+
+
+def test_two_voussoir_semicircle_stands_down_to_the_hand_computed_friction_angle():
+    # Two trapezoidal voussoirs (chords of the intrados r_i = 1000 and extrados r_o = 1200 mm) on
+    # horizontal springings. By symmetry of the convex feasible set, a symmetric equilibrium exists
+    # if any does: a horizontal crown thrust H and, at each springing, (H, W) with W a block's weight.
+    # The left block's centroid, on its 135 deg axis of symmetry, at x_G = -(r_i + (r_o - r_i)
+    # (r_i + 2 r_o) / (3 (r_i + r_o))) / 2 = -551.515 mm. Moments about the springing point x_s:
+    # H y_c = W (x_G - x_s), least with the crown thrust at the extrados (y_c = r_o) and the springing
+    # force at the intrados (x_s = -r_i): H_min / W = (x_G + r_i) / r_o = 0.37374. The springing joint
+    # is horizontal, so the arch stands iff tan(phi) >= H_min / W: phi_min = 20.4926 deg.
+    r_i, r_o = 1000.0, 1200.0
+    x_g = -(r_i + (r_o - r_i) * (r_i + 2 * r_o) / (3 * (r_i + r_o))) / 2
+    phi_min = math.degrees(math.atan((x_g + r_i) / r_o))
+    assert phi_min == pytest.approx(20.4926, abs=1e-4)
+
+    def two_blocks(friction_deg: float) -> ArchCase:
+        return arch_case(n_voussoirs=2, embrace_deg=180.0, internal_radius_mm=r_i, thickness_mm=r_o - r_i,
+                         friction_deg=friction_deg)
+
+    assert stands(two_blocks(phi_min + 0.02))
+    assert not stands(two_blocks(phi_min - 0.02))
+
+
+@pytest.mark.parametrize("n_voussoirs", [120])
+def test_semicircle_minimum_thickness_is_milankovitch(n_voussoirs):
+    # Milankovitch (1907), Heyman (2009): a semicircular arch under self-weight with radial joints
+    # needs t / R >= 0.1075 (R the centre-line radius); enough friction that only the thrust line
+    # decides.
+    def semicircle(t_over_r: float) -> ArchCase:
+        radius = 1000.0
+        t = t_over_r * radius
+        return arch_case(n_voussoirs=n_voussoirs, embrace_deg=180.0, internal_radius_mm=radius - t / 2,
+                         thickness_mm=t, friction_deg=60.0)
+
+    assert stands(semicircle(1.02 * 0.1075))
+    assert not stands(semicircle(0.98 * 0.1075))
+
+
+def _placed(case: ArchCase, result) -> tuple[list[np.ndarray], np.ndarray, np.ndarray]:
+    """Independently of the solver: block outlines (mm) as the result places them, centroids, weights."""
+    g = case.geometry
+    geometry = segmental_arch(g.n_voussoirs, g.embrace_deg, g.internal_radius_mm, g.thickness_mm,
+                              g.depth_mm, g.support_length_mm)  # in mm here
+    outlines, centroids = [], []
+    for vertices, rot, shift in zip(geometry.blocks, result.rotation_rad, result.shift_mm):
+        c, s = math.cos(rot), math.sin(rot)
+        xy = vertices[:4, :2] @ np.array([[c, s], [-s, c]]) + np.asarray(shift)
+        outlines.append(xy)
+        cross = xy[:, 0] * np.roll(xy[:, 1], -1) - np.roll(xy[:, 0], -1) * xy[:, 1]
+        centroids.append([((xy[:, k] + np.roll(xy[:, k], -1)) * cross).sum() / (3 * cross.sum())
+                          for k in (0, 1)])
+    unit_weight = case.material.density_g_per_cm3 * 1e-6 * case.loading.gravity_m_per_s2  # N / mm3
+    weights = np.array([unit_weight * block_volume(b) for b in geometry.blocks])
+    return outlines, np.array(centroids), weights
+
+
+def test_returned_forces_balance_every_voussoir_and_are_admissible(paper):
+    case, result = paper
+    _, centroids, weights = _placed(case, result)
+    n = case.geometry.n_voussoirs
+    load = np.zeros((n + 2, 3))  # force x, y (N) and moment about the origin (N mm) on each block
+    load[:, 1] = -weights
+    load[:, 2] = -weights * centroids[:, 0]
+    for f in result.forces:
+        normal = np.array(f.normal)
+        force = (f.n_intrados + f.n_extrados) * normal + f.shear * np.array([-normal[1], normal[0]])
+        moment = f.thrust_mm[0] * force[1] - f.thrust_mm[1] * force[0]
+        load[f.interface] += [*force, moment]  # on the right block
+        load[f.interface - 1] -= [*force, moment]
+    scale = weights[1:-1].min()
+    assert np.abs(load[1:-1, :2]).max() < 1e-9 * scale
+    assert np.abs(load[1:-1, 2]).max() < 1e-9 * scale * case.geometry.internal_radius_mm
+    assert min(min(f.n_intrados, f.n_extrados) for f in result.forces) > -1e-9 * scale
+    assert result.max_friction_use <= 1.0 + 1e-9
+    for hinge in (h for h in result.hinge_history if h.to_mm is None):  # no force at an open corner
+        f = result.forces[hinge.interface - 1]
+        assert (f.n_extrados if hinge.side == "I" else f.n_intrados) == 0.0
+    left, right = np.array(result.reactions_N["left"]), np.array(result.reactions_N["right"])
+    assert (left + right)[1] == pytest.approx(weights[1:-1].sum(), rel=1e-12)
+
+
+def test_linkage_is_closed_exactly_without_drift(paper):
+    case, result = paper
+    outlines, _, _ = _placed(case, result)
+    n = case.geometry.n_voussoirs
+    angle = math.radians(case.loading.settlement_direction_deg)
+    assert result.rotation_rad[-1] == 0.0 and result.rotation_rad[0] == 0.0
+    assert np.allclose(result.shift_mm[-1], [result.du_rigid_mm * math.cos(angle),
+                                             result.du_rigid_mm * math.sin(angle)], rtol=0, atol=1e-9)
+    pivots = {h.interface: h.side for h in result.hinge_history if h.to_mm is None}
+    for k in range(1, n + 2):  # outline vertices (geometry.py): a voussoir's 0 I and 3 E on its left
+        left, right = outlines[k - 1], outlines[k]  # joint, 1 I and 2 E on its right; a support's 0 I, 1 E
+        left_i, left_e = (left[0], left[1]) if k == 1 else (left[1], left[2])
+        right_i, right_e = (right[0], right[1]) if k == n + 1 else (right[0], right[3])
+        separation = {"I": np.linalg.norm(left_i - right_i), "E": np.linalg.norm(left_e - right_e)}
+        touching = [side for side, d in separation.items() if d < 1e-9]
+        assert touching == ([pivots[k]] if k in pivots else ["I", "E"]), k
+
+
+def test_mirrored_support_motion_gives_the_mirrored_collapse(coarse):
+    # Raising the right support by d = lowering the left by d, then a rigid translation: the mirror
+    # image of the settlement case. Interface k mirrors to n + 2 - k, pivot sides are kept.
+    case, down = coarse
+    up = limit_analysis(case.with_overrides({"settlement_direction_deg": 90.0}))
+    mirror = case.geometry.n_voussoirs + 2
+    assert up.du_rigid_mm == pytest.approx(down.du_rigid_mm, abs=2 * TOLERANCE_MM)
+    mirrored = sorted(f"{mirror - int(h[:-1])}{h[-1]}" for h in down.collapse_hinges)
+    assert sorted(up.collapse_hinges) == mirrored
+
+
+def test_limit_does_not_depend_on_the_step(coarse):
+    case, result = coarse
+    coarser = limit_analysis(case, step_mm=2.0)
+    assert coarser.du_rigid_mm == pytest.approx(result.du_rigid_mm, abs=2 * TOLERANCE_MM)
+    assert coarser.collapse_hinges == result.collapse_hinges
+
+
+def test_low_friction_arch_slides_at_full_friction_use(coarse):
+    case, hinging = coarse
+    result = limit_analysis(case.with_overrides({"friction_deg": 10.0}))
+    assert result.collapse_mode == "sliding"
+    assert result.du_rigid_mm < hinging.du_rigid_mm
+    assert result.max_friction_use == pytest.approx(1.0, abs=1e-3)
+
+
+def test_paper_arch_collapses_on_four_hinges_the_fourth_at_the_fixed_springing(paper):
+    # Under a settlement of the right support a three-hinge mechanism follows it from the start: an
+    # extrados hinge at the moving springing (56E), an intrados hinge on the left, an extrados hinge on
+    # the right of the crown (the DEM and the paper: 9I / 8I, 29-31E, 56E). Collapse is the fourth hinge,
+    # at the fixed springing's extrados (1E), turning the arch into a four-bar mechanism. The DEM's du
+    # grows with kn (reports/kn-sweep), so the rigid limit is not below its stiffest run, and should be
+    # near it.
+    case, result = paper
+    n = case.geometry.n_voussoirs
+    assert result.collapse_mode == "hinging"
+    assert result.new_at_collapse == ("1E",)
+    assert len(result.collapse_hinges) == 4
+    first, left, right, last = result.collapse_hinges
+    assert (first, last) == ("1E", f"{n + 1}E")
+    assert left.endswith("I") and int(left[:-1]) < n // 2 + 1
+    assert right.endswith("E") and int(right[:-1]) > n // 2 + 1
+    from_start = {h.label for h in result.hinge_history if h.from_mm == 0.0}
+    assert {left, f"{n + 1}E"} <= from_start
+    assert DEM_STIFFEST_DU_MM <= result.du_rigid_mm <= 1.1 * DEM_STIFFEST_DU_MM
+
+
+def test_cli_writes_json_and_figure(tmp_path, capsys):
+    out = tmp_path / "limit"
+    assert main(["limit", "--preset", "set2", "--set", "n_voussoirs=9", "--set", "name=coarse",
+                 "--out", str(out)]) == 0
+    data = json.loads((out / "coarse.json").read_text())
+    assert data["du_rigid_mm"] > 0 and data["hinge_history"]
+    assert (out / "coarse.pdf").stat().st_size > 0 and (out / "coarse.png").stat().st_size > 0
+    assert sorted(p.name for p in out.iterdir()) == ["coarse.json", "coarse.pdf", "coarse.png"]
+    assert "du_rigid" in capsys.readouterr().out
+
+
+def test_imports_without_yade():
+    code = ("import sys, yadearch.solve.limit; "
+            "sys.exit(any(m == 'yade' or m.startswith('yade.') for m in sys.modules))")
+    assert subprocess.run([sys.executable, "-c", code]).returncode == 0

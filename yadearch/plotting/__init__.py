@@ -1,0 +1,1 @@
+"""Figures of the pure-Python solvers (no YADE, no run folder needed)."""

@@ -1,0 +1,112 @@
+"""The thrust-line figure of a rigid-block limit analysis: the blocks placed at du_rigid over the
+undeformed arch, the line of the contact resultants through every interface, the hinges labelled.
+
+House style of `yadearch.figures` (8 pt, journal column, constrained layout, matplotlib's Figure
+without pyplot, so no backend is chosen at import).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+from matplotlib.patches import Polygon
+
+from ..case import ArchCase
+from ..figures import AXIS_MARGINS_CM, COLUMN_CM, HINGE_COLOURS, LABEL_ROOM, PNG_DPI, STYLE, new_figure
+from ..geometry import ArchGeometry
+from ..solve.limit_result import LimitResult, write_atomically
+from ..solve.rigid import case_geometry, rotate
+
+M_TO_MM = 1e3
+VOUSSOIR_COLOUR, SUPPORT_COLOUR, THRUST_COLOUR = "#EADDCA", "0.45", "#D55E00"
+UNDEFORMED_STYLE = {"fill": False, "ec": "0.65", "lw": 0.4, "ls": "--", "zorder": 1}
+LABEL_OFFSET_PT = 5
+
+
+def placed_outlines(result: LimitResult, geometry: ArchGeometry) -> list[np.ndarray]:
+    """Front-face outline (mm) of every block as the result places it at du_rigid."""
+    outlines = []
+    for vertices, rot, shift in zip(geometry.blocks, result.rotation_rad, result.shift_mm):
+        front = vertices[: len(vertices) // 2, :2] * M_TO_MM
+        outlines.append(rotate(front, rot) + np.asarray(shift))
+    return outlines
+
+
+def hinge_points(result: LimitResult) -> dict[str, np.ndarray]:
+    """Pivot corner (mm) of each hinge to mark: the collapse mechanism's, else those still active."""
+    labels = result.collapse_hinges or tuple(h.label for h in result.hinge_history if h.to_mm is None)
+    points = {}
+    for label in labels:
+        force = result.forces[int(label[:-1]) - 1]
+        points[label] = np.asarray(force.intrados_mm if label[-1] == "I" else force.extrados_mm)
+    return points
+
+
+def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchCase,
+                     ax: Axes | None = None) -> Figure:
+    """Draw the arch at du_rigid with its thrust line and hinges into `ax` (a new column-wide figure
+    if None); returns the figure."""
+    geometry = geometry_or_case
+    if not isinstance(geometry, ArchGeometry):
+        geometry = case_geometry(geometry)
+    with matplotlib.rc_context(STYLE):
+        outlines = placed_outlines(result, geometry)
+        undeformed = [b[: len(b) // 2, :2] * M_TO_MM for b in geometry.blocks]
+        all_xy = np.vstack(undeformed + outlines)
+        width = np.ptp(all_xy[:, 0])
+        xlim = (all_xy[:, 0].min() - LABEL_ROOM * width, all_xy[:, 0].max() + LABEL_ROOM * width)
+        ylim = (all_xy[:, 1].min() - 0.03 * width, all_xy[:, 1].max() + 0.10 * width)
+        if ax is None:
+            axes_width = COLUMN_CM - AXIS_MARGINS_CM[0]
+            fig = new_figure(height_cm=axes_width * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1] + 0.4)
+            ax = fig.add_subplot()
+        _draw(ax, result, undeformed, outlines)
+        ax.set_aspect("equal")
+        ax.set_xlim(*xlim)
+        ax.set_ylim(*ylim)
+        ax.set_xlabel("x (mm)")
+        ax.set_ylabel("y (mm)")
+        du = result.du_rigid_mm
+        state = rf"$d_{{u,\mathrm{{rigid}}}}$ = {du:.2f} mm" if du is not None else "no collapse"
+        ax.set_title(f"{result.name}: rigid blocks, {state}")
+    return ax.figure
+
+
+def _draw(ax: Axes, result: LimitResult, undeformed: list[np.ndarray], outlines: list[np.ndarray]) -> None:
+    """Blocks, thrust line, hinges and legend."""
+    last = len(outlines) - 1
+    for b, (before, after) in enumerate(zip(undeformed, outlines)):
+        ax.add_patch(Polygon(before, closed=True, **UNDEFORMED_STYLE))
+        ax.add_patch(Polygon(after, closed=True, fc=SUPPORT_COLOUR if b in (0, last) else VOUSSOIR_COLOUR,
+                             ec="0.15", lw=0.3, zorder=2))
+    thrust = np.array([f.thrust_mm for f in result.forces])
+    ax.plot(thrust[:, 0], thrust[:, 1], color=THRUST_COLOUR, lw=0.9, marker="o", ms=1.2, zorder=3,
+            label="thrust line")
+    centre = np.zeros(2)  # the intrados circle's centre: labels go radially out (E) or in (I)
+    for k, (label, point) in enumerate(hinge_points(result).items()):
+        colour = HINGE_COLOURS[k % len(HINGE_COLOURS)]
+        outward = (point - centre) / np.linalg.norm(point - centre)
+        direction = outward if label.endswith("E") else -outward
+        text = f"{label} (new)" if label in result.new_at_collapse else label
+        ax.plot(*point, "o", ms=4, mfc=colour, mec="white", mew=0.5, zorder=4)
+        ax.annotate(text, point, xytext=direction * LABEL_OFFSET_PT, textcoords="offset points",
+                    ha="left" if direction[0] > 0 else "right", va="bottom" if direction[1] > 0 else "top",
+                    color=colour, fontweight="bold", zorder=5)
+    ax.plot([], [], color="0.65", lw=0.6, ls="--", label="undeformed")
+    ax.add_patch(Polygon(np.zeros((3, 2)), fc=VOUSSOIR_COLOUR, ec="0.15", lw=0.3, label="at the limit"))
+    ax.legend(loc="lower center", ncols=1, handlelength=1.5)
+
+
+def save_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchCase,
+                     stem: Path) -> tuple[Path, Path]:
+    """The thrust-line figure as `stem`.pdf (vector) and `stem`.png (300 dpi), each written atomically."""
+    fig = plot_thrust_line(result, geometry_or_case)
+    with matplotlib.rc_context(STYLE):  # font embedding and dpi are read when saving
+        pdf = write_atomically(stem.with_suffix(".pdf"), lambda tmp: fig.savefig(tmp, format="pdf"))
+        png = write_atomically(stem.with_suffix(".png"),
+                               lambda tmp: fig.savefig(tmp, format="png", dpi=PNG_DPI))
+    return pdf, png

@@ -1,0 +1,152 @@
+"""The two linear programmes of rigid-block limit analysis at one placement (scipy's HiGHS).
+
+Static: normal forces N >= 0 at the touching corners of every interface and one shear T per
+interface with |T| <= tan(phi) (N_I + N_E) balance each voussoir's weight (3 equations per block);
+feasible = an admissible equilibrium exists. Kinematic: the voussoirs' velocities for a unit support
+speed that make the weights' potential energy fall fastest, with no interpenetration (gap rate >= 0)
+and no sliding at touching corners. Both use one equilibrium matrix A (rows: force x, y and moment
+about the origin of each block; columns: N_I, N_E and T of each interface): the gap and slip rates of
+a velocity field u are A^T u, so by LP duality the kinematic optimum is a quasi-static state, the
+mechanism and its complementary forces (force only where a corner stays closed).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import linprog
+
+from .rigid import EXTRADOS, INTRADOS, Contacts, LimitError, Pivot, Placement, RigidArch, contacts, cross
+
+LP_METHOD = "highs-ds"  # dual simplex: vertex solutions, i.e. mechanisms with the fewest hinges
+# HiGHS's default 1e-7 lets a corner force of 1e-6 of the arch's weight go negative: 0.02 mm of support
+# motion near a limit, and a feasibility that flickers there; 1e-10 puts that below 1e-4 mm.
+LP_OPTIONS = {"primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10}
+HINGE_RATE_FRACTION = 1e-6  # relative rotation rates below this fraction of the largest are none
+CLOSING_RATE_FRACTION = 1e-6  # an open corner closes if its gap rate is below -this x the largest
+STATUS_INFEASIBLE, STATUS_UNBOUNDED = 2, 3  # scipy.optimize.linprog's status codes
+
+
+@dataclass(frozen=True)
+class Statics:
+    """An admissible equilibrium, if `feasible`: corner normal forces `normal` (joint, side) and
+    shears `shear` (N) on the right block of each interface, with the contacts they act at."""
+
+    feasible: bool
+    normal: np.ndarray
+    shear: np.ndarray
+    contacts: Contacts
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    """A mechanism's hinges (left to right, each about a touching corner), relative rotation rate of
+    each (rad per m of support motion, > 0 counter-clockwise), the weights' potential-energy rate
+    (N m per m), and the open hinges it turns back."""
+
+    pivots: tuple[Pivot, ...]
+    rates: tuple[float, ...]
+    power: float
+    closing: tuple[int, ...] = ()  # interfaces whose open corner it closes (a hinge turned back)
+
+
+def equilibrium_matrix(arch: RigidArch, c: Contacts) -> np.ndarray:
+    """(3 n_blocks, 3 n_joints) generalized forces on every block of unit N_I, N_E, T: a corner's
+    normal force acts at the corner, the shear at the touching corners' mean (on the joint line)."""
+    m = arch.n_joints
+    touching = c.touching.astype(float)
+    weights = np.where(touching.sum(1, keepdims=True) > 0, touching, 0.5)
+    shear_point = (c.point * weights[:, :, None]).sum(1) / weights.sum(1, keepdims=True)
+    columns = np.concatenate([
+        np.column_stack([c.normal, cross(c.point[:, INTRADOS], c.normal)]),
+        np.column_stack([c.normal, cross(c.point[:, EXTRADOS], c.normal)]),
+        np.column_stack([c.tangent, cross(shear_point, c.tangent)])])  # (3m, 3)
+    joint = np.tile(np.arange(m), 3)
+    matrix = np.zeros((3 * arch.n_blocks, 3 * m))
+    for sign, block in ((1.0, arch.right[joint]), (-1.0, arch.left[joint])):
+        for dof in range(3):
+            matrix[3 * block + dof, np.arange(3 * m)] += sign * columns[:, dof]
+    return matrix
+
+
+def weight_load(arch: RigidArch, placement: Placement) -> np.ndarray:
+    """(3 n_blocks,) what the contacts must supply to each block: the opposite of its weight, i.e.
+    force (0, W) and moment W x_centroid about the origin; also the weights' power per velocity."""
+    x = placement.centroids(arch)[:, 0]
+    return np.column_stack([np.zeros_like(x), arch.weight, arch.weight * x]).ravel()
+
+
+def _split(arch: RigidArch, matrix: np.ndarray,
+           load: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Rows of the voussoirs (unknown motion) and of the moving support (prescribed motion)."""
+    n = arch.n_blocks
+    vouss = slice(3, 3 * (n - 1))
+    return matrix[vouss], load[vouss], matrix[3 * (n - 1):]
+
+
+def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True,
+                  refine: bool = False) -> Statics:
+    """The admissible equilibrium that presses least on the moving support along its motion (the
+    dual of the kinematic problem, so at rest it picks the state the mechanism will follow); with
+    `refine`, forces corrected by least squares so that equilibrium holds to round-off."""
+    c = contacts(arch, placement)
+    m = arch.n_joints
+    a_v, load, a_s = _split(arch, equilibrium_matrix(arch, c), weight_load(arch, placement))
+    scale = arch.weight[1:-1].sum()  # forces in units of the arch's weight, moments of it x a joint
+    rows = np.tile([1.0, 1.0, 1.0 / arch.geometry.thickness], len(load) // 3)
+    objective = a_s.T @ np.array([*arch.direction, 0.0])
+    bounds = [(0.0, None if t else 0.0) for t in c.touching.T.ravel()] + [(None, None)] * m
+    a_ub = b_ub = None
+    if friction:
+        mu = arch.tan_phi * np.eye(m)
+        a_ub = np.block([[-mu, -mu, np.eye(m)], [-mu, -mu, -np.eye(m)]])
+        b_ub = np.zeros(2 * m)
+    problem = {"A_ub": a_ub, "b_ub": b_ub, "A_eq": a_v * rows[:, None], "b_eq": load * rows / scale,
+               "bounds": bounds, "method": LP_METHOD, "options": LP_OPTIONS}
+    result = linprog(objective, **problem)
+    if result.status == STATUS_UNBOUNDED:  # a self-stress (flat arch) relieves the support without end
+        result = linprog(np.zeros_like(objective), **problem)
+    if result.status == STATUS_INFEASIBLE:
+        return Statics(False, np.zeros((m, 2)), np.zeros(m), c)
+    if result.status != 0:
+        raise LimitError(f"static LP failed at {placement.delta * 1e3:.3f} mm: {result.message}")
+    x = result.x * scale
+    if refine:
+        free = np.array([hi is None for _, hi in bounds])
+        x[free] += np.linalg.lstsq(a_v[:, free], load - a_v @ x, rcond=None)[0]
+    return Statics(True, np.column_stack([x[:m], x[m:2 * m]]), x[2 * m:], c)
+
+
+def solve_kinematics(arch: RigidArch, placement: Placement, support_speed: float = 1.0) -> Mechanism | None:
+    """The mechanism of least potential-energy rate for `support_speed` (m per m): None if it is
+    unbounded (a mechanism at a fixed support lowers the weights: no admissible equilibrium). With
+    `support_speed` 0 the velocities are boxed, giving the collapse mechanism when one exists."""
+    c = contacts(arch, placement)
+    m = arch.n_joints
+    a_v, load, a_s = _split(arch, equilibrium_matrix(arch, c), weight_load(arch, placement))
+    support = a_s.T @ np.array([*arch.direction, 0.0]) * support_speed  # rates from the support motion
+    corner = c.touching.T.ravel()
+    slip = np.concatenate([np.zeros(2 * m, bool), c.touching.any(axis=1)])
+    length = arch.geometry.internal_radius
+    box = None if support_speed else [(-1.0, 1.0), (-1.0, 1.0), (-1.0 / length, 1.0 / length)]
+    bounds = [(None, None)] * len(load) if box is None else box * (len(load) // 3)
+    result = linprog(load, A_ub=-a_v.T[np.flatnonzero(corner)], b_ub=support[np.flatnonzero(corner)],
+                     A_eq=a_v.T[slip], b_eq=-support[slip], bounds=bounds, method=LP_METHOD,
+                     options=LP_OPTIONS)
+    if result.status == STATUS_UNBOUNDED:
+        return None
+    if result.status == STATUS_INFEASIBLE:
+        raise LimitError(f"at {placement.delta * 1e3:.3f} mm no mechanism can follow the support")
+    if result.status != 0:
+        raise LimitError(f"kinematic LP failed at {placement.delta * 1e3:.3f} mm: {result.message}")
+    rates = a_v.T @ result.x + support  # gap rates (2m) and slip rates (m) of every interface
+    gaps = np.column_stack([rates[:m], rates[m:2 * m]])
+    omega = np.concatenate([[0.0], result.x[2::3], [0.0]])
+    relative = omega[arch.right] - omega[arch.left]
+    hinged = np.flatnonzero(np.abs(relative) > HINGE_RATE_FRACTION * max(np.abs(relative).max(), 1e-300))
+    closed_rates = np.where(c.touching, gaps, np.inf)  # an open corner is no pivot
+    pivots = tuple(Pivot(int(k), int(np.argmin(closed_rates[k]))) for k in hinged)
+    closing = ~c.touching & (gaps < -CLOSING_RATE_FRACTION * np.abs(gaps).max())
+    return Mechanism(pivots, tuple(float(relative[k]) for k in hinged), float(result.fun),
+                     tuple(int(k) for k in np.flatnonzero(closing.any(axis=1))))

@@ -1,0 +1,126 @@
+"""What a rigid-block limit analysis returns: the hinge history, the collapse, and the last admissible
+state (contact forces, thrust line, reactions, block placements), JSON-ready."""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from .. import units
+from ..case import ArchCase
+from .limit_lp import Statics
+from .rigid import EXTRADOS, INTRADOS, RigidArch
+
+
+@dataclass(frozen=True)
+class HingeRecord:
+    """A hinge (1-based interface, pivot side I/E) rotating from `from_mm` to `to_mm` of support
+    displacement (None: still rotating at the end). `jump_mm`: the largest block movement at a
+    fixed support with which it took over from another hinge (0 if it formed without one)."""
+
+    interface: int
+    side: str
+    from_mm: float
+    to_mm: float | None = None
+    jump_mm: float = 0.0
+
+    @property
+    def label(self) -> str:
+        return f"{self.interface}{self.side}"
+
+
+@dataclass(frozen=True)
+class InterfaceForce:
+    """Contact forces on the right block of one interface (N): corner normal forces, shear along the
+    joint (intrados -> extrados), where they act (mm), and the friction used |T| / (tan(phi) N)."""
+
+    interface: int
+    n_intrados: float
+    n_extrados: float
+    shear: float
+    normal: tuple[float, float]
+    intrados_mm: tuple[float, float]
+    extrados_mm: tuple[float, float]
+    thrust_mm: tuple[float, float]
+    friction_use: float
+
+
+@dataclass(frozen=True)
+class LimitResult:
+    """The rigid-block limit of one case and its last admissible state (see `solve.limit`)."""
+
+    name: str
+    du_rigid_mm: float | None  # None: the arch still stands at the largest displacement tried
+    collapse_mode: str  # "hinging", "sliding", or "none"
+    hinge_history: tuple[HingeRecord, ...]
+    collapse_hinges: tuple[str, ...]  # hinges of the collapse mechanism, left to right, e.g. "9I"
+    new_at_collapse: tuple[str, ...]  # its hinges not rotating before: the fourth hinge, usually
+    forces: tuple[InterfaceForce, ...]
+    reactions_N: dict[str, tuple[float, float]]  # force of each support on the arch (x, y)
+    max_friction_use: float
+    max_friction_interface: int
+    rotation_rad: tuple[float, ...]  # per block (0 = left support) at the last admissible state
+    shift_mm: tuple[tuple[float, float], ...]  # per block: X -> R(rotation) X + shift
+    settlement_direction_deg: float
+    step_mm: float
+    tolerance_mm: float
+    n_lp: int
+    wall_s: float
+
+    def to_json(self) -> dict:
+        """A JSON-ready dict of every field."""
+        return asdict(self)
+
+
+def interface_forces(arch: RigidArch, statics: Statics) -> tuple[tuple[InterfaceForce, ...], dict]:
+    """Per-interface forces of an equilibrium, and the supports' reactions on the arch (N)."""
+    c, forces = statics.contacts, []
+
+    def mm(point: np.ndarray) -> tuple[float, float]:
+        return units.to_mm(float(point[0])), units.to_mm(float(point[1]))
+
+    for k in range(arch.n_joints):
+        n_i, n_e = (float(v) for v in statics.normal[k])
+        total = n_i + n_e
+        p_i, p_e = c.point[k, INTRADOS], c.point[k, EXTRADOS]
+        thrust = p_i + (n_e / total if total > 0 else 0.5) * (p_e - p_i)
+        use = abs(statics.shear[k]) / (arch.tan_phi * total) if total > 0 else 0.0
+        forces.append(InterfaceForce(k + 1, n_i, n_e, float(statics.shear[k]),
+                                     (float(c.normal[k, 0]), float(c.normal[k, 1])),
+                                     mm(p_i), mm(p_e), mm(thrust), float(use)))
+    resultant = [statics.normal[k].sum() * c.normal[k] + statics.shear[k] * c.tangent[k]
+                 for k in (0, arch.n_joints - 1)]
+    return tuple(forces), {"left": tuple(float(v) for v in resultant[0]),
+                           "right": tuple(float(v) for v in -resultant[1])}
+
+
+_UMASK = os.umask(0o022)
+os.umask(_UMASK)  # read the process umask (set and restored at import)
+
+
+def write_atomically(path: Path, write: Callable[[Path], None]) -> Path:
+    """Write `path` by `write(temporary)` to a temporary file in the same folder, then rename it over
+    `path`: a reader never sees a half-written file, an interrupted write leaves the old one."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    os.close(handle)
+    try:
+        write(Path(temporary))
+        os.chmod(temporary, 0o666 & ~_UMASK)  # mkstemp's 0600 -> what open() would have given
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def write_result_json(result: LimitResult, case: ArchCase, path: Path) -> Path:
+    """The result and the case it solved, as indented JSON, written atomically."""
+    text = json.dumps({**result.to_json(), "case": case.to_dict()}, indent=1) + "\n"
+    return write_atomically(path, lambda temporary: temporary.write_text(text))
