@@ -23,7 +23,7 @@ from .errors import RunFailedError
 from .hinges import Hinge, hinge_rotation, hinges_at
 from .joints import joint_states
 from .scene import CALLBACK_NAME, ArchScene, body_states, build_scene
-from .solve.path import STABLE, PathResult, PathSettings, PathStep, follow_path
+from .solve.path import RUNAWAY, STABLE, PathResult, PathSettings, PathStep, follow_path
 from .stepping import SteppingGate
 
 SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
@@ -159,7 +159,7 @@ class Runner:
         self.weight = 0.0
         self._accepted: list[dict] = []  # snapshots of the equilibrium states of the loading path
         self._at_accepted = True  # the live scene is that state
-        self._hi_snapshot: dict = {}  # the state a failed increment ended in
+        self._failures: dict[float, dict] = {}  # support displacement -> state a failure ended in
         self._last_equilibrium_hinges: list[dict] = []
         self._last_joint_snapshot: dict = {}
         self._friction: dict = {}
@@ -480,7 +480,7 @@ class Runner:
         verdict = self.hold()
         self._at_accepted = False
         if verdict != STABLE:
-            self._hi_snapshot = self.snapshot()
+            self._failures[target] = self.snapshot()
         return verdict
 
     def accept(self) -> None:
@@ -496,14 +496,16 @@ class Runner:
     def settle(self) -> bool:
         """Relax the accepted state, support held and blocks in their motion, until every block is
         slower than `settle_speed_mm_per_s` and the unbalanced force below SETTLE_TOLERANCE_FACTOR x
-        `equilibrium_tolerance`; keep the settled state. False if it runs away or times out."""
+        `equilibrium_tolerance`, or `hold_max_s` passes (CGAL contacts never get that quiet), and
+        keep the state reached. False if it runs away: it was not an equilibrium."""
         if not self._at_accepted:
             self.restore(self._accepted[-1])
         self.stage = "settle"
         verdict = self.hold(from_rest=False, still_speed=units.mm(self.num.settle_speed_mm_per_s),
                             tolerance=SETTLE_TOLERANCE_FACTOR * self.num.equilibrium_tolerance)
         self.log(f"[{self.case.name}] settling the state at {units.to_mm(self.delta()):.3f} mm: {verdict}")
-        if verdict != STABLE:
+        if verdict == RUNAWAY:
+            self._failures[self.delta()] = self.snapshot()
             self._at_accepted = False
             return False
         self._accepted[-1] = self.snapshot()
@@ -529,11 +531,12 @@ class Runner:
         self.log(f"[{self.case.name}] increment {units.to_mm(step.start):7.3f} -> "
                  f"{units.to_mm(step.target):7.3f} mm: {step.verdict} (step {self.total_steps})")
 
-    def collapse_state(self) -> list[Hinge]:
-        """Show the mechanism: continue the failed hold at du's upper bracket end until the arch
-        has run away (10 runaway distances more, at most `hold_max_s` more), then read its hinges."""
+    def collapse_state(self, upper: float) -> list[Hinge]:
+        """Show the mechanism: continue the failure at du's upper bracket end `upper` until the
+        arch has run away (10 runaway distances more, at most `hold_max_s` more), then read its
+        hinges."""
         self.stage = "collapse"
-        self.restore(self._hi_snapshot)
+        self.restore(self._failures[min(self._failures, key=lambda d: abs(d - upper))])
         self.hold(runaway=10.0 * units.mm(self.num.runaway_mm), from_rest=False)
         hinges = self._record_joints("collapse")
         self._record_series(force=True)
@@ -573,7 +576,7 @@ class Runner:
                        last_equilibrium_mm=lo, hinges_last_equilibrium=self._last_equilibrium_hinges,
                        friction=self._friction_summary())
         if path.collapsed:
-            hinges = self.collapse_state()
+            hinges = self.collapse_state(path.upper)
             du, hi = units.to_mm(path.du), units.to_mm(path.upper)
             summary.update(collapsed=True, du_mm=du, du_bracket_mm=[lo, hi])
             self.log(f"[{self.case.name}] du = {du:.2f} mm (no equilibrium at {hi:.2f}, "

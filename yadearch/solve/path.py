@@ -31,8 +31,8 @@ class EquilibriumOracle(Protocol):
         """Make the state the last `try_increment` ended in (a STABLE one) the accepted state."""
 
     def settle(self) -> bool:
-        """Relax the accepted state until it is completely at rest and keep that as the accepted
-        state; False if it does not come to rest (it was not an equilibrium)."""
+        """Relax the accepted state further (until it is at rest, or for a bounded time) and keep
+        that as the accepted state; False if it runs away (it was not an equilibrium)."""
 
     def discard(self) -> None:
         """Drop the accepted state: the one accepted before it is the accepted state again."""
@@ -96,7 +96,7 @@ def follow_path(oracle: EquilibriumOracle, settings: PathSettings,
     completely: a failure reached by a longer move, or from a state that was still creeping, is tried
     again from the settled state (near collapse, a state accepted while creeping by a few hundredths
     of a millimetre fails every move, where the same state at rest holds further); if the arch then
-    holds, the path goes on. A lower state that does not come to rest is discarded."""
+    holds, the path goes on. A lower state that runs away while settling is discarded."""
     result = PathResult()
     increment = settings.first_increment
     settled = False  # the accepted state has been settled completely
