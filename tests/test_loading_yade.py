@@ -1,5 +1,6 @@
-"""The equilibrium-path loading on a coarse arch in real YADE: every accepted state is a static
-equilibrium, and du does not move with the size of the loading increments."""
+"""The equilibrium-path loading of the paper's set 1 arch in real YADE (about 20 s a run): every
+accepted state is a static equilibrium, and du does not move with the size of the loading
+increments (measured: 47.12 and 47.13 mm)."""
 
 from __future__ import annotations
 
@@ -12,14 +13,14 @@ from yadearch.hinges import same_hinges
 
 pytestmark = [needs_yade, pytest.mark.yade]
 
-COARSE = {"n_voussoirs": 9, "kn_N_per_mm3": 0.15, "progress_every_s": 1e9}
+QUIET = {"progress_every_s": 1e9}
 DU_TOLERANCE = 0.01  # du may move by 1 % at most when only the numerics change
 
 
 def run(overrides: dict) -> tuple[dict, pd.DataFrame]:
     from yadearch.runner import Runner
 
-    runner = Runner(preset("set1").with_overrides({**COARSE, **overrides}), log=lambda line: None)
+    runner = Runner(preset("set1").with_overrides({**QUIET, **overrides}), log=lambda line: None)
     summary = runner.run()
     return summary, pd.DataFrame(runner.records.series)
 

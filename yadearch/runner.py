@@ -31,6 +31,7 @@ CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, equilibrium,
 ARRIVED_M = 1e-12  # the support is on target within this distance (m)
 DRIVER_LABEL = "yadearch_support_driver"
 SETTLE_TOLERANCE_FACTOR = 0.01  # a settled state's unbalanced force, relative to equilibrium_tolerance
+DISCARDED_STAGE = "discarded"  # records of an accepted state that ran away while settling
 DRIVER_CRUISE_PERIOD = 50  # steps between the support driver's calls while it cruises
 
 
@@ -159,6 +160,7 @@ class Runner:
         self.weight = 0.0
         self._accepted: list[dict] = []  # snapshots of the equilibrium states of the loading path
         self._at_accepted = True  # the live scene is that state
+        self._accepted_records: list[tuple[int, int]] = []  # first series and joints row of each
         self._failures: dict[float, dict] = {}  # support displacement -> state a failure ended in
         self._last_equilibrium_hinges: list[dict] = []
         self._last_joint_snapshot: dict = {}
@@ -488,8 +490,10 @@ class Runner:
         self._accepted.append(self.snapshot())
         self._at_accepted = True
         self.stage = "equilibrium"
+        first_series, first_joint = len(self.records.series), len(self.records.joints)
         self._record_series(force=True)
         hinges = self._record_joints()
+        self._accepted_records.append((first_series, first_joint))
         self._last_equilibrium_hinges = [h.to_json() for h in hinges]
         self._track_friction(self._last_joint_snapshot)
 
@@ -516,6 +520,10 @@ class Runner:
         """Drop the last accepted state (it did not settle): the one before is the accepted one."""
         self._accepted.pop()
         self._at_accepted = False
+        first_series, first_joint = self._accepted_records.pop()
+        for row in self.records.series[first_series:] + self.records.joints[first_joint:]:
+            if row["stage"] == "equilibrium":
+                row["stage"] = DISCARDED_STAGE
 
     def follow_equilibrium_path(self) -> PathResult:
         """Load by increments relaxed to equilibrium until du is bracketed (`solve.path`)."""
