@@ -23,7 +23,7 @@ from .errors import RunFailedError
 from .hinges import Hinge, hinge_rotation, hinges_at
 from .joints import joint_states
 from .scene import CALLBACK_NAME, ArchScene, body_states, build_scene
-from .solve.path import RUNAWAY, STABLE, PathResult, PathSettings, PathStep, follow_path
+from .solve.path import RUNAWAY, STABLE, TIMEOUT, PathResult, PathSettings, PathStep, follow_path
 from .stepping import SteppingGate
 
 SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
@@ -163,8 +163,13 @@ class Runner:
         self._accepted_records: list[tuple[int, int]] = []  # first series and joints row of each
         self._failures: dict[float, dict] = {}  # support displacement -> state a failure ended in
         self._last_equilibrium_hinges: list[dict] = []
-        self._last_joint_snapshot: dict = {}
         self._friction: dict = {}
+        num, mm = self.num, units.mm
+        self._path_settings = PathSettings(
+            first_increment=mm(num.first_increment_mm),
+            max_increment=mm(max(num.max_increment_mm, num.first_increment_mm)),
+            growth=num.increment_growth, tolerance=mm(num.du_tolerance_mm),
+            max_displacement=mm(case.loading.max_settlement_mm))
 
     # ---- scene plumbing -------------------------------------------------------------------
     def _install_driver(self) -> None:
@@ -262,7 +267,13 @@ class Runner:
         })
 
     def _record_joints(self, label: str | None = None) -> list[Hinge]:
+        """Record every interface now (and, with a `label`, the block positions as a snapshot)."""
         snap, hinges = self.joint_snapshot()
+        self._write_joints(snap, hinges, label)
+        return hinges
+
+    def _write_joints(self, snap: dict, hinges: list[Hinge], label: str | None = None) -> None:
+        """Append the rows of joints.csv for a `joint_snapshot`, and its snapshot under `label`."""
         js = snap["js"]
         delta_mm = units.to_mm(self.delta())
         common = {"stage": self.stage, "step": self._iter(), "delta_mm": delta_mm}
@@ -282,8 +293,6 @@ class Runner:
                 "pos_m": snap["pos"][:, :2].tolist(), "rot_rad": snap["rot"].tolist(),
                 "hinges": [h.to_json() for h in hinges],
             }
-        self._last_joint_snapshot = snap
-        return hinges
 
     def _track_friction(self, snap: dict) -> None:
         """Keep the largest mobilised friction |T| / (N tan phi) and the largest accumulated slip
@@ -297,9 +306,6 @@ class Runner:
         finite = np.nan_to_num(slip, nan=0.0)
         j = int(np.argmax(finite))
         self._friction.update(max_slip_mm=units.to_mm(float(slip[j])), slip_interface=j + 1)
-
-    def _friction_summary(self) -> dict:
-        return dict(self._friction)
 
     def _progress(self, extra: str = "", force: bool = False) -> None:
         from yade import O
@@ -435,11 +441,11 @@ class Runner:
             moved = np.linalg.norm(self._voussoir_positions() - start_pos, axis=1).max()
             self._progress(f"holding: max block move {units.to_mm(moved):.3f} mm")
             if moved > runaway:
-                return "runaway"
+                return RUNAWAY
             if O.iter - start >= min_steps and self._unbalanced() < tolerance \
                     and self._voussoir_speeds().max() < still_speed:
                 return STABLE
-        return "timeout"
+        return TIMEOUT
 
     def _set_damping(self, damping: float) -> None:
         """Local damping of the integrator: `damping` while the support moves, `hold_damping` while
@@ -475,7 +481,7 @@ class Runner:
         self.stage = "increment"
         # every move lasts as long as the largest increment's: the short moves near collapse are
         # gentle, and the arch ends them close to its equilibrium configuration
-        fraction = abs(target - self.delta()) / units.mm(self.num.max_increment_mm)
+        fraction = abs(target - self.delta()) / self._path_settings.max_increment
         self.driver.set_speed(self._full_speed * min(1.0, fraction))
         self.move_to(target)
         self.stage = "relax"
@@ -492,10 +498,11 @@ class Runner:
         self.stage = "equilibrium"
         first_series, first_joint = len(self.records.series), len(self.records.joints)
         self._record_series(force=True)
-        hinges = self._record_joints()
+        snap, hinges = self.joint_snapshot()
+        self._write_joints(snap, hinges)
         self._accepted_records.append((first_series, first_joint))
         self._last_equilibrium_hinges = [h.to_json() for h in hinges]
-        self._track_friction(self._last_joint_snapshot)
+        self._track_friction(snap)
 
     def settle(self) -> bool:
         """Relax the accepted state, support held and blocks in their motion, until every block is
@@ -527,13 +534,8 @@ class Runner:
 
     def follow_equilibrium_path(self) -> PathResult:
         """Load by increments relaxed to equilibrium until du is bracketed (`solve.path`)."""
-        num, mm = self.num, units.mm
-        settings = PathSettings(first_increment=mm(num.first_increment_mm),
-                                max_increment=mm(max(num.max_increment_mm, num.first_increment_mm)),
-                                growth=num.increment_growth, tolerance=mm(num.du_tolerance_mm),
-                                max_displacement=mm(self.case.loading.max_settlement_mm))
         self._accepted, self._at_accepted = [self.snapshot()], True
-        return follow_path(self, settings, on_step=self._log_increment)
+        return follow_path(self, self._path_settings, on_step=self._log_increment)
 
     def _log_increment(self, step: PathStep) -> None:
         self.log(f"[{self.case.name}] increment {units.to_mm(step.start):7.3f} -> "
@@ -582,7 +584,7 @@ class Runner:
         lo = units.to_mm(path.lower)
         summary.update(increments=len(path.steps), equilibria=len(path.equilibria),
                        last_equilibrium_mm=lo, hinges_last_equilibrium=self._last_equilibrium_hinges,
-                       friction=self._friction_summary())
+                       friction=dict(self._friction))
         if path.collapsed:
             hinges = self.collapse_state(path.upper)
             du, hi = units.to_mm(path.du), units.to_mm(path.upper)
