@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 DEBIAN_PACKAGES=(yade python3-venv python3-pip python3-setuptools python3-numpy python3-pandas
                  python3-matplotlib python3-scipy python3-click python3-tomli-w python3-tqdm
-                 python3-dask python3-distributed python3-pytest)
+                 python3-dask python3-distributed python3-pytest python3-numba)
 
 missing=()
 for pkg in "${DEBIAN_PACKAGES[@]}"; do
@@ -26,7 +26,7 @@ if [ ! -x .venv/bin/python ]; then
 fi
 .venv/bin/python -m pip install -q --no-build-isolation --no-deps -e .
 .venv/bin/python - <<'PY'
-import numpy, pandas, matplotlib, click, tomli_w, dask, distributed  # noqa: F401  the whole stack imports
+import numpy, pandas, matplotlib, click, tomli_w, dask, distributed, numba  # noqa: F401  the whole stack imports
 from yadearch.yade_env import import_yade
 import_yade()
 import yade.config

@@ -7,7 +7,7 @@ import pytest
 
 from yadearch.geometry import segmental_arch
 from yadearch.joints import joint_states
-from yadearch.joints import z_rotation
+from yadearch.joints import pair_rotation, z_rotation
 
 
 def _centroids(arch):
@@ -50,3 +50,6 @@ def test_z_rotation_of_quaternions_relative_to_an_arbitrary_start():
     start = quat([0.3, -1.0, 0.5], 1.1)  # principal axes of a polyhedron: any orientation
     now = mul(quat([0, 0, 1], 0.25), start)
     assert z_rotation(now[None, :], start[None, :])[0] == pytest.approx(0.25)
+    # either pair of components gives the angle: (w, z) and (x, y)
+    for pair in ([0, 3], [1, 2]):
+        assert pair_rotation(now[None, pair], start[None, pair])[0] == pytest.approx(0.25, abs=1e-14)

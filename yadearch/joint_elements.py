@@ -9,7 +9,7 @@ import numpy as np
 
 from .geometry import ArchGeometry
 from .joint_law import JointForces, JointLaw, joint_forces, joint_table, unbalanced_force
-from .joints import z_rotation
+from .joints import pair_rotation
 from .mechanics import ContactStiffness
 
 
@@ -34,19 +34,33 @@ class JointElementContacts:
 
         self.table = joint_table(self.geometry, pos0)
         self.ori0 = ori0
-        self._states = [O.bodies[i].state for i in self.body_ids]
+        states = [O.bodies[i].state for i in self.body_ids]
+        # a block turning about z keeps the norms of its quaternion's (w, z) and (x, y) pairs: its
+        # angle follows from the larger pair alone, two numbers read instead of four
+        by_wz = ori0[:, 0] ** 2 + ori0[:, 3] ** 2 >= ori0[:, 1] ** 2 + ori0[:, 2] ** 2
+        self._wz_blocks, self._xy_blocks = np.flatnonzero(by_wz), np.flatnonzero(~by_wz)
+        self._wz_states = [states[i] for i in self._wz_blocks]
+        self._xy_states = [states[i] for i in self._xy_blocks]
+        self._pair0 = np.where(by_wz[:, None], ori0[:, [0, 3]], ori0[:, [1, 2]])
+        self._states = states
         self._free = np.array([O.bodies[i].dynamic for i in self.body_ids])
         self._masses = np.array([s.mass for s in self._states])
         return [PyRunner(command=f"{callback}.step()", iterPeriod=1, initRun=True)]
 
     def _evaluate(self) -> JointForces:
-        """The joints for the blocks' current states (one read of each State; 9 numbers a block)."""
+        """The joints for the blocks' current states (7 numbers read a block: x, y, a quaternion
+        pair, vx, vy, wz)."""
         from yade import O
 
-        rows = np.array([(p[0], p[1], q[3], q[0], q[1], q[2], v[0], v[1], w[2]) for p, q, v, w in
-                         ((s.pos, s.ori, s.vel, s.angVel) for s in self._states)])
-        return joint_forces(self.table, self.law, rows[:, 0:2], z_rotation(rows[:, 2:6], self.ori0),
-                            rows[:, 6:8], rows[:, 8], self.shear, O.dt)
+        rows = np.empty((len(self._states), 7))
+        if self._wz_states:
+            rows[self._wz_blocks] = [(p[0], p[1], q[3], q[2], v[0], v[1], w[2]) for p, q, v, w in
+                                     ((s.pos, s.ori, s.vel, s.angVel) for s in self._wz_states)]
+        if self._xy_states:  # minieigen quaternions index (x, y, z, w)
+            rows[self._xy_blocks] = [(p[0], p[1], q[0], q[1], v[0], v[1], w[2]) for p, q, v, w in
+                                     ((s.pos, s.ori, s.vel, s.angVel) for s in self._xy_states)]
+        return joint_forces(self.table, self.law, rows[:, 0:2], pair_rotation(rows[:, 2:4], self._pair0),
+                            rows[:, 4:6], rows[:, 6], self.shear, O.dt)
 
     def step(self) -> None:
         """Evaluate the joints for the current states and add their forces (called every step)."""

@@ -7,9 +7,11 @@ move in the x-y plane and rotate about z only.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from .geometry import ArchGeometry
 
@@ -44,6 +46,18 @@ def z_rotation(ori: np.ndarray, ori0: np.ndarray) -> np.ndarray:
     w = w1 * w0 + x1 * x0 + y1 * y0 + z1 * z0
     z = -w1 * z0 - x1 * y0 + y1 * x0 + z1 * w0
     return 2.0 * np.arctan2(z, w)
+
+
+@njit(cache=True)
+def pair_rotation(pair: np.ndarray, pair0: np.ndarray) -> np.ndarray:
+    """Rotation angle about z (rad) of blocks from one pair of their quaternions' components, (w, z)
+    or (x, y) (n, 2), and the same pair at the start: turning by t about z maps the pair (a0, b0)
+    to (a0 cos t/2 - b0 sin t/2, b0 cos t/2 + a0 sin t/2)."""
+    angles = np.empty(pair.shape[0])
+    for k in range(pair.shape[0]):
+        a, b, a0, b0 = pair[k, 0], pair[k, 1], pair0[k, 0], pair0[k, 1]
+        angles[k] = 2.0 * math.atan2(a0 * b - b0 * a, a0 * a + b0 * b)
+    return angles
 
 
 def joint_states(geometry: ArchGeometry, pos0: np.ndarray, pos: np.ndarray, rot: np.ndarray,
