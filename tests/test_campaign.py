@@ -169,21 +169,6 @@ def test_resume_accepts_a_run_that_predates_a_parameter_at_its_default(tmp_path)
     assert again.calls == []  # a run made before hold_damping existed ran it at its default
 
 
-def test_a_run_that_predates_the_stiffness_scaled_rate_is_reused_only_where_it_changes_nothing(tmp_path):
-    rows = grid({"kn_N_per_mm3": [0.1, 31.62]})
-    campaign(tmp_path, FakeRuns(), rows)
-    for name in ("kn0.1", "kn31.62"):  # both ran at 80 mm/s, before the rate depended on kn
-        case_file = tmp_path / name / "case.toml"
-        case_file.write_text(re.sub(r"rate_reference_kn_N_per_mm3 = .*\n", "", case_file.read_text()))
-    again = FakeRuns()
-    with pytest.raises(YadearchError, match=r"kn31.62 holds a different case \(numerics.settlement_speed_mm_per_s: "
-                                            r"ran 80, wanted 44.9893"):
-        campaign(tmp_path, again, rows)
-    (tmp_path / "kn31.62" / "summary.json").unlink()  # unfinished: run again, whatever it ran before
-    campaign(tmp_path, again, rows)
-    assert again.calls == ["kn31.62"]
-
-
 def test_hinge_labels_follow_the_paper():
     detail = [{**h, "rotation_mrad": r} for h, r in zip(HINGES, (147, 460, 231, 8, 93))]
     labels = label_hinges({"hinges_at_collapse": HINGES, "hinges_detail": detail}, 15)
