@@ -36,8 +36,8 @@ TARGET_DU_REL = 0.01
 
 def timed_run(case, folder: Path) -> dict:
     """Run a case in its own process (reusing a complete folder of the same case); its summary."""
-    from yadearch.process import run_case_process
-    from yadearch.rundir import is_complete
+    from yadearch.engine.process import run_case_process
+    from yadearch.results.rundir import is_complete
 
     if not (is_complete(folder) and (folder / "case.toml").read_text() == case.to_toml()):
         run_case_process(case, folder, quiet=True)
@@ -67,7 +67,7 @@ def sweep_status(folder: Path) -> dict:
     """Done and failed runs of a campaign and the sum of its runs' wall times (results.csv)."""
     import pandas as pd
 
-    from yadearch.campaign import RESULTS_FILE
+    from yadearch.studies.campaign import RESULTS_FILE
 
     table = pd.read_csv(folder / RESULTS_FILE)
     return {"done": int((table["status"] == "done").sum()), "failed": int((table["status"] == "failed").sum()),
@@ -83,11 +83,11 @@ def loading_measurement(settle_mm: float, set2_steps: int, contact_model: str) -
     load average, which says whether the core was free."""
     import os
 
-    from yadearch import units
-    from yadearch.case import preset
-    from yadearch.runner import DRIVER_LABEL, Runner
-    from yadearch.scene import CALLBACK_NAME
-    from yadearch.yade_env import import_yade
+    from yadearch.model import units
+    from yadearch.case.config import preset
+    from yadearch.engine.runner import DRIVER_LABEL, Runner
+    from yadearch.engine.scene import CALLBACK_NAME
+    from yadearch.engine.yade_env import import_yade
 
     import_yade()
     from yade import O
@@ -130,9 +130,9 @@ def loading_measurement(settle_mm: float, set2_steps: int, contact_model: str) -
 def scene_rate(steps: int, contact_model: str) -> float:
     """Steps per second of a bare `O.run` of the set 2 scene with `contact_model` under self-weight
     (this process's OpenMP threads)."""
-    from yadearch.case import preset
-    from yadearch.scene import build_scene
-    from yadearch.yade_env import import_yade
+    from yadearch.case.config import preset
+    from yadearch.engine.scene import build_scene
+    from yadearch.engine.yade_env import import_yade
 
     import_yade()
     from yade import O
@@ -209,9 +209,9 @@ def main() -> int:
         print(scene_rate(args.scene_rate, args.scene_model))
         return 0
 
-    from yadearch.campaign import campaign_wall_s
-    from yadearch.case import preset
-    from yadearch.hinges import same_hinges
+    from yadearch.studies.campaign import campaign_wall_s
+    from yadearch.case.config import preset
+    from yadearch.model.hinges import same_hinges
 
     runs = Path(args.runs)
     cases = {"set1": preset("set1"), "set2": preset("set2")}

@@ -18,10 +18,10 @@ import sys
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from yadearch.case import preset
-from yadearch.hinges import same_hinges
-from yadearch.process import run_case_process
-from yadearch.rundir import holds_case
+from yadearch.case.config import preset
+from yadearch.model.hinges import same_hinges
+from yadearch.engine.process import run_case_process
+from yadearch.results.rundir import holds_case
 
 TOLERANCE = 0.01
 

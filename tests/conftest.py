@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from yadearch.yade_env import YADE_PY_DIRS
+from yadearch.engine.yade_env import YADE_PY_DIRS
 
 HAS_YADE = any(Path(d, "yade", "__init__.py").is_file() for d in YADE_PY_DIRS)
 needs_yade = pytest.mark.skipif(not HAS_YADE, reason="Debian's yade package is not installed")
@@ -25,7 +25,7 @@ def stacked_pairs(offsets_x: list[float], width: float, height: float, depth: fl
                   overlap: float = 0.0):
     """For each x offset, a base block under y = 0 and a top block above it pressed down by
     `overlap`; returns an ArchGeometry-like assembly with one horizontal joint per pair."""
-    from yadearch.geometry import ArchGeometry, Joint
+    from yadearch.model.geometry import ArchGeometry, Joint
 
     blocks, joints = [], []
     for k, x in enumerate(offsets_x):

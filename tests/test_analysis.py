@@ -14,7 +14,7 @@ import pytest
 from yadearch.analysis import Thresholds, analyse_history
 from yadearch.analysis.blocks import block_centroids, polygon_centroid, tangential_slip_mm
 from yadearch.analysis.tracking import format_interfaces
-from yadearch.geometry import segmental_arch
+from yadearch.model.geometry import segmental_arch
 
 JOINT_MM = 24.0
 FRICTION_DEG = 41.2

@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from yadearch.calibration import calibrate, function_evaluator
+from yadearch.studies.calibration import calibrate, function_evaluator
 from yadearch.errors import YadearchError
 
 

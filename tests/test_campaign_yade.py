@@ -16,8 +16,8 @@ import pytest
 from click.testing import CliRunner
 from conftest import needs_yade
 
-from yadearch.campaign import RESULTS_FILE, batch_run
-from yadearch.campaign_cli import calibrate, sweep
+from yadearch.studies.campaign import RESULTS_FILE, batch_run
+from yadearch.cli.campaigns import calibrate, sweep
 from yadearch.errors import YadearchError
 
 pytestmark = [pytest.mark.yade, needs_yade]

@@ -2,8 +2,8 @@
 
 import pytest
 
-from yadearch.case import case_from_dict, load_case, preset
-from yadearch.cli import main
+from yadearch.case.config import case_from_dict, load_case, preset
+from yadearch.cli.commands import main
 from yadearch.errors import CaseError
 
 
@@ -60,9 +60,9 @@ def test_cli_reports_a_missing_case_file(capsys, tmp_path):
 
 
 def test_cli_says_in_one_line_when_yade_is_missing(capsys, monkeypatch, tmp_path):
-    import yadearch.process
+    import yadearch.engine.process
 
-    monkeypatch.setattr(yadearch.process, "YADE_PY_DIRS", (str(tmp_path / "nowhere"),))
+    monkeypatch.setattr(yadearch.engine.process, "YADE_PY_DIRS", (str(tmp_path / "nowhere"),))
     code = main(["run", "--preset", "set1", "--out", str(tmp_path / "run")])
     err = capsys.readouterr().err.strip()
     assert code == 1

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from conftest import HAS_YADE, needs_yade, stacked_pairs
-from yadearch.mechanics import ContactStiffness
-from yadearch.yade_env import import_yade
+from yadearch.case.mechanics import ContactStiffness
+from yadearch.engine.yade_env import import_yade
 
 pytestmark = [needs_yade, pytest.mark.yade]
 if HAS_YADE:
@@ -31,7 +31,7 @@ def _scene(model, geometry, fixed, gravity=(0.0, 0.0, 0.0), damping=0.0, dt=1e-6
     """A scene of `geometry` whose top blocks (odd indices) are pushed `overlap` into their bases."""
     from yade import O
 
-    from yadearch.scene import build_block_scene
+    from yadearch.engine.scene import build_block_scene
 
     scene = build_block_scene(geometry, ContactStiffness(KN, KS, TAN_PHI), density=RHO,
                               gravity=gravity, damping=damping, dt=dt, fixed=fixed, contact_model=model)
@@ -138,8 +138,8 @@ def test_block_on_tilted_plane_stays_below_the_friction_angle_and_slides_above(m
 def test_joint_elements_and_cgal_collapse_a_coarse_arch_alike():
     """The same arch, both contact models, the whole run: du within 1 % (measured: 84.11 mm with
     both, 5 s and 48 s) and the same hinges at collapse."""
-    from yadearch.case import preset
-    from yadearch.runner import Runner
+    from yadearch.case.config import preset
+    from yadearch.engine.runner import Runner
 
     coarse = {"n_voussoirs": 9, "kn_N_per_mm3": 0.15, "settlement_rate_mm_per_s": 30.0,
               "progress_every_s": 1e9}

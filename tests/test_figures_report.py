@@ -11,12 +11,13 @@ import pytest
 from click.testing import CliRunner
 
 from test_analysis import BuiltRun, paper_like_run
-from yadearch import figures
+from yadearch.plotting import run_figures as figures
 from yadearch.analysis import analyse_run, load_run
 from yadearch.analysis.blocks import block_centroids, case_geometry, snapshot_outlines
 from yadearch.errors import YadearchError
-from yadearch.report import match_reference, report, write_report
-from yadearch.rundir import write_run
+from yadearch.cli.commands import report
+from yadearch.reporting.report import match_reference, write_report
+from yadearch.results.rundir import write_run
 
 CASE_TOML = """name = "{name}"
 

@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from yadearch.geometry import block_volume, segmental_arch
+from yadearch.model.geometry import block_volume, segmental_arch
 
 R, T, D = 0.300, 0.024, 0.120
 

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from yadearch.hinges import hinge_rotation, hinges_at, same_hinges
+from yadearch.model.hinges import hinge_rotation, hinges_at, same_hinges
 
 T = 0.024
 

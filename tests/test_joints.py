@@ -5,9 +5,9 @@ import math
 import numpy as np
 import pytest
 
-from yadearch.geometry import segmental_arch
-from yadearch.joints import joint_states
-from yadearch.joints import pair_rotation, z_rotation
+from yadearch.model.geometry import segmental_arch
+from yadearch.model.joints import joint_states
+from yadearch.model.joints import pair_rotation, z_rotation
 
 
 def _centroids(arch):

@@ -11,9 +11,9 @@ import sys
 import numpy as np
 import pytest
 
-from yadearch.case import ArchCase, preset
-from yadearch.cli import main
-from yadearch.geometry import block_volume, segmental_arch
+from yadearch.case.config import ArchCase, preset
+from yadearch.cli.commands import main
+from yadearch.model.geometry import block_volume, segmental_arch
 from yadearch.solve.limit import limit_analysis, stands
 
 TOLERANCE_MM = 1e-3  # limit_analysis's default bisection width

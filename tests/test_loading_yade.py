@@ -8,8 +8,8 @@ import pandas as pd
 import pytest
 
 from conftest import HAS_YADE, needs_yade
-from yadearch.case import preset
-from yadearch.hinges import same_hinges
+from yadearch.case.config import preset
+from yadearch.model.hinges import same_hinges
 
 pytestmark = [needs_yade, pytest.mark.yade]
 
@@ -18,7 +18,7 @@ DU_TOLERANCE = 0.01  # du may move by 1 % at most when only the numerics change
 
 
 def run(overrides: dict) -> tuple[dict, pd.DataFrame]:
-    from yadearch.runner import Runner
+    from yadearch.engine.runner import Runner
 
     runner = Runner(preset("set1").with_overrides({**QUIET, **overrides}), log=lambda line: None)
     summary = runner.run()

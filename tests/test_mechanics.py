@@ -2,10 +2,10 @@
 
 import pytest
 
-from yadearch.case import preset
-from yadearch.mechanics import (compressed_length, contact_stiffness, critical_timestep,
+from yadearch.case.config import preset
+from yadearch.case.mechanics import (compressed_length, contact_stiffness, critical_timestep,
                                 effective_kn_N_per_mm3, voussoir_width)
-from yadearch.scene import arch_geometry
+from yadearch.engine.scene import arch_geometry
 
 
 def test_kn_maps_one_to_one_and_materials_get_twice_it():

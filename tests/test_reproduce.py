@@ -8,9 +8,9 @@ from pathlib import Path
 
 from click.testing import CliRunner
 
-from yadearch import cli
-from yadearch.case import preset
-from yadearch.rundir import CASE_FILE, SUMMARY_FILE, holds_case
+from yadearch.cli import commands as cli
+from yadearch.case.config import preset
+from yadearch.results.rundir import CASE_FILE, SUMMARY_FILE, holds_case
 
 
 def finished(folder: Path, case_toml: str) -> None:

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pandas as pd
 
-from yadearch.case import preset
-from yadearch.robustness import VARIANTS, robustness_table, same_hinge_set, study_rows, verdicts
+from yadearch.case.config import preset
+from yadearch.studies.robustness import VARIANTS, robustness_table, same_hinge_set, study_rows, verdicts
 
 
 def test_rows_cover_every_kn_and_variant_and_name_them():

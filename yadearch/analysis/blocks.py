@@ -6,8 +6,8 @@ from typing import Any
 
 import numpy as np
 
-from ..geometry import ArchGeometry, segmental_arch
-from ..joints import block_outlines
+from yadearch.model.geometry import ArchGeometry, segmental_arch
+from yadearch.model.joints import block_outlines
 
 MM = 1e-3
 

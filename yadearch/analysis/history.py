@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from ..hinges import hinge_rotation
+from yadearch.model.hinges import hinge_rotation
 
 EQUILIBRIUM_STAGE = "equilibrium"  # series.csv / joints.csv rows of the accepted loading states
 PATH_STAGES = ("selfweight", EQUILIBRIUM_STAGE, "collapse")

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .tracking import HingeTrack, sequence
+from yadearch.analysis.tracking import HingeTrack, sequence
 
 CAP_TOLERANCE = 0.05  # |shear| >= (1 - this) tan(phi) |normal| counts as at the Coulomb cap
 SLIP_THRESHOLD_MM = 0.2  # tangential slip that is sliding, not elastic shear (ks) deformation

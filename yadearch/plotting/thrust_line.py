@@ -15,11 +15,11 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
 
-from ..case import ArchCase
-from ..figures import AXIS_MARGINS_CM, COLUMN_CM, HINGE_COLOURS, LABEL_ROOM, PNG_DPI, STYLE, new_figure
-from ..geometry import ArchGeometry
-from ..solve.limit_result import LimitResult, write_atomically
-from ..solve.rigid import case_geometry, rotate
+from yadearch.case.config import ArchCase
+from yadearch.plotting.run_figures import AXIS_MARGINS_CM, COLUMN_CM, HINGE_COLOURS, LABEL_ROOM, PNG_DPI, STYLE, new_figure
+from yadearch.model.geometry import ArchGeometry
+from yadearch.solve.limit_result import LimitResult, write_atomically
+from yadearch.solve.rigid import case_geometry, rotate
 
 M_TO_MM = 1e3
 VOUSSOIR_COLOUR, SUPPORT_COLOUR, THRUST_COLOUR = "#EADDCA", "0.45", "#D55E00"

@@ -22,11 +22,11 @@ import time
 
 import numpy as np
 
-from .. import units
-from ..case import ArchCase
-from .limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
-from .limit_result import HingeRecord, LimitResult, interface_forces
-from .rigid import (LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, contacts, rigid_arch,
+from yadearch.model import units
+from yadearch.case.config import ArchCase
+from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
+from yadearch.solve.limit_result import HingeRecord, LimitResult, interface_forces
+from yadearch.solve.rigid import (LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, contacts, rigid_arch,
                     turn_four_bar)
 
 DEFAULT_STEP_MM = 0.5  # support step between equilibrium checks

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import linprog
 
-from .rigid import EXTRADOS, INTRADOS, Contacts, LimitError, Pivot, Placement, RigidArch, contacts, cross
+from yadearch.solve.rigid import EXTRADOS, INTRADOS, Contacts, LimitError, Pivot, Placement, RigidArch, contacts, cross
 
 LP_METHOD = "highs-ds"  # dual simplex: vertex solutions, i.e. mechanisms with the fewest hinges
 # HiGHS's default 1e-7 lets a corner force of 1e-6 of the arch's weight go negative: 0.02 mm of support

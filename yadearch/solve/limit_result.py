@@ -12,10 +12,10 @@ from typing import Callable
 
 import numpy as np
 
-from .. import units
-from ..case import ArchCase
-from .limit_lp import Statics
-from .rigid import EXTRADOS, INTRADOS, RigidArch
+from yadearch.model import units
+from yadearch.case.config import ArchCase
+from yadearch.solve.limit_lp import Statics
+from yadearch.solve.rigid import EXTRADOS, INTRADOS, RigidArch
 
 
 @dataclass(frozen=True)

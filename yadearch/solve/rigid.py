@@ -12,10 +12,10 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .. import units
-from ..case import ArchCase
-from ..errors import YadearchError
-from ..geometry import ArchGeometry, block_volume, segmental_arch
+from yadearch.model import units
+from yadearch.case.config import ArchCase
+from yadearch.errors import YadearchError
+from yadearch.model.geometry import ArchGeometry, block_volume, segmental_arch
 
 INTRADOS, EXTRADOS = 0, 1
 SIDES = "IE"  # hinge label of a pivot corner: I = intrados pivot, E = extrados pivot

@@ -18,11 +18,11 @@ import pandas as pd
 
 from scipy.optimize import brentq
 
-from .campaign import round_sig, run_campaign, run_tag
-from .case import ArchCase
-from .errors import YadearchError
-from .executors import Pool
-from .rundir import is_complete
+from yadearch.studies.campaign import round_sig, run_campaign, run_tag
+from yadearch.case.config import ArchCase
+from yadearch.errors import YadearchError
+from yadearch.studies.executors import Pool
+from yadearch.results.rundir import is_complete
 
 
 @dataclass

@@ -7,9 +7,9 @@ from typing import Any
 
 import numpy as np
 
-from .geometry import ArchGeometry
-from .mechanics import ContactStiffness
-from .shear import PerContactShear
+from yadearch.model.geometry import ArchGeometry
+from yadearch.case.mechanics import ContactStiffness
+from yadearch.engine.shear import PerContactShear
 
 # Joint j sets bit j % JOINT_MASK_BITS of the collision masks of its two blocks, so the collider only
 # pairs blocks sharing a joint (or JOINT_MASK_BITS - 1 or more joints apart, which never touch).

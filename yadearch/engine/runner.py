@@ -16,15 +16,15 @@ from typing import Callable
 
 import numpy as np
 
-from . import units
-from .case import ArchCase
-from .engine_timing import EngineClock
-from .errors import RunFailedError
-from .hinges import Hinge, hinge_rotation, hinges_at
-from .joints import joint_states
-from .scene import CALLBACK_NAME, ArchScene, body_states, build_scene
-from .solve.path import RUNAWAY, STABLE, TIMEOUT, PathResult, PathSettings, PathStep, follow_path
-from .stepping import SteppingGate
+from yadearch.model import units
+from yadearch.case.config import ArchCase
+from yadearch.engine.timing import EngineClock
+from yadearch.errors import RunFailedError
+from yadearch.model.hinges import Hinge, hinge_rotation, hinges_at
+from yadearch.model.joints import joint_states
+from yadearch.engine.scene import CALLBACK_NAME, ArchScene, body_states, build_scene
+from yadearch.solve.path import RUNAWAY, STABLE, TIMEOUT, PathResult, PathSettings, PathStep, follow_path
+from yadearch.engine.stepping import SteppingGate
 
 SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
 CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, equilibrium, records)

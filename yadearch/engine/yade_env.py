@@ -6,7 +6,7 @@ import os
 import sys
 from types import ModuleType
 
-from .errors import YadeMissingError
+from yadearch.errors import YadeMissingError
 
 YADE_PY_DIRS = ("/usr/lib/x86_64-linux-gnu/yade-double/py", "/usr/lib/x86_64-linux-gnu/yade/py")
 

@@ -8,10 +8,10 @@ import subprocess
 import sys
 from pathlib import Path
 
-from .case import ArchCase
-from .errors import RunFailedError, YadeMissingError
-from .rundir import LOG_FILE, SUMMARY_FILE
-from .yade_env import YADE_PY_DIRS
+from yadearch.case.config import ArchCase
+from yadearch.errors import RunFailedError, YadeMissingError
+from yadearch.results.rundir import LOG_FILE, SUMMARY_FILE
+from yadearch.engine.yade_env import YADE_PY_DIRS
 
 
 def check_yade_installed() -> None:
@@ -41,7 +41,7 @@ def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
     case_file.write_text(case.to_toml())
     (out / SUMMARY_FILE).unlink(missing_ok=True)
     env = dict(os.environ, OMP_NUM_THREADS=str(case.numerics.threads))
-    cmd = [sys.executable, "-m", "yadearch.simulate", str(case_file), str(out)]
+    cmd = [sys.executable, "-m", "yadearch.engine.simulate", str(case_file), str(out)]
     try:
         proc = subprocess.run(cmd, env=env, timeout=timeout_s, text=True,
                               stdout=subprocess.DEVNULL if quiet else None, stderr=subprocess.PIPE)

@@ -9,7 +9,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import Iterator
 
-from .errors import YadearchError
+from yadearch.errors import YadearchError
 
 
 @dataclass

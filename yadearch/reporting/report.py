@@ -12,13 +12,12 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import click
 
-from . import reference
-from .analysis import RunAnalysis, analyse_run, load_run
-from .analysis.tracking import format_interfaces
-from .figures import write_figures
-from .rundir import RunFolder
+from yadearch.case import reference
+from yadearch.analysis import RunAnalysis, analyse_run, load_run
+from yadearch.analysis.tracking import format_interfaces
+from yadearch.plotting.run_figures import write_figures
+from yadearch.results.rundir import RunFolder
 
 REPORT_FILE = "report.md"
 HINGE_ROWS = ("hinge_A", "hinge_B", "hinge_C")
@@ -235,13 +234,3 @@ def write_report(run_paths: list[str | Path], out: str | Path) -> Path:
     path = out / REPORT_FILE
     path.write_text("\n".join(lines))
     return path
-
-
-@click.command("report")
-@click.argument("runs", nargs=-1, required=True, type=click.Path())
-@click.option("--out", required=True, type=click.Path(file_okay=False),
-              help="folder that receives report.md and the figures")
-def report(runs: tuple[str, ...], out: str) -> None:
-    """Write OUT/report.md for the run folders RUNS: comparison with the paper, hinges, figures."""
-    path = write_report(list(runs), out)
-    click.echo(f"report -> {path}")

@@ -8,50 +8,25 @@ from typing import Any
 
 import click
 
-from . import reference
-from .calibration import calibrate as calibrate_kn
-from .calibration import campaign_evaluator
-from .campaign import RESULTS_FILE, grid, parse_values, read_table, run_campaign, short_name
-from .case import ArchCase
-from .errors import YadearchError
-from .executors import open_pool
-from .robustness import KN_VALUES, VARIANTS, run_study, verdicts
+from yadearch.case import reference
+from yadearch.studies.calibration import calibrate as calibrate_kn
+from yadearch.studies.calibration import campaign_evaluator
+from yadearch.studies.campaign import RESULTS_FILE, grid, parse_values, read_table, run_campaign, short_name
+from yadearch.case.config import ArchCase
+from yadearch.errors import YadearchError
+from yadearch.cli.options import case_options, pool_options, resolve_case, timeout_s
+from yadearch.studies.executors import open_pool
+from yadearch.studies.robustness import KN_VALUES, VARIANTS, run_study, verdicts
 
 KN_KEY = "kn_N_per_mm3"
 
 
-def _base_options(func: Any) -> Any:
-    """--preset/--case/--set: the base case every run starts from."""
-    func = click.option("--set", "settings", multiple=True, metavar="KEY=VALUE",
-                        help="override a parameter of every run, e.g. --set n_voussoirs=15")(func)
-    func = click.option("--case", "case_file", type=click.Path(dir_okay=False),
-                        help="base case TOML file")(func)
-    return click.option("--preset", "preset_name", type=click.Choice(["set1", "set2"]),
-                        help="base case: the paper arch with the kn of voussoir set 1 or 2")(func)
-
-
-def _pool_options(func: Any) -> Any:
-    """--jobs/--scheduler/--timeout-min: where and how long runs may execute."""
-    func = click.option("--timeout-min", type=float,
-                        help="fail a run that takes longer than this (minutes)")(func)
-    func = click.option("--scheduler", metavar="ADDRESS",
-                        help="run on this dask.distributed scheduler (e.g. tcp://host:8786)")(func)
-    return click.option("--jobs", type=click.IntRange(min=1),
-                        help="runs at once on this machine [default: one per core]")(func)
-
-
 def _base_case(preset_name: str | None, case_file: str | None, settings: tuple[str, ...]) -> ArchCase:
-    from .cli import resolve_case  # imported here: cli imports this module to add the commands
-
     return resolve_case(preset_name, case_file, None, settings)
 
 
-def _timeout_s(timeout_min: float | None) -> float | None:
-    return None if timeout_min is None else 60.0 * timeout_min
-
-
 @click.command()
-@_base_options
+@case_options(with_kn=False)
 @click.option("--kn", "kn_spec", metavar="VALUES",
               help="kn values (N/mm3): 0.25,5.2 or start:stop:log:n, e.g. 0.1:100:log:13")
 @click.option("--param", "param_specs", multiple=True, metavar="NAME=VALUES",
@@ -60,7 +35,7 @@ def _timeout_s(timeout_min: float | None) -> float | None:
               help="explicit CSV table of runs instead of a grid (one column per parameter)")
 @click.option("--out", required=True, type=click.Path(file_okay=False),
               help="campaign folder: one run folder per run, runs.csv, results.csv")
-@_pool_options
+@pool_options
 @click.option("--figure/--no-figure", default=True, show_default=True,
               help="draw du and hinges against kn when kn is the only swept parameter")
 @click.option("--retry-failed/--keep-failed", default=True, show_default=True,
@@ -93,7 +68,7 @@ def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, .
     folder = Path(out)
     with open_pool(jobs, scheduler) as pool:
         click.echo(f"campaign {folder}: {len(rows)} runs on {pool.where}")
-        table = run_campaign(base, rows, folder, pool, timeout_s=_timeout_s(timeout_min),
+        table = run_campaign(base, rows, folder, pool, timeout_s=timeout_s(timeout_min),
                              retry_failed=retry_failed)
     counts = table["status"].value_counts().to_dict()
     click.echo(f"{len(table)} runs: {counts.get('done', 0)} done, {counts.get('failed', 0)} failed, "
@@ -101,7 +76,7 @@ def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, .
     swept = {short_name(k) for row in rows for k in row if k != "run"}
     if figure and swept == {short_name(KN_KEY)}:
         try:
-            from .sweep_figure import kn_sweep_figure
+            from yadearch.plotting.sweep import kn_sweep_figure
 
             paths = kn_sweep_figure(table, folder / "du_vs_kn")
             click.echo(f"figure -> {', '.join(map(str, paths))}")
@@ -113,7 +88,7 @@ def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, .
 
 
 @click.command()
-@_base_options
+@case_options(with_kn=False)
 @click.option("--target-du", "target_du", type=float, required=True,
               help="measured collapse displacement to match (mm)")
 @click.option("--tolerance-mm", type=click.FloatRange(min=0, min_open=True), default=0.5,
@@ -128,7 +103,7 @@ def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, .
               help="result JSON, e.g. reports/calibration/set1.json")
 @click.option("--runs-dir", type=click.Path(file_okay=False),
               help="run folders [default: OUT without .json]")
-@_pool_options
+@pool_options
 def calibrate(preset_name: str | None, case_file: str | None, settings: tuple[str, ...],
               target_du: float, tolerance_mm: float, kn_min: float, kn_max: float, max_runs: int,
               out: str, runs_dir: str | None, jobs: int | None, scheduler: str | None,
@@ -140,7 +115,7 @@ def calibrate(preset_name: str | None, case_file: str | None, settings: tuple[st
     click.echo(f"calibrating kn of {base.name} to du = {target_du:g} +- {tolerance_mm:g} mm, "
                f"kn in [{kn_min:g}, {kn_max:g}] N/mm3; runs in {runs}")
     with open_pool(jobs, scheduler) as pool:
-        result = calibrate_kn(campaign_evaluator(base, runs, pool, _timeout_s(timeout_min)),
+        result = calibrate_kn(campaign_evaluator(base, runs, pool, timeout_s(timeout_min)),
                               target_du, tolerance_mm, kn_min, kn_max, max_runs, log=click.echo)
     result.write(out_path)
     click.echo(f"kn = {result.kn_N_per_mm3:.4g} N/mm3 gives du = {result.du_mm:.2f} mm "
@@ -152,14 +127,14 @@ def calibrate(preset_name: str | None, case_file: str | None, settings: tuple[st
 
 
 @click.command()
-@_base_options
+@case_options(with_kn=False)
 @click.option("--kn", "kn_spec", metavar="VALUES", default=",".join(f"{k:g}" for k in KN_VALUES),
               show_default=True, help="kn values (N/mm3)")
 @click.option("--variant", "variant_names", multiple=True, type=click.Choice(list(VARIANTS)),
               help="run only these variants [default: all]")
 @click.option("--out", default="reports/robustness", show_default=True, type=click.Path(file_okay=False),
               help="study folder: run folders, robustness.csv, robustness.md")
-@_pool_options
+@pool_options
 def robustness(preset_name: str | None, case_file: str | None, settings: tuple[str, ...],
                kn_spec: str, variant_names: tuple[str, ...], out: str, jobs: int | None,
                scheduler: str | None, timeout_min: float | None) -> None:
@@ -170,7 +145,7 @@ def robustness(preset_name: str | None, case_file: str | None, settings: tuple[s
     folder = Path(out)
     with open_pool(jobs, scheduler) as pool:
         table = run_study(base, folder, pool, kn_values, variant_names or tuple(VARIANTS),
-                          timeout_s=_timeout_s(timeout_min))
+                          timeout_s=timeout_s(timeout_min))
     for _, row in verdicts(table).iterrows():
         click.echo(f"kn {row.kn_N_per_mm3:g}: base du {row.base_du_mm:.2f} mm ({row.base_hinges}), numerics "
                    f"spread {row.numerics_spread:.2%}, hinges {'kept' if row.hinges_kept else 'moved'}, "

@@ -10,7 +10,7 @@ from typing import Any
 
 import pandas as pd
 
-from .case import ArchCase, as_ran
+from yadearch.case.config import ArchCase, as_ran
 
 CASE_FILE = "case.toml"
 SERIES_FILE = "series.csv"

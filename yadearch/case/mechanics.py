@@ -12,9 +12,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from . import units
-from .case import ArchCase
-from .geometry import ArchGeometry
+from yadearch.model import units
+from yadearch.case.config import ArchCase
+from yadearch.model.geometry import ArchGeometry
 
 
 @dataclass(frozen=True)

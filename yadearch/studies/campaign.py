@@ -24,11 +24,11 @@ import numpy as np
 import pandas as pd
 from tqdm import tqdm
 
-from .case import ArchCase, parameter_docs, preset
-from .errors import CaseError, RunFailedError, YadearchError
-from .executors import Pool
-from .process import check_yade_installed, run_case_process
-from .rundir import SUMMARY_FILE, case_differences, is_complete
+from yadearch.case.config import ArchCase, parameter_docs, preset
+from yadearch.errors import CaseError, RunFailedError, YadearchError
+from yadearch.studies.executors import Pool
+from yadearch.engine.process import check_yade_installed, run_case_process
+from yadearch.results.rundir import SUMMARY_FILE, case_differences, is_complete
 
 FAILED_FILE = "failed.json"
 RUNS_FILE = "runs.csv"

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from .geometry import ArchGeometry
+from yadearch.model.geometry import ArchGeometry
 
 
 @dataclass(frozen=True)

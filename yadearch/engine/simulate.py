@@ -1,4 +1,4 @@
-"""One simulation in this process: `python -m yadearch.simulate CASE.toml OUT_DIR`.
+"""One simulation in this process: `python -m yadearch.engine.simulate CASE.toml OUT_DIR`.
 
 Each run gets its own process (YADE keeps one global scene per interpreter; a crash must not take a
 campaign down). Exit code 0: run folder complete; 1: the run failed (reason in run.log and stderr).
@@ -10,17 +10,17 @@ import sys
 import time
 from pathlib import Path
 
-from . import units
-from .case import ArchCase, load_case
-from .errors import YadearchError
-from .provenance import provenance
-from .rundir import LOG_FILE, write_run
+from yadearch.model import units
+from yadearch.case.config import ArchCase, load_case
+from yadearch.errors import YadearchError
+from yadearch.results.provenance import provenance
+from yadearch.results.rundir import LOG_FILE, write_run
 
 
 def simulate(case: ArchCase, out: Path) -> dict:
     """Run `case` to collapse and write its run folder to `out`; returns the summary."""
-    from .runner import Runner
-    from .yade_env import import_yade
+    from yadearch.engine.runner import Runner
+    from yadearch.engine.yade_env import import_yade
 
     out.mkdir(parents=True, exist_ok=True)
     log_file = (out / LOG_FILE).open("w")
@@ -62,7 +62,7 @@ def simulate(case: ArchCase, out: Path) -> dict:
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 2:
-        print("usage: python -m yadearch.simulate CASE.toml OUT_DIR", file=sys.stderr)
+        print("usage: python -m yadearch.engine.simulate CASE.toml OUT_DIR", file=sys.stderr)
         return 2
     try:
         simulate(load_case(argv[0]), Path(argv[1]))

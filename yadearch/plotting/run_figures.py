@@ -15,10 +15,10 @@ import pandas as pd
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
 
-from .analysis import RunAnalysis
-from .analysis.blocks import case_geometry, joint_points, snapshot_outlines
-from .analysis.history import EQUILIBRIUM_STAGE
-from .rundir import RunFolder
+from yadearch.analysis import RunAnalysis
+from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
+from yadearch.analysis.history import EQUILIBRIUM_STAGE
+from yadearch.results.rundir import RunFolder
 
 CM = 1 / 2.54  # inches
 COLUMN_CM = 8.5

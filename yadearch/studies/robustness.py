@@ -14,9 +14,9 @@ from typing import Any, Callable
 
 import pandas as pd
 
-from .campaign import RESULTS_FILE, run_campaign
-from .case import ArchCase
-from .executors import Pool
+from yadearch.studies.campaign import RESULTS_FILE, run_campaign
+from yadearch.case.config import ArchCase
+from yadearch.studies.executors import Pool
 
 KN_VALUES = (0.1, 0.25, 1.0, 5.2, 17.78, 100.0)
 TOLERANCE = 0.01  # largest relative change of du a numerical variant may cause

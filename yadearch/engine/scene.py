@@ -13,15 +13,15 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from . import units
-from .case import ArchCase
-from .cgal_contacts import CgalContacts
-from .geometry import ArchGeometry, segmental_arch
-from .joint_elements import JointElementContacts
-from .joints import z_rotation
-from .mechanics import ContactStiffness, contact_stiffness, critical_timestep
-from .stepping import close_active
-from .yade_env import import_yade
+from yadearch.model import units
+from yadearch.case.config import ArchCase
+from yadearch.engine.cgal_contacts import CgalContacts
+from yadearch.model.geometry import ArchGeometry, segmental_arch
+from yadearch.engine.joint_elements import JointElementContacts
+from yadearch.model.joints import z_rotation
+from yadearch.case.mechanics import ContactStiffness, contact_stiffness, critical_timestep
+from yadearch.engine.stepping import close_active
+from yadearch.engine.yade_env import import_yade
 
 # Poisson ratio given to YADE materials so that Ip2's ks = young*poisson is negligible but not the
 # NaN that poisson = 0 produces (0/0 in the harmonic mean).

@@ -9,30 +9,13 @@ from typing import Any
 
 import click
 
-from .campaign import parse_scalar
-from .case import ArchCase, load_case, parameter_docs, preset
-from .errors import YadearchError
-from .process import run_case_process
-from .rundir import holds_case
-from .campaign_cli import calibrate, robustness, sweep
-from .report import report, write_report
-
-
-def resolve_case(preset_name: str | None, case_file: str | None, kn: float | None,
-                 settings: tuple[str, ...]) -> ArchCase:
-    """The case from a preset or a TOML file, with `--kn` and `--set key=value` overrides applied."""
-    if preset_name and case_file:
-        raise click.UsageError("give either --preset or --case, not both")
-    case = load_case(case_file) if case_file else preset(preset_name or "set2")
-    overrides: dict[str, Any] = {}
-    for item in settings:
-        if "=" not in item:
-            raise click.UsageError(f"--set expects key=value, got {item!r}")
-        key, value = item.split("=", 1)
-        overrides[key.strip()] = parse_scalar(value)
-    if kn is not None:
-        overrides["interface.kn_N_per_mm3"] = kn
-    return case.with_overrides(overrides) if overrides else case
+from yadearch.case.config import ArchCase, load_case, parameter_docs, preset
+from yadearch.errors import YadearchError
+from yadearch.engine.process import run_case_process
+from yadearch.results.rundir import holds_case
+from yadearch.cli.campaigns import calibrate, robustness, sweep
+from yadearch.cli.options import case_options, resolve_case
+from yadearch.reporting.report import write_report
 
 
 def _report_summary(out: Path) -> None:
@@ -50,24 +33,8 @@ def cli() -> None:
     """Masonry arches on moving supports, simulated with YADE (polyhedral blocks, dry joints)."""
 
 
-case_options = [
-    click.option("--preset", "preset_name", type=click.Choice(["set1", "set2"]),
-                 help="paper arch with the kn of voussoir set 1 (0.25 N/mm3) or set 2 (5.2 N/mm3)"),
-    click.option("--case", "case_file", type=click.Path(dir_okay=False), help="case TOML file"),
-    click.option("--kn", type=float, help="interface normal stiffness kn (N/mm3)"),
-    click.option("--set", "settings", multiple=True, metavar="KEY=VALUE",
-                 help="override any parameter, e.g. --set numerics.damping=0.3 (see `yadearch params`)"),
-]
-
-
-def with_case_options(func: Any) -> Any:
-    for option in reversed(case_options):
-        func = option(func)
-    return func
-
-
 @cli.command()
-@with_case_options
+@case_options(with_kn=True)
 @click.option("--name", help="run name (default: the preset's or case's)")
 @click.option("--out", type=click.Path(file_okay=False), help="run folder (default runs/NAME)")
 def run(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
@@ -116,15 +83,15 @@ def params() -> None:
 
 
 @cli.command()
-@with_case_options
+@case_options(with_kn=True)
 @click.option("--out", type=click.Path(file_okay=False), default="reports/limit", show_default=True,
               help="folder that receives NAME.json, NAME.pdf and NAME.png")
 def limit(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
           out: str) -> None:
     """Rigid-block limit analysis, no YADE (kn is ignored): du_rigid, hinges, thrust-line figure."""
-    from .plotting.thrust_line import save_thrust_line
-    from .solve.limit import limit_analysis
-    from .solve.limit_result import write_result_json
+    from yadearch.plotting.thrust_line import save_thrust_line
+    from yadearch.solve.limit import limit_analysis
+    from yadearch.solve.limit_result import write_result_json
 
     case = resolve_case(preset_name, case_file, kn, settings)
     result = limit_analysis(case)
@@ -136,10 +103,19 @@ def limit(preset_name: str | None, case_file: str | None, kn: float | None, sett
                f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}")
 
 
-cli.add_command(report)
 cli.add_command(sweep)
 cli.add_command(calibrate)
 cli.add_command(robustness)
+
+
+@cli.command("report")
+@click.argument("runs", nargs=-1, required=True, type=click.Path())
+@click.option("--out", required=True, type=click.Path(file_okay=False),
+              help="folder that receives report.md and the figures")
+def report(runs: tuple[str, ...], out: str) -> None:
+    """Write OUT/report.md for the run folders RUNS: comparison with the paper, hinges, figures."""
+    path = write_report(list(runs), out)
+    click.echo(f"report -> {path}")
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -15,7 +15,7 @@ from typing import Any
 
 import tomli_w
 
-from .errors import CaseError
+from yadearch.errors import CaseError
 
 
 def _num(low: float | None = None, high: float | None = None, *, low_open: bool = False,

@@ -16,7 +16,7 @@ import time
 
 import __main__
 
-from .errors import RunFailedError
+from yadearch.errors import RunFailedError
 
 GATE_LABEL = "yadearch_stepping_gate"
 GATE_NAME = "_yadearch_gate"  # where the gate engine's command finds the gate

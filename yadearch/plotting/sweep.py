@@ -14,7 +14,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.ticker import MaxNLocator  # noqa: E402
 import pandas as pd  # noqa: E402
 
-from . import reference  # noqa: E402
+from yadearch.case import reference  # noqa: E402
 
 COLUMN_WIDTH_IN = 3.5  # one journal column
 HINGE_STYLE = {"hinge_A": ("o", "A (intrados)"), "hinge_B": ("s", "B (extrados)"),

@@ -1,0 +1,63 @@
+"""Options shared by the commands (one declaration each) and the case they describe."""
+
+from __future__ import annotations
+
+from typing import Any, Callable
+
+import click
+
+from yadearch.case.config import ArchCase, load_case, preset
+from yadearch.studies.campaign import parse_scalar
+
+PRESETS = ("set1", "set2")
+
+
+def resolve_case(preset_name: str | None, case_file: str | None, kn: float | None,
+                 settings: tuple[str, ...]) -> ArchCase:
+    """The case from a preset or a TOML file, with `--kn` and `--set key=value` overrides applied."""
+    if preset_name and case_file:
+        raise click.UsageError("give either --preset or --case, not both")
+    case = load_case(case_file) if case_file else preset(preset_name or "set2")
+    overrides: dict[str, Any] = {}
+    for item in settings:
+        if "=" not in item:
+            raise click.UsageError(f"--set expects key=value, got {item!r}")
+        key, value = item.split("=", 1)
+        overrides[key.strip()] = parse_scalar(value)
+    if kn is not None:
+        overrides["interface.kn_N_per_mm3"] = kn
+    return case.with_overrides(overrides) if overrides else case
+
+
+def case_options(with_kn: bool) -> Callable[[Any], Any]:
+    """--preset/--case/--set (and --kn, for commands about one case): the case a command starts from."""
+    options = [
+        click.option("--preset", "preset_name", type=click.Choice(PRESETS),
+                     help="paper arch with the kn of voussoir set 1 (0.25 N/mm3) or set 2 (5.2 N/mm3)"),
+        click.option("--case", "case_file", type=click.Path(dir_okay=False), help="case TOML file"),
+        click.option("--set", "settings", multiple=True, metavar="KEY=VALUE",
+                     help="override any parameter, e.g. --set numerics.damping=0.3 (see `yadearch params`)"),
+    ]
+    if with_kn:
+        options.insert(2, click.option("--kn", type=float, help="interface normal stiffness kn (N/mm3)"))
+
+    def decorate(func: Any) -> Any:
+        for option in reversed(options):
+            func = option(func)
+        return func
+    return decorate
+
+
+def pool_options(func: Any) -> Any:
+    """--jobs/--scheduler/--timeout-min: where and how long runs may execute."""
+    func = click.option("--timeout-min", type=float,
+                        help="fail a run that takes longer than this (minutes)")(func)
+    func = click.option("--scheduler", metavar="ADDRESS",
+                        help="run on this dask.distributed scheduler (e.g. tcp://host:8786)")(func)
+    return click.option("--jobs", type=click.IntRange(min=1),
+                        help="runs at once on this machine [default: one per core]")(func)
+
+
+def timeout_s(timeout_min: float | None) -> float | None:
+    """--timeout-min in seconds (None: no limit)."""
+    return None if timeout_min is None else 60.0 * timeout_min

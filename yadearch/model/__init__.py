@@ -1,0 +1,1 @@
+"""Pure mechanics of the voussoir arch: geometry, joint kinematics, the joint law, hinges, units (no YADE)."""
