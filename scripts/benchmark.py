@@ -1,6 +1,6 @@
 """Speed benchmark: full runs of set 1, set 2 (and the kn 100 case), set 2's du against a slow
-reference, the rigid-block limit analysis of the paper arch, the contact models' speeds on the same steps, the driver's overhead over
-YADE's engine loop, and the sweep's wall time.
+reference, the rigid-block limit analysis of the paper arch, the contact models' speeds on the same
+steps, the driver's overhead over YADE's engine loop, and the sweep's wall time.
 
     .venv/bin/python scripts/benchmark.py [--out reports/benchmark.json] [--stiff] [--sweep DIR] [--measure-mm X]
         [--threads-steps N]
@@ -12,7 +12,8 @@ reference's wall time over the default run's. --measure-mm X times the first X m
 loading with the full runner and with a bare `O.run` of the same scene and steps: their ratio is the
 driver overhead (each run's summary also keeps its per-engine profile). It does so for the default
 contact model (joint elements) and for YADE's CGAL polyhedra contacts, the baseline: the ratio of
-their steps/s on the same steps is the contact model's speed-up. The sweep's wall time is the sum of the sessions a campaign folder recorded.
+their steps/s on the same steps is the contact model's speed-up. The sweep's wall time is the sum of
+the sessions a campaign folder recorded.
 --threads-steps N times N steps of the set 2 scene with 1 and with 2 OpenMP threads.
 Prints a verdict line per target and writes everything to the JSON file.
 """
@@ -83,11 +84,12 @@ def loading_measurement(settle_mm: float, set2_steps: int, contact_model: str) -
     load average, which says whether the core was free."""
     import os
 
-    from yadearch.model import units
     from yadearch.case.config import preset
-    from yadearch.engine.runner import DRIVER_LABEL, Runner
+    from yadearch.engine.driver import DRIVER_LABEL
+    from yadearch.engine.runner import Runner
     from yadearch.engine.scene import CALLBACK_NAME
     from yadearch.engine.yade_env import import_yade
+    from yadearch.model import units
 
     import_yade()
     from yade import O
@@ -209,9 +211,9 @@ def main() -> int:
         print(scene_rate(args.scene_rate, args.scene_model))
         return 0
 
-    from yadearch.studies.campaign import campaign_wall_s
     from yadearch.case.config import preset
     from yadearch.model.hinges import same_hinges
+    from yadearch.studies.campaign import campaign_wall_s
 
     runs = Path(args.runs)
     cases = {"set1": preset("set1"), "set2": preset("set2")}
@@ -282,7 +284,8 @@ def main() -> int:
          and sweep["done"] >= TARGET_SWEEP_POINTS,
          f"{sweep_wall / 60:.1f} min in its recorded sessions ({sweep_wall / TARGET_SWEEP_WALL_S:.1f}x the "
          f"target), {sweep['done']} done, {sweep['failed']} failed; the runs' own wall times add up to "
-         f"{sweep['run_wall_s'] / 60:.1f} min" if sweep_wall is not None else "no sweep folder given (sweep_wall_s null)"),
+         f"{sweep['run_wall_s'] / 60:.1f} min" if sweep_wall is not None
+         else "no sweep folder given (sweep_wall_s null)"),
     ]
     for label, ok, detail in verdicts:
         print(f"{'PASS' if ok else 'FAIL'}  {label}: {detail}")

@@ -19,8 +19,8 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from yadearch.case.config import preset
-from yadearch.model.hinges import same_hinges
 from yadearch.engine.process import run_case_process
+from yadearch.model.hinges import same_hinges
 from yadearch.results.rundir import holds_case
 
 TOLERANCE = 0.01

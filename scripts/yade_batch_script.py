@@ -20,10 +20,10 @@ sys.path.insert(0, str(Path(sys.argv[0]).resolve().parents[1]))  # this checkout
 
 from yade import utils  # noqa: E402  (the launcher provides YADE)
 
-from yadearch.studies.campaign import batch_run, record_failure  # noqa: E402
+from yadearch.engine.simulate import simulate  # noqa: E402
 from yadearch.errors import YadearchError  # noqa: E402
 from yadearch.results.rundir import is_complete  # noqa: E402
-from yadearch.engine.simulate import simulate  # noqa: E402
+from yadearch.studies.campaign import batch_run, record_failure  # noqa: E402
 
 utils.readParamsFromTable(noTableOk=True, unknownOk=True, preset="set2", out="runs/yade-batch")
 from yade.params import table  # noqa: E402  (written by readParamsFromTable)

@@ -4,11 +4,11 @@ hinges under settlement."""
 from __future__ import annotations
 
 import pytest
-
 from conftest import HAS_YADE, needs_yade
-from yadearch.model import units
+
 from yadearch.case.config import preset
 from yadearch.engine.yade_env import import_yade
+from yadearch.model import units
 
 pytestmark = [needs_yade, pytest.mark.yade]
 if HAS_YADE:

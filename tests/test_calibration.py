@@ -7,8 +7,8 @@ import math
 
 import pytest
 
-from yadearch.studies.calibration import calibrate, function_evaluator
 from yadearch.errors import YadearchError
+from yadearch.studies.calibration import calibrate, function_evaluator
 
 
 def sigmoid(kn: float) -> float:

@@ -13,15 +13,24 @@ import pandas as pd
 import pytest
 from click.testing import CliRunner
 
-from yadearch.studies.campaign import (FAILED_FILE, RESULTS_FILE, SESSIONS_FILE, batch_run, campaign_wall_s,
-                               grid, label_hinges, parse_values, plan, read_table, record_failure,
-                               run_campaign, run_tag)
-from yadearch.cli.campaigns import sweep
 from yadearch.case.config import preset
-from yadearch.errors import CaseError, YadearchError
-from yadearch.studies.executors import local_pool
+from yadearch.cli.campaigns import sweep
 from yadearch.engine.process import exit_reason
+from yadearch.errors import CaseError, YadearchError
 from yadearch.plotting.sweep import kn_sweep_figure
+from yadearch.studies.campaign import (
+    FAILED_FILE,
+    RESULTS_FILE,
+    SESSIONS_FILE,
+    batch_run,
+    campaign_wall_s,
+    label_hinges,
+    plan,
+    record_failure,
+    run_campaign,
+)
+from yadearch.studies.executors import local_pool
+from yadearch.studies.grid import grid, parse_values, read_table, run_tag
 
 REPO = Path(__file__).resolve().parents[1]
 BASE = preset("set1").with_overrides({"n_voussoirs": 15})

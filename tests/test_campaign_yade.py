@@ -16,9 +16,9 @@ import pytest
 from click.testing import CliRunner
 from conftest import needs_yade
 
-from yadearch.studies.campaign import RESULTS_FILE, batch_run
 from yadearch.cli.campaigns import calibrate, sweep
 from yadearch.errors import YadearchError
+from yadearch.studies.campaign import RESULTS_FILE, batch_run
 
 pytestmark = [pytest.mark.yade, needs_yade]
 

@@ -7,8 +7,8 @@ import math
 
 import numpy as np
 import pytest
-
 from conftest import HAS_YADE, needs_yade, stacked_pairs
+
 from yadearch.case.mechanics import ContactStiffness
 from yadearch.engine.yade_env import import_yade
 

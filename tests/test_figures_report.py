@@ -9,13 +9,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 from click.testing import CliRunner
-
 from test_analysis import BuiltRun, paper_like_run
-from yadearch.plotting import run_figures as figures
+
 from yadearch.analysis import analyse_run, load_run
 from yadearch.analysis.blocks import block_centroids, case_geometry, snapshot_outlines
-from yadearch.errors import YadearchError
 from yadearch.cli.commands import report
+from yadearch.errors import YadearchError
+from yadearch.plotting import run_figures as figures
 from yadearch.reporting.report import match_reference, write_report
 from yadearch.results.rundir import write_run
 

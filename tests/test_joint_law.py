@@ -7,8 +7,8 @@ import math
 
 import numpy as np
 import pytest
-
 from conftest import stacked_pairs
+
 from yadearch.model.joint_law import JointLaw, joint_forces, joint_table, unbalanced_force
 
 KN, KS, TAN_PHI = 5.2e9, 2.6e9, math.tan(math.radians(41.2))

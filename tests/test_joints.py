@@ -6,8 +6,7 @@ import numpy as np
 import pytest
 
 from yadearch.model.geometry import segmental_arch
-from yadearch.model.joints import joint_states
-from yadearch.model.joints import pair_rotation, z_rotation
+from yadearch.model.joints import joint_states, pair_rotation, z_rotation
 
 
 def _centroids(arch):

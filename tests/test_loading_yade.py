@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import pandas as pd
 import pytest
-
 from conftest import HAS_YADE, needs_yade
+
 from yadearch.case.config import preset
 from yadearch.model.hinges import same_hinges
 

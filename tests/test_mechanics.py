@@ -3,8 +3,13 @@
 import pytest
 
 from yadearch.case.config import preset
-from yadearch.case.mechanics import (compressed_length, contact_stiffness, critical_timestep,
-                                effective_kn_N_per_mm3, voussoir_width)
+from yadearch.case.mechanics import (
+    compressed_length,
+    contact_stiffness,
+    critical_timestep,
+    effective_kn_N_per_mm3,
+    voussoir_width,
+)
 from yadearch.engine.scene import arch_geometry
 
 

@@ -8,8 +8,8 @@ from pathlib import Path
 
 from click.testing import CliRunner
 
-from yadearch.cli import commands as cli
 from yadearch.case.config import preset
+from yadearch.cli import commands as cli
 from yadearch.results.rundir import CASE_FILE, SUMMARY_FILE, holds_case
 
 

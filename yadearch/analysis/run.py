@@ -9,14 +9,27 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from yadearch.errors import YadearchError
-from yadearch.results.rundir import RunFolder, is_complete, read_run
 from yadearch.analysis.blocks import case_geometry, tangential_slip_mm
 from yadearch.analysis.history import JointHistory, joint_history
-from yadearch.analysis.mechanism import (CAP_TOLERANCE, SLIP_THRESHOLD_MM, SlidingJoint, describe_mechanism,
-                        sliding_joints)
-from yadearch.analysis.tracking import (MAX_JUMP_INTERFACES, OPENING_THRESHOLD_MM, ROTATION_THRESHOLD_MRAD, HingeTrack,
-                       formation_steps, hinge_table, sequence, track_hinges)
+from yadearch.analysis.mechanism import (
+    CAP_TOLERANCE,
+    SLIP_THRESHOLD_MM,
+    SlidingJoint,
+    describe_mechanism,
+    sliding_joints,
+)
+from yadearch.analysis.tracking import (
+    MAX_JUMP_INTERFACES,
+    OPENING_THRESHOLD_MM,
+    ROTATION_THRESHOLD_MRAD,
+    HingeTrack,
+    formation_steps,
+    hinge_table,
+    sequence,
+    track_hinges,
+)
+from yadearch.errors import YadearchError
+from yadearch.results.rundir import RunFolder, is_complete, read_run
 
 
 @dataclass(frozen=True)

@@ -15,8 +15,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from yadearch.model.hinges import Hinge, hinges_at
 from yadearch.analysis.history import JointHistory
+from yadearch.model.hinges import Hinge, hinges_at
 
 ROTATION_THRESHOLD_MRAD = 2.0  # runner's default: 0.05 mm across a 24 mm joint
 OPENING_THRESHOLD_MM = 0.02  # a hinge has formed once its joint has opened this much

@@ -15,147 +15,15 @@ from typing import Any
 
 import tomli_w
 
+from yadearch.case.sections import (
+    SECTIONS,
+    GeometryConfig,
+    InterfaceConfig,
+    LoadingConfig,
+    MaterialConfig,
+    NumericsConfig,
+)
 from yadearch.errors import CaseError
-
-
-def _num(low: float | None = None, high: float | None = None, *, low_open: bool = False,
-         high_open: bool = False, doc: str = "") -> dict[str, Any]:
-    """Field metadata: the accepted range of a number and a one-line description."""
-    return {"low": low, "high": high, "low_open": low_open, "high_open": high_open, "doc": doc}
-
-
-@dataclass
-class GeometryConfig:
-    """Segmental arch of trapezoidal voussoirs on two rigid support blocks."""
-
-    n_voussoirs: int = field(default=55, metadata=_num(2, 1000, doc="number of voussoirs"))
-    embrace_deg: float = field(default=125.0, metadata=_num(0, 180, low_open=True,
-                                                             doc="angle of embrace (deg)"))
-    internal_radius_mm: float = field(default=300.0, metadata=_num(0, low_open=True,
-                                                                   doc="intrados radius (mm)"))
-    thickness_mm: float = field(default=24.0, metadata=_num(0, low_open=True,
-                                                            doc="radial thickness (mm)"))
-    depth_mm: float = field(default=120.0, metadata=_num(0, low_open=True,
-                                                         doc="out-of-plane depth (mm)"))
-    support_length_mm: float = field(default=36.0, metadata=_num(0, low_open=True,
-                                     doc="extent of each support block beyond its springing face (mm)"))
-
-
-@dataclass
-class MaterialConfig:
-    """Block material (paper §2): density, joint friction, and the blocks' own elasticity."""
-
-    density_g_per_cm3: float = field(default=1.64, metadata=_num(0, low_open=True,
-                                                                 doc="block density (g/cm^3)"))
-    friction_deg: float = field(default=41.2, metadata=_num(0, 90, high_open=True,
-                                                            doc="joint friction angle (deg)"))
-    young_MPa: float = field(default=941.0, metadata=_num(0, low_open=True,
-                             doc="block Young's modulus (MPa); used only if block_elasticity"))
-    block_elasticity: bool = field(default=False, metadata={"doc": "fold the block's axial "
-                                   "stiffness young/width in series into kn (off: rigid blocks)"})
-
-
-@dataclass
-class InterfaceConfig:
-    """Dry-joint interface: no-tension Winkler normal stiffness kn and shear stiffness ks = ratio*kn."""
-
-    kn_N_per_mm3: float = field(default=5.2, metadata=_num(0, low_open=True,
-                                doc="interface normal stiffness (N/mm^3)"))
-    ks_over_kn: float = field(default=0.5, metadata=_num(0, low_open=True,
-                              doc="shear-to-normal stiffness ratio (paper: 0.5)"))
-
-
-@dataclass
-class LoadingConfig:
-    """Self-weight, then a monotonic displacement of the right support."""
-
-    gravity_m_per_s2: float = field(default=9.81, metadata=_num(0, low_open=True,
-                                    doc="gravitational acceleration (m/s^2)"))
-    settlement_direction_deg: float = field(default=-90.0, metadata=_num(-180, 180,
-                                            doc="direction of the support motion from +x (deg); "
-                                                "-90 = vertical settlement"))
-    max_settlement_mm: float = field(default=150.0, metadata=_num(0, low_open=True,
-                                     doc="stop without collapse beyond this support displacement (mm)"))
-
-
-@dataclass
-class NumericsConfig:
-    """Numerical settings. None of them is physics: du must not depend on them (scripts/convergence.py)."""
-
-    settlement_rate_mm_per_s: float = field(default=80.0, metadata=_num(0, low_open=True,
-                                            doc="support speed during continuous loading (mm/s)"))
-    rate_reference_kn_N_per_mm3: float = field(default=0.0, metadata={**_num(
-        0, doc="joints stiffer than this (N/mm^3) load more slowly: the support speed is "
-        "settlement_rate x sqrt(this / kn); 0 = no scaling (the default: with loading by "
-        "equilibrium increments, kn 100 gives du 108.21 mm unscaled and 108.84 mm at 10, the same "
-        "hinges, in 13 % fewer steps)"), "predates": 0.0})
-    support_acceleration_mm_per_s2: float = field(default=640.0, metadata={**_num(
-        0, doc="acceleration and braking of the support at the start and end of each move (mm/s^2); "
-        "0 = instantaneous. The same at any kn: it sets the inertial load of the moving arch (640 = "
-        "0.065 g)"), "predates": 0.0})
-    damping: float = field(default=0.2, metadata=_num(0, 1, high_open=True,
-                           doc="YADE local (non-viscous) damping coefficient"))
-    hold_damping: float = field(default=0.2, metadata=_num(0, 1, high_open=True,
-                                doc="YADE local damping during the equilibrium holds that decide du; "
-                                "fixed apart from `damping`, because it decides how fast a creeping "
-                                "near-critical arch moves and so the hold's verdict"))
-    timestep_safety: float = field(default=0.6, metadata=_num(0, 1, low_open=True,
-                                   doc="time step as a fraction of the critical step of a joint"))
-    threads: int = field(default=1, metadata=_num(1, 256, doc="OpenMP threads of the YADE process "
-                         "(they speed up CGAL contacts, x1.8 with 2, not joint elements, x0.15-0.93 "
-                         "with 2; runs are bit-reproducible with 1 only)"))
-    contact_model: str = field(default="joint", metadata={
-        "choices": ("joint", "cgal"), "predates": "cgal",
-        "doc": "how the dry joints are computed: 'joint' = zero-thickness joint elements integrated "
-        "exactly in numpy (33x the steps/s), 'cgal' = YADE's polyhedra intersection and volumetric "
-        "law; the same Winkler law either way"})
-    equilibrium_tolerance: float = field(default=1e-3, metadata=_num(0, 1, low_open=True,
-                                         doc="YADE unbalanced force (mean resultant / mean contact force) below which the arch is in equilibrium"))
-    gravity_ramp_periods: float = field(default=200.0, metadata=_num(0, doc="gravity grows from 0 to "
-                                        "full over this many periods of a voussoir vibrating on its "
-                                        "joints (pi x critical time step), equally gentle at any kn; a "
-                                        "sudden load overshoots"))
-    selfweight_max_s: float = field(default=2.0, metadata=_num(0, low_open=True,
-                                    doc="simulated time allowed for the self-weight stage (s)"))
-    hold_max_s: float = field(default=2.0, metadata=_num(0, low_open=True,
-                              doc="simulated time allowed to find equilibrium at a fixed support (s); "
-                              "a near-critical arch can creep for longer than 0.5 s before it settles "
-                              "(kn 1.778: no equilibrium from 43 mm with 0.5 s, equilibrium to 72.36 "
-                              "mm with 2 s)"))
-    hold_min_s: float = field(default=0.1, metadata=_num(0, doc="simulated time a hold lasts at least "
-                                                          "before it may end in equilibrium (s)"))
-    still_speed_mm_per_s: float = field(default=0.5, metadata=_num(0, low_open=True,
-                                        doc="blocks slower than this are at rest (mm/s)"))
-    settle_speed_mm_per_s: float = field(default=0.01, metadata={**_num(
-        0, low_open=True, doc="before du is bracketed, its lower state relaxes until every block is "
-        "slower than this (mm/s): a state accepted while still creeping fails every move near "
-        "collapse"), "predates": 1e9})
-    runaway_mm: float = field(default=1.0, metadata=_num(0, low_open=True,
-                              doc="block displacement at a fixed support that means no equilibrium (mm)"))
-    first_increment_mm: float = field(default=2.0, metadata={**_num(
-        0, low_open=True, doc="support displacement of the first loading increment (mm); each "
-        "increment ends in a relaxation to equilibrium"), "predates": 0.0})
-    max_increment_mm: float = field(default=5.0, metadata=_num(0, low_open=True,
-                                    doc="largest loading increment (mm), reached while the arch "
-                                    "follows the support"))
-    increment_growth: float = field(default=1.5, metadata=_num(1, doc="factor on the increment after "
-                                    "one that ended in equilibrium"))
-    du_tolerance_mm: float = field(default=0.1, metadata=_num(0, low_open=True,
-                                   doc="width of the bracket that locates du (mm)"))
-    hinge_rotation_mrad: float = field(default=2.0, metadata=_num(0, low_open=True,
-                                       doc="relative joint rotation that counts as a hinge (mrad)"))
-    series_every_steps: int = field(default=200, metadata=_num(1, doc="steps between time-series rows"))
-    progress_every_s: float = field(default=10.0, metadata=_num(0, low_open=True,
-                                    doc="wall seconds between progress lines"))
-
-
-SECTIONS: dict[str, type] = {
-    "geometry": GeometryConfig,
-    "material": MaterialConfig,
-    "interface": InterfaceConfig,
-    "loading": LoadingConfig,
-    "numerics": NumericsConfig,
-}
 
 
 @dataclass
@@ -179,7 +47,7 @@ class ArchCase:
         return support_speed(self.numerics.settlement_rate_mm_per_s,
                              self.numerics.rate_reference_kn_N_per_mm3, self.interface.kn_N_per_mm3)
 
-    def validate(self) -> "ArchCase":
+    def validate(self) -> ArchCase:
         """Check every number against its accepted range; raise CaseError naming the first bad one."""
         for section_name in SECTIONS:
             section = getattr(self, section_name)
@@ -193,7 +61,7 @@ class ArchCase:
     def to_toml(self) -> str:
         return tomli_w.dumps(self.to_dict())
 
-    def with_overrides(self, overrides: dict[str, Any]) -> "ArchCase":
+    def with_overrides(self, overrides: dict[str, Any]) -> ArchCase:
         """A copy with `{"section.key": value}` (or bare unique keys such as `kn_N_per_mm3`) replaced."""
         data = self.to_dict()
         for key, value in overrides.items():

@@ -12,8 +12,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from yadearch.model import units
 from yadearch.case.config import ArchCase
+from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
 
 

@@ -9,13 +9,14 @@ from typing import Any
 import click
 
 from yadearch.case import reference
+from yadearch.case.config import ArchCase
+from yadearch.cli.options import case_options, pool_options, resolve_case, timeout_s
+from yadearch.errors import YadearchError
 from yadearch.studies.calibration import calibrate as calibrate_kn
 from yadearch.studies.calibration import campaign_evaluator
-from yadearch.studies.campaign import RESULTS_FILE, grid, parse_values, read_table, run_campaign, short_name
-from yadearch.case.config import ArchCase
-from yadearch.errors import YadearchError
-from yadearch.cli.options import case_options, pool_options, resolve_case, timeout_s
+from yadearch.studies.campaign import RESULTS_FILE, run_campaign
 from yadearch.studies.executors import open_pool
+from yadearch.studies.grid import grid, parse_values, read_table, short_name
 from yadearch.studies.robustness import KN_VALUES, VARIANTS, run_study, verdicts
 
 KN_KEY = "kn_N_per_mm3"

@@ -5,17 +5,16 @@ from __future__ import annotations
 import json
 import sys
 from pathlib import Path
-from typing import Any
 
 import click
 
-from yadearch.case.config import ArchCase, load_case, parameter_docs, preset
-from yadearch.errors import YadearchError
-from yadearch.engine.process import run_case_process
-from yadearch.results.rundir import holds_case
+from yadearch.case.config import parameter_docs, preset
 from yadearch.cli.campaigns import calibrate, robustness, sweep
 from yadearch.cli.options import case_options, resolve_case
+from yadearch.engine.process import run_case_process
+from yadearch.errors import YadearchError
 from yadearch.reporting.report import write_report
+from yadearch.results.rundir import holds_case
 
 
 def _report_summary(out: Path) -> None:

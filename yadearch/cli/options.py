@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 import click
 
 from yadearch.case.config import ArchCase, load_case, preset
-from yadearch.studies.campaign import parse_scalar
+from yadearch.studies.grid import parse_scalar
 
 PRESETS = ("set1", "set2")
 

@@ -7,9 +7,9 @@ from typing import Any
 
 import numpy as np
 
-from yadearch.model.geometry import ArchGeometry
 from yadearch.case.mechanics import ContactStiffness
 from yadearch.engine.shear import PerContactShear
+from yadearch.model.geometry import ArchGeometry
 
 # Joint j sets bit j % JOINT_MASK_BITS of the collision masks of its two blocks, so the collider only
 # pairs blocks sharing a joint (or JOINT_MASK_BITS - 1 or more joints apart, which never touch).
@@ -29,10 +29,15 @@ class CgalContacts:
     def bind(self, pos0: np.ndarray, ori0: np.ndarray, callback: str) -> list[Any]:
         """Set the collision masks and return the engines between ForceResetter and Newton."""
         from yade import O
-        from yade.wrapper import (Bo1_Polyhedra_Aabb, Ig2_Polyhedra_Polyhedra_PolyhedraGeom,
-                                  InsertionSortCollider, InteractionLoop,
-                                  Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys,
-                                  Law2_PolyhedraGeom_PolyhedraPhys_Volumetric, PyRunner)
+        from yade.wrapper import (
+            Bo1_Polyhedra_Aabb,
+            Ig2_Polyhedra_Polyhedra_PolyhedraGeom,
+            InsertionSortCollider,
+            InteractionLoop,
+            Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys,
+            Law2_PolyhedraGeom_PolyhedraPhys_Volumetric,
+            PyRunner,
+        )
 
         for body_id, mask in zip(self.body_ids, joint_masks(self.geometry)):
             O.bodies[body_id].mask = mask

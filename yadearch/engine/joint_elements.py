@@ -7,10 +7,10 @@ from typing import Any
 
 import numpy as np
 
+from yadearch.case.mechanics import ContactStiffness
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.joint_law import JointForces, JointLaw, joint_forces, joint_table, unbalanced_force
 from yadearch.model.joints import pair_rotation
-from yadearch.case.mechanics import ContactStiffness
 
 
 class JointElementContacts:

@@ -9,9 +9,9 @@ import sys
 from pathlib import Path
 
 from yadearch.case.config import ArchCase
+from yadearch.engine.yade_env import YADE_PY_DIRS
 from yadearch.errors import RunFailedError, YadeMissingError
 from yadearch.results.rundir import LOG_FILE, SUMMARY_FILE
-from yadearch.engine.yade_env import YADE_PY_DIRS
 
 
 def check_yade_installed() -> None:

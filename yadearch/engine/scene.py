@@ -7,21 +7,21 @@ Only this module, the contact models (`joint_elements`, `cgal_contacts`, `shear`
 
 from __future__ import annotations
 
-import __main__
 from dataclasses import dataclass
 from typing import Any, Protocol
 
 import numpy as np
 
-from yadearch.model import units
+import __main__
 from yadearch.case.config import ArchCase
-from yadearch.engine.cgal_contacts import CgalContacts
-from yadearch.model.geometry import ArchGeometry, segmental_arch
-from yadearch.engine.joint_elements import JointElementContacts
-from yadearch.model.joints import z_rotation
 from yadearch.case.mechanics import ContactStiffness, contact_stiffness, critical_timestep
+from yadearch.engine.cgal_contacts import CgalContacts
+from yadearch.engine.joint_elements import JointElementContacts
 from yadearch.engine.stepping import close_active
 from yadearch.engine.yade_env import import_yade
+from yadearch.model import units
+from yadearch.model.geometry import ArchGeometry, segmental_arch
+from yadearch.model.joints import z_rotation
 
 # Poisson ratio given to YADE materials so that Ip2's ks = young*poisson is negligible but not the
 # NaN that poisson = 0 produces (0/0 in the harmonic mean).
@@ -57,6 +57,7 @@ class ArchScene:
     contacts: ContactModel
     dt: float
     states: list[Any]  # YADE State objects in geometry order; a restore assigns into them
+    newton: Any  # the scene's NewtonIntegrator: its gravity and damping change with the stages
 
     @property
     def voussoir_states(self) -> list[Any]:
@@ -120,11 +121,11 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
     setattr(__main__, CALLBACK_NAME, contacts)
     pos0 = np.array([list(O.bodies[i].state.pos) for i in body_ids])
     ori0 = np.array([_quat_wxyz(O.bodies[i].state.ori) for i in body_ids])
-    O.engines = [ForceResetter(), *contacts.bind(pos0, ori0, CALLBACK_NAME),
-                 NewtonIntegrator(damping=damping, gravity=gravity)]
+    newton = NewtonIntegrator(damping=damping, gravity=gravity)
+    O.engines = [ForceResetter(), *contacts.bind(pos0, ori0, CALLBACK_NAME), newton]
     O.dt = dt
     return ArchScene(geometry, stiffness, body_ids, pos0, ori0, contacts, dt,
-                     [O.bodies[i].state for i in body_ids])
+                     [O.bodies[i].state for i in body_ids], newton)
 
 
 def _quat_wxyz(q: Any) -> list[float]:

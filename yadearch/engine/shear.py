@@ -13,8 +13,8 @@ from typing import Any
 
 import numpy as np
 
-from yadearch.model.geometry import ArchGeometry
 from yadearch.case.mechanics import ContactStiffness, compressed_length
+from yadearch.model.geometry import ArchGeometry
 
 
 class PerContactShear:

@@ -10,15 +10,16 @@ import sys
 import time
 from pathlib import Path
 
-from yadearch.model import units
 from yadearch.case.config import ArchCase, load_case
 from yadearch.errors import YadearchError
+from yadearch.model import units
 from yadearch.results.provenance import provenance
 from yadearch.results.rundir import LOG_FILE, write_run
 
 
 def simulate(case: ArchCase, out: Path) -> dict:
     """Run `case` to collapse and write its run folder to `out`; returns the summary."""
+    from yadearch.engine.loading import criterion_text
     from yadearch.engine.runner import Runner
     from yadearch.engine.yade_env import import_yade
 
@@ -46,7 +47,7 @@ def simulate(case: ArchCase, out: Path) -> dict:
                      "kn_effective_N_per_mm3": runner.scene.stiffness.kn / units.N_PER_MM3,
                      "settlement_speed_mm_per_s": case.settlement_speed_mm_per_s,
                      "contact_model": case.numerics.contact_model,
-                     "collapse_criterion": runner.criterion_text()}
+                     "collapse_criterion": criterion_text(case.numerics)}
     summary.update(runner.run())
     summary.update(origin)
     write_run(out, case.to_toml(), runner.records.series, runner.records.joints,

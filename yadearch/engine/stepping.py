@@ -15,7 +15,6 @@ import threading
 import time
 
 import __main__
-
 from yadearch.errors import RunFailedError
 
 GATE_LABEL = "yadearch_stepping_gate"
@@ -24,7 +23,7 @@ STALL_S = 120.0  # wall seconds without a single step before a run is declared s
 POLL_S = 0.5  # how often a waiting runner checks that the simulation thread is alive
 CLOSE_S = 10.0  # wall seconds a closing gate waits for the thread to end its last step
 
-_active: list["SteppingGate"] = []  # the gate whose simulation thread is running (started), if any
+_active: list[SteppingGate] = []  # the gate whose simulation thread is running (started), if any
 
 
 class SteppingGate:

@@ -127,7 +127,8 @@ def plot_collapse(run: RunFolder, analysis: RunAnalysis, stem: Path, width_cm: f
                     textcoords="offset points", ha="left" if direction[0] > 0 else "right",
                     va="bottom" if direction[1] > 0 else "top", color=colour, fontweight="bold", zorder=5)
     ax.plot([], [], color="0.65", lw=0.6, ls="--", label="undeformed")
-    ax.add_patch(Polygon(np.zeros((3, 2)), fc="#EADDCA", ec="0.15", lw=0.3, label=rf"$\delta$ = {state['delta_mm']:.2f} mm"))
+    ax.add_patch(Polygon(np.zeros((3, 2)), fc="#EADDCA", ec="0.15", lw=0.3,
+                         label=rf"$\delta$ = {state['delta_mm']:.2f} mm"))
     ax.legend(loc="lower center", ncols=1, handlelength=1.5)  # inside the arch, under the crown
     ax.set_aspect("equal")
     ax.set_xlim(*xlim)

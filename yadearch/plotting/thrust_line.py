@@ -16,8 +16,16 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
 
 from yadearch.case.config import ArchCase
-from yadearch.plotting.run_figures import AXIS_MARGINS_CM, COLUMN_CM, HINGE_COLOURS, LABEL_ROOM, PNG_DPI, STYLE, new_figure
 from yadearch.model.geometry import ArchGeometry
+from yadearch.plotting.run_figures import (
+    AXIS_MARGINS_CM,
+    COLUMN_CM,
+    HINGE_COLOURS,
+    LABEL_ROOM,
+    PNG_DPI,
+    STYLE,
+    new_figure,
+)
 from yadearch.solve.limit_result import LimitResult, write_atomically
 from yadearch.solve.rigid import case_geometry, rotate
 

@@ -12,10 +12,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-
-from yadearch.case import reference
 from yadearch.analysis import RunAnalysis, analyse_run, load_run
 from yadearch.analysis.tracking import format_interfaces
+from yadearch.case import reference
 from yadearch.plotting.run_figures import write_figures
 from yadearch.results.rundir import RunFolder
 
@@ -192,7 +191,8 @@ def run_section(reported: ReportedRun) -> list[str]:
 
 def overview(reported: list[ReportedRun]) -> list[str]:
     """One line per run: its reference set, du against the paper's."""
-    lines = ["| run | paper set | du (mm) | paper numerical du (mm) | paper experimental du (mm) | hinges at collapse |",
+    lines = ["| run | paper set | du (mm) | paper numerical du (mm) | paper experimental du (mm) "
+             "| hinges at collapse |",
              "|---|---|---|---|---|---|"]
     for r in reported:
         s = r.run.summary

@@ -22,12 +22,21 @@ import time
 
 import numpy as np
 
-from yadearch.model import units
 from yadearch.case.config import ArchCase
+from yadearch.model import units
 from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
 from yadearch.solve.limit_result import HingeRecord, LimitResult, interface_forces
-from yadearch.solve.rigid import (LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, contacts, rigid_arch,
-                    turn_four_bar)
+from yadearch.solve.rigid import (
+    LimitError,
+    Pivot,
+    Placement,
+    RigidArch,
+    at_rest,
+    close_linkage,
+    contacts,
+    rigid_arch,
+    turn_four_bar,
+)
 
 DEFAULT_STEP_MM = 0.5  # support step between equilibrium checks
 DEFAULT_TOLERANCE_MM = 1e-3  # width of the bisection bracket that locates a limit

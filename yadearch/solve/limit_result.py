@@ -6,14 +6,14 @@ from __future__ import annotations
 import json
 import os
 import tempfile
+from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Callable
 
 import numpy as np
 
-from yadearch.model import units
 from yadearch.case.config import ArchCase
+from yadearch.model import units
 from yadearch.solve.limit_lp import Statics
 from yadearch.solve.rigid import EXTRADOS, INTRADOS, RigidArch
 

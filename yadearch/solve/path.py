@@ -12,8 +12,9 @@ dynamic path (docs/numerics.md).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable, Protocol
+from typing import Protocol
 
 STABLE = "stable"
 RUNAWAY = "runaway"

@@ -12,9 +12,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from yadearch.model import units
 from yadearch.case.config import ArchCase
 from yadearch.errors import YadearchError
+from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, block_volume, segmental_arch
 
 INTRADOS, EXTRADOS = 0, 1

@@ -10,19 +10,20 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import pandas as pd
-
 from scipy.optimize import brentq
 
-from yadearch.studies.campaign import round_sig, run_campaign, run_tag
 from yadearch.case.config import ArchCase
 from yadearch.errors import YadearchError
-from yadearch.studies.executors import Pool
 from yadearch.results.rundir import is_complete
+from yadearch.studies.campaign import run_campaign
+from yadearch.studies.executors import Pool
+from yadearch.studies.grid import round_sig, run_tag
 
 
 @dataclass

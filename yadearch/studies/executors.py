@@ -4,10 +4,10 @@ dask.distributed cluster. Both are standard `concurrent.futures.Executor`s; no s
 from __future__ import annotations
 
 import os
+from collections.abc import Iterator
 from concurrent.futures import Executor, ThreadPoolExecutor
 from contextlib import contextmanager
 from dataclasses import dataclass
-from typing import Iterator
 
 from yadearch.errors import YadearchError
 

@@ -9,13 +9,14 @@ within one interface); friction may move du only where the run shows a joint sli
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import pandas as pd
 
-from yadearch.studies.campaign import RESULTS_FILE, run_campaign
 from yadearch.case.config import ArchCase
+from yadearch.studies.campaign import RESULTS_FILE, run_campaign
 from yadearch.studies.executors import Pool
 
 KN_VALUES = (0.1, 0.25, 1.0, 5.2, 17.78, 100.0)

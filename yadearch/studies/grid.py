@@ -1,0 +1,122 @@
+"""The rows of a campaign: parameter values from the command line or a CSV table, grids of them,
+and the deterministic run name of each row (`kn_N_per_mm3=0.1` -> `kn0.1`)."""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import itertools
+import json
+import re
+import tomllib
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from yadearch.case.config import parameter_docs
+from yadearch.errors import CaseError, YadearchError
+
+RUN_COLUMN = "run"  # optional column of an explicit table: the run's name
+MAX_TAG = 64
+_UNIT_SUFFIXES = ("_N_per_mm3", "_mm_per_s", "_g_per_cm3", "_m_per_s2", "_mm", "_deg", "_MPa", "_s")
+_BARE_NAMES = {q.split(".")[-1]: q for q, _, _ in parameter_docs()}
+
+
+def parse_scalar(text: str) -> Any:
+    """A value in TOML scalar syntax (numbers, true/false, quoted strings), else the bare string."""
+    try:
+        return tomllib.loads(f"v = {text.strip()}")["v"]
+    except tomllib.TOMLDecodeError:
+        return text.strip()
+
+
+def round_sig(value: float, digits: int = 4) -> float:
+    """`value` rounded to `digits` significant figures (so generated values name folders cleanly)."""
+    return float(f"{value:.{digits}g}")
+
+
+def parse_values(spec: str) -> list[Any]:
+    """Values of one parameter: `v1,v2,...`, or `start:stop:log:n` / `start:stop:lin:n` (n values,
+    rounded to 4 significant figures; integers stay integers)."""
+    parts = spec.split(":")
+    if len(parts) == 1:
+        values = [parse_scalar(v) for v in spec.split(",") if v.strip()]
+        if not values:
+            raise YadearchError(f"no values in {spec!r}")
+        return values
+    if len(parts) != 4 or parts[2] not in ("log", "lin"):
+        raise YadearchError(f"range {spec!r} must read start:stop:log:n or start:stop:lin:n")
+    start, stop, count = parse_scalar(parts[0]), parse_scalar(parts[1]), parse_scalar(parts[3])
+    if not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in (start, stop)) \
+            or not isinstance(count, int) or count < 1:
+        raise YadearchError(f"range {spec!r}: start and stop must be numbers and n a positive integer")
+    if parts[2] == "log":
+        if start <= 0 or stop <= 0:
+            raise YadearchError(f"log range {spec!r} needs positive start and stop")
+        return [round_sig(v) for v in np.geomspace(start, stop, count)]
+    values = np.linspace(start, stop, count)
+    if isinstance(start, int) and isinstance(stop, int) and np.allclose(values, np.round(values)):
+        return [int(v) for v in np.round(values)]
+    return [round_sig(v) for v in values]
+
+
+def check_parameter(key: str) -> None:
+    """Raise CaseError unless `key` names a case parameter (`section.key` or a bare key)."""
+    qualified = {q for q, _, _ in parameter_docs()}
+    if key not in qualified and key not in _BARE_NAMES:
+        raise CaseError(f"unknown parameter {key!r}; see `yadearch params` for the list")
+
+
+def grid(params: dict[str, list[Any]]) -> list[dict[str, Any]]:
+    """Every combination of the values of `params` (last parameter varies fastest)."""
+    for key in params:
+        check_parameter(key)
+    keys = list(params)
+    return [dict(zip(keys, combo)) for combo in itertools.product(*(params[k] for k in keys))]
+
+
+def read_table(path: str | Path) -> list[dict[str, Any]]:
+    """Rows of an explicit CSV campaign table: one column per parameter (an empty cell keeps the base
+    value), optionally a `run` column naming each run."""
+    path = Path(path)
+    if not path.is_file():
+        raise YadearchError(f"campaign table {str(path)!r} does not exist")
+    with path.open(newline="") as f:
+        reader = csv.DictReader(f)
+        for key in reader.fieldnames or []:
+            if key != RUN_COLUMN:
+                check_parameter(key)
+        rows = [{k: (v if k == RUN_COLUMN else parse_scalar(v)) for k, v in row.items()
+                 if v is not None and v.strip()} for row in reader]
+    if not rows:
+        raise YadearchError(f"campaign table {str(path)!r} has no rows")
+    return rows
+
+
+def short_name(key: str) -> str:
+    """A parameter's name in run tags: the bare name without its unit (`kn_N_per_mm3` -> `kn`)."""
+    bare = key.split(".")[-1]
+    for suffix in _UNIT_SUFFIXES:
+        if bare.endswith(suffix):
+            return bare[: -len(suffix)]
+    return bare
+
+
+def _format(value: Any) -> str:
+    if isinstance(value, bool):
+        return str(value).lower()
+    if isinstance(value, float):
+        return f"{value:.6g}"
+    return str(value)
+
+
+def run_tag(overrides: dict[str, Any]) -> str:
+    """Deterministic, readable run name from the overrides (`kn0.1_n_voussoirs15`); long or odd
+    names are cut and get a short hash of the overrides so that they stay unique."""
+    tag = "_".join(f"{short_name(k)}{_format(v)}" for k, v in overrides.items())
+    safe = re.sub(r"[^A-Za-z0-9._+-]", "-", tag)
+    if safe == tag and len(tag) <= MAX_TAG:
+        return tag
+    digest = hashlib.sha1(json.dumps(overrides, sort_keys=True, default=str).encode()).hexdigest()[:8]
+    return f"{safe[:MAX_TAG - 9]}-{digest}"
