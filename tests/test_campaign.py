@@ -209,8 +209,9 @@ def test_yade_batch_table_maps_to_the_sweep_runs(tmp_path):
 
 def test_kn_figure(tmp_path):
     table = campaign(tmp_path, FakeRuns(fail=(10.0,)), grid({"kn_N_per_mm3": [0.1, 1.0, 10.0, 100.0]}))
-    paths = kn_sweep_figure(table, tmp_path / "du_vs_kn")
-    assert [p.suffix for p in paths] == [".pdf", ".png"] and all(p.stat().st_size > 1000 for p in paths)
+    for du_rigid_mm in (None, 113.5):  # the stiffest run, or the rigid-block limit, as the asymptote
+        paths = kn_sweep_figure(table, tmp_path / "du_vs_kn", du_rigid_mm)
+        assert [p.suffix for p in paths] == [".pdf", ".png"] and all(p.stat().st_size > 1000 for p in paths)
 
 
 @pytest.mark.parametrize("args, message", [

@@ -79,13 +79,25 @@ def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, .
         try:
             from yadearch.plotting.sweep import kn_sweep_figure
 
-            paths = kn_sweep_figure(table, folder / "du_vs_kn")
+            paths = kn_sweep_figure(table, folder / "du_vs_kn", _rigid_limit_mm(base))
             click.echo(f"figure -> {', '.join(map(str, paths))}")
         except ValueError as exc:
             click.echo(f"no figure: {exc}", err=True)
     if counts.get("failed"):
         raise YadearchError(f"{counts['failed']} of {len(table)} runs failed; reasons in "
                             f"{folder / RESULTS_FILE}")
+
+
+def _rigid_limit_mm(base: ArchCase) -> float | None:
+    """du of the rigid-block limit analysis of the sweep's arch (the stiff asymptote), or None with a
+    note when the analysis cannot treat the case."""
+    from yadearch.solve.limit import limit_analysis
+
+    try:
+        return limit_analysis(base).du_rigid_mm
+    except YadearchError as exc:
+        click.echo(f"no rigid-block asymptote in the figure: {exc}", err=True)
+        return None
 
 
 @click.command()

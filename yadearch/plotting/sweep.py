@@ -23,8 +23,9 @@ LEGEND_HEADROOM = 1.45  # hinge panel's y range as a multiple of the last interf
 PAPER_MECHANISM = "E-I-E-E"  # hinges D, A, B, C from left to right (paper: collapse when D opens)
 
 
-def kn_sweep_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
-    """Write STEM.pdf and STEM.png from the collapsed runs of a kn sweep; returns both paths."""
+def kn_sweep_figure(table: pd.DataFrame, stem: Path, du_rigid_mm: float | None = None) -> list[Path]:
+    """Write STEM.pdf and STEM.png from the collapsed runs of a kn sweep, with the rigid-block limit
+    `du_rigid_mm` as the stiff asymptote when given; returns both paths."""
     runs = table[(table["status"] == "done") & (table["collapsed"] == True)]  # noqa: E712
     runs = runs.sort_values("kn_N_per_mm3")
     if runs.empty:
@@ -34,7 +35,7 @@ def kn_sweep_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
         fig, (ax_du, ax_h) = plt.subplots(2, 1, figsize=(COLUMN_WIDTH_IN, 4.4), sharex=True,
                                           gridspec_kw={"height_ratios": [3, 2]},
                                           constrained_layout=True)
-        _du_panel(ax_du, runs)
+        _du_panel(ax_du, runs, du_rigid_mm)
         _failed_marks(ax_du, table[table["status"] == "failed"])
         _hinge_panel(ax_h, runs)
         ax_h.set_xscale("log")
@@ -47,16 +48,20 @@ def kn_sweep_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
     return paths
 
 
-def _du_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
+def _du_panel(ax: plt.Axes, runs: pd.DataFrame, du_rigid_mm: float | None) -> None:
     ax.plot(runs["kn_N_per_mm3"], runs["du_mm"], "o-", color="C0", ms=3.5, lw=1,
             label="yadearch (DEM)")
     other = runs[runs["mechanism"] != PAPER_MECHANISM]
     if not other.empty:
         ax.plot(other["kn_N_per_mm3"], other["du_mm"], "o", mfc="white", mec="C3", ms=5.5, mew=1,
                 label="collapse by another mechanism (see results.csv)")
-    stiffest = runs.iloc[-1]
-    ax.axhline(stiffest["du_mm"], color="0.5", ls="--", lw=0.8,
-               label=f"stiffest run ({stiffest['kn_N_per_mm3']:g} N/mm$^3$): {stiffest['du_mm']:.1f} mm")
+    if du_rigid_mm is not None:
+        ax.axhline(du_rigid_mm, color="0.3", ls="--", lw=0.8,
+                   label=f"rigid-block limit analysis: {du_rigid_mm:.1f} mm")
+    else:
+        stiffest = runs.iloc[-1]
+        ax.axhline(stiffest["du_mm"], color="0.5", ls="--", lw=0.8,
+                   label=f"stiffest run ({stiffest['kn_N_per_mm3']:g} N/mm$^3$): {stiffest['du_mm']:.1f} mm")
     kn = [s["kn_N_per_mm3"] for s in reference.SETS.values()]
     du = [s["numerical"]["du_mm"] for s in reference.SETS.values()]
     ax.plot(kn, du, "D", mfc="none", color="C3", ms=5, label="paper FE, calibrated (sets 1, 2)")
