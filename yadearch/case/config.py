@@ -61,6 +61,10 @@ class ArchCase:
     def to_toml(self) -> str:
         return tomli_w.dumps(self.to_dict())
 
+    def replace(self, **overrides: Any) -> ArchCase:
+        """A copy with parameters replaced by bare name, e.g. `replace(kn_N_per_mm3=10)`."""
+        return self.with_overrides(overrides)
+
     def with_overrides(self, overrides: dict[str, Any]) -> ArchCase:
         """A copy with `{"section.key": value}` (or bare unique keys such as `kn_N_per_mm3`) replaced."""
         data = self.to_dict()

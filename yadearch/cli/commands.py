@@ -8,6 +8,7 @@ from pathlib import Path
 
 import click
 
+from yadearch import api
 from yadearch.case.config import parameter_docs, preset
 from yadearch.cli.campaigns import calibrate, robustness, sweep
 from yadearch.cli.options import case_options, resolve_case
@@ -42,9 +43,9 @@ def run(preset_name: str | None, case_file: str | None, kn: float | None, settin
     case = resolve_case(preset_name, case_file, kn, settings)
     if name:
         case.name = name
-    folder = Path(out or Path("runs") / case.name)
-    run_case_process(case, folder)
-    _report_summary(folder)
+    result = api.run(case, out=out)
+    _report_summary(result.path)
+    click.echo(f"figures -> {result.path / 'figures'}")
 
 
 @cli.command()

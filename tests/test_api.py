@@ -1,0 +1,44 @@
+"""The Python API on a synthetic run folder (no YADE): typed results, the paper's hinge labels, the
+equilibrium points of the loading, figures written into the run folder."""
+
+from __future__ import annotations
+
+import pytest
+from test_figures_report import make_run
+
+import yadearch as ya
+
+
+def test_the_api_is_one_namespace_imported_on_first_use():
+    for name in ("preset", "run", "open_run", "sweep", "calibrate", "limit"):
+        assert callable(getattr(ya, name))
+    with pytest.raises(AttributeError):
+        ya.not_a_function  # noqa: B018
+
+
+def test_a_case_is_replaced_by_bare_parameter_names():
+    case = ya.preset("set2").replace(kn_N_per_mm3=10.0, damping=0.3)
+    assert case.interface.kn_N_per_mm3 == 10.0 and case.numerics.damping == 0.3
+    assert ya.preset("set2").interface.kn_N_per_mm3 == 5.2  # the preset itself is untouched
+
+
+def test_an_opened_run_gives_du_and_hinges_with_the_papers_labels(tmp_path):
+    summary = make_run(tmp_path / "run")
+    result = ya.open_run(tmp_path / "run")
+    assert result.du_mm == summary["du_mm"] and result.collapsed
+    assert [(str(h), h.label) for h in result.hinges] == [("1E", "D"), ("4I", "A"), ("7E", "B"),
+                                                          ("11E", "C")]
+
+
+def test_the_loading_curve_holds_only_equilibrium_points_in_increasing_displacement(tmp_path):
+    make_run(tmp_path / "run")
+    curve = ya.open_run(tmp_path / "run").loading_curve()
+    assert set(curve["stage"]) <= {"selfweight", "equilibrium"}
+    assert curve["delta_mm"].is_monotonic_increasing
+
+
+def test_figures_go_into_the_run_folder(tmp_path):
+    make_run(tmp_path / "run")
+    paths = ya.open_run(tmp_path / "run").write_figures()
+    for pdf, png in paths.values():
+        assert pdf.parent == tmp_path / "run" / "figures" and pdf.stat().st_size > 0 and png.stat().st_size > 0

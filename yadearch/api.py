@@ -1,0 +1,163 @@
+"""The Python API: cases, runs, campaigns and the rigid-block limit analysis as functions returning
+typed results, for notebooks and scripts; the command line calls the same functions.
+
+    import yadearch as ya
+    case = ya.preset("set2").replace(kn_N_per_mm3=10)
+    res = ya.run(case, out="runs/k10")
+    res.du_mm, res.hinges, res.loading_curve(), res.write_figures()
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+from yadearch.case.config import ArchCase
+from yadearch.case.config import preset as _preset
+from yadearch.results.rundir import RunFolder, read_run
+
+DEFAULT_RUNS_DIR = Path("runs")
+HINGE_LABELS = ("A", "B", "C", "D")  # the paper's positional labels (docs/validation.md)
+
+
+@dataclass(frozen=True)
+class HingeAtCollapse:
+    """One hinge of the collapse mechanism: interface (1 = left support), side (I intrados, E
+    extrados), its label in the paper's positional convention (A the intrados hinge, B the other
+    extrados hinge, C at the right support, D at the left one; None if it has none) and its rotation."""
+
+    interface: int
+    side: str
+    label: str | None
+    rotation_mrad: float | None
+
+    def __str__(self) -> str:
+        return f"{self.interface}{self.side}"
+
+
+class RunResult:
+    """A finished run folder read back: its summary as attributes, its tables as DataFrames."""
+
+    def __init__(self, folder: RunFolder):
+        self.folder = folder
+
+    @property
+    def path(self) -> Path:
+        return self.folder.path
+
+    @property
+    def summary(self) -> dict[str, Any]:
+        return self.folder.summary
+
+    @property
+    def du_mm(self) -> float | None:
+        """Collapse displacement of the support (mm); None if the arch did not collapse."""
+        return self.summary.get("du_mm")
+
+    @property
+    def collapsed(self) -> bool:
+        return bool(self.summary.get("collapsed"))
+
+    @property
+    def series(self) -> pd.DataFrame:
+        """series.csv: one row every few steps, labelled by stage (docs/numerics.md)."""
+        return self.folder.series
+
+    @property
+    def joints(self) -> pd.DataFrame:
+        """joints.csv: every interface at every equilibrium state and at collapse."""
+        return self.folder.joints
+
+    @cached_property
+    def hinges(self) -> list[HingeAtCollapse]:
+        """The hinges at collapse, left to right, with the paper's positional labels."""
+        from yadearch.studies.campaign import label_hinges
+
+        n_voussoirs = self.folder.case["geometry"]["n_voussoirs"]
+        labels = {(interface, "I" if key == "hinge_A" else "E"): key[-1]
+                  for key, interface in label_hinges(self.summary, n_voussoirs).items()
+                  if interface is not None}
+        rotation = {(h["interface"], h["side"]): h.get("rotation_mrad")
+                    for h in self.summary.get("hinges_detail") or []}
+        return [HingeAtCollapse(h["interface"], h["side"], labels.get((h["interface"], h["side"])),
+                                rotation.get((h["interface"], h["side"])))
+                for h in self.summary.get("hinges_at_collapse") or []]
+
+    def loading_curve(self) -> pd.DataFrame:
+        """The equilibrium points of the loading only (self-weight state, then each accepted
+        equilibrium), in increasing support displacement."""
+        from yadearch.plotting.run_figures import loading_path
+
+        return loading_path(self.series)
+
+    def write_figures(self, out: str | Path | None = None) -> dict[str, tuple[Path, Path]]:
+        """Write the run's figures (PDF and PNG) into `out` (default: the run folder's `figures/`)."""
+        from yadearch.analysis import analyse_run
+        from yadearch.plotting.run_figures import write_figures
+
+        folder = Path(out) if out is not None else self.path / "figures"
+        return write_figures(self.folder, analyse_run(self.folder), folder)
+
+    def __repr__(self) -> str:
+        du = "no collapse" if self.du_mm is None else f"du={self.du_mm:.2f} mm"
+        return f"RunResult({self.path}, {du}, hinges {' '.join(map(str, self.hinges)) or '-'})"
+
+
+def preset(name: str) -> ArchCase:
+    """The paper's arch with the kn of voussoir set 1 or set 2 ("set1", "set2")."""
+    return _preset(name)
+
+
+def open_run(path: str | Path) -> RunResult:
+    """Read a finished run folder."""
+    return RunResult(read_run(path))
+
+
+def run(case: ArchCase, out: str | Path | None = None, timeout_s: float | None = None,
+        figures: bool = True) -> RunResult:
+    """Run `case` to collapse in a child YADE process, writing the run folder `out` (default
+    runs/NAME) and its figures; returns the result read back."""
+    from yadearch.engine.process import run_case_process
+
+    folder = Path(out) if out is not None else DEFAULT_RUNS_DIR / case.name
+    run_case_process(case, folder, timeout_s=timeout_s)
+    result = open_run(folder)
+    if figures:
+        result.write_figures()
+    return result
+
+
+def sweep(case: ArchCase, out: str | Path, jobs: int | None = None, scheduler: str | None = None,
+          timeout_s: float | None = None, **values: list[Any]) -> pd.DataFrame:
+    """Run `case` over the grid of parameter `values` (e.g. `kn_N_per_mm3=[0.25, 1, 5.2]`) as a
+    resumable campaign in `out`; returns its results table (one row a run)."""
+    from yadearch.studies.campaign import run_campaign
+    from yadearch.studies.executors import open_pool
+    from yadearch.studies.grid import grid
+
+    with open_pool(jobs, scheduler) as pool:
+        return run_campaign(case, grid(values), Path(out), pool, timeout_s=timeout_s)
+
+
+def calibrate(case: ArchCase, target_du_mm: float, out: str | Path, kn_min: float = 0.1,
+              kn_max: float = 100.0, tolerance_mm: float = 0.5, jobs: int | None = None):
+    """The kn at which `case` collapses at `target_du_mm` (within `tolerance_mm`), by bracketing
+    root finding over runs kept in `out`; returns the `Calibration`."""
+    from yadearch.studies.calibration import calibrate as calibrate_kn
+    from yadearch.studies.calibration import campaign_evaluator
+    from yadearch.studies.executors import open_pool
+
+    with open_pool(jobs) as pool:
+        return calibrate_kn(campaign_evaluator(case, Path(out), pool), target_du_mm, tolerance_mm,
+                            kn_min, kn_max)
+
+
+def limit(case: ArchCase):
+    """Rigid-block limit analysis of `case` (no YADE, seconds): du_rigid and the hinge history."""
+    from yadearch.solve.limit import limit_analysis
+
+    return limit_analysis(case)
