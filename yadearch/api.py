@@ -18,6 +18,7 @@ import pandas as pd
 
 from yadearch.case.config import ArchCase
 from yadearch.case.config import preset as _preset
+from yadearch.model.hinges import paper_labels
 from yadearch.results.rundir import RunFolder, read_run
 
 DEFAULT_RUNS_DIR = Path("runs")
@@ -75,17 +76,14 @@ class RunResult:
     @cached_property
     def hinges(self) -> list[HingeAtCollapse]:
         """The hinges at collapse, left to right, with the paper's positional labels."""
-        from yadearch.studies.campaign import label_hinges
-
-        n_voussoirs = self.folder.case["geometry"]["n_voussoirs"]
-        labels = {(interface, "I" if key == "hinge_A" else "E"): key[-1]
-                  for key, interface in label_hinges(self.summary, n_voussoirs).items()
-                  if interface is not None}
         rotation = {(h["interface"], h["side"]): h.get("rotation_mrad")
                     for h in self.summary.get("hinges_detail") or []}
-        return [HingeAtCollapse(h["interface"], h["side"], labels.get((h["interface"], h["side"])),
-                                rotation.get((h["interface"], h["side"])))
-                for h in self.summary.get("hinges_at_collapse") or []]
+        hinges = [(h["interface"], h["side"], rotation.get((h["interface"], h["side"])) or 0.0)
+                  for h in self.summary.get("hinges_at_collapse") or []]
+        labels = paper_labels(hinges, self.folder.case["geometry"]["n_voussoirs"] + 1)
+        return [HingeAtCollapse(interface, side, labels.get((interface, side)),
+                                rotation.get((interface, side)))
+                for interface, side, _ in hinges]
 
     def loading_curve(self) -> pd.DataFrame:
         """The equilibrium points of the loading only (self-weight state, then each accepted

@@ -1,7 +1,7 @@
-"""Hinges through a run's history: which hinges exist at every record, when each formed (labels A,
-B, C, D in order of formation, as the paper does), and whether a hinge migrated.
+"""Hinges through a run's history: which hinges exist at every record, when each formed (`order`),
+the paper's positional label of each (A-D, `model.hinges.paper_labels`), and whether a hinge migrated.
 
-Single-state detection is `yadearch.hinges.hinges_at` (rotation above a threshold, spread hinges
+Single-state detection is `yadearch.model.hinges.hinges_at` (rotation above a threshold, spread hinges
 reported at their peak). A hinge *forms* when it is detected and its joint has opened: soft joints
 rotate elastically by compressing one edge long before a hinge opens, so rotation alone would date
 hinges by the joint stiffness rather than by the mechanism.
@@ -9,14 +9,13 @@ hinges by the joint stiffness rather than by the mechanism.
 
 from __future__ import annotations
 
-import string
 from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
 
 from yadearch.analysis.history import JointHistory
-from yadearch.model.hinges import Hinge, hinges_at
+from yadearch.model.hinges import Hinge, hinges_at, paper_labels
 
 ROTATION_THRESHOLD_MRAD = 2.0  # runner's default: 0.05 mm across a 24 mm joint
 OPENING_THRESHOLD_MM = 0.02  # a hinge has formed once its joint has opened this much
@@ -45,7 +44,8 @@ class HingeTrack:
     per_record: list[Hinge | None]
     opening_mm: np.ndarray
     formed_record: int
-    label: str = ""
+    label: str = ""  # the paper's positional label (A-D, model.hinges.paper_labels); "" if none
+    order: int = 0  # 1 for the first hinge to form, 2 for the next...
     migrations: list[Migration] = field(default_factory=list)
 
     @property
@@ -119,8 +119,9 @@ def _migrations(per_record: list[Hinge | None], deltas: np.ndarray, start: int) 
 def track_hinges(history: JointHistory, rotation_threshold_mrad: float = ROTATION_THRESHOLD_MRAD,
                  opening_threshold_mm: float = OPENING_THRESHOLD_MM,
                  max_jump: int = MAX_JUMP_INTERFACES) -> list[HingeTrack]:
-    """The hinges of the final record, each followed back, dated and labelled A, B, C... in order of
-    formation (hinges forming at the same record: left to right), returned in that order."""
+    """The hinges of the final record, each followed back, dated, numbered in order of formation
+    (hinges forming at the same record: left to right) and labelled A-D by position as the paper
+    does; returned in order of formation."""
     detected = hinges_per_record(history, rotation_threshold_mrad * 1e-3)
     tracks = []
     for per_record in _follow_back(detected[-1], detected, max_jump):
@@ -131,8 +132,10 @@ def track_hinges(history: JointHistory, rotation_threshold_mrad: float = ROTATIO
         tracks.append(HingeTrack(per_record[-1].side, per_record, opening, formed,
                                  migrations=_migrations(per_record, history.delta_mm, formed)))
     tracks.sort(key=lambda t: (t.formed_record, t.interface))
-    for label, track in zip(string.ascii_uppercase, tracks):
-        track.label = label
+    labels = paper_labels([(t.interface, t.side, t.final.rotation) for t in tracks], history.n_interfaces)
+    for order, track in enumerate(tracks, start=1):
+        track.order = order
+        track.label = labels.get((track.interface, track.side), "")
     return tracks
 
 

@@ -71,3 +71,27 @@ def same_hinges(a: list[dict], b: list[dict]) -> bool:
         return False
     return all(x["side"] == y["side"] and x["interface"] in y.get("interfaces", [y["interface"]])
                and y["interface"] in x.get("interfaces", [x["interface"]]) for x, y in zip(a, b))
+
+
+def paper_labels(hinges: list[tuple[int, str, float]], last_interface: int) -> dict[tuple[int, str], str]:
+    """The paper's positional labels of a collapse mechanism's hinges, given as (interface, side,
+    rotation): D = the extrados hinge at interface 1 (the fixed support), C = the extrados hinge at
+    `last_interface` (the moving support), A = the intrados hinge, B = the remaining extrados hinge
+    (the most rotated where there are several); hinges left over get no label."""
+    def most_rotated(candidates: list[tuple[int, str, float]]) -> tuple[int, str] | None:
+        best = max(candidates, key=lambda h: abs(h[2]), default=None)
+        return None if best is None else (best[0], best[1])
+
+    labels: dict[tuple[int, str], str] = {}
+    if any(h[:2] == (1, "E") for h in hinges):
+        labels[(1, "E")] = "D"
+    if any(h[:2] == (last_interface, "E") for h in hinges):
+        labels[(last_interface, "E")] = "C"
+    intrados = most_rotated([h for h in hinges if h[1] == "I"])
+    if intrados:
+        labels[intrados] = "A"
+    extrados = most_rotated([h for h in hinges if h[1] == "E" and h[0] not in (1, last_interface)])
+    if extrados:
+        labels[extrados] = "B"
+    return labels
+

@@ -24,8 +24,8 @@ KN_MATCH_RELATIVE = 1e-6
 CAPTIONS = {
     "collapse": "The arch at collapse (at the upper end of du's bracket, after the failed hold went on "
                 "until a block moved 10 mm or another hold time passed), drawn to scale over its "
-                "undeformed outline (dashed); hinges labelled in order of formation, with interface and "
-                "pivot side.",
+                "undeformed outline (dashed); hinges labelled A-D by position as in the paper, with "
+                "interface and pivot side.",
     "reactions": "Forces of the supports on the arch against the settlement δ of the right support; "
                  "faded past du, where the arch is already moving.",
     "hinges": "Opening (gap at the edge opposite the pivot) and rotation of each hinge against δ; dots "
@@ -34,7 +34,8 @@ CAPTIONS = {
              "included); faded past du.",
 }
 FINAL_STATE_CAPTION = ("The arch at the end of the run (no collapse), drawn to scale over its undeformed "
-                       "outline (dashed); hinges labelled in order of formation, with interface and pivot side.")
+                       "outline (dashed); hinges labelled A-D by position as in the paper, with interface and "
+                       "pivot side.")
 
 
 @dataclass
@@ -92,7 +93,7 @@ def table_one(reported: ReportedRun) -> list[str]:
     """The paper's Table 1 for this run's set: experimental, numerical, this run and differences."""
     ref = reference.SETS[reported.reference_name]
     summary = reported.run.summary
-    labels = {t.interface: t.label for t in reported.analysis.tracks}
+    order = {t.interface: t.order for t in reported.analysis.tracks}
     rows = [(row, ref["numerical"][row], reference.HINGE_SIDES[row]) for row in HINGE_ROWS]
     rows.append(("hinge_D", [reference.HINGE_D_INTERFACE], reference.HINGE_SIDES["hinge_D"]))
     pairs = match_hinges(summary["hinges_at_collapse"], rows)
@@ -105,8 +106,8 @@ def table_one(reported: ReportedRun) -> list[str]:
         if hinge is None:
             run_text, d_exp, d_num = "—", "—", "—"
         else:
-            label = labels.get(hinge["interface"])
-            run_text = f"{hinge['interface']} {hinge['side']}" + (f" (formed {label})" if label else "")
+            formed = order.get(hinge["interface"])
+            run_text = f"{hinge['interface']} {hinge['side']}" + (f" (formed #{formed})" if formed else "")
             d_exp, d_num = _difference(hinge["interface"], exp), _difference(hinge["interface"], num)
         name = row.replace("hinge_", "hinge ") + ("¹" if row == "hinge_D" else "")
         lines.append(f"| {name} | {_hinge_text(exp, side)} | {_hinge_text(num, side)} | {run_text} | "
@@ -120,20 +121,22 @@ def table_one(reported: ReportedRun) -> list[str]:
                      f"({(du - exp_du) / exp_du:+.1%}) | {du - num_du:+.2f} ({(du - num_du) / num_du:+.1%}) |")
     lines += ["", "Hinges are interfaces numbered 1..n+1 from the left support, I/E the pivot side; the "
               "paper's A, B, C are paired with the run's hinge of the same side nearest to them, and "
-              "'formed X' gives the run's own label (order of formation). Differences are in interfaces "
+              ""#k" says it was the k-th hinge to form. Differences are in interfaces "
               "(0 = inside the paper's range). ¹ D is named in the paper's text, not in its Table 1."]
     return lines
 
 
 def formation_table(analysis: RunAnalysis) -> list[str]:
-    """Each hinge at collapse: label (order of formation), where, when it formed, how far it opened."""
+    """Each hinge at collapse, in order of formation: its paper label, where, when it formed, how far
+    it opened."""
     deltas = analysis.history.delta_mm
-    lines = ["| hinge | interface | spread | side | formed at δ (mm) | peak when formed | opening at collapse (mm) "
-             "| rotation at collapse (mrad) | migrations |",
-             "|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| formed | hinge | interface | spread | side | formed at δ (mm) | peak when formed "
+             "| opening at collapse (mm) | rotation at collapse (mrad) | migrations |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for t in analysis.tracks:
         moves = "; ".join(f"{m.from_interface} → {m.to_interface} at {m.delta_mm:.2f} mm" for m in t.migrations)
-        lines.append(f"| {t.label} | {t.interface} | {format_interfaces(t.final.interfaces)} | {t.side} | "
+        lines.append(f"| #{t.order} | {t.label or '—'} | {t.interface} | "
+                     f"{format_interfaces(t.final.interfaces)} | {t.side} | "
                      f"{deltas[t.formed_record]:.2f} | {t.per_record[t.formed_record].interface} | "
                      f"{t.opening_mm[-1]:.3f} | {abs(t.final.rotation) * 1e3:.1f} | {moves or '—'} |")
     return lines
@@ -154,7 +157,7 @@ def run_section(reported: ReportedRun) -> list[str]:
                 if summary.get("du_bracket_mm") else ""),
              f"- hinges at collapse: {hinges}",
              f"- mechanism: {analysis.mechanism}",
-             "- formation: " + (", then ".join(f"{label} at {delta:.2f} mm ({seq})"
+             "- formation: " + (", then ".join(f"{label or '(unlabelled)'} at {delta:.2f} mm ({seq})"
                                                for label, delta, seq in analysis.formation) or "—"),
              "- sliding joints: " + (", ".join(f"{s.interface} (|V|/(μN) = {s.shear_ratio:.2f}"
                                                 + (f", slip {s.slip_mm:.2f} mm)" if s.slip_mm is not None else ")")

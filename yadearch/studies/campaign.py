@@ -22,6 +22,7 @@ from tqdm import tqdm
 from yadearch.case.config import ArchCase, preset
 from yadearch.engine.process import check_yade_installed, run_case_process
 from yadearch.errors import CaseError, RunFailedError, YadearchError
+from yadearch.model.hinges import paper_labels
 from yadearch.results.rundir import SUMMARY_FILE, case_differences, is_complete
 from yadearch.studies.executors import Pool
 from yadearch.studies.grid import RUN_COLUMN, check_parameter, run_tag
@@ -204,22 +205,14 @@ def _columns(overrides: dict[str, Any]) -> dict[str, Any]:
 # ---------------------------------------------------------------- results
 
 def label_hinges(summary: dict[str, Any], n_voussoirs: int) -> dict[str, int | None]:
-    """The paper's hinge labels from a run's hinges at collapse: D = the E hinge at interface 1,
-    C = the E hinge at interface n+1, A = the I hinge, B = the remaining E hinge (the most rotated
-    one when there are several)."""
-    hinges = [(h["interface"], h["side"]) for h in summary.get("hinges_at_collapse") or []]
+    """The interface of each of the paper's hinges A-D in a run's collapse mechanism (None where
+    the mechanism has no such hinge); `model.hinges.paper_labels` says which is which."""
     rotation = {(h["interface"], h["side"]): h.get("rotation_mrad", 0.0)
                 for h in summary.get("hinges_detail") or []}
-
-    def most_rotated(candidates: list[tuple[int, str]]) -> int | None:
-        return max(candidates, key=lambda h: rotation.get(h, 0.0))[0] if candidates else None
-
-    last = n_voussoirs + 1
-    labels = {"hinge_D": 1 if (1, "E") in hinges else None,
-              "hinge_C": last if (last, "E") in hinges else None,
-              "hinge_A": most_rotated([h for h in hinges if h[1] == "I"])}
-    labels["hinge_B"] = most_rotated([h for h in hinges if h[1] == "E" and h[0] not in (1, last)])
-    return {k: labels[k] for k in ("hinge_A", "hinge_B", "hinge_C", "hinge_D")}
+    hinges = [(h["interface"], h["side"], rotation.get((h["interface"], h["side"]), 0.0))
+              for h in summary.get("hinges_at_collapse") or []]
+    by_label = {label: interface for (interface, _), label in paper_labels(hinges, n_voussoirs + 1).items()}
+    return {f"hinge_{label}": by_label.get(label) for label in "ABCD"}
 
 
 def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
