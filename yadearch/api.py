@@ -18,8 +18,9 @@ import pandas as pd
 
 from yadearch.case.config import ArchCase
 from yadearch.case.config import preset as _preset
+from yadearch.errors import RunFolderError
 from yadearch.model.hinges import paper_labels
-from yadearch.results.rundir import RunFolder, read_run
+from yadearch.results.rundir import RunFolder, case_differences, is_complete, read_run
 
 DEFAULT_RUNS_DIR = Path("runs")
 HINGE_LABELS = ("A", "B", "C", "D")  # the paper's positional labels (docs/validation.md)
@@ -116,12 +117,21 @@ def open_run(path: str | Path) -> RunResult:
 
 
 def run(case: ArchCase, out: str | Path | None = None, timeout_s: float | None = None,
-        figures: bool = True) -> RunResult:
+        figures: bool = True, rerun: bool = False, overwrite: bool = False) -> RunResult:
     """Run `case` to collapse in a child YADE process, writing the run folder `out` (default
-    runs/NAME) and its figures; returns the result read back."""
+    runs/NAME) and its figures; returns the result read back. A finished run of the same case in
+    `out` is reused (unless `rerun`); one of another case is kept unless `overwrite`."""
     from yadearch.engine.process import run_case_process
 
     folder = Path(out) if out is not None else DEFAULT_RUNS_DIR / case.name
+    if is_complete(folder) and not rerun:
+        differences = case_differences(folder, case)
+        if not differences:
+            return open_run(folder)
+        if not overwrite:
+            raise RunFolderError(f"{folder} holds a finished run of another case ({differences[0]}"
+                                 f"{', ...' if len(differences) > 1 else ''}); choose another output "
+                                 "folder or overwrite it")
     run_case_process(case, folder, timeout_s=timeout_s)
     result = open_run(folder)
     if figures:

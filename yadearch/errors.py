@@ -15,3 +15,7 @@ class YadeMissingError(YadearchError):
 
 class RunFailedError(YadearchError):
     """A simulation process failed (crash, NaN, timeout)."""
+
+
+class RunFolderError(YadearchError):
+    """A run folder that does not hold a complete, readable run."""

@@ -29,7 +29,7 @@ from yadearch.analysis.tracking import (
     track_hinges,
 )
 from yadearch.errors import YadearchError
-from yadearch.results.rundir import RunFolder, is_complete, read_run
+from yadearch.results.rundir import RunFolder, read_run
 
 
 @dataclass(frozen=True)
@@ -84,9 +84,9 @@ def analyse_history(joints: pd.DataFrame, joint_length_mm: float, friction_deg: 
 
 def load_run(path: str | Path) -> RunFolder:
     """Read a run folder; a path that is not one is a user mistake, reported in one line."""
-    if not Path(path).is_dir() or not is_complete(Path(path)):
-        raise YadearchError(f"{path} is not a run folder (no summary.json)")
-    return read_run(path)
+    if not Path(path).is_dir():
+        raise YadearchError(f"{path} is not a run folder (no such folder)")
+    return read_run(path)  # says in one line what is wrong with an incomplete folder
 
 
 def _final_slip_mm(run: RunFolder) -> np.ndarray | None:

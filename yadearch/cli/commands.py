@@ -37,13 +37,15 @@ def cli() -> None:
 @case_options(with_kn=True)
 @click.option("--name", help="run name (default: the preset's or case's)")
 @click.option("--out", type=click.Path(file_okay=False), help="run folder (default runs/NAME)")
+@click.option("--rerun", is_flag=True, help="run again even if OUT holds a finished run of this case")
+@click.option("--overwrite", is_flag=True, help="replace a finished run of another case in OUT")
 def run(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
-        name: str | None, out: str | None) -> None:
-    """Run one case to collapse and write its run folder."""
+        name: str | None, out: str | None, rerun: bool, overwrite: bool) -> None:
+    """Run one case to collapse and write its run folder (a finished run of the same case is reused)."""
     case = resolve_case(preset_name, case_file, kn, settings)
     if name:
         case.name = name
-    result = api.run(case, out=out)
+    result = api.run(case, out=out, rerun=rerun, overwrite=overwrite)
     _report_summary(result.path)
     click.echo(f"figures -> {result.path / 'figures'}")
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -11,7 +12,11 @@ from pathlib import Path
 from yadearch.case.config import ArchCase
 from yadearch.engine.yade_env import YADE_PY_DIRS
 from yadearch.errors import RunFailedError, YadeMissingError
-from yadearch.results.rundir import LOG_FILE, SUMMARY_FILE
+from yadearch.results.rundir import CASE_FILE, LOG_FILE, is_complete
+
+STAGING_PREFIX = "."  # a run is written to .NAME.partial beside its folder NAME
+STAGING_SUFFIX = ".partial"
+REPLACED_SUFFIX = ".replaced"  # the previous folder NAME, for the moment of the swap
 
 
 def check_yade_installed() -> None:
@@ -34,22 +39,49 @@ def exit_reason(returncode: int) -> str:
 
 def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
                      quiet: bool = False) -> Path:
-    """Run `case` in a child process writing `out`; raise RunFailedError with the reason if it fails."""
+    """Run `case` in a child process and make `out` its run folder; raise RunFailedError with the
+    reason if it fails. The child writes a staging folder beside `out`, swapped into place only
+    when complete: a run that does not finish never destroys the finished run `out` may hold (its
+    log then stays in the staging folder, which the error names)."""
     check_yade_installed()
-    out.mkdir(parents=True, exist_ok=True)
-    case_file = out / "case.toml"
+    out = Path(out)
+    staging = out.parent / f"{STAGING_PREFIX}{out.name}{STAGING_SUFFIX}"
+    shutil.rmtree(staging, ignore_errors=True)
+    staging.mkdir(parents=True)
+    case_file = staging / CASE_FILE
     case_file.write_text(case.to_toml())
-    (out / SUMMARY_FILE).unlink(missing_ok=True)
     env = dict(os.environ, OMP_NUM_THREADS=str(case.numerics.threads))
-    cmd = [sys.executable, "-m", "yadearch.engine.simulate", str(case_file), str(out)]
+    cmd = [sys.executable, "-m", "yadearch.engine.simulate", str(case_file), str(staging)]
     try:
         proc = subprocess.run(cmd, env=env, timeout=timeout_s, text=True,
                               stdout=subprocess.DEVNULL if quiet else None, stderr=subprocess.PIPE)
     except subprocess.TimeoutExpired:
-        raise RunFailedError(f"run {case.name!r} timed out after {timeout_s:.0f} s") from None
-    if proc.returncode != 0 or not (out / SUMMARY_FILE).is_file():
+        where = _keep_failed(staging, out)
+        raise RunFailedError(f"run {case.name!r} timed out after {timeout_s:.0f} s "
+                             f"(see {where / LOG_FILE})") from None
+    if proc.returncode != 0 or not is_complete(staging):
         lines = [line for line in proc.stderr.splitlines()
                  if line.strip() and not line.startswith(("Using python", "<WARNING>"))]
         reason = lines[-1] if lines else exit_reason(proc.returncode)
-        raise RunFailedError(f"run {case.name!r} failed: {reason} (see {out / LOG_FILE})")
+        where = _keep_failed(staging, out)
+        raise RunFailedError(f"run {case.name!r} failed: {reason} (see {where / LOG_FILE})")
+    _swap_into_place(staging, out)
     return out
+
+
+def _keep_failed(staging: Path, out: Path) -> Path:
+    """Where a failed run's folder stays: at `out` unless `out` holds a finished run to protect."""
+    if is_complete(out):
+        return staging
+    _swap_into_place(staging, out)
+    return out
+
+
+def _swap_into_place(staging: Path, out: Path) -> None:
+    """Replace `out` by the `staging` folder (two renames; the old folder is removed after)."""
+    previous = out.parent / f"{STAGING_PREFIX}{out.name}{REPLACED_SUFFIX}"
+    shutil.rmtree(previous, ignore_errors=True)
+    if out.exists():
+        os.replace(out, previous)
+    os.replace(staging, out)
+    shutil.rmtree(previous, ignore_errors=True)

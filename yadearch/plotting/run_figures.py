@@ -18,6 +18,7 @@ from matplotlib.patches import Polygon
 from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
 from yadearch.analysis.history import EQUILIBRIUM_STAGE
+from yadearch.atomic import write_atomically
 from yadearch.results.rundir import RunFolder
 
 CM = 1 / 2.54  # inches
@@ -47,8 +48,8 @@ def save_figure(fig: Figure, stem: Path) -> tuple[Path, Path]:
     """Write `stem`.pdf (vector) and `stem`.png (300 dpi); returns both paths."""
     stem.parent.mkdir(parents=True, exist_ok=True)
     pdf, png = stem.with_suffix(".pdf"), stem.with_suffix(".png")
-    fig.savefig(pdf)
-    fig.savefig(png, dpi=PNG_DPI)
+    write_atomically(pdf, lambda tmp: fig.savefig(tmp, format="pdf"))
+    write_atomically(png, lambda tmp: fig.savefig(tmp, format="png", dpi=PNG_DPI))
     return pdf, png
 
 

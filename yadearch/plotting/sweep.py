@@ -14,6 +14,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pandas as pd  # noqa: E402
 from matplotlib.ticker import MaxNLocator  # noqa: E402
 
+from yadearch.atomic import write_atomically
 from yadearch.case import reference  # noqa: E402
 
 COLUMN_WIDTH_IN = 3.5  # one journal column
@@ -43,7 +44,7 @@ def kn_sweep_figure(table: pd.DataFrame, stem: Path, du_rigid_mm: float | None =
         stem.parent.mkdir(parents=True, exist_ok=True)
         paths = [stem.with_suffix(".pdf"), stem.with_suffix(".png")]
         for path in paths:
-            fig.savefig(path, dpi=300)
+            write_atomically(path, lambda tmp, path=path: fig.savefig(tmp, format=path.suffix[1:], dpi=300))
         plt.close(fig)
     return paths
 

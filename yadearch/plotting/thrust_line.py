@@ -15,6 +15,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
 
+from yadearch.atomic import write_atomically
 from yadearch.case.config import ArchCase
 from yadearch.model.geometry import ArchGeometry
 from yadearch.plotting.run_figures import (
@@ -26,7 +27,7 @@ from yadearch.plotting.run_figures import (
     STYLE,
     new_figure,
 )
-from yadearch.solve.limit_result import LimitResult, write_atomically
+from yadearch.solve.limit_result import LimitResult
 from yadearch.solve.rigid import case_geometry, rotate
 
 M_TO_MM = 1e3

@@ -14,6 +14,7 @@ from typing import Any
 
 from yadearch.analysis import RunAnalysis, analyse_run, load_run
 from yadearch.analysis.tracking import format_interfaces
+from yadearch.atomic import write_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.plotting.run_figures import write_figures
 from yadearch.results.rundir import RunFolder
@@ -229,11 +230,12 @@ def write_report(run_paths: list[str | Path], out: str | Path) -> Path:
         analysis = analyse_run(run)
         folder = _folder_name(run.summary, run.path, taken)
         figures = write_figures(run, analysis, out / folder)
-        analysis.hinges.to_csv(out / folder / "hinges.csv", index=False, float_format="%.6g")
+        write_atomically(out / folder / "hinges.csv",
+                         lambda tmp: analysis.hinges.to_csv(tmp, index=False, float_format="%.6g"))
         reported.append(ReportedRun(run, analysis, match_reference(run.summary), folder, list(figures)))
     lines = ["# yadearch report", "", f"Reference: *{reference.PAPER}*.", ""] + overview(reported) + [""]
     for r in reported:
         lines += run_section(r)
     path = out / REPORT_FILE
-    path.write_text("\n".join(lines))
+    write_text_atomically(path, "\n".join(lines))
     return path

@@ -10,7 +10,9 @@ from typing import Any
 
 import pandas as pd
 
+from yadearch.atomic import write_atomically, write_text_atomically
 from yadearch.case.config import ArchCase, as_ran
+from yadearch.errors import RunFolderError
 
 CASE_FILE = "case.toml"
 SERIES_FILE = "series.csv"
@@ -18,6 +20,8 @@ JOINTS_FILE = "joints.csv"
 SNAPSHOTS_FILE = "snapshots.json"
 SUMMARY_FILE = "summary.json"
 LOG_FILE = "run.log"
+SCHEMA_VERSION = 1  # of summary.json; a summary without one predates the marker and is read by its keys
+REQUIRED_KEYS = ("du_mm", "hinges_at_collapse", "steps", "wall_s")  # what campaigns and reports read
 
 
 @dataclass
@@ -34,13 +38,16 @@ class RunFolder:
 
 def write_run(out: Path, case_toml: str, series: list[dict], joints: list[dict],
               snapshots: dict[str, Any], summary: dict[str, Any]) -> None:
-    """Write every file of a run folder; summary.json last, so its presence means complete."""
+    """Write every file of a run folder, each atomically; summary.json last, with its schema
+    version and a completeness marker, so that a valid summary means a complete folder."""
     out.mkdir(parents=True, exist_ok=True)
-    (out / CASE_FILE).write_text(case_toml)
-    pd.DataFrame(series).to_csv(out / SERIES_FILE, index=False, float_format="%.8g")
-    pd.DataFrame(joints).to_csv(out / JOINTS_FILE, index=False, float_format="%.8g")
-    (out / SNAPSHOTS_FILE).write_text(json.dumps(snapshots, indent=1, default=_json_default))
-    (out / SUMMARY_FILE).write_text(json.dumps(summary, indent=2, default=_json_default) + "\n")
+    write_text_atomically(out / CASE_FILE, case_toml)
+    for name, rows in ((SERIES_FILE, series), (JOINTS_FILE, joints)):
+        write_atomically(out / name, lambda tmp, rows=rows: pd.DataFrame(rows).to_csv(
+            tmp, index=False, float_format="%.8g"))
+    write_text_atomically(out / SNAPSHOTS_FILE, json.dumps(snapshots, indent=1, default=_json_default))
+    marked = {**summary, "schema_version": SCHEMA_VERSION, "complete": True}
+    write_text_atomically(out / SUMMARY_FILE, json.dumps(marked, indent=2, default=_json_default) + "\n")
 
 
 def _json_default(value: Any) -> Any:
@@ -51,9 +58,41 @@ def _json_default(value: Any) -> Any:
     raise TypeError(f"not JSON serialisable: {type(value).__name__}")
 
 
+def summary_problem(path: Path) -> str | None:
+    """Why the folder's summary.json does not vouch for a complete run (None: it does)."""
+    file = Path(path) / SUMMARY_FILE
+    if not file.is_file():
+        return f"no {SUMMARY_FILE}"
+    try:
+        summary = json.loads(file.read_text())
+    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        return f"{SUMMARY_FILE} is not valid JSON ({exc.msg if hasattr(exc, 'msg') else exc})"
+    if not isinstance(summary, dict):
+        return f"{SUMMARY_FILE} is not a JSON object"
+    version = summary.get("schema_version", 0)
+    if not isinstance(version, int) or version > SCHEMA_VERSION:
+        return f"{SUMMARY_FILE} has schema version {version!r}; this yadearch reads up to {SCHEMA_VERSION}"
+    if version >= 1 and summary.get("complete") is not True:
+        return f"{SUMMARY_FILE} is not marked complete"
+    missing = [key for key in REQUIRED_KEYS if key not in summary]
+    if missing:
+        return f"{SUMMARY_FILE} lacks {', '.join(missing)}"
+    if not (path / CASE_FILE).is_file():
+        return f"no {CASE_FILE}"
+    return None
+
+
 def is_complete(path: Path) -> bool:
-    """True if the folder holds a finished run (its summary.json is written last)."""
-    return (Path(path) / SUMMARY_FILE).is_file()
+    """True if the folder holds a finished run: its summary.json, written last, validates."""
+    return summary_problem(Path(path)) is None
+
+
+def read_summary(path: Path) -> dict[str, Any]:
+    """A finished run's summary; RunFolderError in one line if the folder is not complete."""
+    problem = summary_problem(Path(path))
+    if problem:
+        raise RunFolderError(f"{path} is not a complete run folder: {problem}")
+    return json.loads((Path(path) / SUMMARY_FILE).read_text())
 
 
 def case_differences(path: Path, case: ArchCase) -> list[str]:
@@ -81,13 +120,15 @@ def read_run(path: str | Path) -> RunFolder:
     import tomllib
 
     path = Path(path)
-    if not is_complete(path):
-        raise FileNotFoundError(f"{path} is not a complete run folder (no {SUMMARY_FILE})")
-    return RunFolder(
-        path=path,
-        case=tomllib.loads((path / CASE_FILE).read_text()),
-        series=pd.read_csv(path / SERIES_FILE),
-        joints=pd.read_csv(path / JOINTS_FILE),
-        snapshots=json.loads((path / SNAPSHOTS_FILE).read_text()),
-        summary=json.loads((path / SUMMARY_FILE).read_text()),
-    )
+    summary = read_summary(path)
+    try:
+        return RunFolder(
+            path=path,
+            case=tomllib.loads((path / CASE_FILE).read_text()),
+            series=pd.read_csv(path / SERIES_FILE),
+            joints=pd.read_csv(path / JOINTS_FILE),
+            snapshots=json.loads((path / SNAPSHOTS_FILE).read_text()),
+            summary=summary,
+        )
+    except (OSError, ValueError, tomllib.TOMLDecodeError) as exc:
+        raise RunFolderError(f"{path}: a file of the run folder cannot be read ({exc})") from None

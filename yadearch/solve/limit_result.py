@@ -4,14 +4,12 @@ state (contact forces, thrust line, reactions, block placements), JSON-ready."""
 from __future__ import annotations
 
 import json
-import os
-import tempfile
-from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
 
+from yadearch.atomic import write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.model import units
 from yadearch.solve.limit_lp import Statics
@@ -100,27 +98,7 @@ def interface_forces(arch: RigidArch, statics: Statics) -> tuple[tuple[Interface
                            "right": tuple(float(v) for v in -resultant[1])}
 
 
-_UMASK = os.umask(0o022)
-os.umask(_UMASK)  # read the process umask (set and restored at import)
-
-
-def write_atomically(path: Path, write: Callable[[Path], None]) -> Path:
-    """Write `path` by `write(temporary)` to a temporary file in the same folder, then rename it over
-    `path`: a reader never sees a half-written file, an interrupted write leaves the old one."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    os.close(handle)
-    try:
-        write(Path(temporary))
-        os.chmod(temporary, 0o666 & ~_UMASK)  # mkstemp's 0600 -> what open() would have given
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
-    return path
-
-
 def write_result_json(result: LimitResult, case: ArchCase, path: Path) -> Path:
     """The result and the case it solved, as indented JSON, written atomically."""
     text = json.dumps({**result.to_json(), "case": case.to_dict()}, indent=1) + "\n"
-    return write_atomically(path, lambda temporary: temporary.write_text(text))
+    return write_text_atomically(path, text)

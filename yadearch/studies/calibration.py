@@ -18,6 +18,7 @@ from typing import Any
 import pandas as pd
 from scipy.optimize import brentq
 
+from yadearch.atomic import write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.errors import YadearchError
 from yadearch.results.rundir import is_complete
@@ -62,7 +63,7 @@ class Calibration:
 
     def write(self, path: Path) -> None:
         path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(json.dumps(self.to_json(), indent=2) + "\n")
+        write_text_atomically(path, json.dumps(self.to_json(), indent=2) + "\n")
 
 
 def calibrate(evaluate: Evaluator, target_du_mm: float, tolerance_mm: float = 0.5,

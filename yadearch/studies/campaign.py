@@ -19,6 +19,7 @@ from typing import Any
 import pandas as pd
 from tqdm import tqdm
 
+from yadearch.atomic import write_atomically, write_text_atomically
 from yadearch.case.config import ArchCase, preset
 from yadearch.engine.process import check_yade_installed, run_case_process
 from yadearch.errors import CaseError, RunFailedError, YadearchError
@@ -107,9 +108,8 @@ def execute(case: ArchCase, folder: Path, timeout_s: float | None) -> dict[str, 
 
 def record_failure(folder: Path, name: str, reason: str, wall_s: float) -> None:
     """Write failed.json: why the run failed and how long it took."""
-    folder.mkdir(parents=True, exist_ok=True)
-    (folder / FAILED_FILE).write_text(json.dumps({"name": name, "status": "failed", "reason": reason,
-                                                  "wall_s": wall_s}, indent=2) + "\n")
+    write_text_atomically(folder / FAILED_FILE, json.dumps(
+        {"name": name, "status": "failed", "reason": reason, "wall_s": wall_s}, indent=2) + "\n")
 
 
 Task = Callable[[ArchCase, Path, float | None], dict[str, Any]]
@@ -161,14 +161,14 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
             finished, pending = wait(pending, return_when=FIRST_COMPLETED)
             for future in finished:
                 counts[future.result()["status"]] += 1
+            write_results(specs, out)  # current after every finished run, whatever ends the campaign
             bar.set_postfix(counts, running=min(pool.slots, len(pending)), refresh=False)
             bar.update(len(finished))
     finally:
         for future in futures:
             future.cancel()
         bar.close()
-        table = results_table(specs, out)
-        table.to_csv(out / RESULTS_FILE, index=False, float_format="%.6g")
+        table = write_results(specs, out)
         if todo:
             record_session(out, started, pool, len(todo), table)
     return table
@@ -183,7 +183,7 @@ def record_session(out: Path, started: float, pool: Pool, attempted: int, table:
                      "wall_s": round(time.time() - started, 1), "where": pool.where,
                      "slots": pool.slots, "runs_attempted": attempted,
                      "status_after": table["status"].value_counts().to_dict()})
-    path.write_text(json.dumps(sessions, indent=2) + "\n")
+    write_text_atomically(path, json.dumps(sessions, indent=2) + "\n")
 
 
 def campaign_wall_s(out: Path) -> float | None:
@@ -194,8 +194,16 @@ def campaign_wall_s(out: Path) -> float | None:
 
 def write_run_table(specs: list[RunSpec], out: Path) -> None:
     """runs.csv: what the campaign runs (name, folder, overrides), written before anything runs."""
-    pd.DataFrame([{RUN_COLUMN: s.name, "folder": s.folder.name, **_columns(s.overrides)}
-                  for s in specs]).to_csv(out / RUNS_FILE, index=False)
+    table = pd.DataFrame([{RUN_COLUMN: s.name, "folder": s.folder.name, **_columns(s.overrides)}
+                          for s in specs])
+    write_atomically(out / RUNS_FILE, lambda tmp: table.to_csv(tmp, index=False))
+
+
+def write_results(specs: list[RunSpec], out: Path) -> pd.DataFrame:
+    """results.csv from the run folders as they are now, written atomically; returns the table."""
+    table = results_table(specs, out)
+    write_atomically(out / RESULTS_FILE, lambda tmp: table.to_csv(tmp, index=False, float_format="%.6g"))
+    return table
 
 
 def _columns(overrides: dict[str, Any]) -> dict[str, Any]:

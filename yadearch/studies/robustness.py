@@ -15,6 +15,7 @@ from typing import Any
 
 import pandas as pd
 
+from yadearch.atomic import write_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.studies.campaign import RESULTS_FILE, run_campaign
 from yadearch.studies.executors import Pool
@@ -59,8 +60,8 @@ def run_study(base: ArchCase, out: Path, pool: Pool, kn_values: tuple[float, ...
     rows = study_rows(base, kn_values, variants)
     results = run_campaign(base, rows, out, pool, timeout_s=timeout_s, progress=progress)
     table = robustness_table(results)
-    table.to_csv(out / ROBUSTNESS_FILE, index=False, float_format="%.6g")
-    (out / SUMMARY_FILE).write_text(summary_markdown(table))
+    write_atomically(out / ROBUSTNESS_FILE, lambda tmp: table.to_csv(tmp, index=False, float_format="%.6g"))
+    write_text_atomically(out / SUMMARY_FILE, summary_markdown(table))
     return table
 
 

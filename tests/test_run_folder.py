@@ -1,0 +1,97 @@
+"""Run folders cannot lie (no YADE: the child process is replaced by a fake): a summary that does not
+validate means an unfinished run, a run that fails never destroys a finished one, `run` reuses the
+same case and refuses to overwrite another."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+from pathlib import Path
+
+import pytest
+
+import yadearch as ya
+from yadearch.case.config import preset
+from yadearch.engine import process
+from yadearch.errors import RunFailedError, RunFolderError
+from yadearch.results.rundir import LOG_FILE, SUMMARY_FILE, is_complete, read_run, write_run
+
+SUMMARY = {"name": "set2", "du_mm": 87.0, "collapsed": True, "hinges_at_collapse": [], "steps": 10,
+           "wall_s": 1.0}
+
+
+def finished(folder: Path, case=None, du_mm: float = 87.0) -> None:
+    case = case or preset("set2")
+    write_run(folder, case.to_toml(), [{"stage": "equilibrium", "delta_mm": 0.0}],
+              [{"stage": "equilibrium", "interface": 1}], {}, {**SUMMARY, "du_mm": du_mm})
+
+
+@pytest.mark.parametrize("damage", ["truncated", "empty object", "not an object", "newer schema",
+                                    "unmarked", "missing key"])
+def test_a_summary_that_does_not_validate_is_an_unfinished_run(tmp_path, damage):
+    finished(tmp_path)
+    summary_file = tmp_path / SUMMARY_FILE
+    text = summary_file.read_text()
+    summary = json.loads(text)
+    damaged = {"truncated": text[: len(text) // 2], "empty object": "{}", "not an object": "[1, 2]",
+               "newer schema": json.dumps({**summary, "schema_version": 99}),
+               "unmarked": json.dumps({**summary, "complete": False}),
+               "missing key": json.dumps({k: v for k, v in summary.items() if k != "du_mm"})}[damage]
+    summary_file.write_text(damaged)
+    assert not is_complete(tmp_path)
+    with pytest.raises(RunFolderError) as error:
+        read_run(tmp_path)
+    assert str(tmp_path) in str(error.value) and "\n" not in str(error.value)
+
+
+def test_a_complete_folder_reads_back_with_its_schema_marker(tmp_path):
+    finished(tmp_path)
+    summary = read_run(tmp_path).summary
+    assert summary["complete"] is True and summary["schema_version"] >= 1 and summary["du_mm"] == 87.0
+    assert not list(tmp_path.glob(".*.tmp"))  # every file was renamed into place
+
+
+class FakeChild:
+    """Stands in for `python -m yadearch.engine.simulate`: writes a log, and a finished run if `ok`."""
+
+    def __init__(self, ok: bool):
+        self.ok = ok
+
+    def __call__(self, cmd, **kwargs):
+        staging = Path(cmd[-1])
+        (staging / LOG_FILE).write_text("started\n")
+        if self.ok:
+            finished(staging, du_mm=42.0)
+        return subprocess.CompletedProcess(cmd, 0 if self.ok else 1, "", "" if self.ok else "boom")
+
+
+@pytest.fixture
+def no_yade_check(monkeypatch):
+    monkeypatch.setattr(process, "check_yade_installed", lambda: None)
+
+
+def test_a_failed_run_leaves_the_finished_run_in_place(tmp_path, monkeypatch, no_yade_check):
+    finished(tmp_path / "run")
+    monkeypatch.setattr(process.subprocess, "run", FakeChild(ok=False))
+    with pytest.raises(RunFailedError, match="boom") as error:
+        process.run_case_process(preset("set2"), tmp_path / "run")
+    assert read_run(tmp_path / "run").summary["du_mm"] == 87.0
+    assert ".run.partial" in str(error.value)  # the failed run's log is kept beside it
+
+
+def test_a_finished_run_replaces_the_folder_only_when_complete(tmp_path, monkeypatch, no_yade_check):
+    finished(tmp_path / "run")
+    monkeypatch.setattr(process.subprocess, "run", FakeChild(ok=True))
+    process.run_case_process(preset("set2"), tmp_path / "run")
+    assert read_run(tmp_path / "run").summary["du_mm"] == 42.0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["run"]  # no staging or replaced folder left
+
+
+def test_run_reuses_the_same_case_and_refuses_another(tmp_path, monkeypatch):
+    finished(tmp_path / "run")
+    calls = []
+    monkeypatch.setattr(process, "run_case_process", lambda case, folder, timeout_s=None: calls.append(1))
+    assert ya.run(preset("set2"), out=tmp_path / "run", figures=False).du_mm == 87.0 and calls == []
+    with pytest.raises(RunFolderError, match="another case .*kn_N_per_mm3"):
+        ya.run(preset("set2").replace(kn_N_per_mm3=10.0), out=tmp_path / "run", figures=False)
+    assert read_run(tmp_path / "run").summary["du_mm"] == 87.0

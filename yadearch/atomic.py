@@ -1,0 +1,34 @@
+"""Writing files so that a reader never sees half of one: a temporary file in the same folder,
+renamed over the target when complete (an interrupted write leaves the old file, or none)."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from collections.abc import Callable
+from pathlib import Path
+
+_UMASK = os.umask(0o022)
+os.umask(_UMASK)  # read the process umask (set and restored at import)
+
+
+def write_atomically(path: Path, write: Callable[[Path], None]) -> Path:
+    """Write `path` by `write(temporary)` to a temporary file in the same folder, then rename it over
+    `path`."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    os.close(handle)
+    try:
+        write(Path(temporary))
+        os.chmod(temporary, 0o666 & ~_UMASK)  # mkstemp's 0600 -> what open() would have given
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def write_text_atomically(path: Path, text: str) -> Path:
+    """`write_atomically` for a text file."""
+    return write_atomically(path, lambda temporary: temporary.write_text(text))
