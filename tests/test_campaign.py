@@ -125,7 +125,7 @@ def test_results_table_failures_and_invalid_cases(tmp_path):
         assert column in read.columns
     assert list(read["status"]) == ["done", "done", "failed", "failed"]
     assert read["du_mm"].tolist()[:2] == pytest.approx([40.0, 50.0])
-    assert "timed out" in read.loc[2, "reason"] and "kn_N_per_mm3 must be > 0" in read.loc[3, "reason"]
+    assert "timed out" in read.loc[2, "reason"] and "kn_N_per_mm3 must be in (0, 100000]" in read.loc[3, "reason"]
     assert json.loads((tmp_path / "kn10" / FAILED_FILE).read_text())["reason"].endswith("after 1 s")
     assert read.loc[0, "mechanism"] == "E-I-E-I-E" and read.loc[0, "hinges"] == "1E 3I 8E 12I 16E"
     assert table.loc[0, ["hinge_A", "hinge_B", "hinge_C", "hinge_D"]].tolist() == [3, 8, 16, 1]

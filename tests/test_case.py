@@ -27,7 +27,7 @@ def test_toml_round_trip(tmp_path):
 
 
 @pytest.mark.parametrize("override, message", [
-    ({"kn_N_per_mm3": -1}, "kn_N_per_mm3 must be > 0, got -1"),
+    ({"kn_N_per_mm3": -1}, "kn_N_per_mm3 must be in (0, 100000], got -1"),
     ({"embrace_deg": 200}, "embrace_deg must be in (0, 180], got 200"),
     ({"n_voussoirs": 2.5}, "n_voussoirs must be an integer, got 2.5"),
     ({"damping": 1.0}, "damping must be in [0, 1), got 1.0"),
@@ -50,7 +50,7 @@ def test_cli_reports_bad_input_in_one_line_without_traceback(capsys):
     code = main(["run", "--preset", "set2", "--kn", "-1"])
     err = capsys.readouterr().err
     assert code != 0
-    assert err.strip() == "error: kn_N_per_mm3 must be > 0, got -1.0"
+    assert err.strip() == "error: kn_N_per_mm3 must be in (0, 100000], got -1.0"
 
 
 def test_cli_reports_a_missing_case_file(capsys, tmp_path):

@@ -4,13 +4,13 @@ import pytest
 
 from yadearch.case.config import preset
 from yadearch.case.mechanics import (
+    arch_geometry,
     compressed_length,
     contact_stiffness,
     critical_timestep,
     effective_kn_N_per_mm3,
     voussoir_width,
 )
-from yadearch.engine.scene import arch_geometry
 
 
 def test_kn_maps_one_to_one_and_materials_get_twice_it():

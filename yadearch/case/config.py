@@ -138,9 +138,16 @@ def case_from_dict(data: dict[str, Any]) -> ArchCase:
     unknown = set(data) - set(SECTIONS) - {"name"}
     if unknown:
         raise CaseError(f"unknown section(s) {sorted(unknown)}; accepted: {sorted(SECTIONS)}")
-    kwargs: dict[str, Any] = {"name": str(data.get("name", "custom"))}
+    name = data.get("name", "custom")
+    if not isinstance(name, str) or not name.strip() or name != Path(name).name or name in (".", ".."):
+        raise CaseError(f"name must be a plain folder name (no '/' or '..'), got {name!r}")
+    kwargs: dict[str, Any] = {"name": name}
     for section_name, cls in SECTIONS.items():
-        values = dict(data.get(section_name, {}))
+        section = data.get(section_name, {})
+        if not isinstance(section, dict):
+            raise CaseError(f"[{section_name}] must be a table of parameters (key = value lines), "
+                            f"got {type(section).__name__} {section!r:.40}")
+        values = dict(section)
         names = {f.name for f in fields(cls)}
         bad = set(values) - names
         if bad:
@@ -179,6 +186,8 @@ def load_case(path: str | Path) -> ArchCase:
         data = tomllib.loads(path.read_text())
     except FileNotFoundError:
         raise CaseError(f"case file {str(path)!r} does not exist") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise CaseError(f"case file {str(path)!r} cannot be read: {exc}") from None
     except tomllib.TOMLDecodeError as exc:
         raise CaseError(f"case file {str(path)!r} is not valid TOML: {exc}") from None
     return case_from_dict(data)

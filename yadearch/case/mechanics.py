@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from yadearch.case.config import ArchCase
 from yadearch.model import units
-from yadearch.model.geometry import ArchGeometry
+from yadearch.model.geometry import ArchGeometry, segmental_arch
 
 
 @dataclass(frozen=True)
@@ -42,6 +42,13 @@ def effective_kn_N_per_mm3(case: ArchCase, voussoir_width_mm: float) -> float:
         return kn
     block = case.material.young_MPa / voussoir_width_mm  # MPa/mm = N/mm^3
     return 1.0 / (1.0 / kn + 1.0 / block)
+
+
+def arch_geometry(case: ArchCase) -> ArchGeometry:
+    """The SI geometry of a case."""
+    g = case.geometry
+    return segmental_arch(g.n_voussoirs, g.embrace_deg, units.mm(g.internal_radius_mm),
+                          units.mm(g.thickness_mm), units.mm(g.depth_mm), units.mm(g.support_length_mm))
 
 
 def contact_stiffness(case: ArchCase, geometry: ArchGeometry) -> ContactStiffness:

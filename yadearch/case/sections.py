@@ -20,13 +20,13 @@ class GeometryConfig:
     n_voussoirs: int = field(default=55, metadata=_num(2, 1000, doc="number of voussoirs"))
     embrace_deg: float = field(default=125.0, metadata=_num(0, 180, low_open=True,
                                                              doc="angle of embrace (deg)"))
-    internal_radius_mm: float = field(default=300.0, metadata=_num(0, low_open=True,
+    internal_radius_mm: float = field(default=300.0, metadata=_num(0, 50_000, low_open=True,
                                                                    doc="intrados radius (mm)"))
-    thickness_mm: float = field(default=24.0, metadata=_num(0, low_open=True,
+    thickness_mm: float = field(default=24.0, metadata=_num(0, 10_000, low_open=True,
                                                             doc="radial thickness (mm)"))
-    depth_mm: float = field(default=120.0, metadata=_num(0, low_open=True,
+    depth_mm: float = field(default=120.0, metadata=_num(0, 50_000, low_open=True,
                                                          doc="out-of-plane depth (mm)"))
-    support_length_mm: float = field(default=36.0, metadata=_num(0, low_open=True,
+    support_length_mm: float = field(default=36.0, metadata=_num(0, 50_000, low_open=True,
                                      doc="extent of each support block beyond its springing face (mm)"))
 
 
@@ -34,11 +34,11 @@ class GeometryConfig:
 class MaterialConfig:
     """Block material (paper §2): density, joint friction, and the blocks' own elasticity."""
 
-    density_g_per_cm3: float = field(default=1.64, metadata=_num(0, low_open=True,
+    density_g_per_cm3: float = field(default=1.64, metadata=_num(0, 25, low_open=True,
                                                                  doc="block density (g/cm^3)"))
     friction_deg: float = field(default=41.2, metadata=_num(0, 90, high_open=True,
                                                             doc="joint friction angle (deg)"))
-    young_MPa: float = field(default=941.0, metadata=_num(0, low_open=True,
+    young_MPa: float = field(default=941.0, metadata=_num(0, 1e6, low_open=True,
                              doc="block Young's modulus (MPa); used only if block_elasticity"))
     block_elasticity: bool = field(default=False, metadata={"doc": "fold the block's axial "
                                    "stiffness young/width in series into kn (off: rigid blocks)"})
@@ -48,9 +48,9 @@ class MaterialConfig:
 class InterfaceConfig:
     """Dry-joint interface: no-tension Winkler normal stiffness kn and shear stiffness ks = ratio*kn."""
 
-    kn_N_per_mm3: float = field(default=5.2, metadata=_num(0, low_open=True,
+    kn_N_per_mm3: float = field(default=5.2, metadata=_num(0, 1e5, low_open=True,
                                 doc="interface normal stiffness (N/mm^3)"))
-    ks_over_kn: float = field(default=0.5, metadata=_num(0, low_open=True,
+    ks_over_kn: float = field(default=0.5, metadata=_num(0, 1, low_open=True,
                               doc="shear-to-normal stiffness ratio (paper: 0.5)"))
 
 
@@ -58,12 +58,12 @@ class InterfaceConfig:
 class LoadingConfig:
     """Self-weight, then a monotonic displacement of the right support."""
 
-    gravity_m_per_s2: float = field(default=9.81, metadata=_num(0, low_open=True,
+    gravity_m_per_s2: float = field(default=9.81, metadata=_num(0, 100, low_open=True,
                                     doc="gravitational acceleration (m/s^2)"))
     settlement_direction_deg: float = field(default=-90.0, metadata=_num(-180, 180,
                                             doc="direction of the support motion from +x (deg); "
                                                 "-90 = vertical settlement"))
-    max_settlement_mm: float = field(default=150.0, metadata=_num(0, low_open=True,
+    max_settlement_mm: float = field(default=150.0, metadata=_num(0, 10_000, low_open=True,
                                      doc="stop without collapse beyond this support displacement (mm)"))
 
 
@@ -71,7 +71,7 @@ class LoadingConfig:
 class NumericsConfig:
     """Numerical settings. None of them is physics: du must not depend on them (scripts/convergence.py)."""
 
-    settlement_rate_mm_per_s: float = field(default=80.0, metadata=_num(0, low_open=True,
+    settlement_rate_mm_per_s: float = field(default=80.0, metadata=_num(0, 1e4, low_open=True,
                                             doc="support speed during continuous loading (mm/s)"))
     rate_reference_kn_N_per_mm3: float = field(default=0.0, metadata={**_num(
         0, doc="joints stiffer than this (N/mm^3) load more slowly: the support speed is "
@@ -101,42 +101,46 @@ class NumericsConfig:
     equilibrium_tolerance: float = field(default=1e-3, metadata=_num(0, 1, low_open=True,
                                          doc="YADE unbalanced force (mean resultant / mean contact "
                                          "force) below which the arch is in equilibrium"))
-    gravity_ramp_periods: float = field(default=200.0, metadata=_num(0, doc="gravity grows from 0 to "
+    gravity_ramp_periods: float = field(default=200.0, metadata=_num(0, 1e6, doc="gravity grows from 0 to "
                                         "full over this many periods of a voussoir vibrating on its "
                                         "joints (pi x critical time step), equally gentle at any kn; a "
                                         "sudden load overshoots"))
-    selfweight_max_s: float = field(default=2.0, metadata=_num(0, low_open=True,
+    selfweight_max_s: float = field(default=2.0, metadata=_num(0, 100, low_open=True,
                                     doc="simulated time allowed for the self-weight stage (s)"))
-    hold_max_s: float = field(default=2.0, metadata=_num(0, low_open=True,
+    hold_max_s: float = field(default=2.0, metadata=_num(0, 100, low_open=True,
                               doc="simulated time allowed to find equilibrium at a fixed support (s); "
                               "a near-critical arch can creep for longer than 0.5 s before it settles "
                               "(kn 1.778: no equilibrium from 43 mm with 0.5 s, equilibrium to 72.36 "
                               "mm with 2 s)"))
-    hold_min_s: float = field(default=0.1, metadata=_num(0, doc="simulated time a hold lasts at least "
+    hold_min_s: float = field(default=0.1, metadata=_num(0, 10, doc="simulated time a hold lasts at least "
                                                           "before it may end in equilibrium (s)"))
-    still_speed_mm_per_s: float = field(default=0.5, metadata=_num(0, low_open=True,
+    still_speed_mm_per_s: float = field(default=0.5, metadata=_num(0, 1000, low_open=True,
                                         doc="blocks slower than this are at rest (mm/s)"))
     settle_speed_mm_per_s: float = field(default=0.01, metadata={**_num(
         0, low_open=True, doc="before du is bracketed, its lower state relaxes until every block is "
         "slower than this (mm/s): a state accepted while still creeping fails every move near "
         "collapse"), "predates": 1e9})
-    runaway_mm: float = field(default=1.0, metadata=_num(0, low_open=True,
+    runaway_mm: float = field(default=1.0, metadata=_num(0, 1000, low_open=True,
                               doc="block displacement at a fixed support that means no equilibrium (mm)"))
     first_increment_mm: float = field(default=2.0, metadata={**_num(
         0, low_open=True, doc="support displacement of the first loading increment (mm); each "
         "increment ends in a relaxation to equilibrium"), "predates": 0.0})
-    max_increment_mm: float = field(default=5.0, metadata=_num(0, low_open=True,
+    max_increment_mm: float = field(default=5.0, metadata=_num(0, 1000, low_open=True,
                                     doc="largest loading increment (mm), reached while the arch "
                                     "follows the support"))
-    increment_growth: float = field(default=1.5, metadata=_num(1, doc="factor on the increment after "
+    increment_growth: float = field(default=1.5, metadata=_num(1, 10, doc="factor on the increment after "
                                     "one that ended in equilibrium"))
-    du_tolerance_mm: float = field(default=0.1, metadata=_num(0, low_open=True,
+    du_tolerance_mm: float = field(default=0.1, metadata=_num(0, 10, low_open=True,
                                    doc="width of the bracket that locates du (mm)"))
-    hinge_rotation_mrad: float = field(default=2.0, metadata=_num(0, low_open=True,
+    hinge_rotation_mrad: float = field(default=2.0, metadata=_num(0, 100, low_open=True,
                                        doc="relative joint rotation that counts as a hinge (mrad)"))
     series_every_steps: int = field(default=200, metadata=_num(1, doc="steps between time-series rows"))
     progress_every_s: float = field(default=10.0, metadata=_num(0, low_open=True,
                                     doc="wall seconds between progress lines"))
+    max_steps: int = field(default=100_000_000, metadata={**_num(
+        1, 1e12, doc="step budget of a run: a case whose estimated worst case exceeds it is refused "
+        "before YADE starts, and a run that reaches it fails (the paper's stiffest kn 100 takes "
+        "about 1.3 million)"), "predates": 100_000_000})
 
 
 SECTIONS: dict[str, type] = {

@@ -127,13 +127,22 @@ def main(argv: list[str] | None = None) -> int:
     except click.exceptions.Abort:
         click.echo("aborted", err=True)
         return 130
-    except click.ClickException as exc:
-        exc.show()
-        return exc.exit_code
+    except click.ClickException as exc:  # usage mistakes too: one line, exit 1, as any user error
+        click.echo(f"error: {exc.format_message()} (see `yadearch {_command(argv)}--help`)", err=True)
+        return 1
     except YadearchError as exc:
         click.echo(f"error: {exc}", err=True)
         return 1
+    except OSError as exc:  # an output folder that cannot be written, a full disk
+        click.echo(f"error: {exc.strerror or exc}: {exc.filename or ''}".rstrip(": "), err=True)
+        return 1
     return 0
+
+
+def _command(argv: list[str] | None) -> str:
+    """The sub-command a command line names (with a trailing space), for the help hint."""
+    words = sys.argv[1:] if argv is None else argv
+    return next((f"{w} " for w in words if w in cli.commands), "")
 
 
 if __name__ == "__main__":

@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 
 from yadearch.case.config import ArchCase
+from yadearch.case.plan import plan_run
 from yadearch.engine.yade_env import YADE_PY_DIRS
 from yadearch.errors import RunFailedError, YadeMissingError
 from yadearch.results.rundir import CASE_FILE, LOG_FILE, is_complete
@@ -43,6 +44,7 @@ def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
     reason if it fails. The child writes a staging folder beside `out`, swapped into place only
     when complete: a run that does not finish never destroys the finished run `out` may hold (its
     log then stays in the staging folder, which the error names)."""
+    plan_run(case)  # refuse, before any process starts, a case that cannot run or would not end
     check_yade_installed()
     out = Path(out)
     staging = out.parent / f"{STAGING_PREFIX}{out.name}{STAGING_SUFFIX}"

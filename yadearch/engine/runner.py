@@ -138,6 +138,9 @@ class Runner:
 
     def _advance(self, n: int) -> None:
         """Run n steps (the only place that steps the scene, so that steps are counted)."""
+        if self.total_steps + n > self.num.max_steps:
+            raise RunFailedError(f"the run reached numerics.max_steps = {self.num.max_steps} steps "
+                                 f"at delta = {units.to_mm(self.delta()):.2f} mm ({self.stage})")
         self.gate.advance(n)
         self.total_steps += n
         self.steps_by_stage[self.stage] = self.steps_by_stage.get(self.stage, 0) + n

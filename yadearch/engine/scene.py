@@ -14,13 +14,13 @@ import numpy as np
 
 import __main__
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import ContactStiffness, contact_stiffness, critical_timestep
+from yadearch.case.mechanics import ContactStiffness, arch_geometry, contact_stiffness, critical_timestep
 from yadearch.engine.cgal_contacts import CgalContacts
 from yadearch.engine.joint_elements import JointElementContacts
 from yadearch.engine.stepping import close_active
 from yadearch.engine.yade_env import import_yade
 from yadearch.model import units
-from yadearch.model.geometry import ArchGeometry, segmental_arch
+from yadearch.model.geometry import ArchGeometry
 from yadearch.model.joints import z_rotation
 
 # Poisson ratio given to YADE materials so that Ip2's ks = young*poisson is negligible but not the
@@ -74,13 +74,6 @@ class ArchScene:
     @property
     def voussoir_ids(self) -> list[int]:
         return self.body_ids[1:-1]
-
-
-def arch_geometry(case: ArchCase) -> ArchGeometry:
-    """The SI geometry of a case."""
-    g = case.geometry
-    return segmental_arch(g.n_voussoirs, g.embrace_deg, units.mm(g.internal_radius_mm),
-                          units.mm(g.thickness_mm), units.mm(g.depth_mm), units.mm(g.support_length_mm))
 
 
 def build_scene(case: ArchCase) -> ArchScene:

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 import sys
+from collections.abc import Iterator
 from types import ModuleType
 
 from yadearch.errors import YadeMissingError
@@ -21,8 +23,9 @@ def import_yade(threads: int = 1) -> ModuleType:
         if os.path.isdir(path) and path not in sys.path:
             sys.path.insert(0, path)
     try:
-        import yade  # noqa: F401  (registers the C++ classes)
-        import yade.log
+        with _stdout_silenced():  # YADE prints "Using python version: ..." to stdout at import
+            import yade  # noqa: F401  (registers the C++ classes)
+            import yade.log
     except ImportError as exc:
         raise YadeMissingError(
             f"YADE is not importable from {sys.executable} ({exc}); on Debian run "
@@ -31,6 +34,21 @@ def import_yade(threads: int = 1) -> ModuleType:
         ) from None
     yade.log.setLevel("Polyhedra_support.cpp", yade.log.ERROR)
     return yade
+
+
+@contextlib.contextmanager
+def _stdout_silenced() -> Iterator[None]:
+    """Point file descriptor 1 at /dev/null for the block (C++ writes bypass sys.stdout)."""
+    sys.stdout.flush()
+    saved = os.dup(1)
+    try:
+        with open(os.devnull, "w") as devnull:
+            os.dup2(devnull.fileno(), 1)
+            yield
+    finally:
+        sys.stdout.flush()
+        os.dup2(saved, 1)
+        os.close(saved)
 
 
 def yade_version() -> str:

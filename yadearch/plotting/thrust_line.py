@@ -17,6 +17,7 @@ from matplotlib.patches import Polygon
 
 from yadearch.atomic import write_atomically
 from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import arch_geometry
 from yadearch.model.geometry import ArchGeometry
 from yadearch.plotting.run_figures import (
     AXIS_MARGINS_CM,
@@ -28,7 +29,7 @@ from yadearch.plotting.run_figures import (
     new_figure,
 )
 from yadearch.solve.limit_result import LimitResult
-from yadearch.solve.rigid import case_geometry, rotate
+from yadearch.solve.rigid import rotate
 
 M_TO_MM = 1e3
 VOUSSOIR_COLOUR, SUPPORT_COLOUR, THRUST_COLOUR = "#EADDCA", "0.45", "#D55E00"
@@ -61,7 +62,7 @@ def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchC
     if None); returns the figure."""
     geometry = geometry_or_case
     if not isinstance(geometry, ArchGeometry):
-        geometry = case_geometry(geometry)
+        geometry = arch_geometry(geometry)
     with matplotlib.rc_context(STYLE):
         outlines = placed_outlines(result, geometry)
         undeformed = [b[: len(b) // 2, :2] * M_TO_MM for b in geometry.blocks]

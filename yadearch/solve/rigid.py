@@ -13,9 +13,10 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import arch_geometry
 from yadearch.errors import YadearchError
 from yadearch.model import units
-from yadearch.model.geometry import ArchGeometry, block_volume, segmental_arch
+from yadearch.model.geometry import ArchGeometry, block_volume
 
 INTRADOS, EXTRADOS = 0, 1
 SIDES = "IE"  # hinge label of a pivot corner: I = intrados pivot, E = extrados pivot
@@ -24,13 +25,6 @@ TOUCH_FRACTION = 1e-7  # corners closer than this fraction of the thickness touc
 
 class LimitError(YadearchError):
     """The arch admits no equilibrium at rest, or moves in a way the limit analysis does not follow."""
-
-
-def case_geometry(case: ArchCase) -> ArchGeometry:
-    """The SI geometry of a case (as `scene.arch_geometry`, without importing YADE)."""
-    g = case.geometry
-    return segmental_arch(g.n_voussoirs, g.embrace_deg, units.mm(g.internal_radius_mm),
-                          units.mm(g.thickness_mm), units.mm(g.depth_mm), units.mm(g.support_length_mm))
 
 
 def rotate(vectors: np.ndarray, angles: np.ndarray | float) -> np.ndarray:
@@ -79,7 +73,7 @@ class RigidArch:
 
 def rigid_arch(case: ArchCase) -> RigidArch:
     """The rigid model of a case: blocks of density x g x volume, Coulomb friction, no cohesion."""
-    geometry = case_geometry(case)
+    geometry = arch_geometry(case)
     unit_weight = units.density(case.material.density_g_per_cm3) * case.loading.gravity_m_per_s2
     weight = np.array([unit_weight * block_volume(b) for b in geometry.blocks])
     centroid0 = np.array([polygon_centroid(b[: len(b) // 2, :2]) for b in geometry.blocks])

@@ -7,6 +7,7 @@ campaign finds the finished folders and only redoes the others.
 
 from __future__ import annotations
 
+import hashlib
 import json
 import math
 import time
@@ -21,6 +22,7 @@ from tqdm import tqdm
 
 from yadearch.atomic import write_atomically, write_text_atomically
 from yadearch.case.config import ArchCase, preset
+from yadearch.case.plan import plan_run
 from yadearch.engine.process import check_yade_installed, run_case_process
 from yadearch.errors import CaseError, RunFailedError, YadearchError
 from yadearch.model.hinges import paper_labels
@@ -57,9 +59,10 @@ def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]
         case, error = None, None
         try:
             case = base.with_overrides({**overrides, "name": name})
+            plan_run(case)
         except CaseError as exc:
-            error = f"invalid case: {exc}"
-        spec = RunSpec(name, overrides, out / name, case, error)
+            case, error = None, f"invalid case: {exc}"
+        spec = RunSpec(name, overrides, out / confined_folder_name(name), case, error)
         if case is not None and is_complete(spec.folder):
             _check_same_case(spec)
         specs.append(spec)
@@ -68,6 +71,14 @@ def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]
     if duplicates:
         raise YadearchError(f"campaign has duplicate runs {duplicates}")
     return specs
+
+
+def confined_folder_name(name: str) -> str:
+    """`name` if it is a plain folder name, else a stand-in that stays inside the campaign folder
+    (a table's `run` cell such as "../../x" must not write outside `--out`)."""
+    if name and name == Path(name).name and name not in (".", ".."):
+        return name
+    return "invalid-name-" + hashlib.sha1(name.encode()).hexdigest()[:8]
 
 
 def _check_same_case(spec: RunSpec) -> None:

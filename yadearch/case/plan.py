@@ -1,0 +1,75 @@
+"""What a run will do, checked before YADE starts: a valid arch, a finite time step, a gravity ramp
+that fits the self-weight stage, and a worst-case number of steps within the step budget. Each
+refusal is one line naming the parameter, its value and what would be accepted."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep
+from yadearch.errors import CaseError
+
+SETTLE_HOLDS = 10  # settling holds a run may need (one per bracket end retried), for the worst case
+BISECTIONS_MARGIN = 10  # increments beyond the bisection count, for retries after discarded states
+
+
+@dataclass(frozen=True)
+class RunPlan:
+    """The numbers a run is built from: time step (s), gravity ramp (s), and the worst-case
+    simulated time (s) and steps of the whole run."""
+
+    dt_s: float
+    gravity_ramp_s: float
+    worst_case_s: float
+    worst_case_steps: float
+
+
+def plan_run(case: ArchCase) -> RunPlan:
+    """The time step, gravity ramp and worst-case steps of `case`; CaseError if it cannot run."""
+    g, num = case.geometry, case.numerics
+    if g.thickness_mm >= g.internal_radius_mm:
+        raise CaseError(f"geometry.thickness_mm = {g.thickness_mm:g} must be below "
+                        f"geometry.internal_radius_mm = {g.internal_radius_mm:g}")
+    try:
+        geometry = arch_geometry(case)
+    except ValueError as exc:
+        raise CaseError(f"the arch cannot be built: {exc}") from None
+    dt = num.timestep_safety * critical_timestep(case, geometry, contact_stiffness(case, geometry))
+    if not math.isfinite(dt) or dt <= 0.0:
+        raise CaseError(f"the time step from interface.kn_N_per_mm3 = {case.interface.kn_N_per_mm3:g} "
+                        f"and material.density_g_per_cm3 = {case.material.density_g_per_cm3:g} is "
+                        f"{dt:g} s; both must give a finite, positive step")
+    ramp_s = num.gravity_ramp_periods * math.pi * dt / num.timestep_safety
+    if ramp_s > num.selfweight_max_s:
+        raise CaseError(f"numerics.gravity_ramp_periods = {num.gravity_ramp_periods:g} makes the gravity "
+                        f"ramp {ramp_s:.3g} s, longer than numerics.selfweight_max_s = "
+                        f"{num.selfweight_max_s:g} s; lower the first or raise the second")
+    worst_s = num.selfweight_max_s + ramp_s + _loading_worst_case_s(case) + SETTLE_HOLDS * num.hold_max_s
+    steps = worst_s / dt
+    if steps > num.max_steps:
+        raise CaseError(f"this case could take up to {steps:.3g} steps (time step {dt:.3g} s, up to "
+                        f"{worst_s:.3g} s simulated), over numerics.max_steps = {num.max_steps:.3g}; "
+                        "check the loading speed, increments and hold times, or raise max_steps")
+    return RunPlan(dt, ramp_s, worst_s, steps)
+
+
+def _loading_worst_case_s(case: ArchCase) -> float:
+    """Simulated time of the loading if every increment ran its full move and its longest hold."""
+    num = case.numerics
+    largest = max(num.max_increment_mm, num.first_increment_mm)
+    increments = (math.ceil(case.loading.max_settlement_mm / num.first_increment_mm)
+                  + math.ceil(math.log2(largest / num.du_tolerance_mm)) + BISECTIONS_MARGIN)
+    return increments * (_move_s(largest, case.settlement_speed_mm_per_s,
+                                 num.support_acceleration_mm_per_s2) + num.hold_max_s)
+
+
+def _move_s(distance_mm: float, speed_mm_per_s: float, accel_mm_per_s2: float) -> float:
+    """Duration of a trapezoidal move (accelerate, cruise, brake; accel 0 = instantaneous)."""
+    if accel_mm_per_s2 <= 0.0:
+        return distance_mm / speed_mm_per_s
+    ramp_mm = speed_mm_per_s**2 / accel_mm_per_s2  # both ramps together
+    if ramp_mm >= distance_mm:
+        return 2.0 * math.sqrt(distance_mm / accel_mm_per_s2)
+    return 2.0 * speed_mm_per_s / accel_mm_per_s2 + (distance_mm - ramp_mm) / speed_mm_per_s
