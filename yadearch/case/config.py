@@ -110,10 +110,10 @@ def _check_value(qualified: str, f: dataclasses.Field, value: Any) -> None:
         return
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise CaseError(f"{name} must be a number, got {value!r}")
-    if f.type in ("int", int) and int(value) != value:
-        raise CaseError(f"{name} must be an integer, got {value!r}")
     if not math.isfinite(value):
         raise CaseError(f"{name} must be finite, got {value!r}")
+    if f.type in ("int", int) and int(value) != value:
+        raise CaseError(f"{name} must be an integer, got {value!r}")
     meta = f.metadata
     low, high = meta.get("low"), meta.get("high")
     if low is not None and (value <= low if meta["low_open"] else value < low):

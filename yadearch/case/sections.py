@@ -74,12 +74,12 @@ class NumericsConfig:
     settlement_rate_mm_per_s: float = field(default=80.0, metadata=_num(0, 1e4, low_open=True,
                                             doc="support speed during continuous loading (mm/s)"))
     rate_reference_kn_N_per_mm3: float = field(default=0.0, metadata={**_num(
-        0, doc="joints stiffer than this (N/mm^3) load more slowly: the support speed is "
+        0, 1e5, doc="joints stiffer than this (N/mm^3) load more slowly: the support speed is "
         "settlement_rate x sqrt(this / kn); 0 = no scaling (the default: with loading by "
         "equilibrium increments, kn 100 gives du 108.21 mm unscaled and 108.84 mm at 10, the same "
         "hinges, in 13 % fewer steps)"), "predates": 0.0})
     support_acceleration_mm_per_s2: float = field(default=640.0, metadata={**_num(
-        0, doc="acceleration and braking of the support at the start and end of each move (mm/s^2); "
+        0, 1e5, doc="acceleration and braking of the support at the start and end of each move (mm/s^2); "
         "0 = instantaneous. The same at any kn: it sets the inertial load of the moving arch (640 = "
         "0.065 g)"), "predates": 0.0})
     damping: float = field(default=0.2, metadata=_num(0, 1, high_open=True,
@@ -117,13 +117,13 @@ class NumericsConfig:
     still_speed_mm_per_s: float = field(default=0.5, metadata=_num(0, 1000, low_open=True,
                                         doc="blocks slower than this are at rest (mm/s)"))
     settle_speed_mm_per_s: float = field(default=0.01, metadata={**_num(
-        0, low_open=True, doc="before du is bracketed, its lower state relaxes until every block is "
+        0, 1000, low_open=True, doc="before du is bracketed, its lower state relaxes until every block is "
         "slower than this (mm/s): a state accepted while still creeping fails every move near "
         "collapse"), "predates": 1e9})
     runaway_mm: float = field(default=1.0, metadata=_num(0, 1000, low_open=True,
                               doc="block displacement at a fixed support that means no equilibrium (mm)"))
     first_increment_mm: float = field(default=2.0, metadata={**_num(
-        0, low_open=True, doc="support displacement of the first loading increment (mm); each "
+        0, 1000, low_open=True, doc="support displacement of the first loading increment (mm); each "
         "increment ends in a relaxation to equilibrium"), "predates": 0.0})
     max_increment_mm: float = field(default=5.0, metadata=_num(0, 1000, low_open=True,
                                     doc="largest loading increment (mm), reached while the arch "
@@ -134,8 +134,8 @@ class NumericsConfig:
                                    doc="width of the bracket that locates du (mm)"))
     hinge_rotation_mrad: float = field(default=2.0, metadata=_num(0, 100, low_open=True,
                                        doc="relative joint rotation that counts as a hinge (mrad)"))
-    series_every_steps: int = field(default=200, metadata=_num(1, doc="steps between time-series rows"))
-    progress_every_s: float = field(default=10.0, metadata=_num(0, low_open=True,
+    series_every_steps: int = field(default=200, metadata=_num(1, 1e9, doc="steps between time-series rows"))
+    progress_every_s: float = field(default=10.0, metadata=_num(0, 1e6, low_open=True,
                                     doc="wall seconds between progress lines"))
     max_steps: int = field(default=100_000_000, metadata={**_num(
         1, 1e12, doc="step budget of a run: a case whose estimated worst case exceeds it is refused "

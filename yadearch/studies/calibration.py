@@ -26,6 +26,8 @@ from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool
 from yadearch.studies.grid import round_sig, run_tag
 
+MAX_TARGET_DU_MM = 10_000.0  # the largest support displacement a case accepts (loading.max_settlement_mm)
+
 
 @dataclass
 class Evaluation:
@@ -74,10 +76,12 @@ def calibrate(evaluate: Evaluator, target_du_mm: float, tolerance_mm: float = 0.
     Evaluates both bracket ends first (together, so they can run in parallel) and raises
     YadearchError if the target lies outside the du they span. `converged` is False if `max_runs`
     runs end the search, or the bracket shrinks around a jump in du."""
-    if not 0 < kn_min < kn_max:
-        raise YadearchError(f"need 0 < kn-min < kn-max, got {kn_min} and {kn_max}")
-    if tolerance_mm <= 0:
-        raise YadearchError(f"tolerance must be > 0 mm, got {tolerance_mm}")
+    if not (math.isfinite(target_du_mm) and 0 < target_du_mm <= MAX_TARGET_DU_MM):
+        raise YadearchError(f"target du must be in (0, {MAX_TARGET_DU_MM:g}] mm, got {target_du_mm}")
+    if not (math.isfinite(kn_min) and math.isfinite(kn_max) and 0 < kn_min < kn_max):
+        raise YadearchError(f"need 0 < kn-min < kn-max (finite), got {kn_min} and {kn_max}")
+    if not (math.isfinite(tolerance_mm) and tolerance_mm > 0):
+        raise YadearchError(f"tolerance must be a finite number > 0 mm, got {tolerance_mm}")
     history: list[Evaluation] = []
 
     def run(kns: list[float]) -> list[Evaluation]:

@@ -1,0 +1,126 @@
+"""Nothing a user types can crash, hang or write outside `--out` (no YADE: every probe is refused
+before a simulation starts): a table of bad inputs through the command line, and property-based
+cases and TOML structures that give a valid case or one clean error, never a traceback."""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import fields
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from yadearch.case.config import case_from_dict, parameter_docs
+from yadearch.case.plan import plan_run
+from yadearch.case.sections import SECTIONS
+from yadearch.cli.commands import main
+from yadearch.errors import YadearchError
+
+NUMERIC = [f"{name}.{f.name}" for name, section in SECTIONS.items() for f in fields(section)
+           if f.type in ("int", "float", int, float)]
+VALID_NEGATIVE = ("loading.settlement_direction_deg",)  # -1 deg is a valid direction
+BAD_VALUES = ["-1", "nan", "inf", "-inf", "1e300", "'text'", "true"]
+DERIVED = [  # inside each value's range, absurd together: refused from the plan, before YADE
+    ("settlement_rate_mm_per_s=1e-9", "max_steps"), ("gravity_ramp_periods=1e6", "gravity ramp"),
+    ("thickness_mm=400", "internal_radius_mm"),
+    ("support_acceleration_mm_per_s2=1e-9", "max_steps"), ("hold_max_s=100", "max_steps"),
+    ("kn_N_per_mm3=1e5", "max_steps"), ("max_steps=10", "max_steps"),
+]
+
+
+def probes() -> list[list[str]]:
+    """Command lines that must each end in one line and exit code 1 (over 100 of them)."""
+    lines = [["run", "--preset", "set2", "--set", f"{q}={v}"] for q in NUMERIC for v in BAD_VALUES
+             if not (v == "-1" and q in VALID_NEGATIVE)]
+    lines += [["run", "--preset", "set2", "--set", s] for s, _ in DERIVED]
+    lines += [["run", "--kn", "abc"], ["run", "--bogus"], ["run", "--preset", "set9"],
+              ["run", "--preset", "set1", "--case", "x.toml"], ["run", "--set", "nokey"],
+              ["run", "--set", "no_such_parameter=1"], ["run", "--case", "/nonexistent/case.toml"],
+              ["sweep", "--preset", "set2", "--out", "OUT/s"], ["sweep", "--kn", "1:2:cubic:3", "--out", "OUT/s"],
+              ["sweep", "--kn", "0:1:log:3", "--out", "OUT/s"], ["sweep", "--param", "kn_N_per_mm3", "--out", "OUT/s"],
+              ["calibrate", "--preset", "set1", "--target-du", "nan", "--out", "OUT/c.json"],
+              ["calibrate", "--preset", "set1", "--target-du", "-5", "--out", "OUT/c.json"],
+              ["calibrate", "--preset", "set1", "--target-du", "48", "--kn-min", "5", "--kn-max", "1",
+               "--out", "OUT/c.json"],
+              ["report", "OUT/not-a-run", "--out", "OUT/r"], ["limit", "--set", "friction_deg=95"]]
+    return lines
+
+
+class SimulationStarted(Exception):
+    """A probe got as far as starting a simulation: it was not refused."""
+
+
+@pytest.fixture(autouse=True)
+def no_simulation(monkeypatch):
+    """Every probe must be refused before a YADE process starts; one that is not fails the test."""
+    from yadearch.engine import process
+
+    def refuse(*args, **kwargs):
+        raise SimulationStarted(f"a simulation was started: {args[0] if args else kwargs}")
+    monkeypatch.setattr(process.subprocess, "run", refuse)
+
+
+def test_there_are_over_a_hundred_probes():
+    assert len(probes()) > 100
+
+
+@pytest.mark.parametrize("argv", probes(), ids=lambda a: " ".join(a)[:60])
+def test_a_bad_input_ends_in_one_line_and_exit_code_1(argv, tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    argv = [a.replace("OUT", str(tmp_path / "out")) for a in argv]
+    if argv[0] == "run":
+        argv += ["--out", str(tmp_path / "out" / "run")]
+    code = main(argv)
+    err = capsys.readouterr().err.strip()
+    assert code == 1, err
+    assert err.startswith("error: ") and "\n" not in err and "Traceback" not in err
+    assert not (tmp_path / "out" / "run" / "summary.json").exists()
+    assert {p.name for p in tmp_path.iterdir()} <= {"out"}  # nothing written outside --out
+
+
+def test_derived_quantities_are_named_in_the_refusal():
+    for setting, words in DERIVED:
+        key, value = setting.split("=")
+        case = case_from_dict({})
+        with pytest.raises(YadearchError) as error:
+            plan_run(case.replace(**{key: float(value)}))
+        assert words is None or words in str(error.value), (setting, str(error.value))
+
+
+TOML_SCALARS = st.one_of(st.integers(-10**6, 10**6), st.floats(allow_nan=True), st.booleans(),
+                         st.text(max_size=5))
+SECTION_NAMES = st.sampled_from(["geometry", "material", "interface", "loading", "numerics", "name",
+                                 "other"])
+KEYS = st.sampled_from([q.split(".")[1] for q, _, _ in parameter_docs()] + ["unknown_key"])
+SECTION_VALUES = st.one_of(TOML_SCALARS, st.lists(TOML_SCALARS, max_size=2),
+                     st.dictionaries(KEYS, st.one_of(TOML_SCALARS, st.lists(TOML_SCALARS, max_size=2)),
+                                     max_size=4))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.dictionaries(SECTION_NAMES, SECTION_VALUES, max_size=4))
+def test_any_case_structure_is_a_valid_case_or_one_clean_error(data):
+    try:
+        case = case_from_dict(data)
+        plan_run(case)
+    except YadearchError as exc:
+        assert str(exc) and "\n" not in str(exc)
+        return
+    for section in ("geometry", "material", "interface", "loading", "numerics"):
+        for value in vars(getattr(case, section)).values():
+            assert not isinstance(value, float) or math.isfinite(value)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.text(max_size=80))
+def test_any_toml_text_is_a_case_or_one_clean_error(text):
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError:
+        return  # load_case reports these in one line (tested in test_case.py)
+    try:
+        plan_run(case_from_dict(data))
+    except YadearchError as exc:
+        assert "\n" not in str(exc)
