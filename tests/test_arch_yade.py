@@ -45,7 +45,7 @@ def test_settlement_opens_three_hinges_where_the_mechanism_puts_them(settled):
     runner.stage = "loading"
     runner.move_to(units.mm(8.0))
     assert runner.hold() == "stable"  # 8 mm is far from collapse: the arch follows the support
-    _, hinges = runner.joint_snapshot()
+    _, hinges = runner.recorder.joint_snapshot()
     labels = [(h.interface, h.side) for h in hinges]
     n = 15
     assert len(hinges) == 3, labels
@@ -88,18 +88,17 @@ def test_a_snapshot_puts_the_arch_back_where_it_was(settled):
 
 def test_holds_run_at_hold_damping_and_moves_at_the_loading_damping(settled):
     """du must not depend on the loading damping: the equilibrium verdicts use their own damping."""
-    from yade import O
 
     runner, _ = settled
     num = runner.num
     loading, num.hold_damping = num.hold_damping, 0.35
     try:
         runner.move_to(runner.delta() + units.mm(0.5))
-        assert O.engines[-1].damping == num.damping
+        assert runner.scene.newton.damping == num.damping
         assert runner.hold() == "stable"
-        assert O.engines[-1].damping == 0.35
+        assert runner.scene.newton.damping == 0.35
         runner.move_to(runner.delta() + units.mm(0.5))
-        assert O.engines[-1].damping == num.damping
+        assert runner.scene.newton.damping == num.damping
     finally:
         num.hold_damping = loading
 
