@@ -95,3 +95,18 @@ def test_run_reuses_the_same_case_and_refuses_another(tmp_path, monkeypatch):
     with pytest.raises(RunFolderError, match="another case .*kn_N_per_mm3"):
         ya.run(preset("set2").replace(kn_N_per_mm3=10.0), out=tmp_path / "run", figures=False)
     assert read_run(tmp_path / "run").summary["du_mm"] == 87.0
+
+
+def test_an_interrupted_run_is_not_a_failure_and_stays_pending(tmp_path, monkeypatch, no_yade_check):
+    from yadearch.errors import RunInterruptedError
+    from yadearch.studies.campaign import FAILED_FILE, execute
+
+    def interrupted_child(cmd, **kwargs):
+        (Path(cmd[-1]) / LOG_FILE).write_text("INTERRUPTED: SIGTERM\n")
+        return subprocess.CompletedProcess(cmd, 130, "", "error: interrupted (SIGTERM)")
+
+    monkeypatch.setattr(process.subprocess, "run", interrupted_child)
+    with pytest.raises(RunInterruptedError, match="interrupted"):
+        process.run_case_process(preset("set2"), tmp_path / "run")
+    outcome = execute(preset("set2"), tmp_path / "other", None)
+    assert outcome["status"] == "interrupted" and not (tmp_path / "other" / FAILED_FILE).exists()

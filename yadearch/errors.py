@@ -17,5 +17,9 @@ class RunFailedError(YadearchError):
     """A simulation process failed (crash, NaN, timeout)."""
 
 
+class RunInterruptedError(RunFailedError):
+    """A simulation process stopped by SIGINT or SIGTERM: not a failure of the case."""
+
+
 class RunFolderError(YadearchError):
     """A run folder that does not hold a complete, readable run."""

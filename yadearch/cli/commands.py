@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import signal
 import sys
 from pathlib import Path
 
@@ -122,6 +123,7 @@ def report(runs: tuple[str, ...], out: str) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     """Entry point: user mistakes and failed runs end in one line and a non-zero exit code."""
+    signal.signal(signal.SIGTERM, _terminate_as_interrupt)
     try:
         cli.main(args=argv, standalone_mode=False)
     except click.exceptions.Abort:
@@ -137,6 +139,11 @@ def main(argv: list[str] | None = None) -> int:
         click.echo(f"error: {exc.strerror or exc}: {exc.filename or ''}".rstrip(": "), err=True)
         return 1
     return 0
+
+
+def _terminate_as_interrupt(signum: int, frame: object) -> None:
+    """SIGTERM stops a command as Ctrl-C does: campaigns write their results table on the way out."""
+    raise KeyboardInterrupt
 
 
 def _command(argv: list[str] | None) -> str:

@@ -12,12 +12,13 @@ from pathlib import Path
 from yadearch.case.config import ArchCase
 from yadearch.case.plan import plan_run
 from yadearch.engine.yade_env import YADE_PY_DIRS
-from yadearch.errors import RunFailedError, YadeMissingError
+from yadearch.errors import RunFailedError, RunInterruptedError, YadeMissingError
 from yadearch.results.rundir import CASE_FILE, LOG_FILE, is_complete
 
 STAGING_PREFIX = "."  # a run is written to .NAME.partial beside its folder NAME
 STAGING_SUFFIX = ".partial"
 REPLACED_SUFFIX = ".replaced"  # the previous folder NAME, for the moment of the swap
+INTERRUPTED_CODES = (130, -signal.SIGINT, -signal.SIGTERM)  # the child's own exit code, or the signal
 
 
 def check_yade_installed() -> None:
@@ -61,6 +62,10 @@ def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
         where = _keep_failed(staging, out)
         raise RunFailedError(f"run {case.name!r} timed out after {timeout_s:.0f} s "
                              f"(see {where / LOG_FILE})") from None
+    if proc.returncode in INTERRUPTED_CODES:
+        where = _keep_failed(staging, out)
+        raise RunInterruptedError(f"run {case.name!r} was interrupted ({exit_reason(proc.returncode)}); "
+                                  f"run it again to resume (see {where / LOG_FILE})")
     if proc.returncode != 0 or not is_complete(staging):
         lines = [line for line in proc.stderr.splitlines()
                  if line.strip() and not line.startswith(("Using python", "<WARNING>"))]

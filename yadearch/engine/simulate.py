@@ -6,6 +6,8 @@ campaign down). Exit code 0: run folder complete; 1: the run failed (reason in r
 
 from __future__ import annotations
 
+import os
+import signal
 import sys
 import time
 from pathlib import Path
@@ -15,6 +17,9 @@ from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.results.provenance import provenance
 from yadearch.results.rundir import LOG_FILE, write_run
+
+PR_SET_PDEATHSIG = 1  # linux/prctl.h
+INTERRUPTED_EXIT = 130  # the shell's code for a run stopped by a signal, not by a failure
 
 
 def simulate(case: ArchCase, out: Path) -> dict:
@@ -60,11 +65,31 @@ def simulate(case: ArchCase, out: Path) -> dict:
     return summary
 
 
+def die_with_parent() -> None:
+    """Ask Linux to send this process SIGTERM when its parent dies (a killed campaign must not leave
+    its runs going on); elsewhere a no-op."""
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
+    except (OSError, AttributeError):
+        return
+    if os.getppid() == 1:  # the parent died before prctl took effect
+        os.kill(os.getpid(), signal.SIGTERM)
+
+
+def _interrupt(signum: int, frame: object) -> None:
+    raise KeyboardInterrupt(signal.Signals(signum).name)
+
+
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 2:
         print("usage: python -m yadearch.engine.simulate CASE.toml OUT_DIR", file=sys.stderr)
         return 2
+    signal.signal(signal.SIGTERM, _interrupt)
+    die_with_parent()
     try:
         simulate(load_case(argv[0]), Path(argv[1]))
     except YadearchError as exc:
@@ -72,6 +97,11 @@ def main(argv: list[str] | None = None) -> int:
         with (Path(argv[1]) / LOG_FILE).open("a") as f:
             f.write(f"FAILED: {exc}\n")
         return 1
+    except KeyboardInterrupt as exc:
+        print(f"error: interrupted ({exc or 'SIGINT'})", file=sys.stderr)
+        with (Path(argv[1]) / LOG_FILE).open("a") as f:
+            f.write(f"INTERRUPTED: {exc or 'SIGINT'}\n")
+        return INTERRUPTED_EXIT
     return 0
 
 

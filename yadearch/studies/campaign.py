@@ -24,7 +24,7 @@ from yadearch.atomic import write_atomically, write_text_atomically
 from yadearch.case.config import ArchCase, preset
 from yadearch.case.plan import plan_run
 from yadearch.engine.process import check_yade_installed, run_case_process
-from yadearch.errors import CaseError, RunFailedError, YadearchError
+from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, YadearchError
 from yadearch.model.hinges import paper_labels
 from yadearch.results.rundir import SUMMARY_FILE, case_differences, is_complete
 from yadearch.studies.executors import Pool
@@ -111,6 +111,8 @@ def execute(case: ArchCase, folder: Path, timeout_s: float | None) -> dict[str, 
     started = time.time()
     try:
         run_case_process(case, folder, timeout_s=timeout_s, quiet=True)
+    except RunInterruptedError as exc:  # left pending: the next session runs it again
+        return {"status": "interrupted", "reason": str(exc)}
     except RunFailedError as exc:
         record_failure(folder, case.name, str(exc), time.time() - started)
         return {"status": "failed", "reason": str(exc)}
@@ -161,7 +163,7 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
     skipped = sum(1 for s in specs if s.case is not None) - len(todo)
     bar = tqdm(total=len(specs), initial=len(specs) - len(todo), unit="run", disable=not progress,
                desc=out.name, dynamic_ncols=True)
-    counts = {"done": skipped, "failed": len(specs) - len(todo) - skipped}
+    counts = {"done": skipped, "failed": len(specs) - len(todo) - skipped, "interrupted": 0}
     futures: dict[Future, RunSpec] = {}
     started = time.time()
     try:
