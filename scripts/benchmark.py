@@ -33,6 +33,7 @@ TARGET_SWEEP_POINTS = 25
 TARGET_LIMIT_WALL_S = 10.0
 TARGET_OVERHEAD = 1.05
 TARGET_DU_REL = 0.01
+TARGET_STEP_US = 20.0  # a step's aim: the distance to YADE's bare explicit step
 
 
 def timed_run(case, folder: Path) -> dict:
@@ -146,6 +147,59 @@ def scene_rate(steps: int, contact_model: str) -> float:
     return steps / (time.time() - start)
 
 
+def step_breakdown(steps: int) -> dict:
+    """Where a step of the set 2 scene goes (microseconds): the whole step, YADE's bare integrator
+    (ForceResetter + NewtonIntegrator on the same bodies), and the joint engine's parts timed on
+    their own (state reads, joint law, force application); the rest is the Python engine's call and
+    the driver. Runs in a child process: it resets YADE's scene."""
+    import subprocess
+
+    out = subprocess.run([sys.executable, __file__, "--breakdown-child", str(steps)], check=True,
+                         capture_output=True, text=True).stdout
+    result = json.loads(out.strip().splitlines()[-1])
+    parts = ", ".join(f"{k} {v:.1f}" for k, v in result["step_breakdown_us"].items())
+    print(f"a step of the set 2 scene: {result['step_us']:.1f} us ({parts}); whole / bare integrator "
+          f"= {result['integrator_ratio']:.1f}")
+    return result
+
+
+def _breakdown_child(steps: int) -> dict:
+    from yadearch.case.config import preset
+    from yadearch.engine.scene import build_scene
+    from yadearch.engine.yade_env import import_yade
+
+    import_yade()
+    from yade import O
+    from yade.wrapper import ForceResetter, NewtonIntegrator
+
+    scene = build_scene(preset("set2"))
+    contacts = scene.contacts
+    O.run(500, True)  # under gravity, joints in contact
+
+    def per_step_us(action) -> float:
+        start = time.perf_counter()
+        for _ in range(steps):
+            action()
+        return (time.perf_counter() - start) / steps * 1e6
+
+    start = time.perf_counter()
+    O.run(steps, True)
+    step_us = (time.perf_counter() - start) / steps * 1e6
+    rows = contacts.read_states()
+    forces = contacts.forces(rows)
+    reads_us = per_step_us(contacts.read_states)
+    law_us = per_step_us(lambda: contacts.forces(rows))
+    apply_us = per_step_us(lambda: contacts.apply(forces))
+    O.engines = [ForceResetter(), NewtonIntegrator(damping=0.2, gravity=(0.0, -9.81, 0.0))]
+    start = time.perf_counter()
+    O.run(steps, True)
+    bare_us = (time.perf_counter() - start) / steps * 1e6
+    rest = step_us - bare_us - reads_us - law_us - apply_us
+    return {"steps": steps, "step_us": step_us, "integrator_ratio": step_us / bare_us,
+            "step_breakdown_us": {"yade_integrator": bare_us, "state_reads": reads_us, "joint_law": law_us,
+                                  "force_application": apply_us, "python_engine_call_and_driver": rest}}
+
+
 def threads_measurement(steps: int) -> dict:
     """`scene_rate` of each contact model with 1 and with 2 OpenMP threads, each in its own process
     (the thread count is fixed when YADE is imported)."""
@@ -204,11 +258,17 @@ def main() -> int:
                         "(the overhead target; run it on a free core)")
     parser.add_argument("--threads-steps", type=int, default=0,
                         help="also time this many steps of the set 2 scene with 1 and 2 OpenMP threads")
+    parser.add_argument("--breakdown-steps", type=int, default=3000,
+                        help="steps over which a step's time is split into its parts (0: skip)")
+    parser.add_argument("--breakdown-child", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--scene-rate", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--scene-model", default="joint", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.scene_rate:  # the child process of --threads-steps
         print(scene_rate(args.scene_rate, args.scene_model))
+        return 0
+    if args.breakdown_child:  # the child process of the step breakdown
+        print(json.dumps(_breakdown_child(args.breakdown_child)))
         return 0
 
     from yadearch.case.config import preset
@@ -243,6 +303,7 @@ def main() -> int:
     overhead = measured[default_model]["driver_overhead_ratio"] if measured else None
     model_speedup = measured["joint"]["steps_per_s"] / measured["cgal"]["steps_per_s"] if measured else None
     limit = limit_measurement(cases["set2"])
+    breakdown = step_breakdown(args.breakdown_steps) if args.breakdown_steps else None
     sweep_wall = campaign_wall_s(Path(args.sweep)) if args.sweep else None
     sweep = sweep_status(Path(args.sweep)) if args.sweep else None
     report = {
@@ -255,6 +316,12 @@ def main() -> int:
         "threads": threads_measurement(args.threads_steps) if args.threads_steps else None,
         "sweep_wall_s": sweep_wall, "sweep_folder": args.sweep, "sweep": sweep,
         "limit_wall_s": limit["wall_s"], "du_rigid_mm": limit["du_rigid_mm"],
+        "kn100_wall_s": stiff["wall_s"] if stiff is not None else None,
+        "sweep25_wall_s": sweep_wall if sweep is not None and sweep["done"] >= TARGET_SWEEP_POINTS else None,
+        "montecarlo200_wall_s": None,  # no Monte Carlo campaign yet (issue 15)
+        "step_breakdown_us": breakdown["step_breakdown_us"] if breakdown else None,
+        "step_us": breakdown["step_us"] if breakdown else None,
+        "integrator_ratio": breakdown["integrator_ratio"] if breakdown else None,
         "measured": time.strftime("%Y-%m-%dT%H:%M:%S"),
     }
     Path(args.out).parent.mkdir(parents=True, exist_ok=True)
@@ -287,6 +354,10 @@ def main() -> int:
          f"{sweep['run_wall_s'] / 60:.1f} min" if sweep_wall is not None
          else "no sweep folder given (sweep_wall_s null)"),
     ]
+    verdicts.append((f"a step <= {TARGET_STEP_US:g} us", breakdown is not None
+                     and breakdown["step_us"] <= TARGET_STEP_US,
+                     f"{breakdown['step_us']:.0f} us, {breakdown['integrator_ratio']:.0f}x YADE's bare "
+                     "integrator on the same scene" if breakdown else "not measured"))
     for label, ok, detail in verdicts:
         print(f"{'PASS' if ok else 'FAIL'}  {label}: {detail}")
     return 0

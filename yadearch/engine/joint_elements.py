@@ -47,11 +47,8 @@ class JointElementContacts:
         self._masses = np.array([s.mass for s in self._states])
         return [PyRunner(command=f"{callback}.step()", iterPeriod=1, initRun=True)]
 
-    def _evaluate(self) -> JointForces:
-        """The joints for the blocks' current states (7 numbers read a block: x, y, a quaternion
-        pair, vx, vy, wz)."""
-        from yade import O
-
+    def read_states(self) -> np.ndarray:
+        """The blocks' current states (n_blocks, 7): x, y, a quaternion pair, vx, vy, wz."""
         rows = np.empty((len(self._states), 7))
         if self._wz_states:
             rows[self._wz_blocks] = [(p[0], p[1], q[3], q[2], v[0], v[1], w[2]) for p, q, v, w in
@@ -59,22 +56,35 @@ class JointElementContacts:
         if self._xy_states:  # minieigen quaternions index (x, y, z, w)
             rows[self._xy_blocks] = [(p[0], p[1], q[0], q[1], v[0], v[1], w[2]) for p, q, v, w in
                                      ((s.pos, s.ori, s.vel, s.angVel) for s in self._xy_states)]
+        return rows
+
+    def forces(self, rows: np.ndarray) -> JointForces:
+        """The joints for block states `rows` (`read_states`)."""
+        from yade import O
+
         return joint_forces(self.table, self.law, rows[:, 0:2], pair_rotation(rows[:, 2:4], self._pair0),
                             rows[:, 4:6], rows[:, 6], self.shear, O.dt)
 
-    def step(self) -> None:
-        """Evaluate the joints for the current states and add their forces (called every step)."""
+    def apply(self, forces: JointForces) -> None:
+        """Add the joint forces and torques to YADE's force container."""
         from yade import O
 
-        forces = self._evaluate()
-        self.shear = forces.shear_force
-        self.slip += forces.plastic_slip
-        self.last = forces
         add_force, add_torque = O.forces.addF, O.forces.addT
         for body_id, (fx, fy), tz in zip(self.body_ids, forces.block_force.tolist(),
                                          forces.block_torque.tolist()):
             add_force(body_id, (fx, fy, 0.0))  # a tuple converts faster than a built Vector3
             add_torque(body_id, (0.0, 0.0, tz))
+
+    def _evaluate(self) -> JointForces:
+        return self.forces(self.read_states())
+
+    def step(self) -> None:
+        """Evaluate the joints for the current states and add their forces (called every step)."""
+        forces = self._evaluate()
+        self.shear = forces.shear_force
+        self.slip += forces.plastic_slip
+        self.last = forces
+        self.apply(forces)
 
     def joint_contacts(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Contact point (n_joints, 2; NaN if open), normal and shear force (n_joints,) of every joint."""
