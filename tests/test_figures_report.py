@@ -133,7 +133,7 @@ def test_every_figure_is_a_non_empty_pdf_and_png(tmp_path):
     analysis = analyse_run(run)
     written = [figures.plot_collapse(run, analysis, tmp_path / "f" / "collapse"),
                figures.plot_reactions(run, analysis, tmp_path / "f" / "reactions"),
-               figures.plot_hinge_openings(analysis, tmp_path / "f" / "hinges"),
+               figures.plot_hinge_openings(run, analysis, tmp_path / "f" / "hinges"),
                figures.plot_crown_displacement(run, analysis, tmp_path / "f" / "crown")]
     for pdf, png in written:
         assert pdf.read_bytes()[:4] == b"%PDF" and pdf.stat().st_size > 1000

@@ -1,5 +1,6 @@
 """Figures of a run for a paper: the arch at collapse with its hinges, support reactions, hinge
-openings and crown displacement against the support settlement delta.
+openings and crown displacement against the support displacement delta ("settlement" when it moves
+straight down).
 
 One style for all: 8 pt text, sized for a journal column (8.5 cm; `width_cm` for wider), constrained
 layout so no label is clipped, written as vector PDF and 300 dpi PNG. Uses matplotlib's Figure
@@ -35,6 +36,14 @@ LEFT_COLOUR, RIGHT_COLOUR = "#0072B2", "#D55E00"
 PAST_DU_ALPHA = 0.35
 LABEL_ROOM = 0.15  # fraction of the arch's width left free on each side for hinge labels at the supports
 AXIS_MARGINS_CM = (1.3, 1.1)  # room the axis labels and ticks take across and down an equal-aspect plot
+SETTLEMENT_DEG = -90.0  # a support moving straight down settles; any other direction is a displacement
+
+
+def delta_label(case: dict) -> str:
+    """The x-axis label: "settlement" for a support moving straight down, else "displacement"."""
+    direction = case.get("loading", {}).get("settlement_direction_deg", SETTLEMENT_DEG)
+    movement = "settlement" if direction == SETTLEMENT_DEG else f"displacement (at {direction:g}°)"
+    return rf"support {movement} $\delta$ (mm)"
 
 
 def new_figure(height_cm: float, width_cm: float = COLUMN_CM) -> Figure:
@@ -153,12 +162,12 @@ def plot_reactions(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[P
         _mark_du(ax, analysis.du_mm, legend=ax is top)
         ax.set_ylabel(f"{name} reaction (N)")
     top.legend(loc="best")
-    bottom.set_xlabel(r"support settlement $\delta$ (mm)")
+    bottom.set_xlabel(delta_label(run.case))
     return save_figure(fig, stem)
 
 
 @_styled
-def plot_hinge_openings(analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
+def plot_hinge_openings(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
     """Opening and rotation of every hinge against the settlement, its formation marked."""
     delta = analysis.history.delta_mm
     fig = new_figure(height_cm=9.0)
@@ -179,7 +188,7 @@ def plot_hinge_openings(analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
     top.legend(loc="upper left", ncols=1)
     top.set_ylabel("hinge opening (mm)")
     bottom.set_ylabel("hinge rotation (mrad)")
-    bottom.set_xlabel(r"support settlement $\delta$ (mm)")
+    bottom.set_xlabel(delta_label(run.case))
     return save_figure(fig, stem)
 
 
@@ -196,7 +205,7 @@ def plot_crown_displacement(run: RunFolder, analysis: RunAnalysis, stem: Path) -
                    ls="--", label="vertical")
     _mark_du(ax, analysis.du_mm, legend=True)
     ax.legend(loc="lower left")
-    ax.set_xlabel(r"support settlement $\delta$ (mm)")
+    ax.set_xlabel(delta_label(run.case))
     ax.set_ylabel("crown displacement (mm)")
     return save_figure(fig, stem)
 
@@ -206,7 +215,7 @@ def write_figures(run: RunFolder, analysis: RunAnalysis, out: Path) -> dict[str,
     snapshot), reactions, hinges, crown."""
     figures = {
         "reactions": plot_reactions(run, analysis, out / "reactions"),
-        "hinges": plot_hinge_openings(analysis, out / "hinges"),
+        "hinges": plot_hinge_openings(run, analysis, out / "hinges"),
         "crown": plot_crown_displacement(run, analysis, out / "crown"),
     }
     if run.snapshots.get("collapse") or run.snapshots.get("end"):
