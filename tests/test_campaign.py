@@ -214,6 +214,16 @@ def test_kn_figure(tmp_path):
         assert [p.suffix for p in paths] == [".pdf", ".png"] and all(p.stat().st_size > 1000 for p in paths)
 
 
+def test_a_sweep_of_other_parameters_draws_du_against_each(tmp_path):
+    from yadearch.plotting.sweep import parameter_sweep_figure, swept_columns
+
+    table = campaign(tmp_path, FakeRuns(), grid({"kn_N_per_mm3": [0.1, 1.0, 10.0], "damping": [0.1, 0.3]}))
+    assert set(swept_columns(table)) == {"kn_N_per_mm3", "damping"}
+    for column in swept_columns(table):
+        paths = parameter_sweep_figure(table, column, tmp_path / f"du_vs_{column}")
+        assert all(p.stat().st_size > 1000 for p in paths)
+
+
 @pytest.mark.parametrize("args, message", [
     ([], "nothing to sweep"),
     (["--kn", "1,2", "--table", "t.csv"], "either --table"),

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 import click
+import pandas as pd
 
 from yadearch.case import reference
 from yadearch.case.config import ArchCase
@@ -38,7 +39,7 @@ def _base_case(preset_name: str | None, case_file: str | None, settings: tuple[s
               help="campaign folder: one run folder per run, runs.csv, results.csv")
 @pool_options
 @click.option("--figure/--no-figure", default=True, show_default=True,
-              help="draw du and hinges against kn when kn is the only swept parameter")
+              help="draw du against each swept parameter (with the hinges when kn alone is swept)")
 @click.option("--retry-failed/--keep-failed", default=True, show_default=True,
               help="redo runs recorded as failed, or keep them (and their reasons) as they are")
 def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, ...],
@@ -74,18 +75,31 @@ def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, .
     counts = table["status"].value_counts().to_dict()
     click.echo(f"{len(table)} runs: {counts.get('done', 0)} done, {counts.get('failed', 0)} failed, "
                f"{counts.get('pending', 0)} pending -> {folder / RESULTS_FILE}")
-    swept = {short_name(k) for row in rows for k in row if k != "run"}
-    if figure and swept == {short_name(KN_KEY)}:
-        try:
-            from yadearch.plotting.sweep import kn_sweep_figure
-
-            paths = kn_sweep_figure(table, folder / "du_vs_kn", _rigid_limit_mm(base))
-            click.echo(f"figure -> {', '.join(map(str, paths))}")
-        except ValueError as exc:
-            click.echo(f"no figure: {exc}", err=True)
+    if figure:
+        _sweep_figures(table, rows, folder, base)
     if counts.get("failed"):
         raise YadearchError(f"{counts['failed']} of {len(table)} runs failed; reasons in "
                             f"{folder / RESULTS_FILE}")
+
+
+def _sweep_figures(table: pd.DataFrame, rows: list[dict[str, Any]], folder: Path, base: ArchCase) -> None:
+    """du against each swept parameter (the paper's Fig. 8 with hinges when kn alone is swept), or
+    one line saying why there is none."""
+    from yadearch.plotting.sweep import kn_sweep_figure, parameter_sweep_figure, swept_columns
+
+    swept = {short_name(k) for row in rows for k in row if k != "run"}
+    columns = swept_columns(table)
+    try:
+        if swept == {short_name(KN_KEY)}:
+            paths = kn_sweep_figure(table, folder / "du_vs_kn", _rigid_limit_mm(base))
+        elif columns:
+            paths = [p for c in columns for p in parameter_sweep_figure(table, c, folder / f"du_vs_{c}")]
+        else:
+            click.echo("no figure: no numeric parameter takes two values in this campaign", err=True)
+            return
+        click.echo(f"figure -> {', '.join(map(str, paths))}")
+    except ValueError as exc:
+        click.echo(f"no figure: {exc}", err=True)
 
 
 def _rigid_limit_mm(base: ArchCase) -> float | None:

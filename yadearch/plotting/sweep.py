@@ -8,20 +8,23 @@ from __future__ import annotations
 from pathlib import Path
 
 import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import pandas as pd  # noqa: E402
-from matplotlib.ticker import MaxNLocator  # noqa: E402
+import pandas as pd
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from yadearch.atomic import write_atomically
-from yadearch.case import reference  # noqa: E402
+from yadearch.case import reference
 
 COLUMN_WIDTH_IN = 3.5  # one journal column
 HINGE_STYLE = {"hinge_A": ("o", "A (intrados)"), "hinge_B": ("s", "B (extrados)"),
                "hinge_C": ("^", "C (right support)")}
 LEGEND_HEADROOM = 1.45  # hinge panel's y range as a multiple of the last interface
 PAPER_MECHANISM = "E-I-E-E"  # hinges D, A, B, C from left to right (paper: collapse when D opens)
+DECADE = 10.0
+RESULT_COLUMNS = {"du_mm", "collapsed", "hinges", "mechanism", "hinge_A", "hinge_B", "hinge_C", "hinge_D",
+                  "steps", "wall_s", "max_slip_mm", "max_friction_use", "friction_interface", "status",
+                  "reason", "folder", "run"}
 
 
 def kn_sweep_figure(table: pd.DataFrame, stem: Path, du_rigid_mm: float | None = None) -> list[Path]:
@@ -31,11 +34,10 @@ def kn_sweep_figure(table: pd.DataFrame, stem: Path, du_rigid_mm: float | None =
     runs = runs.sort_values("kn_N_per_mm3")
     if runs.empty:
         raise ValueError("no collapsed run to plot")
-    with plt.rc_context({"font.size": 8, "axes.labelsize": 8, "legend.fontsize": 6.5,
+    with matplotlib.rc_context({"font.size": 8, "axes.labelsize": 8, "legend.fontsize": 6.5,
                          "xtick.labelsize": 7, "ytick.labelsize": 7}):
-        fig, (ax_du, ax_h) = plt.subplots(2, 1, figsize=(COLUMN_WIDTH_IN, 4.4), sharex=True,
-                                          gridspec_kw={"height_ratios": [3, 2]},
-                                          constrained_layout=True)
+        fig = Figure(figsize=(COLUMN_WIDTH_IN, 4.4), layout="constrained")
+        ax_du, ax_h = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": [3, 2]})
         _du_panel(ax_du, runs, du_rigid_mm)
         _failed_marks(ax_du, table[table["status"] == "failed"])
         _hinge_panel(ax_h, runs)
@@ -45,11 +47,10 @@ def kn_sweep_figure(table: pd.DataFrame, stem: Path, du_rigid_mm: float | None =
         paths = [stem.with_suffix(".pdf"), stem.with_suffix(".png")]
         for path in paths:
             write_atomically(path, lambda tmp, path=path: fig.savefig(tmp, format=path.suffix[1:], dpi=300))
-        plt.close(fig)
     return paths
 
 
-def _du_panel(ax: plt.Axes, runs: pd.DataFrame, du_rigid_mm: float | None) -> None:
+def _du_panel(ax: Axes, runs: pd.DataFrame, du_rigid_mm: float | None) -> None:
     ax.plot(runs["kn_N_per_mm3"], runs["du_mm"], "o-", color="C0", ms=3.5, lw=1,
             label="yadearch (DEM)")
     other = runs[runs["mechanism"] != PAPER_MECHANISM]
@@ -71,7 +72,7 @@ def _du_panel(ax: plt.Axes, runs: pd.DataFrame, du_rigid_mm: float | None) -> No
     ax.grid(True, which="major", lw=0.3, alpha=0.5)
 
 
-def _failed_marks(ax: plt.Axes, failed: pd.DataFrame) -> None:
+def _failed_marks(ax: Axes, failed: pd.DataFrame) -> None:
     """Runs without a converged du, as crosses on the kn axis (their reasons are in results.csv)."""
     if failed.empty:
         return
@@ -80,7 +81,7 @@ def _failed_marks(ax: plt.Axes, failed: pd.DataFrame) -> None:
     ax.legend(loc="lower right", frameon=False)
 
 
-def _hinge_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
+def _hinge_panel(ax: Axes, runs: pd.DataFrame) -> None:
     """Hinge interfaces against kn; the paper's ranges as bars half an interface beyond each end,
     so that a single interface still shows."""
     for column, (marker, label) in HINGE_STYLE.items():
@@ -100,3 +101,41 @@ def _hinge_panel(ax: plt.Axes, runs: pd.DataFrame) -> None:
     ax.set_ylim(0, LEGEND_HEADROOM * last_interface)  # room above the right-support hinge for the legend
     ax.legend(loc="upper center", frameon=False, ncol=2)
     ax.grid(True, which="major", lw=0.3, alpha=0.5)
+
+
+def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path) -> list[Path]:
+    """du against one swept `column` (results.csv's name for it), one line per combination of the
+    other swept columns; log scale when the values span more than a decade. Writes STEM.pdf/.png."""
+    runs = table[(table["status"] == "done") & (table["collapsed"] == True)]  # noqa: E712
+    if runs.empty:
+        raise ValueError("no collapsed run to plot")
+    others = [c for c in swept_columns(table) if c != column]
+    with matplotlib.rc_context({"font.size": 8, "axes.labelsize": 8, "legend.fontsize": 6.5,
+                         "xtick.labelsize": 7, "ytick.labelsize": 7}):
+        fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
+        ax = fig.subplots()
+        groups = runs.groupby(others) if others else [((), runs)]
+        for key, group in groups:
+            group = group.sort_values(column)
+            label = ", ".join(f"{c} = {v:g}" if isinstance(v, float) else f"{c} = {v}"
+                              for c, v in zip(others, key if isinstance(key, tuple) else (key,)))
+            ax.plot(group[column], group["du_mm"], "o-", ms=3.5, lw=1, label=label or None)
+        values = runs[column].astype(float)
+        if (values > 0).all() and values.max() > DECADE * values.min():
+            ax.set_xscale("log")
+        ax.set_xlabel(column)
+        ax.set_ylabel(r"collapse displacement $d_u$ (mm)")
+        if others:
+            ax.legend(frameon=False)
+        ax.grid(True, lw=0.3, alpha=0.5)
+        stem.parent.mkdir(parents=True, exist_ok=True)
+        paths = [stem.with_suffix(".pdf"), stem.with_suffix(".png")]
+        for path in paths:
+            write_atomically(path, lambda tmp, path=path: fig.savefig(tmp, format=path.suffix[1:], dpi=300))
+    return paths
+
+
+def swept_columns(table: pd.DataFrame) -> list[str]:
+    """The parameter columns of a results table that take more than one numeric value."""
+    return [c for c in table.columns if c not in RESULT_COLUMNS
+            and pd.api.types.is_numeric_dtype(table[c]) and table[c].nunique(dropna=True) > 1]
