@@ -114,7 +114,7 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path) -> list
                          "xtick.labelsize": 7, "ytick.labelsize": 7}):
         fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
         ax = fig.subplots()
-        groups = runs.groupby(others) if others else [((), runs)]
+        groups = runs.groupby(others if len(others) > 1 else others[0]) if others else [((), runs)]
         for key, group in groups:
             group = group.sort_values(column)
             label = ", ".join(f"{c} = {v:g}" if isinstance(v, float) else f"{c} = {v}"
