@@ -12,7 +12,7 @@ _UMASK = os.umask(0o022)
 os.umask(_UMASK)  # read the process umask (set and restored at import)
 
 
-def write_atomically(path: Path, write: Callable[[Path], None]) -> Path:
+def write_atomically(path: Path, write: Callable[[Path], object]) -> Path:
     """Write `path` by `write(temporary)` to a temporary file in the same folder, then rename it over
     `path`."""
     path = Path(path)

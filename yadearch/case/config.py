@@ -9,6 +9,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import tomllib
+from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Any
@@ -122,7 +123,7 @@ def _check_value(qualified: str, f: dataclasses.Field, value: Any) -> None:
         raise CaseError(f"{name} must be {_range_text(meta)}, got {value!r}")
 
 
-def _range_text(meta: dict[str, Any]) -> str:
+def _range_text(meta: Mapping[str, Any]) -> str:
     low, high = meta.get("low"), meta.get("high")
     if high is None:
         return f"{'>' if meta['low_open'] else '>='} {low:g}"

@@ -8,6 +8,8 @@ Interfaces are numbered 1..56 from the left support; hinge lists hold every inte
 
 from __future__ import annotations
 
+from typing import Any
+
 PAPER = "Effect of geometrical imperfections on the response of dry-joint masonry arches to support settlements"
 
 GEOMETRY = {"n_voussoirs": 55, "embrace_deg": 125.0, "internal_radius_mm": 300.0,
@@ -16,7 +18,7 @@ MATERIAL = {"density_g_per_cm3": 1.64, "friction_deg": 41.2, "young_MPa": 941.0,
 KS_OVER_KN = 0.5
 KN_SENSITIVITY_RANGE_N_PER_MM3 = (0.1, 100.0)  # paper Fig. 8
 
-SETS = {
+SETS: dict[str, dict[str, Any]] = {
     "set1": {
         "description": "1st set: manually milled moulds, more imperfections",
         "kn_N_per_mm3": 0.25,

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -26,8 +27,8 @@ class SupportDriver:
         self._target = 0.0
         self.current_speed = 0.0
         self.origin = (0.0, 0.0)
-        self._state = None
-        self._engine = None
+        self._state: Any = None  # YADE's State of the driven support, once bound
+        self._engine: Any = None  # the driver's PyRunner, once bound
 
     def set_speed(self, speed: float) -> None:
         """The cruise speed of the next moves (m/s)."""

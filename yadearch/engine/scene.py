@@ -7,6 +7,7 @@ Only this module, the contact models (`joint_elements`, `cgal_contacts`, `shear`
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, Protocol
 
@@ -28,7 +29,7 @@ from yadearch.model.joints import z_rotation
 _NEGLIGIBLE_POISSON = 1e-12
 # Name under which the scene's Python callbacks are reachable from PyRunner commands.
 CALLBACK_NAME = "_yadearch_scene"
-CONTACT_MODELS = {"joint": JointElementContacts, "cgal": CgalContacts}
+CONTACT_MODELS: dict[str, Callable[..., ContactModel]] = {"joint": JointElementContacts, "cgal": CgalContacts}
 
 
 class ContactModel(Protocol):

@@ -13,6 +13,7 @@ from __future__ import annotations
 import atexit
 import threading
 import time
+from typing import Any
 
 import __main__
 from yadearch.errors import RunFailedError
@@ -33,7 +34,7 @@ class SteppingGate:
         self._parked = threading.Event()
         self._resume = threading.Event()
         self._closing = False
-        self._engine = None
+        self._engine: Any = None  # the gate's PyRunner, once installed
 
     def install(self) -> None:
         """Put the gate engine first in `O.engines` (before the forces are reset: a parked scene is

@@ -1,6 +1,11 @@
 """Conversion from the paper's units (mm, N/mm^3, g/cm^3, MPa, deg) to SI, in one place."""
 
 import math
+from typing import TypeVar
+
+import numpy as np
+
+Length = TypeVar("Length", float, np.ndarray)  # a number or an array of them, in and out
 
 MM = 1e-3  # m per mm
 N_PER_MM3 = 1e9  # (N/m^3) per (N/mm^3)
@@ -8,12 +13,12 @@ G_PER_CM3 = 1e3  # (kg/m^3) per (g/cm^3)
 MPA = 1e6  # Pa per MPa
 
 
-def mm(value_mm: float) -> float:
+def mm(value_mm: Length) -> Length:
     """Millimetres to metres."""
     return value_mm * MM
 
 
-def to_mm(value_m: float) -> float:
+def to_mm(value_m: Length) -> Length:
     """Metres to millimetres."""
     return value_m / MM
 

@@ -5,6 +5,7 @@ Drawn from a campaign's results table, with the paper's two calibrated points fo
 
 from __future__ import annotations
 
+from functools import partial
 from pathlib import Path
 
 import matplotlib
@@ -46,7 +47,7 @@ def kn_sweep_figure(table: pd.DataFrame, stem: Path, du_rigid_mm: float | None =
         stem.parent.mkdir(parents=True, exist_ok=True)
         paths = [stem.with_suffix(".pdf"), stem.with_suffix(".png")]
         for path in paths:
-            write_atomically(path, lambda tmp, path=path: fig.savefig(tmp, format=path.suffix[1:], dpi=300))
+            write_atomically(path, partial(fig.savefig, format=path.suffix[1:], dpi=300))
     return paths
 
 
@@ -131,7 +132,7 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path) -> list
         stem.parent.mkdir(parents=True, exist_ok=True)
         paths = [stem.with_suffix(".pdf"), stem.with_suffix(".png")]
         for path in paths:
-            write_atomically(path, lambda tmp, path=path: fig.savefig(tmp, format=path.suffix[1:], dpi=300))
+            write_atomically(path, partial(fig.savefig, format=path.suffix[1:], dpi=300))
     return paths
 
 

@@ -8,6 +8,7 @@ analysis adds how the hinges formed. Runs are matched to the paper's sets by nam
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -220,7 +221,7 @@ def _folder_name(summary: dict[str, Any], path: Path, taken: set[str]) -> str:
     return name
 
 
-def write_report(run_paths: list[str | Path], out: str | Path) -> Path:
+def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
     """Analyse every run, write its figures and hinge table under `out`, and `out`/report.md."""
     out = Path(out)
     runs = [load_run(p) for p in run_paths]  # every path checked before anything is written

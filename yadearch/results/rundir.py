@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -43,8 +44,7 @@ def write_run(out: Path, case_toml: str, series: list[dict], joints: list[dict],
     out.mkdir(parents=True, exist_ok=True)
     write_text_atomically(out / CASE_FILE, case_toml)
     for name, rows in ((SERIES_FILE, series), (JOINTS_FILE, joints)):
-        write_atomically(out / name, lambda tmp, rows=rows: pd.DataFrame(rows).to_csv(
-            tmp, index=False, float_format="%.8g"))
+        write_atomically(out / name, partial(pd.DataFrame(rows).to_csv, index=False, float_format="%.8g"))
     write_text_atomically(out / SNAPSHOTS_FILE, json.dumps(snapshots, indent=1, default=_json_default))
     marked = {**summary, "schema_version": SCHEMA_VERSION, "complete": True}
     write_text_atomically(out / SUMMARY_FILE, json.dumps(marked, indent=2, default=_json_default) + "\n")

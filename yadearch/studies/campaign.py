@@ -48,6 +48,13 @@ class RunSpec:
     case: ArchCase | None
     error: str | None = None
 
+    @property
+    def ready(self) -> ArchCase:
+        """The case of a valid run (an invalid one is recorded as failed and never runs)."""
+        if self.case is None:
+            raise YadearchError(f"run {self.name} has no valid case: {self.error}")
+        return self.case
+
 
 def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]:
     """The runs of a campaign. An invalid parameter value makes that run fail (not the campaign);
@@ -84,7 +91,7 @@ def confined_folder_name(name: str) -> str:
 def _check_same_case(spec: RunSpec) -> None:
     """Refuse to resume over a finished run folder that ran another case (`rundir.case_differences`:
     a parameter the run predates counts as the value that keeps its old behaviour)."""
-    differences = case_differences(spec.folder, spec.case)
+    differences = case_differences(spec.folder, spec.ready)
     if differences:
         raise YadearchError(f"run folder {spec.folder} holds a different case ({differences[0]}); "
                             "use another --out")
@@ -152,7 +159,7 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
             and (retry_failed or not (s.folder / FAILED_FILE).is_file())]
     # Longest first: the last runs to start are short, so no core idles while one long run ends
     # the campaign (the 13-point kn sweep's stiffest points take 10-40x its softest).
-    todo.sort(key=lambda spec: expected_cost(spec.case), reverse=True)
+    todo.sort(key=lambda spec: expected_cost(spec.ready), reverse=True)
     for spec in specs:
         if spec.case is None:
             record_failure(spec.folder, spec.name, spec.error or "", 0.0)
@@ -167,7 +174,7 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
     futures: dict[Future, RunSpec] = {}
     started = time.time()
     try:
-        futures = {pool.executor.submit(task, s.case, s.folder, timeout_s): s for s in todo}
+        futures = {pool.executor.submit(task, s.ready, s.folder, timeout_s): s for s in todo}
         pending = set(futures)
         bar.set_postfix(counts, running=min(pool.slots, len(pending)))
         while pending:
