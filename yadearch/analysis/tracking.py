@@ -50,7 +50,15 @@ class HingeTrack:
 
     @property
     def final(self) -> Hinge:
-        return self.per_record[-1]
+        return self.hinge_at(-1)
+
+    def hinge_at(self, record: int) -> Hinge:
+        """The hinge detected at `record`: always one at the last record and from `formed_record` on
+        (the hinge is open there); an error where the hinge is absent."""
+        hinge = self.per_record[record]
+        if hinge is None:
+            raise ValueError(f"the {self.side} hinge tracked here is not detected at record {record}")
+        return hinge
 
     @property
     def interface(self) -> int:
@@ -88,8 +96,9 @@ def _follow_back(finals: list[Hinge], detected: list[list[Hinge]], max_jump: int
                 owned[min(near)[1]].append(hinge)
         for t, candidates in enumerate(owned):
             if candidates:
-                tracks[t][r] = max(candidates, key=lambda h: abs(h.rotation))
-                positions[t] = tracks[t][r].interface
+                strongest = max(candidates, key=lambda h: abs(h.rotation))
+                tracks[t][r] = strongest
+                positions[t] = strongest.interface
     return tracks
 
 
@@ -124,12 +133,13 @@ def track_hinges(history: JointHistory, rotation_threshold_mrad: float = ROTATIO
     does; returned in order of formation."""
     detected = hinges_per_record(history, rotation_threshold_mrad * 1e-3)
     tracks = []
-    for per_record in _follow_back(detected[-1], detected, max_jump):
+    finals = detected[-1]  # each track ends on its final hinge
+    for final, per_record in zip(finals, _follow_back(finals, detected, max_jump), strict=True):
         opening = np.array([np.nan if h is None else history.hinge_opening_mm(r, h.interfaces, h.side)
                             for r, h in enumerate(per_record)])
         present = np.nan_to_num(opening) >= opening_threshold_mm
         formed = _formed_record(present)
-        tracks.append(HingeTrack(per_record[-1].side, per_record, opening, formed,
+        tracks.append(HingeTrack(final.side, per_record, opening, formed,
                                  migrations=_migrations(per_record, history.delta_mm, formed)))
     tracks.sort(key=lambda t: (t.formed_record, t.interface))
     labels = paper_labels([(t.interface, t.side, t.final.rotation) for t in tracks], history.n_interfaces)
@@ -154,8 +164,8 @@ def hinge_table(history: JointHistory, tracks: list[HingeTrack],
                 rotation_threshold_mrad: float = ROTATION_THRESHOLD_MRAD) -> pd.DataFrame:
     """Every hinge at every record: delta, interface (peak), spread, side, rotation, opening and the
     label of the final hinge it belongs to (empty for hinges that do not last to collapse)."""
-    labels = {(r, t.per_record[r].interface): t.label
-              for t in tracks for r in range(history.n_records) if t.per_record[r] is not None}
+    labels = {(r, seen.interface): t.label
+              for t in tracks for r in range(history.n_records) if (seen := t.per_record[r]) is not None}
     rows = []
     for r, hinges in enumerate(hinges_per_record(history, rotation_threshold_mrad * 1e-3)):
         for h in hinges:

@@ -45,11 +45,12 @@ def hinges_at(rotation: np.ndarray, threshold: float) -> list[Hinge]:
     hinges: list[Hinge] = []
     k = 0
     while k < len(sides):
-        if sides[k] is None:
+        side = sides[k]
+        if side is None:
             k += 1
             continue
         end = k
-        while end + 1 < len(sides) and sides[end + 1] == sides[k]:
+        while end + 1 < len(sides) and sides[end + 1] == side:
             end += 1
         peak = max(range(k, end + 1), key=lambda m: abs(rotation[m]))
         first, last = peak, peak
@@ -57,7 +58,7 @@ def hinges_at(rotation: np.ndarray, threshold: float) -> list[Hinge]:
             first -= 1
         while last < end and abs(rotation[last + 1]) >= SPREAD_FRACTION * abs(rotation[peak]):
             last += 1
-        hinges.append(Hinge(tuple(range(first + 1, last + 2)), peak + 1, sides[k], float(rotation[peak])))
+        hinges.append(Hinge(tuple(range(first + 1, last + 2)), peak + 1, side, float(rotation[peak])))
         k = end + 1
     return hinges
 

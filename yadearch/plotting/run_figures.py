@@ -20,6 +20,7 @@ from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
 from yadearch.analysis.history import EQUILIBRIUM_STAGE
 from yadearch.atomic import write_atomically
+from yadearch.errors import RunFolderError
 from yadearch.results.rundir import RunFolder
 
 CM = 1 / 2.54  # inches
@@ -109,6 +110,8 @@ def plot_collapse(run: RunFolder, analysis: RunAnalysis, stem: Path, width_cm: f
     (label, pivot side); the counterpart of the paper's Fig. 9."""
     geometry = case_geometry(run.case)
     state = run.snapshots.get(snapshot) or run.snapshots.get("end")
+    if state is None:
+        raise RunFolderError(f"{run.path} has no {snapshot!r} or 'end' snapshot to draw")
     outlines = snapshot_outlines(geometry, state)
     all_xy = np.vstack([b[: len(b) // 2, :2] for b in geometry.blocks] + outlines) * 1e3
     span = np.ptp(all_xy[:, 0])

@@ -93,6 +93,8 @@ def match_hinges(summary_hinges: list[dict], paper_rows: list[tuple[str, list[in
 
 def table_one(reported: ReportedRun) -> list[str]:
     """The paper's Table 1 for this run's set: experimental, numerical, this run and differences."""
+    if reported.reference_name is None:
+        raise ValueError(f"{reported.run.path} matches none of the paper's sets: it has no Table 1")
     ref = reference.SETS[reported.reference_name]
     summary = reported.run.summary
     order = {t.interface: t.order for t in reported.analysis.tracks}
@@ -139,7 +141,7 @@ def formation_table(analysis: RunAnalysis) -> list[str]:
         moves = "; ".join(f"{m.from_interface} → {m.to_interface} at {m.delta_mm:.2f} mm" for m in t.migrations)
         lines.append(f"| #{t.order} | {t.label or '—'} | {t.interface} | "
                      f"{format_interfaces(t.final.interfaces)} | {t.side} | "
-                     f"{deltas[t.formed_record]:.2f} | {t.per_record[t.formed_record].interface} | "
+                     f"{deltas[t.formed_record]:.2f} | {t.hinge_at(t.formed_record).interface} | "
                      f"{t.opening_mm[-1]:.3f} | {abs(t.final.rotation) * 1e3:.1f} | {moves or '—'} |")
     return lines
 

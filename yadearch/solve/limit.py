@@ -19,6 +19,7 @@ last support displacement with an admissible equilibrium. Without the snaps the 
 from __future__ import annotations
 
 import time
+from typing import TypeGuard
 
 import numpy as np
 
@@ -97,7 +98,7 @@ class _March:
                 offset = _bisect(lambda h: self.moved(state, mechanism, h) is not None, offset,
                                  offset / 2**CLOSURE_BISECTIONS)
                 trial, capped = self.moved(state, mechanism, offset), True
-            if self.admissible(trial):
+            if trial is not None and self.admissible(trial):
                 state = trial
                 if capped:  # a corner has closed (or the linkage straightened): solve the mechanism again
                     new = self.switch(state, mechanism, 0.0)
@@ -109,6 +110,9 @@ class _March:
             offset = _bisect(lambda h: self.admissible(self.moved(state, mechanism, h)), offset,
                              self.tolerance)
             last = self.moved(state, mechanism, offset) if offset > 0 else state
+            if last is None:  # the bisection accepted `offset`, so the linkage reaches it
+                raise RuntimeError(f"at {units.to_mm(state.delta + offset):.3f} mm the last admissible "
+                                   "placement found by bisection can no longer be reached")
             past = self.moved(state, mechanism, offset + self.tolerance)
             read_at = self.moved(last, mechanism, units.mm(COLLAPSE_PROBE_MM)) or past
             chain = self.kinematics(read_at, support_speed=0.0) if read_at is not None else None
@@ -120,7 +124,7 @@ class _March:
             state, mechanism = snapped, self.switch(snapped, mechanism, jump)
         return state, None, mechanism, None
 
-    def snap(self, start: Placement, chain: Mechanism,
+    def snap(self, start: Placement, chain: Mechanism | None,
              pivots: tuple[Pivot, ...]) -> tuple[Placement | None, float, Mechanism | None]:
         """Follow hinge-migrating chains at a fixed support from `start` until the turned-back hinge
         closes and equilibrium exists again: that placement, the largest block movement (mm) and the
@@ -141,7 +145,7 @@ class _March:
             if angle >= SNAP_MAX_RAD:
                 return None, 0.0, chain
             angle = _bisect(lambda a: turned(a) is not None, angle, angle / 2**CLOSURE_BISECTIONS)
-            path = [turned(a) for a in np.linspace(0.0, angle, SNAP_SAMPLES)]
+            path = _reached([turned(a) for a in np.linspace(0.0, angle, SNAP_SAMPLES)], start)
             height = [float(self.arch.weight @ p.centroids(self.arch)[:, 1]) for p in path]
             if np.any(np.diff(height) > 0):
                 raise LimitError(f"at {units.to_mm(start.delta):.3f} mm the arch comes to rest on four "
@@ -178,7 +182,7 @@ class _March:
         return new
 
 
-def _migrates(chain: Mechanism | None, pivots: tuple[Pivot, ...]) -> bool:
+def _migrates(chain: Mechanism | None, pivots: tuple[Pivot, ...]) -> TypeGuard[Mechanism]:
     """Whether a fixed-support `chain` moves a hinge of `pivots` to the next interface: one new
     hinge, beside the one hinge it turns back (to close). Any other lowering chain is a collapse."""
     if chain is None or chain.power >= 0 or len(chain.pivots) != 4 or len(chain.closing) != 1:
@@ -186,6 +190,15 @@ def _migrates(chain: Mechanism | None, pivots: tuple[Pivot, ...]) -> bool:
     new = [p for p in chain.pivots if p not in pivots]
     back = chain.closing[0]
     return len(new) == 1 and back in {p.joint for p in pivots} and abs(new[0].joint - back) == 1
+
+
+def _reached(path: list[Placement | None], start: Placement) -> list[Placement]:
+    """The placements along a snap, each of which must be reachable: the search only checked its end."""
+    reached = [p for p in path if p is not None]
+    if len(reached) != len(path):
+        raise LimitError(f"at {units.to_mm(start.delta):.3f} mm the snapping chain cannot pass some of its "
+                         "intermediate positions, which this analysis does not follow")
+    return reached
 
 
 def _bisect(ok, high: float, width: float) -> float:
@@ -209,7 +222,8 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
     march = _March(arch, units.mm(step_mm), units.mm(tolerance_mm))
     limit = units.mm(max_settlement_mm or case.loading.max_settlement_mm)
     last, read_at, mechanism, chain = march.run(limit)
-    mode, hinges, new = "none", tuple(p.label for p in mechanism.pivots), ()
+    mode, hinges = "none", tuple(p.label for p in mechanism.pivots)
+    new: tuple[str, ...] = ()
     if read_at is not None:
         if chain is not None and chain.power < 0 and len(chain.pivots) > 3:
             mode, hinges = "hinging", tuple(p.label for p in chain.pivots)

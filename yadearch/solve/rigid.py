@@ -162,7 +162,7 @@ def close_linkage(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
     old = [_pivot_point(arch, placement, p) for p in (p1, p2, p3)]
     move = (delta - placement.delta) * arch.direction
     new = [old[0], None, old[2] + move]
-    new[1] = _middle_joint(*old, new[0], new[2])
+    new[1] = _middle_joint(old[0], old[1], old[2], new[0], new[2])
     if new[1] is None:
         return None
     rot, shift = placement.rot.copy(), placement.shift.copy()
@@ -181,7 +181,7 @@ def turn_four_bar(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
     q = sorted(pivots)
     old = [_pivot_point(arch, placement, p) for p in q]
     new = [old[0], old[0] + rotate(old[1] - old[0], angle), None, old[3]]
-    new[2] = _middle_joint(*old[1:], new[1], new[3])
+    new[2] = _middle_joint(old[1], old[2], old[3], new[1], new[3])
     if new[2] is None:
         return None
     rot, shift = placement.rot.copy(), placement.shift.copy()
@@ -204,7 +204,7 @@ def _middle_joint(first: np.ndarray, middle: np.ndarray, last: np.ndarray, new_f
     if not abs(bar1 - bar2) < span < bar1 + bar2:
         return None
     along = (bar1**2 - bar2**2 + span**2) / (2.0 * span)
-    height = np.sqrt(max(bar1**2 - along**2, 0.0))
+    height = np.sqrt(max(float(bar1**2 - along**2), 0.0))
     unit = chord / span
     branch = np.sign(cross(last - first, middle - first))
     return new_first + along * unit + branch * height * np.array([-unit[1], unit[0]])
