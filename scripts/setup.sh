@@ -26,8 +26,8 @@ if [ ! -x .venv/bin/python ]; then
     /usr/bin/python3 -m venv --system-site-packages .venv
 fi
 .venv/bin/python -m pip install -q --no-build-isolation --no-deps -e .
-# ruff (the linter the tests run; a standalone binary wheel, no Python dependencies) is optional
-.venv/bin/python -m pip install -q ruff 2>/dev/null || echo "setup: ruff unavailable, the lint test will be skipped"
+# ruff and mypy (the linter and type checker the tests run) are optional: without them those tests skip
+.venv/bin/python -m pip install -q ruff mypy 2>/dev/null || echo "setup: ruff or mypy unavailable, their tests will be skipped"
 .venv/bin/python - <<'PY'
 import numpy, pandas, matplotlib, click, tomli_w, dask, distributed, numba  # noqa: F401  the whole stack imports
 from yadearch.yade_env import import_yade

@@ -1,4 +1,5 @@
-"""The code stays lint-clean (ruff, configured in pyproject.toml); skipped where ruff is not installed."""
+"""The code stays lint-clean and type-clean (ruff and mypy, configured in pyproject.toml); each check
+is skipped where its tool is not installed."""
 
 from __future__ import annotations
 
@@ -21,4 +22,14 @@ def _ruff() -> str | None:
 def test_ruff_finds_nothing():
     result = subprocess.run([_ruff(), "check", "yadearch", "tests", "scripts"], cwd=ROOT,
                             capture_output=True, text=True)
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def _mypy_available() -> bool:
+    return subprocess.run([sys.executable, "-m", "mypy", "--version"], capture_output=True).returncode == 0
+
+
+@pytest.mark.skipif(not _mypy_available(), reason="mypy is not installed (scripts/setup.sh installs it)")
+def test_mypy_finds_nothing():
+    result = subprocess.run([sys.executable, "-m", "mypy", "yadearch"], cwd=ROOT, capture_output=True, text=True)
     assert result.returncode == 0, result.stdout + result.stderr
