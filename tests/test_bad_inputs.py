@@ -124,3 +124,9 @@ def test_any_toml_text_is_a_case_or_one_clean_error(text):
         plan_run(case_from_dict(data))
     except YadearchError as exc:
         assert "\n" not in str(exc)
+
+
+@pytest.mark.parametrize("kn", [0.1, 1.0, 5.2, 100.0, 1000.0])
+def test_the_whole_studied_kn_range_fits_the_default_step_budget(kn):
+    plan = plan_run(case_from_dict({}).replace(kn_N_per_mm3=kn))
+    assert plan.worst_case_steps < case_from_dict({}).numerics.max_steps

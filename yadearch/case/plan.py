@@ -59,7 +59,9 @@ def _loading_worst_case_s(case: ArchCase) -> float:
     """Simulated time of the loading if every increment ran its full move and its longest hold."""
     num = case.numerics
     largest = max(num.max_increment_mm, num.first_increment_mm)
-    increments = (math.ceil(case.loading.max_settlement_mm / num.first_increment_mm)
+    growing = math.ceil(math.log(largest / num.first_increment_mm) / math.log(num.increment_growth)) \
+        if num.increment_growth > 1.0 else math.ceil(case.loading.max_settlement_mm / num.first_increment_mm)
+    increments = (growing + math.ceil(case.loading.max_settlement_mm / largest)
                   + math.ceil(math.log2(largest / num.du_tolerance_mm)) + BISECTIONS_MARGIN)
     return increments * (_move_s(largest, case.settlement_speed_mm_per_s,
                                  num.support_acceleration_mm_per_s2) + num.hold_max_s)
