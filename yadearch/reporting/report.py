@@ -125,7 +125,7 @@ def table_one(reported: ReportedRun) -> list[str]:
                      f"({(du - exp_du) / exp_du:+.1%}) | {du - num_du:+.2f} ({(du - num_du) / num_du:+.1%}) |")
     lines += ["", "Hinges are interfaces numbered 1..n+1 from the left support, I/E the pivot side; the "
               "paper's A, B, C are paired with the run's hinge of the same side nearest to them, and "
-              ""#k" says it was the k-th hinge to form. Differences are in interfaces "
+              "#k says it was the k-th hinge to form. Differences are in interfaces "
               "(0 = inside the paper's range). ¹ D is named in the paper's text, not in its Table 1."]
     return lines
 
