@@ -30,7 +30,7 @@ fi
 .venv/bin/python -m pip install -q ruff mypy 2>/dev/null || echo "setup: ruff or mypy unavailable, their tests will be skipped"
 .venv/bin/python - <<'PY'
 import numpy, pandas, matplotlib, click, tomli_w, dask, distributed, numba  # noqa: F401  the whole stack imports
-from yadearch.yade_env import import_yade
+from yadearch.engine.yade_env import import_yade
 import_yade()
 import yade.config
 print(f"setup: ok (numpy {numpy.__version__}, YADE {yade.config.version})")
