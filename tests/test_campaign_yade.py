@@ -110,7 +110,7 @@ def test_short_real_calibration(local_sweep, tmp_path):
 
 def test_yade_reads_the_batch_table(tmp_path):
     """yade's own TableParamReader parses scripts/yade_batch_table.txt; every line maps to a run."""
-    code = ("import json, sys; from yadearch.yade_env import import_yade; import_yade(); "
+    code = ("import json, sys; from yadearch.engine.yade_env import import_yade; import_yade(); "
             "from yade.utils import TableParamReader; "
             "print(json.dumps(TableParamReader(sys.argv[1]).paramDict()))")
     done = subprocess.run([sys.executable, "-c", code, str(REPO / "scripts" / "yade_batch_table.txt")],

@@ -137,7 +137,7 @@ class NumericsConfig:
     hinge_rotation_mrad: float = field(default=2.0, metadata=_num(0, 100, low_open=True,
                                        doc="relative joint rotation that counts as a hinge (mrad)"))
     series_every_steps: int = field(default=200, metadata=_num(1, 1e9, doc="steps between time-series rows"))
-    progress_every_s: float = field(default=10.0, metadata=_num(0, 1e6, low_open=True,
+    progress_every_s: float = field(default=10.0, metadata=_num(0, 1e12, low_open=True,
                                     doc="wall seconds between progress lines"))
     max_steps: int = field(default=100_000_000, metadata={**_num(
         1, 1e12, doc="step budget of a run: a case whose estimated worst case exceeds it is refused "
