@@ -83,6 +83,12 @@ def loading_path(series: pd.DataFrame) -> pd.DataFrame:
     return pd.concat([selfweight, equilibria]).sort_values("delta_mm", kind="stable")
 
 
+def _against_delta(run: RunFolder, height_cm: float) -> tuple[pd.DataFrame, np.ndarray, Figure]:
+    """The loading path's rows, their support displacements (mm) and a new figure to draw them on."""
+    path = loading_path(run.series)
+    return path, path["delta_mm"].to_numpy(), new_figure(height_cm=height_cm)
+
+
 def _mark_du(ax, du_mm: float | None, legend: bool = False) -> None:
     """A dotted vertical line at du, named in the legend of the axes that has one."""
     if du_mm is not None:
@@ -154,9 +160,7 @@ def plot_collapse(run: RunFolder, analysis: RunAnalysis, stem: Path, width_cm: f
 @_styled
 def plot_reactions(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
     """Vertical and horizontal forces of both supports on the arch against the settlement."""
-    path = loading_path(run.series)
-    delta = path["delta_mm"].to_numpy()
-    fig = new_figure(height_cm=9.0)
+    path, delta, fig = _against_delta(run, height_cm=9.0)
     top, bottom = fig.subplots(2, 1, sharex=True)
     for ax, component, name in ((top, "Ry", "vertical"), (bottom, "Rx", "horizontal")):
         for support, colour, ls in (("left", LEFT_COLOUR, "-"), ("right", RIGHT_COLOUR, "--")):
@@ -198,9 +202,7 @@ def plot_hinge_openings(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tu
 @_styled
 def plot_crown_displacement(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
     """Horizontal and vertical displacement of the crown voussoir against the settlement."""
-    path = loading_path(run.series)
-    delta = path["delta_mm"].to_numpy()
-    fig = new_figure(height_cm=5.5)
+    path, delta, fig = _against_delta(run, height_cm=5.5)
     ax = fig.add_subplot()
     _plot_until_du(ax, delta, path["crown_dx_mm"].to_numpy(), analysis.du_mm, color=LEFT_COLOUR,
                    label="horizontal")
