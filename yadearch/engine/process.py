@@ -11,12 +11,11 @@ from pathlib import Path
 
 from yadearch.case.config import ArchCase
 from yadearch.case.plan import plan_run
+from yadearch.engine.simulate import STAGING_PREFIX, STAGING_SUFFIX  # a run is written to .NAME.partial
 from yadearch.engine.yade_env import YADE_PY_DIRS
 from yadearch.errors import RunFailedError, RunInterruptedError, YadeMissingError
 from yadearch.results.rundir import CASE_FILE, LOG_FILE, is_complete
 
-STAGING_PREFIX = "."  # a run is written to .NAME.partial beside its folder NAME
-STAGING_SUFFIX = ".partial"
 REPLACED_SUFFIX = ".replaced"  # the previous folder NAME, for the moment of the swap
 INTERRUPTED_CODES = (130, -signal.SIGINT, -signal.SIGTERM)  # the child's own exit code, or the signal
 
