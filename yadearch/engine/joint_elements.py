@@ -33,7 +33,6 @@ class JointElementContacts:
         from yade.wrapper import PyRunner
 
         self.table = joint_table(self.geometry, pos0)
-        self.ori0 = ori0
         states = [O.bodies[i].state for i in self.body_ids]
         # a block turning about z keeps the norms of its quaternion's (w, z) and (x, y) pairs: its
         # angle follows from the larger pair alone, two numbers read instead of four

@@ -11,10 +11,9 @@ from pathlib import Path
 
 from yadearch.case.config import ArchCase
 from yadearch.case.plan import plan_run
-from yadearch.engine.simulate import STAGING_PREFIX, STAGING_SUFFIX  # a run is written to .NAME.partial
 from yadearch.engine.yade_env import YADE_PY_DIRS
 from yadearch.errors import RunFailedError, RunInterruptedError, YadeMissingError
-from yadearch.results.rundir import CASE_FILE, LOG_FILE, is_complete
+from yadearch.results.rundir import CASE_FILE, LOG_FILE, STAGING_PREFIX, is_complete, staging_folder
 
 REPLACED_SUFFIX = ".replaced"  # the previous folder NAME, for the moment of the swap
 INTERRUPTED_CODES = (130, -signal.SIGINT, -signal.SIGTERM)  # the child's own exit code, or the signal
@@ -47,7 +46,7 @@ def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
     plan_run(case)  # refuse, before any process starts, a case that cannot run or would not end
     check_yade_installed()
     out = Path(out)
-    staging = out.parent / f"{STAGING_PREFIX}{out.name}{STAGING_SUFFIX}"
+    staging = staging_folder(out)
     shutil.rmtree(staging, ignore_errors=True)
     staging.mkdir(parents=True)
     case_file = staging / CASE_FILE

@@ -113,14 +113,7 @@ class Runner:
         """Unbalanced force: mean resultant force on the blocks / mean contact force."""
         return self.scene.contacts.unbalanced()
 
-    def _iter(self) -> int:
-        from yade import O
-
-        return O.iter
-
     def _progress(self, extra: str = "", force: bool = False) -> None:
-        from yade import O
-
         now = time.time()
         if not force and now - self._last_progress < self.num.progress_every_s:
             return
@@ -128,13 +121,8 @@ class Runner:
         wall = now - self.wall0
         rate = self.total_steps / wall if wall > 0 else 0.0
         delta = units.to_mm(self.delta())
-        eta = ""
-        if self.stage == "loading" and delta > 0 and self.driver.current_speed > 0:
-            remaining_s = (self.case.loading.max_settlement_mm - delta) / units.to_mm(
-                self.driver.current_speed) / O.dt / max(rate, 1e-9)
-            eta = f" ETA<= {remaining_s / 60:.1f} min"
         self.log(f"[{self.case.name}] {self.stage:10s} delta={delta:7.2f} mm step={self.total_steps} "
-                 f"{rate:6.0f} steps/s wall={wall:6.0f} s{eta} {extra}")
+                 f"{rate:6.0f} steps/s wall={wall:6.0f} s {extra}")
 
     def _advance(self, n: int) -> None:
         """Run n steps (the only place that steps the scene, so that steps are counted)."""

@@ -16,9 +16,8 @@ from yadearch.case.config import ArchCase, load_case
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.results.provenance import provenance
-from yadearch.results.rundir import LOG_FILE, write_run
+from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 
-STAGING_PREFIX, STAGING_SUFFIX = ".", ".partial"  # how engine.process names a run's staging folder
 PR_SET_PDEATHSIG = 1  # linux/prctl.h
 INTERRUPTED_EXIT = 130  # the shell's code for a run stopped by a signal, not by a failure
 
@@ -67,14 +66,6 @@ def simulate(case: ArchCase, out: Path) -> dict:
         f"steps={summary['steps']} wall={summary['wall_s']:.0f} s -> {final_folder(out)}")
     log_file.close()
     return summary
-
-
-def final_folder(out: Path) -> Path:
-    """The run folder a staging folder (`.NAME.partial`, engine.process) becomes when complete."""
-    name = out.name
-    if name.startswith(STAGING_PREFIX) and name.endswith(STAGING_SUFFIX):
-        name = name[len(STAGING_PREFIX):-len(STAGING_SUFFIX)]
-    return out.parent / name
 
 
 def die_with_parent() -> None:

@@ -5,7 +5,6 @@ Drawn from a campaign's results table, with the paper's two calibrated points fo
 
 from __future__ import annotations
 
-from functools import partial
 from pathlib import Path
 
 import matplotlib
@@ -14,8 +13,8 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
-from yadearch.atomic import write_atomically
 from yadearch.case import reference
+from yadearch.plotting.run_figures import save_figure
 
 COLUMN_WIDTH_IN = 3.5  # one journal column
 HINGE_STYLE = {"hinge_A": ("o", "A (intrados)"), "hinge_B": ("s", "B (extrados)"),
@@ -23,6 +22,8 @@ HINGE_STYLE = {"hinge_A": ("o", "A (intrados)"), "hinge_B": ("s", "B (extrados)"
 LEGEND_HEADROOM = 1.45  # hinge panel's y range as a multiple of the last interface
 PAPER_MECHANISM = "E-I-E-E"  # hinges D, A, B, C from left to right (paper: collapse when D opens)
 DECADE = 10.0
+SWEEP_STYLE = {"font.size": 8, "axes.labelsize": 8, "legend.fontsize": 6.5, "xtick.labelsize": 7,
+               "ytick.labelsize": 7}
 RESULT_COLUMNS = {"du_mm", "collapsed", "hinges", "mechanism", "hinge_A", "hinge_B", "hinge_C", "hinge_D",
                   "steps", "wall_s", "max_slip_mm", "max_friction_use", "friction_interface", "status",
                   "reason", "folder", "run"}
@@ -31,12 +32,8 @@ RESULT_COLUMNS = {"du_mm", "collapsed", "hinges", "mechanism", "hinge_A", "hinge
 def kn_sweep_figure(table: pd.DataFrame, stem: Path, du_rigid_mm: float | None = None) -> list[Path]:
     """Write STEM.pdf and STEM.png from the collapsed runs of a kn sweep, with the rigid-block limit
     `du_rigid_mm` as the stiff asymptote when given; returns both paths."""
-    runs = table[(table["status"] == "done") & (table["collapsed"] == True)]  # noqa: E712
-    runs = runs.sort_values("kn_N_per_mm3")
-    if runs.empty:
-        raise ValueError("no collapsed run to plot")
-    with matplotlib.rc_context({"font.size": 8, "axes.labelsize": 8, "legend.fontsize": 6.5,
-                         "xtick.labelsize": 7, "ytick.labelsize": 7}):
+    runs = _collapsed(table).sort_values("kn_N_per_mm3")
+    with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(COLUMN_WIDTH_IN, 4.4), layout="constrained")
         ax_du, ax_h = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": [3, 2]})
         _du_panel(ax_du, runs, du_rigid_mm)
@@ -44,11 +41,15 @@ def kn_sweep_figure(table: pd.DataFrame, stem: Path, du_rigid_mm: float | None =
         _hinge_panel(ax_h, runs)
         ax_h.set_xscale("log")
         ax_h.set_xlabel(r"joint normal stiffness $k_n$ (N/mm$^3$)")
-        stem.parent.mkdir(parents=True, exist_ok=True)
-        paths = [stem.with_suffix(".pdf"), stem.with_suffix(".png")]
-        for path in paths:
-            write_atomically(path, partial(fig.savefig, format=path.suffix[1:], dpi=300))
-    return paths
+        return list(save_figure(fig, stem))
+
+
+def _collapsed(table: pd.DataFrame) -> pd.DataFrame:
+    """The finished runs of a campaign that collapsed; ValueError if there is none to plot."""
+    runs = table[(table["status"] == "done") & (table["collapsed"] == True)]  # noqa: E712
+    if runs.empty:
+        raise ValueError("no collapsed run to plot")
+    return runs
 
 
 def _du_panel(ax: Axes, runs: pd.DataFrame, du_rigid_mm: float | None) -> None:
@@ -107,12 +108,9 @@ def _hinge_panel(ax: Axes, runs: pd.DataFrame) -> None:
 def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path) -> list[Path]:
     """du against one swept `column` (results.csv's name for it), one line per combination of the
     other swept columns; log scale when the values span more than a decade. Writes STEM.pdf/.png."""
-    runs = table[(table["status"] == "done") & (table["collapsed"] == True)]  # noqa: E712
-    if runs.empty:
-        raise ValueError("no collapsed run to plot")
+    runs = _collapsed(table)
     others = [c for c in swept_columns(table) if c != column]
-    with matplotlib.rc_context({"font.size": 8, "axes.labelsize": 8, "legend.fontsize": 6.5,
-                         "xtick.labelsize": 7, "ytick.labelsize": 7}):
+    with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
         ax = fig.subplots()
         groups = runs.groupby(others if len(others) > 1 else others[0]) if others else [((), runs)]
@@ -129,11 +127,7 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path) -> list
         if others:
             ax.legend(frameon=False)
         ax.grid(True, lw=0.3, alpha=0.5)
-        stem.parent.mkdir(parents=True, exist_ok=True)
-        paths = [stem.with_suffix(".pdf"), stem.with_suffix(".png")]
-        for path in paths:
-            write_atomically(path, partial(fig.savefig, format=path.suffix[1:], dpi=300))
-    return paths
+        return list(save_figure(fig, stem))
 
 
 def swept_columns(table: pd.DataFrame) -> list[str]:

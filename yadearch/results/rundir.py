@@ -21,6 +21,7 @@ JOINTS_FILE = "joints.csv"
 SNAPSHOTS_FILE = "snapshots.json"
 SUMMARY_FILE = "summary.json"
 LOG_FILE = "run.log"
+STAGING_PREFIX, STAGING_SUFFIX = ".", ".partial"  # a run is written to .NAME.partial beside NAME
 SCHEMA_VERSION = 1  # of summary.json; a summary without one predates the marker and is read by its keys
 REQUIRED_KEYS = ("du_mm", "hinges_at_collapse", "steps", "wall_s")  # what campaigns and reports read
 
@@ -35,6 +36,19 @@ class RunFolder:
     joints: pd.DataFrame
     snapshots: dict[str, Any]
     summary: dict[str, Any]
+
+
+def staging_folder(out: Path) -> Path:
+    """Where a run writes its folder `out` until it is complete (then renamed to `out`)."""
+    return out.parent / f"{STAGING_PREFIX}{out.name}{STAGING_SUFFIX}"
+
+
+def final_folder(path: Path) -> Path:
+    """The run folder a staging folder becomes when complete (any other folder: itself)."""
+    name = path.name
+    if name.startswith(STAGING_PREFIX) and name.endswith(STAGING_SUFFIX):
+        name = name[len(STAGING_PREFIX):-len(STAGING_SUFFIX)]
+    return path.parent / name
 
 
 def write_run(out: Path, case_toml: str, series: list[dict], joints: list[dict],
