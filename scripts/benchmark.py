@@ -29,6 +29,8 @@ from pathlib import Path
 TARGET_SET2_WALL_S = 60.0
 TARGET_STIFF_WALL_S = 5 * 60.0
 TARGET_SWEEP_WALL_S = 30 * 60.0
+TARGET_MONTECARLO_SAMPLES = 200
+TARGET_MONTECARLO_WALL_S = 60 * 60.0  # issue 15's budget for 200 set-2-like samples on 2 cores
 TARGET_SWEEP_POINTS = 25
 TARGET_LIMIT_WALL_S = 10.0
 TARGET_OVERHEAD = 1.05
@@ -253,6 +255,7 @@ def main() -> int:
     parser.add_argument("--stiff-run", help="use this stored run folder of a stiff sweep case (e.g. the "
                         "stiffest that finished) instead of running kn 100")
     parser.add_argument("--sweep", help="campaign folder of the dense kn sweep (its sessions.json)")
+    parser.add_argument("--montecarlo", help="folder of a Monte Carlo campaign (its sessions.json)")
     parser.add_argument("--measure-mm", type=float, default=0.0,
                         help="also time this much of set 2's loading here, runner vs bare O.run "
                         "(the overhead target; run it on a free core)")
@@ -306,6 +309,8 @@ def main() -> int:
     breakdown = step_breakdown(args.breakdown_steps) if args.breakdown_steps else None
     sweep_wall = campaign_wall_s(Path(args.sweep)) if args.sweep else None
     sweep = sweep_status(Path(args.sweep)) if args.sweep else None
+    montecarlo_wall = campaign_wall_s(Path(args.montecarlo)) if args.montecarlo else None
+    montecarlo = sweep_status(Path(args.montecarlo)) if args.montecarlo else None
     report = {
         **{f"{n}_{k}": (results[n] or {}).get(k) for n in results for k in ("wall_s", "du_mm", "steps", "steps_per_s")},
         "stiff_name": (results.get("stiff") or {}).get("name"),
@@ -318,7 +323,9 @@ def main() -> int:
         "limit_wall_s": limit["wall_s"], "du_rigid_mm": limit["du_rigid_mm"],
         "kn100_wall_s": stiff["wall_s"] if stiff is not None else None,
         "sweep25_wall_s": sweep_wall if sweep is not None and sweep["done"] >= TARGET_SWEEP_POINTS else None,
-        "montecarlo200_wall_s": None,  # no Monte Carlo campaign yet (issue 15)
+        "montecarlo200_wall_s": montecarlo_wall if montecarlo is not None
+        and montecarlo["done"] >= TARGET_MONTECARLO_SAMPLES else None,
+        "montecarlo_folder": args.montecarlo, "montecarlo": montecarlo, "montecarlo_wall_s": montecarlo_wall,
         "step_breakdown_us": breakdown["step_breakdown_us"] if breakdown else None,
         "step_us": breakdown["step_us"] if breakdown else None,
         "integrator_ratio": breakdown["integrator_ratio"] if breakdown else None,
@@ -354,6 +361,13 @@ def main() -> int:
          f"{sweep['run_wall_s'] / 60:.1f} min" if sweep_wall is not None
          else "no sweep folder given (sweep_wall_s null)"),
     ]
+    verdicts.append((f"{TARGET_MONTECARLO_SAMPLES} Monte Carlo samples <= 60 min on 2 cores",
+                     montecarlo_wall is not None and montecarlo["done"] >= TARGET_MONTECARLO_SAMPLES
+                     and montecarlo_wall <= TARGET_MONTECARLO_WALL_S,
+                     f"{montecarlo['done']} samples done in {montecarlo_wall / 60:.1f} min "
+                     f"({montecarlo['failed']} failed); per sample "
+                     f"{montecarlo_wall / max(1, montecarlo['done']):.0f} s on 2 cores"
+                     if montecarlo_wall is not None else "no Monte Carlo folder given (--montecarlo)"))
     verdicts.append((f"a step <= {TARGET_STEP_US:g} us", breakdown is not None
                      and breakdown["step_us"] <= TARGET_STEP_US,
                      f"{breakdown['step_us']:.0f} us, {breakdown['integrator_ratio']:.0f}x YADE's bare "

@@ -20,13 +20,15 @@ from yadearch.errors import YadearchError
 
 NUMERIC = [f"{name}.{f.name}" for name, section in SECTIONS.items() for f in fields(section)
            if f.type in ("int", "float", int, float)]
-VALID_NEGATIVE = ("loading.settlement_direction_deg",)  # -1 deg is a valid direction
+VALID_NEGATIVE = ("loading.settlement_direction_deg",  # -1 deg is a valid direction
+                  "imperfections.face_angle_mrad", "imperfections.face_bump_mm")  # signed defects
 BAD_VALUES = ["-1", "nan", "inf", "-inf", "1e300", "'text'", "true"]
 DERIVED = [  # inside each value's range, absurd together: refused from the plan, before YADE
     ("settlement_rate_mm_per_s=1e-9", "max_steps"), ("gravity_ramp_periods=1e6", "gravity ramp"),
     ("thickness_mm=400", "internal_radius_mm"),
     ("support_acceleration_mm_per_s2=1e-9", "max_steps"), ("hold_max_s=100", "max_steps"),
     ("kn_N_per_mm3=1e5", "max_steps"), ("max_steps=10", "max_steps"),
+    ("edge_radius_mm=20", "edge_radius_mm"),
 ]
 
 
@@ -38,6 +40,8 @@ def probes() -> list[list[str]]:
     lines += [["run", "--kn", "abc"], ["run", "--bogus"], ["run", "--preset", "set9"],
               ["run", "--preset", "set1", "--case", "x.toml"], ["run", "--set", "nokey"],
               ["run", "--set", "no_such_parameter=1"], ["run", "--case", "/nonexistent/case.toml"],
+              ["run", "--set", "edge_radius_mm=1", "--set", "contact_model=cgal"],
+              ["run", "--set", "edge_shape=square"],
               ["sweep", "--preset", "set2", "--out", "OUT/s"], ["sweep", "--kn", "1:2:cubic:3", "--out", "OUT/s"],
               ["sweep", "--kn", "0:1:log:3", "--out", "OUT/s"], ["sweep", "--param", "kn_N_per_mm3", "--out", "OUT/s"],
               ["calibrate", "--preset", "set1", "--target-du", "nan", "--out", "OUT/c.json"],

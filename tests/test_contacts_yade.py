@@ -136,12 +136,14 @@ def test_block_on_tilted_plane_stays_below_the_friction_angle_and_slides_above(m
 
 
 def test_joint_elements_and_cgal_collapse_a_coarse_arch_alike():
-    """The same arch, both contact models, the whole run: du within 1 % (measured: 84.11 mm with
-    both, 5 s and 48 s) and the same hinges at collapse."""
+    """The same arch, both contact models, the whole run: du within 1 % and the same mechanism at
+    the last equilibrium (measured: 105.57 and 105.88 mm). kn 0.3, not lower: this soft coarse arch
+    snaps through three-hinge states at kn 0.15-0.2 (docs/validation.md)."""
     from yadearch.case.config import preset
     from yadearch.engine.runner import Runner
+    from yadearch.model.hinges import same_hinges
 
-    coarse = {"n_voussoirs": 9, "kn_N_per_mm3": 0.15, "settlement_rate_mm_per_s": 30.0,
+    coarse = {"n_voussoirs": 9, "kn_N_per_mm3": 0.3, "settlement_rate_mm_per_s": 30.0,
               "progress_every_s": 1e9}
     results = {}
     for model in ("joint", "cgal"):
@@ -151,4 +153,4 @@ def test_joint_elements_and_cgal_collapse_a_coarse_arch_alike():
     joint, cgal = results["joint"], results["cgal"]
     assert joint["collapsed"] and cgal["collapsed"]
     assert joint["du_mm"] == pytest.approx(cgal["du_mm"], rel=0.01)
-    assert joint["hinges_at_collapse"] == cgal["hinges_at_collapse"]
+    assert same_hinges(joint["hinges_last_equilibrium"], cgal["hinges_last_equilibrium"])

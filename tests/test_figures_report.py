@@ -17,7 +17,7 @@ from yadearch.cli.commands import report
 from yadearch.errors import YadearchError
 from yadearch.plotting import run_figures as figures
 from yadearch.reporting.report import match_reference, write_report
-from yadearch.results.rundir import write_run
+from yadearch.results.rundir import STIFFNESS_COLUMN, write_run
 
 CASE_TOML = """name = "{name}"
 
@@ -58,7 +58,8 @@ def series_rows(built: BuiltRun) -> list[dict]:
             rows.append({"stage": stage, "step": len(rows), "time_s": 0.01 * len(rows), "delta_mm": d,
                          "left_Rx_N": 12.0, "left_Ry_N": 15.8 - 0.02 * d, "right_Rx_N": -12.0,
                          "right_Ry_N": 15.8 + 0.02 * d, "crown_dx_mm": 0.2 * d, "crown_dy_mm": -2 - 0.6 * d,
-                         "kinetic_J": 1e-5, "unbalanced": 1e-3, "max_block_speed_mm_per_s": 0.1})
+                         "kinetic_J": 1e-5, "unbalanced": 1e-3, "max_block_speed_mm_per_s": 0.1,
+                         STIFFNESS_COLUMN: 50.0 * (1 - d / built.du_mm) if stage == "equilibrium" else None})
     return rows
 
 
@@ -134,7 +135,8 @@ def test_every_figure_is_a_non_empty_pdf_and_png(tmp_path):
     written = [figures.plot_collapse(run, analysis, tmp_path / "f" / "collapse"),
                figures.plot_reactions(run, analysis, tmp_path / "f" / "reactions"),
                figures.plot_hinge_openings(run, analysis, tmp_path / "f" / "hinges"),
-               figures.plot_crown_displacement(run, analysis, tmp_path / "f" / "crown")]
+               figures.plot_crown_displacement(run, analysis, tmp_path / "f" / "crown"),
+               figures.plot_stability(run, analysis, tmp_path / "f" / "stability")]
     for pdf, png in written:
         assert pdf.read_bytes()[:4] == b"%PDF" and pdf.stat().st_size > 1000
         assert png.read_bytes()[:4] == b"\x89PNG" and png.stat().st_size > 1000

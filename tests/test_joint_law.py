@@ -113,3 +113,20 @@ def test_unbalanced_force_is_zero_for_a_block_resting_on_its_joint():
     free = np.array([False, True])
     assert unbalanced_force(forces, free, np.array([[0.0, -weight]])) == pytest.approx(0.0, abs=1e-12)
     assert unbalanced_force(forces, free, np.array([[0.0, -2 * weight]])) == pytest.approx(1.0)
+
+
+def test_a_pressed_joint_is_stable_with_the_stiffness_of_its_interface():
+    """The tangent stiffness of a block pressed flat on a fixed one: kn A vertically, ks A
+    horizontally, and in rotation about its centroid (h/2 above the joint) kn depth w^3 / 12 plus
+    the shear the turn makes at the joint, ks A (h/2)^2; all positive (a stable state)."""
+    from yadearch.model.stability import smallest_stiffness, tangent_stiffness
+
+    table, pos = _pairs()
+    pos[1, 1] -= 2e-6
+    free = np.array([False, True])
+    stiffness = tangent_stiffness(table, LAW, pos, np.zeros(2), np.zeros(1), free, WIDTH)
+    assert stiffness[1, 1] == pytest.approx(KN * WIDTH * DEPTH, rel=1e-6)
+    assert stiffness[0, 0] == pytest.approx(KS * WIDTH * DEPTH, rel=1e-6)
+    rocking = KN * DEPTH * WIDTH**3 / 12 + KS * WIDTH * DEPTH * (HEIGHT / 2) ** 2
+    assert stiffness[2, 2] == pytest.approx(rocking / WIDTH**2, rel=1e-3)
+    assert smallest_stiffness(stiffness) > 0

@@ -10,6 +10,7 @@ from conftest import HAS_YADE, needs_yade
 
 from yadearch.case.config import preset
 from yadearch.model.hinges import same_hinges
+from yadearch.results.rundir import STIFFNESS_COLUMN
 
 pytestmark = [needs_yade, pytest.mark.yade]
 
@@ -45,6 +46,16 @@ def test_every_accepted_state_of_the_loading_is_a_static_equilibrium(base_run):
     carried = (path["left_Ry_N"] + path["right_Ry_N"]) / weight
     assert carried.sub(1.0).abs().max() < 0.01  # the supports carry the weight: nothing accelerates
     assert (path["left_Rx_N"] + path["right_Rx_N"]).abs().max() < 0.01 * path["left_Rx_N"].abs().min()
+
+
+def test_every_accepted_state_is_stable_and_the_last_one_near_the_limit_point(base_run):
+    """The tangent stiffness of the free blocks is positive definite at every equilibrium of the
+    loading, and its smallest eigenvalue falls toward zero as du (a fold of the path) approaches."""
+    _, series = base_run
+    path = series[series["stage"] == "equilibrium"]
+    stiffness = path[STIFFNESS_COLUMN]
+    assert (stiffness > 0).all(), stiffness.tolist()
+    assert stiffness.iloc[-1] < 0.25 * stiffness.max(), stiffness.tolist()
 
 
 def test_du_does_not_move_with_the_loading_increment(base_run):

@@ -151,6 +151,19 @@ def sweep(case: ArchCase, out: str | Path, jobs: int | None = None, scheduler: s
         return run_campaign(case, grid(values), Path(out), pool, timeout_s=timeout_s)
 
 
+def montecarlo(case: ArchCase, out: str | Path, samples: int, seed: int = 1, jobs: int | None = None,
+               scheduler: str | None = None, timeout_s: float | None = None,
+               **levels: list[Any]) -> pd.DataFrame:
+    """`samples` seeded draws of `case`'s imperfections (at every combination of the amplitude
+    `levels`, e.g. `edge_radius_mm=[0.5, 1]`) as a resumable campaign in `out`; returns the table
+    of montecarlo.csv (du, hinges and each sample's imperfection summary)."""
+    from yadearch.studies.executors import open_pool
+    from yadearch.studies.montecarlo import run_montecarlo
+
+    with open_pool(jobs, scheduler) as pool:
+        return run_montecarlo(case, Path(out), pool, samples, seed, levels or None, timeout_s=timeout_s)
+
+
 def calibrate(case: ArchCase, target_du_mm: float, out: str | Path, kn_min: float = 0.1,
               kn_max: float = 100.0, tolerance_mm: float = 0.5, jobs: int | None = None):
     """The kn at which `case` collapses at `target_du_mm` (within `tolerance_mm`), by bracketing

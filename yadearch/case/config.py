@@ -19,6 +19,7 @@ import tomli_w
 from yadearch.case.sections import (
     SECTIONS,
     GeometryConfig,
+    ImperfectionsConfig,
     InterfaceConfig,
     LoadingConfig,
     MaterialConfig,
@@ -37,6 +38,7 @@ class ArchCase:
     interface: InterfaceConfig = field(default_factory=InterfaceConfig)
     loading: LoadingConfig = field(default_factory=LoadingConfig)
     numerics: NumericsConfig = field(default_factory=NumericsConfig)
+    imperfections: ImperfectionsConfig = field(default_factory=ImperfectionsConfig)
 
     @property
     def ks_N_per_mm3(self) -> float:

@@ -8,8 +8,11 @@ import math
 from dataclasses import dataclass
 
 from yadearch.case.config import ArchCase
+from yadearch.case.imperfect import amplitudes
 from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep
 from yadearch.errors import CaseError
+from yadearch.model import units
+from yadearch.model.imperfections import MAX_EDGE_FRACTION
 
 SETTLE_HOLDS = 10  # settling holds a run may need (one per bracket end retried), for the worst case
 BISECTIONS_MARGIN = 10  # increments beyond the bisection count, for retries after discarded states
@@ -36,6 +39,7 @@ def plan_run(case: ArchCase) -> RunPlan:
         geometry = arch_geometry(case)
     except ValueError as exc:
         raise CaseError(f"the arch cannot be built: {exc}") from None
+    _check_imperfections(case, min(joint.length for joint in geometry.joints))
     dt = num.timestep_safety * critical_timestep(case, geometry, contact_stiffness(case, geometry))
     if not math.isfinite(dt) or dt <= 0.0:
         raise CaseError(f"the time step from interface.kn_N_per_mm3 = {case.interface.kn_N_per_mm3:g} "
@@ -53,6 +57,20 @@ def plan_run(case: ArchCase) -> RunPlan:
                         f"{worst_s:.3g} s simulated), over numerics.max_steps = {num.max_steps:.3g}; "
                         "check the loading speed, increments and hold times, or raise max_steps")
     return RunPlan(dt, ramp_s, worst_s, steps)
+
+
+def _check_imperfections(case: ArchCase, joint_length_m: float) -> None:
+    """Imperfections need the joint elements, and a worn edge must leave part of the joint flat."""
+    imp = case.imperfections
+    if amplitudes(case).perfect:
+        return
+    if case.numerics.contact_model != "joint":
+        raise CaseError(f"numerics.contact_model = {case.numerics.contact_model!r} cannot represent "
+                        "imperfect joint faces; use 'joint' or set the [imperfections] amplitudes to 0")
+    largest_mm = MAX_EDGE_FRACTION * units.to_mm(joint_length_m)
+    if imp.edge_radius_mm > largest_mm:
+        raise CaseError(f"imperfections.edge_radius_mm = {imp.edge_radius_mm:g} must be at most "
+                        f"{largest_mm:.3g} mm ({MAX_EDGE_FRACTION:g} of the joint length)")
 
 
 def _loading_worst_case_s(case: ArchCase) -> float:

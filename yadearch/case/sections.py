@@ -145,10 +145,38 @@ class NumericsConfig:
         "about 1.3 million)"), "predates": 100_000_000})
 
 
+@dataclass
+class ImperfectionsConfig:
+    """Geometric imperfections of the voussoirs' joint faces (docs/theory.md), each a mean and a
+    standard deviation drawn per joint from `seed`; all zero = the perfect arch. The supports' faces
+    stay perfect."""
+
+    seed: int = field(default=0, metadata=_num(0, 2**32 - 1, doc="seed of the random draws (one seed, "
+                      "one geometry)"))
+    edge_shape: str = field(default="round", metadata={
+        "choices": ("round", "chamfer"), "doc": "shape of the voussoirs' worn joint edges: 'round' "
+        "(a quarter circle of radius edge_radius_mm) or 'chamfer' (a 45 deg cut of that leg)"})
+    edge_radius_mm: float = field(default=0.0, metadata=_num(0, 1000, doc="mean size of the rounding or "
+                                  "chamfer of each intrados and extrados edge of a voussoir's joint faces (mm)"))
+    edge_radius_sd_mm: float = field(default=0.0, metadata=_num(0, 1000, doc="standard deviation of "
+                                     "edge_radius_mm between edges (mm; drawn sizes below 0 count as 0)"))
+    face_angle_mrad: float = field(default=0.0, metadata=_num(-1000, 1000, doc="mean angle between a "
+                                   "joint's two faces (mrad; > 0: the joint touches at the intrados and "
+                                   "gapes toward the extrados)"))
+    face_angle_sd_mrad: float = field(default=0.0, metadata=_num(0, 1000, doc="standard deviation of "
+                                      "face_angle_mrad between joints (mrad)"))
+    face_bump_mm: float = field(default=0.0, metadata=_num(-1000, 1000, doc="mean out-of-flatness of a "
+                                "joint (mm; > 0: convex faces touching mid-joint with the ends open by "
+                                "this much, < 0: hollow faces touching at the ends)"))
+    face_bump_sd_mm: float = field(default=0.0, metadata=_num(0, 1000, doc="standard deviation of "
+                                   "face_bump_mm between joints (mm)"))
+
+
 SECTIONS: dict[str, type] = {
     "geometry": GeometryConfig,
     "material": MaterialConfig,
     "interface": InterfaceConfig,
     "loading": LoadingConfig,
     "numerics": NumericsConfig,
+    "imperfections": ImperfectionsConfig,
 }

@@ -59,11 +59,7 @@ def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, .
             bad = [v for v in axes[KN_KEY] if isinstance(v, (bool, str))]
             if bad:
                 raise click.UsageError(f"--kn values must be numbers, got {bad[0]!r}")
-        for spec in param_specs:
-            if "=" not in spec:
-                raise click.UsageError(f"--param expects NAME=VALUES, got {spec!r}")
-            name, values = spec.split("=", 1)
-            axes[name.strip()] = parse_values(values)
+        axes.update(parse_axes(param_specs))
         if not axes:
             raise click.UsageError("nothing to sweep: give --kn, --param or --table")
         rows = grid(axes)
@@ -80,6 +76,17 @@ def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, .
     if counts.get("failed"):
         raise YadearchError(f"{counts['failed']} of {len(table)} runs failed; reasons in "
                             f"{folder / RESULTS_FILE}")
+
+
+def parse_axes(param_specs: tuple[str, ...]) -> dict[str, list[Any]]:
+    """--param NAME=VALUES options as grid axes."""
+    axes: dict[str, list[Any]] = {}
+    for spec in param_specs:
+        if "=" not in spec:
+            raise click.UsageError(f"--param expects NAME=VALUES, got {spec!r}")
+        name, values = spec.split("=", 1)
+        axes[name.strip()] = parse_values(values)
+    return axes
 
 
 def _sweep_figures(table: pd.DataFrame, rows: list[dict[str, Any]], folder: Path, base: ArchCase) -> None:

@@ -12,6 +12,7 @@ import click
 from yadearch import api
 from yadearch.case.config import parameter_docs, preset
 from yadearch.cli.campaigns import calibrate, robustness, sweep
+from yadearch.cli.montecarlo import montecarlo
 from yadearch.cli.options import case_options, resolve_case
 from yadearch.engine.process import run_case_process
 from yadearch.errors import YadearchError
@@ -109,6 +110,7 @@ def limit(preset_name: str | None, case_file: str | None, kn: float | None, sett
 cli.add_command(sweep)
 cli.add_command(calibrate)
 cli.add_command(robustness)
+cli.add_command(montecarlo)
 
 
 @cli.command("report")

@@ -74,11 +74,15 @@ class CgalContacts:
         """Not tracked by this model: NaN for every joint."""
         return np.full(len(self.geometry.joints), np.nan)
 
+    def smallest_stiffness(self) -> float:
+        """Not available from CGAL's contacts (the joint elements compute it): NaN."""
+        return float("nan")
+
     def snapshot(self) -> dict:
         """The contacts' geometry (the intersection's starting hints) and per-contact shear forces."""
         from yade import O
 
-        contacts = {(i.id1, i.id2): (i.geom.contactPoint, i.geom.normal) for i in O.interactions
+        contacts = {(i.id1, i.id2): (tuple(i.geom.contactPoint), tuple(i.geom.normal)) for i in O.interactions
                     if i.geom is not None}
         return {"contacts": contacts, "shear": dict(self.shear.shear)}
 

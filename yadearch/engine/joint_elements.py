@@ -9,8 +9,10 @@ import numpy as np
 
 from yadearch.case.mechanics import ContactStiffness
 from yadearch.model.geometry import ArchGeometry
+from yadearch.model.imperfections import GapProfiles
 from yadearch.model.joint_law import JointForces, JointLaw, joint_forces, joint_table, unbalanced_force
 from yadearch.model.joints import pair_rotation
+from yadearch.model.stability import smallest_stiffness, tangent_stiffness
 
 
 class JointElementContacts:
@@ -19,7 +21,9 @@ class JointElementContacts:
 
     name = "joint"
 
-    def __init__(self, stiffness: ContactStiffness, geometry: ArchGeometry, body_ids: list[int]):
+    def __init__(self, stiffness: ContactStiffness, geometry: ArchGeometry, body_ids: list[int],
+                 profiles: GapProfiles | None = None):
+        self.profiles = profiles  # the joints' initial gap profiles (None: perfect faces)
         self.law = JointLaw(stiffness.kn, stiffness.ks, stiffness.tan_friction, geometry.depth)
         self.geometry = geometry
         self.body_ids = body_ids
@@ -32,7 +36,7 @@ class JointElementContacts:
         from yade import O
         from yade.wrapper import PyRunner
 
-        self.table = joint_table(self.geometry, pos0)
+        self.table = joint_table(self.geometry, pos0, self.profiles)
         states = [O.bodies[i].state for i in self.body_ids]
         # a block turning about z keeps the norms of its quaternion's (w, z) and (x, y) pairs: its
         # angle follows from the larger pair alone, two numbers read instead of four
@@ -89,6 +93,13 @@ class JointElementContacts:
         """Contact point (n_joints, 2; NaN if open), normal and shear force (n_joints,) of every joint."""
         forces = self.last if self.last is not None else self._evaluate()
         return forces.point, forces.normal_force, forces.shear_force
+
+    def smallest_stiffness(self) -> float:
+        """The smallest eigenvalue of the free blocks' tangent stiffness now (N/m; `model.stability`)."""
+        rows = self.read_states()
+        stiffness = tangent_stiffness(self.table, self.law, rows[:, 0:2], pair_rotation(rows[:, 2:4], self._pair0),
+                                      self.shear, self._free, self.geometry.thickness)
+        return smallest_stiffness(stiffness)
 
     def joint_slip(self) -> np.ndarray:
         """Sliding each joint has accumulated beyond its Coulomb cap since the start (m)."""

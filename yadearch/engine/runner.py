@@ -90,7 +90,9 @@ class Runner:
         collapse stages run on restored states."""
         from yade import O
 
-        bodies = [(s.pos, s.ori, s.vel, s.angVel) for s in (b.state for b in O.bodies)]
+        # copies: YADE's State.vel and State.angVel are references to the live vectors (pos and ori
+        # are copies), so a snapshot holding them would restore whatever velocity the scene has then
+        bodies = [(tuple(s.pos), s.ori, tuple(s.vel), tuple(s.angVel)) for s in (b.state for b in O.bodies)]
         return {"bodies": bodies, "contacts": self.scene.contacts.snapshot(),
                 "target": self.driver.target, "speed": self.driver.current_speed}
 

@@ -15,11 +15,13 @@ import numpy as np
 
 import __main__
 from yadearch.case.config import ArchCase
+from yadearch.case.imperfect import ArchImperfections, arch_imperfections
 from yadearch.case.mechanics import ContactStiffness, arch_geometry, contact_stiffness, critical_timestep
 from yadearch.engine.cgal_contacts import CgalContacts
 from yadearch.engine.joint_elements import JointElementContacts
 from yadearch.engine.stepping import close_active
 from yadearch.engine.yade_env import import_yade
+from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.joints import z_rotation
@@ -41,6 +43,7 @@ class ContactModel(Protocol):
     def step(self) -> None: ...
     def joint_contacts(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]: ...
     def joint_slip(self) -> np.ndarray: ...
+    def smallest_stiffness(self) -> float: ...
     def snapshot(self) -> dict: ...
     def restore(self, snapshot: dict) -> None: ...
     def unbalanced(self) -> float: ...
@@ -59,6 +62,7 @@ class ArchScene:
     dt: float
     states: list[Any]  # YADE State objects in geometry order; a restore assigns into them
     newton: Any  # the scene's NewtonIntegrator: its gravity and damping change with the stages
+    imperfections: ArchImperfections | None = None  # the joints' drawn defects (None: perfect)
 
     @property
     def voussoir_states(self) -> list[Any]:
@@ -82,18 +86,24 @@ def build_scene(case: ArchCase) -> ArchScene:
     geometry = arch_geometry(case)
     stiffness = contact_stiffness(case, geometry)
     dt = case.numerics.timestep_safety * critical_timestep(case, geometry, stiffness)
+    imperfections = arch_imperfections(case, geometry)
     return build_block_scene(
         geometry, stiffness, density=units.density(case.material.density_g_per_cm3),
         gravity=(0.0, -case.loading.gravity_m_per_s2, 0.0), damping=case.numerics.damping, dt=dt,
         fixed={0, len(geometry.blocks) - 1}, threads=case.numerics.threads,
-        contact_model=case.numerics.contact_model)
+        contact_model=case.numerics.contact_model, imperfections=imperfections)
 
 
 def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, density: float,
                       gravity: tuple[float, float, float], damping: float, dt: float,
-                      fixed: set[int], threads: int = 1, contact_model: str = "joint") -> ArchScene:
+                      fixed: set[int], threads: int = 1, contact_model: str = "joint",
+                      imperfections: ArchImperfections | None = None) -> ArchScene:
     """Reset YADE's global scene and fill it with `geometry.blocks` (indices in `fixed` do not move
-    unless driven; the others move in the x-y plane) and the engines of `contact_model`."""
+    unless driven; the others move in the x-y plane) and the engines of `contact_model`; only the
+    joint elements take the joints' imperfections."""
+    if imperfections is not None and contact_model != "joint":
+        raise CaseError(f"contact_model {contact_model!r} cannot represent imperfect joint faces; "
+                        "use contact_model = 'joint' or set the [imperfections] amplitudes to 0")
     import_yade(threads)
     from yade import O, polyhedra_utils
     from yade.wrapper import ForceResetter, NewtonIntegrator, PolyhedraMat
@@ -111,7 +121,10 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
             body.state.blockedDOFs = "zXY"  # planar motion: no z translation, rotation about z only
         body_ids.append(O.bodies.append(body))
 
-    contacts = CONTACT_MODELS[contact_model](stiffness, geometry, body_ids)
+    if imperfections is not None:
+        contacts: ContactModel = JointElementContacts(stiffness, geometry, body_ids, imperfections.profiles)
+    else:
+        contacts = CONTACT_MODELS[contact_model](stiffness, geometry, body_ids)
     setattr(__main__, CALLBACK_NAME, contacts)
     pos0 = np.array([list(O.bodies[i].state.pos) for i in body_ids])
     ori0 = np.array([_quat_wxyz(O.bodies[i].state.ori) for i in body_ids])
@@ -119,7 +132,7 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
     O.engines = [ForceResetter(), *contacts.bind(pos0, ori0, CALLBACK_NAME), newton]
     O.dt = dt
     return ArchScene(geometry, stiffness, body_ids, pos0, ori0, contacts, dt,
-                     [O.bodies[i].state for i in body_ids], newton)
+                     [O.bodies[i].state for i in body_ids], newton, imperfections)
 
 
 def _quat_wxyz(q: Any) -> list[float]:

@@ -56,10 +56,13 @@ def simulate(case: ArchCase, out: Path) -> dict:
                                  "direction_deg": case.loading.settlement_direction_deg,
                                  "max_displacement_mm": case.loading.max_settlement_mm},
                      "collapse_criterion": criterion_text(case.numerics)}
+    imperfections = runner.scene.imperfections
+    if imperfections is not None:
+        summary["imperfections"] = imperfections.summary()
     summary.update(runner.run())
     summary.update(origin)
     write_run(out, case.to_toml(), runner.records.series, runner.records.joints,
-              runner.records.snapshots, summary)
+              runner.records.snapshots, summary, imperfections.table() if imperfections else None)
     du = summary["du_mm"]
     hinges = " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"])
     log(f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} hinges={hinges or '-'} "

@@ -20,6 +20,7 @@ import numpy as np
 from numba import njit
 
 from yadearch.model.geometry import ArchGeometry
+from yadearch.model.imperfections import GapProfiles
 
 
 @dataclass(frozen=True)
@@ -38,6 +39,10 @@ class JointTable:
     handedness: np.ndarray
     both_ends: np.ndarray  # block indices [right..., left...], to sum each joint's force on its blocks
     n_blocks: int
+    gap_fraction: np.ndarray  # (n_joints, nodes): initial gap profile nodes, fractions of the length
+    gap: np.ndarray  # (n_joints, nodes): initial gap between the faces at those nodes (m)
+    imperfect: np.ndarray  # (n_joints,) bool: the joints with a gap profile (the others take the
+    # closed form of a perfect joint)
 
 
 @dataclass(frozen=True)
@@ -68,8 +73,9 @@ class JointForces:
         return self.normal_force > 0.0
 
 
-def joint_table(geometry: ArchGeometry, centroids0: np.ndarray) -> JointTable:
-    """Arrays of `geometry.joints` relative to the blocks' initial centroids (n_blocks, >=2)."""
+def joint_table(geometry: ArchGeometry, centroids0: np.ndarray, profiles: GapProfiles | None = None) -> JointTable:
+    """Arrays of `geometry.joints` relative to the blocks' initial centroids (n_blocks, >=2), with
+    the joints' initial gap profiles (`model.imperfections`; None: perfect faces)."""
     joints = geometry.joints
     left = np.array([j.left for j in joints])
     right = np.array([j.right for j in joints])
@@ -80,8 +86,12 @@ def joint_table(geometry: ArchGeometry, centroids0: np.ndarray) -> JointTable:
     along = (extrados - intrados) / length[:, None]
     handedness = np.sign(along[:, 0] * normal[:, 1] - along[:, 1] * normal[:, 0])
     c0 = centroids0[:, :2]
+    if profiles is None:
+        profiles = GapProfiles(np.zeros((len(joints), 2)), np.zeros((len(joints), 2)),
+                               np.zeros(len(joints), dtype=bool))
     return JointTable(left, right, intrados - c0[left], intrados - c0[right], normal, along, length,
-                      handedness, np.concatenate([right, left]), len(centroids0))
+                      handedness, np.concatenate([right, left]), len(centroids0),
+                      profiles.fraction, profiles.gap, profiles.imperfect)
 
 
 def joint_forces(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.ndarray,
@@ -92,20 +102,23 @@ def joint_forces(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.ndar
     outputs = _joint_kernel(table.left, table.right, table.left_intrados, table.right_intrados,
                             table.normal0, table.along0, table.length, table.handedness,
                             table.n_blocks, law.kn * law.depth, law.ks * law.depth, law.tan_friction,
-                            pos, rot, vel, ang_vel, shear, dt)
+                            pos, rot, vel, ang_vel, shear, dt, table.gap_fraction, table.gap,
+                            table.imperfect)
     return JointForces(*outputs)
 
 
 @njit(cache=True)
 def _joint_kernel(left, right, left_intrados, right_intrados, normal0, along0, length, handedness,
-                  n_blocks, kn_depth, ks_depth, tan_friction, pos, rot, vel, ang_vel, shear, dt):
+                  n_blocks, kn_depth, ks_depth, tan_friction, pos, rot, vel, ang_vel, shear, dt,
+                  gap_fraction, gap, imperfect):
     """The joint law, one joint at a time (compiled; about 1/30 of the array version's time).
 
     In the frame of the faces' mean direction, centred between the two faces' intrados points a_l
     and a_r, the faces are straight lines at -+ half their relative rotation r, so the overlap at
     abscissa s is (a_l - a_r).n - 2 h tan(r/2) s (h = +-1, the joint's handedness), over the
-    abscissae both faces cover: |(a_l - a_r).e| / 2 to length cos(r/2) - that. The forces are summed
-    on the blocks right ends first, then left ends, joint by joint."""
+    abscissae both faces cover: |(a_l - a_r).e| / 2 to length cos(r/2) - that; an imperfect joint
+    subtracts its gap profile from that overlap (`_gapped_overlap`). The forces are summed on the
+    blocks right ends first, then left ends, joint by joint."""
     n_joints = left.shape[0]
     normal_force, shear_force = np.zeros(n_joints), np.zeros(n_joints)
     point = np.full((n_joints, 2), np.nan)
@@ -133,16 +146,23 @@ def _joint_kernel(left, right, left_intrados, right_intrados, normal0, along0, l
         p1 = p0 - slope * shared
         if not (shared > 0.0 and (p0 > 0.0 or p1 > 0.0)):
             continue
-        q0, q1 = max(p0, 0.0), max(p1, 0.0)
-        crossing = p0 / (p0 - p1) if p0 != p1 else 0.0
-        first = 0.0 if p0 > 0.0 else crossing  # fractions of `shared` where the overlap starts, ends
-        last = 1.0 if p1 > 0.0 else crossing
-        touching_length = shared * (last - first)
-        centroid = start + shared * first + touching_length * (q0 + 2.0 * q1) / (3.0 * (q0 + q1))
+        if imperfect[j]:
+            area, centroid, touching_length = _gapped_overlap(
+                p0, slope, start, shared, gap_fraction[j], gap[j], length[j] * math.cos(half_turn))
+            if area <= 0.0:
+                continue
+        else:
+            q0, q1 = max(p0, 0.0), max(p1, 0.0)
+            crossing = p0 / (p0 - p1) if p0 != p1 else 0.0
+            first = 0.0 if p0 > 0.0 else crossing  # fractions of `shared` where the overlap starts, ends
+            last = 1.0 if p1 > 0.0 else crossing
+            touching_length = shared * (last - first)
+            centroid = start + shared * first + touching_length * (q0 + 2.0 * q1) / (3.0 * (q0 + q1))
+            area = 0.5 * touching_length * (q0 + q1)
         mid_height = 0.5 * slope * 0.5 * gap_along  # the faces' mid-line: the mean of their heights
         px = 0.5 * (alx + arx) + centroid * ex + mid_height * nx
         py = 0.5 * (aly + ary) + centroid * ey + mid_height * ny
-        normal = kn_depth * (0.5 * touching_length * (q0 + q1))
+        normal = kn_depth * area
         arm_lx, arm_ly = px - pos[lb, 0], py - pos[lb, 1]
         arm_rx, arm_ry = px - pos[rb, 0], py - pos[rb, 1]
         slip_x = vel[rb, 0] - ang_vel[rb] * arm_ry - vel[lb, 0] + ang_vel[lb] * arm_ly
@@ -168,6 +188,34 @@ def _joint_kernel(left, right, left_intrados, right_intrados, normal0, along0, l
         block_force[left[j], 1] -= force_y[j]
         block_torque[left[j]] += torque_left[j]
     return normal_force, shear_force, point, compressed, plastic_slip, block_force, block_torque
+
+
+@njit(cache=True)
+def _gapped_overlap(p0, slope, start, shared, fraction, gap, projected_length):
+    """Area (m^2), centroid abscissa and touching length of max(0, overlap - gap) over the shared
+    abscissae [start, start + shared], the overlap falling linearly from p0 with `slope` and the gap
+    piecewise linear on the nodes `fraction` x `projected_length`: exact, segment by segment."""
+    area, moment, touching = 0.0, 0.0, 0.0
+    end = start + shared
+    for k in range(fraction.shape[0] - 1):
+        t0, t1 = fraction[k] * projected_length, fraction[k + 1] * projected_length
+        a, b = max(t0, start), min(t1, end)
+        if b <= a:
+            continue
+        rate = (gap[k + 1] - gap[k]) / (t1 - t0)
+        ua = p0 - slope * (a - start) - (gap[k] + rate * (a - t0))
+        ub = p0 - slope * (b - start) - (gap[k] + rate * (b - t0))
+        if ua <= 0.0 and ub <= 0.0:
+            continue
+        if ua < 0.0:
+            a, ua = a + (b - a) * ua / (ua - ub), 0.0
+        elif ub < 0.0:
+            b, ub = a + (b - a) * ua / (ua - ub), 0.0
+        width = b - a
+        area += 0.5 * width * (ua + ub)
+        moment += width * (ua * (2.0 * a + b) + ub * (a + 2.0 * b)) / 6.0
+        touching += width
+    return area, (moment / area if area > 0.0 else 0.0), touching
 
 
 def unbalanced_force(forces: JointForces, free: np.ndarray, weights: np.ndarray) -> float:

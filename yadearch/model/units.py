@@ -11,6 +11,7 @@ MM = 1e-3  # m per mm
 N_PER_MM3 = 1e9  # (N/m^3) per (N/mm^3)
 G_PER_CM3 = 1e3  # (kg/m^3) per (g/cm^3)
 MPA = 1e6  # Pa per MPa
+MRAD = 1e-3  # rad per mrad
 
 
 def mm(value_mm: Length) -> Length:
@@ -40,3 +41,13 @@ def pressure(value_mpa: float) -> float:
 
 def radians(value_deg: float) -> float:
     return math.radians(value_deg)
+
+
+def mrad(value_mrad: Length) -> Length:
+    """Milliradians to radians."""
+    return value_mrad * MRAD
+
+
+def to_mrad(value_rad: Length) -> Length:
+    """Radians to milliradians."""
+    return value_rad / MRAD

@@ -21,7 +21,7 @@ from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outli
 from yadearch.analysis.history import EQUILIBRIUM_STAGE
 from yadearch.atomic import write_atomically
 from yadearch.errors import RunFolderError
-from yadearch.results.rundir import RunFolder
+from yadearch.results.rundir import STIFFNESS_COLUMN, RunFolder
 
 CM = 1 / 2.54  # inches
 COLUMN_CM = 8.5
@@ -215,14 +215,32 @@ def plot_crown_displacement(run: RunFolder, analysis: RunAnalysis, stem: Path) -
     return save_figure(fig, stem)
 
 
+@_styled
+def plot_stability(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
+    """The smallest eigenvalue of the free blocks' tangent stiffness at each equilibrium state: it
+    falls toward zero as du, a fold of the equilibrium path, approaches (docs/numerics.md)."""
+    path = loading_path(run.series).dropna(subset=[STIFFNESS_COLUMN])
+    fig = new_figure(height_cm=5.0)
+    ax = fig.add_subplot()
+    ax.plot(path["delta_mm"], path[STIFFNESS_COLUMN], "o-", color=LEFT_COLOUR, ms=2.5, lw=0.8)
+    ax.axhline(0.0, color="0.4", lw=0.6)
+    _mark_du(ax, analysis.du_mm, legend=True)
+    ax.legend(loc="upper right")
+    ax.set_xlabel(delta_label(run.case))
+    ax.set_ylabel("smallest stiffness (N/m)")
+    return save_figure(fig, stem)
+
+
 def write_figures(run: RunFolder, analysis: RunAnalysis, out: Path) -> dict[str, tuple[Path, Path]]:
     """Every figure of a run into `out`; returns {name: (pdf, png)}: collapse (if the run has a final
-    snapshot), reactions, hinges, crown."""
+    snapshot), reactions, hinges, crown, and stability (if the run recorded it)."""
     figures = {
         "reactions": plot_reactions(run, analysis, out / "reactions"),
         "hinges": plot_hinge_openings(run, analysis, out / "hinges"),
         "crown": plot_crown_displacement(run, analysis, out / "crown"),
     }
+    if STIFFNESS_COLUMN in run.series and run.series[STIFFNESS_COLUMN].notna().any():
+        figures["stability"] = plot_stability(run, analysis, out / "stability")
     if run.snapshots.get("collapse") or run.snapshots.get("end"):
         figures = {"collapse": plot_collapse(run, analysis, out / "collapse"), **figures}
     return figures

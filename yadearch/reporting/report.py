@@ -34,6 +34,9 @@ CAPTIONS = {
               "mark formation, the last point is the collapse state.",
     "crown": "Displacement of the crown voussoir against δ (from the unloaded geometry, self-weight "
              "included); faded past du.",
+    "stability": "Smallest eigenvalue of the free blocks' tangent stiffness at each equilibrium state "
+                 "against δ: positive while the state is stable, falling toward zero as du (a fold "
+                 "of the equilibrium path) approaches.",
 }
 FINAL_STATE_CAPTION = ("The arch at the end of the run (no collapse), drawn to scale over its undeformed "
                        "outline (dashed); hinges labelled A-D by position as in the paper, with interface and "

@@ -18,6 +18,8 @@ from yadearch.errors import RunFolderError
 CASE_FILE = "case.toml"
 SERIES_FILE = "series.csv"
 JOINTS_FILE = "joints.csv"
+STIFFNESS_COLUMN = "min_stiffness_N_per_m"  # series.csv: an equilibrium state's stability (model.stability)
+IMPERFECTIONS_FILE = "imperfections.csv"  # the defects drawn for each joint (imperfect arches only)
 SNAPSHOTS_FILE = "snapshots.json"
 SUMMARY_FILE = "summary.json"
 LOG_FILE = "run.log"
@@ -52,11 +54,16 @@ def final_folder(path: Path) -> Path:
 
 
 def write_run(out: Path, case_toml: str, series: list[dict], joints: list[dict],
-              snapshots: dict[str, Any], summary: dict[str, Any]) -> None:
-    """Write every file of a run folder, each atomically; summary.json last, with its schema
-    version and a completeness marker, so that a valid summary means a complete folder."""
+              snapshots: dict[str, Any], summary: dict[str, Any],
+              imperfections: dict[str, Any] | None = None) -> None:
+    """Write every file of a run folder, each atomically (imperfections.csv only for an imperfect
+    arch); summary.json last, with its schema version and a completeness marker, so that a valid
+    summary means a complete folder."""
     out.mkdir(parents=True, exist_ok=True)
     write_text_atomically(out / CASE_FILE, case_toml)
+    if imperfections is not None:
+        write_atomically(out / IMPERFECTIONS_FILE,
+                         partial(pd.DataFrame(imperfections).to_csv, index=False, float_format="%.6g"))
     for name, rows in ((SERIES_FILE, series), (JOINTS_FILE, joints)):
         write_atomically(out / name, partial(pd.DataFrame(rows).to_csv, index=False, float_format="%.8g"))
     write_text_atomically(out / SNAPSHOTS_FILE, json.dumps(snapshots, indent=1, default=_json_default))

@@ -1,0 +1,66 @@
+"""Cross-check finished runs against the rigid-block limit analysis of the same case: du and the
+collapse hinges of each run beside du_rigid and the rigid mechanism, as a Markdown table.
+
+    .venv/bin/python scripts/limit_check.py reports/movements/* --out reports/movements/limit_check.md
+
+A stiff-joint run should approach the rigid limit from below, on the same hinges within one
+interface (docs/validation.md). Exit code 1 if a run differs from its limit by more than
+--tolerance (default 5 %) or a hinge by more than one interface.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from yadearch.atomic import write_text_atomically
+from yadearch.case.config import load_case
+from yadearch.results.rundir import CASE_FILE, read_summary
+from yadearch.solve.limit import limit_analysis
+from yadearch.studies.robustness import same_hinge_set
+
+HINGE_SHIFT = 1  # interfaces a DEM hinge may sit from the rigid one
+
+
+def check(folder: Path, tolerance: float) -> tuple[str, bool]:
+    """One table row for the run in `folder` and whether it passes."""
+    case = load_case(folder / CASE_FILE)
+    summary = read_summary(folder)
+    limit = limit_analysis(case)
+    hinges = " ".join(f"{h['interface']}{h['side']}" for h in summary.get("hinges_at_collapse") or [])
+    rigid = " ".join(limit.collapse_hinges)
+    du, du_rigid = summary.get("du_mm"), limit.du_rigid_mm
+    if du is None or du_rigid is None:
+        return (f"| {folder.name} | {case.loading.settlement_direction_deg:g} | {case.interface.kn_N_per_mm3:g} "
+                f"| {du} | {du_rigid} | - | {hinges} | {rigid} | no |"), False
+    gap = (du - du_rigid) / du_rigid
+    ok = abs(gap) <= tolerance and same_hinge_set(hinges, rigid, HINGE_SHIFT)
+    return (f"| {folder.name} | {case.loading.settlement_direction_deg:g} | {case.interface.kn_N_per_mm3:g} "
+            f"| {du:.2f} | {du_rigid:.2f} | {gap:+.1%} | {hinges} | {rigid} | {'yes' if ok else 'no'} |"), ok
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("runs", nargs="+", type=Path, help="finished run folders")
+    parser.add_argument("--tolerance", type=float, default=0.05, help="largest |du / du_rigid - 1|")
+    parser.add_argument("--out", type=Path, help="also write the table to this Markdown file")
+    args = parser.parse_args()
+    lines = ["| run | direction (deg) | kn (N/mm3) | du (mm) | du_rigid (mm) | du / du_rigid - 1 "
+             "| DEM hinges | rigid hinges | within tolerance |", "|---|---|---|---|---|---|---|---|---|"]
+    passed = True
+    for folder in args.runs:
+        if not (folder / CASE_FILE).is_file():
+            continue
+        row, ok = check(folder, args.tolerance)
+        lines.append(row)
+        passed &= ok
+    text = "\n".join(lines) + "\n"
+    print(text, end="")
+    if args.out:
+        write_text_atomically(args.out, text)
+    return 0 if passed else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

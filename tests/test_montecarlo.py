@@ -1,0 +1,58 @@
+"""Monte Carlo campaigns without YADE: the samples' seeds and names, du's statistics, the hinge
+frequencies, the Markdown summary and the figures, from a made-up results table."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from yadearch.plotting.montecarlo import du_amplitude_figure, du_distribution_figure, hinge_frequency_figure
+from yadearch.studies.montecarlo import SEED_KEY, du_statistics, hinge_frequencies, sample_rows, summary_markdown
+
+
+def _table(n: int = 40) -> pd.DataFrame:
+    rng = np.random.default_rng(0)
+    return pd.DataFrame({
+        "run": [f"s{i}" for i in range(n)], "status": ["done"] * (n - 1) + ["failed"],
+        "du_mm": np.r_[rng.normal(60.0, 5.0, n - 1), np.nan],
+        "edge_radius_mm": np.repeat([0.5, 1.0], n // 2),
+        "hinge_A": pd.array([11 if i % 4 else 12 for i in range(n)], dtype="Int64"),
+        "hinge_B": pd.array([30] * n, dtype="Int64"), "hinge_C": pd.array([56] * n, dtype="Int64"),
+        "hinge_D": pd.array([1] * n, dtype="Int64")})
+
+
+def test_samples_take_consecutive_seeds_at_every_amplitude_level():
+    rows = sample_rows(3, 10)
+    assert [r[SEED_KEY] for r in rows] == [10, 11, 12] and [r["run"] for r in rows] == ["s10", "s11", "s12"]
+    levels = sample_rows(2, 1, {"edge_radius_mm": [0.5, 1.0]})
+    assert [(r["edge_radius_mm"], r[SEED_KEY]) for r in levels] == [(0.5, 1), (0.5, 2), (1.0, 1), (1.0, 2)]
+    assert len({r["run"] for r in levels}) == 4
+    assert sample_rows(5, 0)[:3] == sample_rows(3, 0)  # more samples keep the first ones
+    with pytest.raises(ValueError, match="samples"):
+        sample_rows(0, 1)
+
+
+def test_du_statistics_are_the_median_and_the_5_95_band_of_the_finished_samples():
+    stats = du_statistics(pd.Series([1.0, 2.0, 3.0, np.nan, 4.0, 5.0]))
+    assert stats["n"] == 5 and stats["median"] == 3.0
+    assert stats["low"] == pytest.approx(1.2) and stats["high"] == pytest.approx(4.8)
+
+
+def test_hinge_frequencies_count_each_label_per_interface_over_finished_samples():
+    frequencies = hinge_frequencies(_table())
+    a = frequencies[frequencies["hinge"] == "A"].set_index("interface")["count"]
+    assert a.to_dict() == {11: 29, 12: 10}  # 39 finished: every fourth (0, 4, ..., 36) at 12
+    assert frequencies.groupby("hinge")["share"].sum().round(9).eq(1.0).all()
+
+
+def test_the_summary_and_the_figures_describe_the_campaign(tmp_path):
+    table = _table()
+    text = summary_markdown(table, ["edge_radius_mm"])
+    assert "39 of 40 samples done (1 failed)" in text
+    assert "| 0.5 | 20 |" in text and "| 1 | 19 |" in text
+    assert "- A: 11: 74%, 12: 26%" in text
+    for paths in (du_distribution_figure(table, tmp_path / "du", reference_du_mm=70.0),
+                  hinge_frequency_figure(table, tmp_path / "hinges"),
+                  du_amplitude_figure(table, "edge_radius_mm", tmp_path / "amp")):
+        assert all(p.is_file() and p.stat().st_size > 1000 for p in paths)

@@ -1,0 +1,60 @@
+"""`yadearch montecarlo`: seeded samples of an imperfect arch (optionally at several amplitude
+levels), resumable, with the distribution of du and of the hinges as a table, Markdown and figures."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+import pandas as pd
+
+from yadearch.cli.campaigns import parse_axes
+from yadearch.cli.options import case_options, pool_options, resolve_case, timeout_s
+from yadearch.errors import YadearchError
+from yadearch.studies.executors import open_pool
+from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE, du_statistics, levels, run_montecarlo
+
+
+@click.command()
+@case_options(with_kn=True)
+@click.option("--samples", type=click.IntRange(min=1), required=True, help="samples (seeds) per amplitude level")
+@click.option("--seed", type=click.IntRange(min=0, max=2**32 - 1), default=1, show_default=True,
+              help="seed of the first sample; sample i uses seed + i")
+@click.option("--param", "param_specs", multiple=True, metavar="NAME=VALUES",
+              help="an amplitude to sweep, e.g. --param edge_radius_mm=0.5,1,2 (samples at each level)")
+@click.option("--out", required=True, type=click.Path(file_okay=False),
+              help="campaign folder: run folders, results.csv, montecarlo.csv, montecarlo.md, figures")
+@pool_options
+def montecarlo(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
+               samples: int, seed: int, param_specs: tuple[str, ...], out: str, jobs: int | None,
+               scheduler: str | None, timeout_min: float | None) -> None:
+    """Run (or resume) seeded samples of the case's imperfections; write the distribution of du and
+    of the hinges (montecarlo.csv, montecarlo.md, figures)."""
+    base = resolve_case(preset_name, case_file, kn, settings)
+    axes = parse_axes(param_specs)
+    folder = Path(out)
+    with open_pool(jobs, scheduler) as pool:
+        click.echo(f"Monte Carlo {folder}: {samples} samples x {max(1, len(axes))} level(s) on {pool.where}")
+        table = run_montecarlo(base, folder, pool, samples, seed, axes, timeout_s=timeout_s(timeout_min))
+    stats = du_statistics(table.loc[table["status"] == "done", "du_mm"])
+    click.echo(f"{stats['n']} of {len(table)} samples done: median du {stats['median']:.2f} mm, "
+               f"5-95 % {stats['low']:.2f}-{stats['high']:.2f} mm -> {folder / MONTECARLO_FILE}, "
+               f"{folder / SUMMARY_FILE}")
+    _figures(table, folder, levels(table, axes))
+    failed = int((table["status"] == "failed").sum())
+    if failed:
+        raise YadearchError(f"{failed} of {len(table)} samples failed; reasons in {folder / MONTECARLO_FILE}")
+
+
+def _figures(table: pd.DataFrame, folder: Path, level_columns: list[str]) -> None:
+    from yadearch.plotting.montecarlo import du_amplitude_figure, du_distribution_figure, hinge_frequency_figure
+
+    try:
+        paths = du_distribution_figure(table, folder / "du_distribution")
+        paths += hinge_frequency_figure(table, folder / "hinge_positions")
+        for column in level_columns:
+            paths += du_amplitude_figure(table, column, folder / f"du_vs_{column}")
+    except ValueError as exc:
+        click.echo(f"no figure: {exc}", err=True)
+        return
+    click.echo(f"figures -> {', '.join(str(p) for p in paths if p.suffix == '.pdf')}")

@@ -1,0 +1,169 @@
+"""Geometric imperfections of the voussoirs' joint faces as initial gap profiles (pure numpy).
+
+A dry joint between imperfect faces does not close at once: at abscissa s across the joint the two
+faces stand apart by a gap g(s) >= 0, and the Winkler pressure is kn max(0, closure(s) - g(s))
+(docs/theory.md, "Imperfections"). Three kinds of defect build g, each drawn per edge or per joint
+from one seed so that one seed gives one geometry:
+
+- worn edges: the intrados and extrados edges of each voussoir face rounded (a quarter circle) or
+  chamfered (45 deg): the contact cannot reach the corner and a hinge's pivot moves inward;
+- faces not parallel: an angle between a joint's two faces, a wedge that touches at one end;
+- faces not flat: a convex (touching mid-joint) or hollow (touching at the ends) parabolic bump.
+
+The two faces of a joint add their gaps; the profile is then shifted so that its smallest gap is 0
+(the blocks are assembled touching). The support blocks' faces are perfect.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from yadearch.model.units import to_mm, to_mrad
+
+ROUND, CHAMFER = "round", "chamfer"
+EDGE_NODES = 17  # profile nodes across each worn edge (chords of the rounding 5.6 deg apart: they stand
+# off the quarter circle by at most 0.12 % of its radius)
+MIDDLE_NODES = 33  # profile nodes between the two worn edges (the bump is piecewise linear between them)
+PROFILE_NODES = 2 * EDGE_NODES + MIDDLE_NODES
+MAX_EDGE_FRACTION = 0.45  # an edge's wear may take at most this fraction of a joint's length
+
+
+@dataclass(frozen=True)
+class ImperfectionAmplitudes:
+    """The imperfection model's parameters in SI (m, rad): each a mean and a standard deviation."""
+
+    edge_shape: str = ROUND
+    edge_size: float = 0.0
+    edge_size_sd: float = 0.0
+    face_angle: float = 0.0
+    face_angle_sd: float = 0.0
+    face_bump: float = 0.0
+    face_bump_sd: float = 0.0
+
+    @property
+    def perfect(self) -> bool:
+        return not any((self.edge_size, self.edge_size_sd, self.face_angle, self.face_angle_sd,
+                        self.face_bump, self.face_bump_sd))
+
+
+@dataclass(frozen=True)
+class JointDefects:
+    """The defects drawn for each joint (arrays over joints, SI). Edge sizes are per face: the left
+    block's face (its right end) and the right block's face, at the intrados and at the extrados."""
+
+    left_intrados_edge: np.ndarray
+    left_extrados_edge: np.ndarray
+    right_intrados_edge: np.ndarray
+    right_extrados_edge: np.ndarray
+    face_angle: np.ndarray
+    face_bump: np.ndarray
+    edge_shape: str
+
+    @property
+    def n_joints(self) -> int:
+        return len(self.face_angle)
+
+
+@dataclass(frozen=True)
+class GapProfiles:
+    """Each joint's initial gap (m) at nodes given as fractions of its length from the intrados
+    (0) to the extrados (1); `imperfect` marks the joints whose gap is not zero everywhere."""
+
+    fraction: np.ndarray  # (n_joints, PROFILE_NODES), non-decreasing along each row
+    gap: np.ndarray  # (n_joints, PROFILE_NODES), >= 0, smallest 0
+    imperfect: np.ndarray  # (n_joints,) bool
+
+
+def draw_defects(amplitudes: ImperfectionAmplitudes, n_joints: int, seed: int,
+                 lengths: np.ndarray) -> JointDefects:
+    """Draw every joint's defects from `seed`. The first and last joints (against the supports) get
+    the voussoir's face defects on their voussoir side only. Edge sizes below 0 count as 0 and
+    above MAX_EDGE_FRACTION of the joint's length are capped there."""
+    rng = np.random.default_rng(seed)
+    cap = MAX_EDGE_FRACTION * np.asarray(lengths, dtype=float)
+
+    def edges() -> np.ndarray:
+        drawn = rng.normal(amplitudes.edge_size, amplitudes.edge_size_sd, n_joints)
+        return np.clip(drawn, 0.0, cap)
+
+    left_in, left_out, right_in, right_out = edges(), edges(), edges(), edges()
+    left_in[0] = left_out[0] = 0.0  # the left support's face
+    right_in[-1] = right_out[-1] = 0.0  # the right support's face
+    angle = rng.normal(amplitudes.face_angle, amplitudes.face_angle_sd, n_joints)
+    bump = rng.normal(amplitudes.face_bump, amplitudes.face_bump_sd, n_joints)
+    return JointDefects(left_in, left_out, right_in, right_out, angle, bump, amplitudes.edge_shape)
+
+
+def edge_gap(depth_into_edge: np.ndarray, size: float, shape: str) -> np.ndarray:
+    """How far a worn edge of `size` stands back from the face plane at a distance from the corner
+    (0 at and beyond `size`): a quarter circle of radius `size`, or a 45 deg chamfer."""
+    inside = np.clip(size - depth_into_edge, 0.0, None)
+    if shape == CHAMFER:
+        return inside
+    return size - np.sqrt(np.clip(size**2 - inside**2, 0.0, None))
+
+
+def joint_gap(s: np.ndarray, length: float, defects: JointDefects, j: int) -> np.ndarray:
+    """The gap (m) of joint `j` at abscissae `s` (m from the intrados), before the shift that
+    makes its smallest value 0."""
+    shape = defects.edge_shape
+    gap = (edge_gap(s, defects.left_intrados_edge[j], shape)
+           + edge_gap(s, defects.right_intrados_edge[j], shape)
+           + edge_gap(length - s, defects.left_extrados_edge[j], shape)
+           + edge_gap(length - s, defects.right_extrados_edge[j], shape))
+    angle = defects.face_angle[j]
+    gap = gap + (angle * s if angle >= 0 else -angle * (length - s))
+    bump = defects.face_bump[j]
+    centred = (2.0 * s / length - 1.0) ** 2
+    return gap + (bump * centred if bump >= 0 else -bump * (1.0 - centred))
+
+
+def profile_fractions(length: float, intrados_edge: float, extrados_edge: float) -> np.ndarray:
+    """PROFILE_NODES fractions of a joint: EDGE_NODES across each worn edge, MIDDLE_NODES evenly
+    between."""
+    lo, hi = intrados_edge / length, 1.0 - extrados_edge / length
+    # evenly spaced in the rounding's angle: a hinge turned by a touches a rounded edge where its
+    # slope is a, and the chords then follow the quarter circle equally well at every rotation
+    bend = 1.0 - np.sin(np.linspace(np.pi / 2, 0.0, EDGE_NODES))  # 0 (corner) -> 1 (edge's end)
+    inner = lo * bend
+    middle = np.linspace(lo, hi, MIDDLE_NODES + 2)[1:-1]
+    outer = 1.0 - (1.0 - hi) * bend[::-1]
+    return np.concatenate([inner, middle, outer])
+
+
+def gap_profiles(defects: JointDefects, lengths: np.ndarray) -> GapProfiles:
+    """The joints' gap profiles from their drawn defects."""
+    n = defects.n_joints
+    fraction = np.empty((n, PROFILE_NODES))
+    gap = np.empty((n, PROFILE_NODES))
+    for j in range(n):
+        length = float(lengths[j])
+        intrados = max(defects.left_intrados_edge[j], defects.right_intrados_edge[j])
+        extrados = max(defects.left_extrados_edge[j], defects.right_extrados_edge[j])
+        fraction[j] = profile_fractions(length, intrados, extrados)
+        raw = joint_gap(fraction[j] * length, length, defects, j)
+        gap[j] = raw - raw.min()
+    return GapProfiles(fraction, gap, gap.max(axis=1) > 0.0)
+
+
+def defects_table(defects: JointDefects, profiles: GapProfiles, lengths: np.ndarray) -> dict[str, np.ndarray]:
+    """One row per joint, in the user's units (mm, mrad), for the run folder's imperfections.csv."""
+    return {
+        "interface": np.arange(1, defects.n_joints + 1),
+        "left_intrados_edge_mm": to_mm(defects.left_intrados_edge),
+        "left_extrados_edge_mm": to_mm(defects.left_extrados_edge),
+        "right_intrados_edge_mm": to_mm(defects.right_intrados_edge),
+        "right_extrados_edge_mm": to_mm(defects.right_extrados_edge),
+        "face_angle_mrad": to_mrad(defects.face_angle),
+        "face_bump_mm": to_mm(defects.face_bump),
+        "largest_gap_mm": to_mm(profiles.gap.max(axis=1)),
+        "first_contact_mm": to_mm(_first_contact(profiles) * lengths),
+    }
+
+
+def _first_contact(profiles: GapProfiles) -> np.ndarray:
+    """Fraction of each joint's length from the intrados where its faces first touch."""
+    rows = np.arange(len(profiles.gap))
+    return profiles.fraction[rows, np.argmin(profiles.gap, axis=1)]

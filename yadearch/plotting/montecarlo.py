@@ -1,0 +1,89 @@
+"""Figures of a Monte Carlo campaign: du's distribution (histogram and ECDF with the median and the
+5-95 % band), where each hinge formed (share of samples per interface), and du against an
+imperfection amplitude (median and band per level)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+import numpy as np
+import pandas as pd
+from matplotlib.figure import Figure
+
+from yadearch.plotting.run_figures import save_figure
+from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
+from yadearch.studies.montecarlo import BAND, HINGE_LABELS, du_statistics, hinge_frequencies
+
+HINGE_SIDES = {"A": "intrados", "B": "extrados", "C": "extrados, moving support",
+               "D": "extrados, fixed support"}
+BINS = 20  # histogram bins at most
+
+
+def _done(table: pd.DataFrame) -> pd.DataFrame:
+    done = table[(table["status"] == "done") & table["du_mm"].notna()]
+    if done.empty:
+        raise ValueError("no finished sample to plot")
+    return done
+
+
+def du_distribution_figure(table: pd.DataFrame, stem: Path, reference_du_mm: float | None = None,
+                           reference_label: str = "perfect arch") -> list[Path]:
+    """Histogram and empirical CDF of the samples' du with the median and the band marked (and a
+    reference du, e.g. the perfect arch's, when given): STEM.pdf and STEM.png."""
+    du = _done(table)["du_mm"].to_numpy(dtype=float)
+    stats = du_statistics(pd.Series(du))
+    with matplotlib.rc_context(SWEEP_STYLE):
+        fig = Figure(figsize=(COLUMN_WIDTH_IN, 4.0), layout="constrained")
+        ax_hist, ax_cdf = fig.subplots(2, 1, sharex=True)
+        ax_hist.hist(du, bins=min(BINS, max(5, du.size // 5)), color="C0", alpha=0.75)
+        ax_hist.set_ylabel("samples")
+        ordered = np.sort(du)
+        ax_cdf.step(ordered, np.arange(1, du.size + 1) / du.size, where="post", color="C0")
+        ax_cdf.set_ylabel("share of samples with du below")
+        ax_cdf.set_xlabel("collapse displacement du (mm)")
+        for ax in (ax_hist, ax_cdf):
+            ax.axvspan(stats["low"], stats["high"], color="C0", alpha=0.12,
+                       label=f"{BAND[0]:.0%}-{BAND[1]:.0%} band")
+            ax.axvline(stats["median"], color="C3", lw=1, label=f"median {stats['median']:.1f} mm")
+            if reference_du_mm is not None:
+                ax.axvline(reference_du_mm, color="k", ls="--", lw=0.8,
+                           label=f"{reference_label} {reference_du_mm:.1f} mm")
+        ax_hist.legend(loc="upper left", frameon=False)
+        ax_hist.set_title(f"{du.size} samples", fontsize=8)
+        return list(save_figure(fig, stem))
+
+
+def hinge_frequency_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
+    """Share of the samples whose hinge A, B, C or D formed at each interface: STEM.pdf, STEM.png."""
+    frequencies = hinge_frequencies(_done(table))
+    with matplotlib.rc_context(SWEEP_STYLE):
+        fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
+        ax = fig.subplots()
+        for k, label in enumerate(HINGE_LABELS):
+            rows = frequencies[frequencies["hinge"] == label]
+            ax.bar(rows["interface"], rows["share"], width=0.8, color=f"C{k}",
+                   label=f"{label} ({HINGE_SIDES[label]})")
+        ax.set_xlabel("interface (1 = left springing)")
+        ax.set_ylabel("share of samples")
+        ax.set_ylim(0, 1.3)
+        ax.legend(loc="upper center", ncol=2, frameon=False)
+        return list(save_figure(fig, stem))
+
+
+def du_amplitude_figure(table: pd.DataFrame, column: str, stem: Path, label: str | None = None) -> list[Path]:
+    """Median du and its band against the amplitude in `column`, samples as dots: STEM.pdf, .png."""
+    done = _done(table)
+    levels = sorted(done[column].unique())
+    stats = [du_statistics(done.loc[done[column] == level, "du_mm"]) for level in levels]
+    with matplotlib.rc_context(SWEEP_STYLE):
+        fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
+        ax = fig.subplots()
+        ax.plot(done[column], done["du_mm"], ".", color="0.6", ms=2.5, label="samples")
+        ax.fill_between(levels, [s["low"] for s in stats], [s["high"] for s in stats], color="C0",
+                        alpha=0.2, label=f"{BAND[0]:.0%}-{BAND[1]:.0%} band")
+        ax.plot(levels, [s["median"] for s in stats], "o-", color="C0", ms=3.5, lw=1, label="median")
+        ax.set_xlabel(label or column)
+        ax.set_ylabel("collapse displacement du (mm)")
+        ax.legend(frameon=False)
+        return list(save_figure(fig, stem))

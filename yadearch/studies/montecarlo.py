@@ -1,0 +1,121 @@
+"""Monte Carlo campaigns of imperfect arches: one run per seed (and per amplitude level, when
+amplitudes are swept), resumable like any campaign, then the distribution of du and of the hinges.
+
+Sample i of a campaign seeded S draws its joints' defects from seed S + i, so a campaign extended
+from 100 to 200 samples keeps its first 100 runs. docs/usage.md shows the command.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from yadearch.atomic import write_atomically, write_text_atomically
+from yadearch.case.config import ArchCase
+from yadearch.errors import RunFolderError
+from yadearch.results.rundir import read_summary
+from yadearch.studies.campaign import run_campaign
+from yadearch.studies.executors import Pool
+from yadearch.studies.grid import RUN_COLUMN, grid, run_tag
+
+SEED_KEY = "imperfections.seed"
+MONTECARLO_FILE = "montecarlo.csv"
+SUMMARY_FILE = "montecarlo.md"
+BAND = (0.05, 0.95)  # the quantiles of du's band
+HINGE_LABELS = ("A", "B", "C", "D")
+
+
+def sample_rows(samples: int, seed: int, axes: dict[str, list[Any]] | None = None) -> list[dict[str, Any]]:
+    """The campaign's rows: `samples` seeds from `seed` at every combination of the swept `axes`,
+    named `<amplitudes>_s<seed>` (or `s<seed>` without axes)."""
+    if samples < 1:
+        raise ValueError(f"samples must be >= 1, got {samples}")
+    rows = []
+    for level in (grid(axes) if axes else [{}]):
+        tag = run_tag(level) if level else ""
+        for i in range(samples):
+            rows.append({**level, SEED_KEY: seed + i,
+                         RUN_COLUMN: f"{tag}_s{seed + i}" if tag else f"s{seed + i}"})
+    return rows
+
+
+def run_montecarlo(base: ArchCase, out: Path, pool: Pool, samples: int, seed: int,
+                   axes: dict[str, list[Any]] | None = None, timeout_s: float | None = None,
+                   progress: bool = True) -> pd.DataFrame:
+    """Run (or resume) the campaign into `out`, then write montecarlo.csv (results with each
+    sample's imperfection summary) and montecarlo.md; returns the table."""
+    out = Path(out)
+    results = run_campaign(base, sample_rows(samples, seed, axes), out, pool, timeout_s=timeout_s,
+                           progress=progress)
+    table = with_imperfections(results, out)
+    write_atomically(out / MONTECARLO_FILE, lambda tmp: table.to_csv(tmp, index=False, float_format="%.6g"))
+    write_text_atomically(out / SUMMARY_FILE, summary_markdown(table, levels(table, axes)))
+    return table
+
+
+def with_imperfections(results: pd.DataFrame, out: Path) -> pd.DataFrame:
+    """The campaign's results with each finished run's imperfection summary (summary.json)."""
+    extra = []
+    for _, row in results.iterrows():
+        try:
+            extra.append(read_summary(out / row["folder"]).get("imperfections", {}))
+        except RunFolderError:
+            extra.append({})
+    return pd.concat([results.reset_index(drop=True), pd.DataFrame(extra)], axis=1)
+
+
+def levels(table: pd.DataFrame, axes: dict[str, list[Any]] | None) -> list[str]:
+    """The table's columns of the swept amplitudes (empty without axes)."""
+    return [key.split(".")[-1] for key in axes or {} if key.split(".")[-1] in table.columns]
+
+
+def du_statistics(du: pd.Series) -> dict[str, float]:
+    """Count, median, band and mean of the finished samples' du (mm)."""
+    values = du.dropna().to_numpy(dtype=float)
+    if values.size == 0:
+        return {"n": 0, "median": math.nan, "low": math.nan, "high": math.nan, "mean": math.nan}
+    low, high = np.quantile(values, BAND)
+    return {"n": int(values.size), "median": float(np.median(values)), "low": float(low),
+            "high": float(high), "mean": float(values.mean())}
+
+
+def hinge_frequencies(table: pd.DataFrame) -> pd.DataFrame:
+    """How often each of the hinges A-D formed at each interface: one row a (label, interface)."""
+    rows = []
+    done = table[table["status"] == "done"]
+    for label in HINGE_LABELS:
+        counts = done[f"hinge_{label}"].dropna().astype(int).value_counts()
+        for interface, count in sorted(counts.items()):
+            rows.append({"hinge": label, "interface": interface, "count": int(count),
+                         "share": count / len(done) if len(done) else math.nan})
+    return pd.DataFrame(rows, columns=["hinge", "interface", "count", "share"])
+
+
+def summary_markdown(table: pd.DataFrame, level_columns: list[str]) -> str:
+    """The campaign as Markdown: du's distribution (per amplitude level) and the hinge positions."""
+    low, high = (f"{q:.0%}" for q in BAND)
+    lines = ["# Monte Carlo of imperfect arches", "",
+             f"{int((table['status'] == 'done').sum())} of {len(table)} samples done"
+             f" ({int((table['status'] == 'failed').sum())} failed).", "",
+             f"| {' | '.join(level_columns) + ' | ' if level_columns else ''}samples | median du (mm) "
+             f"| {low}-{high} band (mm) | mean (mm) |",
+             "|" + "---|" * (len(level_columns) + 4)]
+    keys = table[level_columns].drop_duplicates().sort_values(level_columns).itertuples(index=False) \
+        if level_columns else [()]
+    for key in keys:
+        group = table[(table[level_columns] == tuple(key)).all(axis=1)] if level_columns else table
+        stats = du_statistics(group.loc[group["status"] == "done", "du_mm"])
+        prefix = "".join(f"{value:g} | " for value in key)
+        lines.append(f"| {prefix}{stats['n']} | {stats['median']:.2f} | {stats['low']:.2f}-"
+                     f"{stats['high']:.2f} | {stats['mean']:.2f} |")
+    lines += ["", "Hinge positions (interface: share of the samples):", ""]
+    frequencies = hinge_frequencies(table)
+    for label in HINGE_LABELS:
+        rows = frequencies[frequencies["hinge"] == label]
+        listed = ", ".join(f"{r.interface}: {r.share:.0%}" for r in rows.itertuples())
+        lines.append(f"- {label}: {listed or 'none'}")
+    return "\n".join(lines) + "\n"
