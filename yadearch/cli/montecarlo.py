@@ -3,6 +3,7 @@ levels), resumable, with the distribution of du and of the hinges as a table, Ma
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import click
@@ -34,7 +35,8 @@ def montecarlo(preset_name: str | None, case_file: str | None, kn: float | None,
     axes = parse_axes(param_specs)
     folder = Path(out)
     with open_pool(jobs, scheduler) as pool:
-        click.echo(f"Monte Carlo {folder}: {samples} samples x {max(1, len(axes))} level(s) on {pool.where}")
+        n_levels = math.prod(len(values) for values in axes.values())
+        click.echo(f"Monte Carlo {folder}: {samples} samples x {n_levels} level(s) on {pool.where}")
         table = run_montecarlo(base, folder, pool, samples, seed, axes, timeout_s=timeout_s(timeout_min))
     stats = du_statistics(table.loc[table["status"] == "done", "du_mm"])
     click.echo(f"{stats['n']} of {len(table)} samples done: median du {stats['median']:.2f} mm, "
@@ -47,13 +49,10 @@ def montecarlo(preset_name: str | None, case_file: str | None, kn: float | None,
 
 
 def _figures(table: pd.DataFrame, folder: Path, level_columns: list[str]) -> None:
-    from yadearch.plotting.montecarlo import du_amplitude_figure, du_distribution_figure, hinge_frequency_figure
+    from yadearch.plotting.montecarlo import campaign_figures
 
     try:
-        paths = du_distribution_figure(table, folder / "du_distribution")
-        paths += hinge_frequency_figure(table, folder / "hinge_positions")
-        for column in level_columns:
-            paths += du_amplitude_figure(table, column, folder / f"du_vs_{column}")
+        paths = campaign_figures(table, folder, level_columns)
     except ValueError as exc:
         click.echo(f"no figure: {exc}", err=True)
         return

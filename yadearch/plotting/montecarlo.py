@@ -87,3 +87,37 @@ def du_amplitude_figure(table: pd.DataFrame, column: str, stem: Path, label: str
         ax.set_ylabel("collapse displacement du (mm)")
         ax.legend(frameon=False)
         return list(save_figure(fig, stem))
+
+
+def campaign_figures(table: pd.DataFrame, folder: Path, level_columns: list[str]) -> list[Path]:
+    """A campaign's figures in `folder`: du's distribution, the hinge positions and du against each
+    swept amplitude. ValueError if no sample finished."""
+    paths = du_distribution_figure(table, folder / "du_distribution")
+    paths += hinge_frequency_figure(table, folder / "hinge_positions")
+    for column in level_columns:
+        paths += du_amplitude_figure(table, column, folder / f"du_vs_{column}")
+    return paths
+
+
+def amplitude_panels_figure(panels: list[tuple[pd.DataFrame, str, str]], stem: Path, perfect_du_mm: float,
+                            target_du_mm: float, target_label: str) -> list[Path]:
+    """One panel per imperfection kind (table, amplitude column, axis label): median du and band
+    against the amplitude from the perfect arch at 0, with the target du dashed: STEM.pdf, .png."""
+    with matplotlib.rc_context(SWEEP_STYLE):
+        fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, 2.4), layout="constrained")
+        axes = fig.subplots(1, len(panels), sharey=True, squeeze=False)[0]
+        for ax, (table, column, label) in zip(axes, panels):
+            done = _done(table)
+            levels = [0.0] + sorted(float(v) for v in done[column].unique())
+            stats = [du_statistics(done.loc[np.isclose(done[column], level), "du_mm"]) for level in levels[1:]]
+            medians = [perfect_du_mm] + [s["median"] for s in stats]
+            ax.plot(done[column], done["du_mm"], ".", color="0.6", ms=2.5, label="samples")
+            ax.fill_between(levels, [perfect_du_mm] + [s["low"] for s in stats],
+                            [perfect_du_mm] + [s["high"] for s in stats], color="C0", alpha=0.2,
+                            label=f"{BAND[0]:.0%}-{BAND[1]:.0%} band")
+            ax.plot(levels, medians, "o-", color="C0", ms=3.5, lw=1, label="median")
+            ax.axhline(target_du_mm, color="C3", ls="--", lw=0.8, label=target_label)
+            ax.set_xlabel(label)
+        axes[0].set_ylabel("collapse displacement du (mm)")
+        axes[0].legend(frameon=False, loc="lower left")
+        return list(save_figure(fig, stem))

@@ -1,0 +1,109 @@
+"""The imperfection study: the accurate arch (set 2's kn) with explicit voussoir defects, each kind's
+amplitude raised until the median du reaches set 1's experiment (48.9 mm), the equivalent kn of every
+amplitude (from the kn sweep) and the hinge positions against set 1's.
+
+    .venv/bin/python scripts/imperfection_study.py [--out reports/imperfections] [--jobs 2]
+        [--sweep reports/kn-sweep] [--only edge,angle] [--report-only]
+
+Every campaign resumes where it stopped (run folders of the same case are reused), so the study can
+be extended or interrupted; the report (imperfections.md) is rewritten from what is finished.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from pathlib import Path
+
+import pandas as pd
+
+from yadearch.atomic import write_text_atomically
+from yadearch.case import reference
+from yadearch.case.config import preset
+from yadearch.plotting.montecarlo import amplitude_panels_figure, campaign_figures
+from yadearch.results.rundir import read_summary
+from yadearch.studies.executors import open_pool
+from yadearch.studies.imperfection_study import Study, amplitude_for, level_rows, table_markdown
+from yadearch.studies.montecarlo import MONTECARLO_FILE, run_montecarlo
+
+BASE_PRESET = "set2"  # accurate voussoirs: the CNC set's kn
+SEED = 1
+STUDIES = (
+    Study("edge", "rounded edges, every edge alike", "edge_radius_mm", (1.0, 2.0, 3.0, 4.0, 6.0), 1),
+    Study("angle", "faces not parallel, random per joint (mean 0)", "face_angle_sd_mrad", (1.0, 2.0, 4.0), 3),
+    Study("bump", "faces not flat, random per joint (mean 0)", "face_bump_sd_mm", (0.02, 0.05, 0.1), 3),
+)
+UNITS = {"edge_radius_mm": "mm", "face_angle_sd_mrad": "mrad", "face_bump_sd_mm": "mm"}
+AXIS_LABELS = {"edge_radius_mm": "edge radius (mm)", "face_angle_sd_mrad": "face angle s.d. (mrad)",
+               "face_bump_sd_mm": "face bump s.d. (mm)"}
+PERFECT_RUN = Path("reports/set2")  # the perfect arch with set 2's joints (`yadearch reproduce`)
+REPORT = "imperfections.md"
+FIGURE = "du_vs_amplitude"
+
+
+def run_study(study: Study, out: Path, jobs: int) -> pd.DataFrame:
+    """Run (or resume) one campaign of the study and draw its figures; its montecarlo table."""
+    base = preset(BASE_PRESET).with_overrides({f"imperfections.{k}": v for k, v in study.fixed.items()})
+    with open_pool(jobs) as pool:
+        table = run_montecarlo(base, out / study.name, pool, study.samples, SEED, study.axes)
+    try:
+        campaign_figures(table, out / study.name, [study.parameter])
+    except ValueError as exc:
+        print(f"{study.name}: no figure ({exc})")
+    return table
+
+
+def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float) -> str:
+    """The study's Markdown (and its figure) from every campaign folder that holds a table."""
+    target = reference.SETS["set1"]["experimental"]["du_mm"]
+    kn = reference.SETS["set2"]["kn_N_per_mm3"]
+    lines = ["# Imperfections instead of a low kn", "",
+             f"Base: the paper's arch with set 2's accurate joints (kn {kn} N/mm³; the perfect arch gives "
+             f"{perfect_du_mm:.2f} mm, `{PERFECT_RUN}`). Each kind of defect is raised until the median du "
+             f"reaches set 1's experiment, {target} mm. Equivalent kn: the kn at which the perfect arch's du "
+             "(`reports/kn-sweep`, interpolated in log kn) equals the median. Regenerate: "
+             "`.venv/bin/python scripts/imperfection_study.py`.", ""]
+    panels = []
+    for study in STUDIES:
+        path = out / study.name / MONTECARLO_FILE
+        if not path.is_file():
+            continue
+        table = pd.read_csv(path)
+        panels.append((table, study.parameter, AXIS_LABELS[study.parameter]))
+        rows = level_rows(study, table, sweep)
+        amplitude = amplitude_for([{"level": 0.0, "median_du_mm": perfect_du_mm}, *rows], target)
+        unit = UNITS[study.parameter]
+        lines += [f"## {study.title} (`{study.parameter}`, {study.samples} sample(s) a level)", ""]
+        lines += table_markdown(rows, unit) + [""]
+        lines.append(f"Median du = {target} mm at {study.parameter} ≈ {amplitude:.3g} {unit}." if not
+                     math.isnan(amplitude) else f"No level brackets {target} mm.")
+        lines.append("")
+    if panels:
+        amplitude_panels_figure(panels, out / FIGURE, perfect_du_mm, target, f"set 1 experiment, {target} mm")
+        lines += [f"![du against each amplitude]({FIGURE}.png)", ""]
+    return "\n".join(lines)
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", default="reports/imperfections")
+    parser.add_argument("--jobs", type=int, default=2, help="runs at once (one core each)")
+    parser.add_argument("--sweep", default="reports/kn-sweep", help="campaign folder of the perfect arch's kn sweep")
+    parser.add_argument("--only", default="", help="comma-separated study names to run (default: all)")
+    parser.add_argument("--report-only", action="store_true", help="write the report from finished runs")
+    args = parser.parse_args()
+    out = Path(args.out)
+    chosen = [s for s in STUDIES if not args.only or s.name in args.only.split(",")]
+    if not args.report_only:
+        for study in chosen:
+            run_study(study, out, args.jobs)
+    perfect_du_mm = read_summary(PERFECT_RUN)["du_mm"]
+    text = report(out, pd.read_csv(Path(args.sweep) / "results.csv"), perfect_du_mm)
+    write_text_atomically(out / REPORT, text)
+    print(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

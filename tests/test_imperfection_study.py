@@ -1,0 +1,45 @@
+"""The imperfection study's pure parts: the equivalent kn of a du, the amplitude that reaches a
+target du, and the per-level table."""
+
+import math
+
+import pandas as pd
+import pytest
+
+from yadearch.studies.imperfection_study import Study, amplitude_for, equivalent_kn, level_rows
+
+SWEEP = pd.DataFrame({"kn_N_per_mm3": [0.1, 1.0, 0.5, 10.0, 100.0],
+                      "du_mm": [20.0, 60.0, 40.0, 90.0, 100.0],
+                      "status": ["done"] * 5})
+
+
+def test_equivalent_kn_interpolates_in_log_kn_between_the_bracketing_points():
+    assert equivalent_kn(40.0, SWEEP) == pytest.approx(0.5)
+    assert equivalent_kn(75.0, SWEEP) == pytest.approx(10 ** 0.5)  # halfway between kn 1 and 10
+    assert math.isnan(equivalent_kn(10.0, SWEEP)) and math.isnan(equivalent_kn(120.0, SWEEP))
+
+
+def test_equivalent_kn_takes_the_first_crossing_of_a_non_monotonic_curve():
+    dip = pd.DataFrame({"kn_N_per_mm3": [1.0, 2.0, 3.0, 4.0], "du_mm": [50.0, 70.0, 55.0, 80.0],
+                        "status": ["done"] * 4})
+    assert equivalent_kn(60.0, dip) == pytest.approx(2 ** 0.5)
+
+
+def test_amplitude_for_interpolates_between_the_levels_that_bracket_the_target():
+    rows = [{"level": 1.0, "median_du_mm": 80.0}, {"level": 2.0, "median_du_mm": 60.0},
+            {"level": 3.0, "median_du_mm": 40.0}]
+    assert amplitude_for(rows, 48.9) == pytest.approx(2.555)
+    assert math.isnan(amplitude_for(rows, 30.0))
+
+
+def test_level_rows_summarise_each_level_with_its_hinges():
+    study = Study("edge", "worn", "edge_radius_mm", (1.0, 2.0), 2)
+    table = pd.DataFrame({"edge_radius_mm": [1.0, 1.0, 2.0, 2.0], "du_mm": [78.0, 80.0, 40.0, math.nan],
+                          "status": ["done", "done", "done", "failed"],
+                          "hinge_A": [9, 10, 11, math.nan], "hinge_B": [28, 28, 27, math.nan],
+                          "hinge_C": [56] * 4, "hinge_D": [1] * 4})
+    first, second = level_rows(study, table, SWEEP)
+    assert (first["samples"], first["median_du_mm"]) == (2, 79.0)
+    assert first["equivalent_kn_N_per_mm3"] == pytest.approx(equivalent_kn(79.0, SWEEP))
+    assert "B 28 (100%)" in first["hinges"]
+    assert second["samples"] == 1 and second["median_du_mm"] == 40.0

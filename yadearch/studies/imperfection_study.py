@@ -1,0 +1,98 @@
+"""The imperfection study (docs/validation.md, "Imperfections instead of a low kn"): how large each
+kind of voussoir defect must be to bring the accurate arch's du down to set 1's, the kn that the
+low-kn model would need for the same median du, and where the hinges then form.
+
+Pure: it reads campaign tables (montecarlo.csv, the kn sweep's results.csv) and writes Markdown;
+`scripts/imperfection_study.py` runs the campaigns.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from yadearch.studies.montecarlo import du_statistics, hinge_frequencies
+
+
+@dataclass(frozen=True)
+class Study:
+    """One campaign of the study: an imperfection amplitude swept over `levels`, `samples` seeds
+    at each level, on the base case with `fixed` imperfection settings."""
+
+    name: str
+    title: str
+    parameter: str
+    levels: tuple[float, ...]
+    samples: int
+    fixed: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def axes(self) -> dict[str, list[Any]]:
+        return {self.parameter: list(self.levels)}
+
+
+def equivalent_kn(du_mm: float, sweep: pd.DataFrame) -> float:
+    """The smallest kn (N/mm3) at which the perfect arch's du(kn), interpolated linearly in log kn
+    between the sweep's points, reaches `du_mm`; nan outside the sweep's range of du."""
+    done = sweep[(sweep["status"] == "done") & sweep["du_mm"].notna()].sort_values("kn_N_per_mm3")
+    log_kn = np.log(done["kn_N_per_mm3"].to_numpy(dtype=float))
+    du = done["du_mm"].to_numpy(dtype=float)
+    if math.isnan(du_mm) or du.size == 0:
+        return math.nan
+    if du_mm <= du[0]:
+        return float(np.exp(log_kn[0])) if du_mm == du[0] else math.nan
+    for k in range(1, du.size):
+        if du[k - 1] < du_mm <= du[k]:
+            share = (du_mm - du[k - 1]) / (du[k] - du[k - 1])
+            return float(np.exp(log_kn[k - 1] + share * (log_kn[k] - log_kn[k - 1])))
+    return math.nan
+
+
+def modal_hinges(table: pd.DataFrame) -> str:
+    """Each hinge's most frequent interface and its share of the samples, e.g. "A 11 (67 %), B 27"."""
+    frequencies = hinge_frequencies(table)
+    parts = []
+    for label, rows in frequencies.groupby("hinge", sort=True):
+        listed = ", ".join(f"{r.interface} ({r.share:.0%})" for r in
+                           rows.sort_values("count", ascending=False).head(2).itertuples())
+        parts.append(f"{label} {listed}")
+    return "; ".join(parts) or "—"
+
+
+def level_rows(study: Study, table: pd.DataFrame, sweep: pd.DataFrame) -> list[dict[str, Any]]:
+    """Per level of a study: samples, median du and its band, equivalent kn, hinge positions."""
+    rows = []
+    for level in study.levels:
+        group = table[np.isclose(table[study.parameter].astype(float), level)]
+        done = group[group["status"] == "done"]
+        stats = du_statistics(done["du_mm"])
+        rows.append({"study": study.name, "parameter": study.parameter, "level": level,
+                     "samples": stats["n"], "median_du_mm": stats["median"], "low_du_mm": stats["low"],
+                     "high_du_mm": stats["high"], "equivalent_kn_N_per_mm3": equivalent_kn(stats["median"], sweep),
+                     "hinges": modal_hinges(done)})
+    return rows
+
+
+def amplitude_for(rows: list[dict[str, Any]], target_du_mm: float) -> float:
+    """The amplitude at which the median du reaches `target_du_mm`, interpolated linearly between
+    the levels that bracket it (du falls as the amplitude grows); nan if none does."""
+    levels = [(r["level"], r["median_du_mm"]) for r in rows if not math.isnan(r["median_du_mm"])]
+    for (a0, du0), (a1, du1) in zip(levels, levels[1:]):
+        if du1 <= target_du_mm <= du0 and du0 != du1:
+            return a0 + (du0 - target_du_mm) / (du0 - du1) * (a1 - a0)
+    return math.nan
+
+
+def table_markdown(rows: list[dict[str, Any]], unit: str) -> list[str]:
+    """A study's levels as a Markdown table."""
+    lines = [f"| amplitude ({unit}) | samples | median du (mm) | 5-95 % (mm) | equivalent kn (N/mm³) "
+             "| hinges (interface, share) |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        kn = r["equivalent_kn_N_per_mm3"]
+        lines.append(f"| {r['level']:g} | {r['samples']} | {r['median_du_mm']:.2f} | {r['low_du_mm']:.2f}-"
+                     f"{r['high_du_mm']:.2f} | {'—' if math.isnan(kn) else f'{kn:.3g}'} | {r['hinges']} |")
+    return lines
