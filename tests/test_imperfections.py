@@ -21,6 +21,7 @@ from yadearch.model.imperfections import (
     JointDefects,
     draw_defects,
     gap_profiles,
+    wedge_openings,
 )
 from yadearch.model.joint_law import JointLaw, joint_forces, joint_table
 
@@ -99,6 +100,19 @@ def test_a_wedge_closes_from_its_touching_end_before_the_joint_carries_full_load
             assert forces.compressed_length[0] == pytest.approx(WIDTH, rel=1e-9)
             expected = KN * DEPTH * (closure * WIDTH - angle * WIDTH**2 / 2)
             assert forces.normal_force[0] == pytest.approx(expected, rel=1e-9)
+
+
+@pytest.mark.parametrize("angle", [2e-3, -2e-3])
+def test_a_wedge_opens_the_real_faces_at_one_end_by_its_angle_times_the_length(angle):
+    """The wedge is the whole end gap of a tilted face (so a wedge pressed flat counts as a closed
+    joint, not as a hinge rotated by the angle); worn edges and bumps add nothing to it."""
+    defects = _defects(angle=angle)
+    intrados, extrados = wedge_openings(defects, np.array([WIDTH]))
+    gap = gap_profiles(defects, np.array([WIDTH])).gap[0]
+    assert (intrados[0], extrados[0]) == pytest.approx((gap[0], gap[-1]), abs=1e-15)
+    assert extrados[0] - intrados[0] == pytest.approx(angle * WIDTH)
+    worn = wedge_openings(_defects(intrados_edge=2e-3, bump=1e-4), np.array([WIDTH]))
+    assert worn == (pytest.approx([0.0]), pytest.approx([0.0]))
 
 
 def test_a_convex_bump_touches_in_the_middle_and_a_hollow_one_at_the_ends():

@@ -18,6 +18,7 @@ from yadearch.model.imperfections import (
     defects_table,
     draw_defects,
     gap_profiles,
+    wedge_openings,
 )
 
 
@@ -28,6 +29,10 @@ class ArchImperfections:
     defects: JointDefects
     profiles: GapProfiles
     lengths: np.ndarray  # joint lengths (m)
+
+    def wedge_openings(self) -> tuple[np.ndarray, np.ndarray]:
+        """The faces' wedge at each joint's intrados and extrados end (m)."""
+        return wedge_openings(self.defects, self.lengths)
 
     def table(self) -> dict[str, np.ndarray]:
         """imperfections.csv's columns: one row a joint, in mm and mrad."""

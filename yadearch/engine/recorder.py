@@ -3,7 +3,7 @@ the block positions, and the largest mobilised friction and slip of the equilibr
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -81,6 +81,10 @@ class Recorder:
         friction_use = np.divide(np.abs(shear), normal * tan_friction, out=np.zeros_like(shear),
                                  where=normal > 0.0)
         js = joint_states(self.scene.geometry, self.scene.pos0, pos, rot, points)
+        if self.scene.imperfections is not None:  # the real faces' openings: a wedge closed flat is closed
+            wedge_intrados, wedge_extrados = self.scene.imperfections.wedge_openings()
+            js = replace(js, opening_intrados=js.opening_intrados + wedge_intrados,
+                         opening_extrados=js.opening_extrados + wedge_extrados)
         rotation = hinge_rotation(js.opening_intrados, js.opening_extrados, self.scene.geometry.thickness)
         hinges = hinges_at(rotation, self.num.hinge_rotation_mrad * 1e-3)
         return {"pos": pos, "rot": rot, "js": js, "normal": normal, "shear": shear,

@@ -120,6 +120,15 @@ def joint_gap(s: np.ndarray, length: float, defects: JointDefects, j: int) -> np
     return gap + (bump * centred if bump >= 0 else -bump * (1.0 - centred))
 
 
+def wedge_openings(defects: JointDefects, lengths: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """How far the real faces of each joint stand apart at its intrados and extrados ends when the
+    nominal faces touch, from the faces' angle alone (m): what a joint's opening and hinge rotation
+    add so that a wedge closed flat under load counts as closed, not as a hinge. Worn edges and
+    bumps do not tilt the face and add nothing."""
+    wedge = defects.face_angle * np.asarray(lengths, dtype=float)
+    return np.clip(-wedge, 0.0, None), np.clip(wedge, 0.0, None)
+
+
 def profile_fractions(length: float, intrados_edge: float, extrados_edge: float) -> np.ndarray:
     """PROFILE_NODES fractions of a joint: EDGE_NODES across each worn edge, MIDDLE_NODES evenly
     between."""
