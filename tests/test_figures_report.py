@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from click.testing import CliRunner
-from test_analysis import BuiltRun, paper_like_run
+from test_analysis import BuiltHinge, BuiltRun, paper_like_run
 
 from yadearch.analysis import analyse_run, load_run
 from yadearch.analysis.blocks import block_centroids, case_geometry, snapshot_outlines
@@ -22,7 +22,7 @@ from yadearch.results.rundir import STIFFNESS_COLUMN, write_run
 CASE_TOML = """name = "{name}"
 
 [geometry]
-n_voussoirs = 10
+n_voussoirs = {voussoirs}
 embrace_deg = 125.0
 internal_radius_mm = 300.0
 thickness_mm = 24.0
@@ -63,18 +63,32 @@ def series_rows(built: BuiltRun) -> list[dict]:
     return rows
 
 
-def make_run(folder: Path, name: str = "set2", kn: float = 5.2) -> dict:
-    """A complete run folder with the paper-like hinges 1E 4I 7E 11E; returns its summary."""
+PAPER_HINGES = [{"interface": 1, "side": "E"}, {"interface": 12, "side": "I"}, {"interface": 30, "side": "E"},
+                {"interface": 56, "side": "E"}]
+COARSE_HINGES = [{"interface": 1, "side": "E"}, {"interface": 4, "side": "I"}, {"interface": 7, "side": "E"},
+                 {"interface": 11, "side": "E"}]
+
+
+def paper_arch_run() -> BuiltRun:
+    """paper_like_run's four hinges on the paper's 55-voussoir arch: 12I, 29-32E (peak 30), 56E, 1E."""
+    return BuiltRun([BuiltHinge({12: 1.0}, "I", opens_mm=5.0),
+                     BuiltHinge({29: 0.6, 30: 1.0, 31: 0.8, 32: 0.55}, "E", opens_mm=12.0),
+                     BuiltHinge({56: 1.0}, "E", opens_mm=20.0, preload_mrad=3.0),
+                     BuiltHinge({1: 1.0}, "E", opens_mm=30.5)], n_interfaces=56)
+
+
+def make_run(folder: Path, name: str = "set2", kn: float = 5.2, paper_arch: bool = True) -> dict:
+    """A complete run folder of the paper's arch (hinges 1E 12I 30E 56E), or of a 10-voussoir one
+    (1E 4I 7E 11E); returns its summary."""
     import tomllib
 
-    built = paper_like_run()
-    case_toml = CASE_TOML.format(name=name, kn=kn)
+    built = paper_arch_run() if paper_arch else paper_like_run()
+    case_toml = CASE_TOML.format(name=name, kn=kn, voussoirs=55 if paper_arch else 10)
     case = tomllib.loads(case_toml)
     summary = {
         "name": name, "du_mm": built.du_mm + 0.0123, "collapsed": True,
         "du_bracket_mm": [built.du_mm - 0.02, built.du_mm + 0.05],
-        "hinges_at_collapse": [{"interface": 1, "side": "E"}, {"interface": 4, "side": "I"},
-                               {"interface": 7, "side": "E"}, {"interface": 11, "side": "E"}],
+        "hinges_at_collapse": PAPER_HINGES if paper_arch else COARSE_HINGES,
         "kn_N_per_mm3": kn, "ks_N_per_mm3": kn / 2, "steps": 12345, "wall_s": 67.8,
         "yade_version": "2023.02a", "yadearch_version": "0.1.0", "git_revision": "abc123",
     }
@@ -153,16 +167,29 @@ def test_the_selfweight_snapshot_puts_every_block_in_place(tmp_path):
 def test_a_run_matching_neither_set_gets_figures_and_its_own_numbers(tmp_path):
     summary = make_run(tmp_path / "k1", name="stiff", kn=1.0)
     markdown = write_report([tmp_path / "k1"], tmp_path / "out").read_text()
-    assert "matches neither" in markdown and "Comparison with the paper" not in markdown
+    assert "No reference: its name and kn are neither set's" in markdown
+    assert "Comparison with the paper" not in markdown
     assert table_row(markdown, "stiff")[2] == f"{summary['du_mm']:.2f}"
     assert (tmp_path / "out" / "k1" / "collapse.png").stat().st_size > 0  # figures beside the run folder name
 
 
-def test_runs_are_matched_to_the_paper_by_name_or_kn():
-    assert match_reference({"name": "set1", "kn_N_per_mm3": 9.0}) == "set1"
-    assert match_reference({"name": "mine", "kn_N_per_mm3": 5.2}) == "set2"
-    assert match_reference({"name": "mine", "kn_N_per_mm3": 0.25}) == "set1"
-    assert match_reference({"name": "mine", "kn_N_per_mm3": 1.0}) is None
+def test_a_run_of_another_arch_is_not_compared_with_the_paper_whatever_its_name(tmp_path):
+    make_run(tmp_path / "set2", name="set2", paper_arch=False)
+    markdown = write_report([tmp_path / "set2"], tmp_path / "out").read_text()
+    assert "No reference: its case is not the paper's (geometry.n_voussoirs 10, paper 55)" in markdown
+    assert "Comparison with the paper" not in markdown
+
+
+def test_runs_of_the_paper_case_are_matched_by_name_or_kn():
+    case = {"geometry": {"n_voussoirs": 55}}
+    assert match_reference(case, {"name": "set1", "kn_N_per_mm3": 9.0}) == "set1"
+    assert match_reference(case, {"name": "mine", "kn_N_per_mm3": 5.2}) == "set2"
+    assert match_reference(case, {"name": "mine", "kn_N_per_mm3": 0.25}) == "set1"
+    assert match_reference(case, {"name": "mine", "kn_N_per_mm3": 1.0}) is None
+    for other in ({"geometry": {"thickness_mm": 20.0}}, {"loading": {"settlement_direction_deg": 0.0}},
+                  {"material": {"density_g_per_cm3": 2.0}}, {"imperfections": {"edge_radius_mm": 1.0}}):
+        assert match_reference(other, {"name": "set2", "kn_N_per_mm3": 5.2}) is None
+    assert match_reference({"loading": {"max_settlement_mm": 120.0}}, {"name": "set2"}) == "set2"
 
 
 def test_a_path_that_is_not_a_run_folder_is_a_one_line_error(tmp_path):

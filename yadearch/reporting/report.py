@@ -17,6 +17,7 @@ from yadearch.analysis import RunAnalysis, analyse_run, load_run
 from yadearch.analysis.tracking import format_interfaces
 from yadearch.atomic import write_atomically, write_text_atomically
 from yadearch.case import reference
+from yadearch.case.config import as_ran, preset
 from yadearch.plotting.run_figures import write_figures
 from yadearch.results.rundir import RunFolder
 
@@ -58,8 +59,26 @@ class ReportedRun:
 CONTACT_MODEL_NAMES = {"joint": "zero-thickness joint elements", "cgal": "YADE's CGAL polyhedra contacts"}
 
 
-def match_reference(summary: dict[str, Any]) -> str | None:
-    """The paper set a run reproduces: by its name ("set1"/"set2"), else by its kn (N/mm3)."""
+PAPER_SECTIONS = ("geometry", "material", "loading", "imperfections")  # what makes a run the paper's case
+NOT_PHYSICAL = {"max_settlement_mm"}  # a run's stopping point, not part of the arch or its loading
+
+
+def case_mismatch(case: dict[str, Any]) -> str | None:
+    """How a run's case.toml differs from the paper's arch, material, loading and perfect joints
+    (the first difference, e.g. "geometry.n_voussoirs 10, paper 55"); None if it is the paper's case."""
+    ran, paper = as_ran(case), as_ran(preset(next(iter(reference.SETS))).to_dict())
+    for section in PAPER_SECTIONS:
+        for key, value in paper[section].items():
+            if key not in NOT_PHYSICAL and ran[section][key] != value:
+                return f"{section}.{key} {ran[section][key]!r}, paper {value!r}"
+    return None
+
+
+def match_reference(case: dict[str, Any], summary: dict[str, Any]) -> str | None:
+    """The paper set a run reproduces: only a run of the paper's case (`case_mismatch`), then the set
+    by its name ("set1"/"set2"), else by its kn (N/mm3)."""
+    if case_mismatch(case) is not None:
+        return None
     if summary.get("name") in reference.SETS:
         return summary["name"]
     kn = summary.get("kn_N_per_mm3")
@@ -180,7 +199,9 @@ def run_section(reported: ReportedRun) -> list[str]:
                   f"kn = {ref['kn_N_per_mm3']} N/mm3)", ""] + table_one(reported) + [
                   "", f"Paper, sequence at collapse: {ref['sequence_at_collapse']}.", ""]
     else:
-        lines += ["This run matches neither of the paper's sets (by name or kn): no comparison.", ""]
+        mismatch = case_mismatch(run.case)
+        why = f"its case is not the paper's ({mismatch})" if mismatch else "its name and kn are neither set's"
+        lines += [f"No reference: {why}; no comparison with the paper.", ""]
     th = analysis.thresholds
     lines += ["### Hinges and how they formed", ""] + formation_table(analysis) + [
         "", f"A hinge is a run of joints rotating more than {th.rotation_mrad:g} mrad the same way, "
@@ -238,7 +259,7 @@ def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
         figures = write_figures(run, analysis, out / folder)
         write_atomically(out / folder / "hinges.csv",
                          lambda tmp: analysis.hinges.to_csv(tmp, index=False, float_format="%.6g"))
-        reported.append(ReportedRun(run, analysis, match_reference(run.summary), folder, list(figures)))
+        reported.append(ReportedRun(run, analysis, match_reference(run.case, run.summary), folder, list(figures)))
     lines = ["# yadearch report", "", f"Reference: *{reference.PAPER}*.", ""] + overview(reported) + [""]
     for r in reported:
         lines += run_section(r)
