@@ -26,8 +26,8 @@ def test_an_opened_run_gives_du_and_hinges_with_the_papers_labels(tmp_path):
     summary = make_run(tmp_path / "run")
     result = ya.open_run(tmp_path / "run")
     assert result.du_mm == summary["du_mm"] and result.collapsed
-    assert [(str(h), h.label) for h in result.hinges] == [("1E", "D"), ("4I", "A"), ("7E", "B"),
-                                                          ("11E", "C")]
+    assert [(str(h), h.label) for h in result.hinges] == [("1E", "D"), ("12I", "A"), ("30E", "B"),
+                                                          ("56E", "C")]
 
 
 def test_the_loading_curve_holds_only_equilibrium_points_in_increasing_displacement(tmp_path):
@@ -42,3 +42,24 @@ def test_figures_go_into_the_run_folder(tmp_path):
     paths = ya.open_run(tmp_path / "run").write_figures()
     for pdf, png in paths.values():
         assert pdf.parent == tmp_path / "run" / "figures" and pdf.stat().st_size > 0 and png.stat().st_size > 0
+
+
+def test_the_collapse_is_drawn_into_a_given_axes_or_a_new_figure(tmp_path):
+    from matplotlib.figure import Figure
+
+    make_run(tmp_path / "run")
+    result = ya.open_run(tmp_path / "run")
+    own = result.plot_collapse()
+    assert isinstance(own, Figure) and own.axes[0].get_aspect() == 1.0
+    fig = Figure()
+    ax_left, ax_right = fig.subplots(1, 2)
+    assert result.plot_collapse(ax=ax_right) is fig
+    assert not ax_left.patches and len(ax_right.patches) > 2 * 57  # undeformed and moved outlines
+
+
+def test_a_result_lists_the_references_it_stands_on(tmp_path):
+    make_run(tmp_path / "paper")
+    make_run(tmp_path / "coarse", paper_arch=False)
+    assert ya.open_run(tmp_path / "paper").references[0].startswith("Effect of geometrical imperfections")
+    coarse = ya.open_run(tmp_path / "coarse").references
+    assert len(coarse) == 1 and "Yade" in coarse[0]

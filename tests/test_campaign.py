@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import math
 import re
+import sys
 import threading
 from pathlib import Path
 
@@ -238,3 +239,12 @@ def test_exit_reason_names_the_signal_that_ended_a_run():
     assert exit_reason(-15) == "killed by SIGTERM"
     assert exit_reason(-9) == "killed by SIGKILL"
     assert exit_reason(1) == "exit code 1"
+
+
+def test_a_cluster_without_dask_installed_is_a_one_line_error(monkeypatch):
+    from yadearch.studies.executors import open_pool
+
+    monkeypatch.setitem(sys.modules, "distributed", None)  # as if the 'cluster' extra were not installed
+    with pytest.raises(YadearchError, match="needs dask.distributed: install the 'cluster' extra"):
+        with open_pool(scheduler="tcp://127.0.0.1:1"):
+            pass

@@ -136,6 +136,7 @@ def test_report_shows_provenance_and_links_every_figure(written):
     root, summary, markdown = written
     for key in ("yade_version", "yadearch_version", "git_revision", "steps"):
         assert f"| {key} | {summary[key]} |" in markdown
+    assert "## References\n\n1. Effect of geometrical imperfections" in markdown and "Yade Documentation" in markdown
     links = re.findall(r"\]\((set2/[^)]+)\)", markdown)
     assert {Path(l).suffix for l in links} == {".png", ".pdf", ".csv"}
     for link in links:

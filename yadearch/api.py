@@ -93,6 +93,22 @@ class RunResult:
 
         return loading_path(self.series)
 
+    def plot_collapse(self, ax=None, snapshot: str = "collapse"):
+        """The arch at collapse with its hinges (the paper's Fig. 9) into a matplotlib `ax`, or a new
+        figure at print size; returns the figure."""
+        from yadearch.analysis import analyse_run
+        from yadearch.plotting.run_figures import collapse_figure
+
+        return collapse_figure(self.folder, analyse_run(self.folder), ax=ax, snapshot=snapshot)
+
+    @property
+    def references(self) -> list[str]:
+        """What this result stands on: the DEM engine and, for a run of the paper's case, the paper."""
+        from yadearch.case.reference import references_for
+        from yadearch.reporting.report import case_mismatch
+
+        return references_for(paper_case=case_mismatch(self.folder.case) is None)
+
     def write_figures(self, out: str | Path | None = None) -> dict[str, tuple[Path, Path]]:
         """Write the run's figures (PDF and PNG) into `out` (default: the run folder's `figures/`)."""
         from yadearch.analysis import analyse_run

@@ -36,3 +36,23 @@ SETS: dict[str, dict[str, Any]] = {
 }
 HINGE_SIDES = {"hinge_A": "I", "hinge_B": "E", "hinge_C": "E", "hinge_D": "E"}
 HINGE_D_INTERFACE = 1  # both sets: the fourth hinge opens at the left support, extrados
+
+# Where the methods come from: a result lists the keys of what it used (`references_for`), the report
+# prints them.
+REFERENCES: dict[str, str] = {
+    "paper": f"{PAPER} (the reference study: the arch, its material, both sets' kn and Table 1).",
+    "yade": "V. Šmilauer et al., Yade Documentation, 3rd ed., The Yade Project, 2021 (the DEM engine).",
+    "gilbert": "M. Gilbert, C. Casapulla, H. M. Ahmed, Limit analysis of masonry block structures with "
+               "non-associative frictional joints using linear programming, Computers & Structures 84 "
+               "(2006) 873-887 (the rigid-block equilibrium LP).",
+    "portioli": "F. Portioli, L. Cascini, Large displacement analysis of dry-jointed masonry structures "
+                "subjected to settlements using rigid block modelling, Engineering Structures 148 (2017) "
+                "485-496 (the incremental rigid-block analysis of settlements).",
+}
+
+
+def references_for(dem: bool = True, limit_analysis: bool = False, paper_case: bool = False) -> list[str]:
+    """The references behind a result: the DEM engine, the rigid-block analysis, the reference study."""
+    keys = (["paper"] if paper_case else []) + (["yade"] if dem else []) \
+        + (["gilbert", "portioli"] if limit_analysis else [])
+    return [REFERENCES[key] for key in keys]

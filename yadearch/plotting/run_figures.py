@@ -10,9 +10,11 @@ directly (no pyplot), so it never touches an interactive backend.
 from __future__ import annotations
 
 from pathlib import Path
+from typing import cast
 
 import numpy as np
 import pandas as pd
+from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
 
@@ -110,10 +112,11 @@ def _plot_until_du(ax, delta: np.ndarray, value: np.ndarray, du_mm: float | None
 
 
 @_styled
-def plot_collapse(run: RunFolder, analysis: RunAnalysis, stem: Path, width_cm: float = COLUMN_CM,
-                  snapshot: str = "collapse") -> tuple[Path, Path]:
+def collapse_figure(run: RunFolder, analysis: RunAnalysis, ax: Axes | None = None, width_cm: float = COLUMN_CM,
+                    snapshot: str = "collapse") -> Figure:
     """The arch at collapse drawn to scale over its undeformed outline, hinges marked and labelled
-    (label, pivot side); the counterpart of the paper's Fig. 9."""
+    (label, pivot side), the counterpart of the paper's Fig. 9: into `ax`, or a new figure sized to
+    the arch at `width_cm`; returns the figure."""
     geometry = case_geometry(run.case)
     state = run.snapshots.get(snapshot) or run.snapshots.get("end")
     if state is None:
@@ -123,10 +126,10 @@ def plot_collapse(run: RunFolder, analysis: RunAnalysis, stem: Path, width_cm: f
     span = np.ptp(all_xy[:, 0])
     xlim = (all_xy[:, 0].min() - LABEL_ROOM * span, all_xy[:, 0].max() + LABEL_ROOM * span)
     ylim = (all_xy[:, 1].min() - 0.03 * span, all_xy[:, 1].max() + 0.07 * span)
-    axes_width_cm = width_cm - AXIS_MARGINS_CM[0]
-    height_cm = axes_width_cm * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1]
-    fig = new_figure(height_cm=height_cm, width_cm=width_cm)
-    ax = fig.add_subplot()
+    if ax is None:
+        axes_width_cm = width_cm - AXIS_MARGINS_CM[0]
+        height_cm = axes_width_cm * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1]
+        ax = new_figure(height_cm=height_cm, width_cm=width_cm).add_subplot()
     n_blocks = len(geometry.blocks)
     for b, (vertices, moved) in enumerate(zip(geometry.blocks, outlines)):
         support = b in (0, n_blocks - 1)
@@ -154,7 +157,14 @@ def plot_collapse(run: RunFolder, analysis: RunAnalysis, stem: Path, width_cm: f
     ax.set_ylim(*ylim)
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
-    return save_figure(fig, stem)
+    return cast(Figure, ax.get_figure())
+
+
+@_styled
+def plot_collapse(run: RunFolder, analysis: RunAnalysis, stem: Path, width_cm: float = COLUMN_CM,
+                  snapshot: str = "collapse") -> tuple[Path, Path]:
+    """`collapse_figure` written as STEM.pdf and STEM.png."""
+    return save_figure(collapse_figure(run, analysis, width_cm=width_cm, snapshot=snapshot), stem)
 
 
 @_styled

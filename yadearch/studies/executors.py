@@ -39,8 +39,11 @@ def local_pool(jobs: int | None = None) -> Iterator[Pool]:
 def dask_pool(scheduler: str) -> Iterator[Pool]:
     """Runs on the dask.distributed cluster at `scheduler` (e.g. tcp://host:8786). The workers need
     yadearch and YADE installed and the campaign's output folder on a shared file system."""
-    from distributed import Client
-
+    try:
+        from distributed import Client
+    except ImportError:
+        raise YadearchError("--scheduler needs dask.distributed: install the 'cluster' extra "
+                            "(pip install 'yadearch[cluster]') or Debian's python3-distributed") from None
     try:
         client = Client(scheduler, timeout="20s")
     except (OSError, TimeoutError) as exc:
