@@ -234,7 +234,7 @@ def joint_direction(station: Station, orientation: str) -> np.ndarray:
 
 def extrados_end(intrados: Intrados, station: Station, direction: np.ndarray, thickness: float) -> np.ndarray:
     """Where a joint leaving `station` along `direction` meets the extrados: `thickness` along a
-    smooth normal, else the first crossing ahead of the intrados point."""
+    smooth normal, else where the joint's line crosses the extrados ahead of the intrados point."""
     if np.array_equal(direction, station.normal) and not station.corner:
         return station.point + thickness * direction
 
@@ -245,11 +245,11 @@ def extrados_end(intrados: Intrados, station: Station, direction: np.ndarray, th
     margin = 1.0 / RAY_SAMPLES  # the curves continue past the springings, where round-off may put a root
     u = np.linspace(-margin, 1.0 + margin, RAY_SAMPLES + 3)
     side = np.array([across(x) for x in u])
-    ahead = np.array([(intrados.extrados(x, thickness) - station.point) @ direction > 0 for x in u])
-    for k in np.flatnonzero(ahead[:-1] & ahead[1:] & (side[:-1] * side[1:] <= 0)):
+    for k in np.flatnonzero(side[:-1] * side[1:] <= 0):  # the line crosses; ahead, or behind the point?
         root = float(brentq(across, u[k], u[k + 1], xtol=ROOT_XTOL))
         reach = float((intrados.extrados(root, thickness) - station.point) @ direction)
-        return station.point + reach * direction
+        if reach > 0:
+            return station.point + reach * direction
     raise ValueError(f"a joint from {station.point} along {direction} does not reach the extrados")
 
 
