@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 import math
 import tomllib
+from dataclasses import fields
 from pathlib import Path
 
 import numpy as np
@@ -19,10 +20,12 @@ from yadearch.analysis.blocks import case_geometry
 from yadearch.case.config import ArchCase, preset
 from yadearch.case.mechanics import arch_geometry
 from yadearch.case.plan import plan_run
+from yadearch.case.sections import GeometryConfig
+from yadearch.case.shape import INTRADOS
 from yadearch.cli.commands import main
 from yadearch.errors import CaseError
 from yadearch.model.geometry import arch_on_intrados, block_volume, segmental_arch
-from yadearch.model.shapes import circular, three_centred
+from yadearch.model.shapes import ORIENTATIONS, circular, three_centred
 from yadearch.solve.limit import limit_analysis, stands
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -139,9 +142,8 @@ def test_three_centred_intrados_follows_the_textbook_construction_with_tangent_a
     assert np.linalg.norm(o1 - o2) == pytest.approx(r2 - r1, abs=EXACT)  # internally tangent circles
     curve = three_centred(2 * a, b)
     for before, after in zip(curve.arcs[:-1], curve.arcs[1:]):  # same point, same tangent at each junction
-        end = before.start - before.sweep
-        assert np.allclose(before.point(end), after.point(after.start), atol=EXACT)
-        assert end == pytest.approx(after.start, abs=1e-12)
+        assert np.allclose(before.point(before.end), after.point(after.start), atol=EXACT)
+        assert before.end == pytest.approx(after.start, abs=1e-12)
     _, g = build(shape="three_centred", span_mm=SPAN, rise_mm=RISE, thickness_mm=30.0, n_voussoirs=40)
     junction = math.atan2(*(o1 - o2)[::-1])  # direction of the left junction from o2 (and from o1)
     side, middle = r1 * (math.pi - junction), r2 * (2 * junction - math.pi)
@@ -186,6 +188,11 @@ def test_run_folders_of_the_paper_arch_rebuild_it_to_the_last_bit():
     assert np.array_equal(np.array(case_geometry(stored).blocks), np.load(REFERENCE)["blocks"])
     case, g = build(**SHAPES["pointed odd"])
     assert np.array_equal(np.array(case_geometry(case.to_dict()).blocks), np.array(g.blocks))
+
+
+def test_every_shape_and_orientation_offered_is_built():
+    choices = {f.name: f.metadata.get("choices") for f in fields(GeometryConfig)}
+    assert set(choices["shape"]) == set(INTRADOS) and set(choices["joint_orientation"]) == set(ORIENTATIONS)
 
 
 REFUSALS = [  # overrides, words the one-line refusal must contain (parameter, value, accepted range)

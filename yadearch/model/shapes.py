@@ -72,7 +72,13 @@ class Arc:
     start: float
     sweep: float
 
+    @property
+    def end(self) -> float:
+        """Angle of its right end (rad)."""
+        return self.start - self.sweep
+
     def point(self, angle: float, offset: float = 0.0) -> np.ndarray:
+        """The point at `angle` on the arc, or on its concentric offset by `offset` outward."""
         return self.centre + (self.radius + offset) * np.array([math.cos(angle), math.sin(angle)])
 
 
@@ -84,9 +90,9 @@ class Arcs:
         self.arcs = arcs
         self.starts = np.concatenate([[0.0], np.cumsum([a.radius * a.sweep for a in arcs])])
         self.length = float(self.starts[-1])
-        left, right = arcs[0].point(arcs[0].start), arcs[-1].point(arcs[-1].start - arcs[-1].sweep)
-        tops = [a.centre[1] + a.radius if a.start >= np.pi / 2 >= a.start - a.sweep
-                else max(a.point(a.start)[1], a.point(a.start - a.sweep)[1]) for a in arcs]
+        left, right = arcs[0].point(arcs[0].start), arcs[-1].point(arcs[-1].end)
+        tops = [a.centre[1] + a.radius if a.start >= np.pi / 2 >= a.end
+                else max(a.point(a.start)[1], a.point(a.end)[1]) for a in arcs]
         self.span, self.rise = float(right[0] - left[0]), float(max(tops) - left[1])
         self.min_radius = min(a.radius for a in arcs)
 
@@ -104,8 +110,8 @@ class Arcs:
         """The station at the k-th arc end (0 = left springing, len(arcs) = right springing)."""
         after = self.arcs[min(k, len(self.arcs) - 1)]
         before = self.arcs[max(k - 1, 0)]
-        angle_after = after.start if k < len(self.arcs) else after.start - after.sweep
-        angle_before = before.start - before.sweep if k > 0 else before.start
+        angle_after = after.start if k < len(self.arcs) else after.end
+        angle_before = before.end if k > 0 else before.start
         n_after = np.array([math.cos(angle_after), math.sin(angle_after)])
         n_before = np.array([math.cos(angle_before), math.sin(angle_before)])
         normal = _unit(n_before + n_after)
@@ -123,7 +129,7 @@ class Arcs:
     def _extrados_ranges(self, thickness: float) -> list[tuple[float, float]]:
         """Angles at which each offset arc begins and ends: those of the intrados where arcs are
         tangent, those of the point where the offset arcs cross at a corner."""
-        bounds = [[a.start, a.start - a.sweep] for a in self.arcs]
+        bounds = [[a.start, a.end] for a in self.arcs]
         for k in range(1, len(self.arcs)):
             before, after = self.arcs[k - 1], self.arcs[k]
             station = self._end_station(k)
