@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
@@ -33,5 +32,5 @@ def stacked_pairs(offsets_x: list[float], width: float, height: float, depth: fl
         blocks.append(box(x - width / 2, x + width / 2, -overlap, height - overlap, depth))
         joints.append(Joint(k + 1, 2 * k, 2 * k + 1, np.array([x - width / 2, 0.0]),
                             np.array([x + width / 2, 0.0]), np.array([0.0, 1.0])))
-    return ArchGeometry(blocks, joints, internal_radius=1.0, thickness=width, depth=depth,
-                        embrace_rad=math.pi / 2)
+    return ArchGeometry(blocks, joints, thickness=width, depth=depth, span=offsets_x[-1] - offsets_x[0] + width,
+                        rise=height, voussoir_width=height, longest_joint=width)

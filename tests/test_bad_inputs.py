@@ -49,6 +49,12 @@ def probes() -> list[list[str]]:
               ["calibrate", "--preset", "set1", "--target-du", "48", "--kn-min", "5", "--kn-max", "1",
                "--out", "OUT/c.json"],
               ["report", "OUT/not-a-run", "--out", "OUT/r"], ["limit", "--set", "friction_deg=95"]]
+    shapes = [["shape=oval"], ["joint_orientation=skew"], ["shape=pointed", "pointed_radius_over_span=0.4"],
+              ["shape=elliptical", "rise_mm=400"], ["shape=three_centred", "rise_mm=300"],
+              ["shape=three_centred", "rise_mm=50", "thickness_mm=40"],
+              ["embrace_deg=180", "joint_orientation=vertical"], ["shape=pointed", "joint_orientation=vertical"]]
+    for command in ("run", "limit"):  # arches that cannot be built, refused before YADE or an LP
+        lines += [[command, "--preset", "set2", *(a for s in settings for a in ("--set", s))] for settings in shapes]
     return lines
 
 

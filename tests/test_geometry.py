@@ -1,18 +1,31 @@
 """Geometry of the paper's arch: span, rise, volumes, joints shared exactly by neighbours."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
+from yadearch.case.config import preset
+from yadearch.case.mechanics import arch_geometry
 from yadearch.model.geometry import block_volume, segmental_arch
 
 R, T, D = 0.300, 0.024, 0.120
+# the default case's vertex and joint arrays as built before arch shapes (commit af15cd6)
+REFERENCE = Path(__file__).with_name("data") / "paper_arch.npz"
 
 
 @pytest.fixture(scope="module")
 def arch():
     return segmental_arch(55, 125.0, R, T, D, 0.036)
+
+
+def test_the_default_case_is_the_paper_arch_to_the_last_bit():
+    reference = np.load(REFERENCE)
+    geometry = arch_geometry(preset("set2"))
+    assert np.array_equal(np.array(geometry.blocks), reference["blocks"])
+    joints = np.array([[j.intrados, j.extrados, j.normal] for j in geometry.joints])
+    assert np.array_equal(joints, reference["joints"])
 
 
 def test_span_and_rise_match_the_paper(arch):

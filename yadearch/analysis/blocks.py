@@ -6,17 +6,18 @@ from typing import Any
 
 import numpy as np
 
-from yadearch.model.geometry import ArchGeometry, segmental_arch
+from yadearch.case.config import case_from_dict
+from yadearch.case.mechanics import arch_geometry
+from yadearch.model.geometry import ArchGeometry
 from yadearch.model.joints import block_outlines
 
 MM = 1e-3
 
 
 def case_geometry(case: dict[str, Any]) -> ArchGeometry:
-    """The SI geometry of the [geometry] section of a run's case.toml (lengths in mm)."""
-    g = case["geometry"]
-    return segmental_arch(int(g["n_voussoirs"]), float(g["embrace_deg"]), g["internal_radius_mm"] * MM,
-                          g["thickness_mm"] * MM, g["depth_mm"] * MM, g["support_length_mm"] * MM)
+    """The SI geometry of the [geometry] section of a run's case.toml, built as the run built it (a
+    case.toml older than a geometry parameter takes its default: the segmental arch)."""
+    return arch_geometry(case_from_dict({"geometry": case["geometry"]}))
 
 
 def polygon_centroid(xy: np.ndarray) -> np.ndarray:

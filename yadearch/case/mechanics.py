@@ -13,8 +13,9 @@ import math
 from dataclasses import dataclass
 
 from yadearch.case.config import ArchCase
+from yadearch.case.shape import build_arch
 from yadearch.model import units
-from yadearch.model.geometry import ArchGeometry, segmental_arch
+from yadearch.model.geometry import ArchGeometry
 
 
 @dataclass(frozen=True)
@@ -45,24 +46,16 @@ def effective_kn_N_per_mm3(case: ArchCase, voussoir_width_mm: float) -> float:
 
 
 def arch_geometry(case: ArchCase) -> ArchGeometry:
-    """The SI geometry of a case."""
-    g = case.geometry
-    return segmental_arch(g.n_voussoirs, g.embrace_deg, units.mm(g.internal_radius_mm),
-                          units.mm(g.thickness_mm), units.mm(g.depth_mm), units.mm(g.support_length_mm))
+    """The SI geometry of a case, of any shape (`case/shape.py`); CaseError if it cannot be built."""
+    return build_arch(case.geometry)
 
 
 def contact_stiffness(case: ArchCase, geometry: ArchGeometry) -> ContactStiffness:
     """SI joint stiffnesses for a case; ks keeps the ratio ks/kn of the case."""
-    width_mm = units.to_mm(voussoir_width(geometry))
+    width_mm = units.to_mm(geometry.voussoir_width)
     kn = units.stiffness_per_volume(effective_kn_N_per_mm3(case, width_mm))
     return ContactStiffness(kn=kn, ks=kn * case.interface.ks_over_kn,
                             tan_friction=math.tan(units.radians(case.material.friction_deg)))
-
-
-def voussoir_width(geometry: ArchGeometry) -> float:
-    """Voussoir width along the arch at mid-thickness (m)."""
-    mid_radius = geometry.internal_radius + geometry.thickness / 2.0
-    return 2.0 * mid_radius * math.sin(geometry.embrace_rad / geometry.n_voussoirs / 2.0)
 
 
 def compressed_length(offset_from_intrados: float, joint_length: float) -> float:
@@ -80,16 +73,18 @@ def compressed_length(offset_from_intrados: float, joint_length: float) -> float
 def critical_timestep(case: ArchCase, geometry: ArchGeometry, stiffness: ContactStiffness) -> float:
     """Critical explicit time step of the stiffest joint mode of a voussoir between its two joints (s).
 
-    A voussoir of mass m and polar inertia J sits between two joints of area A = t*d: translation
-    stiffness 2*kn*A, rocking stiffness 2*kn*d*t^3/12. In a chain of such blocks the highest mode
-    reaches sqrt(2) times this single-block frequency; dt_crit = 2/omega_max.
+    A voussoir of width w, thickness t, mass m and polar inertia J sits between two joints of length
+    L and area A = L*d: translation stiffness 2*kn*A, rocking stiffness 2*kn*d*L^3/12. The narrowest
+    voussoir and the longest joint (L = t for joints normal to the intrados) bound it from below. In
+    a chain of such blocks the highest mode reaches sqrt(2) times this single-block frequency;
+    dt_crit = 2/omega_max.
     """
     t, d = geometry.thickness, geometry.depth
-    w = voussoir_width(geometry)
+    w, length = geometry.voussoir_width, geometry.longest_joint
     rho = units.density(case.material.density_g_per_cm3)
     mass = rho * t * w * d
     inertia = mass * (t * t + w * w) / 12.0
-    k_translation = 2.0 * stiffness.kn * t * d
-    k_rocking = 2.0 * stiffness.kn * d * t**3 / 12.0
+    k_translation = 2.0 * stiffness.kn * length * d
+    k_rocking = 2.0 * stiffness.kn * d * length**3 / 12.0
     omega = math.sqrt(2.0) * max(math.sqrt(k_translation / mass), math.sqrt(k_rocking / inertia))
     return 2.0 / omega

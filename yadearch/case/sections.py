@@ -15,19 +15,36 @@ def _num(low: float | None = None, high: float | None = None, *, low_open: bool 
 
 @dataclass
 class GeometryConfig:
-    """Segmental arch of trapezoidal voussoirs on two rigid support blocks."""
+    """The arch (docs/theory.md, "Arch shapes"): its intrados shape, its voussoirs of equal intrados
+    length and their joints, on two rigid support blocks."""
 
+    shape: str = field(default="segmental", metadata={
+        "choices": ("segmental", "pointed", "elliptical", "three_centred"),
+        "doc": "intrados shape: 'segmental' (circular, by internal_radius_mm and embrace_deg; 180 = "
+        "semicircular), 'pointed' (two-centred, by span_mm and pointed_radius_over_span), "
+        "'elliptical' (half-ellipse) or 'three_centred' (basket-handle), both by span_mm and rise_mm"})
     n_voussoirs: int = field(default=55, metadata=_num(2, 1000, doc="number of voussoirs"))
     embrace_deg: float = field(default=125.0, metadata=_num(0, 180, low_open=True,
-                                                             doc="angle of embrace (deg)"))
+                                                             doc="angle of embrace (deg; segmental)"))
     internal_radius_mm: float = field(default=300.0, metadata=_num(0, 50_000, low_open=True,
-                                                                   doc="intrados radius (mm)"))
+                                                                   doc="intrados radius (mm; segmental)"))
+    span_mm: float = field(default=600.0, metadata=_num(0, 100_000, low_open=True, doc="intrados (clear) "
+                           "span between the springings (mm; pointed, elliptical, three_centred)"))
+    rise_mm: float = field(default=200.0, metadata=_num(0, 50_000, low_open=True, doc="intrados rise above "
+                           "the springing line (mm; elliptical: at most span/2, three_centred: below span/2)"))
+    pointed_radius_over_span: float = field(default=1.0, metadata=_num(
+        0.5, 10, doc="radius of each arc of a pointed arch over the span (0.5 = semicircle, 1 = "
+        "equilateral; the rise is span x sqrt(ratio - 1/4))"))
     thickness_mm: float = field(default=24.0, metadata=_num(0, 10_000, low_open=True,
-                                                            doc="radial thickness (mm)"))
+                                                            doc="ring thickness normal to the intrados (mm)"))
     depth_mm: float = field(default=120.0, metadata=_num(0, 50_000, low_open=True,
                                                          doc="out-of-plane depth (mm)"))
     support_length_mm: float = field(default=36.0, metadata=_num(0, 50_000, low_open=True,
                                      doc="extent of each support block beyond its springing face (mm)"))
+    joint_orientation: str = field(default="normal", metadata={
+        "choices": ("normal", "vertical", "radial"),
+        "doc": "joints normal to the intrados (radial for a circle), vertical, or radial: through the "
+        "centre of the ellipse, of the local arc for the other shapes (= normal)"})
 
 
 @dataclass

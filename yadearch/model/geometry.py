@@ -1,15 +1,19 @@
-"""Segmental-arch geometry in pure numpy: voussoir and support-block vertices, joint planes.
+"""Arch geometry in pure numpy: voussoir and support-block vertices, joint planes.
 
-Conventions (DESIGN.md §2): arch in the x-y plane, y up, depth along z, centre of the intrados circle
-at the origin, symmetric about x = 0. Voussoirs 1..n and interfaces 1..n+1 are numbered left to
-right. All lengths here are in metres; the case converts from the user's millimetres.
+Conventions (DESIGN.md §2): arch in the x-y plane, y up, depth along z, symmetric about x = 0; the
+segmental arch has the centre of its intrados circle at the origin, the other shapes
+(`model/shapes.py`) their springing line on y = 0. Voussoirs 1..n and interfaces 1..n+1 are numbered
+left to right. All lengths here are in metres; the case converts from the user's millimetres.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
+
+from yadearch.model.shapes import Intrados, extrados_end, joint_direction, stations
 
 
 @dataclass(frozen=True)
@@ -41,10 +45,12 @@ class ArchGeometry:
 
     blocks: list[np.ndarray]
     joints: list[Joint]
-    internal_radius: float
-    thickness: float
+    thickness: float  # ring thickness, normal to the intrados (m)
     depth: float
-    embrace_rad: float
+    span: float  # net (intrados) span between the springings (m)
+    rise: float  # intrados rise from the springing line to the crown (m)
+    voussoir_width: float  # of the narrowest voussoir, between its joints' mid-points (m)
+    longest_joint: float  # across the ring (m): the thickness where joints are normal to the intrados
 
     @property
     def n_voussoirs(self) -> int:
@@ -53,21 +59,6 @@ class ArchGeometry:
     @property
     def voussoirs(self) -> list[np.ndarray]:
         return self.blocks[1:-1]
-
-    @property
-    def springing_angle_rad(self) -> float:
-        """Angle of the springing planes above the horizontal (27.5 deg for a 125 deg embrace)."""
-        return (np.pi - self.embrace_rad) / 2.0
-
-    @property
-    def span(self) -> float:
-        """Net (intrados) span between the springings (m)."""
-        return 2.0 * self.internal_radius * np.cos(self.springing_angle_rad)
-
-    @property
-    def rise(self) -> float:
-        """Intrados rise from the springing line to the crown (m)."""
-        return self.internal_radius * (1.0 - np.sin(self.springing_angle_rad))
 
     @property
     def crown_voussoir(self) -> int:
@@ -107,26 +98,63 @@ def segmental_arch(
     blocks: list[np.ndarray] = []
     left_angle = joint_angles[0]
     outward_left = np.array([-np.sin(left_angle), np.cos(left_angle)])
-    blocks.append(_support_prism(left_angle, outward_left, r_in, r_out, support_length, depth))
+    blocks.append(_support_prism(_radial(left_angle, r_in), _radial(left_angle, r_out), outward_left,
+                                 support_length, depth))
     for a, b in zip(joint_angles[:-1], joint_angles[1:]):
         polygon = [_radial(a, r_in), _radial(b, r_in), _radial(b, r_out), _radial(a, r_out)]
         blocks.append(_prism(polygon, depth))
     right_angle = joint_angles[-1]
     outward_right = np.array([np.sin(right_angle), -np.cos(right_angle)])
-    blocks.append(_support_prism(right_angle, outward_right, r_in, r_out, support_length, depth))
+    blocks.append(_support_prism(_radial(right_angle, r_in), _radial(right_angle, r_out), outward_right,
+                                 support_length, depth))
 
     joints = []
     for k, angle in enumerate(joint_angles):
         normal = np.array([np.sin(angle), -np.cos(angle)])  # direction of decreasing angle
         joints.append(Joint(k + 1, k, k + 1, _radial(angle, r_in), _radial(angle, r_out), normal))
-    return ArchGeometry(blocks, joints, internal_radius, thickness, depth, embrace)
+    springing = (np.pi - embrace) / 2.0  # angle of the springing planes above the horizontal
+    width = 2.0 * (internal_radius + thickness / 2.0) * math.sin(embrace / n_voussoirs / 2.0)
+    return ArchGeometry(blocks, joints, thickness, depth, span=float(2.0 * internal_radius * np.cos(springing)),
+                        rise=float(internal_radius * (1.0 - np.sin(springing))), voussoir_width=float(width),
+                        longest_joint=thickness)
 
 
-def _support_prism(
-    angle: float, outward: np.ndarray, r_in: float, r_out: float, length: float, depth: float
-) -> np.ndarray:
-    """A rectangular support block: one face on the springing plane, extending `length` outward."""
-    p_in, p_out = _radial(angle, r_in), _radial(angle, r_out)
+def arch_on_intrados(intrados: Intrados, n_voussoirs: int, orientation: str, thickness: float,
+                     depth: float, support_length: float) -> ArchGeometry:
+    """An arch of any shape (`model/shapes.py`): voussoirs of equal intrados length whose joints run
+    normal to the intrados, vertically or radially across a ring `thickness` thick (normal to the
+    intrados), on two support blocks whose faces lie on the springing joints."""
+    ends = []
+    for station in stations(intrados, n_voussoirs):
+        direction = joint_direction(station, orientation)
+        ends.append((station.point, extrados_end(intrados, station, direction, thickness)))
+    joints = []
+    for k, (inner, outer) in enumerate(ends):
+        along = (outer - inner) / np.linalg.norm(outer - inner)
+        joints.append(Joint(k + 1, k, k + 1, inner, outer, np.array([along[1], -along[0]])))
+    blocks = [_support_prism(*ends[0], -joints[0].normal, support_length, depth)]
+    for (a_in, a_out), (b_in, b_out) in zip(ends[:-1], ends[1:]):
+        polygon = [a_in, b_in, b_out, a_out]
+        if not _convex(np.array(polygon)):
+            raise ValueError(f"voussoir {len(blocks)} of this arch is not a convex quadrilateral")
+        blocks.append(_prism(polygon, depth))
+    blocks.append(_support_prism(*ends[-1], joints[-1].normal, support_length, depth))
+    middles = np.array([(inner + outer) / 2.0 for inner, outer in ends])
+    return ArchGeometry(blocks, joints, thickness, depth, intrados.span, intrados.rise,
+                        voussoir_width=float(np.linalg.norm(np.diff(middles, axis=0), axis=1).min()),
+                        longest_joint=max(j.length for j in joints))
+
+
+def _convex(polygon: np.ndarray) -> bool:
+    """Whether a polygon given counter-clockwise turns left at every vertex."""
+    edges = np.roll(polygon, -1, axis=0) - polygon
+    turns = edges[:, 0] * np.roll(edges, -1, axis=0)[:, 1] - edges[:, 1] * np.roll(edges, -1, axis=0)[:, 0]
+    return bool(np.all(turns > 0))
+
+
+def _support_prism(p_in: np.ndarray, p_out: np.ndarray, outward: np.ndarray, length: float,
+                   depth: float) -> np.ndarray:
+    """A rectangular support block: one face on the springing joint, extending `length` outward."""
     polygon = [p_in, p_out, p_out + length * outward, p_in + length * outward]
     return _prism(polygon, depth)
 

@@ -128,7 +128,7 @@ def solve_kinematics(arch: RigidArch, placement: Placement, support_speed: float
     support = a_s.T @ np.array([*arch.direction, 0.0]) * support_speed  # rates from the support motion
     corner = c.touching.T.ravel()
     slip = np.concatenate([np.zeros(2 * m, bool), c.touching.any(axis=1)])
-    length = arch.geometry.internal_radius
+    length = arch.geometry.span  # rotations boxed to 1/length: velocities of order one across the arch
     box = None if support_speed else [(-1.0, 1.0), (-1.0, 1.0), (-1.0 / length, 1.0 / length)]
     bounds = [(None, None)] * len(load) if box is None else box * (len(load) // 3)
     result = linprog(load, A_ub=-a_v.T[np.flatnonzero(corner)], b_ub=support[np.flatnonzero(corner)],
