@@ -86,7 +86,7 @@ def test_a_campaign_killed_at_random_moments_resumes_to_the_complete_answer(tmp_
         summary = json.loads((out / results.loc[kn, "folder"] / "summary.json").read_text())
         assert summary["complete"] is True and summary["du_mm"] == expected_du(kn)
         assert results.loc[kn, "du_mm"] == pytest.approx(expected_du(kn), rel=1e-5)  # the table's 6 digits
-    assert not list(out.glob(".*")), "a staging folder was left beside the finished runs"
+    assert not list(out.glob(".*")), "a staging folder or a temporary file was left beside the runs"
 
 
 def test_a_resume_in_process_trusts_only_complete_folders(tmp_path):

@@ -110,3 +110,16 @@ def test_an_interrupted_run_is_not_a_failure_and_stays_pending(tmp_path, monkeyp
         process.run_case_process(preset("set2"), tmp_path / "run")
     outcome = execute(preset("set2"), tmp_path / "other", None)
     assert outcome["status"] == "interrupted" and not (tmp_path / "other" / FAILED_FILE).exists()
+
+
+def test_stale_temporaries_of_killed_writes_are_removed_and_nothing_else(tmp_path):
+    from yadearch.atomic import remove_stale_temporaries
+
+    stale = tmp_path / ".results.csv.abc123.tmp"
+    stale.write_text("half")
+    kept = [tmp_path / "results.csv", tmp_path / ".kn1.partial", tmp_path / "notes.tmp"]
+    kept[0].write_text("run\n")
+    kept[1].mkdir()
+    kept[2].write_text("mine")
+    assert remove_stale_temporaries(tmp_path) == [stale]
+    assert not stale.exists() and all(p.exists() for p in kept)

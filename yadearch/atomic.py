@@ -32,3 +32,15 @@ def write_atomically(path: Path, write: Callable[[Path], object]) -> Path:
 def write_text_atomically(path: Path, text: str) -> Path:
     """`write_atomically` for a text file."""
     return write_atomically(path, lambda temporary: temporary.write_text(text))
+
+
+TEMPORARY_PATTERN = ".*.tmp"  # the names write_atomically gives its temporary files
+
+
+def remove_stale_temporaries(folder: Path) -> list[Path]:
+    """Delete the temporary files that writes killed before their rename left in `folder` (a
+    SIGKILL skips the cleanup above); call it only where no write is under way. Returns them."""
+    stale = [p for p in Path(folder).glob(TEMPORARY_PATTERN) if p.is_file()]
+    for path in stale:
+        path.unlink(missing_ok=True)
+    return stale

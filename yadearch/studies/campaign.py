@@ -20,7 +20,7 @@ from typing import Any
 import pandas as pd
 from tqdm import tqdm
 
-from yadearch.atomic import write_atomically, write_text_atomically
+from yadearch.atomic import remove_stale_temporaries, write_atomically, write_text_atomically
 from yadearch.case.config import ArchCase, preset
 from yadearch.case.plan import plan_run
 from yadearch.engine.process import check_yade_installed, run_case_process
@@ -154,6 +154,7 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
     out = Path(out)
     specs = plan(base, rows, out)
     out.mkdir(parents=True, exist_ok=True)
+    remove_stale_temporaries(out)  # left by a campaign killed while it wrote its tables
     write_run_table(specs, out)
     todo = [s for s in specs if s.case is not None and not is_complete(s.folder)
             and (retry_failed or not (s.folder / FAILED_FILE).is_file())]
