@@ -11,6 +11,7 @@ import numpy as np
 
 from yadearch.atomic import write_text_atomically
 from yadearch.case.config import ArchCase
+from yadearch.case.reference import references_for
 from yadearch.model import units
 from yadearch.solve.limit_lp import Statics
 from yadearch.solve.rigid import EXTRADOS, INTRADOS, RigidArch
@@ -71,9 +72,14 @@ class LimitResult:
     n_lp: int
     wall_s: float
 
+    @property
+    def references(self) -> list[str]:
+        """The methods this result stands on: the rigid-block LP and its incremental use for settlements."""
+        return references_for(dem=False, limit_analysis=True)
+
     def to_json(self) -> dict:
-        """A JSON-ready dict of every field."""
-        return asdict(self)
+        """A JSON-ready dict of every field, and the references."""
+        return {**asdict(self), "references": self.references}
 
 
 def interface_forces(arch: RigidArch, statics: Statics) -> tuple[tuple[InterfaceForce, ...], dict]:
