@@ -32,7 +32,7 @@ SEED = 1
 STUDIES = (
     Study("edge", "rounded edges, every edge alike", "edge_radius_mm", (1.0, 2.0, 3.0, 4.0, 6.0), 1),
     Study("angle", "faces not parallel, random per joint (mean 0)", "face_angle_sd_mrad", (1.0, 2.0, 4.0, 8.0), 3),
-    Study("bump", "faces not flat, random per joint (mean 0)", "face_bump_sd_mm", (0.02, 0.05, 0.1), 3),
+    Study("bump", "faces not flat, random per joint (mean 0)", "face_bump_sd_mm", (0.02, 0.05, 0.1, 0.2), 3),
 )
 UNITS = {"edge_radius_mm": "mm", "face_angle_sd_mrad": "mrad", "face_bump_sd_mm": "mm"}
 AXIS_LABELS = {"edge_radius_mm": "edge radius (mm)", "face_angle_sd_mrad": "face angle s.d. (mrad)",
