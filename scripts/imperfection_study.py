@@ -38,6 +38,7 @@ UNITS = {"edge_radius_mm": "mm", "face_angle_sd_mrad": "mrad", "face_bump_sd_mm"
 AXIS_LABELS = {"edge_radius_mm": "edge radius (mm)", "face_angle_sd_mrad": "face angle s.d. (mrad)",
                "face_bump_sd_mm": "face bump s.d. (mm)"}
 PERFECT_RUN = Path("reports/set2")  # the perfect arch with set 2's joints (`yadearch reproduce`)
+SET1_RUN = Path("reports/set1")  # the paper's low-kn model of set 1
 REPORT = "imperfections.md"
 FIGURE = "du_vs_amplitude"
 
@@ -54,10 +55,16 @@ def run_study(study: Study, out: Path, jobs: int) -> pd.DataFrame:
     return table
 
 
+def spread(interfaces: list[int]) -> str:
+    """A hinge spread over interfaces as the paper writes it, e.g. "29-32"."""
+    return f"{interfaces[0]}-{interfaces[-1]}" if len(interfaces) > 1 else str(interfaces[0])
+
+
 def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float) -> str:
     """The study's Markdown (and its figure) from every campaign folder that holds a table."""
     target = reference.SETS["set1"]["experimental"]["du_mm"]
     kn = reference.SETS["set2"]["kn_N_per_mm3"]
+    set1_summary = read_summary(SET1_RUN)
     lines = ["# Imperfections instead of a low kn", "",
              f"Base: the paper's arch with set 2's accurate joints (kn {kn} N/mm³; the perfect arch gives "
              f"{perfect_du_mm:.2f} mm, `{PERFECT_RUN}`). Each kind of defect is raised until the median du "
@@ -79,6 +86,15 @@ def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float) -> str:
         lines.append(f"Median du = {target} mm at {study.parameter} ≈ {amplitude:.3g} {unit}." if not
                      math.isnan(amplitude) else f"No level brackets {target} mm.")
         lines.append("")
+    experiment, model = reference.SETS["set1"]["experimental"], reference.SETS["set1"]["numerical"]
+    lines += ["## Set 1 for comparison", "",
+              f"- experiment: du {experiment['du_mm']} mm, A at {experiment['hinge_A'][0]} I (formed at 12, moved "
+              f"one voussoir toward the crown before collapse), B {experiment['hinge_B'][0]} E, C 56 E, D 1 E;",
+              f"- paper FE with kn {reference.SETS['set1']['kn_N_per_mm3']} N/mm³: du {model['du_mm']} mm, "
+              f"A {spread(model['hinge_A'])} I, "
+              f"B {spread(model['hinge_B'])} E;",
+              f"- this project's low-kn model (`{SET1_RUN}`): du {set1_summary['du_mm']:.2f} mm on "
+              f"{' '.join(str(h['interface']) + h['side'] for h in set1_summary['hinges_at_collapse'])}.", ""]
     if panels:
         amplitude_panels_figure(panels, out / FIGURE, perfect_du_mm, target, f"set 1 experiment, {target} mm")
         lines += [f"![du against each amplitude]({FIGURE}.png)", ""]
