@@ -276,7 +276,7 @@ def main() -> int:
 
     from yadearch.case.config import preset
     from yadearch.model.hinges import same_hinges
-    from yadearch.studies.campaign import campaign_wall_s
+    from yadearch.studies.campaign import campaign_core_s, campaign_wall_s
 
     runs = Path(args.runs)
     cases = {"set1": preset("set1"), "set2": preset("set2")}
@@ -310,6 +310,7 @@ def main() -> int:
     sweep_wall = campaign_wall_s(Path(args.sweep)) if args.sweep else None
     sweep = sweep_status(Path(args.sweep)) if args.sweep else None
     montecarlo_wall = campaign_wall_s(Path(args.montecarlo)) if args.montecarlo else None
+    montecarlo_core_s = campaign_core_s(Path(args.montecarlo)) if args.montecarlo else None
     montecarlo = sweep_status(Path(args.montecarlo)) if args.montecarlo else None
     report = {
         **{f"{n}_{k}": (results[n] or {}).get(k) for n in results for k in ("wall_s", "du_mm", "steps", "steps_per_s")},
@@ -326,6 +327,7 @@ def main() -> int:
         "montecarlo200_wall_s": montecarlo_wall if montecarlo is not None
         and montecarlo["done"] >= TARGET_MONTECARLO_SAMPLES else None,
         "montecarlo_folder": args.montecarlo, "montecarlo": montecarlo, "montecarlo_wall_s": montecarlo_wall,
+        "montecarlo_core_s": montecarlo_core_s,
         "step_breakdown_us": breakdown["step_breakdown_us"] if breakdown else None,
         "step_us": breakdown["step_us"] if breakdown else None,
         "integrator_ratio": breakdown["integrator_ratio"] if breakdown else None,
@@ -365,8 +367,10 @@ def main() -> int:
                      montecarlo_wall is not None and montecarlo["done"] >= TARGET_MONTECARLO_SAMPLES
                      and montecarlo_wall <= TARGET_MONTECARLO_WALL_S,
                      f"{montecarlo['done']} samples done in {montecarlo_wall / 60:.1f} min "
-                     f"({montecarlo['failed']} failed); per sample "
-                     f"{montecarlo_wall / max(1, montecarlo['done']):.0f} s on 2 cores"
+                     f"({montecarlo['failed']} failed), {montecarlo_core_s / max(1, montecarlo['done']):.0f} "
+                     f"core-s a sample: {TARGET_MONTECARLO_SAMPLES} would take about "
+                     f"{montecarlo_core_s / max(1, montecarlo['done']) * TARGET_MONTECARLO_SAMPLES / 2 / 60:.0f} "
+                     "min on 2 cores"
                      if montecarlo_wall is not None else "no Monte Carlo folder given (--montecarlo)"))
     verdicts.append((f"a step <= {TARGET_STEP_US:g} us", breakdown is not None
                      and breakdown["step_us"] <= TARGET_STEP_US,

@@ -213,6 +213,13 @@ def campaign_wall_s(out: Path) -> float | None:
     return sum(s["wall_s"] for s in json.loads(path.read_text())) if path.is_file() else None
 
 
+def campaign_core_s(out: Path) -> float | None:
+    """Core-seconds a campaign used: each session's wall time times its slots (None if none was
+    recorded); what the same runs would cost on any number of cores."""
+    path = Path(out) / SESSIONS_FILE
+    return sum(s["wall_s"] * s.get("slots", 1) for s in json.loads(path.read_text())) if path.is_file() else None
+
+
 def write_run_table(specs: list[RunSpec], out: Path) -> None:
     """runs.csv: what the campaign runs (name, folder, overrides), written before anything runs."""
     table = pd.DataFrame([{RUN_COLUMN: s.name, "folder": s.folder.name, **_columns(s.overrides)}
