@@ -9,6 +9,8 @@ import pytest
 
 from yadearch.engine.yade_env import YADE_PY_DIRS
 
+REPO = Path(__file__).resolve().parents[1]  # the project's root, for tests in any sub-folder
+DATA = Path(__file__).resolve().with_name("data")  # reference arrays written by earlier code
 HAS_YADE = any(Path(d, "yade", "__init__.py").is_file() for d in YADE_PY_DIRS)
 needs_yade = pytest.mark.skipif(not HAS_YADE, reason="Debian's yade package is not installed")
 

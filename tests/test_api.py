@@ -4,7 +4,7 @@ equilibrium points of the loading, figures written into the run folder."""
 from __future__ import annotations
 
 import pytest
-from test_figures_report import make_run
+from synthetic_runs import make_run
 
 import yadearch as ya
 

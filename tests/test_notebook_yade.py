@@ -5,13 +5,12 @@ from __future__ import annotations
 
 import json
 import sys
-from pathlib import Path
 
 import pytest
-from conftest import needs_yade
+from conftest import REPO, needs_yade
 
 pytestmark = [needs_yade, pytest.mark.yade]
-NOTEBOOK = Path(__file__).resolve().parents[1] / "examples" / "quickstart.ipynb"
+NOTEBOOK = REPO / "examples" / "quickstart.ipynb"
 
 
 def test_the_quickstart_notebook_runs(tmp_path, monkeypatch):

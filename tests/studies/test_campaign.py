@@ -13,6 +13,7 @@ from pathlib import Path
 import pandas as pd
 import pytest
 from click.testing import CliRunner
+from conftest import REPO
 
 from yadearch.case.config import preset
 from yadearch.cli.campaigns import sweep
@@ -33,7 +34,6 @@ from yadearch.studies.campaign import (
 from yadearch.studies.executors import local_pool
 from yadearch.studies.grid import grid, parse_values, read_table, run_tag
 
-REPO = Path(__file__).resolve().parents[1]
 BASE = preset("set1").with_overrides({"n_voussoirs": 15})
 HINGES = [{"interface": 1, "side": "E"}, {"interface": 3, "side": "I"}, {"interface": 8, "side": "E"},
           {"interface": 12, "side": "I"}, {"interface": 16, "side": "E"}]

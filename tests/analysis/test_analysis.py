@@ -5,98 +5,15 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from dataclasses import dataclass, field
 
 import numpy as np
-import pandas as pd
 import pytest
+from synthetic_runs import BuiltHinge, BuiltRun, paper_like_run
 
-from yadearch.analysis import Thresholds, analyse_history
+from yadearch.analysis import Thresholds
 from yadearch.analysis.blocks import block_centroids, polygon_centroid, tangential_slip_mm
 from yadearch.analysis.tracking import format_interfaces
 from yadearch.model.geometry import segmental_arch
-
-JOINT_MM = 24.0
-FRICTION_DEG = 41.2
-MU = math.tan(math.radians(FRICTION_DEG))
-SQUEEZE_MM = 0.02  # both edges of every joint overlap this much under the thrust
-GROWTH_MRAD_PER_MM = 4.0
-RUNAWAY_MM = 2.0  # the collapse record shows the arch this far past du
-
-
-@dataclass
-class BuiltHinge:
-    """A hinge built into a synthetic history: weights per interface, pivot side, delta it opens at;
-    `preload_mrad` rotates the joint by compression alone from the start (soft joints);
-    `fades_mm` (start, end) lets it close again (for migrations)."""
-
-    weights: dict[int, float]
-    side: str
-    opens_mm: float
-    preload_mrad: float = 0.0
-    fades_mm: tuple[float, float] | None = None
-
-    def rotation_mrad(self, delta: float) -> float:
-        if delta < self.opens_mm:
-            grown = 0.3 * delta / self.opens_mm
-        else:
-            grown = 0.5 + GROWTH_MRAD_PER_MM * (delta - self.opens_mm)
-        if self.fades_mm is not None:
-            start, end = self.fades_mm
-            grown *= float(np.clip((end - delta) / (end - start), 0.0, 1.0))
-        return grown
-
-
-@dataclass
-class BuiltRun:
-    hinges: list[BuiltHinge]
-    n_interfaces: int = 11
-    du_mm: float = 30.0
-    record_every_mm: float = 0.5
-    sliding: dict[int, float] = field(default_factory=dict)  # interface -> |shear| / (mu normal)
-
-    def records(self) -> list[tuple[str, float, float]]:
-        """(stage, recorded delta, delta that sets the state): self-weight, the loading's equilibria
-        below du (as the runner records them), the collapse record just past du showing the
-        run-away arch."""
-        loading = np.arange(1, int(self.du_mm / self.record_every_mm)) * self.record_every_mm
-        return ([("selfweight", 0.0, 0.0)] + [("equilibrium", d, d) for d in loading]
-                + [("collapse", self.du_mm + 0.05, self.du_mm + RUNAWAY_MM)])
-
-    def joints(self) -> pd.DataFrame:
-        rows = []
-        for step, (stage, delta, state) in enumerate(self.records()):
-            for k in range(1, self.n_interfaces + 1):
-                intrados = extrados = -SQUEEZE_MM
-                for h in self.hinges:
-                    w = h.weights.get(k, 0.0)
-                    squeeze, gap = w * h.preload_mrad * 1e-3 * JOINT_MM, w * h.rotation_mrad(state) * 1e-3 * JOINT_MM
-                    if h.side == "I":
-                        intrados, extrados = intrados - squeeze, extrados + gap
-                    else:
-                        intrados, extrados = intrados + gap, extrados - squeeze
-                normal = 20.0
-                ratio = self.sliding.get(k, 0.2) if stage == "collapse" else 0.2
-                rows.append({"stage": stage, "step": 100 * step, "delta_mm": delta, "interface": k,
-                             "rotation_rad": (intrados - extrados) / JOINT_MM,
-                             "opening_intrados_mm": intrados, "opening_extrados_mm": extrados,
-                             "force_position": 0.5, "normal_force_N": normal,
-                             "shear_force_N": -ratio * MU * normal})
-        return pd.DataFrame(rows)
-
-    def analyse(self, thresholds: Thresholds = Thresholds(), slip_mm: np.ndarray | None = None):
-        return analyse_history(self.joints(), JOINT_MM, FRICTION_DEG, self.du_mm, True, slip_mm, thresholds)
-
-
-def paper_like_run() -> BuiltRun:
-    """I hinge at 4, spread E hinge 6-7-8-9 (peak 7), E at the right support (rotated by compression
-    from the start), then E at the left support only at collapse: E-I-E-E, D at the left support."""
-    return BuiltRun([
-        BuiltHinge({4: 1.0}, "I", opens_mm=5.0),
-        BuiltHinge({6: 0.6, 7: 1.0, 8: 0.8, 9: 0.55}, "E", opens_mm=12.0),
-        BuiltHinge({11: 1.0}, "E", opens_mm=20.0, preload_mrad=3.0),
-        BuiltHinge({1: 1.0}, "E", opens_mm=30.5),
-    ])
 
 
 def summary_of(analysis) -> list[tuple]:

@@ -14,7 +14,7 @@ from pathlib import Path
 import pandas as pd
 import pytest
 from click.testing import CliRunner
-from conftest import needs_yade
+from conftest import REPO, needs_yade
 
 from yadearch.cli.campaigns import calibrate, sweep
 from yadearch.errors import YadearchError
@@ -22,7 +22,6 @@ from yadearch.studies.campaign import RESULTS_FILE, batch_run
 
 pytestmark = [pytest.mark.yade, needs_yade]
 
-REPO = Path(__file__).resolve().parents[1]
 COARSE = ["--preset", "set1", "--set", "n_voussoirs=9", "--set", "settlement_rate_mm_per_s=30",
           "--set", "progress_every_s=1e9"]
 TABLE = "kn_N_per_mm3\n0.1\n0.12\n0.2\n-1\n"  # three coarse arches and one invalid case

@@ -6,95 +6,16 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-import numpy as np
 import pytest
 from click.testing import CliRunner
-from test_analysis import BuiltHinge, BuiltRun, paper_like_run
+from synthetic_runs import make_run
 
 from yadearch.analysis import analyse_run, load_run
-from yadearch.analysis.blocks import block_centroids, case_geometry, snapshot_outlines
+from yadearch.analysis.blocks import case_geometry, snapshot_outlines
 from yadearch.cli.commands import report
 from yadearch.errors import YadearchError
 from yadearch.plotting import run_figures as figures
 from yadearch.reporting.report import match_reference, write_report
-from yadearch.results.rundir import STIFFNESS_COLUMN, write_run
-
-CASE_TOML = """name = "{name}"
-
-[geometry]
-n_voussoirs = {voussoirs}
-embrace_deg = 125.0
-internal_radius_mm = 300.0
-thickness_mm = 24.0
-depth_mm = 120.0
-support_length_mm = 36.0
-
-[material]
-friction_deg = 41.2
-
-[interface]
-kn_N_per_mm3 = {kn}
-
-[numerics]
-hinge_rotation_mrad = 2.0
-"""
-
-
-def placed(case: dict, delta_mm: float) -> dict:
-    """A snapshot with the right support settled by delta and the voussoirs following linearly."""
-    pos0 = block_centroids(case_geometry(case))
-    share = np.linspace(0.0, 1.0, len(pos0))
-    pos = pos0 - np.outer(share, [0.0, delta_mm * 1e-3])
-    return {"delta_mm": delta_mm, "step": 1, "pos_m": pos.tolist(), "rot_rad": (2e-4 * delta_mm * share).tolist(),
-            "hinges": []}
-
-
-def series_rows(built: BuiltRun) -> list[dict]:
-    rows = []
-    for stage, deltas in (("selfweight", [0.0, 0.0]), ("equilibrium", np.arange(0.5, built.du_mm, 0.5)),
-                          ("increment", [built.du_mm + 3, built.du_mm - 1, built.du_mm + 1]),
-                          ("collapse", [built.du_mm + 0.05])):
-        for d in deltas:
-            rows.append({"stage": stage, "step": len(rows), "time_s": 0.01 * len(rows), "delta_mm": d,
-                         "left_Rx_N": 12.0, "left_Ry_N": 15.8 - 0.02 * d, "right_Rx_N": -12.0,
-                         "right_Ry_N": 15.8 + 0.02 * d, "crown_dx_mm": 0.2 * d, "crown_dy_mm": -2 - 0.6 * d,
-                         "kinetic_J": 1e-5, "unbalanced": 1e-3, "max_block_speed_mm_per_s": 0.1,
-                         STIFFNESS_COLUMN: 50.0 * (1 - d / built.du_mm) if stage == "equilibrium" else None})
-    return rows
-
-
-PAPER_HINGES = [{"interface": 1, "side": "E"}, {"interface": 12, "side": "I"}, {"interface": 30, "side": "E"},
-                {"interface": 56, "side": "E"}]
-COARSE_HINGES = [{"interface": 1, "side": "E"}, {"interface": 4, "side": "I"}, {"interface": 7, "side": "E"},
-                 {"interface": 11, "side": "E"}]
-
-
-def paper_arch_run() -> BuiltRun:
-    """paper_like_run's four hinges on the paper's 55-voussoir arch: 12I, 29-32E (peak 30), 56E, 1E."""
-    return BuiltRun([BuiltHinge({12: 1.0}, "I", opens_mm=5.0),
-                     BuiltHinge({29: 0.6, 30: 1.0, 31: 0.8, 32: 0.55}, "E", opens_mm=12.0),
-                     BuiltHinge({56: 1.0}, "E", opens_mm=20.0, preload_mrad=3.0),
-                     BuiltHinge({1: 1.0}, "E", opens_mm=30.5)], n_interfaces=56)
-
-
-def make_run(folder: Path, name: str = "set2", kn: float = 5.2, paper_arch: bool = True) -> dict:
-    """A complete run folder of the paper's arch (hinges 1E 12I 30E 56E), or of a 10-voussoir one
-    (1E 4I 7E 11E); returns its summary."""
-    import tomllib
-
-    built = paper_arch_run() if paper_arch else paper_like_run()
-    case_toml = CASE_TOML.format(name=name, kn=kn, voussoirs=55 if paper_arch else 10)
-    case = tomllib.loads(case_toml)
-    summary = {
-        "name": name, "du_mm": built.du_mm + 0.0123, "collapsed": True,
-        "du_bracket_mm": [built.du_mm - 0.02, built.du_mm + 0.05],
-        "hinges_at_collapse": PAPER_HINGES if paper_arch else COARSE_HINGES,
-        "kn_N_per_mm3": kn, "ks_N_per_mm3": kn / 2, "steps": 12345, "wall_s": 67.8,
-        "yade_version": "2023.02a", "yadearch_version": "0.1.0", "git_revision": "abc123",
-    }
-    snapshots = {"selfweight": placed(case, 0.0), "collapse": placed(case, built.du_mm + 0.05)}
-    write_run(folder, case_toml, series_rows(built), built.joints().to_dict("records"), snapshots, summary)
-    return summary
 
 
 @pytest.fixture(scope="module")

@@ -1,9 +1,9 @@
 """Stiffness mapping from the paper's interface to YADE's volumetric law, and the time step."""
 
-from pathlib import Path
 
 import numpy as np
 import pytest
+from conftest import DATA
 
 from yadearch.case.config import preset
 from yadearch.case.mechanics import (
@@ -14,7 +14,7 @@ from yadearch.case.mechanics import (
     effective_kn_N_per_mm3,
 )
 
-REFERENCE = Path(__file__).with_name("data") / "paper_arch.npz"  # written by the code before arch shapes
+REFERENCE = DATA / "paper_arch.npz"  # written by the code before arch shapes
 
 
 def test_kn_maps_one_to_one_and_materials_get_twice_it():

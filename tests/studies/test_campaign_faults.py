@@ -13,17 +13,16 @@ import signal
 import subprocess
 import sys
 import time
-from pathlib import Path
 
 import pandas as pd
 import pytest
+from conftest import REPO
 
 from yadearch.case.config import preset
 from yadearch.studies.campaign import RESULTS_FILE, run_campaign
 from yadearch.studies.executors import local_pool
 from yadearch.studies.grid import grid
 
-REPO = Path(__file__).resolve().parents[1]
 KN_VALUES = [0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 2.0, 3.0, 5.0, 7.0, 10.0, 20.0]
 KILLS = 6
 SEED = 20261123

@@ -1,10 +1,10 @@
 """Geometry of the paper's arch: span, rise, volumes, joints shared exactly by neighbours."""
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
+from conftest import DATA
 
 from yadearch.case.config import preset
 from yadearch.case.mechanics import arch_geometry
@@ -12,7 +12,7 @@ from yadearch.model.geometry import block_volume, segmental_arch
 
 R, T, D = 0.300, 0.024, 0.120
 # the default case's vertex and joint arrays as built before arch shapes (commit af15cd6)
-REFERENCE = Path(__file__).with_name("data") / "paper_arch.npz"
+REFERENCE = DATA / "paper_arch.npz"
 
 
 @pytest.fixture(scope="module")
