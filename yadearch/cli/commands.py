@@ -90,15 +90,18 @@ def params() -> None:
 @case_options(with_kn=True)
 @click.option("--out", type=click.Path(file_okay=False), default="reports/limit", show_default=True,
               help="folder that receives NAME.json, NAME.pdf and NAME.png")
+@click.option("--max-snap-mm", type=click.FloatRange(min=0.0, min_open=True), default=None,
+              help="count a hinge snap that moves a block further than this (mm) as collapse, as a DEM "
+                   "run counts `runaway_mm` (default: every snap that ends in equilibrium is survived)")
 def limit(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
-          out: str) -> None:
+          out: str, max_snap_mm: float | None) -> None:
     """Rigid-block limit analysis, no YADE (kn is ignored): du_rigid, hinges, thrust-line figure."""
     from yadearch.plotting.thrust_line import save_thrust_line
     from yadearch.solve.limit import limit_analysis
     from yadearch.solve.limit_result import write_result_json
 
     case = resolve_case(preset_name, case_file, kn, settings)
-    result = limit_analysis(case)
+    result = limit_analysis(case, max_snap_mm=max_snap_mm)
     path = write_result_json(result, case, Path(out) / f"{case.name}.json")
     save_thrust_line(result, case, Path(out) / case.name)
     du = "no collapse" if result.du_rigid_mm is None else f"{result.du_rigid_mm:.2f} mm"

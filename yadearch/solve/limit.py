@@ -57,8 +57,9 @@ def stands(case: ArchCase) -> bool:
 class _March:
     """The incremental analysis of one arch; counts its LPs."""
 
-    def __init__(self, arch: RigidArch, step: float, tolerance: float) -> None:
+    def __init__(self, arch: RigidArch, step: float, tolerance: float, max_snap_mm: float | None = None) -> None:
         self.arch, self.step, self.tolerance, self.n_lp = arch, step, tolerance, 0
+        self.max_snap_mm = max_snap_mm  # a larger snap counts as collapse (None: any snap is survived)
         self.history: list[HingeRecord] = []
 
     def statics(self, placement: Placement, friction: bool = True, refine: bool = False) -> Statics:
@@ -119,7 +120,7 @@ class _March:
             if past is None or not _migrates(chain, mechanism.pivots):
                 return last, read_at, mechanism, chain
             snapped, jump, chain = self.snap(past, chain, mechanism.pivots)
-            if snapped is None:
+            if snapped is None or (self.max_snap_mm is not None and jump > self.max_snap_mm):
                 return last, read_at, mechanism, chain
             state, mechanism = snapped, self.switch(snapped, mechanism, jump)
         return state, None, mechanism, None
@@ -214,12 +215,14 @@ def _bisect(ok, high: float, width: float) -> float:
 
 def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
                    tolerance_mm: float = DEFAULT_TOLERANCE_MM,
-                   max_settlement_mm: float | None = None) -> LimitResult:
+                   max_settlement_mm: float | None = None, max_snap_mm: float | None = None) -> LimitResult:
     """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible
-    equilibrium, its hinge history and its last admissible state (see the module docstring)."""
+    equilibrium, its hinge history and its last admissible state (see the module docstring). With
+    `max_snap_mm`, a hinge snap that moves a block further counts as collapse, as a DEM run counts
+    a block running away by `runaway_mm` (docs/validation.md)."""
     start = time.perf_counter()
     arch = rigid_arch(case)
-    march = _March(arch, units.mm(step_mm), units.mm(tolerance_mm))
+    march = _March(arch, units.mm(step_mm), units.mm(tolerance_mm), max_snap_mm)
     limit = units.mm(max_settlement_mm or case.loading.max_settlement_mm)
     last, read_at, mechanism, chain = march.run(limit)
     mode, hinges = "none", tuple(p.label for p in mechanism.pivots)
