@@ -20,6 +20,7 @@ from yadearch.engine.driver import SupportDriver
 from yadearch.engine.loading import EquilibriumPath
 from yadearch.engine.recorder import Recorder, Records
 from yadearch.engine.scene import CALLBACK_NAME, body_states, build_scene
+from yadearch.engine.scene_state import capture, put_back
 from yadearch.engine.stepping import SteppingGate
 from yadearch.engine.timing import EngineClock
 from yadearch.errors import RunFailedError
@@ -82,30 +83,12 @@ class Runner:
         self.driver.bind()
 
     def snapshot(self) -> dict:
-        """Snapshot, in memory, of everything that evolves: body states, the contact model's state
-        (per-contact shear forces, CGAL's intersection hints) and the support driver.
-
-        Not `O.saveTmp`: a scene brought back by `O.loadTmp` steps 28 % slower in YADE 2023.02a's
-        polyhedra contact than the live scene (70 vs 97 steps/s, same state), and the search and
-        collapse stages run on restored states."""
-        from yade import O
-
-        # copies: YADE's State.vel and State.angVel are references to the live vectors (pos and ori
-        # are copies), so a snapshot holding them would restore whatever velocity the scene has then
-        bodies = [(tuple(s.pos), s.ori, tuple(s.vel), tuple(s.angVel)) for s in (b.state for b in O.bodies)]
-        return {"bodies": bodies, "contacts": self.scene.contacts.snapshot(),
-                "target": self.driver.target, "speed": self.driver.current_speed}
+        """Snapshot, in memory, of everything that evolves (`engine.scene_state`)."""
+        return capture(self.scene.contacts, self.driver)
 
     def restore(self, snapshot: dict) -> None:
         """Put the live scene back in a `snapshot`."""
-        from yade import O
-
-        for body, (pos, ori, vel, ang_vel) in zip(O.bodies, snapshot["bodies"]):
-            state = body.state
-            state.pos, state.ori, state.vel, state.angVel = pos, ori, vel, ang_vel
-        self.scene.contacts.restore(snapshot["contacts"])
-        self.driver.target = snapshot["target"]
-        self.driver.current_speed = snapshot["speed"]
+        put_back(snapshot, self.scene.contacts, self.driver)
 
     # ---- measurements ---------------------------------------------------------------------
     def delta(self) -> float:
