@@ -23,7 +23,6 @@ from yadearch.model.hinges import paper_labels
 from yadearch.results.rundir import RunFolder, case_differences, is_complete, read_run
 
 DEFAULT_RUNS_DIR = Path("runs")
-HINGE_LABELS = ("A", "B", "C", "D")  # the paper's positional labels (docs/validation.md)
 
 
 @dataclass(frozen=True)

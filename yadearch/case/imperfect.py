@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from yadearch.case.config import ArchCase
+from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.imperfections import (
@@ -47,6 +48,13 @@ class ArchImperfections:
                 "face_angle_rms_mrad": units.to_mrad(float(np.sqrt(np.mean(d.face_angle**2)))),
                 "face_bump_rms_mm": mm(float(np.sqrt(np.mean(d.face_bump**2)))),
                 "largest_gap_mm": mm(float(self.profiles.gap.max()))}
+
+
+def check_contact_model(contact_model: str) -> None:
+    """Only the joint elements represent imperfect faces; CaseError naming the parameter otherwise."""
+    if contact_model != "joint":
+        raise CaseError(f"numerics.contact_model = {contact_model!r} cannot represent imperfect joint faces; "
+                        "use 'joint' or set the [imperfections] amplitudes to 0")
 
 
 def amplitudes(case: ArchCase) -> ImperfectionAmplitudes:

@@ -8,7 +8,7 @@ import math
 from dataclasses import dataclass
 
 from yadearch.case.config import ArchCase
-from yadearch.case.imperfect import amplitudes
+from yadearch.case.imperfect import amplitudes, check_contact_model
 from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep
 from yadearch.errors import CaseError
 from yadearch.model import units
@@ -58,9 +58,7 @@ def _check_imperfections(case: ArchCase, joint_length_m: float) -> None:
     imp = case.imperfections
     if amplitudes(case).perfect:
         return
-    if case.numerics.contact_model != "joint":
-        raise CaseError(f"numerics.contact_model = {case.numerics.contact_model!r} cannot represent "
-                        "imperfect joint faces; use 'joint' or set the [imperfections] amplitudes to 0")
+    check_contact_model(case.numerics.contact_model)
     largest_mm = MAX_EDGE_FRACTION * units.to_mm(joint_length_m)
     if imp.edge_radius_mm > largest_mm:
         raise CaseError(f"imperfections.edge_radius_mm = {imp.edge_radius_mm:g} must be at most "

@@ -8,7 +8,6 @@ from typing import TYPE_CHECKING
 from yadearch.case.config import NumericsConfig
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
-from yadearch.results.rundir import STIFFNESS_COLUMN
 from yadearch.solve.path import RUNAWAY, STABLE, PathResult, PathSettings, PathStep, follow_path
 
 if TYPE_CHECKING:
@@ -61,8 +60,7 @@ class EquilibriumPath:
         self._at_accepted = True
         self.runner.stage = "equilibrium"
         first_series, first_joint = len(self.runner.recorder.records.series), len(self.runner.recorder.records.joints)
-        self.runner.recorder.series(force=True)
-        self.runner.recorder.records.series[-1][STIFFNESS_COLUMN] = self.runner.scene.contacts.smallest_stiffness()
+        self.runner.recorder.series(force=True, stability=True)
         snap, hinges = self.runner.recorder.joint_snapshot()
         self.runner.recorder.write_joints(snap, hinges)
         self._records.append((first_series, first_joint))

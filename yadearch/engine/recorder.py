@@ -14,6 +14,7 @@ from yadearch.errors import RunFailedError
 from yadearch.model import units
 from yadearch.model.hinges import Hinge, hinge_rotation, hinges_at
 from yadearch.model.joints import joint_states
+from yadearch.results.rundir import STIFFNESS_COLUMN
 
 
 @dataclass
@@ -49,8 +50,9 @@ class Recorder:
         right = -np.array(O.forces.f(self.scene.right_support))[:2]
         return left, right
 
-    def series(self, force: bool = False) -> None:
-        """Append a time-series row (every `series_every_steps` steps, or now with `force`)."""
+    def series(self, force: bool = False, stability: bool = False) -> None:
+        """Append a time-series row (every `series_every_steps` steps, or now with `force`); with
+        `stability`, the state's smallest tangent stiffness too (an equilibrium state's row)."""
         from yade import O, utils
 
         if not force and O.iter - self._last_series_iter < self.num.series_every_steps:
@@ -68,6 +70,8 @@ class Recorder:
             "kinetic_J": utils.kineticEnergy(), "unbalanced": self.scene.contacts.unbalanced(),
             "max_block_speed_mm_per_s": units.to_mm(float(self.voussoir_speeds().max())),
         })
+        if stability:
+            self.records.series[-1][STIFFNESS_COLUMN] = self.scene.contacts.smallest_stiffness()
 
     def joint_snapshot(self) -> tuple[dict, list[Hinge]]:
         """Per-interface state now, and its hinges."""

@@ -15,13 +15,12 @@ import numpy as np
 
 import __main__
 from yadearch.case.config import ArchCase
-from yadearch.case.imperfect import ArchImperfections, arch_imperfections
+from yadearch.case.imperfect import ArchImperfections, arch_imperfections, check_contact_model
 from yadearch.case.mechanics import ContactStiffness, arch_geometry, contact_stiffness, critical_timestep
 from yadearch.engine.cgal_contacts import CgalContacts
 from yadearch.engine.joint_elements import JointElementContacts
 from yadearch.engine.stepping import close_active
 from yadearch.engine.yade_env import import_yade
-from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.joints import z_rotation
@@ -101,9 +100,8 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
     """Reset YADE's global scene and fill it with `geometry.blocks` (indices in `fixed` do not move
     unless driven; the others move in the x-y plane) and the engines of `contact_model`; only the
     joint elements take the joints' imperfections."""
-    if imperfections is not None and contact_model != "joint":
-        raise CaseError(f"contact_model {contact_model!r} cannot represent imperfect joint faces; "
-                        "use contact_model = 'joint' or set the [imperfections] amplitudes to 0")
+    if imperfections is not None:
+        check_contact_model(contact_model)
     import_yade(threads)
     from yade import O, polyhedra_utils
     from yade.wrapper import ForceResetter, NewtonIntegrator, PolyhedraMat

@@ -74,6 +74,9 @@ def same_hinges(a: list[dict], b: list[dict]) -> bool:
                and y["interface"] in x.get("interfaces", [x["interface"]]) for x, y in zip(a, b))
 
 
+PAPER_LABELS = ("A", "B", "C", "D")  # the paper's positional hinge labels, assigned by `paper_labels`
+
+
 def paper_labels(hinges: list[tuple[int, str, float]], last_interface: int) -> dict[tuple[int, str], str]:
     """The paper's positional labels of a collapse mechanism's hinges, given as (interface, side,
     rotation): D = the extrados hinge at interface 1 (the fixed support), C = the extrados hinge at

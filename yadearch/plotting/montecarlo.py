@@ -11,9 +11,10 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
+from yadearch.model.hinges import PAPER_LABELS
 from yadearch.plotting.run_figures import save_figure
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
-from yadearch.studies.montecarlo import BAND, HINGE_LABELS, du_statistics, hinge_frequencies
+from yadearch.studies.montecarlo import BAND, du_statistics, hinge_frequencies
 
 HINGE_SIDES = {"A": "intrados", "B": "extrados", "C": "extrados, moving support",
                "D": "extrados, fixed support"}
@@ -60,7 +61,7 @@ def hinge_frequency_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
         ax = fig.subplots()
-        for k, label in enumerate(HINGE_LABELS):
+        for k, label in enumerate(PAPER_LABELS):
             rows = frequencies[frequencies["hinge"] == label]
             ax.bar(rows["interface"], rows["share"], width=0.8, color=f"C{k}",
                    label=f"{label} ({HINGE_SIDES[label]})")
@@ -71,18 +72,25 @@ def hinge_frequency_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
         return list(save_figure(fig, stem))
 
 
+def _draw_du_against(ax, done: pd.DataFrame, column: str, perfect_du_mm: float | None = None) -> None:
+    """The samples' du as dots, the median per amplitude level and its band; from the perfect arch's
+    du at amplitude 0 when given."""
+    levels = sorted(float(v) for v in done[column].unique())
+    stats = [du_statistics(done.loc[np.isclose(done[column], level), "du_mm"]) for level in levels]
+    start = [] if perfect_du_mm is None else [perfect_du_mm]
+    x = ([0.0] if start else []) + levels
+    ax.plot(done[column], done["du_mm"], ".", color="0.6", ms=2.5, label="samples")
+    ax.fill_between(x, start + [s["low"] for s in stats], start + [s["high"] for s in stats], color="C0",
+                    alpha=0.2, label=f"{BAND[0]:.0%}-{BAND[1]:.0%} band")
+    ax.plot(x, start + [s["median"] for s in stats], "o-", color="C0", ms=3.5, lw=1, label="median")
+
+
 def du_amplitude_figure(table: pd.DataFrame, column: str, stem: Path, label: str | None = None) -> list[Path]:
     """Median du and its band against the amplitude in `column`, samples as dots: STEM.pdf, .png."""
-    done = _done(table)
-    levels = sorted(done[column].unique())
-    stats = [du_statistics(done.loc[done[column] == level, "du_mm"]) for level in levels]
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
         ax = fig.subplots()
-        ax.plot(done[column], done["du_mm"], ".", color="0.6", ms=2.5, label="samples")
-        ax.fill_between(levels, [s["low"] for s in stats], [s["high"] for s in stats], color="C0",
-                        alpha=0.2, label=f"{BAND[0]:.0%}-{BAND[1]:.0%} band")
-        ax.plot(levels, [s["median"] for s in stats], "o-", color="C0", ms=3.5, lw=1, label="median")
+        _draw_du_against(ax, _done(table), column)
         ax.set_xlabel(label or column)
         ax.set_ylabel("collapse displacement du (mm)")
         ax.legend(frameon=False)
@@ -107,15 +115,7 @@ def amplitude_panels_figure(panels: list[tuple[pd.DataFrame, str, str]], stem: P
         fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, 2.4), layout="constrained")
         axes = fig.subplots(1, len(panels), sharey=True, squeeze=False)[0]
         for ax, (table, column, label) in zip(axes, panels):
-            done = _done(table)
-            levels = [0.0] + sorted(float(v) for v in done[column].unique())
-            stats = [du_statistics(done.loc[np.isclose(done[column], level), "du_mm"]) for level in levels[1:]]
-            medians = [perfect_du_mm] + [s["median"] for s in stats]
-            ax.plot(done[column], done["du_mm"], ".", color="0.6", ms=2.5, label="samples")
-            ax.fill_between(levels, [perfect_du_mm] + [s["low"] for s in stats],
-                            [perfect_du_mm] + [s["high"] for s in stats], color="C0", alpha=0.2,
-                            label=f"{BAND[0]:.0%}-{BAND[1]:.0%} band")
-            ax.plot(levels, medians, "o-", color="C0", ms=3.5, lw=1, label="median")
+            _draw_du_against(ax, _done(table), column, perfect_du_mm)
             ax.axhline(target_du_mm, color="C3", ls="--", lw=0.8, label=target_label)
             ax.set_xlabel(label)
         axes[0].set_ylabel("collapse displacement du (mm)")

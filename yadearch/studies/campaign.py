@@ -25,7 +25,7 @@ from yadearch.case.config import ArchCase, preset
 from yadearch.case.plan import plan_run
 from yadearch.engine.process import check_yade_installed, run_case_process
 from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, YadearchError
-from yadearch.model.hinges import paper_labels
+from yadearch.model.hinges import PAPER_LABELS, paper_labels
 from yadearch.results.rundir import SUMMARY_FILE, case_differences, is_complete
 from yadearch.studies.executors import Pool
 from yadearch.studies.grid import RUN_COLUMN, check_parameter, run_tag
@@ -198,26 +198,31 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
 def record_session(out: Path, started: float, pool: Pool, attempted: int, table: pd.DataFrame) -> None:
     """Append this invocation's wall time to sessions.json, so that a resumed campaign's total wall
     time is the sum of its sessions."""
-    path = out / SESSIONS_FILE
-    sessions = json.loads(path.read_text()) if path.is_file() else []
+    sessions = _sessions(out) or []
     sessions.append({"started": time.strftime("%Y-%m-%dT%H:%M:%S", time.localtime(started)),
                      "wall_s": round(time.time() - started, 1), "where": pool.where,
                      "slots": pool.slots, "runs_attempted": attempted,
                      "status_after": table["status"].value_counts().to_dict()})
-    write_text_atomically(path, json.dumps(sessions, indent=2) + "\n")
+    write_text_atomically(out / SESSIONS_FILE, json.dumps(sessions, indent=2) + "\n")
+
+
+def _sessions(out: Path) -> list[dict[str, Any]] | None:
+    """The invocations a campaign recorded in sessions.json (None if none was)."""
+    path = Path(out) / SESSIONS_FILE
+    return json.loads(path.read_text()) if path.is_file() else None
 
 
 def campaign_wall_s(out: Path) -> float | None:
     """Total wall time of a campaign over all its sessions (None if none was recorded)."""
-    path = Path(out) / SESSIONS_FILE
-    return sum(s["wall_s"] for s in json.loads(path.read_text())) if path.is_file() else None
+    sessions = _sessions(out)
+    return None if sessions is None else sum(s["wall_s"] for s in sessions)
 
 
 def campaign_core_s(out: Path) -> float | None:
     """Core-seconds a campaign used: each session's wall time times its slots (None if none was
     recorded); what the same runs would cost on any number of cores."""
-    path = Path(out) / SESSIONS_FILE
-    return sum(s["wall_s"] * s.get("slots", 1) for s in json.loads(path.read_text())) if path.is_file() else None
+    sessions = _sessions(out)
+    return None if sessions is None else sum(s["wall_s"] * s.get("slots", 1) for s in sessions)
 
 
 def write_run_table(specs: list[RunSpec], out: Path) -> None:
@@ -248,7 +253,7 @@ def label_hinges(summary: dict[str, Any], n_voussoirs: int) -> dict[str, int | N
     hinges = [(h["interface"], h["side"], rotation.get((h["interface"], h["side"]), 0.0))
               for h in summary.get("hinges_at_collapse") or []]
     by_label = {label: interface for (interface, _), label in paper_labels(hinges, n_voussoirs + 1).items()}
-    return {f"hinge_{label}": by_label.get(label) for label in "ABCD"}
+    return {f"hinge_{label}": by_label.get(label) for label in PAPER_LABELS}
 
 
 def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:

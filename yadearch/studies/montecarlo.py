@@ -17,6 +17,7 @@ import pandas as pd
 from yadearch.atomic import write_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.errors import RunFolderError
+from yadearch.model.hinges import PAPER_LABELS
 from yadearch.results.rundir import read_summary
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool
@@ -26,7 +27,6 @@ SEED_KEY = "imperfections.seed"
 MONTECARLO_FILE = "montecarlo.csv"
 SUMMARY_FILE = "montecarlo.md"
 BAND = (0.05, 0.95)  # the quantiles of du's band
-HINGE_LABELS = ("A", "B", "C", "D")
 
 
 def sample_rows(samples: int, seed: int, axes: dict[str, list[Any]] | None = None) -> list[dict[str, Any]]:
@@ -87,7 +87,7 @@ def hinge_frequencies(table: pd.DataFrame) -> pd.DataFrame:
     """How often each of the hinges A-D formed at each interface: one row a (label, interface)."""
     rows = []
     done = table[table["status"] == "done"]
-    for label in HINGE_LABELS:
+    for label in PAPER_LABELS:
         counts = done[f"hinge_{label}"].dropna().astype(int).value_counts()
         for interface, count in sorted(counts.items()):
             rows.append({"hinge": label, "interface": interface, "count": int(count),
@@ -114,7 +114,7 @@ def summary_markdown(table: pd.DataFrame, level_columns: list[str]) -> str:
                      f"{stats['high']:.2f} | {stats['mean']:.2f} |")
     lines += ["", "Hinge positions (interface: share of the samples):", ""]
     frequencies = hinge_frequencies(table)
-    for label in HINGE_LABELS:
+    for label in PAPER_LABELS:
         rows = frequencies[frequencies["hinge"] == label]
         listed = ", ".join(f"{r.interface}: {r.share:.0%}" for r in rows.itertuples())
         lines.append(f"- {label}: {listed or 'none'}")
