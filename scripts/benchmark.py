@@ -187,9 +187,9 @@ def _breakdown_child(steps: int) -> dict:
     start = time.perf_counter()
     O.run(steps, True)
     step_us = (time.perf_counter() - start) / steps * 1e6
-    rows = contacts.read_states()
+    rows = contacts.read_poses()
     forces = contacts.forces(rows)
-    reads_us = per_step_us(contacts.read_states)
+    reads_us = per_step_us(contacts.read_poses)
     law_us = per_step_us(lambda: contacts.forces(rows))
     apply_us = per_step_us(lambda: contacts.apply(forces))
     O.engines = [ForceResetter(), NewtonIntegrator(damping=0.2, gravity=(0.0, -9.81, 0.0))]

@@ -97,6 +97,9 @@ class CgalContacts:
                 interaction.geom.contactPoint, interaction.geom.normal = saved
         self.shear.shear = dict(snapshot["shear"])
 
+    def stopped(self) -> None:
+        """Nothing to do: the shear law reads the velocities YADE holds."""
+
     def unbalanced(self) -> float:
         """YADE's unbalanced force: mean resultant force on the blocks / mean contact force."""
         from yade import utils

@@ -247,6 +247,7 @@ class Runner:
         for i in self.scene.voussoir_ids:
             O.bodies[i].state.vel = (0.0, 0.0, 0.0)
             O.bodies[i].state.angVel = (0.0, 0.0, 0.0)
+        self.scene.contacts.stopped()
 
     def move_to(self, delta: float) -> None:
         """Move the support to `delta` along the trapezoidal profile."""

@@ -1,0 +1,76 @@
+"""A capacity map: du of one arch against the direction of the support movement, every
+DIRECTION_STEP_DEG over the half-plane below the horizontal (spreading 0°, settlement -90°, closing
+-180°), beside the rigid-block limit of each direction; pure tables, no YADE (docs/movements.md)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+
+DIRECTION_STEP_DEG = 15
+DIRECTIONS_DEG = tuple(float(d) for d in range(0, -181, -DIRECTION_STEP_DEG))
+DIRECTION_PARAMETER = "settlement_direction_deg"
+EQUILIBRIUM_STAGE = "equilibrium"
+MAP_COLUMNS = ("set", "direction_deg", "du_mm", "du_x_mm", "du_y_mm", "hinges", "mechanism",
+               "du_rigid_mm", "rigid_hinges", "du_over_rigid", "steps", "wall_s", "status", "folder")
+
+
+def du_components(du_mm: float, direction_deg: float) -> tuple[float, float]:
+    """The horizontal and vertical components (mm) of a support displacement `du_mm` along the
+    direction `direction_deg` (from +x, counter-clockwise)."""
+    angle = math.radians(direction_deg)
+    return du_mm * math.cos(angle), du_mm * math.sin(angle)
+
+
+def map_table(name: str, results: pd.DataFrame, rigid: dict[float, tuple[float | None, str]]) -> pd.DataFrame:
+    """One row a direction for the campaign `results` (results.csv of a sweep over the direction) of
+    the joint set `name`, with du's components and the rigid limit `rigid[direction] = (du_rigid_mm,
+    hinges)` beside it."""
+    rows = []
+    for run in results.sort_values(DIRECTION_PARAMETER, ascending=False).itertuples(index=False):
+        direction = float(getattr(run, DIRECTION_PARAMETER))
+        du = float(run.du_mm) if run.status == "done" and pd.notna(run.du_mm) else math.nan
+        du_x, du_y = du_components(du, direction)
+        du_rigid, rigid_hinges = rigid.get(direction, (None, ""))
+        rows.append({
+            "set": name, "direction_deg": direction, "du_mm": du, "du_x_mm": du_x, "du_y_mm": du_y,
+            "hinges": run.hinges if isinstance(run.hinges, str) else "",
+            "mechanism": run.mechanism if isinstance(run.mechanism, str) else "",
+            "du_rigid_mm": math.nan if du_rigid is None else du_rigid, "rigid_hinges": rigid_hinges,
+            "du_over_rigid": du / du_rigid if du_rigid else math.nan,
+            "steps": run.steps, "wall_s": run.wall_s, "status": run.status, "folder": run.folder})
+    return pd.DataFrame(rows, columns=list(MAP_COLUMNS))
+
+
+def reaction_curve(series: pd.DataFrame, direction_deg: float) -> pd.DataFrame:
+    """The moving (right) support's reaction against its movement at the equilibrium states of a
+    run's `series` (series.csv): columns delta_mm and reaction_N = -(R . d), positive when the
+    support pushes back against its own movement."""
+    states = series[series["stage"] == EQUILIBRIUM_STAGE]
+    angle = math.radians(direction_deg)
+    reaction = -(states["right_Rx_N"] * math.cos(angle) + states["right_Ry_N"] * math.sin(angle))
+    return pd.DataFrame({"delta_mm": states["delta_mm"].to_numpy(), "reaction_N": reaction.to_numpy()})
+
+
+def map_markdown(table: pd.DataFrame) -> list[str]:
+    """The capacity map as a Markdown table: one row a direction, one column group a set."""
+    sets = list(dict.fromkeys(table["set"]))
+    head = "| direction (deg) | " + " | ".join(f"{s} du (mm) | {s} (du_x, du_y) (mm) | {s} hinges" for s in sets)
+    lines = [head + " | rigid du (mm) | rigid hinges |",
+             "|---" * (1 + 3 * len(sets) + 2) + "|"]
+    for direction, rows in table.groupby("direction_deg", sort=False):
+        cells = [f"{direction:g}"]
+        for name in sets:
+            row = rows[rows["set"] == name]
+            if row.empty or not np.isfinite(row["du_mm"].iloc[0]):
+                cells += ["-", "-", "-"]
+                continue
+            r = row.iloc[0]
+            cells += [f"{r.du_mm:.2f}", f"({r.du_x_mm:.1f}, {r.du_y_mm:.1f})", r.hinges or "-"]
+        first = rows.iloc[0]
+        cells += ["-" if not np.isfinite(first.du_rigid_mm) else f"{first.du_rigid_mm:.2f}",
+                  first.rigid_hinges or "-"]
+        lines.append("| " + " | ".join(cells) + " |")
+    return lines
