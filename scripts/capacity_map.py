@@ -23,8 +23,7 @@ from yadearch.plotting.capacity import capacity_polar_figure, reaction_curves_fi
 from yadearch.results.rundir import SERIES_FILE
 from yadearch.solve.limit import limit_analysis
 from yadearch.studies.campaign import RESULTS_FILE, run_campaign
-from yadearch.studies.capacity import (DIRECTION_PARAMETER, DIRECTIONS_DEG, map_markdown, map_table,
-                                       reaction_curve)
+from yadearch.studies.capacity import DIRECTION_PARAMETER, DIRECTIONS_DEG, map_markdown, map_table, reaction_curve
 from yadearch.studies.executors import open_pool
 
 SETS = ("set1", "set2")
