@@ -126,6 +126,14 @@ def preset(name: str) -> ArchCase:
     return _preset(name)
 
 
+def movement(name: str) -> dict:
+    """The [loading] parameters of a named support movement, for `case.with_overrides(...)`:
+    settlement, spreading, closing, inclined, symmetric_spreading, abutment_tilt (docs/movements.md)."""
+    from yadearch.case.movement import movement_overrides
+
+    return movement_overrides(name)
+
+
 def open_run(path: str | Path) -> RunResult:
     """Read a finished run folder."""
     return RunResult(read_run(path))

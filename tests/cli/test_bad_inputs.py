@@ -21,6 +21,7 @@ from yadearch.errors import YadearchError
 NUMERIC = [f"{name}.{f.name}" for name, section in SECTIONS.items() for f in fields(section)
            if f.type in ("int", "float", int, float)]
 VALID_NEGATIVE = ("loading.settlement_direction_deg",  # -1 deg is a valid direction
+                  "loading.rotation_pivot_dx_mm", "loading.rotation_pivot_dy_mm",  # a pivot anywhere
                   "imperfections.face_angle_mrad", "imperfections.face_bump_mm")  # signed defects
 BAD_VALUES = ["-1", "nan", "inf", "-inf", "1e300", "'text'", "true"]
 DERIVED = [  # inside each value's range, absurd together: refused from the plan, before YADE
@@ -41,7 +42,10 @@ def probes() -> list[list[str]]:
               ["run", "--preset", "set1", "--case", "x.toml"], ["run", "--set", "nokey"],
               ["run", "--set", "no_such_parameter=1"], ["run", "--case", "/nonexistent/case.toml"],
               ["run", "--set", "edge_radius_mm=1", "--set", "contact_model=cgal"],
-              ["run", "--set", "edge_shape=square"],
+              ["run", "--set", "edge_shape=square"], ["run", "--set", "movement=wobble"],
+              ["run", "--set", "moving_support=middle"], ["limit", "--set", "movement=abutment_tilt"],
+              ["run", "--set", "support_motion=rotation", "--set", "rotation_pivot_dx_mm=10.644",
+               "--set", "rotation_pivot_dy_mm=5.541"],
               ["sweep", "--preset", "set2", "--out", "OUT/s"], ["sweep", "--kn", "1:2:cubic:3", "--out", "OUT/s"],
               ["sweep", "--kn", "0:1:log:3", "--out", "OUT/s"], ["sweep", "--param", "kn_N_per_mm3", "--out", "OUT/s"],
               ["calibrate", "--preset", "set1", "--target-du", "nan", "--out", "OUT/c.json"],

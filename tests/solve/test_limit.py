@@ -15,6 +15,7 @@ from yadearch.case.config import ArchCase, preset
 from yadearch.cli.commands import main
 from yadearch.model.geometry import block_volume, segmental_arch
 from yadearch.solve.limit import limit_analysis, stands
+from yadearch.solve.rigid import LimitError
 
 TOLERANCE_MM = 1e-3  # limit_analysis's default bisection width
 DEM_STIFFEST_DU_MM = 109.07  # reports/kn-sweep/kn100: DEM du at kn = 100 N/mm3, 1E 8I 31E 56E
@@ -144,6 +145,30 @@ def test_mirrored_support_motion_gives_the_mirrored_collapse(coarse):
     assert up.du_rigid_mm == pytest.approx(down.du_rigid_mm, abs=2 * TOLERANCE_MM)
     mirrored = sorted(f"{mirror - int(h[:-1])}{h[-1]}" for h in down.collapse_hinges)
     assert sorted(up.collapse_hinges) == mirrored
+
+
+def test_the_left_support_settling_gives_the_mirror_image_of_the_right(coarse):
+    case, right = coarse
+    left = limit_analysis(case.with_overrides({"moving_support": "left"}))
+    mirror = case.geometry.n_voussoirs + 2
+    assert left.du_rigid_mm == pytest.approx(right.du_rigid_mm, abs=2 * TOLERANCE_MM)
+    assert sorted(left.collapse_hinges) == sorted(f"{mirror - int(h[:-1])}{h[-1]}" for h in right.collapse_hinges)
+
+
+def test_both_supports_spreading_collapse_at_half_the_path_of_one(coarse):
+    """Spreading both supports by d each opens the span as one support spreading by 2 d; the arch
+    then differs only by a rigid shift, so du halves (to the bisection's width)."""
+    case, _ = coarse
+    one = limit_analysis(case.with_overrides({"settlement_direction_deg": 0.0}))
+    both = limit_analysis(case.with_overrides({"settlement_direction_deg": 0.0, "moving_support": "both"}))
+    assert both.du_rigid_mm == pytest.approx(one.du_rigid_mm / 2, abs=2 * TOLERANCE_MM)
+
+
+@pytest.mark.parametrize("loading, message", [({"support_motion": "rotation"}, "translations only"),
+                                              ({"moving_support": "both"}, "one rigid body")])
+def test_movements_the_limit_analysis_does_not_follow_are_refused_in_one_line(loading, message):
+    with pytest.raises(LimitError, match=message):
+        limit_analysis(arch_case(n_voussoirs=15, **loading))
 
 
 def test_limit_does_not_depend_on_the_step(coarse):

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes, check_contact_model
 from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep
+from yadearch.case.movement import case_movement
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.imperfections import MAX_EDGE_FRACTION
@@ -34,6 +35,7 @@ def plan_run(case: ArchCase) -> RunPlan:
     num = case.numerics
     geometry = arch_geometry(case)  # refuses an arch that cannot be built (case/shape.py)
     _check_imperfections(case, min(joint.length for joint in geometry.joints))
+    case_movement(case, geometry)  # refuses a movement that cannot be followed (a pivot on the path's point)
     dt = num.timestep_safety * critical_timestep(case, geometry, contact_stiffness(case, geometry))
     if not math.isfinite(dt) or dt <= 0.0:
         raise CaseError(f"the time step from interface.kn_N_per_mm3 = {case.interface.kn_N_per_mm3:g} "

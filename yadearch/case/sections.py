@@ -73,15 +73,37 @@ class InterfaceConfig:
 
 @dataclass
 class LoadingConfig:
-    """Self-weight, then a monotonic displacement of the right support."""
+    """Self-weight, then a monotonic movement of one support or both (docs/movements.md): a
+    translation in a direction or a rotation about a pivot, measured by the distance its springing
+    point travels."""
 
     gravity_m_per_s2: float = field(default=9.81, metadata=_num(0, 100, low_open=True,
                                     doc="gravitational acceleration (m/s^2)"))
+    moving_support: str = field(default="right", metadata={
+        "choices": ("right", "left", "both"), "predates": "right",
+        "doc": "the support that moves: 'right', 'left' (the mirror image of the right one's "
+        "motion) or 'both' (mirror-symmetric about the arch's axis)"})
+    support_motion: str = field(default="translation", metadata={
+        "choices": ("translation", "rotation"), "predates": "translation",
+        "doc": "'translation' along settlement_direction_deg, or 'rotation' about the pivot "
+        "(rotation_pivot_dx_mm, rotation_pivot_dy_mm) in rotation_sense"})
     settlement_direction_deg: float = field(default=-90.0, metadata=_num(-180, 180,
-                                            doc="direction of the support motion from +x (deg); "
-                                                "-90 = vertical settlement"))
+                                            doc="direction of the right support's translation from +x "
+                                                "(deg): -90 settlement, 0 spreading, 180 closing; the "
+                                                "left support mirrors it"))
+    rotation_pivot_dx_mm: float = field(default=0.0, metadata={**_num(
+        -1e5, 1e5, doc="pivot of a rotating right support from its springing intrados point, along x "
+        "(mm; the left support mirrors it)"), "predates": 0.0})
+    rotation_pivot_dy_mm: float = field(default=0.0, metadata={**_num(
+        -1e5, 1e5, doc="the same pivot's offset along y (mm; e.g. -200 = a pier's base 200 mm below)"),
+        "predates": 0.0})
+    rotation_sense: str = field(default="clockwise", metadata={
+        "choices": ("clockwise", "counterclockwise"), "predates": "clockwise",
+        "doc": "sense of the right support's rotation seen from the front (clockwise about a pivot "
+        "below it moves the springing outward); the left support turns the other way"})
     max_settlement_mm: float = field(default=150.0, metadata=_num(0, 10_000, low_open=True,
-                                     doc="stop without collapse beyond this support displacement (mm)"))
+                                     doc="stop without collapse beyond this support displacement (mm, "
+                                         "along the path)"))
 
 
 @dataclass

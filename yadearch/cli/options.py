@@ -8,9 +8,11 @@ from typing import Any
 import click
 
 from yadearch.case.config import ArchCase, load_case, preset
+from yadearch.case.movement import movement_overrides
 from yadearch.studies.grid import parse_scalar
 
 PRESETS = ("set1", "set2")
+MOVEMENT_KEY = "movement"  # --set movement=NAME: a named support movement (case.movement.MOVEMENT_PRESETS)
 
 
 def resolve_case(preset_name: str | None, case_file: str | None, kn: float | None,
@@ -24,6 +26,9 @@ def resolve_case(preset_name: str | None, case_file: str | None, kn: float | Non
         if "=" not in item:
             raise click.UsageError(f"--set expects key=value, got {item!r}")
         key, value = item.split("=", 1)
+        if key.strip() == MOVEMENT_KEY:  # a named movement stands for its [loading] parameters
+            overrides.update(movement_overrides(value.strip()))
+            continue
         overrides[key.strip()] = parse_scalar(value)
     if kn is not None:
         overrides["interface.kn_N_per_mm3"] = kn
@@ -37,7 +42,9 @@ def case_options(with_kn: bool) -> Callable[[Any], Any]:
                      help="paper arch with the kn of voussoir set 1 (0.25 N/mm3) or set 2 (5.2 N/mm3)"),
         click.option("--case", "case_file", type=click.Path(dir_okay=False), help="case TOML file"),
         click.option("--set", "settings", multiple=True, metavar="KEY=VALUE",
-                     help="override any parameter, e.g. --set numerics.damping=0.3 (see `yadearch params`)"),
+                     help="override any parameter, e.g. --set numerics.damping=0.3 (see `yadearch params`); "
+                     "--set movement=NAME picks a named support movement (settlement, spreading, closing, "
+                     "inclined, symmetric_spreading, abutment_tilt)"),
     ]
     if with_kn:
         options.insert(2, click.option("--kn", type=float, help="interface normal stiffness kn (N/mm3)"))

@@ -1,4 +1,5 @@
-"""The driven support: moves it to a target displacement along a trapezoidal speed profile (YADE layer)."""
+"""The driven supports: move them along the case's path (`model.movement`) to a target path
+length with a trapezoidal speed profile (YADE layer)."""
 
 from __future__ import annotations
 
@@ -8,30 +9,32 @@ from typing import Any
 import numpy as np
 
 from yadearch.engine.scene import CALLBACK_NAME, ArchScene
+from yadearch.model.movement import Movement, SupportMotion
 
 ARRIVED_M = 1e-12  # the support is on target within this distance (m)
 DRIVER_LABEL = "yadearch_support_driver"
-DRIVER_CRUISE_PERIOD = 50  # steps between the support driver's calls while it cruises
+DRIVER_CRUISE_PERIOD = 50  # steps between the support driver's calls while it cruises (translations)
 
 
 class SupportDriver:
-    """Moves the driven support towards a target displacement with a trapezoidal speed profile
+    """Moves the driven supports towards a target path length with a trapezoidal speed profile
     (accelerate at `accel` up to `speed`, cruise, brake at `accel` to stop exactly on target; accel
-    0 = instantaneous)."""
+    0 = instantaneous). A translating support keeps one velocity; a rotating one turns about its
+    pivot, its centroid's velocity set anew every step."""
 
-    def __init__(self, scene: ArchScene, direction: np.ndarray, speed: float, accel: float):
+    def __init__(self, scene: ArchScene, movement: Movement, speed: float, accel: float):
         self.scene = scene
-        self.direction = (float(direction[0]), float(direction[1]))
+        self.movement = movement
         self.accel = accel if accel > 0 else math.inf
         self.set_speed(speed)
         self._target = 0.0
         self.current_speed = 0.0
-        self.origin = (0.0, 0.0)
-        self._state: Any = None  # YADE's State of the driven support, once bound
+        self._moving: list[tuple[Any, SupportMotion]] = []  # YADE State and motion of each moving support
+        self._origin: tuple[tuple[float, float], Any] = ((0.0, 0.0), None)  # the reference's pos, ori
         self._engine: Any = None  # the driver's PyRunner, once bound
 
     def set_speed(self, speed: float) -> None:
-        """The cruise speed of the next moves (m/s)."""
+        """The cruise speed of the next moves (m/s along the path)."""
         self.speed = speed
         self.ramp = speed * speed / (2.0 * self.accel)  # braking distance from full speed
 
@@ -42,10 +45,15 @@ class SupportDriver:
         return PyRunner(command=f"{CALLBACK_NAME}_driver.step()", iterPeriod=1, label=DRIVER_LABEL)
 
     def bind(self) -> None:
-        """Attach to the support body and to the driver's engine."""
+        """Attach to the moving support bodies (the path's reference first) and the driver's engine."""
         from yade import O
 
-        self._state = O.bodies[self.scene.right_support].state
+        bodies = {"left": self.scene.left_support, "right": self.scene.right_support}
+        self._moving = []
+        for side in ("right", "left"):  # the path's reference first
+            motion = self.movement.motion(side)
+            if motion is not None:
+                self._moving.append((O.bodies[bodies[side]].state, motion))
         self._engine = next(e for e in O.engines if getattr(e, "label", "") == DRIVER_LABEL)
 
     @property
@@ -60,21 +68,29 @@ class SupportDriver:
         self._engine.iterPeriod = 1
 
     def zero_here(self) -> None:
-        """Measure displacements from the support's current position and stop it there."""
-        self.origin = (float(self._state.pos[0]), float(self._state.pos[1]))
+        """Measure the path from the supports' current placement and stop them there."""
+        state = self._moving[0][0]
+        self._origin = ((float(state.pos[0]), float(state.pos[1])), state.ori)
         self.target = 0.0
 
     def displacement(self) -> float:
-        """Support displacement along the loading direction since `origin` (m); plain floats, as
-        it runs every step."""
-        pos, origin, direction = self._state.pos, self.origin, self.direction
+        """Path length travelled since `zero_here` (m), read from the reference support's placement:
+        its rotation over the turn per unit path, or its translation along the path's direction."""
+        state, motion = self._moving[0]
+        if motion.rotation != 0.0:
+            turn = state.ori * self._origin[1].conjugate()  # minieigen quaternions index (x, y, z, w)
+            angle = 2.0 * math.atan2(turn[2], turn[3])
+            angle = (angle + math.pi) % (2.0 * math.pi) - math.pi
+            return angle / motion.rotation
+        pos, origin, direction = state.pos, self._origin[0], motion.translation
         return (pos[0] - origin[0]) * direction[0] + (pos[1] - origin[1]) * direction[1]
 
     def step(self) -> None:
-        """Set the support velocity for this step (called every step before the integrator)."""
+        """Set the supports' velocities for this step (called before the integrator)."""
         from yade import O
 
-        remaining = self.target - self.displacement()
+        lam = self.displacement()
+        remaining = self.target - lam
         dt = O.dt
         if remaining <= ARRIVED_M:  # a float-rounding remainder must not keep the support creeping
             speed = 0.0
@@ -82,18 +98,24 @@ class SupportDriver:
             speed = min(self.speed, self.current_speed + self.accel * dt,
                         math.sqrt(2.0 * self.accel * remaining), remaining / dt)
         self.current_speed = speed
-        self._state.vel = (speed * self.direction[0], speed * self.direction[1], 0.0)
+        for state, motion in self._moving:
+            if motion.rotation == 0.0:
+                vx, vy = motion.translation * speed
+            else:
+                vx, vy = motion.velocity_of(np.array([state.pos[0], state.pos[1]]), lam) * speed
+            state.vel = (float(vx), float(vy), 0.0)
+            state.angVel = (0.0, 0.0, motion.rotation * speed)
         self._schedule(remaining, speed, dt)
 
     def _schedule(self, remaining: float, speed: float, dt: float) -> None:
         """Call `step` only when the speed can change: never while the support stands on target
-        (holds, self-weight), and every `DRIVER_CRUISE_PERIOD` steps at most while it cruises short of
-        its braking distance. The support's path is the same as with a call every step."""
+        (holds, self-weight), and every `DRIVER_CRUISE_PERIOD` steps at most while a translation
+        cruises short of its braking distance. The support's path is the same as with a call every step."""
         if speed == 0.0 and remaining <= ARRIVED_M:
             self._engine.dead = True
             return
         cruise_steps = 0
-        if speed == self.speed:
+        if speed == self.speed and not self.movement.rotates:
             cruise_steps = int((remaining - self.ramp) / (speed * dt))
         self._engine.iterPeriod = max(1, min(DRIVER_CRUISE_PERIOD, cruise_steps - 1))
 

@@ -16,6 +16,7 @@ from collections.abc import Callable
 import numpy as np
 
 from yadearch.case.config import ArchCase
+from yadearch.case.movement import case_movement
 from yadearch.engine.driver import SupportDriver
 from yadearch.engine.loading import EquilibriumPath
 from yadearch.engine.recorder import Recorder, Records
@@ -39,10 +40,9 @@ class Runner:
         self.num = case.numerics
         self.log = log
         self.scene = build_scene(case)
-        angle = units.radians(case.loading.settlement_direction_deg)
-        direction = np.array([math.cos(angle), math.sin(angle), 0.0])
+        self.movement = case_movement(case, self.scene.geometry)
         self.full_speed = units.mm(case.settlement_speed_mm_per_s)
-        self.driver = SupportDriver(self.scene, direction, self.full_speed,
+        self.driver = SupportDriver(self.scene, self.movement, self.full_speed,
                                     units.mm(self.num.support_acceleration_mm_per_s2))
         self._install_driver()
         self.recorder = Recorder(self.scene, self.driver, self.num)
@@ -279,7 +279,10 @@ class Runner:
         if path.collapsed:
             hinges = loading.collapse_state(path.upper)
             du, hi = units.to_mm(path.du), units.to_mm(path.upper)
-            summary.update(collapsed=True, du_mm=du, du_bracket_mm=[lo, hi])
+            dx, dy = self.movement.components(path.du)
+            summary.update(collapsed=True, du_mm=du, du_bracket_mm=[lo, hi],
+                           du_components_mm=[units.to_mm(dx), units.to_mm(dy)],
+                           du_rotation_mrad=1e3 * self.movement.rotation(path.du))
             self.log(f"[{self.case.name}] du = {du:.2f} mm (no equilibrium at {hi:.2f}, "
                      f"equilibrium at {lo:.2f})")
         else:

@@ -52,7 +52,8 @@ def simulate(case: ArchCase, out: Path) -> dict:
                      "kn_effective_N_per_mm3": runner.scene.stiffness.kn / units.N_PER_MM3,
                      "settlement_speed_mm_per_s": case.settlement_speed_mm_per_s,
                      "contact_model": case.numerics.contact_model,
-                     "loading": {"moving_support": "right",
+                     "loading": {"moving_support": case.loading.moving_support,
+                                 "motion": case.loading.support_motion,
                                  "direction_deg": case.loading.settlement_direction_deg,
                                  "max_displacement_mm": case.loading.max_settlement_mm},
                      "collapse_criterion": criterion_text(case.numerics)}

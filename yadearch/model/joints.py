@@ -31,7 +31,7 @@ class JointState:
     force_position: np.ndarray
 
 
-def rotate(vectors: np.ndarray, angles: np.ndarray) -> np.ndarray:
+def rotate(vectors: np.ndarray, angles: np.ndarray | float) -> np.ndarray:
     """Rotate 2-D `vectors` (..., 2) about z by `angles` (rad), element by element."""
     c, s = np.cos(angles), np.sin(angles)
     x, y = vectors[..., 0], vectors[..., 1]

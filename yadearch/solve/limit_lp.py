@@ -77,12 +77,18 @@ def weight_load(arch: RigidArch, placement: Placement) -> np.ndarray:
     return np.column_stack([np.zeros_like(x), arch.weight, arch.weight * x]).ravel()
 
 
-def _split(arch: RigidArch, matrix: np.ndarray,
-           load: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Rows of the voussoirs (unknown motion) and of the moving support (prescribed motion)."""
+def _split(arch: RigidArch, matrix: np.ndarray, load: np.ndarray,
+           placement: Placement) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Rows of the voussoirs (unknown motion), and the contacts' rates per unit path rate of the
+    moving supports (prescribed motion: their generalised velocities at the origin)."""
     n = arch.n_blocks
     vouss = slice(3, 3 * (n - 1))
-    return matrix[vouss], load[vouss], matrix[3 * (n - 1):]
+    rates = np.zeros(matrix.shape[1])
+    for side, rows in (("left", slice(0, 3)), ("right", slice(3 * (n - 1), None))):
+        motion = arch.movement.motion(side)
+        if motion is not None:
+            rates += matrix[rows].T @ motion.rates(placement.delta)
+    return matrix[vouss], load[vouss], rates
 
 
 def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True,
@@ -92,10 +98,10 @@ def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True,
     `refine`, forces corrected by least squares so that equilibrium holds to round-off."""
     c = contacts(arch, placement)
     m = arch.n_joints
-    a_v, load, a_s = _split(arch, equilibrium_matrix(arch, c), weight_load(arch, placement))
+    a_v, load, support = _split(arch, equilibrium_matrix(arch, c), weight_load(arch, placement), placement)
     scale = arch.weight[1:-1].sum()  # forces in units of the arch's weight, moments of it x a joint
     rows = np.tile([1.0, 1.0, 1.0 / arch.geometry.thickness], len(load) // 3)
-    objective = a_s.T @ np.array([*arch.direction, 0.0])
+    objective = support
     bounds = [(0.0, None if t else 0.0) for t in c.touching.T.ravel()] + [(None, None)] * m
     a_ub = b_ub = None
     if friction:
@@ -124,8 +130,8 @@ def solve_kinematics(arch: RigidArch, placement: Placement, support_speed: float
     `support_speed` 0 the velocities are boxed, giving the collapse mechanism when one exists."""
     c = contacts(arch, placement)
     m = arch.n_joints
-    a_v, load, a_s = _split(arch, equilibrium_matrix(arch, c), weight_load(arch, placement))
-    support = a_s.T @ np.array([*arch.direction, 0.0]) * support_speed  # rates from the support motion
+    a_v, load, rates = _split(arch, equilibrium_matrix(arch, c), weight_load(arch, placement), placement)
+    support = rates * support_speed  # rates from the support motion
     corner = c.touching.T.ravel()
     slip = np.concatenate([np.zeros(2 * m, bool), c.touching.any(axis=1)])
     length = arch.geometry.span  # rotations boxed to 1/length: velocities of order one across the arch

@@ -14,9 +14,11 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
+from yadearch.case.movement import case_movement
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, block_volume
+from yadearch.model.movement import Movement, SupportMotion
 
 INTRADOS, EXTRADOS = 0, 1
 SIDES = "IE"  # hinge label of a pivot corner: I = intrados pivot, E = extrados pivot
@@ -49,7 +51,7 @@ def polygon_centroid(xy: np.ndarray) -> np.ndarray:
 @dataclass(frozen=True)
 class RigidArch:
     """What the limit analysis needs of a case, in SI: per block weight (N) and undeformed centroid;
-    per interface its blocks, corners (joint, side, xy) and normal; the support's unit direction."""
+    per interface its blocks, corners (joint, side, xy) and normal; the supports' movement."""
 
     geometry: ArchGeometry
     weight: np.ndarray
@@ -58,7 +60,7 @@ class RigidArch:
     right: np.ndarray
     corner0: np.ndarray
     normal0: np.ndarray
-    direction: np.ndarray
+    movement: Movement
     tan_phi: float
     touch_tol: float
 
@@ -78,13 +80,20 @@ def rigid_arch(case: ArchCase) -> RigidArch:
     weight = np.array([unit_weight * block_volume(b) for b in geometry.blocks])
     centroid0 = np.array([polygon_centroid(b[: len(b) // 2, :2]) for b in geometry.blocks])
     joints = geometry.joints
-    angle = units.radians(case.loading.settlement_direction_deg)
+    movement = case_movement(case, geometry)
+    if movement.rotates:
+        raise LimitError("the limit analysis follows support translations only: loading.support_motion "
+                         "'rotation' is for the DEM run")
+    if movement.moves_rigidly:
+        raise LimitError("both supports translate alike (loading.moving_support 'both', "
+                         f"settlement_direction_deg {case.loading.settlement_direction_deg:g}): the arch "
+                         "is carried as one rigid body and cannot collapse")
     return RigidArch(
         geometry=geometry, weight=weight, centroid0=centroid0,
         left=np.array([j.left for j in joints]), right=np.array([j.right for j in joints]),
         corner0=np.array([[j.intrados, j.extrados] for j in joints]),
         normal0=np.array([j.normal for j in joints]),
-        direction=np.array([np.cos(angle), np.sin(angle)]),
+        movement=movement,
         tan_phi=float(np.tan(units.radians(case.material.friction_deg))),
         touch_tol=TOUCH_FRACTION * geometry.thickness)
 
@@ -153,23 +162,55 @@ def close_linkage(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
                   delta: float) -> Placement | None:
     """The placement at support displacement `delta` reached along a three-hinge mechanism, exactly.
 
-    Blocks left of the first hinge stay, those right of the third translate with the support, the
-    two segments between are rigid bars P1-P2 and P2-P3 whose new middle pivot is the intersection
-    of two circles (no time integration, so no drift); None when the bars cannot reach."""
+    Blocks left of the first hinge move with the left support, those right of the third with the
+    right support (either may stand still), the two segments between are rigid bars P1-P2 and P2-P3
+    whose new middle pivot is the intersection of two circles (no time integration, so no drift);
+    None when the bars cannot reach."""
     if len(pivots) != 3:
         raise ValueError(f"a three-hinge linkage needs three pivots, got {len(pivots)}")
     p1, p2, p3 = sorted(pivots)
     old = [_pivot_point(arch, placement, p) for p in (p1, p2, p3)]
-    move = (delta - placement.delta) * arch.direction
-    new = [old[0], None, old[2] + move]
-    new[1] = _middle_joint(old[0], old[1], old[2], new[0], new[2])
-    if new[1] is None:
+    steps = [_SupportStep(arch.movement.motion(side), placement.delta, delta) for side in ("left", "right")]
+    first, last = steps[0].carry(old[0]), steps[1].carry(old[2])
+    middle = _middle_joint(old[0], old[1], old[2], first, last)
+    if middle is None:
         return None
+    new = [first, middle, last]
     rot, shift = placement.rot.copy(), placement.shift.copy()
     _move(rot, shift, slice(p1.joint + 1, p2.joint + 1), old[:2], new[:2])
     _move(rot, shift, slice(p2.joint + 1, p3.joint + 1), old[1:], new[1:])
-    shift[p3.joint + 1:] += move
+    steps[0].move_blocks(rot, shift, slice(0, p1.joint + 1))
+    steps[1].move_blocks(rot, shift, slice(p3.joint + 1, None))
     return replace(placement, delta=delta, rot=rot, shift=shift)
+
+
+class _SupportStep:
+    """A support's rigid motion from path `start` to `end` (none if it stands still): a translation
+    alone moves points by the same vector, a rotation turns them about the support's pivot."""
+
+    def __init__(self, motion: SupportMotion | None, start: float, end: float):
+        self.motion, self.start, self.end = motion, start, end
+
+    def carry(self, point: np.ndarray) -> np.ndarray:
+        if self.motion is None:
+            return point
+        if self.motion.rotation == 0.0:
+            return point + (self.end - self.start) * self.motion.translation
+        angle0, shift0 = self.motion.placement(self.start)
+        angle1, shift1 = self.motion.placement(self.end)
+        return rotate(point - shift0, angle1 - angle0) + shift1
+
+    def move_blocks(self, rot: np.ndarray, shift: np.ndarray, blocks: slice) -> None:
+        """Carry the placements of `blocks` (rot, shift arrays, in place) with the support."""
+        if self.motion is None:
+            return
+        if self.motion.rotation == 0.0:
+            shift[blocks] += (self.end - self.start) * self.motion.translation
+            return
+        angle0, shift0 = self.motion.placement(self.start)
+        angle1, shift1 = self.motion.placement(self.end)
+        rot[blocks] += angle1 - angle0
+        shift[blocks] = rotate(shift[blocks] - shift0, angle1 - angle0) + shift1
 
 
 def turn_four_bar(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ...],

@@ -1,0 +1,87 @@
+"""Support movements (no YADE): the springing point travels the path at unit rate whether the
+support translates or turns, the left support mirrors the right one, and the generalised velocity
+the limit analysis uses is the motion's own."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from yadearch.case.config import preset
+from yadearch.case.mechanics import arch_geometry
+from yadearch.case.movement import case_movement
+from yadearch.errors import CaseError
+
+LAM = 0.02  # m of path
+
+
+@pytest.fixture(scope="module")
+def geometry():
+    return arch_geometry(preset("set2"))
+
+
+def movement(**loading):
+    case = preset("set2").with_overrides(loading)
+    return case_movement(case, arch_geometry(case))
+
+
+@pytest.mark.parametrize("loading", [{}, {"settlement_direction_deg": 0.0},
+                                     {"support_motion": "rotation", "rotation_pivot_dy_mm": -200.0},
+                                     {"support_motion": "rotation", "rotation_pivot_dx_mm": 50.0,
+                                      "rotation_sense": "counterclockwise"}])
+def test_the_springing_point_travels_the_path_length(loading):
+    """Along a straight line for a translation, an arc for a rotation: du is the path length."""
+    ref = movement(**loading).reference
+    points = np.array([ref.carry(ref.springing, lam) for lam in np.linspace(0.0, LAM, 2001)])
+    travelled = np.linalg.norm(np.diff(points, axis=0), axis=1).sum()
+    assert travelled == pytest.approx(LAM, rel=1e-6)
+
+
+def test_the_default_settles_the_right_support_straight_down():
+    move = movement()
+    assert move.left is None and not move.rotates
+    dx, dy = move.components(LAM)
+    assert dx == pytest.approx(0.0, abs=1e-15) and dy == pytest.approx(-LAM)
+
+
+def test_a_clockwise_turn_about_a_pivot_below_moves_the_springing_outward_and_down():
+    move = movement(support_motion="rotation", rotation_pivot_dy_mm=-200.0)
+    dx, dy = move.components(LAM)
+    assert dx > 0.0 and dy < 0.0 and move.rotation(LAM) < 0.0
+    ref = move.reference
+    pivot_after = ref.carry(ref.pivot, LAM)
+    assert np.allclose(pivot_after, ref.pivot, atol=1e-15)  # the pivot stays put
+
+
+def test_both_supports_move_as_mirror_images():
+    move = movement(moving_support="both", support_motion="rotation", rotation_pivot_dy_mm=-150.0)
+    right, left = move.right.carry(move.right.springing, LAM), move.left.carry(move.left.springing, LAM)
+    assert left == pytest.approx(right * np.array([-1.0, 1.0]))
+    assert move.left.rotation == -move.right.rotation
+
+
+def test_the_rates_at_the_origin_move_every_support_point_as_the_placement_does():
+    """v(point) = v_origin + omega z x point: the generalised velocity of the limit analysis."""
+    ref = movement(support_motion="rotation", rotation_pivot_dx_mm=30.0, rotation_pivot_dy_mm=-120.0).reference
+    point = ref.springing + np.array([0.01, -0.05])
+    h = 1e-7
+    numeric = (ref.carry(point, LAM + h) - ref.carry(point, LAM - h)) / (2 * h)
+    vx, vy, omega = ref.rates(LAM)
+    now = ref.carry(point, LAM)
+    assert numeric == pytest.approx([vx - omega * now[1], vy + omega * now[0]], rel=1e-6)
+    assert numeric == pytest.approx(ref.velocity_of(now, LAM), rel=1e-6)
+
+
+def test_equal_settlements_of_both_supports_carry_the_arch_rigidly():
+    assert movement(moving_support="both").moves_rigidly
+    assert not movement(moving_support="both", settlement_direction_deg=0.0).moves_rigidly
+
+
+def test_a_pivot_on_the_springing_point_is_refused_in_one_line(geometry):
+    half = math.hypot(*(np.asarray(geometry.joints[-1].extrados[:2]) - geometry.joints[-1].intrados[:2])) / 2
+    angle = math.atan2(*(np.asarray(geometry.joints[-1].extrados[:2]) - geometry.joints[-1].intrados[:2])[::-1])
+    with pytest.raises(CaseError, match="rotation_pivot_dx_mm"):
+        movement(support_motion="rotation", rotation_pivot_dx_mm=1e3 * half * math.cos(angle),
+                 rotation_pivot_dy_mm=1e3 * half * math.sin(angle))

@@ -1,0 +1,46 @@
+"""The support movement a case describes, in SI (`model.movement`), with its errors as one line."""
+
+from __future__ import annotations
+
+from yadearch.case.config import ArchCase
+from yadearch.errors import CaseError
+from yadearch.model import units
+from yadearch.model.geometry import ArchGeometry
+from yadearch.model.movement import Movement, support_movement
+
+
+def case_movement(case: ArchCase, geometry: ArchGeometry) -> Movement:
+    """The movement of `case`'s supports along its path, for the scene's driver and the limit analysis."""
+    loading = case.loading
+    try:
+        return support_movement(geometry, loading.moving_support, loading.support_motion,
+                                loading.settlement_direction_deg,
+                                (units.mm(loading.rotation_pivot_dx_mm), units.mm(loading.rotation_pivot_dy_mm)),
+                                loading.rotation_sense)
+    except ValueError as exc:
+        raise CaseError(f"loading: {exc} (rotation_pivot_dx_mm {loading.rotation_pivot_dx_mm}, "
+                        f"rotation_pivot_dy_mm {loading.rotation_pivot_dy_mm})") from None
+
+
+def _loading(moving_support: str, motion: str, direction_deg: float = -90.0, pivot_dy_mm: float = 0.0) -> dict:
+    return {"loading.moving_support": moving_support, "loading.support_motion": motion,
+            "loading.settlement_direction_deg": direction_deg, "loading.rotation_pivot_dx_mm": 0.0,
+            "loading.rotation_pivot_dy_mm": pivot_dy_mm, "loading.rotation_sense": "clockwise"}
+
+
+TILT_PIVOT_DEPTH_MM = -100.0  # `abutment_tilt`: the pivot 100 mm below the springing's intrados point
+MOVEMENT_PRESETS: dict[str, dict] = {
+    "settlement": _loading("right", "translation", -90.0),
+    "spreading": _loading("right", "translation", 0.0),
+    "closing": _loading("right", "translation", 180.0),
+    "inclined": _loading("right", "translation", -45.0),  # down and outward at 45 degrees
+    "symmetric_spreading": _loading("both", "translation", 0.0),
+    "abutment_tilt": _loading("right", "rotation", pivot_dy_mm=TILT_PIVOT_DEPTH_MM),  # springing out and down
+}
+
+
+def movement_overrides(name: str) -> dict:
+    """The [loading] parameters of a named movement (`--set movement=NAME`, `MOVEMENT_PRESETS`)."""
+    if name not in MOVEMENT_PRESETS:
+        raise CaseError(f"movement must be one of {', '.join(MOVEMENT_PRESETS)}, got {name!r}")
+    return dict(MOVEMENT_PRESETS[name])

@@ -1,0 +1,132 @@
+"""Support movements as rigid motions of the support blocks along a path parameter (pure numpy).
+
+A moving support either translates in a fixed direction or turns about a fixed pivot; the right
+support, the left one, or both mirror-symmetrically about the arch's axis (x = 0). The path
+parameter lam (m) is the distance its springing point (the middle of its face on the arch) has
+travelled: along a straight line for a translation, along an arc for a rotation. du is lam at
+collapse, and its components are the springing point's displacement (docs/movements.md). The engine
+drives YADE's support bodies with it and the rigid-block limit analysis places its supports with it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from yadearch.model.geometry import ArchGeometry
+from yadearch.model.joints import rotate
+
+SIDES = ("left", "right")
+MOVING_SUPPORTS = ("right", "left", "both")
+MOTIONS = ("translation", "rotation")
+ROTATION_SENSES = ("clockwise", "counterclockwise")
+MIN_PIVOT_ARM_FRACTION = 1e-3  # a pivot closer than this x the joint to the springing point is refused
+SAME_DIRECTION = 1e-9  # unit translations closer than this are the same direction
+
+
+@dataclass(frozen=True)
+class SupportMotion:
+    """One support's rigid motion per unit path: its `pivot` (m, undeformed position) translates by
+    `translation` x lam and the block turns by `rotation` x lam (rad per m) about it."""
+
+    translation: np.ndarray
+    rotation: float
+    pivot: np.ndarray
+    springing: np.ndarray  # the middle of the support's face on the arch, undeformed (m)
+
+    def placement(self, lam: float) -> tuple[float, np.ndarray]:
+        """(angle, shift) at path `lam`: an undeformed point X of the support is at R(angle) X + shift."""
+        angle = self.rotation * lam
+        return angle, self.pivot + self.translation * lam - rotate(self.pivot, angle)
+
+    def carry(self, point: np.ndarray, lam: float) -> np.ndarray:
+        """Where the undeformed support point `point` (2,) is at path `lam`."""
+        angle, shift = self.placement(lam)
+        return rotate(point, angle) + shift
+
+    def rates(self, lam: float) -> np.ndarray:
+        """(vx, vy, omega) per unit path rate of the support's material point at the origin: the
+        generalised velocity the limit analysis's equilibrium rows are written for."""
+        pivot_now = self.pivot + self.translation * lam
+        return np.array([self.translation[0] + self.rotation * pivot_now[1],
+                         self.translation[1] - self.rotation * pivot_now[0], self.rotation])
+
+    def velocity_of(self, point_now: np.ndarray, lam: float) -> np.ndarray:
+        """Velocity (2,) per unit path rate of the support's material point now at `point_now`."""
+        arm = point_now - (self.pivot + self.translation * lam)
+        return self.translation + self.rotation * np.array([-arm[1], arm[0]])
+
+
+@dataclass(frozen=True)
+class Movement:
+    """The motions of the supports that move (None: fixed) and which one measures the path."""
+
+    left: SupportMotion | None
+    right: SupportMotion | None
+
+    @property
+    def reference(self) -> SupportMotion:
+        """The support whose springing point measures the path: the right one when it moves."""
+        motion = self.right if self.right is not None else self.left
+        assert motion is not None, "a movement moves at least one support"
+        return motion
+
+    def motion(self, side: str) -> SupportMotion | None:
+        return self.left if side == "left" else self.right
+
+    @property
+    def rotates(self) -> bool:
+        return any(m is not None and m.rotation != 0.0 for m in (self.left, self.right))
+
+    @property
+    def moves_rigidly(self) -> bool:
+        """Both supports translate alike: the arch is carried as one rigid body and cannot collapse."""
+        return (self.left is not None and self.right is not None and not self.rotates
+                and bool(np.allclose(self.left.translation, self.right.translation, rtol=0.0, atol=SAME_DIRECTION)))
+
+    def components(self, lam: float) -> tuple[float, float]:
+        """The reference springing point's displacement (m) at path `lam`."""
+        ref = self.reference
+        dx, dy = ref.carry(ref.springing, lam) - ref.springing
+        return float(dx), float(dy)
+
+    def rotation(self, lam: float) -> float:
+        """The reference support's rotation (rad, counter-clockwise) at path `lam`."""
+        return self.reference.rotation * lam
+
+
+def _mirror(motion: SupportMotion) -> SupportMotion:
+    """The same motion reflected about the arch's axis x = 0."""
+    flip = np.array([-1.0, 1.0])
+    return SupportMotion(motion.translation * flip, -motion.rotation, motion.pivot * flip, motion.springing * flip)
+
+
+def springing_point(geometry: ArchGeometry, side: str) -> np.ndarray:
+    """The middle of a support's face on the arch (m): of the first joint (left) or the last (right)."""
+    joint = geometry.joints[0] if side == "left" else geometry.joints[-1]
+    return 0.5 * (np.asarray(joint.intrados[:2]) + np.asarray(joint.extrados[:2]))
+
+
+def support_movement(geometry: ArchGeometry, moving_support: str, motion: str, direction_deg: float,
+                     pivot_offset: tuple[float, float], sense: str) -> Movement:
+    """The movement a case describes. `direction_deg` (from +x) is the right support's translation;
+    `pivot_offset` (m) places the right support's pivot from its springing intrados point and
+    `sense` gives its rotation as seen from the front; the left support mirrors the right one."""
+    if moving_support not in MOVING_SUPPORTS or motion not in MOTIONS or sense not in ROTATION_SENSES:
+        raise ValueError(f"unknown movement {moving_support!r}, {motion!r}, {sense!r}")
+    springing = springing_point(geometry, "right")
+    if motion == "translation":
+        angle = math.radians(direction_deg)
+        right = SupportMotion(np.array([math.cos(angle), math.sin(angle)]), 0.0, springing.copy(), springing)
+    else:
+        pivot = np.asarray(geometry.joints[-1].intrados[:2]) + np.asarray(pivot_offset, dtype=float)
+        arm = float(np.linalg.norm(springing - pivot))
+        if arm < MIN_PIVOT_ARM_FRACTION * geometry.longest_joint:
+            raise ValueError("the rotation pivot is the springing point itself: the path would not move")
+        turn = (-1.0 if sense == "clockwise" else 1.0) / arm  # the springing point moves at unit speed
+        right = SupportMotion(np.zeros(2), turn, pivot, springing)
+    left = _mirror(right)
+    return Movement(left=left if moving_support in ("left", "both") else None,
+                    right=right if moving_support in ("right", "both") else None)
