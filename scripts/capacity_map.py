@@ -62,8 +62,9 @@ def report(table: pd.DataFrame) -> str:
              "`.venv/bin/python scripts/capacity_map.py`.", "",
              *map_markdown(table), "",
              f"![capacity map]({POLAR_FIGURE}.png)", "",
-             "Reaction of the moving support along its path at the equilibrium states (positive: it pushes "
-             "back against its movement):", "",
+             "The force of the arch on the moving support along its path at the equilibrium states: "
+             "positive when the arch pushes the support along its movement (the support holds it back), "
+             "negative when the arch resists the movement (closing):", "",
              f"![reactions]({REACTION_FIGURE}.png)", ""]
     for row in settlement.itertuples(index=False):
         paper = reference.SETS[row.set]["numerical"]["du_mm"]

@@ -71,7 +71,9 @@ def test_the_rates_at_the_origin_move_every_support_point_as_the_placement_does(
     vx, vy, omega = ref.rates(LAM)
     now = ref.carry(point, LAM)
     assert numeric == pytest.approx([vx - omega * now[1], vy + omega * now[0]], rel=1e-6)
-    assert numeric == pytest.approx(ref.velocity_of(now, LAM), rel=1e-6)
+    central = (ref.displacement_of(now, LAM, h) - ref.displacement_of(now, LAM, -h)) / (2 * h)
+    assert numeric == pytest.approx(central, rel=1e-6)
+    assert ref.carry(point, LAM + 0.003) == pytest.approx(now + ref.displacement_of(now, LAM, 0.003), abs=1e-15)
 
 
 def test_equal_settlements_of_both_supports_carry_the_arch_rigidly():

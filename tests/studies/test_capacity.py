@@ -24,14 +24,14 @@ def test_du_splits_into_its_horizontal_and_vertical_components(direction, expect
     assert math.hypot(du_x, du_y) == pytest.approx(10.0)
 
 
-def test_the_reaction_along_a_settlement_is_the_upward_support_force_at_equilibrium_states():
+def test_a_settling_support_carries_the_arch_s_weight_share_along_its_path_at_equilibrium_states():
     series = pd.DataFrame({"stage": ["increment", "equilibrium", "equilibrium"], "delta_mm": [0.5, 1.0, 2.0],
                            "right_Rx_N": [3.0, -5.0, -4.0], "right_Ry_N": [9.0, 15.0, 14.0]})
     settlement = reaction_curve(series, -90.0)
     assert settlement["delta_mm"].tolist() == [1.0, 2.0]
-    assert settlement["reaction_N"].tolist() == pytest.approx([15.0, 14.0])
-    spreading = reaction_curve(series, 0.0)  # the support pulled outwards: the arch's thrust holds it back
-    assert spreading["reaction_N"].tolist() == pytest.approx([5.0, 4.0])
+    assert settlement["force_N"].tolist() == pytest.approx([15.0, 14.0])
+    spreading = reaction_curve(series, 0.0)  # the arch's thrust pushes a spreading support outward
+    assert spreading["force_N"].tolist() == pytest.approx([5.0, 4.0])
 
 
 def _results() -> pd.DataFrame:
@@ -59,7 +59,7 @@ def test_the_figures_are_written_as_pdf_and_png(tmp_path):
     rigid = {0.0: (27.9, "9I 28E 47I 56E"), -90.0: (113.5, "1E 8I 32E 56E"), -180.0: (None, "")}
     table = pd.concat([map_table("set1", _results(), rigid), map_table("set2", _results(), rigid)])
     written = capacity_polar_figure(table, tmp_path / "map")
-    curve = pd.DataFrame({"delta_mm": [1.0, 2.0], "reaction_N": [15.0, 14.0]})
+    curve = pd.DataFrame({"delta_mm": [1.0, 2.0], "force_N": [15.0, 14.0]})
     written += reaction_curves_figure({"set1": {-90.0: curve}, "set2": {0.0: curve}}, tmp_path / "reactions")
     assert sorted(p.name for p in written) == ["map.pdf", "map.png", "reactions.pdf", "reactions.png"]
     assert all(p.stat().st_size > 1000 for p in written)

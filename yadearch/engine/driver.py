@@ -20,7 +20,7 @@ class SupportDriver:
     """Moves the driven supports towards a target path length with a trapezoidal speed profile
     (accelerate at `accel` up to `speed`, cruise, brake at `accel` to stop exactly on target; accel
     0 = instantaneous). A translating support keeps one velocity; a rotating one turns about its
-    pivot, its centroid's velocity set anew every step."""
+    pivot, its centroid's velocity set anew every step to the chord of that step's arc."""
 
     def __init__(self, scene: ArchScene, movement: Movement, speed: float, accel: float):
         self.scene = scene
@@ -102,7 +102,7 @@ class SupportDriver:
             if motion.rotation == 0.0:
                 vx, vy = motion.translation * speed
             else:
-                vx, vy = motion.velocity_of(np.array([state.pos[0], state.pos[1]]), lam) * speed
+                vx, vy = motion.displacement_of(np.array([state.pos[0], state.pos[1]]), lam, speed * dt) / dt
             state.vel = (float(vx), float(vy), 0.0)
             state.angVel = (0.0, 0.0, motion.rotation * speed)
         self._schedule(remaining, speed, dt)

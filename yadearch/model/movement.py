@@ -53,10 +53,12 @@ class SupportMotion:
         return np.array([self.translation[0] + self.rotation * pivot_now[1],
                          self.translation[1] - self.rotation * pivot_now[0], self.rotation])
 
-    def velocity_of(self, point_now: np.ndarray, lam: float) -> np.ndarray:
-        """Velocity (2,) per unit path rate of the support's material point now at `point_now`."""
-        arm = point_now - (self.pivot + self.translation * lam)
-        return self.translation + self.rotation * np.array([-arm[1], arm[0]])
+    def displacement_of(self, point_now: np.ndarray, lam: float, step: float) -> np.ndarray:
+        """How far (2,) the support's material point now at `point_now` moves while the path goes
+        from `lam` to `lam + step`: exact, so that a rotating support driven step by step keeps its
+        pivot in place to round-off."""
+        pivot_now = self.pivot + self.translation * lam
+        return self.translation * step + rotate(point_now - pivot_now, self.rotation * step) + pivot_now - point_now
 
 
 @dataclass(frozen=True)

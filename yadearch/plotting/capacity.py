@@ -1,6 +1,6 @@
 """Figures of a capacity map: du against the direction of the support movement as a polar plot (one
-curve per joint set and the rigid-block limit, each point labelled with its collapse hinges), and the
-moving support's reaction against its displacement for every direction."""
+curve per joint set and the rigid-block limit) beside each direction's collapse hinges, and the
+force of the arch on the moving support against its displacement for every direction."""
 
 from __future__ import annotations
 
@@ -10,57 +10,78 @@ import matplotlib
 import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from yadearch.plotting.run_figures import save_figure
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 
+RADIAL_TICKS = 4  # du rings of the polar plot
 RIGID_STYLE = {"color": "0.35", "ls": "--", "marker": "x", "ms": 3, "lw": 0.8}
-LABEL_FONT_SIZE = 4.5  # hinge labels beside the polar points
-LABEL_OFFSET = 1.06  # hinge labels sit this far out from their point (a fraction of its radius)
 
 
 def capacity_polar_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
-    """du (radius, mm) against the direction of the support movement (angle, degrees from +x; the
-    half-plane below the horizontal) for every `set` of `table`, with the rigid limit
-    (`du_rigid_mm`) and each point's collapse hinges: STEM.pdf and STEM.png."""
+    """Left: du (radius, mm) against the direction of the support movement (angle, degrees from +x;
+    the half-plane below the horizontal) for every `set` of `table`, with the rigid limit
+    (`du_rigid_mm`). Right: the collapse mechanism of each direction, its hinges' interfaces (I =
+    intrados, E = extrados). STEM.pdf and STEM.png."""
     with matplotlib.rc_context(SWEEP_STYLE):
-        fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, 4.2), layout="constrained")
-        ax = fig.add_subplot(projection="polar")
-        for k, (name, runs) in enumerate(table.groupby("set", sort=False)):
+        fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, 3.4), layout="constrained")
+        polar = fig.add_subplot(1, 2, 1, projection="polar")
+        hinges = fig.add_subplot(1, 2, 2)
+        groups = list(table.groupby("set", sort=False))
+        for k, (name, runs) in enumerate(groups):
             runs = runs.sort_values("direction_deg")
-            theta = np.radians(runs["direction_deg"].to_numpy(dtype=float))
-            ax.plot(theta, runs["du_mm"], marker="o", ms=3, lw=1, color=f"C{k}", label=f"{name} (DEM)")
-            for angle, du, hinges in zip(theta, runs["du_mm"], runs["hinges"].fillna("")):
-                if np.isfinite(du):
-                    ax.annotate(hinges, (angle, du * LABEL_OFFSET), fontsize=LABEL_FONT_SIZE, color=f"C{k}",
-                                ha="center", va="center")
+            polar.plot(np.radians(runs["direction_deg"].to_numpy(dtype=float)), runs["du_mm"], marker="o",
+                       ms=3, lw=1, color=f"C{k}", label=f"{name} (DEM)")
+            offset = (k - (len(groups) - 1) / 2) * SET_OFFSET_DEG
+            _hinge_marks(hinges, runs["direction_deg"], runs["hinges"], f"C{k}", offset)
         rigid = table.drop_duplicates("direction_deg").sort_values("direction_deg")
         if rigid["du_rigid_mm"].notna().any():
-            ax.plot(np.radians(rigid["direction_deg"].to_numpy(dtype=float)), rigid["du_rigid_mm"],
-                    label="rigid blocks (limit analysis)", **RIGID_STYLE)
-        ax.set_thetamin(-180)
-        ax.set_thetamax(0)
-        ax.set_xticks(np.radians(np.arange(-180, 1, 15)))
-        ax.set_xlabel("direction of the support movement (deg from +x); radius: du (mm)")
-        ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=3, frameon=False)
+            polar.plot(np.radians(rigid["direction_deg"].to_numpy(dtype=float)), rigid["du_rigid_mm"],
+                       label="rigid blocks", **RIGID_STYLE)
+            _hinge_marks(hinges, rigid["direction_deg"], rigid["rigid_hinges"], RIGID_STYLE["color"],
+                         len(groups) / 2 * SET_OFFSET_DEG)
+        polar.set_thetamin(-180)
+        polar.set_thetamax(0)
+        polar.set_xticks(np.radians(np.arange(-180, 1, 30)))
+        polar.yaxis.set_major_locator(MaxNLocator(RADIAL_TICKS))
+        polar.set_title("du (mm) against the direction (deg from +x)")
+        polar.legend(loc="upper center", bbox_to_anchor=(0.5, -0.02), ncol=3, frameon=False)
+        hinges.set_xlabel("direction of the support movement (deg from +x)")
+        hinges.set_ylabel("hinge interface (o intrados, s extrados)")
+        hinges.set_xticks(np.arange(-180, 1, 30))
+        hinges.grid(alpha=0.3, lw=0.5)
         return list(save_figure(fig, stem))
 
 
+SET_OFFSET_DEG = 3.0  # the sets' hinge marks side by side at one direction
+SIDE_MARKERS = {"I": "o", "E": "s"}
+
+
+def _hinge_marks(ax, directions: pd.Series, hinge_labels: pd.Series, color: str, offset_deg: float) -> None:
+    """One mark per hinge ("9I 29E ...") at its interface, beside its direction."""
+    for direction, labels in zip(directions, hinge_labels.fillna("")):
+        for label in str(labels).split():
+            side = label[-1]
+            ax.plot(direction + offset_deg, int(label[:-1]), SIDE_MARKERS.get(side, "x"), ms=2.5, color=color,
+                    mfc="none" if side == "E" else color, mew=0.7)
+
+
 def reaction_curves_figure(curves: dict[str, dict[float, pd.DataFrame]], stem: Path) -> list[Path]:
-    """The moving support's reaction along its movement (N, positive against it) against the
-    support displacement (mm) at the equilibrium states of every direction, one panel per set:
-    `curves[set][direction_deg]` holds the `delta_mm` and `reaction_N` columns."""
+    """The force of the arch on the moving support along its path (N; `studies.capacity.reaction_curve`)
+    against the support displacement (mm) at the equilibrium states of every direction, one panel
+    per set: `curves[set][direction_deg]` holds the `delta_mm` and `force_N` columns."""
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, 2.8), layout="constrained")
         axes = fig.subplots(1, len(curves), sharey=True, squeeze=False)[0]
         colormap = matplotlib.colormaps["viridis"]
         for ax, (name, by_direction) in zip(axes, curves.items()):
             for direction, curve in sorted(by_direction.items()):
-                ax.plot(curve["delta_mm"], curve["reaction_N"], lw=0.9,
+                ax.plot(curve["delta_mm"], curve["force_N"], lw=0.9,
                         color=colormap((direction + 180.0) / 180.0), label=f"{direction:g}°")
             ax.set_title(name)
             ax.set_xlabel("support displacement along its path (mm)")
             ax.axhline(0.0, color="0.6", lw=0.5)
-        axes[0].set_ylabel("reaction of the moving support\nalong its path (N)")
+        axes[0].set_ylabel("force of the arch on the moving\nsupport along its path (N)")
         axes[-1].legend(title="direction", ncol=2, loc="upper right")
         return list(save_figure(fig, stem))

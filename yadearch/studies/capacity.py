@@ -45,13 +45,14 @@ def map_table(name: str, results: pd.DataFrame, rigid: dict[float, tuple[float |
 
 
 def reaction_curve(series: pd.DataFrame, direction_deg: float) -> pd.DataFrame:
-    """The moving (right) support's reaction against its movement at the equilibrium states of a
-    run's `series` (series.csv): columns delta_mm and reaction_N = -(R . d), positive when the
-    support pushes back against its own movement."""
+    """The force of the arch on the moving (right) support along its path at the equilibrium states
+    of a run's `series` (series.csv): columns delta_mm and force_N = -(R . d) for the support's
+    reaction R on the arch, positive when the arch pushes the support along its movement (a
+    settling or spreading support holds the arch back), negative when it resists (closing)."""
     states = series[series["stage"] == EQUILIBRIUM_STAGE]
     angle = math.radians(direction_deg)
     reaction = -(states["right_Rx_N"] * math.cos(angle) + states["right_Ry_N"] * math.sin(angle))
-    return pd.DataFrame({"delta_mm": states["delta_mm"].to_numpy(), "reaction_N": reaction.to_numpy()})
+    return pd.DataFrame({"delta_mm": states["delta_mm"].to_numpy(), "force_N": reaction.to_numpy()})
 
 
 def map_markdown(table: pd.DataFrame) -> list[str]:

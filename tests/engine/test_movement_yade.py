@@ -1,0 +1,60 @@
+"""Support movements on real YADE (a coarse arch, a few thousand steps each): a turning support
+follows its prescribed rotation about a pivot that stays put, and both supports move as mirror
+images, each along the path the case describes (docs/movements.md)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from conftest import HAS_YADE, needs_yade
+
+from yadearch.case.config import preset
+from yadearch.case.movement import movement_overrides
+from yadearch.engine.yade_env import import_yade
+from yadearch.model import units
+from yadearch.model.joints import rotate
+
+pytestmark = [needs_yade, pytest.mark.yade]
+if HAS_YADE:
+    import_yade()
+
+COARSE = {"n_voussoirs": 15, "kn_N_per_mm3": 0.25, "progress_every_s": 1e9}
+PATH_MM = 3.0
+PLACE_TOLERANCE_M = 1e-9  # the supports move by velocity x dt: their placement drifts by round-off only
+
+
+def support_placement(state, pos0: np.ndarray, ori0) -> tuple[float, np.ndarray]:
+    """(rotation, shift) of a support body since (pos0, ori0): a point X is now at R X + shift."""
+    turn = state.ori * ori0.conjugate()
+    angle = 2.0 * np.arctan2(turn[2], turn[3])
+    pos = np.array([state.pos[0], state.pos[1]])
+    return float(angle), pos - rotate(pos0, angle)
+
+
+@pytest.mark.parametrize("movement", ["abutment_tilt", "symmetric_spreading"])
+def test_moving_supports_follow_the_path_the_case_describes(movement):
+    from yade import O
+
+    from yadearch.engine.runner import Runner
+
+    runner = Runner(preset("set1").with_overrides({**COARSE, **movement_overrides(movement)}), log=lambda line: None)
+    try:
+        runner.selfweight()
+        ids = {"left": runner.scene.left_support, "right": runner.scene.right_support}
+        start = {side: (np.array(O.bodies[i].state.pos)[:2], O.bodies[i].state.ori) for side, i in ids.items()}
+        runner.move_to(runner.delta() + units.mm(PATH_MM))
+        assert runner.delta() == pytest.approx(units.mm(PATH_MM), abs=1e-9)
+        for side, body in ids.items():
+            motion = runner.movement.motion(side)
+            angle, shift = support_placement(O.bodies[body].state, *start[side])
+            if motion is None:
+                assert angle == 0.0 and np.all(shift == 0.0)
+                continue
+            expected_angle, expected_shift = motion.placement(units.mm(PATH_MM))
+            assert angle == pytest.approx(expected_angle, abs=1e-12)
+            assert shift == pytest.approx(expected_shift, abs=PLACE_TOLERANCE_M)
+            pivot_now = rotate(motion.pivot, angle) + shift
+            assert pivot_now == pytest.approx(motion.pivot + motion.translation * units.mm(PATH_MM),
+                                              abs=PLACE_TOLERANCE_M)
+    finally:
+        runner.close()
