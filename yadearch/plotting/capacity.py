@@ -16,7 +16,8 @@ from yadearch.plotting.run_figures import save_figure
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 
 RADIAL_TICKS = 4  # du rings of the polar plot
-RIGID_STYLE = {"color": "0.35", "ls": "--", "marker": "x", "ms": 3, "lw": 0.8}
+RIGID_COLOR = "0.35"
+RIGID_STYLE = {"color": RIGID_COLOR, "ls": "--", "marker": "x", "ms": 3, "lw": 0.8}
 
 
 def capacity_polar_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
@@ -39,7 +40,7 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
         if rigid["du_rigid_mm"].notna().any():
             polar.plot(np.radians(rigid["direction_deg"].to_numpy(dtype=float)), rigid["du_rigid_mm"],
                        label="rigid blocks", **RIGID_STYLE)
-            _hinge_marks(hinges, rigid["direction_deg"], rigid["rigid_hinges"], RIGID_STYLE["color"],
+            _hinge_marks(hinges, rigid["direction_deg"], rigid["rigid_hinges"], RIGID_COLOR,
                          len(groups) / 2 * SET_OFFSET_DEG)
         polar.set_thetamin(-180)
         polar.set_thetamax(0)
