@@ -363,7 +363,8 @@ def main() -> int:
          f"{sweep['run_wall_s'] / 60:.1f} min" if sweep_wall is not None
          else "no sweep folder given (sweep_wall_s null)"),
     ]
-    montecarlo_label = f"{TARGET_MONTECARLO_SAMPLES} Monte Carlo samples <= {TARGET_MONTECARLO_WALL_S / 60:g} min on 2 cores"
+    montecarlo_label = (f"{TARGET_MONTECARLO_SAMPLES} Monte Carlo samples <= "
+                        f"{TARGET_MONTECARLO_WALL_S / 60:g} min on 2 cores")
     verdicts.append((montecarlo_label,
                      montecarlo_wall is not None and montecarlo["done"] >= TARGET_MONTECARLO_SAMPLES
                      and montecarlo_wall <= TARGET_MONTECARLO_WALL_S,
