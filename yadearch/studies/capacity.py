@@ -21,7 +21,8 @@ def du_components(du_mm: float, direction_deg: float) -> tuple[float, float]:
     """The horizontal and vertical components (mm) of a support displacement `du_mm` along the
     direction `direction_deg` (from +x, counter-clockwise)."""
     angle = math.radians(direction_deg)
-    return du_mm * math.cos(angle), du_mm * math.sin(angle)
+    # rounded to 1e-9 mm (and -0.0 to 0.0): cos(-90 deg) is 6e-17, not 0, in floating point
+    return round(du_mm * math.cos(angle), 9) + 0.0, round(du_mm * math.sin(angle), 9) + 0.0
 
 
 def map_table(name: str, results: pd.DataFrame, rigid: dict[float, tuple[float | None, str]]) -> pd.DataFrame:
