@@ -21,6 +21,7 @@ from yadearch.model.imperfections import (
     JointDefects,
     draw_defects,
     gap_profiles,
+    keystones,
     wedge_openings,
 )
 from yadearch.model.joint_law import JointLaw, joint_forces, joint_table
@@ -31,10 +32,11 @@ LAW = JointLaw(KN, KS, TAN_PHI, DEPTH)
 
 
 def _defects(intrados_edge: float = 0.0, angle: float = 0.0, bump: float = 0.0,
-             shape: str = ROUND) -> JointDefects:
-    """One joint whose upper (right) face has a worn intrados edge, an angle and a bump."""
+             shape: str = ROUND, offset: float = 0.0) -> JointDefects:
+    """One joint whose upper (right) face has a worn intrados edge, an angle, a bump and an offset."""
     zero = np.zeros(1)
-    return JointDefects(zero, zero, np.array([intrados_edge]), zero, np.array([angle]), np.array([bump]), shape)
+    return JointDefects(zero, zero, np.array([intrados_edge]), zero, np.array([angle]), np.array([bump]), shape,
+                        zero, np.array([offset]))
 
 
 def _table(defects: JointDefects | None):
@@ -113,6 +115,30 @@ def test_a_wedge_opens_the_real_faces_at_one_end_by_its_angle_times_the_length(a
     assert extrados[0] - intrados[0] == pytest.approx(angle * WIDTH)
     worn = wedge_openings(_defects(intrados_edge=2e-3, bump=1e-4), np.array([WIDTH]))
     assert worn == (pytest.approx([0.0]), pytest.approx([0.0]))
+
+
+@pytest.mark.parametrize("offset", [3e-3, -3e-3])
+def test_a_voussoir_set_off_its_neighbour_bears_on_the_shared_part_of_the_joint(offset):
+    """The upper face shifted by o along the joint: a closure c presses the W - |o| both faces
+    share, force kn depth c (W - |o|) at the middle of that part, o / 2 from the joint's middle."""
+    closure = 1e-6
+    table, pos = _table(_defects(offset=offset))
+    pressed = pos.copy()
+    pressed[1, 1] -= closure
+    forces = _forces(table, pressed)
+    assert forces.compressed_length[0] == pytest.approx(WIDTH - abs(offset), rel=1e-9)
+    assert forces.normal_force[0] == pytest.approx(KN * DEPTH * closure * (WIDTH - abs(offset)), rel=1e-9)
+    assert forces.point[0, 0] == pytest.approx(offset / 2, abs=1e-12)
+
+
+def test_voussoir_offsets_are_drawn_per_voussoir_and_the_keystone_gets_its_own():
+    amps = ImperfectionAmplitudes(voussoir_offset=1e-4, voussoir_offset_sd=5e-5, keystone_offset=-1e-3)
+    defects = draw_defects(amps, 12, seed=7, lengths=np.full(12, WIDTH))  # 11 voussoirs, keystone 6th
+    assert defects.left_offset[0] == 0.0 and defects.right_offset[-1] == 0.0  # the supports stay
+    assert np.array_equal(defects.right_offset[:-1], defects.left_offset[1:])  # a voussoir's two faces
+    voussoirs = defects.right_offset[:-1]
+    assert keystones(11) == [5] and keystones(10) == [4, 5]
+    assert voussoirs[5] < -5e-4 < voussoirs[np.arange(11) != 5].min()
 
 
 def test_a_convex_bump_touches_in_the_middle_and_a_hollow_one_at_the_ends():

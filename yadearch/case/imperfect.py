@@ -47,6 +47,7 @@ class ArchImperfections:
         return {"edge_mean_mm": mm(float(edges.mean())), "edge_max_mm": mm(float(edges.max())),
                 "face_angle_rms_mrad": units.to_mrad(float(np.sqrt(np.mean(d.face_angle**2)))),
                 "face_bump_rms_mm": mm(float(np.sqrt(np.mean(d.face_bump**2)))),
+                "offset_rms_mm": mm(float(np.sqrt(np.mean(d.right_offset[:-1] ** 2)))),
                 "largest_gap_mm": mm(float(self.profiles.gap.max()))}
 
 
@@ -62,7 +63,9 @@ def amplitudes(case: ArchCase) -> ImperfectionAmplitudes:
     i = case.imperfections
     return ImperfectionAmplitudes(i.edge_shape, units.mm(i.edge_radius_mm), units.mm(i.edge_radius_sd_mm),
                                   units.mrad(i.face_angle_mrad), units.mrad(i.face_angle_sd_mrad),
-                                  units.mm(i.face_bump_mm), units.mm(i.face_bump_sd_mm))
+                                  units.mm(i.face_bump_mm), units.mm(i.face_bump_sd_mm),
+                                  units.mm(i.voussoir_offset_mm), units.mm(i.voussoir_offset_sd_mm),
+                                  units.mm(i.keystone_offset_mm))
 
 
 def arch_imperfections(case: ArchCase, geometry: ArchGeometry) -> ArchImperfections | None:

@@ -7,12 +7,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from yadearch.case.config import ArchCase
-from yadearch.case.imperfect import amplitudes, check_contact_model
+from yadearch.case.imperfect import amplitudes, arch_imperfections, check_contact_model
 from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep
 from yadearch.case.movement import case_movement
 from yadearch.errors import CaseError
 from yadearch.model import units
+from yadearch.model.geometry import ArchGeometry
 from yadearch.model.imperfections import MAX_EDGE_FRACTION
 
 SETTLE_HOLDS = 10  # settling holds a run may need (one per bracket end retried), for the worst case
@@ -34,7 +37,7 @@ def plan_run(case: ArchCase) -> RunPlan:
     """The time step, gravity ramp and worst-case steps of `case`; CaseError if it cannot run."""
     num = case.numerics
     geometry = arch_geometry(case)  # refuses an arch that cannot be built (case/shape.py)
-    _check_imperfections(case, min(joint.length for joint in geometry.joints))
+    _check_imperfections(case, geometry)
     case_movement(case, geometry)  # refuses a movement that cannot be followed (a pivot on the path's point)
     dt = num.timestep_safety * critical_timestep(case, geometry, contact_stiffness(case, geometry))
     if not math.isfinite(dt) or dt <= 0.0:
@@ -55,16 +58,26 @@ def plan_run(case: ArchCase) -> RunPlan:
     return RunPlan(dt, ramp_s, worst_s, steps)
 
 
-def _check_imperfections(case: ArchCase, joint_length_m: float) -> None:
-    """Imperfections need the joint elements, and a worn edge must leave part of the joint flat."""
+def _check_imperfections(case: ArchCase, geometry: ArchGeometry) -> None:
+    """Imperfections need the joint elements, and a worn edge or an offset face must leave part of the
+    joint shared."""
     imp = case.imperfections
     if amplitudes(case).perfect:
         return
     check_contact_model(case.numerics.contact_model)
-    largest_mm = MAX_EDGE_FRACTION * units.to_mm(joint_length_m)
+    largest_mm = MAX_EDGE_FRACTION * units.to_mm(min(joint.length for joint in geometry.joints))
     if imp.edge_radius_mm > largest_mm:
         raise CaseError(f"imperfections.edge_radius_mm = {imp.edge_radius_mm:g} must be at most "
                         f"{largest_mm:.3g} mm ({MAX_EDGE_FRACTION:g} of the joint length)")
+    drawn = arch_imperfections(case, geometry)
+    assert drawn is not None
+    shift = np.abs(drawn.defects.right_offset - drawn.defects.left_offset)
+    if np.any(shift > 2.0 * MAX_EDGE_FRACTION * drawn.lengths):
+        raise CaseError(f"imperfections.voussoir_offset_mm = {imp.voussoir_offset_mm:g}, voussoir_offset_sd_mm "
+                        f"= {imp.voussoir_offset_sd_mm:g} and keystone_offset_mm = {imp.keystone_offset_mm:g} "
+                        f"offset two faces by up to {units.to_mm(float(shift.max())):.3g} mm; at most "
+                        f"{2 * MAX_EDGE_FRACTION:g} of the joint length "
+                        f"({units.to_mm(float(drawn.lengths.min())):.3g} mm)")
 
 
 def _loading_worst_case_s(case: ArchCase) -> float:

@@ -186,9 +186,9 @@ class NumericsConfig:
 
 @dataclass
 class ImperfectionsConfig:
-    """Geometric imperfections of the voussoirs' joint faces (docs/theory.md), each a mean and a
-    standard deviation drawn per joint from `seed`; all zero = the perfect arch. The supports' faces
-    stay perfect."""
+    """Geometric imperfections of the voussoirs' joint faces and their assembly (docs/theory.md), each a
+    mean and a standard deviation drawn per joint or voussoir from `seed`; all zero = the perfect
+    arch. The supports' faces stay perfect and where they were designed."""
 
     seed: int = field(default=0, metadata=_num(0, 2**32 - 1, doc="seed of the random draws (one seed, "
                       "one geometry)"))
@@ -209,6 +209,14 @@ class ImperfectionsConfig:
                                 "this much, < 0: hollow faces touching at the ends)"))
     face_bump_sd_mm: float = field(default=0.0, metadata=_num(0, 1000, doc="standard deviation of "
                                    "face_bump_mm between joints (mm)"))
+    voussoir_offset_mm: float = field(default=0.0, metadata={**_num(
+        -1000, 1000, doc="mean assembly error of each voussoir: set higher (> 0, toward the extrados) or "
+        "lower than its neighbours, its faces bearing on theirs offset along the joints (mm)"), "predates": 0.0})
+    voussoir_offset_sd_mm: float = field(default=0.0, metadata={**_num(
+        0, 1000, doc="standard deviation of voussoir_offset_mm between voussoirs (mm)"), "predates": 0.0})
+    keystone_offset_mm: float = field(default=0.0, metadata={**_num(
+        -1000, 1000, doc="the keystone set higher (> 0) or lower, in addition (mm; both middle voussoirs "
+        "for an even count)"), "predates": 0.0})
 
 
 SECTIONS: dict[str, type] = {

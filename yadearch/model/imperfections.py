@@ -8,7 +8,10 @@ from one seed so that one seed gives one geometry:
 - worn edges: the intrados and extrados edges of each voussoir face rounded (a quarter circle) or
   chamfered (45 deg): the contact cannot reach the corner and a hinge's pivot moves inward;
 - faces not parallel: an angle between a joint's two faces, a wedge that touches at one end;
-- faces not flat: a convex (touching mid-joint) or hollow (touching at the ends) parabolic bump.
+- faces not flat: a convex (touching mid-joint) or hollow (touching at the ends) parabolic bump;
+- voussoirs set lower or higher (an assembly error, per voussoir, and the keystone's own): a
+  voussoir whose faces bear on its neighbours' offset along the joints (a voussoir a hair narrower
+  than its neighbours' gap drops until its faces bear), so the faces share less of their length.
 
 The two faces of a joint add their gaps; the profile is then shifted so that its smallest gap is 0
 (the blocks are assembled touching). The support blocks' faces are perfect.
@@ -41,11 +44,15 @@ class ImperfectionAmplitudes:
     face_angle_sd: float = 0.0
     face_bump: float = 0.0
     face_bump_sd: float = 0.0
+    voussoir_offset: float = 0.0  # every voussoir set higher (> 0, toward the extrados) or lower
+    voussoir_offset_sd: float = 0.0
+    keystone_offset: float = 0.0  # the crown's voussoir (both middle ones for an even count), in addition
 
     @property
     def perfect(self) -> bool:
         return not any((self.edge_size, self.edge_size_sd, self.face_angle, self.face_angle_sd,
-                        self.face_bump, self.face_bump_sd))
+                        self.face_bump, self.face_bump_sd, self.voussoir_offset, self.voussoir_offset_sd,
+                        self.keystone_offset))
 
 
 @dataclass(frozen=True)
@@ -60,6 +67,8 @@ class JointDefects:
     face_angle: np.ndarray
     face_bump: np.ndarray
     edge_shape: str
+    left_offset: np.ndarray  # how far the left block's face sits toward the extrados (m; supports 0)
+    right_offset: np.ndarray  # the same for the right block's face
 
     @property
     def n_joints(self) -> int:
@@ -74,6 +83,8 @@ class GapProfiles:
     fraction: np.ndarray  # (n_joints, PROFILE_NODES), non-decreasing along each row
     gap: np.ndarray  # (n_joints, PROFILE_NODES), >= 0, smallest 0
     imperfect: np.ndarray  # (n_joints,) bool
+    left_offset: np.ndarray  # (n_joints,) the faces' offsets along the joint (m, `JointDefects`)
+    right_offset: np.ndarray
 
 
 def draw_defects(amplitudes: ImperfectionAmplitudes, n_joints: int, seed: int,
@@ -93,7 +104,17 @@ def draw_defects(amplitudes: ImperfectionAmplitudes, n_joints: int, seed: int,
     right_in[-1] = right_out[-1] = 0.0  # the right support's face
     angle = rng.normal(amplitudes.face_angle, amplitudes.face_angle_sd, n_joints)
     bump = rng.normal(amplitudes.face_bump, amplitudes.face_bump_sd, n_joints)
-    return JointDefects(left_in, left_out, right_in, right_out, angle, bump, amplitudes.edge_shape)
+    voussoirs = rng.normal(amplitudes.voussoir_offset, amplitudes.voussoir_offset_sd, n_joints - 1)
+    voussoirs[keystones(n_joints - 1)] += amplitudes.keystone_offset
+    blocks = np.concatenate([[0.0], voussoirs, [0.0]])  # the supports sit where they were designed
+    return JointDefects(left_in, left_out, right_in, right_out, angle, bump, amplitudes.edge_shape,
+                        blocks[:-1], blocks[1:])
+
+
+def keystones(n_voussoirs: int) -> list[int]:
+    """0-based index of the crown's voussoir: the middle one, or both middle ones for an even count."""
+    middle = n_voussoirs // 2
+    return [middle] if n_voussoirs % 2 else [middle - 1, middle]
 
 
 def edge_gap(depth_into_edge: np.ndarray, size: float, shape: str) -> np.ndarray:
@@ -154,7 +175,7 @@ def gap_profiles(defects: JointDefects, lengths: np.ndarray) -> GapProfiles:
         fraction[j] = profile_fractions(length, intrados, extrados)
         raw = joint_gap(fraction[j] * length, length, defects, j)
         gap[j] = raw - raw.min()
-    return GapProfiles(fraction, gap, gap.max(axis=1) > 0.0)
+    return GapProfiles(fraction, gap, gap.max(axis=1) > 0.0, defects.left_offset, defects.right_offset)
 
 
 def defects_table(defects: JointDefects, profiles: GapProfiles, lengths: np.ndarray) -> dict[str, np.ndarray]:
@@ -167,6 +188,8 @@ def defects_table(defects: JointDefects, profiles: GapProfiles, lengths: np.ndar
         "right_extrados_edge_mm": to_mm(defects.right_extrados_edge),
         "face_angle_mrad": to_mrad(defects.face_angle),
         "face_bump_mm": to_mm(defects.face_bump),
+        "left_face_offset_mm": to_mm(defects.left_offset),
+        "right_face_offset_mm": to_mm(defects.right_offset),
         "largest_gap_mm": to_mm(profiles.gap.max(axis=1)),
         "first_contact_mm": to_mm(_first_contact(profiles) * lengths),
     }

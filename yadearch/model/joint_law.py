@@ -87,9 +87,12 @@ def joint_table(geometry: ArchGeometry, centroids0: np.ndarray, profiles: GapPro
     handedness = np.sign(along[:, 0] * normal[:, 1] - along[:, 1] * normal[:, 0])
     c0 = centroids0[:, :2]
     if profiles is None:
-        profiles = GapProfiles(np.zeros((len(joints), 2)), np.zeros((len(joints), 2)),
-                               np.zeros(len(joints), dtype=bool))
-    return JointTable(left, right, intrados - c0[left], intrados - c0[right], normal, along, length,
+        return JointTable(left, right, intrados - c0[left], intrados - c0[right], normal, along, length,
+                          handedness, np.concatenate([right, left]), len(centroids0), np.zeros((len(joints), 2)),
+                          np.zeros((len(joints), 2)), np.zeros(len(joints), dtype=bool))
+    # a face offset along the joint moves that face's intrados point (the faces keep their length)
+    return JointTable(left, right, intrados - c0[left] + profiles.left_offset[:, None] * along,
+                      intrados - c0[right] + profiles.right_offset[:, None] * along, normal, along, length,
                       handedness, np.concatenate([right, left]), len(centroids0),
                       profiles.fraction, profiles.gap, profiles.imperfect)
 
