@@ -33,10 +33,15 @@ STUDIES = (
     Study("edge", "rounded edges, every edge alike", "edge_radius_mm", (1.0, 2.0, 3.0, 4.0, 6.0), 1),
     Study("angle", "faces not parallel, random per joint (mean 0)", "face_angle_sd_mrad", (1.0, 2.0, 4.0, 8.0), 3),
     Study("bump", "faces not flat, random per joint (mean 0)", "face_bump_sd_mm", (0.02, 0.05, 0.1, 0.2), 3),
+    Study("keystone", "keystone set lower", "keystone_offset_mm", (-0.25, -0.5, -1.0, -2.0), 1),
+    Study("offset", "voussoirs set off their neighbours, random per voussoir (mean 0)", "voussoir_offset_sd_mm",
+          (0.1, 0.2, 0.5), 3),
 )
-UNITS = {"edge_radius_mm": "mm", "face_angle_sd_mrad": "mrad", "face_bump_sd_mm": "mm"}
+UNITS = {"edge_radius_mm": "mm", "face_angle_sd_mrad": "mrad", "face_bump_sd_mm": "mm",
+         "keystone_offset_mm": "mm", "voussoir_offset_sd_mm": "mm"}
 AXIS_LABELS = {"edge_radius_mm": "edge radius (mm)", "face_angle_sd_mrad": "face angle s.d. (mrad)",
-               "face_bump_sd_mm": "face bump s.d. (mm)"}
+               "face_bump_sd_mm": "face bump s.d. (mm)", "keystone_offset_mm": "keystone offset (mm)",
+               "voussoir_offset_sd_mm": "voussoir offset s.d. (mm)"}
 PERFECT_RUN = Path("reports/set2")  # the perfect arch with set 2's joints (`yadearch reproduce`)
 SET1_RUN = Path("reports/set1")  # the paper's low-kn model of set 1
 REPORT = "imperfections.md"

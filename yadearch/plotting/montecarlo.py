@@ -4,6 +4,7 @@ imperfection amplitude (median and band per level)."""
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import matplotlib
@@ -19,6 +20,8 @@ from yadearch.studies.montecarlo import BAND, du_statistics, hinge_frequencies
 HINGE_SIDES = {"A": "intrados", "B": "extrados", "C": "extrados, moving support",
                "D": "extrados, fixed support"}
 BINS = 20  # histogram bins at most
+PANELS_PER_ROW = 3  # du against amplitude: panels side by side
+PANEL_HEIGHT_IN = 2.4
 
 
 def _done(table: pd.DataFrame) -> pd.DataFrame:
@@ -112,12 +115,18 @@ def amplitude_panels_figure(panels: list[tuple[pd.DataFrame, str, str]], stem: P
     """One panel per imperfection kind (table, amplitude column, axis label): median du and band
     against the amplitude from the perfect arch at 0, with the target du dashed: STEM.pdf, .png."""
     with matplotlib.rc_context(SWEEP_STYLE):
-        fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, 2.4), layout="constrained")
-        axes = fig.subplots(1, len(panels), sharey=True, squeeze=False)[0]
+        rows = math.ceil(len(panels) / PANELS_PER_ROW)
+        columns = min(len(panels), PANELS_PER_ROW)
+        fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, PANEL_HEIGHT_IN * rows), layout="constrained")
+        grid = fig.subplots(rows, columns, sharey=True, squeeze=False)
+        axes = grid.ravel()
         for ax, (table, column, label) in zip(axes, panels):
             _draw_du_against(ax, _done(table), column, perfect_du_mm)
             ax.axhline(target_du_mm, color="C3", ls="--", lw=0.8, label=target_label)
             ax.set_xlabel(label)
-        axes[0].set_ylabel("collapse displacement du (mm)")
+        for ax in axes[len(panels):]:
+            ax.set_visible(False)
+        for ax in grid[:, 0]:
+            ax.set_ylabel("collapse displacement du (mm)")
         axes[0].legend(frameon=False, loc="lower left")
         return list(save_figure(fig, stem))
