@@ -26,6 +26,8 @@ import sys
 import time
 from pathlib import Path
 
+import __main__
+
 TARGET_SET2_WALL_S = 10.0  # docs/speed.md: the second round's targets
 TARGET_STIFF_WALL_S = 60.0  # any kn from 0.1 to 100, measured at the stiffest
 TARGET_SWEEP_WALL_S = 10 * 60.0
@@ -152,8 +154,9 @@ def scene_rate(steps: int, contact_model: str) -> float:
 def step_breakdown(steps: int) -> dict:
     """Where a step of the set 2 scene goes (microseconds): the whole step, YADE's bare integrator
     (ForceResetter + NewtonIntegrator on the same bodies), and the joint engine's parts timed on
-    their own (state reads, joint law, force application); the rest is the Python engine's call and
-    the driver. Runs in a child process: it resets YADE's scene."""
+    their own (state reads, joint law, force application, the call of a Python engine: a no-op
+    PyRunner beside the bare integrator); the rest is the driver and the engine's bookkeeping.
+    Runs in a child process: it resets YADE's scene."""
     import subprocess
 
     out = subprocess.run([sys.executable, __file__, "--breakdown-child", str(steps)], check=True,
@@ -172,7 +175,7 @@ def _breakdown_child(steps: int) -> dict:
 
     import_yade()
     from yade import O
-    from yade.wrapper import ForceResetter, NewtonIntegrator
+    from yade.wrapper import ForceResetter, NewtonIntegrator, PyRunner
 
     scene = build_scene(preset("set2"))
     contacts = scene.contacts
@@ -192,14 +195,20 @@ def _breakdown_child(steps: int) -> dict:
     reads_us = per_step_us(contacts.read_poses)
     law_us = per_step_us(lambda: contacts.forces(rows))
     apply_us = per_step_us(lambda: contacts.apply(forces))
-    O.engines = [ForceResetter(), NewtonIntegrator(damping=0.2, gravity=(0.0, -9.81, 0.0))]
-    start = time.perf_counter()
-    O.run(steps, True)
-    bare_us = (time.perf_counter() - start) / steps * 1e6
-    rest = step_us - bare_us - reads_us - law_us - apply_us
+    def bare_step_us(*extra) -> float:
+        O.engines = [ForceResetter(), *extra, NewtonIntegrator(damping=0.2, gravity=(0.0, -9.81, 0.0))]
+        start = time.perf_counter()
+        O.run(steps, True)
+        return (time.perf_counter() - start) / steps * 1e6
+
+    bare_us = bare_step_us()
+    __main__._benchmark_noop = lambda: None
+    call_us = bare_step_us(PyRunner(command="_benchmark_noop()", iterPeriod=1)) - bare_us
+    rest = step_us - bare_us - reads_us - law_us - apply_us - call_us
     return {"steps": steps, "step_us": step_us, "integrator_ratio": step_us / bare_us,
             "step_breakdown_us": {"yade_integrator": bare_us, "state_reads": reads_us, "joint_law": law_us,
-                                  "force_application": apply_us, "python_engine_call_and_driver": rest}}
+                                  "force_application": apply_us, "python_engine_call": call_us,
+                                  "driver_and_rest": rest}}
 
 
 def threads_measurement(steps: int) -> dict:
