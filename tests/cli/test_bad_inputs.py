@@ -23,7 +23,8 @@ NUMERIC = [f"{name}.{f.name}" for name, section in SECTIONS.items() for f in fie
 VALID_NEGATIVE = ("loading.settlement_direction_deg",  # -1 deg is a valid direction
                   "loading.rotation_pivot_dx_mm", "loading.rotation_pivot_dy_mm",  # a pivot anywhere
                   "imperfections.face_angle_mrad", "imperfections.face_bump_mm",  # signed defects
-                  "imperfections.voussoir_offset_mm", "imperfections.keystone_offset_mm")
+                  "imperfections.voussoir_offset_mm", "imperfections.keystone_offset_mm",
+                  "imperfections.left_support_angle_mrad", "imperfections.right_support_angle_mrad")
 BAD_VALUES = ["-1", "nan", "inf", "-inf", "1e300", "'text'", "true"]
 DERIVED = [  # inside each value's range, absurd together: refused from the plan, before YADE
     ("settlement_rate_mm_per_s=1e-9", "max_steps"), ("gravity_ramp_periods=1e6", "gravity ramp"),

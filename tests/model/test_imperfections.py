@@ -131,6 +131,15 @@ def test_a_voussoir_set_off_its_neighbour_bears_on_the_shared_part_of_the_joint(
     assert forces.point[0, 0] == pytest.approx(offset / 2, abs=1e-12)
 
 
+def test_a_support_set_askew_wedges_its_springing_joint_only():
+    lengths = np.full(6, WIDTH)
+    askew = draw_defects(ImperfectionAmplitudes(right_support_angle=2e-3), 6, seed=3, lengths=lengths)
+    assert askew.face_angle[-1] == 2e-3 and not askew.face_angle[:-1].any()
+    profiles = gap_profiles(askew, lengths)
+    assert profiles.imperfect.tolist() == [False] * 5 + [True]
+    assert profiles.gap[-1, -1] == pytest.approx(2e-3 * WIDTH)  # gaping at the extrados
+
+
 def test_voussoir_offsets_are_drawn_per_voussoir_and_the_keystone_gets_its_own():
     amps = ImperfectionAmplitudes(voussoir_offset=1e-4, voussoir_offset_sd=5e-5, keystone_offset=-1e-3)
     defects = draw_defects(amps, 12, seed=7, lengths=np.full(12, WIDTH))  # 11 voussoirs, keystone 6th

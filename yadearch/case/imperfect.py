@@ -65,7 +65,8 @@ def amplitudes(case: ArchCase) -> ImperfectionAmplitudes:
                                   units.mrad(i.face_angle_mrad), units.mrad(i.face_angle_sd_mrad),
                                   units.mm(i.face_bump_mm), units.mm(i.face_bump_sd_mm),
                                   units.mm(i.voussoir_offset_mm), units.mm(i.voussoir_offset_sd_mm),
-                                  units.mm(i.keystone_offset_mm))
+                                  units.mm(i.keystone_offset_mm), units.mrad(i.left_support_angle_mrad),
+                                  units.mrad(i.right_support_angle_mrad))
 
 
 def arch_imperfections(case: ArchCase, geometry: ArchGeometry) -> ArchImperfections | None:

@@ -217,6 +217,11 @@ class ImperfectionsConfig:
     keystone_offset_mm: float = field(default=0.0, metadata={**_num(
         -1000, 1000, doc="the keystone set higher (> 0) or lower, in addition (mm; both middle voussoirs "
         "for an even count)"), "predates": 0.0})
+    left_support_angle_mrad: float = field(default=0.0, metadata={**_num(
+        -1000, 1000, doc="the left support set askew: its face turned against the first voussoir's (mrad; "
+        "> 0: the springing joint touches at the intrados and gapes toward the extrados)"), "predates": 0.0})
+    right_support_angle_mrad: float = field(default=0.0, metadata={**_num(
+        -1000, 1000, doc="the same for the right support against the last voussoir (mrad)"), "predates": 0.0})
 
 
 SECTIONS: dict[str, type] = {

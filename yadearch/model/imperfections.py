@@ -11,7 +11,9 @@ from one seed so that one seed gives one geometry:
 - faces not flat: a convex (touching mid-joint) or hollow (touching at the ends) parabolic bump;
 - voussoirs set lower or higher (an assembly error, per voussoir, and the keystone's own): a
   voussoir whose faces bear on its neighbours' offset along the joints (a voussoir a hair narrower
-  than its neighbours' gap drops until its faces bear), so the faces share less of their length.
+  than its neighbours' gap drops until its faces bear), so the faces share less of their length;
+- a support set askew (an assembly error): its face turned against the first or last voussoir's,
+  a wedge at the springing joint added to that joint's drawn face angle.
 
 The two faces of a joint add their gaps; the profile is then shifted so that its smallest gap is 0
 (the blocks are assembled touching). The support blocks' faces are perfect.
@@ -47,12 +49,14 @@ class ImperfectionAmplitudes:
     voussoir_offset: float = 0.0  # every voussoir set higher (> 0, toward the extrados) or lower
     voussoir_offset_sd: float = 0.0
     keystone_offset: float = 0.0  # the crown's voussoir (both middle ones for an even count), in addition
+    left_support_angle: float = 0.0  # a support set askew: its face turned against the voussoir's (rad)
+    right_support_angle: float = 0.0
 
     @property
     def perfect(self) -> bool:
         return not any((self.edge_size, self.edge_size_sd, self.face_angle, self.face_angle_sd,
                         self.face_bump, self.face_bump_sd, self.voussoir_offset, self.voussoir_offset_sd,
-                        self.keystone_offset))
+                        self.keystone_offset, self.left_support_angle, self.right_support_angle))
 
 
 @dataclass(frozen=True)
@@ -106,6 +110,8 @@ def draw_defects(amplitudes: ImperfectionAmplitudes, n_joints: int, seed: int,
     bump = rng.normal(amplitudes.face_bump, amplitudes.face_bump_sd, n_joints)
     voussoirs = rng.normal(amplitudes.voussoir_offset, amplitudes.voussoir_offset_sd, n_joints - 1)
     voussoirs[keystones(n_joints - 1)] += amplitudes.keystone_offset
+    angle[0] += amplitudes.left_support_angle  # a support set askew wedges its springing joint
+    angle[-1] += amplitudes.right_support_angle
     blocks = np.concatenate([[0.0], voussoirs, [0.0]])  # the supports sit where they were designed
     return JointDefects(left_in, left_out, right_in, right_out, angle, bump, amplitudes.edge_shape,
                         blocks[:-1], blocks[1:])
