@@ -36,12 +36,15 @@ STUDIES = (
     Study("keystone", "keystone set lower", "keystone_offset_mm", (-0.25, -0.5, -1.0, -2.0), 1),
     Study("offset", "voussoirs set off their neighbours, random per voussoir (mean 0)", "voussoir_offset_sd_mm",
           (0.1, 0.2, 0.5), 3),
+    Study("support", "moving support set askew (gaping toward the extrados)", "right_support_angle_mrad",
+          (2.0, 5.0, 10.0, 20.0), 1),
 )
 UNITS = {"edge_radius_mm": "mm", "face_angle_sd_mrad": "mrad", "face_bump_sd_mm": "mm",
-         "keystone_offset_mm": "mm", "voussoir_offset_sd_mm": "mm"}
+         "keystone_offset_mm": "mm", "voussoir_offset_sd_mm": "mm", "right_support_angle_mrad": "mrad"}
 AXIS_LABELS = {"edge_radius_mm": "edge radius (mm)", "face_angle_sd_mrad": "face angle s.d. (mrad)",
                "face_bump_sd_mm": "face bump s.d. (mm)", "keystone_offset_mm": "keystone offset (mm)",
-               "voussoir_offset_sd_mm": "voussoir offset s.d. (mm)"}
+               "voussoir_offset_sd_mm": "voussoir offset s.d. (mm)",
+               "right_support_angle_mrad": "right support askew (mrad)"}
 PERFECT_RUN = Path("reports/set2")  # the perfect arch with set 2's joints (`yadearch reproduce`)
 SET1_RUN = Path("reports/set1")  # the paper's low-kn model of set 1
 REPORT = "imperfections.md"
