@@ -86,15 +86,16 @@ def joint_table(geometry: ArchGeometry, centroids0: np.ndarray, profiles: GapPro
     along = (extrados - intrados) / length[:, None]
     handedness = np.sign(along[:, 0] * normal[:, 1] - along[:, 1] * normal[:, 0])
     c0 = centroids0[:, :2]
+    left_point, right_point = intrados - c0[left], intrados - c0[right]
     if profiles is None:
-        return JointTable(left, right, intrados - c0[left], intrados - c0[right], normal, along, length,
-                          handedness, np.concatenate([right, left]), len(centroids0), np.zeros((len(joints), 2)),
-                          np.zeros((len(joints), 2)), np.zeros(len(joints), dtype=bool))
-    # a face offset along the joint moves that face's intrados point (the faces keep their length)
-    return JointTable(left, right, intrados - c0[left] + profiles.left_offset[:, None] * along,
-                      intrados - c0[right] + profiles.right_offset[:, None] * along, normal, along, length,
-                      handedness, np.concatenate([right, left]), len(centroids0),
-                      profiles.fraction, profiles.gap, profiles.imperfect)
+        fraction, gap, imperfect = np.zeros((len(joints), 2)), np.zeros((len(joints), 2)), np.zeros(len(joints), bool)
+    else:
+        # a face offset along the joint moves that face's intrados point (the faces keep their length)
+        left_point = left_point + profiles.left_offset[:, None] * along
+        right_point = right_point + profiles.right_offset[:, None] * along
+        fraction, gap, imperfect = profiles.fraction, profiles.gap, profiles.imperfect
+    return JointTable(left, right, left_point, right_point, normal, along, length, handedness,
+                      np.concatenate([right, left]), len(centroids0), fraction, gap, imperfect)
 
 
 def joint_forces(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.ndarray,

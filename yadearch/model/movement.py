@@ -18,7 +18,6 @@ import numpy as np
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.joints import rotate
 
-SIDES = ("left", "right")
 MOVING_SUPPORTS = ("right", "left", "both")
 MOTIONS = ("translation", "rotation")
 ROTATION_SENSES = ("clockwise", "counterclockwise")
@@ -36,10 +35,14 @@ class SupportMotion:
     pivot: np.ndarray
     springing: np.ndarray  # the middle of the support's face on the arch, undeformed (m)
 
+    def pivot_at(self, lam: float) -> np.ndarray:
+        """Where the pivot is at path `lam` (it moves by the translation only)."""
+        return self.pivot + self.translation * lam
+
     def placement(self, lam: float) -> tuple[float, np.ndarray]:
         """(angle, shift) at path `lam`: an undeformed point X of the support is at R(angle) X + shift."""
         angle = self.rotation * lam
-        return angle, self.pivot + self.translation * lam - rotate(self.pivot, angle)
+        return angle, self.pivot_at(lam) - rotate(self.pivot, angle)
 
     def carry(self, point: np.ndarray, lam: float) -> np.ndarray:
         """Where the undeformed support point `point` (2,) is at path `lam`."""
@@ -49,7 +52,7 @@ class SupportMotion:
     def rates(self, lam: float) -> np.ndarray:
         """(vx, vy, omega) per unit path rate of the support's material point at the origin: the
         generalised velocity the limit analysis's equilibrium rows are written for."""
-        pivot_now = self.pivot + self.translation * lam
+        pivot_now = self.pivot_at(lam)
         return np.array([self.translation[0] + self.rotation * pivot_now[1],
                          self.translation[1] - self.rotation * pivot_now[0], self.rotation])
 
@@ -57,7 +60,7 @@ class SupportMotion:
         """How far (2,) the support's material point now at `point_now` moves while the path goes
         from `lam` to `lam + step`: exact, so that a rotating support driven step by step keeps its
         pivot in place to round-off."""
-        pivot_now = self.pivot + self.translation * lam
+        pivot_now = self.pivot_at(lam)
         return self.translation * step + rotate(point_now - pivot_now, self.rotation * step) + pivot_now - point_now
 
 
@@ -105,9 +108,9 @@ def _mirror(motion: SupportMotion) -> SupportMotion:
     return SupportMotion(motion.translation * flip, -motion.rotation, motion.pivot * flip, motion.springing * flip)
 
 
-def springing_point(geometry: ArchGeometry, side: str) -> np.ndarray:
-    """The middle of a support's face on the arch (m): of the first joint (left) or the last (right)."""
-    joint = geometry.joints[0] if side == "left" else geometry.joints[-1]
+def right_springing_point(geometry: ArchGeometry) -> np.ndarray:
+    """The middle of the right support's face on the arch, its last joint (m)."""
+    joint = geometry.joints[-1]
     return 0.5 * (np.asarray(joint.intrados[:2]) + np.asarray(joint.extrados[:2]))
 
 
@@ -118,7 +121,7 @@ def support_movement(geometry: ArchGeometry, moving_support: str, motion: str, d
     `sense` gives its rotation as seen from the front; the left support mirrors the right one."""
     if moving_support not in MOVING_SUPPORTS or motion not in MOTIONS or sense not in ROTATION_SENSES:
         raise ValueError(f"unknown movement {moving_support!r}, {motion!r}, {sense!r}")
-    springing = springing_point(geometry, "right")
+    springing = right_springing_point(geometry)
     if motion == "translation":
         angle = math.radians(direction_deg)
         right = SupportMotion(np.array([math.cos(angle), math.sin(angle)]), 0.0, springing.copy(), springing)

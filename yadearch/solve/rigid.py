@@ -170,8 +170,8 @@ def close_linkage(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
         raise ValueError(f"a three-hinge linkage needs three pivots, got {len(pivots)}")
     p1, p2, p3 = sorted(pivots)
     old = [_pivot_point(arch, placement, p) for p in (p1, p2, p3)]
-    steps = [_SupportStep(arch.movement.motion(side), placement.delta, delta) for side in ("left", "right")]
-    first, last = steps[0].carry(old[0]), steps[1].carry(old[2])
+    left, right = (_translation(arch.movement.motion(side), delta - placement.delta) for side in ("left", "right"))
+    first, last = old[0] + left, old[2] + right
     middle = _middle_joint(old[0], old[1], old[2], first, last)
     if middle is None:
         return None
@@ -179,38 +179,15 @@ def close_linkage(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
     rot, shift = placement.rot.copy(), placement.shift.copy()
     _move(rot, shift, slice(p1.joint + 1, p2.joint + 1), old[:2], new[:2])
     _move(rot, shift, slice(p2.joint + 1, p3.joint + 1), old[1:], new[1:])
-    steps[0].move_blocks(rot, shift, slice(0, p1.joint + 1))
-    steps[1].move_blocks(rot, shift, slice(p3.joint + 1, None))
+    shift[:p1.joint + 1] += left
+    shift[p3.joint + 1:] += right
     return replace(placement, delta=delta, rot=rot, shift=shift)
 
 
-class _SupportStep:
-    """A support's rigid motion from path `start` to `end` (none if it stands still): a translation
-    alone moves points by the same vector, a rotation turns them about the support's pivot."""
-
-    def __init__(self, motion: SupportMotion | None, start: float, end: float):
-        self.motion, self.start, self.end = motion, start, end
-
-    def carry(self, point: np.ndarray) -> np.ndarray:
-        if self.motion is None:
-            return point
-        if self.motion.rotation == 0.0:
-            return point + (self.end - self.start) * self.motion.translation
-        angle0, shift0 = self.motion.placement(self.start)
-        angle1, shift1 = self.motion.placement(self.end)
-        return rotate(point - shift0, angle1 - angle0) + shift1
-
-    def move_blocks(self, rot: np.ndarray, shift: np.ndarray, blocks: slice) -> None:
-        """Carry the placements of `blocks` (rot, shift arrays, in place) with the support."""
-        if self.motion is None:
-            return
-        if self.motion.rotation == 0.0:
-            shift[blocks] += (self.end - self.start) * self.motion.translation
-            return
-        angle0, shift0 = self.motion.placement(self.start)
-        angle1, shift1 = self.motion.placement(self.end)
-        rot[blocks] += angle1 - angle0
-        shift[blocks] = rotate(shift[blocks] - shift0, angle1 - angle0) + shift1
+def _translation(motion: SupportMotion | None, path_step: float) -> np.ndarray:
+    """How far a support (and the blocks it carries) moves over `path_step` of path: its
+    translation (`rigid_arch` refuses turning supports); nothing for a fixed support."""
+    return np.zeros(2) if motion is None else path_step * motion.translation
 
 
 def turn_four_bar(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ...],
