@@ -75,6 +75,23 @@ def test_semicircle_minimum_thickness_is_milankovitch(n_voussoirs):
     assert not stands(semicircle(0.98 * 0.1075))
 
 
+@pytest.mark.parametrize("t_over_r", [0.108, 0.11])
+def test_semicircle_spreading_hinges_where_the_minimum_thrust_line_touches(t_over_r):
+    # Cocchetti & Rizzi, Frattura ed Integrita Strutturale 51 (2020) 356-375: at Milankovitch's limit
+    # (t / R = 0.107426, radial joints) the intrados hinges of a semicircle sit 54.4963 deg from the
+    # crown. Spreading thins the arch to its minimum thrust, so its first mechanism hinges there:
+    # at the crown's extrados and at the joints nearest +-54.5 deg (360 voussoirs of 0.5 deg).
+    radius, n = 1000.0, 360
+    t = t_over_r * radius
+    case = arch_case(n_voussoirs=n, embrace_deg=180.0, internal_radius_mm=radius - t / 2, thickness_mm=t,
+                     friction_deg=60.0).replace(settlement_direction_deg=0.0)
+    result = limit_analysis(case, max_settlement_mm=0.5)
+    first = [h for h in result.hinge_history if h.from_mm == 0.0]
+    from_crown = sorted(abs(90.0 - (h.interface - 1) * 180.0 / n) for h in first)
+    assert [h.side for h in first] == ["I", "E", "I"]
+    assert from_crown == pytest.approx([0.0, 54.4963, 54.4963], abs=0.5 * 180.0 / n)
+
+
 def _placed(case: ArchCase, result) -> tuple[list[np.ndarray], np.ndarray, np.ndarray]:
     """Independently of the solver: block outlines (mm) as the result places them, centroids, weights."""
     g = case.geometry
@@ -224,16 +241,19 @@ def test_imports_without_yade():
     assert subprocess.run([sys.executable, "-c", code]).returncode == 0
 
 
-def test_a_snap_larger_than_allowed_ends_the_march_where_it_starts():
-    """Under spreading the paper arch survives its haunch hinges' snaps; allowing only snaps that
-    move no block more than 1 mm (a DEM's runaway distance), it collapses at the first larger one,
-    where the full analysis records that snap, and never later than the full analysis."""
+def test_a_snap_larger_than_the_runaway_distance_is_the_collapse():
+    """Under spreading the paper arch's haunch hinges migrate by snaps at a fixed support. By default a
+    snap that moves a block further than the case's runaway_mm (1 mm, the DEM's collapse criterion)
+    is the collapse, at the displacement where the full analysis (every snap survived) records it;
+    the settlement, whose only snap moves blocks 0.11 mm, is the same either way."""
     case = preset("set2").replace(settlement_direction_deg=0.0)
-    full = limit_analysis(case)
-    capped = limit_analysis(case, max_snap_mm=1.0)
-    first_large = min(h.from_mm for h in full.hinge_history if h.jump_mm > 1.0)
+    full = limit_analysis(case, max_snap_mm=math.inf)
+    capped = limit_analysis(case)
+    first_large = min(h.from_mm for h in full.hinge_history if h.jump_mm > case.numerics.runaway_mm)
     assert capped.du_rigid_mm == pytest.approx(first_large, abs=0.01)
     assert capped.du_rigid_mm < full.du_rigid_mm
-    assert all(h.jump_mm <= 1.0 for h in capped.hinge_history)
-    settlement = preset("set2")  # its only snap moves blocks 0.11 mm: the cap changes nothing
-    assert limit_analysis(settlement, max_snap_mm=1.0).du_rigid_mm == limit_analysis(settlement).du_rigid_mm
+    assert capped.collapse_mode == "snap" and capped.snap_collapse_mm > case.numerics.runaway_mm
+    assert capped.max_snap_mm == case.numerics.runaway_mm and full.max_snap_mm is None
+    assert all(h.jump_mm <= case.numerics.runaway_mm for h in capped.hinge_history)
+    settlement = preset("set2")
+    assert limit_analysis(settlement).du_rigid_mm == limit_analysis(settlement, max_snap_mm=math.inf).du_rigid_mm

@@ -10,14 +10,17 @@ thrust line touches a fourth corner, and the mechanism at a fixed support just p
 chain that lowers the weights) is read. If it moves an open hinge to the next interface (it opens
 the neighbour and turns the open hinge back), the arch snaps along it at the fixed support until that
 hinge closes: a rigid hinge cannot migrate smoothly, since with both open the thrust line would have
-to pass four pivots. If equilibrium exists there the march goes on; any other chain, or no
-equilibrium after the snap, is collapse (a failure of the friction alone: sliding). du_rigid is the
-last support displacement with an admissible equilibrium. Without the snaps the paper arch would
-"collapse" at 8.4 mm, where its extrados hinge moves from 33E to 32E.
+to pass four pivots. A snap is a dynamic jump: if it moves a block further than the case's
+`runaway_mm` (the distance at which a DEM run calls a relaxation a collapse), it is the collapse, so
+that both methods answer the same question; otherwise, if equilibrium exists after it, the march goes
+on. Any other chain, or no equilibrium after the snap, is collapse (a failure of the friction alone:
+sliding). du_rigid is the last support displacement with an admissible equilibrium. Without the
+snaps the paper arch would "collapse" at 8.4 mm, where its extrados hinge moves from 33E to 32E.
 """
 
 from __future__ import annotations
 
+import math
 import time
 from typing import TypeGuard
 
@@ -57,9 +60,10 @@ def stands(case: ArchCase) -> bool:
 class _March:
     """The incremental analysis of one arch; counts its LPs."""
 
-    def __init__(self, arch: RigidArch, step: float, tolerance: float, max_snap_mm: float | None = None) -> None:
+    def __init__(self, arch: RigidArch, step: float, tolerance: float, max_snap_mm: float) -> None:
         self.arch, self.step, self.tolerance, self.n_lp = arch, step, tolerance, 0
-        self.max_snap_mm = max_snap_mm  # a larger snap counts as collapse (None: any snap is survived)
+        self.max_snap_mm = max_snap_mm  # a larger snap counts as collapse (inf: any snap is survived)
+        self.snap_collapse_mm: float | None = None  # the snap that ended the march, if one did
         self.history: list[HingeRecord] = []
 
     def statics(self, placement: Placement, friction: bool = True, refine: bool = False) -> Statics:
@@ -120,7 +124,9 @@ class _March:
             if past is None or not _migrates(chain, mechanism.pivots):
                 return last, read_at, mechanism, chain
             snapped, jump, chain = self.snap(past, chain, mechanism.pivots)
-            if snapped is None or (self.max_snap_mm is not None and jump > self.max_snap_mm):
+            if snapped is not None and jump > self.max_snap_mm:
+                self.snap_collapse_mm = jump
+            if snapped is None or self.snap_collapse_mm is not None:
                 return last, read_at, mechanism, chain
             state, mechanism = snapped, self.switch(snapped, mechanism, jump)
         return state, None, mechanism, None
@@ -217,19 +223,22 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
                    tolerance_mm: float = DEFAULT_TOLERANCE_MM,
                    max_settlement_mm: float | None = None, max_snap_mm: float | None = None) -> LimitResult:
     """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible
-    equilibrium, its hinge history and its last admissible state (see the module docstring). With
-    `max_snap_mm`, a hinge snap that moves a block further counts as collapse, as a DEM run counts
-    a block running away by `runaway_mm` (docs/validation.md)."""
+    equilibrium, its hinge history and its last admissible state (see the module docstring). A hinge
+    snap that moves a block further than `max_snap_mm` (default: the case's `runaway_mm`, as a DEM
+    run counts a block running away; `math.inf`: every snap survived) is the collapse
+    (docs/validation.md)."""
     start = time.perf_counter()
     arch = rigid_arch(case)
-    march = _March(arch, units.mm(step_mm), units.mm(tolerance_mm), max_snap_mm)
+    snap_cap = case.numerics.runaway_mm if max_snap_mm is None else max_snap_mm
+    march = _March(arch, units.mm(step_mm), units.mm(tolerance_mm), snap_cap)
     limit = units.mm(max_settlement_mm or case.loading.max_settlement_mm)
     last, read_at, mechanism, chain = march.run(limit)
     mode, hinges = "none", tuple(p.label for p in mechanism.pivots)
     new: tuple[str, ...] = ()
     if read_at is not None:
         if chain is not None and chain.power < 0 and len(chain.pivots) > 3:
-            mode, hinges = "hinging", tuple(p.label for p in chain.pivots)
+            mode = "snap" if march.snap_collapse_mm is not None else "hinging"
+            hinges = tuple(p.label for p in chain.pivots)
             new = tuple(p.label for p in chain.pivots if p not in mechanism.pivots)
         else:
             mode = "sliding" if march.statics(read_at, friction=False).feasible else "hinging"
@@ -242,5 +251,7 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
         max_friction_use=float(use.max()), max_friction_interface=int(np.argmax(use)) + 1,
         rotation_rad=tuple(float(r) for r in last.rot),
         shift_mm=tuple((units.to_mm(float(x)), units.to_mm(float(y))) for x, y in last.shift),
-        settlement_direction_deg=case.loading.settlement_direction_deg, step_mm=step_mm,
+        settlement_direction_deg=case.loading.settlement_direction_deg,
+        max_snap_mm=None if math.isinf(snap_cap) else snap_cap, snap_collapse_mm=march.snap_collapse_mm,
+        step_mm=step_mm,
         tolerance_mm=tolerance_mm, n_lp=march.n_lp, wall_s=time.perf_counter() - start)

@@ -56,7 +56,7 @@ class LimitResult:
 
     name: str
     du_rigid_mm: float | None  # None: the arch still stands at the largest displacement tried
-    collapse_mode: str  # "hinging", "sliding", or "none"
+    collapse_mode: str  # "hinging", "snap" (a hinge snap beyond max_snap_mm), "sliding", or "none"
     hinge_history: tuple[HingeRecord, ...]
     collapse_hinges: tuple[str, ...]  # hinges of the collapse mechanism, left to right, e.g. "9I"
     new_at_collapse: tuple[str, ...]  # its hinges not rotating before: the fourth hinge, usually
@@ -67,6 +67,8 @@ class LimitResult:
     rotation_rad: tuple[float, ...]  # per block (0 = left support) at the last admissible state
     shift_mm: tuple[tuple[float, float], ...]  # per block: X -> R(rotation) X + shift
     settlement_direction_deg: float
+    max_snap_mm: float | None  # a snap moving a block further is the collapse (None: all survived)
+    snap_collapse_mm: float | None  # the largest block movement of the snap that was the collapse
     step_mm: float
     tolerance_mm: float
     n_lp: int
