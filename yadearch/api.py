@@ -128,7 +128,8 @@ def preset(name: str) -> ArchCase:
 
 def movement(name: str) -> dict:
     """The [loading] parameters of a named support movement, for `case.with_overrides(...)`:
-    settlement, spreading, closing, inclined, symmetric_spreading, abutment_tilt (docs/movements.md)."""
+    settlement, spreading, closing, inclined, symmetric_spreading, abutment_tilt, settle_then_spread
+    (docs/movements.md)."""
     from yadearch.case.movement import movement_overrides
 
     return movement_overrides(name)

@@ -58,3 +58,32 @@ def test_moving_supports_follow_the_path_the_case_describes(movement):
                                               abs=PLACE_TOLERANCE_M)
     finally:
         runner.close()
+
+
+def test_a_support_on_a_prescribed_path_turns_its_corners_where_the_table_puts_them():
+    """Down 1 mm, then 1.5 mm outward while turning 3 mrad: at each row the right support stands
+    where the table says, and the driver reads the path length back from its placement."""
+    from yade import O
+
+    from yadearch.engine.runner import Runner
+
+    rows = [[0.0, -1.0, 0.0], [1.5, -1.0, 3.0]]
+    case = preset("set1").with_overrides({**COARSE, "loading.support_motion": "path", "loading.path_mm_mrad": rows})
+    runner = Runner(case, log=lambda line: None)
+    try:
+        runner.selfweight()
+        body = runner.scene.right_support
+        start = (np.array(O.bodies[body].state.pos)[:2], O.bodies[body].state.ori)
+        motion = runner.movement.right
+        for path_mm in (1.0, 2.5):
+            runner.move_to(units.mm(path_mm))
+            assert runner.delta() == pytest.approx(units.mm(path_mm), abs=1e-9)
+            angle, shift = support_placement(O.bodies[body].state, *start)
+            expected_angle, expected_shift = motion.placement(units.mm(path_mm))
+            assert angle == pytest.approx(expected_angle, abs=1e-9)
+            assert shift == pytest.approx(expected_shift, abs=PLACE_TOLERANCE_M)
+        springing = rotate(motion.springing, angle) + shift - motion.springing
+        assert springing == pytest.approx(units.mm(np.array(rows[-1][:2])), abs=PLACE_TOLERANCE_M)
+        assert angle == pytest.approx(units.mrad(rows[-1][2]), abs=1e-9)
+    finally:
+        runner.close()

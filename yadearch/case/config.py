@@ -103,6 +103,9 @@ def _resolve_key(key: str) -> tuple[str | None, str]:
 
 def _check_value(qualified: str, f: dataclasses.Field, value: Any) -> None:
     name = qualified.split(".")[-1]
+    if "table_columns" in f.metadata:
+        _check_table(name, f.metadata["table_columns"], value)
+        return
     if "choices" in f.metadata:
         if value not in f.metadata["choices"]:
             raise CaseError(f"{name} must be one of {', '.join(f.metadata['choices'])}, got {value!r}")
@@ -123,6 +126,17 @@ def _check_value(qualified: str, f: dataclasses.Field, value: Any) -> None:
         raise CaseError(f"{name} must be {_range_text(meta)}, got {value!r}")
     if high is not None and (value >= high if meta["high_open"] else value > high):
         raise CaseError(f"{name} must be {_range_text(meta)}, got {value!r}")
+
+
+def _check_table(name: str, columns: tuple[str, ...], rows: Any) -> None:
+    """A table parameter: a list of rows of finite numbers, one per column."""
+    shape = f"a list of [{', '.join(columns)}] rows"
+    if not isinstance(rows, list | tuple):
+        raise CaseError(f"{name} must be {shape}, got {rows!r:.60}")
+    for k, row in enumerate(rows, start=1):
+        if (not isinstance(row, list | tuple) or len(row) != len(columns)
+                or any(isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v) for v in row)):
+            raise CaseError(f"{name} must be {shape}; row {k} is {row!r:.60}")
 
 
 def _range_text(meta: Mapping[str, Any]) -> str:
@@ -215,5 +229,6 @@ def parameter_docs() -> list[tuple[str, str, str]]:
     rows = []
     for section_name, cls in SECTIONS.items():
         for f in fields(cls):
-            rows.append((f"{section_name}.{f.name}", repr(f.default), f.metadata.get("doc", "")))
+            default = f.default_factory() if f.default_factory is not dataclasses.MISSING else f.default
+            rows.append((f"{section_name}.{f.name}", repr(default), f.metadata.get("doc", "")))
     return rows

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import numpy as np
+
 from yadearch.case.config import ArchCase
 from yadearch.errors import CaseError
 from yadearch.model import units
@@ -12,22 +14,28 @@ from yadearch.model.movement import Movement, support_movement
 def case_movement(case: ArchCase, geometry: ArchGeometry) -> Movement:
     """The movement of `case`'s supports along its path, for the scene's driver and the limit analysis."""
     loading = case.loading
+    path = np.array([[units.mm(dx), units.mm(dy), units.mrad(turn)] for dx, dy, turn in loading.path_mm_mrad])
     try:
         return support_movement(geometry, loading.moving_support, loading.support_motion,
                                 loading.settlement_direction_deg,
                                 (units.mm(loading.rotation_pivot_dx_mm), units.mm(loading.rotation_pivot_dy_mm)),
-                                loading.rotation_sense)
+                                loading.rotation_sense, path.reshape(-1, 3))
     except ValueError as exc:
-        raise CaseError(f"loading: {exc} (rotation_pivot_dx_mm {loading.rotation_pivot_dx_mm}, "
-                        f"rotation_pivot_dy_mm {loading.rotation_pivot_dy_mm})") from None
+        detail = (f"path_mm_mrad {loading.path_mm_mrad}" if loading.support_motion == "path" else
+                  f"rotation_pivot_dx_mm {loading.rotation_pivot_dx_mm}, "
+                  f"rotation_pivot_dy_mm {loading.rotation_pivot_dy_mm}")
+        raise CaseError(f"loading: {exc} ({detail:.120})") from None
 
 
-def _loading(moving_support: str, motion: str, direction_deg: float = -90.0, pivot_dy_mm: float = 0.0) -> dict:
+def _loading(moving_support: str, motion: str, direction_deg: float = -90.0, pivot_dy_mm: float = 0.0,
+             path: list[list[float]] | None = None) -> dict:
     return {"loading.moving_support": moving_support, "loading.support_motion": motion,
             "loading.settlement_direction_deg": direction_deg, "loading.rotation_pivot_dx_mm": 0.0,
-            "loading.rotation_pivot_dy_mm": pivot_dy_mm, "loading.rotation_sense": "clockwise"}
+            "loading.rotation_pivot_dy_mm": pivot_dy_mm, "loading.rotation_sense": "clockwise",
+            "loading.path_mm_mrad": path or []}
 
 
+SETTLE_THEN_SPREAD_MM_MRAD = [[0.0, -20.0, 0.0], [60.0, -20.0, 0.0]]  # 20 mm down, then 60 mm outward
 TILT_PIVOT_DEPTH_MM = -100.0  # `abutment_tilt`: the pivot 100 mm below the springing's intrados point
 MOVEMENT_PRESETS: dict[str, dict] = {
     "settlement": _loading("right", "translation", -90.0),
@@ -36,6 +44,8 @@ MOVEMENT_PRESETS: dict[str, dict] = {
     "inclined": _loading("right", "translation", -45.0),  # down and outward at 45 degrees
     "symmetric_spreading": _loading("both", "translation", 0.0),
     "abutment_tilt": _loading("right", "rotation", pivot_dy_mm=TILT_PIVOT_DEPTH_MM),  # springing out and down
+    # a pier that settles, then leans outward as its foundation spreads (a prescribed path)
+    "settle_then_spread": _loading("right", "path", path=SETTLE_THEN_SPREAD_MM_MRAD),
 }
 
 

@@ -84,9 +84,9 @@ class LoadingConfig:
         "doc": "the support that moves: 'right', 'left' (the mirror image of the right one's "
         "motion) or 'both' (mirror-symmetric about the arch's axis)"})
     support_motion: str = field(default="translation", metadata={
-        "choices": ("translation", "rotation"), "predates": "translation",
-        "doc": "'translation' along settlement_direction_deg, or 'rotation' about the pivot "
-        "(rotation_pivot_dx_mm, rotation_pivot_dy_mm) in rotation_sense"})
+        "choices": ("translation", "rotation", "path"), "predates": "translation",
+        "doc": "'translation' along settlement_direction_deg, 'rotation' about the pivot "
+        "(rotation_pivot_dx_mm, rotation_pivot_dy_mm) in rotation_sense, or 'path' (path_mm_mrad)"})
     settlement_direction_deg: float = field(default=-90.0, metadata=_num(-180, 180,
                                             doc="direction of the right support's translation from +x "
                                                 "(deg): -90 settlement, 0 spreading, 180 closing; the "
@@ -101,6 +101,12 @@ class LoadingConfig:
         "choices": ("clockwise", "counterclockwise"), "predates": "clockwise",
         "doc": "sense of the right support's rotation seen from the front (clockwise about a pivot "
         "below it moves the springing outward); the left support turns the other way"})
+    path_mm_mrad: list = field(default_factory=list, metadata={
+        "table_columns": ("dx_mm", "dy_mm", "rotation_mrad"), "predates": [],
+        "doc": "support_motion 'path': rows [dx_mm, dy_mm, rotation_mrad] of the right support's "
+        "springing point displacement and rotation (counter-clockwise), each reached in a straight "
+        "line from the previous row (the first from rest); du is the distance along it and the run "
+        "stops at its end"})
     max_settlement_mm: float = field(default=150.0, metadata=_num(0, 10_000, low_open=True,
                                      doc="stop without collapse beyond this support displacement (mm, "
                                          "along the path)"))

@@ -44,7 +44,7 @@ def case_options(with_kn: bool) -> Callable[[Any], Any]:
         click.option("--set", "settings", multiple=True, metavar="KEY=VALUE",
                      help="override any parameter, e.g. --set numerics.damping=0.3 (see `yadearch params`); "
                      "--set movement=NAME picks a named support movement (settlement, spreading, closing, "
-                     "inclined, symmetric_spreading, abutment_tilt)"),
+                     "inclined, symmetric_spreading, abutment_tilt, settle_then_spread)"),
     ]
     if with_kn:
         options.insert(2, click.option("--kn", type=float, help="interface normal stiffness kn (N/mm3)"))

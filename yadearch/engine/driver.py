@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 
 from yadearch.engine.scene import CALLBACK_NAME, ArchScene
-from yadearch.model.movement import Movement, SupportMotion
+from yadearch.model.movement import Motion, Movement, SupportMotion
 
 ARRIVED_M = 1e-12  # the support is on target within this distance (m)
 DRIVER_LABEL = "yadearch_support_driver"
@@ -19,8 +19,9 @@ DRIVER_CRUISE_PERIOD = 50  # steps between the support driver's calls while it c
 class SupportDriver:
     """Moves the driven supports towards a target path length with a trapezoidal speed profile
     (accelerate at `accel` up to `speed`, cruise, brake at `accel` to stop exactly on target; accel
-    0 = instantaneous). A translating support keeps one velocity; a rotating one turns about its
-    pivot, its centroid's velocity set anew every step to the chord of that step's arc."""
+    0 = instantaneous). A translating support keeps one velocity; a rotating one, or one on a
+    prescribed path, has its centroid's velocity set anew every step to the chord of that step's
+    motion."""
 
     def __init__(self, scene: ArchScene, movement: Movement, speed: float, accel: float):
         self.scene = scene
@@ -29,8 +30,9 @@ class SupportDriver:
         self.set_speed(speed)
         self._target = 0.0
         self.current_speed = 0.0
-        self._moving: list[tuple[Any, SupportMotion]] = []  # YADE State and motion of each moving support
-        self._origin: tuple[tuple[float, float], Any] = ((0.0, 0.0), None)  # the reference's pos, ori
+        self._moving: list[tuple[Any, Motion]] = []  # YADE State and motion of each moving support
+        self._origin: tuple[np.ndarray, Any] = (np.zeros(2), None)  # the reference's pos, ori
+        self._last = 0.0  # the path length last read: which pass of a path that crosses itself
         self._engine: Any = None  # the driver's PyRunner, once bound
 
     def set_speed(self, speed: float) -> None:
@@ -70,20 +72,21 @@ class SupportDriver:
     def zero_here(self) -> None:
         """Measure the path from the supports' current placement and stop them there."""
         state = self._moving[0][0]
-        self._origin = ((float(state.pos[0]), float(state.pos[1])), state.ori)
+        self._origin = (np.array([state.pos[0], state.pos[1]]), state.ori)
+        self._last = 0.0
         self.target = 0.0
 
     def displacement(self) -> float:
-        """Path length travelled since `zero_here` (m), read from the reference support's placement:
-        its rotation over the turn per unit path, or its translation along the path's direction."""
+        """Path length travelled since `zero_here` (m), read from the reference support's placement
+        (`travelled`: its turn, its shift along the line, or its springing point on the path)."""
         state, motion = self._moving[0]
+        angle = 0.0
         if motion.rotation != 0.0:
             turn = state.ori * self._origin[1].conjugate()  # minieigen quaternions index (x, y, z, w)
             angle = 2.0 * math.atan2(turn[2], turn[3])
             angle = (angle + math.pi) % (2.0 * math.pi) - math.pi
-            return angle / motion.rotation
-        pos, origin, direction = state.pos, self._origin[0], motion.translation
-        return (pos[0] - origin[0]) * direction[0] + (pos[1] - origin[1]) * direction[1]
+        self._last = motion.travelled(self._origin[0], (state.pos[0], state.pos[1]), angle, self._last)
+        return self._last
 
     def step(self) -> None:
         """Set the supports' velocities for this step (called before the integrator)."""
@@ -99,12 +102,16 @@ class SupportDriver:
                         math.sqrt(2.0 * self.accel * remaining), remaining / dt)
         self.current_speed = speed
         for state, motion in self._moving:
-            if motion.rotation == 0.0:
-                vx, vy = motion.translation * speed
+            if isinstance(motion, SupportMotion):  # a translation's one velocity, or a turn's chord
+                turn_rate = motion.rotation * speed
+                if motion.uniform:
+                    vx, vy = motion.translation * speed
             else:
+                turn_rate = motion.turn(lam, speed * dt) / dt
+            if not motion.uniform:
                 vx, vy = motion.displacement_of(np.array([state.pos[0], state.pos[1]]), lam, speed * dt) / dt
             state.vel = (float(vx), float(vy), 0.0)
-            state.angVel = (0.0, 0.0, motion.rotation * speed)
+            state.angVel = (0.0, 0.0, turn_rate)
         self._schedule(remaining, speed, dt)
 
     def _schedule(self, remaining: float, speed: float, dt: float) -> None:
@@ -115,7 +122,7 @@ class SupportDriver:
             self._engine.dead = True
             return
         cruise_steps = 0
-        if speed == self.speed and not self.movement.rotates:
+        if speed == self.speed and self.movement.uniform:
             cruise_steps = int((remaining - self.ramp) / (speed * dt))
         self._engine.iterPeriod = max(1, min(DRIVER_CRUISE_PERIOD, cruise_steps - 1))
 

@@ -33,7 +33,7 @@ class EquilibriumPath:
             first_increment=mm(num.first_increment_mm),
             max_increment=mm(max(num.max_increment_mm, num.first_increment_mm)),
             growth=num.increment_growth, tolerance=mm(num.du_tolerance_mm),
-            max_displacement=mm(runner.case.loading.max_settlement_mm))
+            max_displacement=min(mm(runner.case.loading.max_settlement_mm), runner.movement.length))
 
     def try_increment(self, target: float) -> str:
         """From the last accepted equilibrium state, move the support to `target` and relax there

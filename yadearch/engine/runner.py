@@ -286,7 +286,7 @@ class Runner:
             self.log(f"[{self.case.name}] du = {du:.2f} mm (no equilibrium at {hi:.2f}, "
                      f"equilibrium at {lo:.2f})")
         else:
-            self.log(f"[{self.case.name}] no collapse up to {self.case.loading.max_settlement_mm} mm")
+            self.log(f"[{self.case.name}] no collapse up to {units.to_mm(loading.settings.max_displacement):g} mm")
             summary.update(collapsed=False, du_mm=None, du_bracket_mm=None)
             self.stage = "end"
             hinges = self.recorder.joints("end")

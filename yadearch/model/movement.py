@@ -1,9 +1,10 @@
 """Support movements as rigid motions of the support blocks along a path parameter (pure numpy).
 
-A moving support either translates in a fixed direction or turns about a fixed pivot; the right
+A moving support translates in a fixed direction, turns about a fixed pivot, or follows a
+prescribed path (a table of its springing point's displacement and its rotation); the right
 support, the left one, or both mirror-symmetrically about the arch's axis (x = 0). The path
 parameter lam (m) is the distance its springing point (the middle of its face on the arch) has
-travelled: along a straight line for a translation, along an arc for a rotation. du is lam at
+travelled: along a straight line for a translation, an arc for a rotation, a polyline for a path. du is lam at
 collapse, and its components are the springing point's displacement (docs/movements.md). The engine
 drives YADE's support bodies with it and the rigid-block limit analysis places its supports with it.
 """
@@ -11,6 +12,7 @@ drives YADE's support bodies with it and the rigid-block limit analysis places i
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -19,10 +21,13 @@ from yadearch.model.geometry import ArchGeometry
 from yadearch.model.joints import rotate
 
 MOVING_SUPPORTS = ("right", "left", "both")
-MOTIONS = ("translation", "rotation")
+MOTIONS = ("translation", "rotation", "path")
 ROTATION_SENSES = ("clockwise", "counterclockwise")
 MIN_PIVOT_ARM_FRACTION = 1e-3  # a pivot closer than this x the joint to the springing point is refused
 SAME_DIRECTION = 1e-9  # unit translations closer than this are the same direction
+MIN_SEGMENT_M = 1e-6  # a path segment must move the springing point at least this far
+ON_PATH_M = 1e-9  # a springing point this close to the path is on it
+PATH_COLUMNS = ("dx_mm", "dy_mm", "rotation_mrad")
 
 
 @dataclass(frozen=True)
@@ -63,22 +68,153 @@ class SupportMotion:
         pivot_now = self.pivot_at(lam)
         return self.translation * step + rotate(point_now - pivot_now, self.rotation * step) + pivot_now - point_now
 
+    @property
+    def uniform(self) -> bool:
+        """The support moves at one constant velocity (a translation) along the whole path."""
+        return self.rotation == 0.0
+
+    @property
+    def corners(self) -> tuple[float, ...]:
+        """Path lengths where the direction changes: none."""
+        return ()
+
+    @property
+    def length(self) -> float:
+        """The path has no end."""
+        return math.inf
+
+    def angle(self, lam: float) -> float:
+        return self.rotation * lam
+
+    def offset(self, lam: float) -> np.ndarray:
+        """The springing point's displacement (m) at path `lam`."""
+        return self.carry(self.springing, lam) - self.springing
+
+    def turn(self, lam: float, step: float) -> float:
+        return self.rotation * step
+
+    def travelled(self, centroid0: np.ndarray, centroid: Sequence[float], turn: float, hint: float) -> float:
+        """The path length at which the support body whose centroid moved from `centroid0` to
+        `centroid` while turning by `turn` stands: its turn over the rate, or its shift along the line."""
+        if self.rotation != 0.0:
+            return turn / self.rotation
+        return float((centroid[0] - centroid0[0]) * self.translation[0]
+                     + (centroid[1] - centroid0[1]) * self.translation[1])
+
+
+@dataclass(frozen=True)
+class PathMotion:
+    """A prescribed path: the springing point runs along the polyline through `vertices` (its
+    displacement, m, from (0, 0)) while the support turns about it, linearly along each segment, to
+    `angles` (rad); lam is the distance along the polyline, `lengths` its value at each vertex."""
+
+    springing: np.ndarray
+    vertices: np.ndarray  # (n + 1, 2)
+    angles: np.ndarray  # (n + 1,)
+    lengths: np.ndarray  # (n + 1,)
+
+    @classmethod
+    def from_table(cls, springing: np.ndarray, rows: np.ndarray) -> PathMotion:
+        """From rows (dx, dy in m, rotation in rad) of the springing point's displacement and the
+        support's rotation, each reached from the previous one (the first from rest)."""
+        vertices = np.vstack([np.zeros(2), rows[:, :2]])
+        segments = np.linalg.norm(np.diff(vertices, axis=0), axis=1)
+        short = np.flatnonzero(segments < MIN_SEGMENT_M)
+        if short.size:
+            raise ValueError(f"path row {short[0] + 1} does not move the springing point from the previous "
+                             "row (a turn about it alone has no path length; use support_motion 'rotation')")
+        return cls(springing, vertices, np.concatenate([[0.0], rows[:, 2]]),
+                   np.concatenate([[0.0], np.cumsum(segments)]))
+
+    def _segment(self, lam: float) -> int:
+        return int(np.clip(np.searchsorted(self.lengths, lam, side="right") - 1, 0, len(self.lengths) - 2))
+
+    def angle(self, lam: float) -> float:
+        return float(np.interp(lam, self.lengths, self.angles))
+
+    def offset(self, lam: float) -> np.ndarray:
+        k = self._segment(lam)
+        t = (lam - self.lengths[k]) / (self.lengths[k + 1] - self.lengths[k])
+        return self.vertices[k] + t * (self.vertices[k + 1] - self.vertices[k])
+
+    def turn(self, lam: float, step: float) -> float:
+        return self.angle(lam + step) - self.angle(lam)
+
+    @property
+    def rotation(self) -> float:
+        """Nonzero if the support turns anywhere along the path (its largest turn, rad)."""
+        return float(np.max(np.abs(self.angles)))
+
+    @property
+    def uniform(self) -> bool:
+        return False
+
+    @property
+    def corners(self) -> tuple[float, ...]:
+        return tuple(float(v) for v in self.lengths[1:-1])
+
+    @property
+    def length(self) -> float:
+        return float(self.lengths[-1])
+
+    def placement(self, lam: float) -> tuple[float, np.ndarray]:
+        """(angle, shift) at path `lam`: an undeformed point X of the support is at R(angle) X + shift."""
+        angle = self.angle(lam)
+        return angle, self.springing + self.offset(lam) - rotate(self.springing, angle)
+
+    def carry(self, point: np.ndarray, lam: float) -> np.ndarray:
+        angle, shift = self.placement(lam)
+        return rotate(point, angle) + shift
+
+    def rates(self, lam: float) -> np.ndarray:
+        """(vx, vy, omega) per unit path rate of the support's material point at the origin."""
+        k = self._segment(lam)
+        span = self.lengths[k + 1] - self.lengths[k]
+        direction = (self.vertices[k + 1] - self.vertices[k]) / span
+        omega = (self.angles[k + 1] - self.angles[k]) / span
+        at = self.springing + self.offset(lam)
+        return np.array([direction[0] + omega * at[1], direction[1] - omega * at[0], omega])
+
+    def displacement_of(self, point_now: np.ndarray, lam: float, step: float) -> np.ndarray:
+        """How far (2,) the support's material point now at `point_now` moves from `lam` to
+        `lam + step`, exactly, across vertices too."""
+        angle, shift = self.placement(lam)
+        return self.carry(rotate(point_now - shift, -angle), lam + step) - point_now
+
+    def travelled(self, centroid0: np.ndarray, centroid: Sequence[float], turn: float, hint: float) -> float:
+        """The path length at which the springing point of a support body placed so stands: its
+        projection on the polyline, the one nearest `hint` where the path passes a point twice."""
+        point = rotate(self.springing - np.asarray(centroid0), turn) + np.asarray(centroid) - self.springing
+        best: tuple[bool, float, float] | None = None
+        for k in range(len(self.lengths) - 1):
+            a, b = self.vertices[k], self.vertices[k + 1]
+            t = float(np.clip(np.dot(point - a, b - a) / np.dot(b - a, b - a), 0.0, 1.0))
+            lam = float(self.lengths[k] + t * (self.lengths[k + 1] - self.lengths[k]))
+            distance = float(np.linalg.norm(a + t * (b - a) - point))
+            key = (distance > ON_PATH_M, abs(lam - hint), distance)
+            if best is None or key < best:
+                best, found = key, lam
+        return found
+
+
+Motion = SupportMotion | PathMotion
+
 
 @dataclass(frozen=True)
 class Movement:
     """The motions of the supports that move (None: fixed) and which one measures the path."""
 
-    left: SupportMotion | None
-    right: SupportMotion | None
+    left: Motion | None
+    right: Motion | None
 
     @property
-    def reference(self) -> SupportMotion:
+    def reference(self) -> Motion:
         """The support whose springing point measures the path: the right one when it moves."""
         motion = self.right if self.right is not None else self.left
         assert motion is not None, "a movement moves at least one support"
         return motion
 
-    def motion(self, side: str) -> SupportMotion | None:
+    def motion(self, side: str) -> Motion | None:
         return self.left if side == "left" else self.right
 
     @property
@@ -86,25 +222,44 @@ class Movement:
         return any(m is not None and m.rotation != 0.0 for m in (self.left, self.right))
 
     @property
+    def uniform(self) -> bool:
+        """Every moving support translates at one constant velocity."""
+        return all(m is None or m.uniform for m in (self.left, self.right))
+
+    @property
+    def length(self) -> float:
+        """Where the path ends (m): a prescribed path's length, else no end."""
+        return self.reference.length
+
+    @property
+    def corners(self) -> tuple[float, ...]:
+        """Path lengths where a prescribed path changes direction (m)."""
+        return self.reference.corners
+
+    @property
     def moves_rigidly(self) -> bool:
         """Both supports translate alike: the arch is carried as one rigid body and cannot collapse."""
-        return (self.left is not None and self.right is not None and not self.rotates
-                and bool(np.allclose(self.left.translation, self.right.translation, rtol=0.0, atol=SAME_DIRECTION)))
+        if self.left is None or self.right is None or self.rotates:
+            return False
+        probes = (1.0, *self.corners, *((self.length,) if math.isfinite(self.length) else ()))
+        return all(np.allclose(self.left.offset(lam), self.right.offset(lam), rtol=0.0, atol=SAME_DIRECTION)
+                   for lam in probes)
 
     def components(self, lam: float) -> tuple[float, float]:
         """The reference springing point's displacement (m) at path `lam`."""
-        ref = self.reference
-        dx, dy = ref.carry(ref.springing, lam) - ref.springing
+        dx, dy = self.reference.offset(lam)
         return float(dx), float(dy)
 
     def rotation(self, lam: float) -> float:
         """The reference support's rotation (rad, counter-clockwise) at path `lam`."""
-        return self.reference.rotation * lam
+        return self.reference.angle(lam)
 
 
-def _mirror(motion: SupportMotion) -> SupportMotion:
+def _mirror(motion: Motion) -> Motion:
     """The same motion reflected about the arch's axis x = 0."""
     flip = np.array([-1.0, 1.0])
+    if isinstance(motion, PathMotion):
+        return PathMotion(motion.springing * flip, motion.vertices * flip, -motion.angles, motion.lengths)
     return SupportMotion(motion.translation * flip, -motion.rotation, motion.pivot * flip, motion.springing * flip)
 
 
@@ -115,14 +270,20 @@ def right_springing_point(geometry: ArchGeometry) -> np.ndarray:
 
 
 def support_movement(geometry: ArchGeometry, moving_support: str, motion: str, direction_deg: float,
-                     pivot_offset: tuple[float, float], sense: str) -> Movement:
+                     pivot_offset: tuple[float, float], sense: str, path: np.ndarray | None = None) -> Movement:
     """The movement a case describes. `direction_deg` (from +x) is the right support's translation;
     `pivot_offset` (m) places the right support's pivot from its springing intrados point and
-    `sense` gives its rotation as seen from the front; the left support mirrors the right one."""
+    `sense` gives its rotation as seen from the front; `path` rows (dx, dy in m, rotation in rad)
+    prescribe its path; the left support mirrors the right one."""
     if moving_support not in MOVING_SUPPORTS or motion not in MOTIONS or sense not in ROTATION_SENSES:
         raise ValueError(f"unknown movement {moving_support!r}, {motion!r}, {sense!r}")
     springing = right_springing_point(geometry)
-    if motion == "translation":
+    right: Motion
+    if motion == "path":
+        if path is None or len(path) == 0:
+            raise ValueError("support_motion 'path' needs at least one row in path_mm_mrad")
+        right = PathMotion.from_table(springing, np.asarray(path, dtype=float))
+    elif motion == "translation":
         angle = math.radians(direction_deg)
         right = SupportMotion(np.array([math.cos(angle), math.sin(angle)]), 0.0, springing.copy(), springing)
     else:

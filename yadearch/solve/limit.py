@@ -96,8 +96,10 @@ class _March:
         if not self.admissible(state):
             raise LimitError("the arch admits no equilibrium at rest (too thin, or too little friction)")
         mechanism = self.switch(state, None, 0.0)
+        corners = [c for c in self.arch.movement.corners if c < limit]
         while state.delta < limit - 1e-12:
-            offset = min(self.step, limit - state.delta)
+            corner = next((c for c in corners if c > state.delta + 1e-12), limit)
+            offset = min(self.step, corner - state.delta)
             trial, capped = self.moved(state, mechanism, offset), False
             if trial is None:  # a corner closes, or the linkage straightens, within the step
                 offset = _bisect(lambda h: self.moved(state, mechanism, h) is not None, offset,
@@ -105,7 +107,9 @@ class _March:
                 trial, capped = self.moved(state, mechanism, offset), True
             if trial is not None and self.admissible(trial):
                 state = trial
-                if capped:  # a corner has closed (or the linkage straightened): solve the mechanism again
+                if not capped and abs(state.delta - corner) < 1e-12 and corner < limit:  # the path turns
+                    mechanism = self.switch(state, mechanism, 0.0)
+                elif capped:  # a corner has closed (or the linkage straightened): solve the mechanism again
                     new = self.switch(state, mechanism, 0.0)
                     if set(new.pivots) == set(mechanism.pivots):
                         raise LimitError(f"at {units.to_mm(state.delta):.3f} mm the mechanism can go no "
@@ -231,7 +235,7 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
     arch = rigid_arch(case)
     snap_cap = case.numerics.runaway_mm if max_snap_mm is None else max_snap_mm
     march = _March(arch, units.mm(step_mm), units.mm(tolerance_mm), snap_cap)
-    limit = units.mm(max_settlement_mm or case.loading.max_settlement_mm)
+    limit = min(units.mm(max_settlement_mm or case.loading.max_settlement_mm), arch.movement.length)
     last, read_at, mechanism, chain = march.run(limit)
     mode, hinges = "none", tuple(p.label for p in mechanism.pivots)
     new: tuple[str, ...] = ()

@@ -18,7 +18,7 @@ from yadearch.case.movement import case_movement
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, block_volume
-from yadearch.model.movement import Movement, SupportMotion
+from yadearch.model.movement import Motion, Movement, SupportMotion
 
 INTRADOS, EXTRADOS = 0, 1
 SIDES = "IE"  # hinge label of a pivot corner: I = intrados pivot, E = extrados pivot
@@ -82,8 +82,8 @@ def rigid_arch(case: ArchCase) -> RigidArch:
     joints = geometry.joints
     movement = case_movement(case, geometry)
     if movement.rotates:
-        raise LimitError("the limit analysis follows support translations only: loading.support_motion "
-                         "'rotation' is for the DEM run")
+        raise LimitError("the limit analysis follows support translations only: a turning support "
+                         "(loading.support_motion 'rotation', or a path_mm_mrad with rotations) is for the DEM run")
     if movement.moves_rigidly:
         raise LimitError("both supports translate alike (loading.moving_support 'both', "
                          f"settlement_direction_deg {case.loading.settlement_direction_deg:g}): the arch "
@@ -170,7 +170,7 @@ def close_linkage(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
         raise ValueError(f"a three-hinge linkage needs three pivots, got {len(pivots)}")
     p1, p2, p3 = sorted(pivots)
     old = [_pivot_point(arch, placement, p) for p in (p1, p2, p3)]
-    left, right = (_translation(arch.movement.motion(side), delta - placement.delta) for side in ("left", "right"))
+    left, right = (_translation(arch.movement.motion(side), placement.delta, delta) for side in ("left", "right"))
     first, last = old[0] + left, old[2] + right
     middle = _middle_joint(old[0], old[1], old[2], first, last)
     if middle is None:
@@ -184,10 +184,14 @@ def close_linkage(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
     return replace(placement, delta=delta, rot=rot, shift=shift)
 
 
-def _translation(motion: SupportMotion | None, path_step: float) -> np.ndarray:
-    """How far a support (and the blocks it carries) moves over `path_step` of path: its
+def _translation(motion: Motion | None, start: float, end: float) -> np.ndarray:
+    """How far a support (and the blocks it carries) moves from path `start` to `end`: its
     translation (`rigid_arch` refuses turning supports); nothing for a fixed support."""
-    return np.zeros(2) if motion is None else path_step * motion.translation
+    if motion is None:
+        return np.zeros(2)
+    if isinstance(motion, SupportMotion):
+        return (end - start) * motion.translation
+    return motion.offset(end) - motion.offset(start)
 
 
 def turn_four_bar(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ...],
