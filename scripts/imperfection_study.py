@@ -23,9 +23,16 @@ from yadearch.case import reference
 from yadearch.case.config import preset
 from yadearch.plotting.montecarlo import amplitude_panels_figure, campaign_figures
 from yadearch.results.rundir import read_summary
+from yadearch.studies.campaign import RESULTS_FILE, label_hinges
 from yadearch.studies.executors import open_pool
-from yadearch.studies.imperfection_study import Study, amplitude_for, level_rows, table_markdown
-from yadearch.studies.montecarlo import MONTECARLO_FILE, run_montecarlo
+from yadearch.studies.imperfection_study import (
+    Study,
+    amplitude_for,
+    hinge_agreement,
+    level_rows,
+    table_markdown,
+)
+from yadearch.studies.montecarlo import MONTECARLO_FILE, run_montecarlo, write_montecarlo
 
 BASE_PRESET = "set2"  # accurate voussoirs: the CNC set's kn
 SEED = 1
@@ -39,6 +46,10 @@ STUDIES = (
     Study("support", "moving support set askew (gaping toward the extrados)", "right_support_angle_mrad",
           (2.0, 5.0, 10.0, 20.0), 1),
 )
+FINAL = Study("final", "faces not flat, at the level that matches set 1 (the final campaign)", "face_bump_sd_mm",
+              (0.18,), 200)
+STUDIES = (*STUDIES, FINAL)
+SET1_EXPERIMENT_HINGES = {"A": 13, "B": 32, "C": 56, "D": 1}  # the paper's Table 1 (docs/validation.md)
 UNITS = {"edge_radius_mm": "mm", "face_angle_sd_mrad": "mrad", "face_bump_sd_mm": "mm",
          "keystone_offset_mm": "mm", "voussoir_offset_sd_mm": "mm", "right_support_angle_mrad": "mrad"}
 AXIS_LABELS = {"edge_radius_mm": "edge radius (mm)", "face_angle_sd_mrad": "face angle s.d. (mrad)",
@@ -56,11 +67,16 @@ def run_study(study: Study, out: Path, jobs: int) -> pd.DataFrame:
     base = preset(BASE_PRESET).with_overrides({f"imperfections.{k}": v for k, v in study.fixed.items()})
     with open_pool(jobs) as pool:
         table = run_montecarlo(base, out / study.name, pool, study.samples, SEED, study.axes)
+    draw(table, study, out)
+    return table
+
+
+def draw(table: pd.DataFrame, study: Study, out: Path) -> None:
+    """A campaign's figures (du distribution, hinge positions, du against the amplitude)."""
     try:
         campaign_figures(table, out / study.name, [study.parameter])
     except ValueError as exc:
         print(f"{study.name}: no figure ({exc})")
-    return table
 
 
 def spread(interfaces: list[int]) -> str:
@@ -94,6 +110,7 @@ def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float) -> str:
         lines.append(f"Median du = {target} mm at {study.parameter} ≈ {amplitude:.3g} {unit}." if not
                      math.isnan(amplitude) else f"No level brackets {target} mm.")
         lines.append("")
+    lines += final_section(out, set1_summary)
     experiment, model = reference.SETS["set1"]["experimental"], reference.SETS["set1"]["numerical"]
     lines += ["## Set 1 for comparison", "",
               f"- experiment: du {experiment['du_mm']} mm, A at {experiment['hinge_A'][0]} I (formed at 12, moved "
@@ -109,6 +126,30 @@ def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float) -> str:
     return "\n".join(lines)
 
 
+def final_section(out: Path, set1_summary: dict) -> list[str]:
+    """How the final campaign's hinges compare with set 1's experiment, beside the low-kn model's."""
+    path = out / FINAL.name / MONTECARLO_FILE
+    if not path.is_file():
+        return []
+    table = pd.read_csv(path)
+    done = int((table["status"] == "done").sum())
+    shares = hinge_agreement(table, SET1_EXPERIMENT_HINGES)
+    labelled = label_hinges(set1_summary, preset(BASE_PRESET).geometry.n_voussoirs)
+    model = {label: labelled[f"hinge_{label}"] for label in SET1_EXPERIMENT_HINGES}
+    lines = [f"## The final campaign against set 1's experiment ({done} of {FINAL.samples} samples)", "",
+             f"`{FINAL.parameter}` = {FINAL.levels[0]:g} mm, seeds {SEED}-{SEED + FINAL.samples - 1} "
+             f"(`{out / FINAL.name}`; `--only {FINAL.name}` resumes it). Share of the samples whose hinge sits "
+             "within one interface of the experiment's:", "",
+             "| hinge | experiment | samples within ±1 | low-kn model |", "|---|---|---|---|"]
+    for label, interface in SET1_EXPERIMENT_HINGES.items():
+        own = model.get(label)
+        lines.append(f"| {label} | {interface} | {shares[label]:.0%} | "
+                     f"{'—' if own is None else own} |")
+    lines += ["", f"![du of the final campaign]({FINAL.name}/du_distribution.png)",
+              f"![hinges of the final campaign]({FINAL.name}/hinge_positions.png)", ""]
+    return lines
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default="reports/imperfections")
@@ -119,9 +160,12 @@ def main() -> int:
     args = parser.parse_args()
     out = Path(args.out)
     chosen = [s for s in STUDIES if not args.only or s.name in args.only.split(",")]
-    if not args.report_only:
-        for study in chosen:
+    for study in chosen:
+        if not args.report_only:
             run_study(study, out, args.jobs)
+        elif (out / study.name / RESULTS_FILE).is_file():  # a stopped campaign: tabulate what is finished
+            table = write_montecarlo(pd.read_csv(out / study.name / RESULTS_FILE), out / study.name, study.axes)
+            draw(table, study, out)
     perfect_du_mm = read_summary(PERFECT_RUN)["du_mm"]
     text = report(out, pd.read_csv(Path(args.sweep) / "results.csv"), perfect_du_mm)
     write_text_atomically(out / REPORT, text)

@@ -96,3 +96,14 @@ def table_markdown(rows: list[dict[str, Any]], unit: str) -> list[str]:
         lines.append(f"| {r['level']:g} | {r['samples']} | {r['median_du_mm']:.2f} | {r['low_du_mm']:.2f}-"
                      f"{r['high_du_mm']:.2f} | {'—' if math.isnan(kn) else f'{kn:.3g}'} | {r['hinges']} |")
     return lines
+
+
+def hinge_agreement(table: pd.DataFrame, observed: dict[str, int], tolerance: int = 1) -> dict[str, float]:
+    """Per paper hinge (A-D), the share of finished samples whose hinge sits within `tolerance`
+    interfaces of the `observed` one (e.g. set 1's experiment); nan without samples."""
+    done = table[table["status"] == "done"]
+    shares = {}
+    for label, interface in observed.items():
+        column = done[f"hinge_{label}"]
+        shares[label] = float(((column - interface).abs() <= tolerance).mean()) if len(done) else math.nan
+    return shares

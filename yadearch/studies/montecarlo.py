@@ -51,6 +51,12 @@ def run_montecarlo(base: ArchCase, out: Path, pool: Pool, samples: int, seed: in
     out = Path(out)
     results = run_campaign(base, sample_rows(samples, seed, axes), out, pool, timeout_s=timeout_s,
                            progress=progress)
+    return write_montecarlo(results, out, axes)
+
+
+def write_montecarlo(results: pd.DataFrame, out: Path, axes: dict[str, list[Any]] | None) -> pd.DataFrame:
+    """montecarlo.csv and montecarlo.md of a campaign from its results table (finished or not: a
+    stopped campaign's results.csv lists its unfinished samples as pending); returns the table."""
     table = with_imperfections(results, out)
     write_atomically(out / MONTECARLO_FILE, lambda tmp: table.to_csv(tmp, index=False, float_format="%.6g"))
     write_text_atomically(out / SUMMARY_FILE, summary_markdown(table, levels(table, axes)))
