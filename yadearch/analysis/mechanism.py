@@ -24,6 +24,21 @@ class SlidingJoint:
     slip_mm: float | None
 
 
+def slip_during_moves(friction: dict, slip_threshold_mm: float = SLIP_THRESHOLD_MM,
+                      cap_tolerance: float = CAP_TOLERANCE) -> str | None:
+    """A warning when a run's joint slipped more than `slip_threshold_mm` although no equilibrium
+    state brought any joint to its friction cap (summary.json's `friction`): it slid while the
+    support moved, so the moves' inertia may be part of the answer (docs/numerics.md), or while the
+    joint was open; None otherwise."""
+    slip, use = friction.get("max_slip_mm"), friction.get("max_friction_use")
+    if slip is None or use is None or slip < slip_threshold_mm or use >= 1.0 - cap_tolerance:
+        return None
+    return (f"interface {friction.get('slip_interface')} slipped {slip:.2f} mm although no equilibrium state "
+            f"used more than {use:.2f} of any joint's friction: it slid while the support moved (the moves' "
+            "inertia is then part of du: check with a lower numerics.support_acceleration_mm_per_s2) or "
+            "while the joint was open")
+
+
 def sliding_joints(normal_N: np.ndarray, shear_N: np.ndarray, friction_deg: float,
                    slip_mm: np.ndarray | None = None, cap_tolerance: float = CAP_TOLERANCE,
                    slip_threshold_mm: float = SLIP_THRESHOLD_MM) -> list[SlidingJoint]:
