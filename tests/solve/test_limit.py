@@ -241,19 +241,19 @@ def test_imports_without_yade():
     assert subprocess.run([sys.executable, "-c", code]).returncode == 0
 
 
-def test_a_snap_larger_than_the_runaway_distance_is_the_collapse():
-    """Under spreading the paper arch's haunch hinges migrate by snaps at a fixed support. By default a
-    snap that moves a block further than the case's runaway_mm (1 mm, the DEM's collapse criterion)
-    is the collapse, at the displacement where the full analysis (every snap survived) records it;
-    the settlement, whose only snap moves blocks 0.11 mm, is the same either way."""
+def test_a_snap_larger_than_allowed_is_the_collapse():
+    """Under spreading the paper arch's haunch hinges migrate by snaps at a fixed support, all
+    survived by default; allowing only snaps that move no block more than 1 mm (a DEM's runaway
+    distance), the march ends at the first larger one, where the full analysis records it; the
+    settlement, whose only snap moves blocks 0.11 mm, is the same either way."""
     case = preset("set2").replace(settlement_direction_deg=0.0)
-    full = limit_analysis(case, max_snap_mm=math.inf)
-    capped = limit_analysis(case)
-    first_large = min(h.from_mm for h in full.hinge_history if h.jump_mm > case.numerics.runaway_mm)
+    full = limit_analysis(case)
+    capped = limit_analysis(case, max_snap_mm=1.0)
+    first_large = min(h.from_mm for h in full.hinge_history if h.jump_mm > 1.0)
     assert capped.du_rigid_mm == pytest.approx(first_large, abs=0.01)
     assert capped.du_rigid_mm < full.du_rigid_mm
-    assert capped.collapse_mode == "snap" and capped.snap_collapse_mm > case.numerics.runaway_mm
-    assert capped.max_snap_mm == case.numerics.runaway_mm and full.max_snap_mm is None
-    assert all(h.jump_mm <= case.numerics.runaway_mm for h in capped.hinge_history)
+    assert capped.collapse_mode == "snap" and capped.snap_collapse_mm > 1.0
+    assert capped.max_snap_mm == 1.0 and full.max_snap_mm is None and full.collapse_mode == "hinging"
+    assert all(h.jump_mm <= 1.0 for h in capped.hinge_history)
     settlement = preset("set2")
-    assert limit_analysis(settlement).du_rigid_mm == limit_analysis(settlement, max_snap_mm=math.inf).du_rigid_mm
+    assert limit_analysis(settlement, max_snap_mm=1.0).du_rigid_mm == limit_analysis(settlement).du_rigid_mm

@@ -96,8 +96,8 @@ def params() -> None:
               help="folder that receives NAME.json, NAME.pdf and NAME.png")
 @click.option("--max-snap-mm", type=click.FloatRange(min=0.0, min_open=True), default=None,
               help="count a hinge snap that moves a block further than this (mm) as collapse, as a DEM "
-                   "run counts a block running away (default: the case's numerics.runaway_mm; inf: "
-                   "every snap that ends in equilibrium is survived)")
+                   "run counts a block running away (default: every snap that ends in equilibrium is "
+                   "survived)")
 def limit(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
           out: str, max_snap_mm: float | None) -> None:
     """Rigid-block limit analysis, no YADE (kn is ignored): du_rigid, hinges, thrust-line figure."""
