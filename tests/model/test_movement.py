@@ -87,3 +87,32 @@ def test_a_pivot_on_the_springing_point_is_refused_in_one_line(geometry):
     with pytest.raises(CaseError, match="rotation_pivot_dx_mm"):
         movement(support_motion="rotation", rotation_pivot_dx_mm=1e3 * half * math.cos(angle),
                  rotation_pivot_dy_mm=1e3 * half * math.sin(angle))
+
+
+@pytest.mark.parametrize("loading, expected", [
+    ({}, 640.0),  # a settlement: no horizontal component, the default acceleration to the bit
+    ({"settlement_direction_deg": 0.0}, 40.0),
+    ({"settlement_direction_deg": -45.0}, 40.0 / math.cos(math.radians(45.0))),
+    ({"settlement_direction_deg": 0.0, "support_horizontal_acceleration_mm_per_s2": 0.0}, 640.0),  # no cap
+    ({"support_motion": "rotation", "rotation_pivot_dy_mm": -200.0}, 40.3),  # the springing starts sideways
+])
+def test_the_support_accelerates_gently_where_it_moves_sideways(loading, expected):
+    """A horizontal jolt loads the arch like a ground acceleration (docs/validation.md): its
+    horizontal component stays within support_horizontal_acceleration_mm_per_s2 (40 mm/s2)."""
+    from yadearch.case.movement import support_acceleration_mm_per_s2
+
+    case = preset("set2").with_overrides(loading)
+    accel = support_acceleration_mm_per_s2(case, case_movement(case, arch_geometry(case)))
+    assert accel == pytest.approx(expected, rel=1e-2)
+    assert accel == 640.0 or accel * case_movement(case, arch_geometry(case)).horizontal_share <= 40.0 + 1e-9
+
+
+def test_runs_the_cap_does_not_change_stay_comparable_with_older_ones():
+    """A settlement run from before the cap ran as a settlement runs now; a spreading one did not."""
+    from yadearch.case.config import as_ran
+
+    for direction, same in ((-90.0, True), (0.0, False)):
+        old = preset("set2").replace(settlement_direction_deg=direction).to_dict()
+        del old["numerics"]["support_horizontal_acceleration_mm_per_s2"]  # a case.toml of before
+        now = preset("set2").replace(settlement_direction_deg=direction).to_dict()
+        assert (as_ran(old) == as_ran(now)) is same

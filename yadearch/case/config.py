@@ -86,6 +86,14 @@ def support_speed(rate: float, reference_kn: float, kn: float) -> float:
     return rate * math.sqrt(reference_kn / kn) if 0 < reference_kn < kn else rate
 
 
+def capped_acceleration(accel: float, horizontal_cap: float, horizontal_share: float) -> float:
+    """The support's acceleration along its path (mm/s^2, 0 = instantaneous) lowered so that its
+    horizontal component, `horizontal_share` of it, stays within `horizontal_cap` (0 = no cap)."""
+    if horizontal_cap <= 0.0 or horizontal_share * (accel if accel > 0.0 else math.inf) <= horizontal_cap:
+        return accel
+    return horizontal_cap / horizontal_share
+
+
 def _resolve_key(key: str) -> tuple[str | None, str]:
     """Map `section.key` or a bare key unique across sections to (section, key)."""
     if key == "name":
@@ -180,8 +188,8 @@ def case_from_dict(data: dict[str, Any]) -> ArchCase:
 def as_ran(data: dict[str, Any]) -> dict[str, Any]:
     """What a stored case.toml (`data`) ran with, comparable across versions: a parameter the run
     predates takes the value that reproduces the behaviour it had ("predates" in its metadata, else
-    its default), and the support speed replaces the parameters it derives from, so that a run
-    whose speed they do not change stays comparable."""
+    its default), and the support speed and acceleration replace the parameters they derive from,
+    so that a run whose speed or acceleration they do not change stays comparable."""
     filled: dict[str, Any] = {"name": data.get("name", "custom")}
     for section_name, cls in SECTIONS.items():
         stored, defaults = data.get(section_name, {}), cls()
@@ -193,6 +201,11 @@ def as_ran(data: dict[str, Any]) -> dict[str, Any]:
         numerics["settlement_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"],
         filled["interface"]["kn_N_per_mm3"])
     del numerics["settlement_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"]
+    loading = filled["loading"]  # the acceleration a run used; a turn or a path counted as horizontal
+    share = (abs(math.cos(math.radians(loading["settlement_direction_deg"])))
+             if loading["support_motion"] == "translation" else 1.0)
+    numerics["support_acceleration_mm_per_s2"] = capped_acceleration(
+        numerics["support_acceleration_mm_per_s2"], numerics.pop("support_horizontal_acceleration_mm_per_s2"), share)
     return filled
 
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from yadearch.case.config import ArchCase
+from yadearch.case.config import ArchCase, capped_acceleration
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
@@ -25,6 +25,15 @@ def case_movement(case: ArchCase, geometry: ArchGeometry) -> Movement:
                   f"rotation_pivot_dx_mm {loading.rotation_pivot_dx_mm}, "
                   f"rotation_pivot_dy_mm {loading.rotation_pivot_dy_mm}")
         raise CaseError(f"loading: {exc} ({detail:.120})") from None
+
+
+def support_acceleration_mm_per_s2(case: ArchCase, movement: Movement) -> float:
+    """The acceleration of the support along its path (mm/s^2): the case's, lowered so that its
+    horizontal component stays within `support_horizontal_acceleration_mm_per_s2` (a horizontal
+    jolt loads the arch like a ground acceleration; docs/numerics.md); 0 = instantaneous."""
+    num = case.numerics
+    return capped_acceleration(num.support_acceleration_mm_per_s2, num.support_horizontal_acceleration_mm_per_s2,
+                               movement.horizontal_share)
 
 
 def _loading(moving_support: str, motion: str, direction_deg: float = -90.0, pivot_dy_mm: float = 0.0,

@@ -12,7 +12,7 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes, arch_imperfections, check_contact_model
 from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep
-from yadearch.case.movement import case_movement
+from yadearch.case.movement import case_movement, support_acceleration_mm_per_s2
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
@@ -38,7 +38,7 @@ def plan_run(case: ArchCase) -> RunPlan:
     num = case.numerics
     geometry = arch_geometry(case)  # refuses an arch that cannot be built (case/shape.py)
     _check_imperfections(case, geometry)
-    case_movement(case, geometry)  # refuses a movement that cannot be followed (a pivot on the path's point)
+    movement = case_movement(case, geometry)  # refuses a movement that cannot be followed (a pivot on the path's point)
     dt = num.timestep_safety * critical_timestep(case, geometry, contact_stiffness(case, geometry))
     if not math.isfinite(dt) or dt <= 0.0:
         raise CaseError(f"the time step from interface.kn_N_per_mm3 = {case.interface.kn_N_per_mm3:g} "
@@ -49,7 +49,8 @@ def plan_run(case: ArchCase) -> RunPlan:
         raise CaseError(f"numerics.gravity_ramp_periods = {num.gravity_ramp_periods:g} makes the gravity "
                         f"ramp {ramp_s:.3g} s, longer than numerics.selfweight_max_s = "
                         f"{num.selfweight_max_s:g} s; lower the first or raise the second")
-    worst_s = num.selfweight_max_s + ramp_s + _loading_worst_case_s(case) + SETTLE_HOLDS * num.hold_max_s
+    accel = support_acceleration_mm_per_s2(case, movement)
+    worst_s = num.selfweight_max_s + ramp_s + _loading_worst_case_s(case, accel) + SETTLE_HOLDS * num.hold_max_s
     steps = worst_s / dt
     if steps > num.max_steps:
         raise CaseError(f"this case could take up to {steps:.3g} steps (time step {dt:.3g} s, up to "
@@ -80,7 +81,7 @@ def _check_imperfections(case: ArchCase, geometry: ArchGeometry) -> None:
                         f"({units.to_mm(float(drawn.lengths.min())):.3g} mm)")
 
 
-def _loading_worst_case_s(case: ArchCase) -> float:
+def _loading_worst_case_s(case: ArchCase, accel_mm_per_s2: float) -> float:
     """Simulated time of the loading if every increment ran its full move and its longest hold."""
     num = case.numerics
     largest = max(num.max_increment_mm, num.first_increment_mm)
@@ -88,8 +89,7 @@ def _loading_worst_case_s(case: ArchCase) -> float:
         if num.increment_growth > 1.0 else math.ceil(case.loading.max_settlement_mm / num.first_increment_mm)
     increments = (growing + math.ceil(case.loading.max_settlement_mm / largest)
                   + math.ceil(math.log2(largest / num.du_tolerance_mm)) + BISECTIONS_MARGIN)
-    return increments * (_move_s(largest, case.settlement_speed_mm_per_s,
-                                 num.support_acceleration_mm_per_s2) + num.hold_max_s)
+    return increments * (_move_s(largest, case.settlement_speed_mm_per_s, accel_mm_per_s2) + num.hold_max_s)
 
 
 def _move_s(distance_mm: float, speed_mm_per_s: float, accel_mm_per_s2: float) -> float:

@@ -127,6 +127,11 @@ class NumericsConfig:
         0, 1e5, doc="acceleration and braking of the support at the start and end of each move (mm/s^2); "
         "0 = instantaneous. The same at any kn: it sets the inertial load of the moving arch (640 = "
         "0.065 g)"), "predates": 0.0})
+    support_horizontal_acceleration_mm_per_s2: float = field(default=40.0, metadata={**_num(
+        0, 1e5, doc="largest horizontal component of the support's acceleration (mm/s^2; 40 = 0.004 g): "
+        "a horizontal jolt loads the arch like a ground acceleration, and at 640 mm/s^2 it throws a "
+        "spreading arch out of its hinge migrations early (docs/validation.md); 0 = no limit"),
+        "predates": 0.0})
     damping: float = field(default=0.2, metadata=_num(0, 1, high_open=True,
                            doc="YADE local (non-viscous) damping coefficient"))
     hold_damping: float = field(default=0.2, metadata=_num(0, 1, high_open=True,

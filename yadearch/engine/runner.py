@@ -16,7 +16,7 @@ from collections.abc import Callable
 import numpy as np
 
 from yadearch.case.config import ArchCase
-from yadearch.case.movement import case_movement
+from yadearch.case.movement import case_movement, support_acceleration_mm_per_s2
 from yadearch.engine.driver import SupportDriver
 from yadearch.engine.loading import EquilibriumPath
 from yadearch.engine.recorder import Recorder, Records
@@ -43,7 +43,7 @@ class Runner:
         self.movement = case_movement(case, self.scene.geometry)
         self.full_speed = units.mm(case.settlement_speed_mm_per_s)
         self.driver = SupportDriver(self.scene, self.movement, self.full_speed,
-                                    units.mm(self.num.support_acceleration_mm_per_s2))
+                                    units.mm(support_acceleration_mm_per_s2(case, self.movement)))
         self._install_driver()
         self.recorder = Recorder(self.scene, self.driver, self.num)
         self.gate = SteppingGate()

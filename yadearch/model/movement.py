@@ -93,6 +93,15 @@ class SupportMotion:
     def turn(self, lam: float, step: float) -> float:
         return self.rotation * step
 
+    @property
+    def horizontal_share(self) -> float:
+        """The horizontal component of the springing point's unit direction of travel, at most
+        (a turn: at the start, its direction square to the pivot's arm)."""
+        if self.rotation == 0.0:
+            return abs(float(self.translation[0]))
+        arm = self.springing - self.pivot
+        return abs(float(arm[1])) / float(np.linalg.norm(arm))
+
     def travelled(self, centroid0: np.ndarray, centroid: Sequence[float], turn: float, hint: float) -> float:
         """The path length at which the support body whose centroid moved from `centroid0` to
         `centroid` while turning by `turn` stands: its turn over the rate, or its shift along the line."""
@@ -148,6 +157,12 @@ class PathMotion:
     @property
     def uniform(self) -> bool:
         return False
+
+    @property
+    def horizontal_share(self) -> float:
+        """The largest horizontal component of the springing point's unit direction over the segments."""
+        steps = np.diff(self.vertices, axis=0)
+        return float(np.max(np.abs(steps[:, 0]) / np.linalg.norm(steps, axis=1)))
 
     @property
     def corners(self) -> tuple[float, ...]:
@@ -225,6 +240,11 @@ class Movement:
     def uniform(self) -> bool:
         """Every moving support translates at one constant velocity."""
         return all(m is None or m.uniform for m in (self.left, self.right))
+
+    @property
+    def horizontal_share(self) -> float:
+        """The largest horizontal component of a moving springing point's unit direction of travel."""
+        return max(m.horizontal_share for m in (self.left, self.right) if m is not None)
 
     @property
     def length(self) -> float:

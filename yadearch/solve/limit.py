@@ -13,8 +13,9 @@ hinge closes: a rigid hinge cannot migrate smoothly, since with both open the th
 to pass four pivots. If equilibrium exists after the snap the march goes on (unless the snap moves a
 block further than `max_snap_mm`, then the collapse); any other chain, or no equilibrium after the
 snap, is collapse (a failure of the friction alone: sliding). A DEM run at kn 300 loaded gently
-passes snaps of 1.1-1.3 mm (docs/validation.md), so every snap is survived by default. du_rigid is the last support displacement with an admissible equilibrium. Without the
-snaps the paper arch would "collapse" at 8.4 mm, where its extrados hinge moves from 33E to 32E.
+passes snaps of 1.1-1.3 mm (docs/validation.md), so every snap is survived by default. du_rigid
+is the last support displacement with an admissible equilibrium. Without the snaps the paper arch
+would "collapse" at 8.4 mm, where its extrados hinge moves from 33E to 32E.
 """
 
 from __future__ import annotations
