@@ -55,7 +55,8 @@ def simulate(case: ArchCase, out: Path) -> dict:
                      "loading": {"moving_support": case.loading.moving_support,
                                  "motion": case.loading.support_motion,
                                  "direction_deg": case.loading.settlement_direction_deg,
-                                 "max_displacement_mm": case.loading.max_settlement_mm},
+                                 "max_displacement_mm": min(case.loading.max_settlement_mm,
+                                                            units.to_mm(runner.movement.length))},
                      "collapse_criterion": criterion_text(case.numerics)}
     imperfections = runner.scene.imperfections
     if imperfections is not None:

@@ -279,8 +279,7 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
                    mechanism="-".join(h["side"] for h in hinges),
                    **label_hinges(summary, case.geometry.n_voussoirs),
                    steps=summary.get("steps"), wall_s=summary.get("wall_s"), status="done",
-                   reason="" if summary.get("collapsed") else
-                   f"no collapse up to {case.loading.max_settlement_mm:g} mm")
+                   reason="" if summary.get("collapsed") else f"no collapse up to {_path_end_mm(summary, case):g} mm")
     elif (spec.folder / FAILED_FILE).is_file():
         failed = json.loads((spec.folder / FAILED_FILE).read_text())
         row.update(empty, wall_s=failed.get("wall_s", math.nan), status="failed",
@@ -290,6 +289,11 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
     row["folder"] = str(spec.folder.relative_to(out)) if spec.folder.is_relative_to(out) \
         else str(spec.folder)
     return row
+
+
+def _path_end_mm(summary: dict[str, Any], case: ArchCase) -> float:
+    """Where a run that did not collapse stopped: its path's end, or the case's largest displacement."""
+    return float((summary.get("loading") or {}).get("max_displacement_mm", case.loading.max_settlement_mm))
 
 
 def results_table(specs: list[RunSpec], out: Path) -> pd.DataFrame:
