@@ -33,6 +33,8 @@ def test_the_springing_point_passes_every_row_at_its_distance_along_the_path():
     move = movement()
     ref = move.reference
     assert move.length == pytest.approx(LENGTH_M) and move.corners == pytest.approx((0.003, 0.007))
+    assert move.horizontal_share == 1.0  # its second segment runs sideways: the gentle acceleration
+    assert movement([[0.0, -3.0, 0.0], [3.0, -7.0, 0.0]]).horizontal_share == pytest.approx(0.6)
     for lam, (dx, dy, turn) in zip((0.003, 0.007, LENGTH_M), ROWS_MM_MRAD):
         assert move.components(lam) == pytest.approx((dx * 1e-3, dy * 1e-3), abs=1e-15)
         assert move.rotation(lam) == pytest.approx(turn * 1e-3, abs=1e-15)
