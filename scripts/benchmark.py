@@ -285,7 +285,7 @@ def main() -> int:
 
     from yadearch.case.config import preset
     from yadearch.model.hinges import same_hinges
-    from yadearch.studies.campaign import campaign_core_s, campaign_wall_s
+    from yadearch.studies.sessions import campaign_core_s, campaign_wall_s
 
     runs = Path(args.runs)
     cases = {"set1": preset("set1"), "set2": preset("set2")}

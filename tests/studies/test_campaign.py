@@ -23,9 +23,7 @@ from yadearch.plotting.sweep import kn_sweep_figure
 from yadearch.studies.campaign import (
     FAILED_FILE,
     RESULTS_FILE,
-    SESSIONS_FILE,
     batch_run,
-    campaign_wall_s,
     label_hinges,
     plan,
     record_failure,
@@ -33,6 +31,7 @@ from yadearch.studies.campaign import (
 )
 from yadearch.studies.executors import local_pool
 from yadearch.studies.grid import grid, parse_values, read_table, run_tag
+from yadearch.studies.sessions import SESSIONS_FILE, campaign_wall_s
 
 BASE = preset("set1").with_overrides({"n_voussoirs": 15})
 HINGES = [{"interface": 1, "side": "E"}, {"interface": 3, "side": "I"}, {"interface": 8, "side": "E"},

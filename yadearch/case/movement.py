@@ -27,6 +27,12 @@ def case_movement(case: ArchCase, geometry: ArchGeometry) -> Movement:
         raise CaseError(f"loading: {exc} ({detail:.120})") from None
 
 
+def path_end_mm(case: ArchCase, movement: Movement) -> float:
+    """Where a run stops without collapse (mm along the path): max_settlement_mm, or the end of a
+    shorter prescribed path."""
+    return min(case.loading.max_settlement_mm, units.to_mm(movement.length))
+
+
 def support_acceleration_mm_per_s2(case: ArchCase, movement: Movement) -> float:
     """The acceleration of the support along its path (mm/s^2): the case's, lowered so that its
     horizontal component stays within `support_horizontal_acceleration_mm_per_s2` (a horizontal

@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 
 from yadearch.engine.scene import CALLBACK_NAME, ArchScene
-from yadearch.model.movement import Motion, Movement, SupportMotion
+from yadearch.model.movement import Motion, Movement
 
 ARRIVED_M = 1e-12  # the support is on target within this distance (m)
 DRIVER_LABEL = "yadearch_support_driver"
@@ -102,14 +102,7 @@ class SupportDriver:
                         math.sqrt(2.0 * self.accel * remaining), remaining / dt)
         self.current_speed = speed
         for state, motion in self._moving:
-            if isinstance(motion, SupportMotion):  # a translation's one velocity, or a turn's chord
-                turn_rate = motion.rotation * speed
-                if motion.uniform:
-                    vx, vy = motion.translation * speed
-            else:
-                turn_rate = motion.turn(lam, speed * dt) / dt
-            if not motion.uniform:
-                vx, vy = motion.displacement_of(np.array([state.pos[0], state.pos[1]]), lam, speed * dt) / dt
+            (vx, vy), turn_rate = motion.velocity(np.array([state.pos[0], state.pos[1]]), lam, speed, dt)
             state.vel = (float(vx), float(vy), 0.0)
             state.angVel = (0.0, 0.0, turn_rate)
         self._schedule(remaining, speed, dt)

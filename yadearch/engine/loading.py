@@ -6,6 +6,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from yadearch.case.config import NumericsConfig
+from yadearch.case.movement import path_end_mm
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.solve.path import RUNAWAY, STABLE, PathResult, PathSettings, PathStep, follow_path
@@ -33,7 +34,7 @@ class EquilibriumPath:
             first_increment=mm(num.first_increment_mm),
             max_increment=mm(max(num.max_increment_mm, num.first_increment_mm)),
             growth=num.increment_growth, tolerance=mm(num.du_tolerance_mm),
-            max_displacement=min(mm(runner.case.loading.max_settlement_mm), runner.movement.length))
+            max_displacement=mm(path_end_mm(runner.case, runner.movement)))
 
     def try_increment(self, target: float) -> str:
         """From the last accepted equilibrium state, move the support to `target` and relax there

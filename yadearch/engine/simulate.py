@@ -13,6 +13,7 @@ import time
 from pathlib import Path
 
 from yadearch.case.config import ArchCase, load_case
+from yadearch.case.movement import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.results.provenance import provenance
@@ -55,8 +56,7 @@ def simulate(case: ArchCase, out: Path) -> dict:
                      "loading": {"moving_support": case.loading.moving_support,
                                  "motion": case.loading.support_motion,
                                  "direction_deg": case.loading.settlement_direction_deg,
-                                 "max_displacement_mm": min(case.loading.max_settlement_mm,
-                                                            units.to_mm(runner.movement.length))},
+                                 "max_displacement_mm": path_end_mm(case, runner.movement)},
                      "collapse_criterion": criterion_text(case.numerics)}
     imperfections = runner.scene.imperfections
     if imperfections is not None:

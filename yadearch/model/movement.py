@@ -88,8 +88,12 @@ class SupportMotion:
         """The springing point's displacement (m) at path `lam`."""
         return self.carry(self.springing, lam) - self.springing
 
-    def turn(self, lam: float, step: float) -> float:
-        return self.rotation * step
+    def velocity(self, point_now: np.ndarray, lam: float, speed: float, dt: float) -> tuple[np.ndarray, float]:
+        """The velocity (2,) of the support's material point now at `point_now` and its turn rate
+        while the path advances at `speed` for `dt`: a translation's one velocity, or a turn's chord."""
+        if self.rotation == 0.0:
+            return self.translation * speed, 0.0
+        return self.displacement_of(point_now, lam, speed * dt) / dt, self.rotation * speed
 
     @property
     def horizontal_share(self) -> float:

@@ -50,8 +50,11 @@ class PathMotion:
         t = (lam - self.lengths[k]) / (self.lengths[k + 1] - self.lengths[k])
         return self.vertices[k] + t * (self.vertices[k + 1] - self.vertices[k])
 
-    def turn(self, lam: float, step: float) -> float:
-        return self.angle(lam + step) - self.angle(lam)
+    def velocity(self, point_now: np.ndarray, lam: float, speed: float, dt: float) -> tuple[np.ndarray, float]:
+        """The velocity (2,) of the support's material point now at `point_now` and its turn rate
+        while the path advances at `speed` for `dt`: the chords of that step's motion."""
+        step = speed * dt
+        return self.displacement_of(point_now, lam, step) / dt, (self.angle(lam + step) - self.angle(lam)) / dt
 
     @property
     def rotation(self) -> float:

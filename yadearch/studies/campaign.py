@@ -29,11 +29,11 @@ from yadearch.model.hinges import PAPER_LABELS, paper_labels
 from yadearch.results.rundir import SUMMARY_FILE, case_differences, is_complete
 from yadearch.studies.executors import Pool
 from yadearch.studies.grid import RUN_COLUMN, check_parameter, run_tag
+from yadearch.studies.sessions import record_session
 
 FAILED_FILE = "failed.json"
 RUNS_FILE = "runs.csv"
 RESULTS_FILE = "results.csv"
-SESSIONS_FILE = "sessions.json"  # one entry per invocation: when, where, how many runs, wall time
 
 
 # ---------------------------------------------------------------- runs
@@ -193,36 +193,6 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
         if todo:
             record_session(out, started, pool, len(todo), table)
     return table
-
-
-def record_session(out: Path, started: float, pool: Pool, attempted: int, table: pd.DataFrame) -> None:
-    """Append this invocation's wall time to sessions.json, so that a resumed campaign's total wall
-    time is the sum of its sessions."""
-    sessions = _sessions(out) or []
-    sessions.append({"started": time.strftime("%Y-%m-%dT%H:%M:%S", time.localtime(started)),
-                     "wall_s": round(time.time() - started, 1), "where": pool.where,
-                     "slots": pool.slots, "runs_attempted": attempted,
-                     "status_after": table["status"].value_counts().to_dict()})
-    write_text_atomically(out / SESSIONS_FILE, json.dumps(sessions, indent=2) + "\n")
-
-
-def _sessions(out: Path) -> list[dict[str, Any]] | None:
-    """The invocations a campaign recorded in sessions.json (None if none was)."""
-    path = Path(out) / SESSIONS_FILE
-    return json.loads(path.read_text()) if path.is_file() else None
-
-
-def campaign_wall_s(out: Path) -> float | None:
-    """Total wall time of a campaign over all its sessions (None if none was recorded)."""
-    sessions = _sessions(out)
-    return None if sessions is None else sum(s["wall_s"] for s in sessions)
-
-
-def campaign_core_s(out: Path) -> float | None:
-    """Core-seconds a campaign used: each session's wall time times its slots (None if none was
-    recorded); what the same runs would cost on any number of cores."""
-    sessions = _sessions(out)
-    return None if sessions is None else sum(s["wall_s"] * s.get("slots", 1) for s in sessions)
 
 
 def write_run_table(specs: list[RunSpec], out: Path) -> None:
