@@ -24,7 +24,8 @@ VALID_NEGATIVE = ("loading.settlement_direction_deg",  # -1 deg is a valid direc
                   "loading.rotation_pivot_dx_mm", "loading.rotation_pivot_dy_mm",  # a pivot anywhere
                   "imperfections.face_angle_mrad", "imperfections.face_bump_mm",  # signed defects
                   "imperfections.voussoir_offset_mm", "imperfections.keystone_offset_mm",
-                  "imperfections.left_support_angle_mrad", "imperfections.right_support_angle_mrad")
+                  "imperfections.left_support_angle_mrad", "imperfections.right_support_angle_mrad",
+                  "imperfections.voussoir_thickness_mm")
 BAD_VALUES = ["-1", "nan", "inf", "-inf", "1e300", "'text'", "true"]
 DERIVED = [  # inside each value's range, absurd together: refused from the plan, before YADE
     ("settlement_rate_mm_per_s=1e-9", "max_steps"), ("gravity_ramp_periods=1e6", "gravity ramp"),
@@ -32,6 +33,7 @@ DERIVED = [  # inside each value's range, absurd together: refused from the plan
     ("support_acceleration_mm_per_s2=1e-9", "max_steps"), ("hold_max_s=100", "max_steps"),
     ("kn_N_per_mm3=1e5", "max_steps"), ("max_steps=10", "max_steps"),
     ("edge_radius_mm=20", "edge_radius_mm"), ("keystone_offset_mm=30", "keystone_offset_mm"),
+    ("voussoir_length_sd_mm=20", "voussoir_length_sd_mm"), ("voussoir_thickness_mm=-15", "voussoir_thickness_mm"),
 ]
 
 

@@ -15,9 +15,9 @@ MM = 1e-3
 
 
 def case_geometry(case: dict[str, Any]) -> ArchGeometry:
-    """The SI geometry of the [geometry] section of a run's case.toml, built as the run built it (a
-    case.toml older than a geometry parameter takes its default: the segmental arch)."""
-    return arch_geometry(case_from_dict({"geometry": case["geometry"]}))
+    """The SI geometry of the [geometry] and [imperfections] sections of a run's case.toml, built as the
+    run built it (a case.toml older than a parameter takes its default: the segmental arch)."""
+    return arch_geometry(case_from_dict({key: case[key] for key in ("geometry", "imperfections") if key in case}))
 
 
 def polygon_centroid(xy: np.ndarray) -> np.ndarray:

@@ -1,6 +1,7 @@
-"""The case's imperfections in SI: the amplitudes of its [imperfections] section, the defects drawn
-for each joint of its arch and their gap profiles (`model.imperfections`), and what a run folder
-records of them (imperfections.csv and a summary for campaign tables)."""
+"""The case's imperfections in SI: the amplitudes of its [imperfections] section, the voussoirs'
+dimension errors (`model.dimensions`), the defects drawn for each joint of its arch and their gap
+profiles (`model.imperfections`), and what a run folder records of them (imperfections.csv and a
+summary for campaign tables)."""
 
 from __future__ import annotations
 
@@ -11,6 +12,7 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.errors import CaseError
 from yadearch.model import units
+from yadearch.model.dimensions import DimensionErrors, draw_dimension_errors, with_dimension_errors
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.imperfections import (
     GapProfiles,
@@ -25,19 +27,34 @@ from yadearch.model.imperfections import (
 
 @dataclass(frozen=True)
 class ArchImperfections:
-    """The defects drawn for a case's joints and the gap profiles they make."""
+    """The defects drawn for a case's joints and the gap profiles they make, and the voussoirs'
+    dimension errors that made those joints."""
 
     defects: JointDefects
     profiles: GapProfiles
     lengths: np.ndarray  # joint lengths (m)
+    dimensions: DimensionErrors | None = None
+
+    @property
+    def perfect_faces(self) -> bool:
+        """Whether every joint's faces are flat, parallel, unworn and aligned (only dimension errors)."""
+        return not (self.profiles.imperfect.any() or self.profiles.left_offset.any()
+                    or self.profiles.right_offset.any())
 
     def wedge_openings(self) -> tuple[np.ndarray, np.ndarray]:
         """The faces' wedge at each joint's intrados and extrados end (m)."""
         return wedge_openings(self.defects, self.lengths)
 
     def table(self) -> dict[str, np.ndarray]:
-        """imperfections.csv's columns: one row a joint, in mm and mrad."""
-        return defects_table(self.defects, self.profiles, self.lengths)
+        """imperfections.csv's columns: one row a joint, in mm and mrad; the voussoir columns hold
+        the voussoir on the joint's right (empty on the last joint)."""
+        table = defects_table(self.defects, self.profiles, self.lengths)
+        if self.dimensions is not None:
+            table["joint_shift_mm"] = units.to_mm(self.dimensions.joint_shift)
+            table["joint_length_mm"] = units.to_mm(self.lengths)
+            table["right_voussoir_length_error_mm"] = units.to_mm(np.append(self.dimensions.length, np.nan))
+            table["right_voussoir_thickness_error_mm"] = units.to_mm(np.append(self.dimensions.thickness, np.nan))
+        return table
 
     def summary(self) -> dict[str, float]:
         """A few numbers that describe this draw, for campaign tables (mm, mrad)."""
@@ -48,7 +65,17 @@ class ArchImperfections:
                 "face_angle_rms_mrad": units.to_mrad(float(np.sqrt(np.mean(d.face_angle**2)))),
                 "face_bump_rms_mm": mm(float(np.sqrt(np.mean(d.face_bump**2)))),
                 "offset_rms_mm": mm(float(np.sqrt(np.mean(d.right_offset[:-1] ** 2)))),
-                "largest_gap_mm": mm(float(self.profiles.gap.max()))}
+                "largest_gap_mm": mm(float(self.profiles.gap.max())),
+                **self._dimension_summary()}
+
+    def _dimension_summary(self) -> dict[str, float]:
+        if self.dimensions is None:
+            return {}
+        d = self.dimensions
+        return {"length_error_rms_mm": units.to_mm(float(np.sqrt(np.mean(d.length**2)))),
+                "thickness_error_mean_mm": units.to_mm(float(d.thickness.mean())),
+                "thickness_error_rms_mm": units.to_mm(float(np.sqrt(np.mean(d.thickness**2)))),
+                "joint_shift_max_mm": units.to_mm(float(np.abs(d.joint_shift).max()))}
 
 
 def check_contact_model(contact_model: str) -> None:
@@ -66,7 +93,32 @@ def amplitudes(case: ArchCase) -> ImperfectionAmplitudes:
                                   units.mm(i.face_bump_mm), units.mm(i.face_bump_sd_mm),
                                   units.mm(i.voussoir_offset_mm), units.mm(i.voussoir_offset_sd_mm),
                                   units.mm(i.keystone_offset_mm), units.mrad(i.left_support_angle_mrad),
-                                  units.mrad(i.right_support_angle_mrad))
+                                  units.mrad(i.right_support_angle_mrad), units.mm(i.voussoir_length_sd_mm),
+                                  units.mm(i.voussoir_thickness_mm), units.mm(i.voussoir_thickness_sd_mm))
+
+
+def dimension_errors(case: ArchCase, n_voussoirs: int) -> DimensionErrors | None:
+    """The voussoirs' dimension errors drawn from the case's seed (None: voussoirs as designed)."""
+    amps = amplitudes(case)
+    if amps.perfect_dimensions:
+        return None
+    return draw_dimension_errors(n_voussoirs, case.imperfections.seed, amps.voussoir_length_sd,
+                                 amps.voussoir_thickness, amps.voussoir_thickness_sd)
+
+
+def imperfect_geometry(case: ArchCase, geometry: ArchGeometry) -> ArchGeometry:
+    """The designed arch `geometry` rebuilt from the case's imperfect voussoirs (itself if they have
+    no dimension error); CaseError naming the parameters if the errors break the arch."""
+    errors = dimension_errors(case, geometry.n_voussoirs)
+    if errors is None:
+        return geometry
+    try:
+        return with_dimension_errors(geometry, errors)
+    except ValueError as exc:
+        i = case.imperfections
+        raise CaseError(f"imperfections.voussoir_length_sd_mm = {i.voussoir_length_sd_mm:g}, voussoir_thickness_mm = "
+                        f"{i.voussoir_thickness_mm:g} and voussoir_thickness_sd_mm = {i.voussoir_thickness_sd_mm:g} "
+                        f"are too large for this arch (seed {i.seed}): {exc}") from None
 
 
 def arch_imperfections(case: ArchCase, geometry: ArchGeometry) -> ArchImperfections | None:
@@ -76,4 +128,5 @@ def arch_imperfections(case: ArchCase, geometry: ArchGeometry) -> ArchImperfecti
         return None
     lengths = np.array([joint.length for joint in geometry.joints])
     defects = draw_defects(amps, len(lengths), case.imperfections.seed, lengths)
-    return ArchImperfections(defects, gap_profiles(defects, lengths), lengths)
+    return ArchImperfections(defects, gap_profiles(defects, lengths), lengths,
+                             dimension_errors(case, geometry.n_voussoirs))

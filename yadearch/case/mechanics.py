@@ -13,6 +13,7 @@ import math
 from dataclasses import dataclass
 
 from yadearch.case.config import ArchCase
+from yadearch.case.imperfect import imperfect_geometry
 from yadearch.case.shape import build_arch
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
@@ -46,8 +47,9 @@ def effective_kn_N_per_mm3(case: ArchCase, voussoir_width_mm: float) -> float:
 
 
 def arch_geometry(case: ArchCase) -> ArchGeometry:
-    """The SI geometry of a case, of any shape (`case/shape.py`); CaseError if it cannot be built."""
-    return build_arch(case.geometry)
+    """The SI geometry of a case, of any shape (`case/shape.py`), built from its voussoirs as they are
+    (their dimension errors, `case/imperfect.py`); CaseError if it cannot be built."""
+    return imperfect_geometry(case, build_arch(case.geometry))
 
 
 def contact_stiffness(case: ArchCase, geometry: ArchGeometry) -> ContactStiffness:

@@ -63,9 +63,11 @@ def _check_imperfections(case: ArchCase, geometry: ArchGeometry) -> None:
     """Imperfections need the joint elements, and a worn edge or an offset face must leave part of the
     joint shared."""
     imp = case.imperfections
-    if amplitudes(case).perfect:
+    amps = amplitudes(case)
+    if amps.perfect:
         return
-    check_contact_model(case.numerics.contact_model)
+    if not amps.perfect_faces:  # dimension errors only change the blocks, which CGAL contacts also take
+        check_contact_model(case.numerics.contact_model)
     largest_mm = MAX_EDGE_FRACTION * units.to_mm(min(joint.length for joint in geometry.joints))
     if imp.edge_radius_mm > largest_mm:
         raise CaseError(f"imperfections.edge_radius_mm = {imp.edge_radius_mm:g} must be at most "

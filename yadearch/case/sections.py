@@ -197,7 +197,7 @@ class NumericsConfig:
 
 @dataclass
 class ImperfectionsConfig:
-    """Geometric imperfections of the voussoirs' joint faces and their assembly (docs/theory.md), each a
+    """Geometric imperfections of the voussoirs' joint faces, dimensions and assembly (docs/theory.md), each a
     mean and a standard deviation drawn per joint or voussoir from `seed`; all zero = the perfect
     arch. The supports' faces stay perfect and where they were designed."""
 
@@ -233,6 +233,15 @@ class ImperfectionsConfig:
         "> 0: the springing joint touches at the intrados and gapes toward the extrados)"), "predates": 0.0})
     right_support_angle_mrad: float = field(default=0.0, metadata={**_num(
         -1000, 1000, doc="the same for the right support against the last voussoir (mrad)"), "predates": 0.0})
+    voussoir_length_sd_mm: float = field(default=0.0, metadata={**_num(
+        0, 1000, doc="standard deviation of the voussoirs' lengths along the arch (mm; taken about the "
+        "set's mean, which the supports' spacing absorbs: each joint moves by the errors on its left)"),
+        "predates": 0.0})
+    voussoir_thickness_mm: float = field(default=0.0, metadata={**_num(
+        -1000, 1000, doc="mean error of the voussoirs' thickness (mm; > 0 thicker: the intrados stays on "
+        "the centering and the extrados stands out)"), "predates": 0.0})
+    voussoir_thickness_sd_mm: float = field(default=0.0, metadata={**_num(
+        0, 1000, doc="standard deviation of voussoir_thickness_mm between voussoirs (mm)"), "predates": 0.0})
 
 
 SECTIONS: dict[str, type] = {

@@ -101,6 +101,7 @@ def params() -> None:
 def limit(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
           out: str, max_snap_mm: float | None) -> None:
     """Rigid-block limit analysis, no YADE (kn is ignored): du_rigid, hinges, thrust-line figure."""
+    from yadearch.case.imperfect import amplitudes
     from yadearch.plotting.thrust_line import save_thrust_line
     from yadearch.solve.limit import limit_analysis
     from yadearch.solve.limit_result import write_result_json
@@ -113,6 +114,9 @@ def limit(preset_name: str | None, case_file: str | None, kn: float | None, sett
     new = f" (new: {' '.join(result.new_at_collapse)})" if result.new_at_collapse else ""
     click.echo(f"{case.name}: du_rigid = {du}, {result.collapse_mode} on {' '.join(result.collapse_hinges)}"
                f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}")
+    if not amplitudes(case).perfect_faces:
+        click.echo("note: the rigid analysis takes the voussoirs' dimension errors but not the joints' face "
+                   "defects (worn edges, angles, bumps, offsets): its du is that of flat, aligned faces", err=True)
 
 
 cli.add_command(sweep)

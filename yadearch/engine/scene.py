@@ -101,7 +101,7 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
     """Reset YADE's global scene and fill it with `geometry.blocks` (indices in `fixed` do not move
     unless driven; the others move in the x-y plane) and the engines of `contact_model`; only the
     joint elements take the joints' imperfections."""
-    if imperfections is not None:
+    if imperfections is not None and not imperfections.perfect_faces:
         check_contact_model(contact_model)
     import_yade(threads)
     from yade import O, polyhedra_utils
@@ -120,7 +120,7 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
             body.state.blockedDOFs = "zXY"  # planar motion: no z translation, rotation about z only
         body_ids.append(O.bodies.append(body))
 
-    if imperfections is not None:
+    if imperfections is not None and contact_model == "joint":
         contacts: ContactModel = JointElementContacts(stiffness, geometry, body_ids, imperfections.profiles)
     else:
         contacts = CONTACT_MODELS[contact_model](stiffness, geometry, body_ids)

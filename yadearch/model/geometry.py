@@ -70,7 +70,7 @@ def _radial(angle: float, radius: float) -> np.ndarray:
     return np.array([radius * np.cos(angle), radius * np.sin(angle)])
 
 
-def _prism(polygon_xy: list[np.ndarray], depth: float) -> np.ndarray:
+def prism(polygon_xy: list[np.ndarray], depth: float) -> np.ndarray:
     """Extrude a convex x-y polygon symmetrically along z into prism vertices."""
     half = depth / 2.0
     front = [np.array([p[0], p[1], -half]) for p in polygon_xy]
@@ -102,7 +102,7 @@ def segmental_arch(
                                  support_length, depth))
     for a, b in zip(joint_angles[:-1], joint_angles[1:]):
         polygon = [_radial(a, r_in), _radial(b, r_in), _radial(b, r_out), _radial(a, r_out)]
-        blocks.append(_prism(polygon, depth))
+        blocks.append(prism(polygon, depth))
     right_angle = joint_angles[-1]
     outward_right = np.array([np.sin(right_angle), -np.cos(right_angle)])
     blocks.append(_support_prism(_radial(right_angle, r_in), _radial(right_angle, r_out), outward_right,
@@ -135,9 +135,9 @@ def arch_on_intrados(intrados: Intrados, n_voussoirs: int, orientation: str, thi
     blocks = [_support_prism(*ends[0], -joints[0].normal, support_length, depth)]
     for (a_in, a_out), (b_in, b_out) in zip(ends[:-1], ends[1:]):
         polygon = [a_in, b_in, b_out, a_out]
-        if not _convex(np.array(polygon)):
+        if not is_convex_polygon(np.array(polygon)):
             raise ValueError(f"voussoir {len(blocks)} of this arch is not a convex quadrilateral")
-        blocks.append(_prism(polygon, depth))
+        blocks.append(prism(polygon, depth))
     blocks.append(_support_prism(*ends[-1], joints[-1].normal, support_length, depth))
     middles = np.array([(inner + outer) / 2.0 for inner, outer in ends])
     return ArchGeometry(blocks, joints, thickness, depth, intrados.span, intrados.rise,
@@ -145,7 +145,7 @@ def arch_on_intrados(intrados: Intrados, n_voussoirs: int, orientation: str, thi
                         longest_joint=max(j.length for j in joints))
 
 
-def _convex(polygon: np.ndarray) -> bool:
+def is_convex_polygon(polygon: np.ndarray) -> bool:
     """Whether a polygon given counter-clockwise turns left at every vertex."""
     edges = np.roll(polygon, -1, axis=0) - polygon
     turns = edges[:, 0] * np.roll(edges, -1, axis=0)[:, 1] - edges[:, 1] * np.roll(edges, -1, axis=0)[:, 0]
@@ -156,7 +156,7 @@ def _support_prism(p_in: np.ndarray, p_out: np.ndarray, outward: np.ndarray, len
                    depth: float) -> np.ndarray:
     """A rectangular support block: one face on the springing joint, extending `length` outward."""
     polygon = [p_in, p_out, p_out + length * outward, p_in + length * outward]
-    return _prism(polygon, depth)
+    return prism(polygon, depth)
 
 
 def polygon_area(xy: np.ndarray) -> float:
@@ -166,7 +166,7 @@ def polygon_area(xy: np.ndarray) -> float:
 
 
 def block_volume(vertices: np.ndarray) -> float:
-    """Volume of a prism built by `_prism` (front face = first half of the vertices)."""
+    """Volume of a prism built by `prism` (front face = first half of the vertices)."""
     half = len(vertices) // 2
     depth = float(vertices[half, 2] - vertices[0, 2])
     return polygon_area(vertices[:half, :2]) * depth

@@ -13,7 +13,9 @@ from one seed so that one seed gives one geometry:
   voussoir whose faces bear on its neighbours' offset along the joints (a voussoir a hair narrower
   than its neighbours' gap drops until its faces bear), so the faces share less of their length;
 - a support set askew (an assembly error): its face turned against the first or last voussoir's,
-  a wedge at the springing joint added to that joint's drawn face angle.
+  a wedge at the springing joint added to that joint's drawn face angle;
+- voussoirs longer, shorter, thicker or thinner than designed: the blocks themselves change
+  (`model/dimensions.py`), and the defects above are drawn on the joints they make.
 
 The two faces of a joint add their gaps; the profile is then shifted so that its smallest gap is 0
 (the blocks are assembled touching). The support blocks' faces are perfect.
@@ -51,12 +53,25 @@ class ImperfectionAmplitudes:
     keystone_offset: float = 0.0  # the crown's voussoir (both middle ones for an even count), in addition
     left_support_angle: float = 0.0  # a support set askew: its face turned against the voussoir's (rad)
     right_support_angle: float = 0.0
+    voussoir_length_sd: float = 0.0  # each voussoir's length error along the arch (`model.dimensions`)
+    voussoir_thickness: float = 0.0  # each voussoir thicker (> 0) or thinner than the ring
+    voussoir_thickness_sd: float = 0.0
 
     @property
     def perfect(self) -> bool:
+        return self.perfect_faces and self.perfect_dimensions
+
+    @property
+    def perfect_faces(self) -> bool:
+        """No defect of the joint faces or of the assembly."""
         return not any((self.edge_size, self.edge_size_sd, self.face_angle, self.face_angle_sd,
                         self.face_bump, self.face_bump_sd, self.voussoir_offset, self.voussoir_offset_sd,
                         self.keystone_offset, self.left_support_angle, self.right_support_angle))
+
+    @property
+    def perfect_dimensions(self) -> bool:
+        """Every voussoir of its designed length and thickness."""
+        return not any((self.voussoir_length_sd, self.voussoir_thickness, self.voussoir_thickness_sd))
 
 
 @dataclass(frozen=True)
