@@ -47,7 +47,7 @@ def probes() -> list[list[str]]:
               ["run", "--set", "no_such_parameter=1"], ["run", "--case", "/nonexistent/case.toml"],
               ["run", "--set", "edge_radius_mm=1", "--set", "contact_model=cgal"],
               ["run", "--set", "edge_shape=square"], ["run", "--set", "movement=wobble"],
-              ["run", "--set", "moving_support=middle"], ["limit", "--set", "movement=abutment_tilt"],
+              ["run", "--set", "moving_support=middle"], ["limit", "--set", "moving_support=both"],
               ["run", "--set", "support_motion=rotation", "--set", "rotation_pivot_dx_mm=10.644",
                "--set", "rotation_pivot_dy_mm=5.541"],
               ["sweep", "--preset", "set2", "--out", "OUT/s"], ["sweep", "--kn", "1:2:cubic:3", "--out", "OUT/s"],

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import math
 import time
+from dataclasses import replace
 from typing import TypeGuard
 
 import numpy as np
@@ -49,6 +50,7 @@ CLOSURE_BISECTIONS = 60  # halvings that put a closing corner on its contact to 
 SNAP_FIRST_RAD, SNAP_MAX_RAD = 1e-7, 0.5  # search range of the rotation that closes a snapping hinge
 SNAP_SAMPLES = 9  # points along a snap where the weights must keep descending
 MAX_SNAPS = 5  # successive snaps at one support displacement before giving up
+MIRRORED = {"right": "left", "left": "right"}  # the moving support of a case's mirror image
 
 
 def stands(case: ArchCase) -> bool:
@@ -229,7 +231,20 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
     """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible
     equilibrium, its hinge history and its last admissible state (see the module docstring). A hinge
     snap that moves a block further than `max_snap_mm` is the collapse (default: every snap that
-    ends in equilibrium is survived; docs/validation.md)."""
+    ends in equilibrium is survived; docs/validation.md). A turning support on an odd number of
+    voussoirs is solved mirrored too (`mirror_du_rigid_mm`): the keystone's two joints tie."""
+    result = _solve(case, step_mm, tolerance_mm, max_settlement_mm, max_snap_mm)
+    moving = case.loading.moving_support
+    if not (rigid_arch(case).movement.rotates and moving in MIRRORED and case.geometry.n_voussoirs % 2):
+        return result
+    mirrored = _solve(case.with_overrides({"moving_support": MIRRORED[moving]}), step_mm, tolerance_mm,
+                      max_settlement_mm, max_snap_mm)
+    return replace(result, mirror_du_rigid_mm=mirrored.du_rigid_mm, wall_s=result.wall_s + mirrored.wall_s)
+
+
+def _solve(case: ArchCase, step_mm: float, tolerance_mm: float, max_settlement_mm: float | None,
+           max_snap_mm: float | None) -> LimitResult:
+    """`limit_analysis` of `case` as it stands (the keystone's tie broken toward its left joint)."""
     start = time.perf_counter()
     arch = rigid_arch(case)
     snap_cap = math.inf if max_snap_mm is None else max_snap_mm

@@ -124,6 +124,12 @@ def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True,
     return Statics(True, np.column_stack([x[:m], x[m:2 * m]]), x[2 * m:], c)
 
 
+def _support_turn_rate(arch: RigidArch, side: str, placement: Placement, support_speed: float) -> float:
+    """How fast a support turns per unit path rate times `support_speed` (0 if it is fixed)."""
+    motion = arch.movement.motion(side)
+    return 0.0 if motion is None else float(motion.rates(placement.delta)[2]) * support_speed
+
+
 def solve_kinematics(arch: RigidArch, placement: Placement, support_speed: float = 1.0) -> Mechanism | None:
     """The mechanism of least potential-energy rate for `support_speed` (m per m): None if it is
     unbounded (a mechanism at a fixed support lowers the weights: no admissible equilibrium). With
@@ -148,7 +154,8 @@ def solve_kinematics(arch: RigidArch, placement: Placement, support_speed: float
         raise LimitError(f"kinematic LP failed at {placement.delta * 1e3:.3f} mm: {result.message}")
     rates = a_v.T @ result.x + support  # gap rates (2m) and slip rates (m) of every interface
     gaps = np.column_stack([rates[:m], rates[m:2 * m]])
-    omega = np.concatenate([[0.0], result.x[2::3], [0.0]])
+    omega = np.concatenate([[_support_turn_rate(arch, "left", placement, support_speed)], result.x[2::3],
+                            [_support_turn_rate(arch, "right", placement, support_speed)]])
     relative = omega[arch.right] - omega[arch.left]
     hinged = np.flatnonzero(np.abs(relative) > HINGE_RATE_FRACTION * max(np.abs(relative).max(), 1e-300))
     closed_rates = np.where(c.touching, gaps, np.inf)  # an open corner is no pivot

@@ -81,9 +81,6 @@ def rigid_arch(case: ArchCase) -> RigidArch:
     centroid0 = np.array([polygon_centroid(b[: len(b) // 2, :2]) for b in geometry.blocks])
     joints = geometry.joints
     movement = case_movement(case, geometry)
-    if movement.rotates:
-        raise LimitError("the limit analysis follows support translations only: a turning support "
-                         "(loading.support_motion 'rotation', or a path_mm_mrad with rotations) is for the DEM run")
     if movement.moves_rigidly:
         raise LimitError("both supports translate alike (loading.moving_support 'both', "
                          f"settlement_direction_deg {case.loading.settlement_direction_deg:g}): the arch "
@@ -170,8 +167,9 @@ def close_linkage(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
         raise ValueError(f"a three-hinge linkage needs three pivots, got {len(pivots)}")
     p1, p2, p3 = sorted(pivots)
     old = [_pivot_point(arch, placement, p) for p in (p1, p2, p3)]
-    left, right = (_translation(arch.movement.motion(side), placement.delta, delta) for side in ("left", "right"))
-    first, last = old[0] + left, old[2] + right
+    left, right = (SupportStep.between(arch.movement.motion(side), placement.delta, delta)
+                   for side in ("left", "right"))
+    first, last = left.carry(old[0]), right.carry(old[2])
     middle = _middle_joint(old[0], old[1], old[2], first, last)
     if middle is None:
         return None
@@ -179,19 +177,40 @@ def close_linkage(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
     rot, shift = placement.rot.copy(), placement.shift.copy()
     _move(rot, shift, slice(p1.joint + 1, p2.joint + 1), old[:2], new[:2])
     _move(rot, shift, slice(p2.joint + 1, p3.joint + 1), old[1:], new[1:])
-    shift[:p1.joint + 1] += left
-    shift[p3.joint + 1:] += right
+    left.move(rot, shift, slice(None, p1.joint + 1))
+    right.move(rot, shift, slice(p3.joint + 1, None))
     return replace(placement, delta=delta, rot=rot, shift=shift)
 
 
-def _translation(motion: Motion | None, start: float, end: float) -> np.ndarray:
-    """How far a support (and the blocks it carries) moves from path `start` to `end`: its
-    translation (`rigid_arch` refuses turning supports); nothing for a fixed support."""
-    if motion is None:
-        return np.zeros(2)
-    if isinstance(motion, SupportMotion):
-        return (end - start) * motion.translation
-    return motion.offset(end) - motion.offset(start)
+@dataclass(frozen=True)
+class SupportStep:
+    """A support's rigid step between two path lengths: a point P it carries goes to
+    R(turn) (P - before) + after."""
+
+    turn: float
+    before: np.ndarray
+    after: np.ndarray
+
+    @classmethod
+    def between(cls, motion: Motion | None, start: float, end: float) -> SupportStep:
+        """The step of `motion` from path `start` to `end` (none for a fixed support); a support
+        that does not turn translates by exactly its translation's difference."""
+        if motion is None:
+            return cls(0.0, np.zeros(2), np.zeros(2))
+        if motion.rotation == 0.0:
+            if isinstance(motion, SupportMotion):
+                return cls(0.0, np.zeros(2), (end - start) * motion.translation)
+            return cls(0.0, np.zeros(2), motion.offset(end) - motion.offset(start))
+        (turn0, shift0), (turn1, shift1) = motion.placement(start), motion.placement(end)
+        return cls(turn1 - turn0, shift0, shift1)
+
+    def carry(self, point: np.ndarray) -> np.ndarray:
+        return rotate(point - self.before, self.turn) + self.after
+
+    def move(self, rot: np.ndarray, shift: np.ndarray, blocks: slice) -> None:
+        """Carry `blocks` (their rotations and shifts, in place) with the support."""
+        rot[blocks] += self.turn
+        shift[blocks] = self.carry(shift[blocks])
 
 
 def turn_four_bar(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ...],
