@@ -7,6 +7,7 @@ import shutil
 import signal
 import subprocess
 import sys
+import threading
 from pathlib import Path
 
 from yadearch.case.config import ArchCase
@@ -17,6 +18,36 @@ from yadearch.results.rundir import CASE_FILE, LOG_FILE, STAGING_PREFIX, is_comp
 
 REPLACED_SUFFIX = ".replaced"  # the previous folder NAME, for the moment of the swap
 INTERRUPTED_CODES = (130, -signal.SIGINT, -signal.SIGTERM)  # the child's own exit code, or the signal
+_children: set[subprocess.Popen] = set()  # the simulations this process waits on, from any thread
+_children_lock = threading.Lock()
+
+
+def stop_children() -> None:
+    """Ask every simulation this process still waits on to stop (SIGTERM): an interrupted campaign
+    then ends at once, each run recorded as interrupted and resumed by the next campaign."""
+    with _children_lock:
+        running = [proc for proc in _children if proc.poll() is None]
+    for proc in running:
+        proc.terminate()
+
+
+def _run_child(cmd: list[str], env: dict[str, str], timeout_s: float | None, quiet: bool) -> tuple[int, str]:
+    """Run `cmd` to its end (killed after `timeout_s`: TimeoutExpired), known to `stop_children`
+    meanwhile: its exit code and standard error."""
+    proc = subprocess.Popen(cmd, env=env, text=True, stdout=subprocess.DEVNULL if quiet else None,
+                            stderr=subprocess.PIPE)
+    with _children_lock:
+        _children.add(proc)
+    try:
+        _, stderr = proc.communicate(timeout=timeout_s)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.communicate()
+        raise
+    finally:
+        with _children_lock:
+            _children.discard(proc)
+    return proc.returncode, stderr
 
 
 def check_yade_installed() -> None:
@@ -54,20 +85,19 @@ def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
     env = dict(os.environ, OMP_NUM_THREADS=str(case.numerics.threads))
     cmd = [sys.executable, "-m", "yadearch.engine.simulate", str(case_file), str(staging)]
     try:
-        proc = subprocess.run(cmd, env=env, timeout=timeout_s, text=True,
-                              stdout=subprocess.DEVNULL if quiet else None, stderr=subprocess.PIPE)
+        returncode, stderr = _run_child(cmd, env, timeout_s, quiet)
     except subprocess.TimeoutExpired:
         where = _keep_failed(staging, out)
         raise RunFailedError(f"run {case.name!r} timed out after {timeout_s:.0f} s "
                              f"(see {where / LOG_FILE})") from None
-    if proc.returncode in INTERRUPTED_CODES:
+    if returncode in INTERRUPTED_CODES:
         where = _keep_failed(staging, out)
-        raise RunInterruptedError(f"run {case.name!r} was interrupted ({exit_reason(proc.returncode)}); "
+        raise RunInterruptedError(f"run {case.name!r} was interrupted ({exit_reason(returncode)}); "
                                   f"run it again to resume (see {where / LOG_FILE})")
-    if proc.returncode != 0 or not is_complete(staging):
-        lines = [line for line in proc.stderr.splitlines()
+    if returncode != 0 or not is_complete(staging):
+        lines = [line for line in stderr.splitlines()
                  if line.strip() and not line.startswith(("Using python", "<WARNING>"))]
-        reason = lines[-1] if lines else exit_reason(proc.returncode)
+        reason = lines[-1] if lines else exit_reason(returncode)
         where = _keep_failed(staging, out)
         raise RunFailedError(f"run {case.name!r} failed: {reason} (see {where / LOG_FILE})")
     _swap_into_place(staging, out)

@@ -9,6 +9,7 @@ from concurrent.futures import Executor, ThreadPoolExecutor
 from contextlib import contextmanager
 from dataclasses import dataclass
 
+from yadearch.engine.process import stop_children
 from yadearch.errors import YadearchError
 
 
@@ -31,6 +32,9 @@ def local_pool(jobs: int | None = None) -> Iterator[Pool]:
     executor = ThreadPoolExecutor(max_workers=jobs, thread_name_prefix="yadearch-run")
     try:
         yield Pool(executor, jobs, f"{jobs} local process{'es' if jobs > 1 else ''}")
+    except BaseException:  # interrupted (Ctrl-C, SIGTERM): stop the running simulations, not wait for them
+        stop_children()
+        raise
     finally:
         executor.shutdown(wait=True, cancel_futures=True)
 
