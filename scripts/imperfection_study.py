@@ -47,15 +47,22 @@ STUDIES = (
           (0.1, 0.2, 0.5), 3),
     Study("support", "moving support set askew (gaping toward the extrados)", "right_support_angle_mrad",
           (2.0, 5.0, 10.0, 20.0), 1),
+    Study("length", "voussoirs longer or shorter along the arch, random per voussoir (about the set's mean)",
+          "voussoir_length_sd_mm", (0.1, 0.2, 0.5), 3),
+    Study("thickness", "voussoirs thicker or thinner, random per voussoir (mean 0)", "voussoir_thickness_sd_mm",
+          (0.25, 0.5, 1.0), 3),
     FINAL,
 )
 SET1_EXPERIMENT_HINGES = {"A": 13, "B": 32, "C": 56, "D": 1}  # the paper's Table 1 (docs/validation.md)
 UNITS = {"edge_radius_mm": "mm", "face_angle_sd_mrad": "mrad", "face_bump_sd_mm": "mm",
-         "keystone_offset_mm": "mm", "voussoir_offset_sd_mm": "mm", "right_support_angle_mrad": "mrad"}
+         "keystone_offset_mm": "mm", "voussoir_offset_sd_mm": "mm", "right_support_angle_mrad": "mrad",
+         "voussoir_length_sd_mm": "mm", "voussoir_thickness_sd_mm": "mm"}
 AXIS_LABELS = {"edge_radius_mm": "edge radius (mm)", "face_angle_sd_mrad": "face angle s.d. (mrad)",
                "face_bump_sd_mm": "face bump s.d. (mm)", "keystone_offset_mm": "keystone offset (mm)",
                "voussoir_offset_sd_mm": "voussoir offset s.d. (mm)",
-               "right_support_angle_mrad": "right support askew (mrad)"}
+               "right_support_angle_mrad": "right support askew (mrad)",
+               "voussoir_length_sd_mm": "voussoir length s.d. (mm)",
+               "voussoir_thickness_sd_mm": "voussoir thickness s.d. (mm)"}
 PERFECT_RUN = Path("reports/set2")  # the perfect arch with set 2's joints (`yadearch reproduce`)
 SET1_RUN = Path("reports/set1")  # the paper's low-kn model of set 1
 REPORT = "imperfections.md"
