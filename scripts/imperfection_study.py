@@ -36,6 +36,8 @@ from yadearch.studies.montecarlo import MONTECARLO_FILE, run_montecarlo, write_m
 
 BASE_PRESET = "set2"  # accurate voussoirs: the CNC set's kn
 SEED = 1
+STIFF_KN_N_PER_MM3 = 100.0
+STIFF_PERFECT_DU_MM = 109.09  # reports/robustness/kn100_base: the perfect arch at kn 100
 FINAL = Study("final", "faces not flat, at the level that matches set 1 (the final campaign)", "face_bump_sd_mm",
               (0.18,), 200)
 STUDIES = (
@@ -51,6 +53,9 @@ STUDIES = (
           "voussoir_length_sd_mm", (0.1, 0.2, 0.5), 3),
     Study("thickness", "voussoirs thicker or thinner, random per voussoir (mean 0)", "voussoir_thickness_sd_mm",
           (0.25, 0.5, 1.0), 3),
+    Study("stiff", f"faces not flat on stiff joints (kn {STIFF_KN_N_PER_MM3:g} N/mm³, the stiff limit; the perfect "
+          f"arch gives {STIFF_PERFECT_DU_MM} mm)", "face_bump_sd_mm", (0.18, 0.36), 2,
+          {"kn_N_per_mm3": STIFF_KN_N_PER_MM3}),
     FINAL,
 )
 SET1_EXPERIMENT_HINGES = {"A": 13, "B": 32, "C": 56, "D": 1}  # the paper's Table 1 (docs/validation.md)
@@ -71,7 +76,7 @@ FIGURE = "du_vs_amplitude"
 
 def run_study(study: Study, out: Path, jobs: int) -> pd.DataFrame:
     """Run (or resume) one campaign of the study and draw its figures; its montecarlo table."""
-    base = preset(BASE_PRESET).with_overrides({f"imperfections.{k}": v for k, v in study.fixed.items()})
+    base = preset(BASE_PRESET).with_overrides(study.fixed)
     with open_pool(jobs) as pool:
         table = run_montecarlo(base, out / study.name, pool, study.samples, SEED, study.axes)
     draw(table, study, out)

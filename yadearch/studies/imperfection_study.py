@@ -21,7 +21,7 @@ from yadearch.studies.montecarlo import du_statistics, hinge_frequencies
 @dataclass(frozen=True)
 class Study:
     """One campaign of the study: an imperfection amplitude swept over `levels`, `samples` seeds
-    at each level, on the base case with `fixed` imperfection settings."""
+    at each level, on the base case with the `fixed` settings (any case parameter, e.g. kn)."""
 
     name: str
     title: str
