@@ -32,7 +32,7 @@ from yadearch.studies.imperfection_study import (
     level_rows,
     table_markdown,
 )
-from yadearch.studies.montecarlo import MONTECARLO_FILE, run_montecarlo, write_montecarlo
+from yadearch.studies.montecarlo import MONTECARLO_FILE, du_statistics, run_montecarlo, write_montecarlo
 
 BASE_PRESET = "set2"  # accurate voussoirs: the CNC set's kn
 SEED = 1
@@ -138,6 +138,17 @@ def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float) -> str:
     return "\n".join(lines)
 
 
+def _du_line(table: pd.DataFrame) -> str:
+    """The final campaign's du in one sentence: median, its 95 % interval, the band, what failed."""
+    stats = du_statistics(table.loc[table["status"] == "done", "du_mm"])
+    failed = table[table["status"] == "failed"]
+    reasons = "; ".join(f"{row.folder}: {row.reason}" for row in failed.itertuples())
+    return (f"Median du {stats['median']:.2f} mm (95 % interval of the median {stats['median_low']:.2f}-"
+            f"{stats['median_high']:.2f} mm), 5-95 % of the samples {stats['low']:.2f}-{stats['high']:.2f} mm, "
+            f"set 1's experiment {reference.SETS['set1']['experimental']['du_mm']} mm."
+            + (f" Failed: {reasons}." if reasons else ""))
+
+
 def final_section(out: Path, set1_summary: dict) -> list[str]:
     """How the final campaign's hinges compare with set 1's experiment, beside the low-kn model's."""
     path = out / FINAL.name / MONTECARLO_FILE
@@ -150,8 +161,8 @@ def final_section(out: Path, set1_summary: dict) -> list[str]:
     model = {label: labelled[f"hinge_{label}"] for label in SET1_EXPERIMENT_HINGES}
     lines = [f"## The final campaign against set 1's experiment ({done} of {FINAL.samples} samples)", "",
              f"`{FINAL.parameter}` = {FINAL.levels[0]:g} mm, seeds {SEED}-{SEED + FINAL.samples - 1} "
-             f"(`{out / FINAL.name}`; `--only {FINAL.name}` resumes it). Share of the samples whose hinge sits "
-             "within one interface of the experiment's:", "",
+             f"(`{out / FINAL.name}`; `--only {FINAL.name}` resumes it). {_du_line(table)} Share of the "
+             "samples whose hinge sits within one interface of the experiment's:", "",
              "| hinge | experiment | samples within ±1 | low-kn model |", "|---|---|---|---|"]
     for label, interface in SET1_EXPERIMENT_HINGES.items():
         own = model.get(label)

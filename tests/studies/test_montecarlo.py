@@ -3,12 +3,21 @@ frequencies, the Markdown summary and the figures, from a made-up results table.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pandas as pd
 import pytest
 
 from yadearch.plotting.montecarlo import du_amplitude_figure, du_distribution_figure, hinge_frequency_figure
-from yadearch.studies.montecarlo import SEED_KEY, du_statistics, hinge_frequencies, sample_rows, summary_markdown
+from yadearch.studies.montecarlo import (
+    SEED_KEY,
+    du_statistics,
+    hinge_frequencies,
+    median_interval,
+    sample_rows,
+    summary_markdown,
+)
 
 
 def _table(n: int = 40) -> pd.DataFrame:
@@ -56,3 +65,14 @@ def test_the_summary_and_the_figures_describe_the_campaign(tmp_path):
                   hinge_frequency_figure(table, tmp_path / "hinges"),
                   du_amplitude_figure(table, "edge_radius_mm", tmp_path / "amp")):
         assert all(p.is_file() and p.stat().st_size > 1000 for p in paths)
+
+
+def test_the_median_interval_holds_the_true_median_at_its_confidence():
+    """Order statistics around the middle hold the median of any continuous law with at least 95 %
+    probability: 4000 draws of 70 normal samples hold 0 in 94-97 % of cases; too few samples give
+    no interval."""
+    rng = np.random.default_rng(20261124)
+    held = [low <= 0.0 <= high for low, high in (median_interval(rng.normal(size=70)) for _ in range(4000))]
+    assert 0.94 <= np.mean(held) <= 0.97
+    assert all(math.isnan(v) for v in median_interval(np.arange(5.0)))
+    assert median_interval(np.arange(20.0)) == (5.0, 14.0)

@@ -39,7 +39,8 @@ def montecarlo(preset_name: str | None, case_file: str | None, kn: float | None,
         click.echo(f"Monte Carlo {folder}: {samples} samples x {n_levels} level(s) on {pool.where}")
         table = run_montecarlo(base, folder, pool, samples, seed, axes, timeout_s=timeout_s(timeout_min))
     stats = du_statistics(table.loc[table["status"] == "done", "du_mm"])
-    click.echo(f"{stats['n']} of {len(table)} samples done: median du {stats['median']:.2f} mm, "
+    click.echo(f"{stats['n']} of {len(table)} samples done: median du {stats['median']:.2f} mm "
+               f"(95 % interval {stats['median_low']:.2f}-{stats['median_high']:.2f}), "
                f"5-95 % {stats['low']:.2f}-{stats['high']:.2f} mm -> {folder / MONTECARLO_FILE}, "
                f"{folder / SUMMARY_FILE}")
     _figures(table, folder, levels(table, axes))

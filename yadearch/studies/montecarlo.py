@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 import pandas as pd
+from scipy.stats import binom
 
 from yadearch.atomic import write_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
@@ -27,6 +28,7 @@ SEED_KEY = "imperfections.seed"
 MONTECARLO_FILE = "montecarlo.csv"
 SUMMARY_FILE = "montecarlo.md"
 BAND = (0.05, 0.95)  # the quantiles of du's band
+MEDIAN_CONFIDENCE = 0.95  # of the interval that brackets the median du
 
 
 def sample_rows(samples: int, seed: int, axes: dict[str, list[Any]] | None = None) -> list[dict[str, Any]]:
@@ -80,13 +82,27 @@ def levels(table: pd.DataFrame, axes: dict[str, list[Any]] | None) -> list[str]:
 
 
 def du_statistics(du: pd.Series) -> dict[str, float]:
-    """Count, median, band and mean of the finished samples' du (mm)."""
+    """Count, median, band, mean and the median's confidence interval of the finished samples' du (mm)."""
     values = du.dropna().to_numpy(dtype=float)
     if values.size == 0:
-        return {"n": 0, "median": math.nan, "low": math.nan, "high": math.nan, "mean": math.nan}
+        return {"n": 0, "median": math.nan, "low": math.nan, "high": math.nan, "mean": math.nan,
+                "median_low": math.nan, "median_high": math.nan}
     low, high = np.quantile(values, BAND)
+    median_low, median_high = median_interval(values)
     return {"n": int(values.size), "median": float(np.median(values)), "low": float(low),
-            "high": float(high), "mean": float(values.mean())}
+            "high": float(high), "mean": float(values.mean()), "median_low": median_low,
+            "median_high": median_high}
+
+
+def median_interval(values: np.ndarray, confidence: float = MEDIAN_CONFIDENCE) -> tuple[float, float]:
+    """Distribution-free interval that holds the true median with at least `confidence`: the order
+    statistics whose ranks the binomial(n, 1/2) law puts around the middle; nan if n is too small."""
+    n = len(values)
+    rank = int(binom.ppf((1.0 - confidence) / 2.0, n, 0.5))  # lower order statistic, 1-based
+    if n == 0 or rank < 1:
+        return math.nan, math.nan
+    ordered = np.sort(values)
+    return float(ordered[rank - 1]), float(ordered[n - rank])
 
 
 def hinge_frequencies(table: pd.DataFrame) -> pd.DataFrame:
@@ -108,16 +124,16 @@ def summary_markdown(table: pd.DataFrame, level_columns: list[str]) -> str:
              f"{int((table['status'] == 'done').sum())} of {len(table)} samples done"
              f" ({int((table['status'] == 'failed').sum())} failed).", "",
              f"| {' | '.join(level_columns) + ' | ' if level_columns else ''}samples | median du (mm) "
-             f"| {low}-{high} band (mm) | mean (mm) |",
-             "|" + "---|" * (len(level_columns) + 4)]
+             f"| median's {MEDIAN_CONFIDENCE:.0%} interval (mm) | {low}-{high} band (mm) | mean (mm) |",
+             "|" + "---|" * (len(level_columns) + 5)]
     keys = table[level_columns].drop_duplicates().sort_values(level_columns).itertuples(index=False) \
         if level_columns else [()]
     for key in keys:
         group = table[(table[level_columns] == tuple(key)).all(axis=1)] if level_columns else table
         stats = du_statistics(group.loc[group["status"] == "done", "du_mm"])
         prefix = "".join(f"{value:g} | " for value in key)
-        lines.append(f"| {prefix}{stats['n']} | {stats['median']:.2f} | {stats['low']:.2f}-"
-                     f"{stats['high']:.2f} | {stats['mean']:.2f} |")
+        lines.append(f"| {prefix}{stats['n']} | {stats['median']:.2f} | {stats['median_low']:.2f}-"
+                     f"{stats['median_high']:.2f} | {stats['low']:.2f}-{stats['high']:.2f} | {stats['mean']:.2f} |")
     lines += ["", "Hinge positions (interface: share of the samples):", ""]
     frequencies = hinge_frequencies(table)
     for label in PAPER_LABELS:
