@@ -9,7 +9,7 @@ import pytest
 
 from yadearch.case.config import preset
 from yadearch.case.imperfect import arch_imperfections, dimension_errors
-from yadearch.case.mechanics import arch_geometry
+from yadearch.case.mechanics import arch_geometry, contact_stiffness
 from yadearch.case.shape import build_arch
 from yadearch.errors import CaseError
 from yadearch.model.dimensions import DimensionErrors, draw_dimension_errors, with_dimension_errors
@@ -93,3 +93,13 @@ def test_errors_that_break_the_arch_are_refused_naming_the_parameters():
         arch_geometry(preset("set2").with_overrides({"voussoir_length_sd_mm": 20}))
     with pytest.raises(CaseError, match=r"voussoir_thickness_mm = -15.*at least 0.5"):
         arch_geometry(preset("set2").with_overrides({"voussoir_thickness_mm": -15}))
+
+
+def test_a_pointed_arch_keeps_its_apex_joint_and_elastic_blocks_keep_their_kn():
+    """A pointed arch's even count puts a joint on the apex, which a moved joint would cut: refused.
+    With elastic blocks, kn comes from the designed voussoir width, the same for every draw."""
+    with pytest.raises(CaseError, match="voussoir_length_sd_mm = 0.3 must be 0 for a pointed arch"):
+        arch_geometry(preset("set2").with_overrides({**SD, "shape": "pointed", "n_voussoirs": 20}))
+    elastic = preset("set2").with_overrides({"block_elasticity": True})
+    drawn = elastic.with_overrides({**SD, "seed": 8})
+    assert contact_stiffness(drawn, arch_geometry(drawn)).kn == contact_stiffness(elastic, arch_geometry(elastic)).kn

@@ -14,7 +14,6 @@ from yadearch.case.mechanics import arch_geometry
 from yadearch.case.movement import case_movement, movement_overrides
 from yadearch.errors import CaseError
 from yadearch.solve.limit import limit_analysis
-from yadearch.solve.rigid import LimitError
 
 ROWS_MM_MRAD = [[0.0, -3.0, 0.0], [4.0, -3.0, 2.0], [4.0, -8.0, 5.0]]  # down, out while turning, down again
 LENGTH_M = 0.003 + 0.004 + 0.005
@@ -105,9 +104,14 @@ def test_the_limit_analysis_follows_a_path_round_its_corner_and_stops_at_its_end
     assert short.du_rigid_mm is None and short.collapse_mode == "none"  # the path ends first
 
 
-def test_a_turning_path_is_left_to_the_dem():
-    with pytest.raises(LimitError, match="path_mm_mrad with rotations"):
-        limit_analysis(path_case())
+def test_the_limit_analysis_turns_the_support_along_a_turning_path():
+    """The moving support's block stands where the path puts it at the last admissible state: its
+    turn is the path's angle there (to round-off)."""
+    case = path_case()
+    result = limit_analysis(case)
+    end = result.du_rigid_mm if result.du_rigid_mm is not None else movement().length * 1e3
+    assert result.rotation_rad[-1] == pytest.approx(movement().reference.angle(end * 1e-3), abs=1e-12)
+    assert result.rotation_rad[0] == 0.0  # the left support stays
 
 
 def test_a_path_round_trips_through_toml(tmp_path):

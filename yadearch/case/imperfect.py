@@ -112,6 +112,11 @@ def imperfect_geometry(case: ArchCase, geometry: ArchGeometry) -> ArchGeometry:
     errors = dimension_errors(case, geometry.n_voussoirs)
     if errors is None:
         return geometry
+    g = case.geometry
+    if g.shape == "pointed" and g.n_voussoirs % 2 == 0 and case.imperfections.voussoir_length_sd_mm > 0:
+        raise CaseError(f"imperfections.voussoir_length_sd_mm = {case.imperfections.voussoir_length_sd_mm:g} "
+                        f"must be 0 for a pointed arch with an even geometry.n_voussoirs ({g.n_voussoirs}): "
+                        "its crown joint sits on the apex, which a joint moved along the arch would cut")
     try:
         return with_dimension_errors(geometry, errors)
     except ValueError as exc:

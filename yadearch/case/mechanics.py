@@ -53,8 +53,9 @@ def arch_geometry(case: ArchCase) -> ArchGeometry:
 
 
 def contact_stiffness(case: ArchCase, geometry: ArchGeometry) -> ContactStiffness:
-    """SI joint stiffnesses for a case; ks keeps the ratio ks/kn of the case."""
-    width_mm = units.to_mm(geometry.voussoir_width)
+    """SI joint stiffnesses for a case; ks keeps the ratio ks/kn of the case. Blocks' elasticity is
+    taken over the designed voussoir width, so that dimension errors leave kn alone."""
+    width_mm = units.to_mm(build_arch(case.geometry).voussoir_width)  # the designed one: no draw changes kn
     kn = units.stiffness_per_volume(effective_kn_N_per_mm3(case, width_mm))
     return ContactStiffness(kn=kn, ks=kn * case.interface.ks_over_kn,
                             tan_friction=math.tan(units.radians(case.material.friction_deg)))

@@ -114,8 +114,9 @@ def limit(preset_name: str | None, case_file: str | None, kn: float | None, sett
     new = f" (new: {' '.join(result.new_at_collapse)})" if result.new_at_collapse else ""
     click.echo(f"{case.name}: du_rigid = {du}, {result.collapse_mode} on {' '.join(result.collapse_hinges)}"
                f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}")
-    if result.mirror_du_rigid_mm is not None:
-        click.echo(f"mirrored (the keystone's other joint): du_rigid = {result.mirror_du_rigid_mm:.2f} mm")
+    if result.mirror_collapse_mode is not None:
+        mirrored = "no collapse" if result.mirror_du_rigid_mm is None else f"{result.mirror_du_rigid_mm:.2f} mm"
+        click.echo(f"mirrored (the keystone's other joint): du_rigid = {mirrored} ({result.mirror_collapse_mode})")
     if not amplitudes(case).perfect_faces:
         click.echo("note: the rigid analysis takes the voussoirs' dimension errors but not the joints' face "
                    "defects (worn edges, angles, bumps, offsets): its du is that of flat, aligned faces", err=True)

@@ -83,7 +83,9 @@ def with_dimension_errors(geometry: ArchGeometry, errors: DimensionErrors) -> Ar
     joints = [Joint(k + 1, k, k + 1, starts[k], starts[k] + shared[k] * directions[k],
                     np.array([directions[k][1], -directions[k][0]])) for k in range(n + 1)]
     middles = np.array([(j.intrados + j.extrados) / 2.0 for j in joints])
-    return ArchGeometry(blocks, joints, thickness=float(geometry.thickness * scale.min()), depth=geometry.depth,
+    # `thickness` stays the designed ring's: the hinges' rotation scale and the shear law's joint
+    # length, the same in a run and in its analysis; the time step takes the narrowest voussoir
+    return ArchGeometry(blocks, joints, thickness=geometry.thickness, depth=geometry.depth,
                         span=geometry.span, rise=geometry.rise,
                         voussoir_width=float(np.linalg.norm(np.diff(middles, axis=0), axis=1).min()),
                         longest_joint=float(max(face[0].max(), face[1].max(), geometry.longest_joint)))

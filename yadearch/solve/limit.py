@@ -28,6 +28,7 @@ from typing import TypeGuard
 import numpy as np
 
 from yadearch.case.config import ArchCase
+from yadearch.case.imperfect import amplitudes
 from yadearch.model import units
 from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
 from yadearch.solve.limit_result import HingeRecord, LimitResult, interface_forces
@@ -235,11 +236,16 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
     voussoirs is solved mirrored too (`mirror_du_rigid_mm`): the keystone's two joints tie."""
     result = _solve(case, step_mm, tolerance_mm, max_settlement_mm, max_snap_mm)
     moving = case.loading.moving_support
-    if not (rigid_arch(case).movement.rotates and moving in MIRRORED and case.geometry.n_voussoirs % 2):
+    symmetric = amplitudes(case).perfect_dimensions  # voussoirs with their own sizes have no mirror image
+    if not (symmetric and rigid_arch(case).movement.rotates and moving in MIRRORED and case.geometry.n_voussoirs % 2):
         return result
-    mirrored = _solve(case.with_overrides({"moving_support": MIRRORED[moving]}), step_mm, tolerance_mm,
-                      max_settlement_mm, max_snap_mm)
-    return replace(result, mirror_du_rigid_mm=mirrored.du_rigid_mm, wall_s=result.wall_s + mirrored.wall_s)
+    try:
+        mirrored = _solve(case.with_overrides({"moving_support": MIRRORED[moving]}), step_mm, tolerance_mm,
+                          max_settlement_mm, max_snap_mm)
+    except LimitError as exc:
+        return replace(result, mirror_collapse_mode=f"failed: {exc}")
+    return replace(result, mirror_du_rigid_mm=mirrored.du_rigid_mm, mirror_collapse_mode=mirrored.collapse_mode,
+                   wall_s=result.wall_s + mirrored.wall_s)
 
 
 def _solve(case: ArchCase, step_mm: float, tolerance_mm: float, max_settlement_mm: float | None,

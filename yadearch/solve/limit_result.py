@@ -76,6 +76,7 @@ class LimitResult:
     # the mirror image's du (moving support swapped): a turning support on an odd number of voussoirs
     # meets a tie between the keystone's two joints, which the march breaks toward the left one
     mirror_du_rigid_mm: float | None = None
+    mirror_collapse_mode: str | None = None  # the mirror image's collapse_mode, "failed: why", None: not solved
 
     @property
     def references(self) -> list[str]:
