@@ -376,6 +376,8 @@ def main() -> int:
          f"{sweep['run_wall_s'] / 60:.1f} min" if sweep_wall is not None
          else "no sweep folder given (sweep_wall_s null)"),
     ]
+    per_sample_s = montecarlo["run_wall_s"] / max(1, montecarlo["done"] + montecarlo["failed"]) \
+        if montecarlo is not None else math.nan
     montecarlo_label = (f"{TARGET_MONTECARLO_SAMPLES} Monte Carlo samples <= "
                         f"{TARGET_MONTECARLO_WALL_S / 60:g} min on 2 cores")
     verdicts.append((montecarlo_label,
@@ -383,10 +385,8 @@ def main() -> int:
                      and montecarlo["done"] + montecarlo["failed"] >= TARGET_MONTECARLO_SAMPLES
                      and montecarlo["run_wall_s"] / 2 <= TARGET_MONTECARLO_WALL_S,
                      f"{montecarlo['done']} samples done ({montecarlo['failed']} failed), "
-                     f"{montecarlo['run_wall_s'] / max(1, montecarlo['done'] + montecarlo['failed']):.0f} s a "
-                     f"sample beside another: {TARGET_MONTECARLO_SAMPLES} take about "
-                     f"{montecarlo['run_wall_s'] / max(1, montecarlo['done'] + montecarlo['failed']) * TARGET_MONTECARLO_SAMPLES / 2 / 60:.0f} "
-                     "min on 2 cores"
+                     f"{per_sample_s:.0f} s a sample beside another: {TARGET_MONTECARLO_SAMPLES} take about "
+                     f"{per_sample_s * TARGET_MONTECARLO_SAMPLES / 2 / 60:.0f} min on 2 cores"
                      if montecarlo is not None else "no Monte Carlo folder given (--montecarlo)"))
     verdicts.append((f"a step <= {TARGET_STEP_US:g} us", breakdown is not None
                      and breakdown["step_us"] <= TARGET_STEP_US,
