@@ -377,7 +377,7 @@ def main() -> int:
          else "no sweep folder given (sweep_wall_s null)"),
     ]
     per_sample_s = montecarlo["run_wall_s"] / max(1, montecarlo["done"] + montecarlo["failed"]) \
-        if montecarlo is not None else math.nan
+        if montecarlo is not None else float("nan")
     montecarlo_label = (f"{TARGET_MONTECARLO_SAMPLES} Monte Carlo samples <= "
                         f"{TARGET_MONTECARLO_WALL_S / 60:g} min on 2 cores")
     verdicts.append((montecarlo_label,
