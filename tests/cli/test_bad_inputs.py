@@ -34,6 +34,7 @@ DERIVED = [  # inside each value's range, absurd together: refused from the plan
     ("kn_N_per_mm3=1e5", "max_steps"), ("max_steps=10", "max_steps"),
     ("edge_radius_mm=20", "edge_radius_mm"), ("keystone_offset_mm=30", "keystone_offset_mm"),
     ("voussoir_length_sd_mm=20", "voussoir_length_sd_mm"), ("voussoir_thickness_mm=-15", "voussoir_thickness_mm"),
+    ("du_tolerance_mm=1", "du_tolerance_mm"), ("first_increment_mm=5", "first_increment_mm"),
 ]
 
 

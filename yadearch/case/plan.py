@@ -36,6 +36,10 @@ class RunPlan:
 def plan_run(case: ArchCase) -> RunPlan:
     """The time step, gravity ramp and worst-case steps of `case`; CaseError if it cannot run."""
     num = case.numerics
+    if not num.du_tolerance_mm < num.first_increment_mm <= num.max_increment_mm:
+        raise CaseError(f"numerics.du_tolerance_mm = {num.du_tolerance_mm:g}, first_increment_mm = "
+                        f"{num.first_increment_mm:g} and max_increment_mm = {num.max_increment_mm:g} must "
+                        "grow in that order (the tolerance below the first increment, that at most the largest)")
     geometry = arch_geometry(case)  # refuses an arch that cannot be built (case/shape.py)
     _check_imperfections(case, geometry)
     movement = case_movement(case, geometry)  # refuses a movement that cannot be followed (a pivot on the path's point)
