@@ -282,3 +282,18 @@ def test_a_snap_larger_than_allowed_is_the_collapse():
     assert all(h.jump_mm <= 1.0 for h in capped.hinge_history)
     settlement = preset("set2")
     assert limit_analysis(settlement, max_snap_mm=1.0).du_rigid_mm == limit_analysis(settlement).du_rigid_mm
+
+
+def test_worn_edges_act_as_a_ring_thinner_by_twice_the_wear_carrying_the_same_weight():
+    """Every edge worn by r: each hinge pivots r inside the arch's faces, as on a ring 2r thinner on
+    the same centre line whose density keeps the weight (within 0.05 %, the blocks' centroids
+    differ slightly; the same hinges)."""
+    base = arch_case(n_voussoirs=15)
+    g, m, wear = base.geometry, base.material, 3.0
+    worn = limit_analysis(base.with_overrides({"edge_radius_mm": wear}))
+    thin = limit_analysis(base.with_overrides({
+        "internal_radius_mm": g.internal_radius_mm + wear, "thickness_mm": g.thickness_mm - 2 * wear,
+        "density_g_per_cm3": m.density_g_per_cm3 * g.thickness_mm / (g.thickness_mm - 2 * wear)}))
+    assert worn.du_rigid_mm == pytest.approx(thin.du_rigid_mm, rel=5e-4)
+    assert worn.collapse_hinges == thin.collapse_hinges
+    assert worn.du_rigid_mm < 0.8 * limit_analysis(base).du_rigid_mm

@@ -117,9 +117,9 @@ def limit(preset_name: str | None, case_file: str | None, kn: float | None, sett
     if result.mirror_collapse_mode is not None:
         mirrored = "no collapse" if result.mirror_du_rigid_mm is None else f"{result.mirror_du_rigid_mm:.2f} mm"
         click.echo(f"mirrored (the keystone's other joint): du_rigid = {mirrored} ({result.mirror_collapse_mode})")
-    if not amplitudes(case).perfect_faces:
-        click.echo("note: the rigid analysis takes the voussoirs' dimension errors but not the joints' face "
-                   "defects (worn edges, angles, bumps, offsets): its du is that of flat, aligned faces", err=True)
+    if not amplitudes(case).flat_aligned_faces:
+        click.echo("note: the rigid analysis takes the voussoirs' dimension errors and worn edges but not the "
+                   "faces' angles, bumps or offsets: its du is that of flat, aligned faces", err=True)
 
 
 cli.add_command(sweep)

@@ -64,9 +64,14 @@ class ImperfectionAmplitudes:
     @property
     def perfect_faces(self) -> bool:
         """No defect of the joint faces or of the assembly."""
-        return not any((self.edge_size, self.edge_size_sd, self.face_angle, self.face_angle_sd,
-                        self.face_bump, self.face_bump_sd, self.voussoir_offset, self.voussoir_offset_sd,
-                        self.keystone_offset, self.left_support_angle, self.right_support_angle))
+        return self.flat_aligned_faces and not (self.edge_size or self.edge_size_sd)
+
+    @property
+    def flat_aligned_faces(self) -> bool:
+        """Faces flat, parallel and aligned (worn edges aside): what the rigid analysis represents."""
+        return not any((self.face_angle, self.face_angle_sd, self.face_bump, self.face_bump_sd,
+                        self.voussoir_offset, self.voussoir_offset_sd, self.keystone_offset,
+                        self.left_support_angle, self.right_support_angle))
 
     @property
     def perfect_dimensions(self) -> bool:

@@ -13,6 +13,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from yadearch.case.config import ArchCase
+from yadearch.case.imperfect import arch_imperfections
 from yadearch.case.mechanics import arch_geometry
 from yadearch.case.movement import case_movement
 from yadearch.errors import YadearchError
@@ -88,11 +89,27 @@ def rigid_arch(case: ArchCase) -> RigidArch:
     return RigidArch(
         geometry=geometry, weight=weight, centroid0=centroid0,
         left=np.array([j.left for j in joints]), right=np.array([j.right for j in joints]),
-        corner0=np.array([[j.intrados, j.extrados] for j in joints]),
+        corner0=pivot_corners(case, geometry),
         normal0=np.array([j.normal for j in joints]),
         movement=movement,
         tan_phi=float(np.tan(units.radians(case.material.friction_deg))),
         touch_tol=TOUCH_FRACTION * geometry.thickness)
+
+
+def pivot_corners(case: ArchCase, geometry: ArchGeometry) -> np.ndarray:
+    """(joint, side, xy) corners a joint can pivot on: its ends, or, where the voussoirs' edges are
+    worn (`[imperfections]` edge_radius_mm), the ends of the faces' shared flat part, moved in along
+    the joint by the larger wear of its two faces at that end (a worn edge's pivot sits at the end
+    of the wear when the hinge has turned little: docs/theory.md, "Imperfections")."""
+    corners = np.array([[j.intrados, j.extrados] for j in geometry.joints])
+    drawn = arch_imperfections(case, geometry)
+    if drawn is None:
+        return corners
+    d = drawn.defects
+    along = (corners[:, EXTRADOS] - corners[:, INTRADOS]) / drawn.lengths[:, None]
+    corners[:, INTRADOS] += np.maximum(d.left_intrados_edge, d.right_intrados_edge)[:, None] * along
+    corners[:, EXTRADOS] -= np.maximum(d.left_extrados_edge, d.right_extrados_edge)[:, None] * along
+    return corners
 
 
 @dataclass(frozen=True)
