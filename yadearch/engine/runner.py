@@ -56,7 +56,6 @@ class Runner:
         self._last_progress = time.time()
         self.weight = 0.0
 
-
     @property
     def stage(self) -> str:
         """The stage the scene is in; it labels every record."""
