@@ -50,9 +50,9 @@ STUDIES = (
     Study("support", "moving support set askew (gaping toward the extrados)", "right_support_angle_mrad",
           (2.0, 5.0, 10.0, 20.0), 1),
     Study("length", "voussoirs longer or shorter along the arch, random per voussoir (about the set's mean)",
-          "voussoir_length_sd_mm", (0.2, 0.5), 3),
+          "voussoir_length_sd_mm", (0.5,), 3),
     Study("thickness", "voussoirs thicker or thinner, random per voussoir (mean 0)", "voussoir_thickness_sd_mm",
-          (0.5, 1.0), 3),
+          (1.0,), 3),
     Study("stiff", f"faces not flat on stiff joints (kn {STIFF_KN_N_PER_MM3:g} N/mm³, the stiff limit; the perfect "
           f"arch gives {STIFF_PERFECT_DU_MM} mm)", "face_bump_sd_mm", (0.18, 0.36), 2,
           {"kn_N_per_mm3": STIFF_KN_N_PER_MM3}),
