@@ -54,7 +54,7 @@ STUDIES = (
     Study("thickness", "voussoirs thicker or thinner, random per voussoir (mean 0)", "voussoir_thickness_sd_mm",
           (1.0,), 3),
     Study("stiff", f"faces not flat on stiff joints (kn {STIFF_KN_N_PER_MM3:g} N/mm³, the stiff limit; the perfect "
-          f"arch gives {STIFF_PERFECT_DU_MM} mm)", "face_bump_sd_mm", (0.18, 0.36), 2,
+          f"arch gives {STIFF_PERFECT_DU_MM} mm)", "face_bump_sd_mm", (0.18,), 2,
           {"kn_N_per_mm3": STIFF_KN_N_PER_MM3}),
     FINAL,
 )

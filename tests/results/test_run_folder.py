@@ -5,7 +5,6 @@ same case and refuses to overwrite another."""
 from __future__ import annotations
 
 import json
-import subprocess
 from pathlib import Path
 
 import pytest
@@ -57,12 +56,12 @@ class FakeChild:
     def __init__(self, ok: bool):
         self.ok = ok
 
-    def __call__(self, cmd, **kwargs):
+    def __call__(self, cmd, env, timeout_s, quiet):
         staging = Path(cmd[-1])
         (staging / LOG_FILE).write_text("started\n")
         if self.ok:
             finished(staging, du_mm=42.0)
-        return subprocess.CompletedProcess(cmd, 0 if self.ok else 1, "", "" if self.ok else "boom")
+        return (0, "") if self.ok else (1, "boom")
 
 
 @pytest.fixture
@@ -72,7 +71,7 @@ def no_yade_check(monkeypatch):
 
 def test_a_failed_run_leaves_the_finished_run_in_place(tmp_path, monkeypatch, no_yade_check):
     finished(tmp_path / "run")
-    monkeypatch.setattr(process.subprocess, "run", FakeChild(ok=False))
+    monkeypatch.setattr(process, "_run_child", FakeChild(ok=False))
     with pytest.raises(RunFailedError, match="boom") as error:
         process.run_case_process(preset("set2"), tmp_path / "run")
     assert read_run(tmp_path / "run").summary["du_mm"] == 87.0
@@ -81,7 +80,7 @@ def test_a_failed_run_leaves_the_finished_run_in_place(tmp_path, monkeypatch, no
 
 def test_a_finished_run_replaces_the_folder_only_when_complete(tmp_path, monkeypatch, no_yade_check):
     finished(tmp_path / "run")
-    monkeypatch.setattr(process.subprocess, "run", FakeChild(ok=True))
+    monkeypatch.setattr(process, "_run_child", FakeChild(ok=True))
     process.run_case_process(preset("set2"), tmp_path / "run")
     assert read_run(tmp_path / "run").summary["du_mm"] == 42.0
     assert sorted(p.name for p in tmp_path.iterdir()) == ["run"]  # no staging or replaced folder left
@@ -101,11 +100,11 @@ def test_an_interrupted_run_is_not_a_failure_and_stays_pending(tmp_path, monkeyp
     from yadearch.errors import RunInterruptedError
     from yadearch.studies.campaign import FAILED_FILE, execute
 
-    def interrupted_child(cmd, **kwargs):
+    def interrupted_child(cmd, env, timeout_s, quiet):
         (Path(cmd[-1]) / LOG_FILE).write_text("INTERRUPTED: SIGTERM\n")
-        return subprocess.CompletedProcess(cmd, 130, "", "error: interrupted (SIGTERM)")
+        return 130, "error: interrupted (SIGTERM)"
 
-    monkeypatch.setattr(process.subprocess, "run", interrupted_child)
+    monkeypatch.setattr(process, "_run_child", interrupted_child)
     with pytest.raises(RunInterruptedError, match="interrupted"):
         process.run_case_process(preset("set2"), tmp_path / "run")
     outcome = execute(preset("set2"), tmp_path / "other", None)
