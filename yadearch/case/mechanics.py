@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass
 
 from yadearch.case.config import ArchCase
-from yadearch.case.imperfect import imperfect_geometry
+from yadearch.case.imperfect import amplitudes, imperfect_geometry
 from yadearch.case.shape import build_arch
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
@@ -55,7 +55,8 @@ def arch_geometry(case: ArchCase) -> ArchGeometry:
 def contact_stiffness(case: ArchCase, geometry: ArchGeometry) -> ContactStiffness:
     """SI joint stiffnesses for a case; ks keeps the ratio ks/kn of the case. Blocks' elasticity is
     taken over the designed voussoir width, so that dimension errors leave kn alone."""
-    width_mm = units.to_mm(build_arch(case.geometry).voussoir_width)  # the designed one: no draw changes kn
+    designed = geometry if amplitudes(case).perfect_dimensions else build_arch(case.geometry)
+    width_mm = units.to_mm(designed.voussoir_width)  # the designed width: no draw changes kn
     kn = units.stiffness_per_volume(effective_kn_N_per_mm3(case, width_mm))
     return ContactStiffness(kn=kn, ks=kn * case.interface.ks_over_kn,
                             tan_friction=math.tan(units.radians(case.material.friction_deg)))

@@ -234,14 +234,14 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
     snap that moves a block further than `max_snap_mm` is the collapse (default: every snap that
     ends in equilibrium is survived; docs/validation.md). A turning support on an odd number of
     voussoirs is solved mirrored too (`mirror_du_rigid_mm`): the keystone's two joints tie."""
-    result = _solve(case, step_mm, tolerance_mm, max_settlement_mm, max_snap_mm)
+    result, arch = _solve(case, step_mm, tolerance_mm, max_settlement_mm, max_snap_mm)
     moving = case.loading.moving_support
     symmetric = amplitudes(case).perfect_dimensions  # voussoirs with their own sizes have no mirror image
-    if not (symmetric and rigid_arch(case).movement.rotates and moving in MIRRORED and case.geometry.n_voussoirs % 2):
+    if not (symmetric and arch.movement.rotates and moving in MIRRORED and case.geometry.n_voussoirs % 2):
         return result
     try:
-        mirrored = _solve(case.with_overrides({"moving_support": MIRRORED[moving]}), step_mm, tolerance_mm,
-                          max_settlement_mm, max_snap_mm)
+        mirrored, _ = _solve(case.with_overrides({"moving_support": MIRRORED[moving]}), step_mm, tolerance_mm,
+                             max_settlement_mm, max_snap_mm)
     except LimitError as exc:
         return replace(result, mirror_collapse_mode=f"failed: {exc}")
     return replace(result, mirror_du_rigid_mm=mirrored.du_rigid_mm, mirror_collapse_mode=mirrored.collapse_mode,
@@ -249,8 +249,9 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
 
 
 def _solve(case: ArchCase, step_mm: float, tolerance_mm: float, max_settlement_mm: float | None,
-           max_snap_mm: float | None) -> LimitResult:
-    """`limit_analysis` of `case` as it stands (the keystone's tie broken toward its left joint)."""
+           max_snap_mm: float | None) -> tuple[LimitResult, RigidArch]:
+    """`limit_analysis` of `case` as it stands (the keystone's tie broken toward its left joint), and
+    the rigid arch it solved."""
     start = time.perf_counter()
     arch = rigid_arch(case)
     snap_cap = math.inf if max_snap_mm is None else max_snap_mm
@@ -278,4 +279,4 @@ def _solve(case: ArchCase, step_mm: float, tolerance_mm: float, max_settlement_m
         settlement_direction_deg=case.loading.settlement_direction_deg,
         max_snap_mm=None if math.isinf(snap_cap) else snap_cap, snap_collapse_mm=march.snap_collapse_mm,
         step_mm=step_mm,
-        tolerance_mm=tolerance_mm, n_lp=march.n_lp, wall_s=time.perf_counter() - start)
+        tolerance_mm=tolerance_mm, n_lp=march.n_lp, wall_s=time.perf_counter() - start), arch
