@@ -131,6 +131,14 @@ def test_results_table_failures_and_invalid_cases(tmp_path):
     assert table.loc[0, ["hinge_A", "hinge_B", "hinge_C", "hinge_D"]].tolist() == [3, 8, 16, 1]
 
 
+def test_a_campaign_of_invalid_cases_only_still_writes_its_table(tmp_path):
+    task = FakeRuns()
+    table = campaign(tmp_path, task, grid({"kn_N_per_mm3": [-1.0, -2.0]}))
+    assert task.calls == []
+    assert list(table["status"]) == ["failed", "failed"] and table["n_voussoirs"].isna().all()
+    assert "kn_N_per_mm3 must be in" in pd.read_csv(tmp_path / RESULTS_FILE).loc[0, "reason"]
+
+
 def test_resume_redoes_only_unfinished_runs(tmp_path):
     rows = grid({"kn_N_per_mm3": [0.1, 1.0, 10.0]})
     with pytest.raises(KeyboardInterrupt):  # "killed" after its first finished run (the stiffest)

@@ -232,7 +232,7 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
     row: dict[str, Any] = {RUN_COLUMN: spec.name, **_columns(spec.overrides)}
     if case is not None:
         row.setdefault("kn_N_per_mm3", case.interface.kn_N_per_mm3)
-        row.setdefault("n_voussoirs", case.geometry.n_voussoirs)
+    row.setdefault("n_voussoirs", None if case is None else case.geometry.n_voussoirs)
     empty = {"du_mm": math.nan, "collapsed": None, "hinges": "", "mechanism": "", "hinge_A": None,
              "hinge_B": None, "hinge_C": None, "hinge_D": None, "steps": None, "wall_s": math.nan,
              "max_slip_mm": math.nan, "max_friction_use": math.nan, "friction_interface": None}
