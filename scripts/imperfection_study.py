@@ -28,8 +28,11 @@ from yadearch.studies.executors import open_pool
 from yadearch.studies.imperfection_study import (
     Study,
     amplitude_for,
+    equivalent_kn,
     hinge_agreement,
     level_rows,
+    paired_amplitude_interval,
+    paired_medians,
     table_markdown,
 )
 from yadearch.studies.montecarlo import MONTECARLO_FILE, du_statistics, run_montecarlo, write_montecarlo
@@ -40,6 +43,8 @@ STIFF_KN_N_PER_MM3 = 100.0
 STIFF_PERFECT_DU_MM = 109.09  # reports/robustness/kn100_base: the perfect arch at kn 100
 FINAL = Study("final", "faces not flat, at the level that matches set 1 (the final campaign)", "face_bump_sd_mm",
               (0.18,), 200)
+MATCH = Study("match", "faces not flat, above the final level, on the final campaign's first seeds", "face_bump_sd_mm",
+              (0.22,), 40)
 STUDIES = (
     Study("edge", "rounded edges, every edge alike", "edge_radius_mm", (1.0, 2.0, 3.0, 4.0, 6.0), 1),
     Study("angle", "faces not parallel, random per joint (mean 0)", "face_angle_sd_mrad", (1.0, 2.0, 4.0, 8.0), 3),
@@ -57,6 +62,7 @@ STUDIES = (
           f"arch gives {STIFF_PERFECT_DU_MM} mm)", "face_bump_sd_mm", (0.18,), 2,
           {"kn_N_per_mm3": STIFF_KN_N_PER_MM3}),
     FINAL,
+    MATCH,
 )
 SET1_EXPERIMENT_HINGES = {"A": 13, "B": 32, "C": 56, "D": 1}  # the paper's Table 1 (docs/validation.md)
 UNITS = {"edge_radius_mm": "mm", "face_angle_sd_mrad": "mrad", "face_bump_sd_mm": "mm",
@@ -123,6 +129,7 @@ def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float) -> str:
                      math.isnan(amplitude) else f"No level brackets {target} mm.")
         lines.append("")
     lines += final_section(out, set1_summary)
+    lines += match_section(out, sweep, target)
     experiment, model = reference.SETS["set1"]["experimental"], reference.SETS["set1"]["numerical"]
     lines += ["## Set 1 for comparison", "",
               f"- experiment: du {experiment['du_mm']} mm, A at {experiment['hinge_A'][0]} I (formed at 12, moved "
@@ -171,6 +178,27 @@ def final_section(out: Path, set1_summary: dict) -> list[str]:
     lines += ["", f"![du of the final campaign]({FINAL.name}/du_distribution.png)",
               f"![hinges of the final campaign]({FINAL.name}/hinge_positions.png)", ""]
     return lines
+
+
+def match_section(out: Path, sweep: pd.DataFrame, target: float) -> list[str]:
+    """The amplitude that brings the median du to set 1's, from the final and the match campaigns
+    compared on their common seeds (the same face profiles at two amplitudes)."""
+    paths = [out / s.name / MONTECARLO_FILE for s in (FINAL, MATCH)]
+    if not all(p.is_file() for p in paths):
+        return []
+    tables = [pd.read_csv(p) for p in paths]
+    rows = paired_medians(tables, FINAL.parameter)
+    amplitude = amplitude_for(rows, target)
+    low, high = paired_amplitude_interval(tables, FINAL.parameter, target)
+    equivalent = ", ".join(f"{r['median_du_mm']:.2f} mm at {r['level']:g} mm (equivalent kn "
+                           f"{equivalent_kn(r['median_du_mm'], sweep):.3g} N/mm³)" for r in rows)
+    found = (f"median du = {target} mm at `{FINAL.parameter}` ≈ {amplitude:.3f} mm (95 % bootstrap interval over "
+             f"the seeds {low:.3f}-{high:.3f} mm)" if not math.isnan(amplitude) else
+             f"the two levels do not bracket {target} mm")
+    return [f"## The amplitude that matches set 1, sample for sample ({rows[0]['samples']} seeds)", "",
+            f"The match campaign (`{out / MATCH.name}`, `--only {MATCH.name}`) runs seeds {SEED}-"
+            f"{SEED + MATCH.samples - 1} at {MATCH.levels[0]:g} mm: the same face profiles as the final "
+            f"campaign's first seeds, scaled. On the seeds finished in both: {equivalent}; {found}.", ""]
 
 
 def main() -> int:

@@ -6,7 +6,14 @@ import math
 import pandas as pd
 import pytest
 
-from yadearch.studies.imperfection_study import Study, amplitude_for, equivalent_kn, level_rows
+from yadearch.studies.imperfection_study import (
+    Study,
+    amplitude_for,
+    equivalent_kn,
+    level_rows,
+    paired_amplitude_interval,
+    paired_medians,
+)
 
 SWEEP = pd.DataFrame({"kn_N_per_mm3": [0.1, 1.0, 0.5, 10.0, 100.0],
                       "du_mm": [20.0, 60.0, 40.0, 90.0, 100.0],
@@ -43,3 +50,25 @@ def test_level_rows_summarise_each_level_with_its_hinges():
     assert first["equivalent_kn_N_per_mm3"] == pytest.approx(equivalent_kn(79.0, SWEEP))
     assert "B 28 (100%)" in first["hinges"]
     assert second["samples"] == 1 and second["median_du_mm"] == 40.0
+
+
+def test_paired_medians_compare_levels_on_the_seeds_finished_at_both():
+    low = pd.DataFrame({"face_bump_sd_mm": 0.18, "seed": [1, 2, 3, 4], "status": ["done"] * 3 + ["failed"],
+                        "du_mm": [50.0, 60.0, 70.0, math.nan]})
+    high = pd.DataFrame({"face_bump_sd_mm": 0.22, "seed": [1, 2, 3, 5], "status": ["done"] * 4,
+                         "du_mm": [30.0, 40.0, 44.0, 99.0]})
+    rows = paired_medians([low, high], "face_bump_sd_mm")
+    assert [(r["level"], r["samples"], r["median_du_mm"]) for r in rows] == [(0.18, 3, 60.0), (0.22, 3, 40.0)]
+    assert amplitude_for(rows, 50.0) == pytest.approx(0.20)
+
+
+def test_the_paired_amplitude_interval_holds_the_amplitude_of_the_whole_set():
+    seeds = list(range(1, 41))
+    low = pd.DataFrame({"face_bump_sd_mm": 0.18, "seed": seeds, "status": "done",
+                        "du_mm": [55.0 + (s % 7) for s in seeds]})
+    high = pd.DataFrame({"face_bump_sd_mm": 0.22, "seed": seeds, "status": "done",
+                         "du_mm": [42.0 + (s % 5) for s in seeds]})
+    rows = paired_medians([low, high], "face_bump_sd_mm")
+    whole = amplitude_for(rows, 48.9)
+    lower, upper = paired_amplitude_interval([low, high], "face_bump_sd_mm", 48.9)
+    assert 0.18 < lower <= whole <= upper < 0.22

@@ -17,6 +17,8 @@ import pandas as pd
 
 from yadearch.studies.montecarlo import du_statistics, hinge_frequencies
 
+BOOTSTRAP_RESAMPLES = 2000  # resamples of the seeds for the interval of a paired amplitude
+
 
 @dataclass(frozen=True)
 class Study:
@@ -85,6 +87,40 @@ def amplitude_for(rows: list[dict[str, Any]], target_du_mm: float) -> float:
         if du1 <= target_du_mm <= du0 and du0 != du1:
             return a0 + (du0 - target_du_mm) / (du0 - du1) * (a1 - a0)
     return math.nan
+
+
+def paired_du(tables: list[pd.DataFrame], parameter: str) -> pd.DataFrame:
+    """du (mm) of the seeds finished at every level, one row a seed and one column a level: a seed's
+    draws scale with the amplitude, so the levels compare the same defect pattern sample for sample."""
+    done = pd.concat(tables, ignore_index=True)
+    done = done[done["status"] == "done"]
+    wide = done.pivot_table(index="seed", columns=done[parameter].astype(float), values="du_mm")
+    return wide.dropna()
+
+
+def paired_medians(tables: list[pd.DataFrame], parameter: str) -> list[dict[str, Any]]:
+    """Median du per level over the seeds finished at every level (`paired_du`)."""
+    wide = paired_du(tables, parameter)
+    return [{"level": float(a), "samples": len(wide), "median_du_mm": float(wide[a].median())}
+            for a in wide.columns]
+
+
+def paired_amplitude_interval(tables: list[pd.DataFrame], parameter: str, target_du_mm: float,
+                              resamples: int = BOOTSTRAP_RESAMPLES, seed: int = 0) -> tuple[float, float]:
+    """A 95 % bootstrap interval (seeds resampled with replacement) of the amplitude at which the
+    paired median du reaches `target_du_mm`; resamples that do not bracket it are left out."""
+    wide = paired_du(tables, parameter)
+    rng = np.random.default_rng(seed)
+    found = []
+    for _ in range(resamples):
+        picked = wide.iloc[rng.integers(0, len(wide), len(wide))]
+        rows = [{"level": float(a), "median_du_mm": float(picked[a].median())} for a in wide.columns]
+        found.append(amplitude_for(rows, target_du_mm))
+    found = [a for a in found if not math.isnan(a)]
+    if not found:
+        return math.nan, math.nan
+    low, high = np.percentile(found, [2.5, 97.5])
+    return float(low), float(high)
 
 
 def table_markdown(rows: list[dict[str, Any]], unit: str) -> list[str]:
