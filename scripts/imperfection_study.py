@@ -26,10 +26,14 @@ from yadearch.results.rundir import read_summary
 from yadearch.studies.campaign import RESULTS_FILE, label_hinges
 from yadearch.studies.executors import open_pool
 from yadearch.studies.imperfection_study import (
+    STAYED,
+    TOWARD_CROWN,
+    TOWARD_SPRINGING,
     Study,
     amplitude_for,
     equivalent_kn,
     hinge_agreement,
+    hinge_shifts,
     level_rows,
     paired_amplitude_interval,
     paired_medians,
@@ -65,6 +69,7 @@ STUDIES = (
     MATCH,
 )
 SET1_EXPERIMENT_HINGES = {"A": 13, "B": 32, "C": 56, "D": 1}  # the paper's Table 1 (docs/validation.md)
+SET1_A_FORMED = 12  # set 1's experiment: A formed at 12, then moved to 13 before collapse
 UNITS = {"edge_radius_mm": "mm", "face_angle_sd_mrad": "mrad", "face_bump_sd_mm": "mm",
          "keystone_offset_mm": "mm", "voussoir_offset_sd_mm": "mm", "right_support_angle_mrad": "mrad",
          "voussoir_length_sd_mm": "mm", "voussoir_thickness_sd_mm": "mm"}
@@ -175,9 +180,28 @@ def final_section(out: Path, set1_summary: dict) -> list[str]:
         own = model.get(label)
         lines.append(f"| {label} | {interface} | {shares[label]:.0%} | "
                      f"{'—' if own is None else own} |")
+    lines += ["", *migration_lines(out, table)]
     lines += ["", f"![du of the final campaign]({FINAL.name}/du_distribution.png)",
               f"![hinges of the final campaign]({FINAL.name}/hinge_positions.png)", ""]
     return lines
+
+
+def migration_lines(out: Path, table: pd.DataFrame) -> list[str]:
+    """Which way hinge A moved between its formation and the collapse, in the final campaign and in
+    the low-kn model (set 1's experiment: formed at 12, one voussoir toward the crown before collapse)."""
+    folders = [out / FINAL.name / f for f in table.loc[table["status"] == "done", "folder"]]
+    shifts = hinge_shifts(folders, "A")
+    if shifts.empty:
+        return []
+    share = shifts["way"].value_counts(normalize=True)
+    experiment_like = ((shifts["formed"] == SET1_A_FORMED) & (shifts["final"] == SET1_A_FORMED + 1)).mean()
+    model = hinge_shifts([SET1_RUN], "A")
+    own = "no hinge A" if model.empty else (f"formed at {model.loc[0, 'formed']}, at {model.loc[0, 'final']} at "
+                                           f"collapse ({model.loc[0, 'way']})")
+    return [f"Hinge A between its formation and the collapse ({len(shifts)} samples): "
+            + ", ".join(f"{way} {share.get(way, 0.0):.0%}" for way in (STAYED, TOWARD_CROWN, TOWARD_SPRINGING))
+            + f"; formed at {SET1_A_FORMED} and ended at {SET1_A_FORMED + 1} as in set 1's experiment: "
+            f"{experiment_like:.0%}. The low-kn model's A: {own}."]
 
 
 def match_section(out: Path, sweep: pd.DataFrame, target: float) -> list[str]:

@@ -127,3 +127,14 @@ def test_the_report_command_writes_the_report(tmp_path):
     result = CliRunner().invoke(report, [str(tmp_path / "run"), "--out", str(tmp_path / "out")])
     assert result.exit_code == 0, result.output
     assert result.output.strip() == f"report -> {tmp_path / 'out' / 'report.md'}"
+
+
+def test_a_figure_saved_twice_gives_the_same_bytes(tmp_path):
+    """Regenerated evidence differs only where its content does: no creation date in the PDF."""
+    written = []
+    for name in ("first", "second"):
+        fig = figures.new_figure(5.0)
+        fig.add_subplot().plot([0.0, 1.0], [1.0, 0.0])
+        written.append(figures.save_figure(fig, tmp_path / name))
+    (pdf1, png1), (pdf2, png2) = written
+    assert pdf1.read_bytes() == pdf2.read_bytes() and png1.read_bytes() == png2.read_bytes()

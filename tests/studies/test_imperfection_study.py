@@ -5,11 +5,15 @@ import math
 
 import pandas as pd
 import pytest
+from synthetic_runs import BuiltHinge, BuiltRun
 
 from yadearch.studies.imperfection_study import (
+    TOWARD_CROWN,
+    TOWARD_SPRINGING,
     Study,
     amplitude_for,
     equivalent_kn,
+    hinge_shift,
     level_rows,
     paired_amplitude_interval,
     paired_medians,
@@ -72,3 +76,14 @@ def test_the_paired_amplitude_interval_holds_the_amplitude_of_the_whole_set():
     whole = amplitude_for(rows, 48.9)
     lower, upper = paired_amplitude_interval([low, high], "face_bump_sd_mm", 48.9)
     assert 0.18 < lower <= whole <= upper < 0.22
+
+
+@pytest.mark.parametrize(("new", "way"), [(5, TOWARD_CROWN), (3, TOWARD_SPRINGING)])
+def test_hinge_shift_tells_which_way_hinge_a_moved_before_the_collapse(new, way):
+    # an I hinge opens at 4 (of 11 interfaces: the crown at 6), fades while its neighbour opens
+    built = BuiltRun([BuiltHinge({4: 1.0}, "I", opens_mm=5.0, fades_mm=(15.0, 19.0)),
+                      BuiltHinge({new: 1.0}, "I", opens_mm=16.0),
+                      BuiltHinge({8: 1.0}, "E", opens_mm=12.0), BuiltHinge({11: 1.0}, "E", opens_mm=20.0)])
+    tracks = built.analyse().tracks
+    assert hinge_shift(tracks, "A", 11) == (4, new, way)
+    assert hinge_shift(tracks, "D", 11) is None  # no hinge at the fixed support

@@ -15,7 +15,6 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
 
-from yadearch.atomic import write_atomically
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
 from yadearch.model.geometry import ArchGeometry
@@ -24,9 +23,9 @@ from yadearch.plotting.run_figures import (
     COLUMN_CM,
     HINGE_COLOURS,
     LABEL_ROOM,
-    PNG_DPI,
     STYLE,
     new_figure,
+    save_figure,
 )
 from yadearch.solve.limit_result import LimitResult
 from yadearch.solve.rigid import rotate
@@ -116,7 +115,4 @@ def save_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchC
     """The thrust-line figure as `stem`.pdf (vector) and `stem`.png (300 dpi), each written atomically."""
     fig = plot_thrust_line(result, geometry_or_case)
     with matplotlib.rc_context(STYLE):  # font embedding and dpi are read when saving
-        pdf = write_atomically(stem.with_suffix(".pdf"), lambda tmp: fig.savefig(tmp, format="pdf"))
-        png = write_atomically(stem.with_suffix(".png"),
-                               lambda tmp: fig.savefig(tmp, format="png", dpi=PNG_DPI))
-    return pdf, png
+        return save_figure(fig, stem)

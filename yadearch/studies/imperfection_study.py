@@ -10,11 +10,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pandas as pd
 
+from yadearch.analysis.run import analyse_run, load_run
+from yadearch.analysis.tracking import HingeTrack
 from yadearch.studies.montecarlo import du_statistics, hinge_frequencies
 
 BOOTSTRAP_RESAMPLES = 2000  # resamples of the seeds for the interval of a paired amplitude
@@ -143,3 +146,30 @@ def hinge_agreement(table: pd.DataFrame, observed: dict[str, int], tolerance: in
         column = done[f"hinge_{label}"]
         shares[label] = float(((column - interface).abs() <= tolerance).mean()) if len(done) else math.nan
     return shares
+
+
+TOWARD_CROWN, TOWARD_SPRINGING, STAYED = "toward the crown", "toward the springing", "stayed"
+
+
+def hinge_shift(tracks: list[HingeTrack], label: str, n_interfaces: int) -> tuple[int, int, str] | None:
+    """Where a run's hinge `label` (A-D) formed, where it was at collapse, and which way it moved
+    between them (the experiment's A formed at 12 and moved toward the crown); None without it."""
+    track = next((t for t in tracks if t.label == label), None)
+    if track is None:
+        return None
+    formed, final = track.hinge_at(track.formed_record).interface, track.interface
+    crown = (n_interfaces + 1) / 2
+    way = STAYED if formed == final else TOWARD_CROWN if abs(final - crown) < abs(formed - crown) \
+        else TOWARD_SPRINGING
+    return formed, final, way
+
+
+def hinge_shifts(folders: list[Path], label: str) -> pd.DataFrame:
+    """`hinge_shift` of every finished run folder: folder, formed, final, way."""
+    rows = []
+    for folder in folders:
+        analysis = analyse_run(load_run(folder))
+        shift = hinge_shift(analysis.tracks, label, analysis.history.n_interfaces)
+        if shift is not None:
+            rows.append(dict(zip(("folder", "formed", "final", "way"), (folder.name, *shift), strict=True)))
+    return pd.DataFrame(rows, columns=["folder", "formed", "final", "way"])
