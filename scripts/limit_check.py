@@ -20,6 +20,7 @@ from yadearch.atomic import write_text_atomically
 from yadearch.case.config import load_case
 from yadearch.results.rundir import CASE_FILE, read_summary
 from yadearch.solve.limit import limit_analysis
+from yadearch.solve.limit_result import LimitResult
 from yadearch.studies.robustness import same_hinge_set
 
 HINGE_SHIFT = 1  # interfaces a DEM hinge may sit from the rigid one
@@ -31,14 +32,17 @@ def check(folder: Path, tolerance: float) -> tuple[str, bool]:
     distance), beside the rigid limit that survives every snap."""
     case = load_case(folder / CASE_FILE)
     summary = read_summary(folder)
-    survived = limit_analysis(case).du_rigid_mm
+    survived = limit_analysis(case)
     limit = limit_analysis(case, max_snap_mm=case.numerics.runaway_mm)
     mechanism = _hinges(summary.get("hinges_last_equilibrium"))
     rigid = " ".join(f"{h.interface}{h.side}" for h in sorted(limit.hinge_history, key=lambda h: h.interface)
                      if h.to_mm is None)  # the mechanism followed to the limit
     du, du_rigid = summary.get("du_mm"), limit.du_rigid_mm
-    head = (f"| {folder.name} | {case.loading.settlement_direction_deg:g} | {case.interface.kn_N_per_mm3:g} "
-            f"| {_mm(du)} | {_mm(survived)} | {_mm(du_rigid)}")
+    loading = case.loading
+    movement = f"{loading.settlement_direction_deg:g}" if loading.support_motion == "translation" \
+        else loading.support_motion
+    head = (f"| {folder.name} | {movement} | {case.interface.kn_N_per_mm3:g} "
+            f"| {_mm(du)} | {_with_mirror(survived)} | {_with_mirror(limit)}")
     hinges = (f"{mechanism} | {rigid} | {_hinges(summary.get('hinges_at_collapse'))} | "
               f"{' '.join(limit.collapse_hinges)}")
     if du is None or du_rigid is None:
@@ -56,13 +60,19 @@ def _mm(value: float | None) -> str:
     return "-" if value is None else f"{value:.2f}"
 
 
+def _with_mirror(limit: LimitResult) -> str:
+    """du_rigid, and that of the mirror image where the keystone's tie was solved both ways."""
+    mirror = limit.mirror_du_rigid_mm
+    return _mm(limit.du_rigid_mm) + ("" if mirror is None else f" (mirrored {_mm(mirror)})")
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("runs", nargs="+", type=Path, help="finished run folders")
     parser.add_argument("--tolerance", type=float, default=0.05, help="largest |du / du_rigid - 1|")
     parser.add_argument("--out", type=Path, help="also write the table to this Markdown file")
     args = parser.parse_args()
-    lines = ["| run | direction (deg) | kn (N/mm3) | du (mm) | du_rigid, every snap survived (mm) "
+    lines = ["| run | direction (deg) or motion | kn (N/mm3) | du (mm) | du_rigid, every snap survived (mm) "
              "| du_rigid, a snap beyond the run's runaway distance collapses (mm) | du / du_rigid - 1 "
              "| DEM mechanism at the last equilibrium | rigid mechanism at its limit | DEM hinges at collapse "
              "| rigid collapse chain | within tolerance |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
