@@ -110,17 +110,18 @@ def campaign_figures(table: pd.DataFrame, folder: Path, level_columns: list[str]
     return paths
 
 
-def amplitude_panels_figure(panels: list[tuple[pd.DataFrame, str, str]], stem: Path, perfect_du_mm: float,
+def amplitude_panels_figure(panels: list[tuple[pd.DataFrame, str, str, float]], stem: Path,
                             target_du_mm: float, target_label: str) -> list[Path]:
-    """One panel per imperfection kind (table, amplitude column, axis label): median du and band
-    against the amplitude from the perfect arch at 0, with the target du dashed: STEM.pdf, .png."""
+    """One panel per imperfection kind (table, amplitude column, axis label, du of its perfect arch):
+    median du and band against the amplitude from the perfect arch at 0, with the target du dashed:
+    STEM.pdf, .png."""
     with matplotlib.rc_context(SWEEP_STYLE):
         rows = math.ceil(len(panels) / PANELS_PER_ROW)
         columns = min(len(panels), PANELS_PER_ROW)
         fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, PANEL_HEIGHT_IN * rows), layout="constrained")
         grid = fig.subplots(rows, columns, sharey=True, squeeze=False)
         axes = grid.ravel()
-        for ax, (table, column, label) in zip(axes, panels):
+        for ax, (table, column, label, perfect_du_mm) in zip(axes, panels):
             _draw_du_against(ax, _done(table), column, perfect_du_mm)
             ax.axhline(target_du_mm, color="C3", ls="--", lw=0.8, label=target_label)
             ax.set_xlabel(label)
