@@ -245,8 +245,10 @@ def limit_measurement(case) -> dict:
 
 def line(name: str, s: dict) -> str:
     """One printed line per run."""
+    from yadearch.results.rundir import hinge_list
+
     profile = s.get("profile") or {}
-    hinges = " ".join(f"{h['interface']}{h['side']}" for h in s["hinges_at_collapse"])
+    hinges = hinge_list(s["hinges_at_collapse"])
     overhead = f", wall / scene engine time {profile['driver_overhead_ratio']:.3f}" \
         if profile.get("driver_overhead_ratio") and "scene_engines_s" in profile else ""
     return (f"{name}: steps {s['steps']}, wall {s['wall_s']:.0f} s, {s['steps_per_s']:.0f} steps/s, "

@@ -21,7 +21,7 @@ from pathlib import Path
 from yadearch.case.config import preset
 from yadearch.engine.process import run_case_process
 from yadearch.model.hinges import same_hinges
-from yadearch.results.rundir import holds_case
+from yadearch.results.rundir import hinge_list, holds_case
 
 TOLERANCE = 0.01
 
@@ -66,7 +66,7 @@ def main() -> int:
         summaries = dict(zip(variants, pool.map(run, variants)))
 
     def hinges(summary: dict) -> str:
-        return " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"])
+        return hinge_list(summary["hinges_at_collapse"])
 
     reference = summaries["default"]
     has_reference = reference["du_mm"] is not None

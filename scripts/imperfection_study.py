@@ -22,7 +22,7 @@ from yadearch.atomic import write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import preset
 from yadearch.plotting.montecarlo import amplitude_panels_figure, campaign_figures
-from yadearch.results.rundir import read_summary
+from yadearch.results.rundir import hinge_list, read_summary
 from yadearch.studies.campaign import RESULTS_FILE, label_hinges
 from yadearch.studies.executors import open_pool
 from yadearch.studies.imperfection_study import (
@@ -149,7 +149,7 @@ def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float) -> str:
               f"A {spread(model['hinge_A'])} I, "
               f"B {spread(model['hinge_B'])} E;",
               f"- this project's low-kn model (`{SET1_RUN}`): du {set1_summary['du_mm']:.2f} mm on "
-              f"{' '.join(str(h['interface']) + h['side'] for h in set1_summary['hinges_at_collapse'])}.", ""]
+              f"{hinge_list(set1_summary['hinges_at_collapse'])}.", ""]
     if panels:
         amplitude_panels_figure(panels, out / FIGURE, target, f"set 1 experiment, {target} mm")
         lines += [f"![du against each amplitude]({FIGURE}.png)", ""]

@@ -18,7 +18,7 @@ from pathlib import Path
 
 from yadearch.atomic import write_text_atomically
 from yadearch.case.config import load_case
-from yadearch.results.rundir import CASE_FILE, read_summary
+from yadearch.results.rundir import CASE_FILE, hinge_list, read_summary
 from yadearch.solve.limit import limit_analysis
 from yadearch.solve.limit_result import LimitResult
 from yadearch.studies.robustness import same_hinge_set
@@ -34,7 +34,7 @@ def check(folder: Path, tolerance: float) -> tuple[str, bool]:
     summary = read_summary(folder)
     survived = limit_analysis(case)
     limit = limit_analysis(case, max_snap_mm=case.numerics.runaway_mm)
-    mechanism = _hinges(summary.get("hinges_last_equilibrium"))
+    mechanism = hinge_list(summary.get("hinges_last_equilibrium"))
     rigid = " ".join(f"{h.interface}{h.side}" for h in sorted(limit.hinge_history, key=lambda h: h.interface)
                      if h.to_mm is None)  # the mechanism followed to the limit
     du, du_rigid = summary.get("du_mm"), limit.du_rigid_mm
@@ -43,17 +43,13 @@ def check(folder: Path, tolerance: float) -> tuple[str, bool]:
         else loading.support_motion
     head = (f"| {folder.name} | {movement} | {case.interface.kn_N_per_mm3:g} "
             f"| {_mm(du)} | {_with_mirror(survived)} | {_with_mirror(limit)}")
-    hinges = (f"{mechanism} | {rigid} | {_hinges(summary.get('hinges_at_collapse'))} | "
+    hinges = (f"{mechanism} | {rigid} | {hinge_list(summary.get('hinges_at_collapse'))} | "
               f"{' '.join(limit.collapse_hinges)}")
     if du is None or du_rigid is None:
         return f"{head} | - | {hinges} | no |", False
     gap = (du - du_rigid) / du_rigid
     ok = abs(gap) <= tolerance and same_hinge_set(mechanism, rigid, HINGE_SHIFT)
     return f"{head} | {gap:+.1%} | {hinges} | {'yes' if ok else 'no'} |", ok
-
-
-def _hinges(listed: list[dict] | None) -> str:
-    return " ".join(f"{h['interface']}{h['side']}" for h in listed or [])
 
 
 def _mm(value: float | None) -> str:

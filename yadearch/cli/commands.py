@@ -18,13 +18,13 @@ from yadearch.cli.options import case_options, resolve_case
 from yadearch.engine.process import run_case_process
 from yadearch.errors import YadearchError
 from yadearch.reporting.report import write_report
-from yadearch.results.rundir import holds_case
+from yadearch.results.rundir import hinge_list, holds_case
 
 
 def _report_summary(out: Path) -> None:
     summary = json.loads((out / "summary.json").read_text())
     du = summary["du_mm"]
-    hinges = " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"])
+    hinges = hinge_list(summary["hinges_at_collapse"])
     click.echo(f"{summary['name']}: du = {'no collapse' if du is None else f'{du:.2f} mm'}, "
                f"hinges at collapse {hinges or '-'}, {summary['steps']} steps, "
                f"{summary['wall_s']:.0f} s -> {out}")

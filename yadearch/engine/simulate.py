@@ -17,7 +17,7 @@ from yadearch.case.movement import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.results.provenance import provenance
-from yadearch.results.rundir import LOG_FILE, final_folder, write_run
+from yadearch.results.rundir import LOG_FILE, final_folder, hinge_list, write_run
 
 PR_SET_PDEATHSIG = 1  # linux/prctl.h
 INTERRUPTED_EXIT = 130  # the shell's code for a run stopped by a signal, not by a failure
@@ -66,7 +66,7 @@ def simulate(case: ArchCase, out: Path) -> dict:
     write_run(out, case.to_toml(), runner.records.series, runner.records.joints,
               runner.records.snapshots, summary, imperfections.table() if imperfections else None)
     du = summary["du_mm"]
-    hinges = " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"])
+    hinges = hinge_list(summary["hinges_at_collapse"])
     log(f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} hinges={hinges or '-'} "
         f"steps={summary['steps']} wall={summary['wall_s']:.0f} s -> {final_folder(out)}")
     log_file.close()

@@ -20,7 +20,7 @@ from yadearch.atomic import write_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import as_ran, preset
 from yadearch.plotting.run_figures import write_figures
-from yadearch.results.rundir import RunFolder
+from yadearch.results.rundir import RunFolder, hinge_list
 
 REPORT_FILE = "report.md"
 HINGE_ROWS = ("hinge_A", "hinge_B", "hinge_C")
@@ -174,7 +174,7 @@ def run_section(reported: ReportedRun) -> list[str]:
     run, analysis = reported.run, reported.analysis
     summary = run.summary
     du = summary.get("du_mm")
-    hinges = " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"]) or "—"
+    hinges = hinge_list(summary["hinges_at_collapse"]) or "—"
     lines = [f"## {summary.get('name', run.path.name)}", "",
              f"- run folder: `{run.path}`",
              f"- kn = {summary.get('kn_N_per_mm3')} N/mm3, ks = {summary.get('ks_N_per_mm3')} N/mm3, "
@@ -233,7 +233,7 @@ def overview(reported: list[ReportedRun]) -> list[str]:
         s = r.run.summary
         ref = reference.SETS.get(r.reference_name or "", {})
         du = s.get("du_mm")
-        hinges = " ".join(f"{h['interface']}{h['side']}" for h in s["hinges_at_collapse"]) or "—"
+        hinges = hinge_list(s["hinges_at_collapse"]) or "—"
         lines.append(f"| {s.get('name', r.run.path.name)} | {r.reference_name or '—'} | "
                      f"{'no collapse' if du is None else f'{du:.2f}'} | "
                      f"{ref['numerical']['du_mm'] if ref else '—'} | {ref['experimental']['du_mm'] if ref else '—'} | "

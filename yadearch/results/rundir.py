@@ -28,6 +28,11 @@ SCHEMA_VERSION = 1  # of summary.json; a summary without one predates the marker
 REQUIRED_KEYS = ("du_mm", "hinges_at_collapse", "steps", "wall_s")  # what campaigns and reports read
 
 
+
+def hinge_list(hinges: list[dict] | None) -> str:
+    """A summary's hinges (`hinges_at_collapse`, `hinges_last_equilibrium`) as "1E 9I 29E 56E"."""
+    return " ".join(f"{h['interface']}{h['side']}" for h in hinges or [])
+
 @dataclass
 class RunFolder:
     """A run folder read back: the resolved case, both tables, snapshots and the summary."""

@@ -26,7 +26,7 @@ from yadearch.case.plan import plan_run
 from yadearch.engine.process import check_yade_installed, run_case_process
 from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, YadearchError
 from yadearch.model.hinges import PAPER_LABELS, paper_labels
-from yadearch.results.rundir import SUMMARY_FILE, case_differences, is_complete
+from yadearch.results.rundir import SUMMARY_FILE, case_differences, hinge_list, is_complete
 from yadearch.studies.executors import Pool
 from yadearch.studies.grid import RUN_COLUMN, check_parameter, run_tag
 from yadearch.studies.sessions import record_session
@@ -245,7 +245,7 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
                    max_friction_use=friction.get("max_friction_use", math.nan),
                    friction_interface=friction.get("friction_interface"))
         row.update(du_mm=math.nan if du is None else du, collapsed=bool(summary.get("collapsed")),
-                   hinges=" ".join(f"{h['interface']}{h['side']}" for h in hinges),
+                   hinges=hinge_list(hinges),
                    mechanism="-".join(h["side"] for h in hinges),
                    **label_hinges(summary, case.geometry.n_voussoirs),
                    steps=summary.get("steps"), wall_s=summary.get("wall_s"), status="done",
