@@ -64,7 +64,7 @@ STUDIES = (
           (1.0,), 3),
     Study("stiff", f"faces not flat on stiff joints (kn {STIFF_KN_N_PER_MM3:g} N/mm³, the stiff limit; the perfect "
           f"arch gives {STIFF_PERFECT_DU_MM} mm)", "face_bump_sd_mm", (0.18,), 2,
-          {"kn_N_per_mm3": STIFF_KN_N_PER_MM3}),
+          {"kn_N_per_mm3": STIFF_KN_N_PER_MM3}, STIFF_PERFECT_DU_MM),
     FINAL,
     MATCH,
 )
@@ -125,7 +125,7 @@ def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float) -> str:
         if not path.is_file():
             continue
         table = pd.read_csv(path)
-        perfect = STIFF_PERFECT_DU_MM if "kn_N_per_mm3" in study.fixed else perfect_du_mm
+        perfect = perfect_du_mm if study.perfect_du_mm is None else study.perfect_du_mm
         panels.append((table, study.parameter, f"{AXIS_LABELS[study.parameter]}{PANEL_NOTES.get(study.name, '')}",
                        perfect))
         rows = level_rows(study, table, sweep)

@@ -34,6 +34,7 @@ class Study:
     levels: tuple[float, ...]
     samples: int
     fixed: dict[str, Any] = field(default_factory=dict)
+    perfect_du_mm: float | None = None  # du of its perfect arch when `fixed` changes it (None: the base case's)
 
     @property
     def axes(self) -> dict[str, list[Any]]:
@@ -101,11 +102,15 @@ def paired_du(tables: list[pd.DataFrame], parameter: str) -> pd.DataFrame:
     return wide.dropna()
 
 
-def paired_medians(tables: list[pd.DataFrame], parameter: str) -> list[dict[str, Any]]:
-    """Median du per level over the seeds finished at every level (`paired_du`)."""
-    wide = paired_du(tables, parameter)
+def _level_medians(wide: pd.DataFrame) -> list[dict[str, Any]]:
+    """Median du of each level (column) of a seed-by-level table, with the number of seeds."""
     return [{"level": float(a), "samples": len(wide), "median_du_mm": float(wide[a].median())}
             for a in wide.columns]
+
+
+def paired_medians(tables: list[pd.DataFrame], parameter: str) -> list[dict[str, Any]]:
+    """Median du per level over the seeds finished at every level (`paired_du`)."""
+    return _level_medians(paired_du(tables, parameter))
 
 
 def paired_amplitude_interval(tables: list[pd.DataFrame], parameter: str, target_du_mm: float,
@@ -116,9 +121,7 @@ def paired_amplitude_interval(tables: list[pd.DataFrame], parameter: str, target
     rng = np.random.default_rng(seed)
     found = []
     for _ in range(resamples):
-        picked = wide.iloc[rng.integers(0, len(wide), len(wide))]
-        rows = [{"level": float(a), "median_du_mm": float(picked[a].median())} for a in wide.columns]
-        found.append(amplitude_for(rows, target_du_mm))
+        found.append(amplitude_for(_level_medians(wide.iloc[rng.integers(0, len(wide), len(wide))]), target_du_mm))
     found = [a for a in found if not math.isnan(a)]
     if not found:
         return math.nan, math.nan
