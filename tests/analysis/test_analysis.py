@@ -151,3 +151,22 @@ def test_a_joint_that_slid_below_its_friction_cap_is_flagged_as_sliding_during_t
     assert slip_during_moves({**moves, "max_slip_mm": 0.0001}) is None  # elastic shear only
     assert slip_during_moves({**moves, "max_friction_use": 1.0}) is None  # sliding at the cap is mechanics
     assert slip_during_moves({}) is None
+
+
+def test_an_accepted_relaxation_that_moved_a_block_far_is_flagged_as_a_jump():
+    """Spreading at kn 10000 with a 5 mm runaway distance: after 2.5 mm increments the relaxations
+    moved blocks by about as much again and the hinges wandered off the rigid path; set 1's soft joints
+    relax by 0.38 mm after 2.5 mm, and by 0.66 mm at 46.0 mm next to its fold at 47.13 mm, which is the
+    path's own (docs/numerics.md)."""
+    from yadearch.analysis.mechanism import relaxation_jump
+
+    jumped = {"du_mm": 27.91, "relaxations": {"runaway_mm": 5.0, "delta_mm": [1.0, 4.75, 17.25, 27.875],
+                                              "increment_mm": [1.0, 2.25, 2.5, 0.625],
+                                              "move_mm": [0.07, 1.17, 2.69, 1.5]}}
+    warning = relaxation_jump(jumped)
+    assert warning is not None and "to 17.25 mm moved a block 2.69 mm (2 such" in warning and "\n" not in warning
+    soft = {"du_mm": 47.13, "relaxations": {"runaway_mm": 1.0, "delta_mm": [7.25, 40.0, 46.0, 47.09],
+                                            "increment_mm": [2.5, 2.5, 0.625, 0.156],
+                                            "move_mm": [0.38, 0.3, 0.66, 0.06]}}
+    assert relaxation_jump(soft) is None
+    assert relaxation_jump({}) is None  # a run from before the record

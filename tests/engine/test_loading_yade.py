@@ -48,6 +48,21 @@ def test_every_accepted_state_of_the_loading_is_a_static_equilibrium(base_run):
     assert (path["left_Rx_N"] + path["right_Rx_N"]).abs().max() < 0.01 * path["left_Rx_N"].abs().min()
 
 
+def test_the_loading_follows_its_path_instead_of_jumping_between_states(base_run):
+    """Quasi-static: short of the fold, the blocks relax into place after each accepted move by much
+    less than the move; toward du the equilibrium moves faster with the support (a jump to another
+    branch is flagged, docs/numerics.md)."""
+    from yadearch.analysis.mechanism import JUMP_FRACTION, NEAR_LIMIT, relaxation_jump
+
+    summary, _ = base_run
+    table = pd.DataFrame({k: summary["relaxations"][k] for k in ("delta_mm", "increment_mm", "move_mm")})
+    assert len(table) >= summary["equilibria"] and (table["increment_mm"] > 0).all()
+    far = table[table["delta_mm"] <= NEAR_LIMIT * summary["du_mm"]]
+    assert (far["move_mm"] < JUMP_FRACTION * far["increment_mm"]).all(), table.to_dict("list")
+    assert table["move_mm"].max() > far["move_mm"].max()
+    assert relaxation_jump(summary) is None
+
+
 def test_every_accepted_state_is_stable_and_the_last_one_near_the_limit_point(base_run):
     """The tangent stiffness of the free blocks is positive definite at every equilibrium of the
     loading, and its smallest eigenvalue falls toward zero as du (a fold of the path) approaches."""

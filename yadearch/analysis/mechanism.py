@@ -12,6 +12,9 @@ from yadearch.analysis.tracking import HingeTrack, sequence
 
 CAP_TOLERANCE = 0.05  # |shear| >= (1 - this) tan(phi) |normal| counts as at the Coulomb cap
 SLIP_THRESHOLD_MM = 0.2  # tangential slip that is sliding, not elastic shear (ks) deformation
+JUMP_FRACTION = 0.5  # a relaxation moving a block this fraction of its increment (and of runaway_mm)...
+JUMP_FLOOR = 0.1  # ...and at least this fraction of runaway_mm is a jump to another state
+NEAR_LIMIT = 0.9  # beyond this fraction of du the path's states move fast (a fold): no jump is judged there
 HINGE_COUNT_NAMES = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
 
 
@@ -37,6 +40,28 @@ def slip_during_moves(friction: dict, slip_threshold_mm: float = SLIP_THRESHOLD_
             f"used more than {use:.2f} of any joint's friction: it slid while the support moved (the moves' "
             "inertia is then part of du: check with a lower numerics.support_acceleration_mm_per_s2) or "
             "while the joint was open")
+
+
+def relaxation_jump(summary: dict, fraction: float = JUMP_FRACTION, near_limit: float = NEAR_LIMIT) -> str | None:
+    """A warning when, short of `near_limit` x du, the relaxation of an accepted increment moved a
+    block by at least `fraction` of the increment (and JUMP_FLOOR of the runaway distance; summary.json's
+    `relaxations`): the arch did not follow the support but jumped to that state (a snap to another
+    branch), so du may depend on `runaway_mm` and on the increments (docs/numerics.md). Close to du
+    the equilibrium moves fast with the support (the fold): larger relaxations there are the path's."""
+    relaxations = summary.get("relaxations") or {}
+    end = summary.get("du_mm") or summary.get("last_equilibrium_mm")
+    if not relaxations.get("move_mm") or end is None:
+        return None
+    runaway_mm = relaxations["runaway_mm"]
+    jumps = [(move, delta, step) for delta, step, move in
+             zip(relaxations["delta_mm"], relaxations["increment_mm"], relaxations["move_mm"])
+             if delta <= near_limit * end and move >= max(fraction * step, JUMP_FLOOR * runaway_mm)]
+    if not jumps:
+        return None
+    move, delta, step = max(jumps)
+    return (f"the relaxation after the {step:.2f} mm increment to {delta:.2f} mm moved a block {move:.2f} mm "
+            f"({len(jumps)} such before {near_limit:g} du): the arch jumped rather than followed its path, so "
+            "du may depend on numerics.runaway_mm and the increments")
 
 
 def sliding_joints(normal_N: np.ndarray, shear_N: np.ndarray, friction_deg: float,

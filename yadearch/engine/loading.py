@@ -29,6 +29,10 @@ class EquilibriumPath:
         self._records: list[tuple[int, int]] = []  # first series and joints row of each
         self._failures: dict[float, dict] = {}  # support displacement -> state a failure ended in
         self.last_equilibrium_hinges: list[dict] = []
+        # how far the relaxation of each accepted increment moved the blocks (mm), for summary.json
+        self.relaxations: dict = {"runaway_mm": runner.num.runaway_mm, "delta_mm": [], "increment_mm": [],
+                                  "move_mm": []}
+        self._start = 0.0  # where the last increment started (m)
         num, mm = runner.num, units.mm
         self.settings = PathSettings(
             first_increment=mm(num.first_increment_mm),
@@ -43,6 +47,7 @@ class EquilibriumPath:
         if not self._at_accepted:
             self.runner.restore(self._accepted[-1])
         self.runner.stage = "increment"
+        self._start = self.runner.delta()
         # every move lasts as long as the largest increment's: the short moves near collapse are
         # gentle, and the arch ends them close to its equilibrium configuration
         fraction = abs(target - self.runner.delta()) / self.settings.max_increment
@@ -56,7 +61,11 @@ class EquilibriumPath:
         return verdict
 
     def accept(self) -> None:
-        """The state the last increment relaxed to is the new equilibrium state: keep and record it."""
+        """The state the last increment relaxed to is the new equilibrium state: keep and record it,
+        with how far its relaxation moved the blocks (a quasi-static step barely moves them)."""
+        self.relaxations["delta_mm"].append(units.to_mm(self.runner.delta()))
+        self.relaxations["increment_mm"].append(units.to_mm(self.runner.delta() - self._start))
+        self.relaxations["move_mm"].append(units.to_mm(self.runner.hold_move))
         self._accepted.append(self.runner.snapshot())
         self._at_accepted = True
         self.runner.stage = "equilibrium"

@@ -55,6 +55,7 @@ class Runner:
         self.total_steps = 0  # every step computed, including those a restore later went back on
         self._last_progress = time.time()
         self.weight = 0.0
+        self.hold_move = 0.0  # the largest block displacement of the last hold (m)
 
     @property
     def stage(self) -> str:
@@ -135,9 +136,6 @@ class Runner:
             raise RunFailedError(f"NaN in block positions at step {O.iter} ({self.stage})")
         return pos
 
-    def _check_finite(self) -> None:
-        self._voussoir_positions()
-
     # ---- stages ---------------------------------------------------------------------------
     def selfweight(self) -> dict:
         """Apply gravity gradually (over `gravity_ramp_periods` joint periods, so that a soft arch
@@ -160,7 +158,7 @@ class Runner:
             fraction = min(1.0, (O.iter - start) / ramp_steps)
             newton.gravity = tuple(gravity * fraction)
             self._run_steps(CHECK_EVERY_STEPS)
-            self._check_finite()
+            self._voussoir_positions()  # raises on a NaN
             unbalanced = self._unbalanced()
             self._progress(f"gravity {fraction:.0%}, unbalanced {unbalanced:.2e}")
             sag = float(np.max(np.abs(body_states(self.scene)[0] - self.scene.pos0)))
@@ -222,9 +220,11 @@ class Runner:
         tolerance = tolerance if tolerance is not None else self.num.equilibrium_tolerance
         start_pos = self._voussoir_positions()
         start = O.iter
+        self.hold_move = 0.0
         while O.iter - start < max_steps:
             self._run_steps(CHECK_EVERY_STEPS)
             moved = np.linalg.norm(self._voussoir_positions() - start_pos, axis=1).max()
+            self.hold_move = max(self.hold_move, moved)
             self._progress(f"holding: max block move {units.to_mm(moved):.3f} mm")
             if moved > runaway:
                 return RUNAWAY
@@ -254,7 +254,7 @@ class Runner:
         self._set_damping(self.num.damping)
         while not self.driver.reached() or self.driver.current_speed > 0.0:
             self._run_steps(CHECK_EVERY_STEPS // 5)
-            self._check_finite()
+            self._voussoir_positions()  # raises on a NaN
 
     def run(self) -> dict:
         """All stages, then YADE's simulation thread stopped; returns the summary dict (records are
@@ -274,7 +274,7 @@ class Runner:
         lo = units.to_mm(path.lower)
         summary.update(increments=len(path.steps), equilibria=len(path.equilibria),
                        last_equilibrium_mm=lo, hinges_last_equilibrium=loading.last_equilibrium_hinges,
-                       friction=dict(self.recorder.friction))
+                       friction=dict(self.recorder.friction), relaxations=loading.relaxations)
         if path.collapsed:
             hinges = loading.collapse_state(path.upper)
             du, hi = units.to_mm(path.du), units.to_mm(path.upper)
@@ -292,12 +292,8 @@ class Runner:
         summary["hinges_at_collapse"] = [{"interface": h.interface, "side": h.side} for h in hinges] \
             if summary["collapsed"] else []
         summary["hinges_detail"] = [h.to_json() for h in hinges]
-        summary["steps"] = self.total_steps
-        summary["steps_by_stage"] = dict(self.steps_by_stage)
-        summary["dt_s"] = O.dt
         wall = time.time() - self.wall0
-        summary["wall_s"] = wall
-        summary["steps_per_s"] = self.total_steps / wall if wall > 0 else None
-        summary["profile"] = self.clock.profile(wall)
+        summary.update(steps=self.total_steps, steps_by_stage=dict(self.steps_by_stage), dt_s=O.dt, wall_s=wall,
+                       steps_per_s=self.total_steps / wall if wall > 0 else None, profile=self.clock.profile(wall))
         self._progress("done", force=True)
         return summary
