@@ -93,6 +93,21 @@ def test_two_joints_sheared_differently_keep_their_own_shear_forces_up_to_coulom
     assert again.shear_force[0] == pytest.approx(forces.shear_force[0] * 101, rel=1e-9)
 
 
+def test_a_joint_slides_only_as_far_as_its_faces_move():
+    """Plastic slip is sliding, never more than the step's relative motion: a joint whose normal force
+    falls under a held shear force releases the excess without sliding (a hinge opening to a sliver
+    of contact once reported 38.7 mm of slip, docs/numerics.md)."""
+    table, pos = _pairs()
+    pos[1, 1] -= 1e-7  # a light contact: cap 1.8 N
+    held = np.array([50.0])  # shear force left from a heavier contact
+    still = _evaluate(table, pos, shear=held)
+    assert still.shear_force[0] == pytest.approx(TAN_PHI * still.normal_force[0], rel=1e-12)
+    assert still.plastic_slip[0] == 0.0
+    vel = np.array([[0.0, 0.0], [-1e-3, 0.0]])  # 1 nm a step along the shear force: slides 1 nm
+    sliding = _evaluate(table, pos, vel=vel, shear=held)
+    assert sliding.plastic_slip[0] == pytest.approx(1e-9, rel=1e-9)
+
+
 def test_joint_forces_are_action_and_reaction():
     table, pos = _pairs()
     angle = 1e-4

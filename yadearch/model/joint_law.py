@@ -173,10 +173,12 @@ def _joint_kernel(left, right, left_intrados, right_intrados, normal0, along0, l
         slip_y = vel[rb, 1] + ang_vel[rb] * arm_rx - vel[lb, 1] - ang_vel[lb] * arm_lx
         cap = tan_friction * normal
         stiffness = ks_depth * touching_length
-        trial = shear[j] - stiffness * ((slip_x * ex + slip_y * ey) * dt)
+        step_slip = (slip_x * ex + slip_y * ey) * dt
+        trial = shear[j] - stiffness * step_slip
         tangential = min(max(trial, -cap), cap)
-        if abs(trial) > cap:
-            plastic_slip[j] = (abs(trial) - cap) / (stiffness if stiffness > 0.0 else 1.0)
+        if abs(trial) > cap:  # sliding, at most the step's relative motion: a cap that falls with
+            # the normal force releases shear without any sliding
+            plastic_slip[j] = min((abs(trial) - cap) / (stiffness if stiffness > 0.0 else 1.0), abs(step_slip))
         fx, fy = normal * nx + tangential * ex, normal * ny + tangential * ey  # on the right block
         normal_force[j], shear_force[j], compressed[j] = normal, tangential, touching_length
         point[j, 0], point[j, 1] = px, py
