@@ -75,6 +75,27 @@ def test_semicircle_minimum_thickness_is_milankovitch(n_voussoirs):
     assert not stands(semicircle(0.98 * 0.1075))
 
 
+def test_semicircle_thrust_at_its_least_thickness_is_the_published_one():
+    # Cocchetti & Rizzi, Frattura ed Integrita Strutturale 51 (2020) 356-375, eq. 4: at the least
+    # thickness t/R = 0.107426 (radial joints, no sliding) the thrust is h = H / (w R) = 0.621772,
+    # w the weight per unit length of the centre line; just above it the admissible thrust is unique.
+    from yadearch.solve.limit_lp import solve_statics
+    from yadearch.solve.limit_result import interface_forces
+    from yadearch.solve.rigid import at_rest, rigid_arch
+
+    radius, t = 1000.0, 0.1076 * 1000.0
+    case = arch_case(n_voussoirs=360, embrace_deg=180.0, internal_radius_mm=radius - t / 2, thickness_mm=t,
+                     friction_deg=60.0)
+    arch = rigid_arch(case)
+    statics = solve_statics(arch, at_rest(arch))
+    assert statics.feasible
+    _, reactions = interface_forces(arch, statics)
+    weight = reactions["left"][1] + reactions["right"][1]
+    thrust = abs(reactions["left"][0])
+    assert thrust == pytest.approx(abs(reactions["right"][0]), rel=1e-6)
+    assert thrust / (weight / math.pi) == pytest.approx(0.621772, rel=5e-3)
+
+
 @pytest.mark.parametrize("t_over_r", [0.108, 0.11])
 def test_semicircle_spreading_hinges_where_the_minimum_thrust_line_touches(t_over_r):
     # Cocchetti & Rizzi, Frattura ed Integrita Strutturale 51 (2020) 356-375: at Milankovitch's limit
