@@ -12,7 +12,7 @@ from yadearch.analysis.tracking import HingeTrack, sequence
 
 CAP_TOLERANCE = 0.05  # |shear| >= (1 - this) tan(phi) |normal| counts as at the Coulomb cap
 SLIP_THRESHOLD_MM = 0.2  # tangential slip that is sliding, not elastic shear (ks) deformation
-JUMP_FRACTION = 0.5  # a relaxation moving a block this fraction of its increment (and of runaway_mm)...
+JUMP_FRACTION = 0.5  # a relaxation moving a block this fraction of its increment...
 JUMP_FLOOR = 0.1  # ...and at least this fraction of runaway_mm is a jump to another state
 NEAR_LIMIT = 0.9  # beyond this fraction of du the path's states move fast (a fold): no jump is judged there
 HINGE_COUNT_NAMES = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
@@ -62,6 +62,12 @@ def relaxation_jump(summary: dict, fraction: float = JUMP_FRACTION, near_limit: 
     return (f"the relaxation after the {step:.2f} mm increment to {delta:.2f} mm moved a block {move:.2f} mm "
             f"({len(jumps)} such before {near_limit:g} du): the arch jumped rather than followed its path, so "
             "du may depend on numerics.runaway_mm and the increments")
+
+
+def run_warnings(summary: dict) -> list[str]:
+    """The warnings a finished run's summary.json calls for: slip during the moves, jumps in the path."""
+    warnings = (slip_during_moves(summary.get("friction") or {}), relaxation_jump(summary))
+    return [w for w in warnings if w]
 
 
 def sliding_joints(normal_N: np.ndarray, shear_N: np.ndarray, friction_deg: float,

@@ -10,7 +10,7 @@ from pathlib import Path
 import click
 
 from yadearch import api
-from yadearch.analysis.mechanism import relaxation_jump, slip_during_moves
+from yadearch.analysis.mechanism import run_warnings
 from yadearch.case.config import parameter_docs, preset
 from yadearch.cli.campaigns import calibrate, robustness, sweep
 from yadearch.cli.montecarlo import montecarlo
@@ -28,9 +28,8 @@ def _report_summary(out: Path) -> None:
     click.echo(f"{summary['name']}: du = {'no collapse' if du is None else f'{du:.2f} mm'}, "
                f"hinges at collapse {hinges or '-'}, {summary['steps']} steps, "
                f"{summary['wall_s']:.0f} s -> {out}")
-    for warning in (slip_during_moves(summary.get("friction") or {}), relaxation_jump(summary)):
-        if warning:
-            click.echo(f"warning: {warning}")
+    for warning in run_warnings(summary):
+        click.echo(f"warning: {warning}")
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})

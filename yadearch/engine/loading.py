@@ -50,7 +50,7 @@ class EquilibriumPath:
         self._start = self.runner.delta()
         # every move lasts as long as the largest increment's: the short moves near collapse are
         # gentle, and the arch ends them close to its equilibrium configuration
-        fraction = abs(target - self.runner.delta()) / self.settings.max_increment
+        fraction = abs(target - self._start) / self.settings.max_increment
         self.runner.driver.set_speed(self.runner.full_speed * min(1.0, fraction))
         self.runner.move_to(target)
         self.runner.stage = "relax"

@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from yadearch.analysis import RunAnalysis, analyse_run, load_run
-from yadearch.analysis.mechanism import relaxation_jump, slip_during_moves
+from yadearch.analysis.mechanism import run_warnings
 from yadearch.analysis.tracking import format_interfaces
 from yadearch.atomic import write_atomically, write_text_atomically
 from yadearch.case import reference
@@ -190,9 +190,8 @@ def run_section(reported: ReportedRun) -> list[str]:
                                                 + (f", slip {s.slip_mm:.2f} mm)" if s.slip_mm is not None else ")")
                                                 for s in analysis.sliding) or "none"),
              ""]
-    for warning in (slip_during_moves(summary.get("friction") or {}), relaxation_jump(summary)):
-        if warning:
-            lines += [f"**Warning:** {warning}.", ""]
+    for warning in run_warnings(summary):
+        lines += [f"**Warning:** {warning}.", ""]
     own = [(t.interface, t.side) for t in sorted(analysis.tracks, key=lambda t: t.interface)]
     if own != [(h["interface"], h["side"]) for h in summary["hinges_at_collapse"]] and summary.get("collapsed"):
         lines += [f"**Note:** the analysis finds hinges {' '.join(f'{k}{s}' for k, s in own)} at collapse, "
