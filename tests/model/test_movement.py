@@ -62,6 +62,18 @@ def test_both_supports_move_as_mirror_images():
     assert move.left.rotation == -move.right.rotation
 
 
+@pytest.mark.parametrize("loading, itself", [
+    ({"settlement_direction_deg": 0.0}, True), ({"settlement_direction_deg": 180.0}, True),
+    ({"moving_support": "both"}, True), ({}, False), ({"settlement_direction_deg": -45.0}, False),
+    ({"support_motion": "rotation", "rotation_pivot_dy_mm": -100.0}, False),
+    ({"support_motion": "path", "path_mm_mrad": [[10.0, 0.0, 0.0], [30.0, 0.0, 0.0]]}, True),
+    ({"support_motion": "path", "path_mm_mrad": [[0.0, -20.0, 0.0], [60.0, -20.0, 0.0]]}, False)])
+def test_a_movement_is_its_own_mirror_image_only_when_level_or_symmetric(loading, itself):
+    """A level slide of one support mirrors to the same slide plus a rigid shift of the whole arch;
+    anything vertical or turning mirrors to another movement (the keystone's tie then matters)."""
+    assert movement(**loading).mirror_is_itself is itself
+
+
 def test_the_rates_at_the_origin_move_every_support_point_as_the_placement_does():
     """v(point) = v_origin + omega z x point: the generalised velocity of the limit analysis."""
     ref = movement(support_motion="rotation", rotation_pivot_dx_mm=30.0, rotation_pivot_dy_mm=-120.0).reference

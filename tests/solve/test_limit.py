@@ -234,6 +234,18 @@ def test_a_turning_support_and_its_mirror_image_collapse_alike_on_an_even_count(
     assert odd.mirror_du_rigid_mm == pytest.approx(mirrored.du_rigid_mm, abs=1e-9)
 
 
+def test_an_inclined_movement_solves_both_branches_of_the_keystone_tie(coarse):
+    """Down and outward at 45 deg the mirror image is another movement, so the tie at the keystone
+    of an odd count is solved both ways (the left support moving the mirrored way is the other
+    branch); a level spreading is its own mirror image and is solved once."""
+    case, _ = coarse
+    inclined = limit_analysis(case.with_overrides({"settlement_direction_deg": -45.0}))
+    other = limit_analysis(case.with_overrides({"settlement_direction_deg": -45.0, "moving_support": "left"}))
+    assert inclined.mirror_du_rigid_mm == pytest.approx(other.du_rigid_mm, abs=1e-9)
+    assert other.mirror_du_rigid_mm == pytest.approx(inclined.du_rigid_mm, abs=1e-9)
+    assert limit_analysis(case.with_overrides({"settlement_direction_deg": 0.0})).mirror_du_rigid_mm is None
+
+
 def test_limit_does_not_depend_on_the_step(coarse):
     case, result = coarse
     coarser = limit_analysis(case, step_mm=2.0)

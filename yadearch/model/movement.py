@@ -72,6 +72,11 @@ class SupportMotion:
         return self.rotation == 0.0
 
     @property
+    def level(self) -> bool:
+        """The support slides horizontally without turning."""
+        return self.rotation == 0.0 and abs(float(self.translation[1])) < SAME_DIRECTION
+
+    @property
     def corners(self) -> tuple[float, ...]:
         """Path lengths where the direction changes: none."""
         return ()
@@ -141,6 +146,15 @@ class Movement:
     def uniform(self) -> bool:
         """Every moving support translates at one constant velocity."""
         return all(m is None or m.uniform for m in (self.left, self.right))
+
+    @property
+    def mirror_is_itself(self) -> bool:
+        """The mirror image about the arch's axis is this movement up to a rigid translation of the
+        whole arch (both supports moving, each the other's mirror image, or one sliding level): a
+        tie the keystone breaks either way then cannot change the response."""
+        if self.left is not None and self.right is not None:
+            return True
+        return self.reference.level
 
     @property
     def horizontal_share(self) -> float:

@@ -66,6 +66,11 @@ class PathMotion:
         return False
 
     @property
+    def level(self) -> bool:
+        """The springing point moves only horizontally and the support never turns."""
+        return bool(np.all(np.abs(self.vertices[:, 1]) < ON_PATH_M) and self.rotation == 0.0)
+
+    @property
     def horizontal_share(self) -> float:
         """The largest horizontal component of the springing point's unit direction over the segments."""
         steps = np.diff(self.vertices, axis=0)

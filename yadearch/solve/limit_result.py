@@ -73,8 +73,9 @@ class LimitResult:
     tolerance_mm: float
     n_lp: int
     wall_s: float
-    # the mirror image's du (moving support swapped): a turning support on an odd number of voussoirs
-    # meets a tie between the keystone's two joints, which the march breaks toward the left one
+    # the mirror image's du (moving support swapped): on an odd number of voussoirs a support that
+    # turns or moves vertically meets a tie between the keystone's two joints, which the march
+    # breaks toward the left one
     mirror_du_rigid_mm: float | None = None
     mirror_collapse_mode: str | None = None  # the mirror image's collapse_mode, "failed: why", None: not solved
 
