@@ -21,6 +21,10 @@ if HAS_YADE:
 COARSE = {"n_voussoirs": 15, "kn_N_per_mm3": 0.25, "progress_every_s": 1e9}
 PATH_MM = 3.0
 PLACE_TOLERANCE_M = 1e-9  # the supports move by velocity x dt: their placement drifts by round-off only
+STIFF_KN = 300.0  # N/mm3: joints stiff enough to stand for rigid blocks
+PLACED_AT_MM = 6.0  # support path where the rigid state is put in the scene (every rigid hinge beyond 4 mrad)
+HINGE_MRAD = 2.0  # a relative turn beyond this is a hinge (the runs' hinge_rotation_mrad)
+STAYS_MM = 0.05  # a released state that moves less than this has stayed where it was put
 
 
 def support_placement(state, pos0: np.ndarray, ori0) -> tuple[float, np.ndarray]:
@@ -85,5 +89,31 @@ def test_a_support_on_a_prescribed_path_turns_its_corners_where_the_table_puts_t
         springing = rotate(motion.springing, angle) + shift - motion.springing
         assert springing == pytest.approx(units.mm(np.array(rows[-1][:2])), abs=PLACE_TOLERANCE_M)
         assert angle == pytest.approx(units.mrad(rows[-1][2]), abs=1e-9)
+    finally:
+        runner.close()
+
+
+@pytest.mark.parametrize("mirrored", [False, True])
+def test_the_rigid_analysis_state_is_an_equilibrium_of_stiff_joints(mirrored):
+    """Put where the rigid analysis has it 6 mm down and out at 45 deg, on either branch of the
+    keystone's tie, an arch of stiff joints stays there: released from rest it moves by far less
+    than a millimetre and turns on the rigid hinges (docs/validation.md)."""
+    from yadearch.engine.runner import Runner
+    from yadearch.engine.scene_state import place_voussoirs
+    from yadearch.solve.path import STABLE
+    from yadearch.solve.pose import rigid_pose
+
+    case = preset("set2").with_overrides({**COARSE, "kn_N_per_mm3": STIFF_KN, "settlement_direction_deg": -45.0})
+    centroids, turns = rigid_pose(case, PLACED_AT_MM, mirrored)
+    rigid_hinges = set(np.flatnonzero(np.abs(np.diff(turns)) > units.mrad(HINGE_MRAD)) + 1)
+    runner = Runner(case, log=lambda line: None)
+    try:
+        runner.selfweight()
+        runner.move_to(units.mm(PLACED_AT_MM))
+        place_voussoirs(runner.scene, centroids, turns)
+        assert runner.hold() == STABLE
+        assert runner.hold_move < units.mm(STAYS_MM)
+        _, hinges = runner.recorder.joint_snapshot()
+        assert {h.interface for h in hinges} == rigid_hinges
     finally:
         runner.close()

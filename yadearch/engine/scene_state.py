@@ -12,8 +12,10 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from yadearch.engine.driver import SupportDriver
-    from yadearch.engine.scene import ContactModel
+    from yadearch.engine.scene import ArchScene, ContactModel
 
 
 def capture(contacts: ContactModel, driver: SupportDriver) -> dict:
@@ -38,3 +40,18 @@ def put_back(snapshot: dict, contacts: ContactModel, driver: SupportDriver) -> N
     contacts.restore(snapshot["contacts"])
     driver.target = snapshot["target"]
     driver.current_speed = snapshot["speed"]
+
+
+def place_voussoirs(scene: ArchScene, centroids: np.ndarray, rotations: np.ndarray) -> None:
+    """Put every voussoir (not the supports) at rest at `centroids` (n_blocks, 2; m) turned by
+    `rotations` (n_blocks; rad about z from the undeformed pose), e.g. a rigid analysis's placement:
+    a hold then tests whether that configuration is an equilibrium of the scene's joints."""
+    from yade import O, Quaternion, Vector3
+
+    for k in range(1, len(scene.body_ids) - 1):
+        state = O.bodies[scene.body_ids[k]].state
+        w, x, y, z = scene.ori0[k]
+        state.pos = Vector3(float(centroids[k][0]), float(centroids[k][1]), float(scene.pos0[k][2]))
+        state.ori = Quaternion(Vector3(0.0, 0.0, 1.0), float(rotations[k])) * Quaternion(w, x, y, z)
+        state.vel, state.angVel = Vector3(0.0, 0.0, 0.0), Vector3(0.0, 0.0, 0.0)
+    scene.contacts.stopped()
