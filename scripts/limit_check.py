@@ -59,8 +59,8 @@ def _branch(case: ArchCase, mirrored: bool) -> tuple[LimitResult, LimitResult, s
     direct one (the keystone's tie broken toward its other joint)."""
     moving = case.loading.moving_support
     solved = case.with_overrides({"moving_support": MIRRORED[moving]}) if mirrored else case
-    survived = limit_analysis(solved)
-    limit = limit_analysis(solved, max_snap_mm=case.numerics.runaway_mm)
+    survived = limit_analysis(solved, mirror=not mirrored)  # the direct branch tells whether a mirror exists
+    limit = limit_analysis(solved, max_snap_mm=case.numerics.runaway_mm, mirror=False)
     mirror = case.geometry.n_voussoirs + 2 if mirrored else None
     followed = [_label(h.interface, h.side, mirror) for h in limit.hinge_history if h.to_mm is None]
     chain = [_label(int(h[:-1]), h[-1], mirror) for h in limit.collapse_hinges]

@@ -228,18 +228,20 @@ def _bisect(ok, high: float, width: float) -> float:
 
 def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
                    tolerance_mm: float = DEFAULT_TOLERANCE_MM,
-                   max_settlement_mm: float | None = None, max_snap_mm: float | None = None) -> LimitResult:
+                   max_settlement_mm: float | None = None, max_snap_mm: float | None = None,
+                   mirror: bool = True) -> LimitResult:
     """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible
     equilibrium, its hinge history and its last admissible state (see the module docstring). A hinge
     snap that moves a block further than `max_snap_mm` is the collapse (default: every snap that
     ends in equilibrium is survived; docs/validation.md). On an odd number of voussoirs a movement
     whose mirror image differs (a support that turns or moves vertically) is solved mirrored too
-    (`mirror_du_rigid_mm`): the keystone's two joints tie, and each branch has its own limit."""
+    (`mirror_du_rigid_mm`; `mirror` false: not): the keystone's two joints tie, and each branch has
+    its own limit."""
     result, arch = _solve(case, step_mm, tolerance_mm, max_settlement_mm, max_snap_mm)
     moving = case.loading.moving_support
     symmetric = amplitudes(case).perfect_dimensions  # voussoirs with their own sizes have no mirror image
     tie_matters = not arch.movement.mirror_is_itself and case.geometry.n_voussoirs % 2
-    if not (symmetric and tie_matters and moving in MIRRORED):
+    if not (mirror and symmetric and tie_matters and moving in MIRRORED):
         return result
     try:
         mirrored, _ = _solve(case.with_overrides({"moving_support": MIRRORED[moving]}), step_mm, tolerance_mm,

@@ -19,7 +19,7 @@ def rigid_pose(case: ArchCase, at_mm: float, mirrored: bool = False) -> tuple[np
     other support moving the mirrored way) and reflected back."""
     moving = case.loading.moving_support
     solved = case.with_overrides({"moving_support": MIRRORED[moving]}) if mirrored else case
-    result = limit_analysis(solved, max_settlement_mm=at_mm)
+    result = limit_analysis(solved, max_settlement_mm=at_mm, mirror=False)
     turns = np.array(result.rotation_rad)
     cos, sin = np.cos(turns), np.sin(turns)
     start = rigid_arch(solved).centroid0
