@@ -19,7 +19,8 @@ from pathlib import Path
 from yadearch.atomic import write_text_atomically
 from yadearch.case.config import ArchCase, load_case
 from yadearch.results.rundir import CASE_FILE, hinge_list, read_summary
-from yadearch.solve.limit import MIRRORED, limit_analysis
+from yadearch.model.hinges import mirror_hinge_labels
+from yadearch.solve.limit import limit_analysis, mirror_image
 from yadearch.solve.limit_result import LimitResult
 from yadearch.studies.robustness import same_hinge_set
 
@@ -57,19 +58,16 @@ def _branch(case: ArchCase, mirrored: bool) -> tuple[LimitResult, LimitResult, s
     the run's runaway distance, the mechanism followed to that limit and its collapse chain (hinges
     in the case's own numbering) and the branch's name. The mirrored branch is the mirror image's
     direct one (the keystone's tie broken toward its other joint)."""
-    moving = case.loading.moving_support
-    solved = case.with_overrides({"moving_support": MIRRORED[moving]}) if mirrored else case
+    solved = mirror_image(case) if mirrored else case
     survived = limit_analysis(solved, mirror=not mirrored)  # the direct branch tells whether a mirror exists
     limit = limit_analysis(solved, max_snap_mm=case.numerics.runaway_mm, mirror=False)
-    mirror = case.geometry.n_voussoirs + 2 if mirrored else None
-    followed = [_label(h.interface, h.side, mirror) for h in limit.hinge_history if h.to_mm is None]
-    chain = [_label(int(h[:-1]), h[-1], mirror) for h in limit.collapse_hinges]
+    followed = [f"{h.interface}{h.side}" for h in limit.hinge_history if h.to_mm is None]
+    chain = list(limit.collapse_hinges)
+    if mirrored:
+        last_interface = case.geometry.n_voussoirs + 1
+        followed, chain = (mirror_hinge_labels(labels, last_interface) for labels in (followed, chain))
     return (survived, limit, _sorted(followed), _sorted(chain),
             "mirrored" if mirrored else ("direct" if survived.mirror_du_rigid_mm is not None else "-"))
-
-
-def _label(interface: int, side: str, mirror: int | None) -> str:
-    return f"{interface if mirror is None else mirror - interface}{side}"
 
 
 def _sorted(labels: list[str]) -> str:

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from yadearch.model.hinges import hinge_rotation, hinges_at, same_hinges
+from yadearch.model.hinges import hinge_rotation, hinges_at, mirror_hinge_labels, same_hinges
 
 T = 0.024
 
@@ -42,3 +42,9 @@ def test_a_hinge_whose_peak_moves_within_its_spread_is_the_same_hinge():
     assert not same_hinges(default, default[:1])
     assert not same_hinges(default, [default[0], {**default[1], "side": "E"}])
     assert same_hinges([{"interface": 9, "side": "I"}], [{"interface": 9, "side": "I"}])  # no spread kept
+
+
+def test_mirror_labels_face_each_other_across_the_crown_and_keep_their_pivot_side():
+    # 55 voussoirs: interfaces 1..56; the keystone's joints 28 and 29 face each other
+    assert mirror_hinge_labels(["1E", "9I", "28E", "47I"], 56) == ["10I", "29E", "48I", "56E"]
+    assert mirror_hinge_labels(mirror_hinge_labels(["8I", "28E", "46I"], 56), 56) == ["8I", "28E", "46I"]

@@ -14,6 +14,7 @@ import pytest
 from yadearch.case.config import ArchCase, preset
 from yadearch.cli.commands import main
 from yadearch.model.geometry import block_volume, segmental_arch
+from yadearch.model.hinges import mirror_hinge_labels
 from yadearch.solve.limit import limit_analysis, stands
 from yadearch.solve.rigid import LimitError
 
@@ -243,6 +244,8 @@ def test_an_inclined_movement_solves_both_branches_of_the_keystone_tie(coarse):
     other = limit_analysis(case.with_overrides({"settlement_direction_deg": -45.0, "moving_support": "left"}))
     assert inclined.mirror_du_rigid_mm == pytest.approx(other.du_rigid_mm, abs=1e-9)
     assert other.mirror_du_rigid_mm == pytest.approx(inclined.du_rigid_mm, abs=1e-9)
+    last_interface = case.geometry.n_voussoirs + 1
+    assert inclined.mirror_collapse_hinges == tuple(mirror_hinge_labels(other.collapse_hinges, last_interface))
     assert limit_analysis(case.with_overrides({"settlement_direction_deg": 0.0})).mirror_du_rigid_mm is None
 
 

@@ -7,7 +7,15 @@ import pandas as pd
 import pytest
 
 from yadearch.plotting.capacity import capacity_polar_figure, reaction_curves_figure
-from yadearch.studies.capacity import DIRECTIONS_DEG, du_components, map_markdown, map_table, reaction_curve
+from yadearch.studies.capacity import (
+    DIRECTIONS_DEG,
+    RigidLimit,
+    du_components,
+    map_markdown,
+    map_table,
+    reaction_curve,
+    with_rigid,
+)
 
 
 def test_the_directions_cover_the_half_plane_below_the_horizontal_every_15_degrees():
@@ -42,22 +50,34 @@ def _results() -> pd.DataFrame:
         "folder": ["a", "b", "c"]})
 
 
+RIGID = {0.0: RigidLimit(27.9, "9I 28E 47I 56E"), -90.0: RigidLimit(113.5, "1E 8I 32E 56E", 113.5, "1E 25I 49E 56E"),
+         -180.0: RigidLimit(None, "")}
+
+
 def test_the_map_puts_each_direction_beside_its_rigid_limit_and_keeps_failed_runs_visible():
-    rigid = {0.0: (27.9, "9I 28E 47I 56E"), -90.0: (113.5, "1E 8I 32E 56E"), -180.0: (None, "")}
-    table = map_table("set2", _results(), rigid)
+    table = map_table("set2", _results(), RIGID)
     assert table["direction_deg"].tolist() == [0.0, -90.0, -180.0]
     settlement = table.iloc[1]
     assert settlement.du_y_mm == pytest.approx(-88.0) and settlement.du_x_mm == pytest.approx(0.0, abs=1e-9)
     assert settlement.du_over_rigid == pytest.approx(88.0 / 113.5)
     assert math.isnan(table.iloc[2].du_mm) and table.iloc[2].status == "failed"
     text = "\n".join(map_markdown(table))
-    assert "| -90 | 88.00 | (0.0, -88.0) | 1E 9I 29E 56E | 113.50 | 1E 8I 32E 56E |" in text
-    assert "| -180 | - | - | - | - | - |" in text
+    assert "| -90 | 88.00 | (0.0, -88.0) | 1E 9I 29E 56E | 113.50 | 1E 8I 32E 56E | 113.50 | 1E 25I 49E 56E |" in text
+    assert "| -180 | - | - | - | - | - | - | - |" in text
+
+
+def test_the_rigid_columns_are_rewritten_without_the_runs(tmp_path):
+    table = map_table("set2", _results(), RIGID)
+    table.to_csv(tmp_path / "capacity.csv", index=False)
+    changed = {**RIGID, 0.0: RigidLimit(30.0, "9I 28E 47I")}
+    again = with_rigid(pd.read_csv(tmp_path / "capacity.csv"), changed)
+    assert again["du_rigid_mm"].tolist()[:2] == [30.0, 113.5] and again.iloc[0].rigid_hinges == "9I 28E 47I"
+    assert again.iloc[0].du_over_rigid == pytest.approx(20.0 / 30.0)
+    assert again["du_mm"].tolist()[:2] == table["du_mm"].tolist()[:2] and list(again.columns) == list(table.columns)
 
 
 def test_the_figures_are_written_as_pdf_and_png(tmp_path):
-    rigid = {0.0: (27.9, "9I 28E 47I 56E"), -90.0: (113.5, "1E 8I 32E 56E"), -180.0: (None, "")}
-    table = pd.concat([map_table("set1", _results(), rigid), map_table("set2", _results(), rigid)])
+    table = pd.concat([map_table("set1", _results(), RIGID), map_table("set2", _results(), RIGID)])
     written = capacity_polar_figure(table, tmp_path / "map")
     curve = pd.DataFrame({"delta_mm": [1.0, 2.0], "force_N": [15.0, 14.0]})
     written += reaction_curves_figure({"set1": {-90.0: curve}, "set2": {0.0: curve}}, tmp_path / "reactions")

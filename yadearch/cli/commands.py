@@ -115,7 +115,9 @@ def limit(preset_name: str | None, case_file: str | None, kn: float | None, sett
                f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}")
     if result.mirror_collapse_mode is not None:
         mirrored = "no collapse" if result.mirror_du_rigid_mm is None else f"{result.mirror_du_rigid_mm:.2f} mm"
-        click.echo(f"mirrored (the keystone's other joint): du_rigid = {mirrored} ({result.mirror_collapse_mode})")
+        hinges = " ".join(result.mirror_collapse_hinges or ())
+        click.echo(f"mirrored (the keystone's other joint): du_rigid = {mirrored} ({result.mirror_collapse_mode}"
+                   f"{' on ' + hinges if hinges else ''})")
     if not amplitudes(case).flat_aligned_faces:
         click.echo("note: the rigid analysis takes the voussoirs' dimension errors and worn edges but not the "
                    "faces' angles, bumps or offsets: its du is that of flat, aligned faces", err=True)

@@ -74,6 +74,13 @@ def same_hinges(a: list[dict], b: list[dict]) -> bool:
                and y["interface"] in x.get("interfaces", [x["interface"]]) for x, y in zip(a, b))
 
 
+def mirror_hinge_labels(labels: list[str] | tuple[str, ...], last_interface: int) -> list[str]:
+    """Hinge labels ("9I", "28E") of an arch's mirror image in the arch's own numbering: interface k
+    faces `last_interface` + 1 - k across the crown, a pivot keeps its side; left to right."""
+    mirrored = [(last_interface + 1 - int(label[:-1]), label[-1]) for label in labels]
+    return [f"{interface}{side}" for interface, side in sorted(mirrored)]
+
+
 PAPER_LABELS = ("A", "B", "C", "D")  # the paper's positional hinge labels, assigned by `paper_labels`
 
 

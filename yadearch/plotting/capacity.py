@@ -18,12 +18,13 @@ from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 RADIAL_TICKS = 4  # du rings of the polar plot
 RIGID_COLOR = "0.35"
 RIGID_STYLE = {"color": RIGID_COLOR, "ls": "--", "marker": "x", "ms": 3, "lw": 0.8}
+OTHER_BRANCH_STYLE = {"color": RIGID_COLOR, "ls": ":", "marker": "+", "ms": 3, "lw": 0.8}
 
 
 def capacity_polar_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
     """Left: du (radius, mm) against the direction of the support movement (angle, degrees from +x;
     the half-plane below the horizontal) for every `set` of `table`, with the rigid limit
-    (`du_rigid_mm`). Right: the collapse mechanism of each direction, its hinges' interfaces (I =
+    (`du_rigid_mm`) and that of the keystone tie's other branch (`du_rigid_other_mm`). Right: the collapse mechanism of each direction, its hinges' interfaces (I =
     intrados, E = extrados). STEM.pdf and STEM.png."""
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, 3.4), layout="constrained")
@@ -42,6 +43,10 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
                        label="rigid blocks", **RIGID_STYLE)
             _hinge_marks(hinges, rigid["direction_deg"], rigid["rigid_hinges"], RIGID_COLOR,
                          len(groups) / 2 * SET_OFFSET_DEG)
+        other = rigid[rigid["du_rigid_other_mm"].notna()]
+        if not other.empty:
+            polar.plot(np.radians(other["direction_deg"].to_numpy(dtype=float)), other["du_rigid_other_mm"],
+                       label="rigid, other branch", **OTHER_BRANCH_STYLE)
         polar.set_thetamin(-180)
         polar.set_thetamax(0)
         polar.set_xticks(np.radians(np.arange(-180, 1, 30)))

@@ -30,6 +30,7 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes
 from yadearch.model import units
+from yadearch.model.hinges import mirror_hinge_labels
 from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
 from yadearch.solve.limit_result import HingeRecord, LimitResult, interface_forces
 from yadearch.solve.rigid import (
@@ -52,6 +53,12 @@ SNAP_FIRST_RAD, SNAP_MAX_RAD = 1e-7, 0.5  # search range of the rotation that cl
 SNAP_SAMPLES = 9  # points along a snap where the weights must keep descending
 MAX_SNAPS = 5  # successive snaps at one support displacement before giving up
 MIRRORED = {"right": "left", "left": "right"}  # the moving support of a case's mirror image
+
+
+def mirror_image(case: ArchCase) -> ArchCase:
+    """`case` with the other support moving the mirrored way: on a symmetric arch, the keystone's
+    tie broken toward its other joint (the other branch of the rigid march)."""
+    return case.with_overrides({"moving_support": MIRRORED[case.loading.moving_support]})
 
 
 def stands(case: ArchCase) -> bool:
@@ -244,11 +251,11 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
     if not (mirror and symmetric and tie_matters and moving in MIRRORED):
         return result
     try:
-        mirrored, _ = _solve(case.with_overrides({"moving_support": MIRRORED[moving]}), step_mm, tolerance_mm,
-                             max_settlement_mm, max_snap_mm)
+        mirrored, _ = _solve(mirror_image(case), step_mm, tolerance_mm, max_settlement_mm, max_snap_mm)
     except LimitError as exc:
         return replace(result, mirror_collapse_mode=f"failed: {exc}")
     return replace(result, mirror_du_rigid_mm=mirrored.du_rigid_mm, mirror_collapse_mode=mirrored.collapse_mode,
+                   mirror_collapse_hinges=tuple(mirror_hinge_labels(mirrored.collapse_hinges, arch.n_joints)),
                    wall_s=result.wall_s + mirrored.wall_s)
 
 

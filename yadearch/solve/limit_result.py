@@ -78,6 +78,7 @@ class LimitResult:
     # breaks toward the left one
     mirror_du_rigid_mm: float | None = None
     mirror_collapse_mode: str | None = None  # the mirror image's collapse_mode, "failed: why", None: not solved
+    mirror_collapse_hinges: tuple[str, ...] | None = None  # the mirror image's, in this case's numbering
 
     @property
     def references(self) -> list[str]:

@@ -7,7 +7,7 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.model import units
-from yadearch.solve.limit import MIRRORED, limit_analysis
+from yadearch.solve.limit import limit_analysis, mirror_image
 from yadearch.solve.rigid import rigid_arch
 
 FLIP_X = np.array([-1.0, 1.0])
@@ -17,8 +17,7 @@ def rigid_pose(case: ArchCase, at_mm: float, mirrored: bool = False) -> tuple[np
     """Every block's centroid (n_blocks, 2; m) and turn (rad) in the rigid analysis of `case` at
     `at_mm` of path; `mirrored`: on the keystone's other branch, solved as the mirror image (the
     other support moving the mirrored way) and reflected back."""
-    moving = case.loading.moving_support
-    solved = case.with_overrides({"moving_support": MIRRORED[moving]}) if mirrored else case
+    solved = mirror_image(case) if mirrored else case
     result = limit_analysis(solved, max_settlement_mm=at_mm, mirror=False)
     turns = np.array(result.rotation_rad)
     cos, sin = np.cos(turns), np.sin(turns)

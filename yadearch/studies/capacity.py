@@ -5,6 +5,7 @@ DIRECTION_STEP_DEG over the half-plane below the horizontal (spreading 0°, sett
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
@@ -14,7 +15,19 @@ DIRECTIONS_DEG = tuple(float(d) for d in range(0, -181, -DIRECTION_STEP_DEG))
 DIRECTION_PARAMETER = "settlement_direction_deg"
 EQUILIBRIUM_STAGE = "equilibrium"
 MAP_COLUMNS = ("set", "direction_deg", "du_mm", "du_x_mm", "du_y_mm", "hinges", "mechanism",
-               "du_rigid_mm", "rigid_hinges", "du_over_rigid", "steps", "wall_s", "status", "folder")
+               "du_rigid_mm", "rigid_hinges", "du_over_rigid", "du_rigid_other_mm", "rigid_other_hinges",
+               "steps", "wall_s", "status", "folder")
+
+
+@dataclass(frozen=True)
+class RigidLimit:
+    """The rigid-block limit of one direction (mm) and its collapse hinges ("9I 28E ..."), and those of
+    the keystone tie's other branch where the movement is not its own mirror image (else None)."""
+
+    du_mm: float | None
+    hinges: str
+    other_du_mm: float | None = None
+    other_hinges: str = ""
 
 
 def du_components(du_mm: float, direction_deg: float) -> tuple[float, float]:
@@ -25,24 +38,33 @@ def du_components(du_mm: float, direction_deg: float) -> tuple[float, float]:
     return round(du_mm * math.cos(angle), 9) + 0.0, round(du_mm * math.sin(angle), 9) + 0.0
 
 
-def map_table(name: str, results: pd.DataFrame, rigid: dict[float, tuple[float | None, str]]) -> pd.DataFrame:
+def map_table(name: str, results: pd.DataFrame, rigid: dict[float, RigidLimit]) -> pd.DataFrame:
     """One row a direction for the campaign `results` (results.csv of a sweep over the direction) of
-    the joint set `name`, with du's components and the rigid limit `rigid[direction] = (du_rigid_mm,
-    hinges)` beside it."""
+    the joint set `name`, with du's components and the rigid limit of each direction beside it."""
     rows = []
     for run in results.sort_values(DIRECTION_PARAMETER, ascending=False).itertuples(index=False):
         direction = float(getattr(run, DIRECTION_PARAMETER))
         du = float(run.du_mm) if run.status == "done" and pd.notna(run.du_mm) else math.nan
         du_x, du_y = du_components(du, direction)
-        du_rigid, rigid_hinges = rigid.get(direction, (None, ""))
         rows.append({
             "set": name, "direction_deg": direction, "du_mm": du, "du_x_mm": du_x, "du_y_mm": du_y,
             "hinges": run.hinges if isinstance(run.hinges, str) else "",
             "mechanism": run.mechanism if isinstance(run.mechanism, str) else "",
-            "du_rigid_mm": math.nan if du_rigid is None else du_rigid, "rigid_hinges": rigid_hinges,
-            "du_over_rigid": du / du_rigid if du_rigid else math.nan,
             "steps": run.steps, "wall_s": run.wall_s, "status": run.status, "folder": run.folder})
-    return pd.DataFrame(rows, columns=list(MAP_COLUMNS))
+    return with_rigid(pd.DataFrame(rows), rigid)
+
+
+def with_rigid(table: pd.DataFrame, rigid: dict[float, RigidLimit]) -> pd.DataFrame:
+    """`table` (a capacity map, or its DEM columns) with the rigid columns of `rigid[direction]`
+    (re)written: the rigid analysis can change without its DEM runs being made again."""
+    limits = [rigid.get(float(d), RigidLimit(None, "")) for d in table["direction_deg"]]
+    table = table.assign(
+        du_rigid_mm=[math.nan if r.du_mm is None else r.du_mm for r in limits],
+        rigid_hinges=[r.hinges for r in limits],
+        du_rigid_other_mm=[math.nan if r.other_du_mm is None else r.other_du_mm for r in limits],
+        rigid_other_hinges=[r.other_hinges for r in limits])
+    table["du_over_rigid"] = table["du_mm"] / table["du_rigid_mm"]
+    return table[list(MAP_COLUMNS)]
 
 
 def reaction_curve(series: pd.DataFrame, direction_deg: float) -> pd.DataFrame:
@@ -60,8 +82,8 @@ def map_markdown(table: pd.DataFrame) -> list[str]:
     """The capacity map as a Markdown table: one row a direction, one column group a set."""
     sets = list(dict.fromkeys(table["set"]))
     head = "| direction (deg) | " + " | ".join(f"{s} du (mm) | {s} (du_x, du_y) (mm) | {s} hinges" for s in sets)
-    lines = [head + " | rigid du (mm) | rigid hinges |",
-             "|---" * (1 + 3 * len(sets) + 2) + "|"]
+    lines = [head + " | rigid du (mm) | rigid hinges | rigid du, other branch (mm) | its hinges |",
+             "|---" * (1 + 3 * len(sets) + 4) + "|"]
     for direction, rows in table.groupby("direction_deg", sort=False):
         cells = [f"{direction:g}"]
         for name in sets:
@@ -72,7 +94,11 @@ def map_markdown(table: pd.DataFrame) -> list[str]:
             r = row.iloc[0]
             cells += [f"{r.du_mm:.2f}", f"({r.du_x_mm:.1f}, {r.du_y_mm:.1f})", r.hinges or "-"]
         first = rows.iloc[0]
-        cells += ["-" if not np.isfinite(first.du_rigid_mm) else f"{first.du_rigid_mm:.2f}",
-                  first.rigid_hinges or "-"]
+        cells += [_mm(first.du_rigid_mm), first.rigid_hinges or "-",
+                  _mm(first.du_rigid_other_mm), first.rigid_other_hinges or "-"]
         lines.append("| " + " | ".join(cells) + " |")
     return lines
+
+
+def _mm(value: float) -> str:
+    return "-" if not np.isfinite(value) else f"{value:.2f}"
