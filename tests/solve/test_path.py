@@ -97,9 +97,12 @@ def test_a_state_that_never_comes_to_rest_is_discarded():
     assert all(e <= 40.0 + 0.5 for e in result.equilibria) and result.equilibria[-1] <= 40.0
 
 
-def test_timeouts_count_as_no_equilibrium():
+def test_timeouts_count_as_no_equilibrium_and_say_so():
     result = follow_path(FakeArch(40.0, verdict=TIMEOUT), SETTINGS)
     assert result.lower <= 40.0 < result.upper
+    assert result.upper_verdict == TIMEOUT
+    assert follow_path(FakeArch(40.0), SETTINGS).upper_verdict == RUNAWAY
+    assert follow_path(FakeArch(500.0), SETTINGS).upper_verdict is None
 
 
 def test_no_collapse_up_to_the_maximum_displacement():

@@ -15,6 +15,7 @@ SLIP_THRESHOLD_MM = 0.2  # tangential slip that is sliding, not elastic shear (k
 JUMP_FRACTION = 0.5  # a relaxation moving a block this fraction of its increment...
 JUMP_FLOOR = 0.1  # ...and at least this fraction of runaway_mm is a jump to another state
 NEAR_LIMIT = 0.9  # beyond this fraction of du the path's states move fast (a fold): no jump is judged there
+TIMED_OUT = "timeout"  # summary.json's collapse_verdict when du's upper end only ran out of time
 HINGE_COUNT_NAMES = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
 
 
@@ -64,9 +65,20 @@ def relaxation_jump(summary: dict, fraction: float = JUMP_FRACTION, near_limit: 
             "du may depend on numerics.runaway_mm and the increments")
 
 
+def collapse_by_timeout(summary: dict) -> str | None:
+    """A warning when du's upper end had no equilibrium only because the time allowed ran out (no
+    block moved the runaway distance): a slow snap, as under heavy damping, reads as collapse."""
+    if summary.get("collapse_verdict") != TIMED_OUT:
+        return None
+    return ("du's upper end reached no equilibrium within numerics.hold_max_s but no block ran away: a "
+            "slow hinge snap may have been read as collapse; confirm with a larger numerics.hold_max_s")
+
+
 def run_warnings(summary: dict) -> list[str]:
-    """The warnings a finished run's summary.json calls for: slip during the moves, jumps in the path."""
-    warnings = (slip_during_moves(summary.get("friction") or {}), relaxation_jump(summary))
+    """The warnings a finished run's summary.json calls for: slip during the moves, jumps in the path,
+    a collapse read from a timeout."""
+    warnings = (slip_during_moves(summary.get("friction") or {}), relaxation_jump(summary),
+                collapse_by_timeout(summary))
     return [w for w in warnings if w]
 
 

@@ -279,14 +279,14 @@ class Runner:
             hinges = loading.collapse_state(path.upper)
             du, hi = units.to_mm(path.du), units.to_mm(path.upper)
             dx, dy = self.movement.components(path.du)
-            summary.update(collapsed=True, du_mm=du, du_bracket_mm=[lo, hi],
+            summary.update(collapsed=True, du_mm=du, du_bracket_mm=[lo, hi], collapse_verdict=path.upper_verdict,
                            du_components_mm=[units.to_mm(dx), units.to_mm(dy)],
                            du_rotation_mrad=1e3 * self.movement.rotation(path.du))
             self.log(f"[{self.case.name}] du = {du:.2f} mm (no equilibrium at {hi:.2f}, "
                      f"equilibrium at {lo:.2f})")
         else:
             self.log(f"[{self.case.name}] no collapse up to {units.to_mm(loading.settings.max_displacement):g} mm")
-            summary.update(collapsed=False, du_mm=None, du_bracket_mm=None)
+            summary.update(collapsed=False, du_mm=None, du_bracket_mm=None, collapse_verdict=None)
             self.stage = "end"
             hinges = self.recorder.joints("end")
         summary["hinges_at_collapse"] = [{"interface": h.interface, "side": h.side} for h in hinges] \

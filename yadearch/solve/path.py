@@ -87,6 +87,16 @@ class PathResult:
         """The bracket's midpoint (inf without collapse)."""
         return 0.5 * (self.lower + self.upper) if self.collapsed else math.inf
 
+    @property
+    def upper_verdict(self) -> str | None:
+        """How the arch failed at `upper`: RUNAWAY (a block moved the runaway distance, or the state
+        ran away while settling) or TIMEOUT (no equilibrium in the time allowed, nothing ran away);
+        None without collapse."""
+        if not self.collapsed:
+            return None
+        failed = (s.verdict for s in reversed(self.steps) if s.target == self.upper and s.verdict != STABLE)
+        return next(failed, RUNAWAY)
+
 
 def follow_path(oracle: EquilibriumOracle, settings: PathSettings,
                 on_step: Callable[[PathStep], None] | None = None) -> PathResult:
