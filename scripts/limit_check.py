@@ -18,8 +18,8 @@ from pathlib import Path
 
 from yadearch.atomic import write_text_atomically
 from yadearch.case.config import ArchCase, load_case
-from yadearch.results.rundir import CASE_FILE, hinge_list, read_summary
 from yadearch.model.hinges import mirror_hinge_labels
+from yadearch.results.rundir import CASE_FILE, hinge_list, read_summary
 from yadearch.solve.limit import limit_analysis, mirror_image
 from yadearch.solve.limit_result import LimitResult
 from yadearch.studies.robustness import same_hinge_set

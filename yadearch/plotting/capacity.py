@@ -24,8 +24,9 @@ OTHER_BRANCH_STYLE = {"color": RIGID_COLOR, "ls": ":", "marker": "+", "ms": 3, "
 def capacity_polar_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
     """Left: du (radius, mm) against the direction of the support movement (angle, degrees from +x;
     the half-plane below the horizontal) for every `set` of `table`, with the rigid limit
-    (`du_rigid_mm`) and that of the keystone tie's other branch (`du_rigid_other_mm`). Right: the collapse mechanism of each direction, its hinges' interfaces (I =
-    intrados, E = extrados). STEM.pdf and STEM.png."""
+    (`du_rigid_mm`) and that of the keystone tie's other branch (`du_rigid_other_mm`). Right: the
+    collapse mechanism of each direction, its hinges' interfaces (I = intrados, E = extrados).
+    STEM.pdf and STEM.png."""
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, 3.4), layout="constrained")
         polar = fig.add_subplot(1, 2, 1, projection="polar")
