@@ -20,7 +20,7 @@ from yadearch.atomic import write_text_atomically
 from yadearch.case.config import ArchCase, load_case
 from yadearch.model.hinges import mirror_hinge_labels
 from yadearch.results.rundir import CASE_FILE, hinge_list, read_summary
-from yadearch.solve.limit import limit_analysis, mirror_image
+from yadearch.solve.limit import has_other_branch, limit_analysis, mirror_image
 from yadearch.solve.limit_result import LimitResult
 from yadearch.studies.robustness import same_hinge_set
 
@@ -35,9 +35,8 @@ def check(folder: Path, tolerance: float) -> tuple[str, bool]:
     case = load_case(folder / CASE_FILE)
     summary = read_summary(folder)
     mechanism = hinge_list(summary.get("hinges_last_equilibrium"))
-    branches = [_branch(case, mirrored=False)]
-    if branches[0][0].mirror_du_rigid_mm is not None:
-        branches.append(_branch(case, mirrored=True))
+    branches = [_branch(case, "direct"), _branch(case, "mirrored")] if has_other_branch(case) \
+        else [_branch(case, "-")]
     survived, limit, rigid, chain, name = min(branches, key=lambda b: _distance(mechanism, b[2]))
     du, du_rigid = summary.get("du_mm"), limit.du_rigid_mm
     loading = case.loading
@@ -53,21 +52,21 @@ def check(folder: Path, tolerance: float) -> tuple[str, bool]:
     return f"{head} | {gap:+.1%} | {hinges} | {'yes' if ok else 'no'} |", ok
 
 
-def _branch(case: ArchCase, mirrored: bool) -> tuple[LimitResult, LimitResult, str, str, str]:
+def _branch(case: ArchCase, name: str) -> tuple[LimitResult, LimitResult, str, str, str]:
     """One branch of the rigid arch: its limit surviving every snap, its limit counting a snap beyond
     the run's runaway distance, the mechanism followed to that limit and its collapse chain (hinges
-    in the case's own numbering) and the branch's name. The mirrored branch is the mirror image's
+    in the case's own numbering) and the branch's `name`. The mirrored branch is the mirror image's
     direct one (the keystone's tie broken toward its other joint)."""
+    mirrored = name == "mirrored"
     solved = mirror_image(case) if mirrored else case
-    survived = limit_analysis(solved, mirror=not mirrored)  # the direct branch tells whether a mirror exists
+    survived = limit_analysis(solved, mirror=False)
     limit = limit_analysis(solved, max_snap_mm=case.numerics.runaway_mm, mirror=False)
     followed = [f"{h.interface}{h.side}" for h in limit.hinge_history if h.to_mm is None]
     chain = list(limit.collapse_hinges)
     if mirrored:
         last_interface = case.geometry.n_voussoirs + 1
         followed, chain = (mirror_hinge_labels(labels, last_interface) for labels in (followed, chain))
-    return (survived, limit, _sorted(followed), _sorted(chain),
-            "mirrored" if mirrored else ("direct" if survived.mirror_du_rigid_mm is not None else "-"))
+    return survived, limit, _sorted(followed), _sorted(chain), name
 
 
 def _sorted(labels: list[str]) -> str:

@@ -61,6 +61,15 @@ def mirror_image(case: ArchCase) -> ArchCase:
     return case.with_overrides({"moving_support": MIRRORED[case.loading.moving_support]})
 
 
+def has_other_branch(case: ArchCase) -> bool:
+    """Whether the rigid march of `case` has a second branch, the keystone's tie broken toward its
+    other joint: an odd number of voussoirs without dimension errors (else there is no mirror image),
+    one support moving, and a movement that is not its own mirror image (it moves vertically or turns)."""
+    if not (case.geometry.n_voussoirs % 2 and case.loading.moving_support in MIRRORED):
+        return False
+    return amplitudes(case).perfect_dimensions and not rigid_arch(case).movement.mirror_is_itself
+
+
 def stands(case: ArchCase) -> bool:
     """Whether the undeformed arch admits an equilibrium (thrust line inside, friction enough)."""
     arch = rigid_arch(case)
@@ -245,10 +254,7 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
     (`mirror_du_rigid_mm`; `mirror` false: not): the keystone's two joints tie, and each branch has
     its own limit."""
     result, arch = _solve(case, step_mm, tolerance_mm, max_settlement_mm, max_snap_mm)
-    moving = case.loading.moving_support
-    symmetric = amplitudes(case).perfect_dimensions  # voussoirs with their own sizes have no mirror image
-    tie_matters = not arch.movement.mirror_is_itself and case.geometry.n_voussoirs % 2
-    if not (mirror and symmetric and tie_matters and moving in MIRRORED):
+    if not (mirror and has_other_branch(case)):
         return result
     try:
         mirrored, _ = _solve(mirror_image(case), step_mm, tolerance_mm, max_settlement_mm, max_snap_mm)
