@@ -1,32 +1,68 @@
-"""Is the rigid analysis's state a DEM equilibrium? Load a case's arch by its self-weight, move the
-support to a displacement, put the voussoirs where the rigid-block limit analysis has them there
-(either branch of the keystone's tie), release them from rest and report how far they move and the
-hinges they end on (docs/validation.md).
+"""Is the rigid analysis's state a DEM equilibrium, and how far does the DEM carry the support from
+it? Load a case's arch by its self-weight, put the voussoirs and the supports where the rigid-block
+limit analysis has them at a support displacement (either branch of the keystone's tie), release
+the voussoirs from rest and report how far they move and the hinges they end on; with `--load-on`,
+go on loading by the run's increments from that state to collapse (docs/validation.md).
 
     .venv/bin/python scripts/rigid_state_check.py --preset set2 --kn 3000 --set settlement_direction_deg=-45 \\
-        --at-mm 9.75 [--branch mirrored]
+        --at-mm 9.75 [--branch mirrored | --hinges 8I,28E,46I] [--load-on --out DIR]
 
 A state that stays put (blocks moving far less than a millimetre) is an equilibrium of the DEM's
-joints too; exit code 1 if a block ran away by the run's `runaway_mm`.
+joints too; exit code 1 if a block ran away by the run's `runaway_mm`. `--load-on` writes
+DIR/summary.json (du, its bracket, the mechanisms, the relaxations) and prints the progress.
 """
 
 from __future__ import annotations
 
 import argparse
+import json
+import os
 import sys
+import time
+from pathlib import Path
 
-from yadearch.cli.options import resolve_case
-from yadearch.engine.runner import Runner
-from yadearch.engine.scene_state import place_voussoirs
-from yadearch.model import units
-from yadearch.solve.path import RUNAWAY
-from yadearch.solve.pose import rigid_pose
+# YADE runs in this process: numpy's OpenBLAS must start with one thread, or its idle worker spins on
+# the second core (two such runs side by side: 300-500 steps/s each instead of 3 600-5 400)
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+
+from yadearch.atomic import write_text_atomically  # noqa: E402
+from yadearch.cli.options import resolve_case  # noqa: E402
+from yadearch.engine.loading import EquilibriumPath  # noqa: E402
+from yadearch.engine.runner import Runner  # noqa: E402
+from yadearch.engine.scene_state import place_voussoirs  # noqa: E402
+from yadearch.model import units  # noqa: E402
+from yadearch.results.rundir import hinge_list  # noqa: E402
+from yadearch.solve.path import RUNAWAY, STABLE  # noqa: E402
+from yadearch.solve.pose import linkage_pose, rigid_pose  # noqa: E402
+
+PLACEMENT_TOLERANCE_MM = 1e-6  # the placed support must read the displacement asked for
 
 
 def hinge_text(runner: Runner) -> str:
     """The hinges of the scene now, with their rotations."""
     _, hinges = runner.recorder.joint_snapshot()
     return " ".join(f"{h.interface}{h.side} ({abs(h.rotation) * 1e3:.1f} mrad)" for h in hinges)
+
+
+def load_on(runner: Runner, start_mm: float, out: Path | None, arguments: dict) -> None:
+    """Follow the equilibrium path from the placed state at `start_mm` to collapse and report it."""
+    loading = EquilibriumPath(runner)
+    path = loading.follow(start=units.mm(start_mm))
+    summary = {"command": arguments, "start_mm": start_mm, "kn_N_per_mm3": runner.case.interface.kn_N_per_mm3,
+               "collapsed": path.collapsed, "last_equilibrium_mm": units.to_mm(path.lower),
+               "hinges_last_equilibrium": loading.last_equilibrium_hinges,
+               "relaxations": loading.relaxations}
+    if path.collapsed:
+        hinges = loading.collapse_state(path.upper)
+        summary.update(du_mm=units.to_mm(path.du), du_bracket_mm=[units.to_mm(path.lower), units.to_mm(path.upper)],
+                       collapse_verdict=path.upper_verdict,
+                       hinges_at_collapse=[h.to_json() for h in hinges])
+        print(f"du = {summary['du_mm']:.2f} mm ({path.upper_verdict} at {units.to_mm(path.upper):.3f}); "
+              f"last equilibrium on {hinge_list(loading.last_equilibrium_hinges)}", flush=True)
+    summary.update(steps=runner.total_steps, wall_s=time.time() - runner.wall0)
+    if out is not None:
+        out.mkdir(parents=True, exist_ok=True)
+        write_text_atomically(out / "summary.json", json.dumps(summary, indent=1) + "\n")
 
 
 def main() -> int:
@@ -37,18 +73,31 @@ def main() -> int:
     parser.add_argument("--at-mm", type=float, required=True, help="support displacement along the path (mm)")
     parser.add_argument("--branch", choices=["direct", "mirrored"], default="direct",
                         help="the keystone's tie broken toward its left joint (direct) or its right one")
+    parser.add_argument("--hinges", default=None,
+                        help="place on this three-hinge linkage instead of the rigid march's state, e.g. 8I,28E,46I")
+    parser.add_argument("--load-on", action="store_true", help="go on loading from the state to collapse")
+    parser.add_argument("--out", type=Path, default=None, help="folder for summary.json (with --load-on)")
     args = parser.parse_args()
     case = resolve_case(args.preset, None, args.kn, tuple(args.settings))
-    centroids, turns = rigid_pose(case, args.at_mm, args.branch == "mirrored")
-    runner = Runner(case, log=lambda _: None)
+    if args.hinges:
+        centroids, turns = linkage_pose(case, args.at_mm, tuple(args.hinges.split(",")))
+    else:
+        centroids, turns = rigid_pose(case, args.at_mm, args.branch == "mirrored")
+    runner = Runner(case, log=(lambda text: print(text, flush=True)) if args.load_on else (lambda _: None))
     try:
         runner.selfweight()
-        runner.move_to(units.mm(args.at_mm))
-        place_voussoirs(runner.scene, centroids, turns)
-        print(f"placed at {args.at_mm:g} mm ({args.branch} branch): {hinge_text(runner)}")
+        place_voussoirs(runner.scene, centroids, turns, with_supports=True)
+        placed_mm = units.to_mm(runner.delta())
+        if abs(placed_mm - args.at_mm) > PLACEMENT_TOLERANCE_MM:
+            raise SystemExit(f"the placed support reads {placed_mm:.6f} mm, not --at-mm {args.at_mm:g}")
+        where = f"linkage {args.hinges}" if args.hinges else f"{args.branch} branch"
+        print(f"placed at {args.at_mm:g} mm ({where}): {hinge_text(runner)}", flush=True)
+        runner.stage = "relax"
         verdict = runner.hold(max_s=case.numerics.hold_max_s)
         print(f"released: {verdict}, largest block motion {units.to_mm(runner.hold_move):.3f} mm; "
-              f"now on {hinge_text(runner)}")
+              f"now on {hinge_text(runner)}", flush=True)
+        if args.load_on and verdict == STABLE:
+            load_on(runner, args.at_mm, args.out, vars(args) | {"out": str(args.out)})
     finally:
         runner.close()
     return 1 if verdict == RUNAWAY else 0

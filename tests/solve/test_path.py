@@ -16,10 +16,10 @@ class FakeArch:
     relaxation judges states up to `du + false_margin` stable, but those beyond du never settle."""
 
     def __init__(self, du: float, dynamic_reach: float = math.inf, verdict: str = RUNAWAY,
-                 creep_reach: float = math.inf, false_margin: float = 0.0):
+                 creep_reach: float = math.inf, false_margin: float = 0.0, start: float = 0.0):
         self.du, self.dynamic_reach, self.verdict = du, dynamic_reach, verdict
         self.creep_reach, self.false_margin = creep_reach, false_margin
-        self.stack, self.reached, self.reached_from = [(0.0, True)], 0.0, 0.0
+        self.stack, self.reached, self.reached_from = [(start, True)], start, start
         self.tries: list[tuple[float, float]] = []
 
     @property
@@ -59,6 +59,16 @@ def test_du_is_bracketed_within_the_tolerance(du):
     assert result.lower <= du < result.upper
     assert result.upper - result.lower <= SETTINGS.tolerance
     assert abs(result.du - du) <= SETTINGS.tolerance / 2
+
+
+def test_a_path_started_from_an_equilibrium_part_way_goes_on_from_there():
+    """A scene put in a known equilibrium at 30 mm (a rigid analysis's state) is loaded from it:
+    the first increment starts there, and a discarded state falls back to it, not to zero."""
+    arch = FakeArch(31.0, false_margin=0.5, start=30.0)
+    result = follow_path(arch, SETTINGS, start=30.0)
+    assert arch.tries[0] == (30.0, 32.0)
+    assert result.lower <= 31.0 < result.upper <= 31.0 + SETTINGS.tolerance
+    assert all(e > 30.0 for e in result.equilibria)
 
 
 def test_increments_grow_while_the_arch_follows_and_shrink_near_collapse():

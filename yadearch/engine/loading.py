@@ -107,10 +107,11 @@ class EquilibriumPath:
             if row["stage"] == "equilibrium":
                 row["stage"] = DISCARDED_STAGE
 
-    def follow(self) -> PathResult:
-        """Load by increments relaxed to equilibrium until du is bracketed (`solve.path`)."""
+    def follow(self, start: float = 0.0) -> PathResult:
+        """Load by increments relaxed to equilibrium until du is bracketed (`solve.path`), from the
+        scene's equilibrium at support displacement `start` (m)."""
         self._accepted, self._at_accepted = [self.runner.snapshot()], True
-        return follow_path(self, self.settings, on_step=self._log_increment)
+        return follow_path(self, self.settings, on_step=self._log_increment, start=start)
 
     def _log_increment(self, step: PathStep) -> None:
         self.runner.log(f"[{self.runner.case.name}] increment {units.to_mm(step.start):7.3f} -> "

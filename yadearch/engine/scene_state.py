@@ -42,13 +42,16 @@ def put_back(snapshot: dict, contacts: ContactModel, driver: SupportDriver) -> N
     driver.current_speed = snapshot["speed"]
 
 
-def place_voussoirs(scene: ArchScene, centroids: np.ndarray, rotations: np.ndarray) -> None:
-    """Put every voussoir (not the supports) at rest at `centroids` (n_blocks, 2; m) turned by
-    `rotations` (n_blocks; rad about z from the undeformed pose), e.g. a rigid analysis's placement:
-    a hold then tests whether that configuration is an equilibrium of the scene's joints."""
+def place_voussoirs(scene: ArchScene, centroids: np.ndarray, rotations: np.ndarray,
+                    with_supports: bool = False) -> None:
+    """Put every voussoir (and, `with_supports`, the two supports too) at rest at `centroids`
+    (n_blocks, 2; m) turned by `rotations` (n_blocks; rad about z from the undeformed pose), e.g. a
+    rigid analysis's placement: a hold then tests whether that configuration is an equilibrium of
+    the scene's joints. A support put so has moved along its path as far as the placement says."""
     from yade import O, Quaternion, Vector3
 
-    for k in range(1, len(scene.body_ids) - 1):
+    blocks = range(len(scene.body_ids)) if with_supports else range(1, len(scene.body_ids) - 1)
+    for k in blocks:
         state = O.bodies[scene.body_ids[k]].state
         w, x, y, z = scene.ori0[k]
         state.pos = Vector3(float(centroids[k][0]), float(centroids[k][1]), float(scene.pos0[k][2]))

@@ -99,16 +99,17 @@ class PathResult:
 
 
 def follow_path(oracle: EquilibriumOracle, settings: PathSettings,
-                on_step: Callable[[PathStep], None] | None = None) -> PathResult:
-    """Advance by increments until the bracket of du is narrower than `settings.tolerance` or the
-    support reaches `settings.max_displacement` in equilibrium.
+                on_step: Callable[[PathStep], None] | None = None, start: float = 0.0) -> PathResult:
+    """Advance by increments from the equilibrium at `start` (the oracle's state; 0 after the
+    self-weight) until the bracket of du is narrower than `settings.tolerance` or the support
+    reaches `settings.max_displacement` in equilibrium.
 
     The failure that closes the bracket must come from the bracket's own lower state, settled
     completely: a failure reached by a longer move, or from a state that was still creeping, is tried
     again from the settled state (near collapse, a state accepted while creeping by a few hundredths
     of a millimetre fails every move, where the same state at rest holds further); if the arch then
     holds, the path goes on. A lower state that runs away while settling is discarded."""
-    result = PathResult()
+    result = PathResult(lower=start)
     increment = settings.first_increment
     settled = False  # the accepted state has been settled completely
     firm_upper = math.inf  # the lowest discarded state: no equilibrium there, whatever the path
@@ -124,7 +125,7 @@ def follow_path(oracle: EquilibriumOracle, settings: PathSettings,
                 continue
             oracle.discard()  # not an equilibrium: an upper bound, whatever the path
             firm_upper = result.equilibria.pop()
-            result.lower = result.equilibria[-1] if result.equilibria else 0.0
+            result.lower = result.equilibria[-1] if result.equilibria else start
             result.upper, result.upper_from = firm_upper, result.lower
             settled = False
             continue

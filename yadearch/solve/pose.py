@@ -8,9 +8,36 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.model import units
 from yadearch.solve.limit import limit_analysis, mirror_image
-from yadearch.solve.rigid import rigid_arch
+from yadearch.solve.rigid import SIDES, LimitError, Pivot, at_rest, close_linkage, rigid_arch
 
 FLIP_X = np.array([-1.0, 1.0])
+
+
+def _centroids_and_turns(case: ArchCase, turns: np.ndarray, shift_mm: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Every block's centroid (m) and turn (rad) from a rigid placement's turns and shifts."""
+    cos, sin = np.cos(turns), np.sin(turns)
+    start = rigid_arch(case).centroid0
+    centroids = np.column_stack([cos * start[:, 0] - sin * start[:, 1], sin * start[:, 0] + cos * start[:, 1]])
+    return centroids + units.mm(shift_mm), turns
+
+
+def parse_pivot(label: str) -> Pivot:
+    """A hinge label as the paper writes it ("8I": interface 8, intrados pivot) as a rigid pivot."""
+    side = label[-1:].upper()
+    if side not in SIDES or not label[:-1].isdigit() or int(label[:-1]) < 1:
+        raise LimitError(f"hinge {label!r}: expected an interface number and I or E, e.g. 8I")
+    return Pivot(int(label[:-1]) - 1, SIDES.index(side))
+
+
+def linkage_pose(case: ArchCase, at_mm: float, hinges: tuple[str, ...]) -> tuple[np.ndarray, np.ndarray]:
+    """Every block's centroid (m) and turn (rad) on the three-hinge linkage `hinges` (e.g. ("8I",
+    "28E", "46I")) at `at_mm` of path, closed exactly from the undeformed arch: one of the several
+    rigid states a support displacement admits, whichever the march passed through."""
+    arch = rigid_arch(case)
+    placement = close_linkage(arch, at_rest(arch), tuple(parse_pivot(h) for h in hinges), units.mm(at_mm))
+    if placement is None:
+        raise LimitError(f"the linkage {' '.join(hinges)} cannot reach {at_mm:g} mm")
+    return _centroids_and_turns(case, placement.rot, units.to_mm(placement.shift))
 
 
 def rigid_pose(case: ArchCase, at_mm: float, mirrored: bool = False) -> tuple[np.ndarray, np.ndarray]:
@@ -19,11 +46,7 @@ def rigid_pose(case: ArchCase, at_mm: float, mirrored: bool = False) -> tuple[np
     other support moving the mirrored way) and reflected back."""
     solved = mirror_image(case) if mirrored else case
     result = limit_analysis(solved, max_settlement_mm=at_mm, mirror=False)
-    turns = np.array(result.rotation_rad)
-    cos, sin = np.cos(turns), np.sin(turns)
-    start = rigid_arch(solved).centroid0
-    centroids = np.column_stack([cos * start[:, 0] - sin * start[:, 1], sin * start[:, 0] + cos * start[:, 1]])
-    centroids += units.mm(np.array(result.shift_mm))
+    centroids, turns = _centroids_and_turns(solved, np.array(result.rotation_rad), np.array(result.shift_mm))
     if mirrored:  # block k of the mirror image is block n + 1 - k here
         return centroids[::-1] * FLIP_X, -turns[::-1]
     return centroids, turns

@@ -1,0 +1,123 @@
+"""The rigid-block march with compliant joints beside its hinges: where a DEM arch of finite joint
+stiffness moves its hinges and collapses (docs/theory.md, "Compliant hinges").
+
+A Winkler joint beside a hinge folds when the rigid thrust comes within `model.compliant_hinge.
+fold_margin` of the edge the hinge pivots on (kn^(-1/3): 0.09 mm at kn 3000 N/mm^3 on the paper's
+arch), long before the rigid thrust reaches it. The march is the rigid one (`solve.limit`) with that
+margin required of the two joints beside each hinge; where it fails, the four-hinge chain that opens
+the folding joint is followed at a fixed support: if it closes the hinge beside it the hinge has
+moved (a migration), if it never does the arch collapses on it. The chain passes the rigid barrier
+the fold removed, so it may climb first, but it must end lower than it started.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from yadearch.model.compliant_hinge import fold_margin
+from yadearch.solve.limit_lp import Mechanism, Statics
+from yadearch.solve.rigid import Contacts, Pivot, Placement, RigidArch, contacts, turn_four_bar
+
+CURVATURE_STEP_RAD = 1e-4  # turn of the chain's first segment for the central differences
+OPENING_PROBE_RAD = 1e-6  # turn that tells which way the chain opens the folding joint
+MIGRATION_REACH = 3  # interfaces a folded joint may take a hinge across (the DEM's crown hinge walks two)
+SCREEN_FRACTION = 0.25  # joints whose thrust stays further from both edges (of their length) cannot fold
+
+
+@dataclass(frozen=True)
+class Margin:
+    """A closed joint: the corner it would pivot on, the hinge nearest it, the rigid thrust's distance
+    from that corner (m) and the distance at which the joint folds (m)."""
+
+    pivot: Pivot
+    hinge: Pivot
+    margin: float
+    critical: float
+
+    @property
+    def folds(self) -> bool:
+        return self.margin < self.critical
+
+
+def potential(arch: RigidArch, placement: Placement) -> float:
+    """The weights' potential energy (J, from y = 0)."""
+    return float(arch.weight @ placement.centroids(arch)[:, 1])
+
+
+def _turn(arch: RigidArch, placement: Placement, joint: int) -> float:
+    return float(placement.rot[arch.right[joint]] - placement.rot[arch.left[joint]])
+
+
+def chain_curvature(arch: RigidArch, placement: Placement, chain: tuple[Pivot, ...], joint: int) -> float:
+    """G of the four-hinge `chain` at a fixed support: minus the second derivative of the weights'
+    potential energy with respect to the turn of `joint` (N m / rad^2; central differences)."""
+    h = CURVATURE_STEP_RAD
+    plus, minus = (turn_four_bar(arch, placement, chain, s * h) for s in (1.0, -1.0))
+    if plus is None or minus is None:
+        return 0.0
+    e0, e_plus, e_minus = potential(arch, placement), potential(arch, plus), potential(arch, minus)
+    t0 = _turn(arch, placement, joint)
+    t_plus, t_minus = _turn(arch, plus, joint) - t0, _turn(arch, minus, joint) - t0
+    rate, bend = (t_plus - t_minus) / (2.0 * h), (t_plus + t_minus) / h**2  # the joint's turn per turn
+    if abs(rate) < 1e-12:
+        return 0.0
+    slope, curve = (e_plus - e_minus) / (2.0 * h), (e_plus + e_minus - 2.0 * e0) / h**2
+    return -(curve - slope / rate * bend) / rate**2
+
+
+def joint_margins(arch: RigidArch, placement: Placement, normal: np.ndarray, c: Contacts,
+                  pivots: tuple[Pivot, ...], kn: float) -> list[Margin]:
+    """The margin of every closed joint whose thrust comes within SCREEN_FRACTION of its length of an
+    edge, from the corner normal forces `normal` (joint, side) of an admissible equilibrium; none
+    while every hinge is still closed (at rest the joints beside a hinge carry the thrust alike)."""
+    if all(c.touching[p.joint].all() for p in pivots):
+        return []
+    hinged = {p.joint for p in pivots}
+    margins = []
+    for joint in range(arch.n_joints):
+        total = float(normal[joint].sum())
+        if joint in hinged or not c.touching[joint].all() or total <= 0.0:
+            continue
+        length = float(np.linalg.norm(c.point[joint, 1] - c.point[joint, 0]))
+        side = int(np.argmin(normal[joint, ::-1]))  # the corner the thrust is nearer: the other carries less
+        margin = length * float(normal[joint, 1 - side]) / total
+        if margin > SCREEN_FRACTION * length:
+            continue
+        pivot = Pivot(joint, side)
+        hinge = min(pivots, key=lambda p: abs(p.joint - joint))
+        curvature = chain_curvature(arch, placement, tuple(sorted((*pivots, pivot))), joint)
+        margins.append(Margin(pivot, hinge, margin, fold_margin(curvature, kn, arch.geometry.depth)))
+    return margins
+
+
+def opening_chain(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ...], fold: Margin) -> Mechanism:
+    """The four-hinge chain that opens the folding joint of `fold` about its corner, as a mechanism
+    the rigid march's snap follows: it turns back (to close) the open hinges on the folding joint's
+    side whose gaps it narrows (one: the hinge moves there; none: the arch collapses on the chain)."""
+    chain = tuple(sorted((*pivots, fold.pivot)))
+    sign = 1.0
+    probe = turn_four_bar(arch, placement, chain, OPENING_PROBE_RAD)
+    if probe is None or contacts(arch, probe).gap[fold.pivot.joint, 1 - fold.pivot.side] <= 0.0:
+        sign = -1.0
+        probe = turn_four_bar(arch, placement, chain, -OPENING_PROBE_RAD)
+    closing: tuple[int, ...] = ()
+    if probe is not None:
+        before, after = contacts(arch, placement).gap, contacts(arch, probe).gap
+        closing = tuple(p.joint for p in pivots if p.side == fold.pivot.side
+                        and after[p.joint, 1 - p.side] < before[p.joint, 1 - p.side])
+    curvature = chain_curvature(arch, placement, chain, fold.pivot.joint)
+    return Mechanism(chain, (sign,) * len(chain), -abs(curvature), closing)
+
+
+def folds(arch: RigidArch, placement: Placement, statics: Statics, pivots: tuple[Pivot, ...], kn: float,
+          armed: dict[Pivot, bool]) -> list[Margin]:
+    """The joints that fold at `placement`, deepest first, given its admissible equilibrium
+    `statics`. Only a joint that held when first seen with the hinges open (`armed`, filled here,
+    emptied when the mechanism changes) can fold: one that never held shares a hinge from the start
+    (the keystone's tie, a hinge spread over two joints)."""
+    margins = joint_margins(arch, placement, statics.normal, statics.contacts, pivots, kn)
+    for m in margins:
+        armed.setdefault(m.pivot, not m.folds)
+    return sorted((m for m in margins if m.folds and armed[m.pivot]), key=lambda m: m.margin - m.critical)

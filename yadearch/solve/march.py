@@ -1,0 +1,276 @@
+"""The incremental rigid-block march of `solve.limit`: follow the three-hinge mechanism that the
+support drives, locate where equilibrium is lost, snap the hinges that migrate, read the collapse.
+
+Incremental, geometry updated. The kinematic LP gives the three-hinge mechanism that follows the
+support; the support moves in steps along it, each configuration reached exactly by closing the
+linkage (no drift), and the static LP checks that an admissible equilibrium remains with forces only
+at touching corners. A corner that closes on the way (a hinge turning back) ends the step there and
+the mechanism is solved again. When equilibrium is lost, bisection locates the limit, where the
+thrust line touches a fourth corner, and the mechanism at a fixed support just past it (a four-hinge
+chain that lowers the weights) is read. If it moves an open hinge to the next interface (it opens
+the neighbour and turns the open hinge back), the arch snaps along it at the fixed support until that
+hinge closes: a rigid hinge cannot migrate smoothly, since with both open the thrust line would have
+to pass four pivots. If equilibrium exists after the snap the march goes on (unless the snap moves a
+block further than `max_snap_mm`, then the collapse); any other chain, or no equilibrium after the
+snap, is collapse (a failure of the friction alone: sliding). With a joint stiffness `kn` the joints
+beside the hinges must also keep the thrust their fold margin from the edge (`solve.compliant`).
+"""
+
+from __future__ import annotations
+
+from typing import TypeGuard
+
+import numpy as np
+
+from yadearch.model import units
+from yadearch.solve.compliant import MIGRATION_REACH, Margin, folds, opening_chain, potential
+from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
+from yadearch.solve.limit_result import HingeRecord
+from yadearch.solve.rigid import (
+    LimitError,
+    Pivot,
+    Placement,
+    RigidArch,
+    at_rest,
+    close_linkage,
+    contacts,
+    turn_four_bar,
+)
+
+COLLAPSE_PROBE_MM = 0.05  # past a limit, where the four-hinge chain is read (clear of LP tolerances)
+CLOSURE_BISECTIONS = 60  # halvings that put a closing corner on its contact to round-off
+SNAP_FIRST_RAD, SNAP_MAX_RAD = 1e-7, 0.5  # search range of the rotation that closes a snapping hinge
+SNAP_SAMPLES = 9  # points along a snap where the weights must keep descending
+MAX_SNAPS = 5  # successive snaps at one support displacement before giving up
+
+
+class March:
+    """The incremental analysis of one arch; counts its LPs."""
+
+    def __init__(self, arch: RigidArch, step: float, tolerance: float, max_snap_mm: float,
+                 kn: float | None = None) -> None:
+        self.arch, self.step, self.tolerance, self.n_lp = arch, step, tolerance, 0
+        self.kn = kn  # joint stiffness (N/m^3) whose fold margins the joints beside hinges keep (None: rigid)
+        self.folding = False  # the chain followed now opens a joint that folded (it may climb first)
+        self.armed: dict[Pivot, bool] = {}  # joints beside the hinges that can fold (`compliant.first_fold`)
+        self.max_snap_mm = max_snap_mm  # a larger snap counts as collapse (inf: any snap is survived)
+        self.snap_collapse_mm: float | None = None  # the snap that ended the march, if one did
+        self.history: list[HingeRecord] = []
+        self.pivots: tuple[Pivot, ...] = ()  # the hinges of the mechanism followed now
+
+    def statics(self, placement: Placement, friction: bool = True, refine: bool = False) -> Statics:
+        self.n_lp += 1
+        return solve_statics(self.arch, placement, friction, refine)
+
+    def kinematics(self, placement: Placement, support_speed: float = 1.0) -> Mechanism | None:
+        self.n_lp += 1
+        return solve_kinematics(self.arch, placement, support_speed)
+
+    def admissible(self, placement: Placement | None) -> bool:
+        """An admissible equilibrium exists at `placement` (and no joint beside a hinge folds)."""
+        if placement is None:
+            return False
+        statics = self.statics(placement)
+        if not statics.feasible or self.kn is None:
+            return statics.feasible
+        return not any(self.snaps(placement, fold) for fold in self.folds(placement, statics))
+
+    def folds(self, placement: Placement, statics: Statics) -> list[Margin]:
+        """The joints that fold at `placement` (`compliant.folds`)."""
+        assert self.kn is not None
+        return folds(self.arch, placement, statics, self.pivots, self.kn, self.armed)
+
+    def snaps(self, placement: Placement, fold: Margin) -> bool:
+        """Whether the folded joint takes the hinge beside it by a snap (its opening chain ends lower
+        than it starts) or the arch collapses on it (the chain never closes that hinge); otherwise the
+        chain would climb to close it, and the two joints share the hinge until, further along the
+        support's path, the chain descends."""
+        path = self.closing_path(placement, opening_chain(self.arch, placement, self.pivots, fold))
+        if path is None:
+            return True
+        self.folding, folding = True, self.folding
+        climbs = self.climbs([potential(self.arch, p) for p in path])
+        self.folding = folding
+        return not climbs
+
+    def valid(self, placement: Placement | None, base: Placement) -> bool:
+        """Reached, and no corner open in `base` passed through its neighbour."""
+        if placement is None:
+            return False
+        was_open = ~contacts(self.arch, base).touching
+        return not np.any(contacts(self.arch, placement).gap[was_open] < 0.0)
+
+    def moved(self, base: Placement, mechanism: Mechanism, offset: float) -> Placement | None:
+        """`offset` further along a three-hinge `mechanism`; None if unreachable or overlapping."""
+        placement = close_linkage(self.arch, base, mechanism.pivots, base.delta + offset)
+        return placement if self.valid(placement, base) else None
+
+    def run(self, limit: float) -> tuple[Placement, Placement | None, Mechanism, Mechanism | None]:
+        """March to collapse or to `limit`: the last admissible placement, the one where the collapse
+        mechanism was read, the mechanism followed last and the collapse mechanism."""
+        state = at_rest(self.arch)
+        if not self.admissible(state):
+            raise LimitError("the arch admits no equilibrium at rest (too thin, or too little friction)")
+        mechanism = self.switch(state, None, 0.0)
+        corners = [c for c in self.arch.movement.corners if c < limit]
+        while state.delta < limit - 1e-12:
+            corner = next((c for c in corners if c > state.delta + 1e-12), limit)
+            offset = min(self.step, corner - state.delta)
+            trial, capped = self.moved(state, mechanism, offset), False
+            if trial is None:  # a corner closes, or the linkage straightens, within the step
+                offset = _bisect(lambda h: self.moved(state, mechanism, h) is not None, offset,
+                                 offset / 2**CLOSURE_BISECTIONS)
+                trial, capped = self.moved(state, mechanism, offset), True
+            if trial is not None and self.admissible(trial):
+                state = trial
+                if not capped and abs(state.delta - corner) < 1e-12 and corner < limit:  # the path turns
+                    mechanism = self.switch(state, mechanism, 0.0)
+                elif capped:  # a corner has closed (or the linkage straightened): solve the mechanism again
+                    new = self.switch(state, mechanism, 0.0)
+                    if set(new.pivots) == set(mechanism.pivots):
+                        raise LimitError(f"at {units.to_mm(state.delta):.3f} mm the mechanism can go no "
+                                         "further (its linkage straightens) and no other follows")
+                    mechanism = new
+                continue
+            offset = _bisect(lambda h: self.admissible(self.moved(state, mechanism, h)), offset,
+                             self.tolerance)
+            last = self.moved(state, mechanism, offset) if offset > 0 else state
+            if last is None:  # the bisection accepted `offset`, so the linkage reaches it
+                raise RuntimeError(f"at {units.to_mm(state.delta + offset):.3f} mm the last admissible "
+                                   "placement found by bisection can no longer be reached")
+            past = self.moved(state, mechanism, offset + self.tolerance)
+            read_at = self.moved(last, mechanism, units.mm(COLLAPSE_PROBE_MM)) or past
+            chain = self.failure_chain(read_at, past)
+            if past is None or not _migrates(chain, mechanism.pivots, self.reach):
+                return last, read_at, mechanism, chain
+            snapped, jump, chain = self.snap(past, chain, mechanism.pivots)
+            if snapped is not None and jump > self.max_snap_mm:
+                self.snap_collapse_mm = jump
+            if snapped is None or self.snap_collapse_mm is not None:
+                return last, read_at, mechanism, chain
+            state, mechanism = snapped, self.switch(snapped, mechanism, jump)
+        return state, None, mechanism, None
+
+    def failure_chain(self, read_at: Placement | None, past: Placement | None) -> Mechanism | None:
+        """The four-hinge chain at a fixed support just past a limit (`read_at`): the rigid
+        kinematics' collapse or hinge-migrating chain (`past`: the placement the snap starts from)."""
+        self.folding = False
+        if self.kn is not None and past is not None:
+            statics = self.statics(past)
+            candidates = self.folds(past, statics) if statics.feasible else []
+            fold = next((f for f in candidates if self.snaps(past, f)), None)
+            if fold is not None:  # the rigid arch stands, a compliant joint beside a hinge does not
+                self.folding = True
+                return opening_chain(self.arch, past, self.pivots, fold)
+        return self.kinematics(read_at, support_speed=0.0) if read_at is not None else None
+
+    def snap(self, start: Placement, chain: Mechanism | None,
+             pivots: tuple[Pivot, ...]) -> tuple[Placement | None, float, Mechanism | None]:
+        """Follow hinge-migrating chains at a fixed support from `start` until the turned-back hinge
+        closes and equilibrium exists again: that placement, the largest block movement (mm) and the
+        last chain; None for the placement if the arch finds no equilibrium so (collapse)."""
+        state = start
+        for _ in range(MAX_SNAPS):
+            if not _migrates(chain, pivots, self.reach):
+                return None, 0.0, chain
+            path = self.closing_path(state, chain)
+            if path is None:
+                return None, 0.0, chain
+            height = [potential(self.arch, p) for p in path]
+            if self.climbs(height):
+                raise LimitError(f"at {units.to_mm(start.delta):.3f} mm the arch comes to rest on four "
+                                 "open hinges, which this analysis does not follow")
+            closed = np.flatnonzero((contacts(self.arch, path[-1]).touching
+                                     & ~contacts(self.arch, state).touching).any(axis=1))
+            if list(closed) != list(chain.closing):
+                return None, 0.0, chain  # the chain straightened, or closed another corner first
+            state = path[-1]
+            pivots = self.pivots = tuple(p for p in chain.pivots if p.joint not in chain.closing)
+            if self.admissible(state):
+                moved = np.linalg.norm(state.centroids(self.arch) - start.centroids(self.arch), axis=1)
+                return state, units.to_mm(float(moved.max())), chain
+            chain = self.failure_chain(state, state)
+        return None, 0.0, chain
+
+    def closing_path(self, state: Placement, chain: Mechanism) -> list[Placement] | None:
+        """SNAP_SAMPLES placements along `chain` at a fixed support from `state` until the hinge it
+        turns back closes (None: it never does, the chain runs away)."""
+        sign = np.sign(chain.rates[0])  # the first segment turns with its hinge's relative rate
+
+        def turned(angle: float) -> Placement | None:
+            placement = turn_four_bar(self.arch, state, chain.pivots, sign * angle)
+            return placement if self.valid(placement, state) else None
+
+        angle = SNAP_FIRST_RAD
+        while turned(angle) is not None and angle < SNAP_MAX_RAD:
+            angle *= 2.0
+        if angle >= SNAP_MAX_RAD:
+            return None
+        angle = _bisect(lambda a: turned(a) is not None, angle, angle / 2**CLOSURE_BISECTIONS)
+        return _reached([turned(a) for a in np.linspace(0.0, angle, SNAP_SAMPLES)], state)
+
+    @property
+    def reach(self) -> int:
+        """How many interfaces the chain followed now may move a hinge (`_migrates`)."""
+        return MIGRATION_REACH if self.folding else 1
+
+    def climbs(self, height: list[float]) -> bool:
+        """Whether the weights rise along a snap where they may not (heights of its samples): a rigid
+        arch snaps only downhill, else it would rest on four open hinges; past a fold the chain may
+        first climb the rigid barrier the fold removed, but must end lower and descend from its top."""
+        if not self.folding:
+            return bool(np.any(np.diff(height) > 0))
+        top = int(np.argmax(height))
+        return height[-1] >= height[0] or bool(np.any(np.diff(height[top:]) > 0))
+
+    def switch(self, state: Placement, mechanism: Mechanism | None, jump_mm: float) -> Mechanism:
+        """The three-hinge mechanism that follows the support from `state`, recorded in the history
+        (hinges that stop, hinges that start)."""
+        new = self.kinematics(state)
+        if new is None or len(new.pivots) != 3:
+            found = "none" if new is None else " ".join(p.label for p in new.pivots) or "none"
+            raise LimitError(f"at {units.to_mm(state.delta):.3f} mm the support is followed by no "
+                             f"three-hinge mechanism (hinges: {found})")
+        old = set() if mechanism is None else set(mechanism.pivots)
+        self.pivots = new.pivots
+        d_mm = units.to_mm(state.delta)
+        stopped = {p.label for p in old - set(new.pivots)}
+        for k, record in enumerate(self.history):
+            if record.to_mm is None and record.label in stopped:
+                self.history[k] = HingeRecord(record.interface, record.side, record.from_mm, d_mm,
+                                              record.jump_mm)
+        self.history += [HingeRecord(p.joint + 1, "IE"[p.side], d_mm, None, jump_mm)
+                         for p in new.pivots if p not in old]
+        return new
+
+
+def _migrates(chain: Mechanism | None, pivots: tuple[Pivot, ...], reach: int = 1) -> TypeGuard[Mechanism]:
+    """Whether a fixed-support `chain` moves a hinge of `pivots` to another interface: one new
+    hinge, at most `reach` interfaces from the one hinge it turns back (to close; 1 for a rigid
+    snap, the next interface). Any other lowering chain is a collapse."""
+    if chain is None or chain.power >= 0 or len(chain.pivots) != 4 or len(chain.closing) != 1:
+        return False
+    new = [p for p in chain.pivots if p not in pivots]
+    back = chain.closing[0]
+    return len(new) == 1 and back in {p.joint for p in pivots} and 1 <= abs(new[0].joint - back) <= reach
+
+
+def _reached(path: list[Placement | None], start: Placement) -> list[Placement]:
+    """The placements along a snap, each of which must be reachable: the search only checked its end."""
+    reached = [p for p in path if p is not None]
+    if len(reached) != len(path):
+        raise LimitError(f"at {units.to_mm(start.delta):.3f} mm the snapping chain cannot pass some of its "
+                         "intermediate positions, which this analysis does not follow")
+    return reached
+
+
+def _bisect(ok, high: float, width: float) -> float:
+    """The largest offset in [0, high] that `ok` accepts (ok(0) assumed), to within `width`."""
+    low = 0.0
+    while high - low > width:
+        mid = 0.5 * (low + high)
+        if mid in (low, high):  # adjacent floats: as close as it gets
+            break
+        low, high = (mid, high) if ok(mid) else (low, mid)
+    return low
+
