@@ -5,7 +5,7 @@ the voussoirs from rest and report how far they move and the hinges they end on;
 go on loading by the run's increments from that state to collapse (docs/validation.md).
 
     .venv/bin/python scripts/rigid_state_check.py --preset set2 --kn 3000 --set settlement_direction_deg=-45 \\
-        --at-mm 9.75 [--branch mirrored | --hinges 8I,28E,46I] [--load-on --out DIR]
+        --at-mm 9.75 [--branch mirrored] [--compliant | --hinges 8I,28E,46I] [--load-on --out DIR]
 
 A state that stays put (blocks moving far less than a millimetre) is an equilibrium of the DEM's
 joints too; exit code 1 if a block ran away by the run's `runaway_mm`. `--load-on` writes
@@ -75,6 +75,8 @@ def main() -> int:
                         help="the keystone's tie broken toward its left joint (direct) or its right one")
     parser.add_argument("--hinges", default=None,
                         help="place on this three-hinge linkage instead of the rigid march's state, e.g. 8I,28E,46I")
+    parser.add_argument("--compliant", action="store_true",
+                        help="place where the compliant-hinge march at the case's kn has the arch")
     parser.add_argument("--load-on", action="store_true", help="go on loading from the state to collapse")
     parser.add_argument("--out", type=Path, default=None, help="folder for summary.json (with --load-on)")
     args = parser.parse_args()
@@ -82,7 +84,7 @@ def main() -> int:
     if args.hinges:
         centroids, turns = linkage_pose(case, args.at_mm, tuple(args.hinges.split(",")))
     else:
-        centroids, turns = rigid_pose(case, args.at_mm, args.branch == "mirrored")
+        centroids, turns = rigid_pose(case, args.at_mm, args.branch == "mirrored", args.compliant)
     runner = Runner(case, log=(lambda text: print(text, flush=True)) if args.load_on else (lambda _: None))
     try:
         runner.selfweight()
@@ -90,7 +92,8 @@ def main() -> int:
         placed_mm = units.to_mm(runner.delta())
         if abs(placed_mm - args.at_mm) > PLACEMENT_TOLERANCE_MM:
             raise SystemExit(f"the placed support reads {placed_mm:.6f} mm, not --at-mm {args.at_mm:g}")
-        where = f"linkage {args.hinges}" if args.hinges else f"{args.branch} branch"
+        where = f"linkage {args.hinges}" if args.hinges else \
+            f"{args.branch} branch{', compliant hinges' if args.compliant else ''}"
         print(f"placed at {args.at_mm:g} mm ({where}): {hinge_text(runner)}", flush=True)
         runner.stage = "relax"
         verdict = runner.hold(max_s=case.numerics.hold_max_s)

@@ -201,8 +201,10 @@ def calibrate(case: ArchCase, target_du_mm: float, out: str | Path, kn_min: floa
                             kn_min, kn_max)
 
 
-def limit(case: ArchCase):
-    """Rigid-block limit analysis of `case` (no YADE, seconds): du_rigid and the hinge history."""
+def limit(case: ArchCase, compliant: bool = False):
+    """Rigid-block limit analysis of `case` (no YADE, seconds): du_rigid and the hinge history;
+    `compliant`: with the joints folding at the margin the case's kn allows (what a DEM run of that
+    stiffness should find; docs/validation.md)."""
     from yadearch.solve.limit import limit_analysis
 
-    return limit_analysis(case)
+    return limit_analysis(case, compliant=compliant)

@@ -97,19 +97,26 @@ def params() -> None:
               help="count a hinge snap that moves a block further than this (mm) as collapse, as a DEM "
                    "run counts a block running away (default: every snap that ends in equilibrium is "
                    "survived)")
+@click.option("--compliant", is_flag=True,
+              help="let the joints fold at the margin the case's kn allows (compliant hinges): the du a DEM "
+                   "run of that stiffness should find, written as NAME_compliant.json")
 def limit(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
-          out: str, max_snap_mm: float | None) -> None:
-    """Rigid-block limit analysis, no YADE (kn is ignored): du_rigid, hinges, thrust-line figure."""
+          out: str, max_snap_mm: float | None, compliant: bool) -> None:
+    """Rigid-block limit analysis, no YADE: du_rigid, hinges, thrust-line figure (kn only with --compliant)."""
     from yadearch.case.imperfect import amplitudes
     from yadearch.plotting.thrust_line import save_thrust_line
+    from yadearch.solve.compliant import VALID_MARGIN_FRACTION
     from yadearch.solve.limit import limit_analysis
     from yadearch.solve.limit_result import write_result_json
 
     case = resolve_case(preset_name, case_file, kn, settings)
-    result = limit_analysis(case, max_snap_mm=max_snap_mm)
-    path = write_result_json(result, case, Path(out) / f"{case.name}.json")
-    save_thrust_line(result, case, Path(out) / case.name)
+    result = limit_analysis(case, max_snap_mm=max_snap_mm, compliant=compliant)
+    name = f"{case.name}_compliant" if compliant else case.name
+    path = write_result_json(result, case, Path(out) / f"{name}.json")
+    save_thrust_line(result, case, Path(out) / name)
     du = "no collapse" if result.du_rigid_mm is None else f"{result.du_rigid_mm:.2f} mm"
+    if compliant:
+        du += f" with compliant hinges at kn {case.interface.kn_N_per_mm3:g} N/mm^3"
     new = f" (new: {' '.join(result.new_at_collapse)})" if result.new_at_collapse else ""
     click.echo(f"{case.name}: du_rigid = {du}, {result.collapse_mode} on {' '.join(result.collapse_hinges)}"
                f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}")
@@ -118,6 +125,11 @@ def limit(preset_name: str | None, case_file: str | None, kn: float | None, sett
         hinges = " ".join(result.mirror_collapse_hinges or ())
         click.echo(f"mirrored (the keystone's other joint): du_rigid = {mirrored} ({result.mirror_collapse_mode}"
                    f"{' on ' + hinges if hinges else ''})")
+    largest = result.compliant_largest_margin_mm
+    if largest is not None and largest > VALID_MARGIN_FRACTION * case.geometry.thickness_mm:
+        click.echo(f"note: a joint folded {largest:.2f} mm from its edge, more than "
+                   f"{VALID_MARGIN_FRACTION:.0%} of the joint: joints this soft deform the whole arch, which "
+                   "the compliant march ignores (docs/validation.md)", err=True)
     if not amplitudes(case).flat_aligned_faces:
         click.echo("note: the rigid analysis takes the voussoirs' dimension errors and worn edges but not the "
                    "faces' angles, bumps or offsets: its du is that of flat, aligned faces", err=True)

@@ -110,4 +110,5 @@ def _solve(case: ArchCase, step_mm: float, tolerance_mm: float, max_settlement_m
         max_snap_mm=None if math.isinf(snap_cap) else snap_cap, snap_collapse_mm=march.snap_collapse_mm,
         step_mm=step_mm,
         tolerance_mm=tolerance_mm, compliant_kn_N_per_mm3=case.interface.kn_N_per_mm3 if compliant else None,
+        compliant_largest_margin_mm=units.to_mm(march.largest_margin) if compliant else None,
         n_lp=march.n_lp, wall_s=time.perf_counter() - start), arch

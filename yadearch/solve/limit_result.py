@@ -71,7 +71,8 @@ class LimitResult:
     snap_collapse_mm: float | None  # the largest block movement of the snap that was the collapse
     step_mm: float
     tolerance_mm: float
-    compliant_kn_N_per_mm3: float | None  # the joints beside hinges fold at this kn's margin (None: rigid)
+    compliant_kn_N_per_mm3: float | None  # the joints fold at this kn's margin (None: rigid)
+    compliant_largest_margin_mm: float | None  # the largest fold margin the march met
     n_lp: int
     wall_s: float
     # the mirror image's du (moving support swapped): on an odd number of voussoirs a support that

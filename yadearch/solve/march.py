@@ -23,7 +23,7 @@ from typing import TypeGuard
 import numpy as np
 
 from yadearch.model import units
-from yadearch.solve.compliant import MIGRATION_REACH, Margin, folds, opening_chain, potential
+from yadearch.solve.compliant import MIGRATION_REACH, Margin, folds, joint_margins, opening_chain, potential
 from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
 from yadearch.solve.limit_result import HingeRecord
 from yadearch.solve.rigid import (
@@ -52,7 +52,8 @@ class March:
         self.arch, self.step, self.tolerance, self.n_lp = arch, step, tolerance, 0
         self.kn = kn  # joint stiffness (N/m^3) whose fold margins the joints beside hinges keep (None: rigid)
         self.folding = False  # the chain followed now opens a joint that folded (it may climb first)
-        self.armed: dict[Pivot, bool] = {}  # joints beside the hinges that can fold (`compliant.first_fold`)
+        self.armed: dict[Pivot, bool] = {}  # joints that can fold (`compliant.folds`)
+        self.largest_margin = 0.0  # the largest fold margin met (m)
         self.max_snap_mm = max_snap_mm  # a larger snap counts as collapse (inf: any snap is survived)
         self.snap_collapse_mm: float | None = None  # the snap that ended the march, if one did
         self.history: list[HingeRecord] = []
@@ -76,9 +77,12 @@ class March:
         return not any(self.snaps(placement, fold) for fold in self.folds(placement, statics))
 
     def folds(self, placement: Placement, statics: Statics) -> list[Margin]:
-        """The joints that fold at `placement` (`compliant.folds`)."""
+        """The joints that fold at `placement`, given its admissible equilibrium `statics`
+        (`compliant.folds`); keeps the largest fold margin met."""
         assert self.kn is not None
-        return folds(self.arch, placement, statics, self.pivots, self.kn, self.armed)
+        margins = joint_margins(self.arch, placement, statics.normal, statics.contacts, self.pivots, self.kn)
+        self.largest_margin = max([self.largest_margin, *(m.critical for m in margins)])
+        return folds(margins, self.armed)
 
     def snaps(self, placement: Placement, fold: Margin) -> bool:
         """Whether the folded joint takes the hinge beside it by a snap (its opening chain ends lower

@@ -40,12 +40,14 @@ def linkage_pose(case: ArchCase, at_mm: float, hinges: tuple[str, ...]) -> tuple
     return _centroids_and_turns(case, placement.rot, units.to_mm(placement.shift))
 
 
-def rigid_pose(case: ArchCase, at_mm: float, mirrored: bool = False) -> tuple[np.ndarray, np.ndarray]:
+def rigid_pose(case: ArchCase, at_mm: float, mirrored: bool = False,
+               compliant: bool = False) -> tuple[np.ndarray, np.ndarray]:
     """Every block's centroid (n_blocks, 2; m) and turn (rad) in the rigid analysis of `case` at
     `at_mm` of path; `mirrored`: on the keystone's other branch, solved as the mirror image (the
-    other support moving the mirrored way) and reflected back."""
+    other support moving the mirrored way) and reflected back; `compliant`: in the compliant-hinge
+    march at the case's kn (where the DEM should be)."""
     solved = mirror_image(case) if mirrored else case
-    result = limit_analysis(solved, max_settlement_mm=at_mm, mirror=False)
+    result = limit_analysis(solved, max_settlement_mm=at_mm, mirror=False, compliant=compliant)
     centroids, turns = _centroids_and_turns(solved, np.array(result.rotation_rad), np.array(result.shift_mm))
     if mirrored:  # block k of the mirror image is block n + 1 - k here
         return centroids[::-1] * FLIP_X, -turns[::-1]
