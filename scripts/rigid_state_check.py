@@ -9,7 +9,8 @@ go on loading by the run's increments from that state to collapse (docs/validati
 
 A state that stays put (blocks moving far less than a millimetre) is an equilibrium of the DEM's
 joints too; exit code 1 if a block ran away by the run's `runaway_mm`. `--load-on` writes
-DIR/summary.json (du, its bracket, the mechanisms, the relaxations) and prints the progress.
+DIR/summary.json (du, its bracket, the mechanisms, the relaxations) and DIR/case.toml, which
+scripts/limit_check.py reads, and prints the progress.
 """
 
 from __future__ import annotations
@@ -31,7 +32,7 @@ from yadearch.engine.loading import EquilibriumPath  # noqa: E402
 from yadearch.engine.runner import Runner  # noqa: E402
 from yadearch.engine.scene_state import place_voussoirs  # noqa: E402
 from yadearch.model import units  # noqa: E402
-from yadearch.results.rundir import hinge_list  # noqa: E402
+from yadearch.results.rundir import CASE_FILE, hinge_list  # noqa: E402
 from yadearch.solve.path import RUNAWAY, STABLE  # noqa: E402
 from yadearch.solve.pose import linkage_pose, rigid_pose  # noqa: E402
 
@@ -62,6 +63,7 @@ def load_on(runner: Runner, start_mm: float, out: Path | None, arguments: dict) 
     summary.update(steps=runner.total_steps, wall_s=time.time() - runner.wall0)
     if out is not None:
         out.mkdir(parents=True, exist_ok=True)
+        write_text_atomically(out / CASE_FILE, runner.case.to_toml())
         write_text_atomically(out / "summary.json", json.dumps(summary, indent=1) + "\n")
 
 

@@ -3,7 +3,7 @@ stiffness moves its hinges and collapses (docs/theory.md, "Compliant hinges").
 
 A Winkler joint beside a hinge folds when the rigid thrust comes within `model.compliant_hinge.
 fold_margin` of the edge the hinge pivots on (kn^(-1/3): 0.09 mm at kn 3000 N/mm^3 on the paper's
-arch), long before the rigid thrust reaches it. The march is the rigid one (`solve.limit`) with that
+arch), long before the rigid thrust reaches it. The march is the rigid one (`solve.march`) with that
 margin required of the two joints beside each hinge; where it fails, the four-hinge chain that opens
 the folding joint is followed at a fixed support: if it closes the hinge beside it the hinge has
 moved (a migration), if it never does the arch collapses on it. The chain passes the rigid barrier
