@@ -1,15 +1,15 @@
-"""The rigid-block march with compliant joints beside its hinges: where a DEM arch of finite joint
-stiffness moves its hinges and collapses (docs/theory.md, "Compliant hinges").
+"""The rigid-block march with compliant joints: where a DEM arch of finite joint stiffness moves its
+hinges and collapses (docs/theory.md, "Compliant hinges").
 
-A Winkler joint beside a hinge folds when the rigid thrust comes within `model.compliant_hinge.
-fold_margin` of the edge the hinge pivots on (kn^(-1/3): 0.09 mm at kn 3000 N/mm^3 on the paper's
-arch), long before the rigid thrust reaches it. The march is the rigid one (`solve.march`) with that
-margin required of the two joints beside each hinge; where it fails, the four-hinge chain that opens
-the folding joint is followed at a fixed support: if it closes the hinge beside it the hinge has
-moved (a migration), if it never does the arch collapses on it. The chain passes the rigid barrier
-the fold removed, so it may climb first, but it must end lower than it started.
+A Winkler joint folds when the rigid thrust comes within `model.compliant_hinge.fold_margin` of an
+edge (kn^(-1/3): 0.1 mm beside a hinge at kn 3000 N/mm^3 on the paper's arch), long before the rigid
+thrust reaches it. The march (`solve.march`) requires that margin of every closed joint whose thrust
+nears an edge. Where one folds, the four-hinge chain that opens it is followed at a fixed support:
+if it turns a hinge back until it closes, ending lower than it started, the hinge has moved there
+(it may first climb the rigid barrier the fold removed); if it would climb to the closure, the two
+joints share the hinge until, further on, the chain descends; if it closes no hinge, the arch
+collapses on it.
 """
-
 from __future__ import annotations
 
 from dataclasses import dataclass

@@ -50,7 +50,7 @@ class March:
     def __init__(self, arch: RigidArch, step: float, tolerance: float, max_snap_mm: float,
                  kn: float | None = None) -> None:
         self.arch, self.step, self.tolerance, self.n_lp = arch, step, tolerance, 0
-        self.kn = kn  # joint stiffness (N/m^3) whose fold margins the joints beside hinges keep (None: rigid)
+        self.kn = kn  # joint stiffness (N/m^3) whose fold margins the joints keep (None: rigid blocks)
         self.folding = False  # the chain followed now opens a joint that folded (it may climb first)
         self.armed: dict[Pivot, bool] = {}  # joints that can fold (`compliant.folds`)
         self.largest_margin = 0.0  # the largest fold margin met (m)
@@ -68,7 +68,8 @@ class March:
         return solve_kinematics(self.arch, placement, support_speed)
 
     def admissible(self, placement: Placement | None) -> bool:
-        """An admissible equilibrium exists at `placement` (and no joint beside a hinge folds)."""
+        """An admissible equilibrium exists at `placement` (and, with `kn`, no joint folds into a snap
+        or a collapse)."""
         if placement is None:
             return False
         statics = self.statics(placement)
@@ -85,17 +86,12 @@ class March:
         return folds(margins, self.armed)
 
     def snaps(self, placement: Placement, fold: Margin) -> bool:
-        """Whether the folded joint takes the hinge beside it by a snap (its opening chain ends lower
-        than it starts) or the arch collapses on it (the chain never closes that hinge); otherwise the
-        chain would climb to close it, and the two joints share the hinge until, further along the
-        support's path, the chain descends."""
+        """Whether the folded joint takes a hinge by a snap (its opening chain ends lower than it
+        starts) or the arch collapses on it (the chain closes no hinge); otherwise the chain would
+        climb to close one, and the two joints share that hinge until, further along the support's
+        path, the chain descends."""
         path = self.closing_path(placement, opening_chain(self.arch, placement, self.pivots, fold))
-        if path is None:
-            return True
-        self.folding, folding = True, self.folding
-        climbs = self.climbs([potential(self.arch, p) for p in path])
-        self.folding = folding
-        return not climbs
+        return path is None or not _climbs([potential(self.arch, p) for p in path], past_fold=True)
 
     def valid(self, placement: Placement | None, base: Placement) -> bool:
         """Reached, and no corner open in `base` passed through its neighbour."""
@@ -181,7 +177,7 @@ class March:
             if path is None:
                 return None, 0.0, chain
             height = [potential(self.arch, p) for p in path]
-            if self.climbs(height):
+            if _climbs(height, self.folding):
                 raise LimitError(f"at {units.to_mm(start.delta):.3f} mm the arch comes to rest on four "
                                  "open hinges, which this analysis does not follow")
             closed = np.flatnonzero((contacts(self.arch, path[-1]).touching
@@ -218,15 +214,6 @@ class March:
         """How many interfaces the chain followed now may move a hinge (`_migrates`)."""
         return MIGRATION_REACH if self.folding else 1
 
-    def climbs(self, height: list[float]) -> bool:
-        """Whether the weights rise along a snap where they may not (heights of its samples): a rigid
-        arch snaps only downhill, else it would rest on four open hinges; past a fold the chain may
-        first climb the rigid barrier the fold removed, but must end lower and descend from its top."""
-        if not self.folding:
-            return bool(np.any(np.diff(height) > 0))
-        top = int(np.argmax(height))
-        return height[-1] >= height[0] or bool(np.any(np.diff(height[top:]) > 0))
-
     def switch(self, state: Placement, mechanism: Mechanism | None, jump_mm: float) -> Mechanism:
         """The three-hinge mechanism that follows the support from `state`, recorded in the history
         (hinges that stop, hinges that start)."""
@@ -246,6 +233,16 @@ class March:
         self.history += [HingeRecord(p.joint + 1, "IE"[p.side], d_mm, None, jump_mm)
                          for p in new.pivots if p not in old]
         return new
+
+
+def _climbs(height: list[float], past_fold: bool) -> bool:
+    """Whether the weights rise along a snap where they may not (heights of its samples): a rigid
+    arch snaps only downhill, else it would rest on four open hinges; past a fold the chain may
+    first climb the rigid barrier the fold removed, but must end lower and descend from its top."""
+    if not past_fold:
+        return bool(np.any(np.diff(height) > 0))
+    top = int(np.argmax(height))
+    return height[-1] >= height[0] or bool(np.any(np.diff(height[top:]) > 0))
 
 
 def _migrates(chain: Mechanism | None, pivots: tuple[Pivot, ...], reach: int = 1) -> TypeGuard[Mechanism]:
