@@ -57,6 +57,8 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("run", type=Path, help="a finished run folder with joints.csv")
     args = parser.parse_args()
+    if not (args.run / "joints.csv").is_file() or not (args.run / CASE_FILE).is_file():
+        parser.error(f"run {args.run}: no joints.csv and case.toml there (a finished `yadearch run` folder)")
     case = load_case(args.run / CASE_FILE)
     arch, kn = rigid_arch(case), units.stiffness_per_volume(case.interface.kn_N_per_mm3)
     print("| from (mm) | to (mm) | mechanism before | after | joint taking a hinge "
