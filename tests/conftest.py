@@ -2,12 +2,18 @@
 
 from __future__ import annotations
 
-from pathlib import Path
+import os
 
-import numpy as np
-import pytest
+# tests run YADE in this process: numpy's OpenBLAS must start with one thread, or its idle worker
+# spins on the second core (beside another run, 300-500 steps/s instead of 3 600-5 400)
+os.environ.setdefault("OMP_NUM_THREADS", "1")
 
-from yadearch.engine.yade_env import YADE_PY_DIRS
+from pathlib import Path  # noqa: E402
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+from yadearch.engine.yade_env import YADE_PY_DIRS  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]  # the project's root, for tests in any sub-folder
 DATA = Path(__file__).resolve().with_name("data")  # reference arrays written by earlier code
