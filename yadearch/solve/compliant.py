@@ -32,11 +32,10 @@ SCREEN_FRACTION = 0.25  # joints whose thrust stays further from both edges (of 
 
 @dataclass(frozen=True)
 class Margin:
-    """A closed joint: the corner it would pivot on, the hinge nearest it, the rigid thrust's distance
-    from that corner (m) and the distance at which the joint folds (m)."""
+    """A closed joint: the corner it would pivot on, the rigid thrust's distance from that corner (m)
+    and the distance at which the joint folds (m)."""
 
     pivot: Pivot
-    hinge: Pivot
     margin: float
     critical: float
 
@@ -90,9 +89,8 @@ def joint_margins(arch: RigidArch, placement: Placement, normal: np.ndarray, c: 
         if margin > SCREEN_FRACTION * length:
             continue
         pivot = Pivot(joint, side)
-        hinge = min(pivots, key=lambda p: abs(p.joint - joint))
         curvature = chain_curvature(arch, placement, tuple(sorted((*pivots, pivot))), joint)
-        margins.append(Margin(pivot, hinge, margin, fold_margin(curvature, kn, arch.geometry.depth)))
+        margins.append(Margin(pivot, margin, fold_margin(curvature, kn, arch.geometry.depth)))
     return margins
 
 
