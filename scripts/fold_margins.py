@@ -20,6 +20,7 @@ import pandas as pd
 
 from yadearch.case.config import load_case
 from yadearch.model import units
+from yadearch.model.hinges import hinge_rotation
 from yadearch.results.rundir import CASE_FILE
 from yadearch.solve.compliant import joint_margins
 from yadearch.solve.limit_lp import solve_statics
@@ -27,14 +28,16 @@ from yadearch.solve.pose import parse_pivot
 from yadearch.solve.rigid import RigidArch, at_rest, close_linkage, rigid_arch
 
 
-def mechanisms(folder: Path, hinge_mrad: float) -> list[tuple[float, tuple[str, ...]]]:
-    """Each equilibrium's support displacement (mm) and hinges (joints turned beyond `hinge_mrad`)."""
+def mechanisms(folder: Path, hinge_mrad: float, joint_mm: float) -> list[tuple[float, tuple[str, ...]]]:
+    """Each equilibrium's support displacement (mm) and hinges: every joint turned beyond
+    `hinge_mrad`, about the corner `model.hinges.hinge_rotation` says for joints `joint_mm` long (not
+    grouped into spreads)."""
     joints = pd.read_csv(folder / "joints.csv")
     states = []
     for delta, state in joints[joints["stage"] == "equilibrium"].groupby("delta_mm"):
         turned = state[np.abs(state["rotation_rad"]) > units.mrad(hinge_mrad)]
-        sides = np.where(turned["opening_extrados_mm"] > turned["opening_intrados_mm"], "I", "E")
-        states.append((float(delta), tuple(f"{k}{s}" for k, s in zip(turned["interface"], sides))))
+        pivots = hinge_rotation(turned["opening_intrados_mm"], turned["opening_extrados_mm"], joint_mm)
+        states.append((float(delta), tuple(f"{k}{'I' if r > 0 else 'E'}" for k, r in zip(turned["interface"], pivots))))
     return states
 
 
@@ -64,7 +67,7 @@ def main() -> int:
     print("| from (mm) | to (mm) | mechanism before | after | joint taking a hinge "
           "| rigid margin before / after (mm) | fold margin (mm) |")
     print("|---|---|---|---|---|---|---|")
-    states = mechanisms(args.run, case.numerics.hinge_rotation_mrad)
+    states = mechanisms(args.run, case.numerics.hinge_rotation_mrad, case.geometry.thickness_mm)
     last = next(((d, h) for d, h in states if len(h) == 3), None)
     for delta, hinges in states:
         if last is None or len(hinges) < 3 or set(hinges) == set(last[1]):

@@ -32,11 +32,12 @@ SCREEN_FRACTION = 0.25  # joints whose thrust stays further from both edges (of 
 
 @dataclass(frozen=True)
 class Margin:
-    """A closed joint: the corner it would pivot on, the rigid thrust's distance from that corner (m)
-    and the distance at which the joint folds (m)."""
+    """A closed joint: the corner it would pivot on, the rigid thrust's distance from that corner (m),
+    the curvature G of the chain that opens it (N m / rad^2) and the distance at which it folds (m)."""
 
     pivot: Pivot
     margin: float
+    curvature: float
     critical: float
 
     @property
@@ -90,7 +91,7 @@ def joint_margins(arch: RigidArch, placement: Placement, normal: np.ndarray, c: 
             continue
         pivot = Pivot(joint, side)
         curvature = chain_curvature(arch, placement, tuple(sorted((*pivots, pivot))), joint)
-        margins.append(Margin(pivot, margin, fold_margin(curvature, kn, arch.geometry.depth)))
+        margins.append(Margin(pivot, margin, curvature, fold_margin(curvature, kn, arch.geometry.depth)))
     return margins
 
 
@@ -109,8 +110,7 @@ def opening_chain(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
         before, after = contacts(arch, placement).gap, contacts(arch, probe).gap
         closing = tuple(p.joint for p in pivots if p.side == fold.pivot.side
                         and after[p.joint, 1 - p.side] < before[p.joint, 1 - p.side])
-    curvature = chain_curvature(arch, placement, chain, fold.pivot.joint)
-    return Mechanism(chain, (sign,) * len(chain), -abs(curvature), closing)
+    return Mechanism(chain, (sign,) * len(chain), -abs(fold.curvature), closing)
 
 
 def folds(margins: list[Margin], armed: dict[Pivot, bool]) -> list[Margin]:

@@ -75,7 +75,8 @@ class March:
         statics = self.statics(placement)
         if not statics.feasible or self.kn is None:
             return statics.feasible
-        return not any(self.snaps(placement, fold) for fold in self.folds(placement, statics))
+        return not any(self.snaps(placement, self.opening(placement, fold))
+                       for fold in self.folds(placement, statics))
 
     def folds(self, placement: Placement, statics: Statics) -> list[Margin]:
         """The joints that fold at `placement`, given its admissible equilibrium `statics`
@@ -85,12 +86,15 @@ class March:
         self.largest_margin = max([self.largest_margin, *(m.critical for m in margins)])
         return folds(margins, self.armed)
 
-    def snaps(self, placement: Placement, fold: Margin) -> bool:
-        """Whether the folded joint takes a hinge by a snap (its opening chain ends lower than it
-        starts) or the arch collapses on it (the chain closes no hinge); otherwise the chain would
-        climb to close one, and the two joints share that hinge until, further along the support's
-        path, the chain descends."""
-        path = self.closing_path(placement, opening_chain(self.arch, placement, self.pivots, fold))
+    def opening(self, placement: Placement, fold: Margin) -> Mechanism:
+        """The chain that opens the folded joint of `fold` from `placement` (`compliant.opening_chain`)."""
+        return opening_chain(self.arch, placement, self.pivots, fold)
+
+    def snaps(self, placement: Placement, chain: Mechanism) -> bool:
+        """Whether a folded joint's opening `chain` takes a hinge by a snap (it ends lower than it
+        starts) or collapses the arch (it closes no hinge); otherwise it would climb to close one, and
+        the two joints share that hinge until, further along the support's path, the chain descends."""
+        path = self.closing_path(placement, chain)
         return path is None or not _climbs([potential(self.arch, p) for p in path], past_fold=True)
 
     def valid(self, placement: Placement | None, base: Placement) -> bool:
@@ -157,11 +161,11 @@ class March:
         self.folding = False
         if self.kn is not None and past is not None:
             statics = self.statics(past)
-            candidates = self.folds(past, statics) if statics.feasible else []
-            fold = next((f for f in candidates if self.snaps(past, f)), None)
-            if fold is not None:  # the rigid arch stands, a compliant joint beside a hinge does not
+            chains = (self.opening(past, f) for f in (self.folds(past, statics) if statics.feasible else []))
+            chain = next((c for c in chains if self.snaps(past, c)), None)
+            if chain is not None:  # the rigid arch stands, a folded compliant joint does not
                 self.folding = True
-                return opening_chain(self.arch, past, self.pivots, fold)
+                return chain
         return self.kinematics(read_at, support_speed=0.0) if read_at is not None else None
 
     def snap(self, start: Placement, chain: Mechanism | None,

@@ -8,17 +8,9 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.model import units
 from yadearch.solve.limit import limit_analysis, mirror_image
-from yadearch.solve.rigid import SIDES, LimitError, Pivot, at_rest, close_linkage, rigid_arch
+from yadearch.solve.rigid import SIDES, LimitError, Pivot, Placement, at_rest, close_linkage, rigid_arch
 
 FLIP_X = np.array([-1.0, 1.0])
-
-
-def _centroids_and_turns(case: ArchCase, turns: np.ndarray, shift_mm: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Every block's centroid (m) and turn (rad) from a rigid placement's turns and shifts."""
-    cos, sin = np.cos(turns), np.sin(turns)
-    start = rigid_arch(case).centroid0
-    centroids = np.column_stack([cos * start[:, 0] - sin * start[:, 1], sin * start[:, 0] + cos * start[:, 1]])
-    return centroids + units.mm(shift_mm), turns
 
 
 def parse_pivot(label: str) -> Pivot:
@@ -37,7 +29,7 @@ def linkage_pose(case: ArchCase, at_mm: float, hinges: tuple[str, ...]) -> tuple
     placement = close_linkage(arch, at_rest(arch), tuple(parse_pivot(h) for h in hinges), units.mm(at_mm))
     if placement is None:
         raise LimitError(f"the linkage {' '.join(hinges)} cannot reach {at_mm:g} mm")
-    return _centroids_and_turns(case, placement.rot, units.to_mm(placement.shift))
+    return placement.centroids(arch), placement.rot
 
 
 def rigid_pose(case: ArchCase, at_mm: float, mirrored: bool = False,
@@ -48,7 +40,9 @@ def rigid_pose(case: ArchCase, at_mm: float, mirrored: bool = False,
     march at the case's kn (where the DEM should be)."""
     solved = mirror_image(case) if mirrored else case
     result = limit_analysis(solved, max_settlement_mm=at_mm, mirror=False, compliant=compliant)
-    centroids, turns = _centroids_and_turns(solved, np.array(result.rotation_rad), np.array(result.shift_mm))
+    turns = np.array(result.rotation_rad)
+    placement = Placement(units.mm(at_mm), turns, units.mm(np.array(result.shift_mm)))
+    centroids = placement.centroids(rigid_arch(solved))
     if mirrored:  # block k of the mirror image is block n + 1 - k here
         return centroids[::-1] * FLIP_X, -turns[::-1]
     return centroids, turns
