@@ -34,7 +34,8 @@ class RunPlan:
 
 
 def plan_run(case: ArchCase) -> RunPlan:
-    """The time step, gravity ramp and worst-case steps of `case`; CaseError if it cannot run."""
+    """The time step, gravity ramp and worst-case steps of `case`; CaseError if it cannot run (the
+    static engine has no time step: its plan checks the arch, the movement and the increments)."""
     num = case.numerics
     if not num.du_tolerance_mm < num.first_increment_mm <= num.max_increment_mm:
         raise CaseError(f"numerics.du_tolerance_mm = {num.du_tolerance_mm:g}, first_increment_mm = "
@@ -43,6 +44,11 @@ def plan_run(case: ArchCase) -> RunPlan:
     geometry = arch_geometry(case)  # refuses an arch that cannot be built (case/shape.py)
     _check_imperfections(case, geometry)
     movement = case_movement(case, geometry)  # refuses a movement that cannot be followed (a pivot on the path's point)
+    if num.engine == "static":
+        if num.contact_model != "joint":
+            raise CaseError(f"numerics.contact_model = {num.contact_model!r} is the DEM's; the static engine "
+                            "evaluates the joint elements only (numerics.contact_model = 'joint')")
+        return RunPlan(math.nan, 0.0, 0.0, 0.0)  # no time stepping: nothing else to plan
     dt = num.timestep_safety * critical_timestep(case, geometry, contact_stiffness(case, geometry))
     if not math.isfinite(dt) or dt <= 0.0:
         raise CaseError(f"the time step from interface.kn_N_per_mm3 = {case.interface.kn_N_per_mm3:g} "

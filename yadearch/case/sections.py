@@ -116,6 +116,12 @@ class LoadingConfig:
 class NumericsConfig:
     """Numerical settings. None of them is physics: du must not depend on them (scripts/convergence.py)."""
 
+    engine: str = field(default="dem", metadata={
+        "choices": ("dem", "static"), "predates": "dem",
+        "doc": "the solver: 'dem' = YADE's explicit dynamics with damping, relaxed to equilibrium after "
+        "each support increment (the reference, and the only one for dynamics); 'static' = Newton's "
+        "method on the same blocks and joint law, each increment solved as a static equilibrium "
+        "(docs/theory.md, 'The static engine')"})
     settlement_rate_mm_per_s: float = field(default=80.0, metadata=_num(0, 1e4, low_open=True,
                                             doc="support speed during continuous loading (mm/s)"))
     rate_reference_kn_N_per_mm3: float = field(default=0.0, metadata={**_num(

@@ -26,10 +26,17 @@ def _report_summary(out: Path) -> None:
     du = summary["du_mm"]
     hinges = hinge_list(summary["hinges_at_collapse"])
     click.echo(f"{summary['name']}: du = {'no collapse' if du is None else f'{du:.2f} mm'}, "
-               f"hinges at collapse {hinges or '-'}, {summary['steps']} steps, "
+               f"hinges at collapse {hinges or '-'}, {_effort(summary)}, "
                f"{summary['wall_s']:.0f} s -> {out}")
     for warning in run_warnings(summary):
         click.echo(f"warning: {warning}")
+
+
+def _effort(summary: dict) -> str:
+    """What the run cost its engine: YADE steps, or the static engine's Newton iterations."""
+    if summary.get("engine") == "static":
+        return f"static engine, {summary['iterations']} iterations"
+    return f"{summary['steps']} steps"
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -90,7 +97,7 @@ def params() -> None:
 
 
 @cli.command()
-@case_options(with_kn=True)
+@case_options(with_kn=True, with_engine=False)
 @click.option("--out", type=click.Path(file_okay=False), default="reports/limit", show_default=True,
               help="folder that receives NAME.json, NAME.pdf and NAME.png")
 @click.option("--max-snap-mm", type=click.FloatRange(min=0.0, min_open=True), default=None,

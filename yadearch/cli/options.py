@@ -12,6 +12,8 @@ from yadearch.case.movement import movement_overrides
 from yadearch.studies.grid import parse_scalar
 
 PRESETS = ("set1", "set2")
+ENGINES = ("dem", "static")
+ENGINE_META = "yadearch_engine"  # where --engine leaves its choice for `resolve_case` (click's context)
 MOVEMENT_KEY = "movement"  # --set movement=NAME: a named support movement (case.movement.MOVEMENT_PRESETS)
 
 
@@ -32,11 +34,21 @@ def resolve_case(preset_name: str | None, case_file: str | None, kn: float | Non
         overrides[key.strip()] = parse_scalar(value)
     if kn is not None:
         overrides["interface.kn_N_per_mm3"] = kn
+    context = click.get_current_context(silent=True)
+    engine = context.meta.get(ENGINE_META) if context is not None else None
+    if engine is not None:
+        overrides["numerics.engine"] = engine
     return case.with_overrides(overrides) if overrides else case
 
 
-def case_options(with_kn: bool) -> Callable[[Any], Any]:
-    """--preset/--case/--set (and --kn, for commands about one case): the case a command starts from."""
+def _keep_engine(context: click.Context, _: click.Parameter, value: str | None) -> None:
+    if value is not None:
+        context.meta[ENGINE_META] = value
+
+
+def case_options(with_kn: bool, with_engine: bool = True) -> Callable[[Any], Any]:
+    """--preset/--case/--set (and --kn, for commands about one case; --engine, for commands that
+    run cases): the case a command starts from."""
     options = [
         click.option("--preset", "preset_name", type=click.Choice(PRESETS),
                      help="paper arch with the kn of voussoir set 1 (0.25 N/mm3) or set 2 (5.2 N/mm3)"),
@@ -48,6 +60,11 @@ def case_options(with_kn: bool) -> Callable[[Any], Any]:
     ]
     if with_kn:
         options.insert(2, click.option("--kn", type=float, help="interface normal stiffness kn (N/mm3)"))
+    if with_engine:
+        options.append(click.option(
+            "--engine", type=click.Choice(ENGINES), expose_value=False, callback=_keep_engine,
+            help="solver: dem (YADE, the default of the case) or static (Newton's method on the same blocks "
+            "and joints, seconds; docs/theory.md)"))
 
     def decorate(func: Any) -> Any:
         for option in reversed(options):

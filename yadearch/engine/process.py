@@ -1,4 +1,5 @@
-"""Launch one simulation in its own Python process and report its outcome."""
+"""Launch one simulation in its own Python process and report its outcome: YADE's, or the static
+engine's (`yadearch.statics`) for a case whose numerics.engine is 'static'."""
 
 from __future__ import annotations
 
@@ -16,6 +17,7 @@ from yadearch.engine.yade_env import YADE_PY_DIRS
 from yadearch.errors import RunFailedError, RunInterruptedError, YadeMissingError
 from yadearch.results.rundir import CASE_FILE, LOG_FILE, STAGING_PREFIX, is_complete, staging_folder
 
+STATIC_ENGINE = "static"  # numerics.engine of a run solved by the static engine (no YADE)
 REPLACED_SUFFIX = ".replaced"  # the previous folder NAME, for the moment of the swap
 INTERRUPTED_CODES = (130, -signal.SIGINT, -signal.SIGTERM)  # the child's own exit code, or the signal
 _children: set[subprocess.Popen] = set()  # the simulations this process waits on, from any thread
@@ -75,7 +77,9 @@ def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
     when complete: a run that does not finish never destroys the finished run `out` may hold (its
     log then stays in the staging folder, which the error names)."""
     plan_run(case)  # refuse, before any process starts, a case that cannot run or would not end
-    check_yade_installed()
+    static = case.numerics.engine == STATIC_ENGINE
+    if not static:
+        check_yade_installed()
     out = Path(out)
     staging = staging_folder(out)
     shutil.rmtree(staging, ignore_errors=True)
@@ -83,7 +87,8 @@ def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
     case_file = staging / CASE_FILE
     case_file.write_text(case.to_toml())
     env = dict(os.environ, OMP_NUM_THREADS=str(case.numerics.threads))
-    cmd = [sys.executable, "-m", "yadearch.engine.simulate", str(case_file), str(staging)]
+    module = "yadearch.statics.simulate" if static else "yadearch.engine.simulate"
+    cmd = [sys.executable, "-m", module, str(case_file), str(staging)]
     try:
         returncode, stderr = _run_child(cmd, env, timeout_s, quiet)
     except subprocess.TimeoutExpired:

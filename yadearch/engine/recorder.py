@@ -3,7 +3,7 @@ the block positions, and the largest mobilised friction and slip of the equilibr
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -12,8 +12,8 @@ from yadearch.engine.driver import SupportDriver
 from yadearch.engine.scene import ArchScene, body_states
 from yadearch.errors import RunFailedError
 from yadearch.model import units
-from yadearch.model.hinges import Hinge, hinge_rotation, hinges_at
-from yadearch.model.joints import joint_states
+from yadearch.model.hinges import Hinge
+from yadearch.results.joint_rows import friction_extremes, joint_rows, joint_snapshot, snapshot_entry
 from yadearch.results.rundir import STIFFNESS_COLUMN
 
 
@@ -74,26 +74,16 @@ class Recorder:
             self.records.series[-1][STIFFNESS_COLUMN] = self.scene.contacts.smallest_stiffness()
 
     def joint_snapshot(self) -> tuple[dict, list[Hinge]]:
-        """Per-interface state now, and its hinges."""
+        """Per-interface state now, and its hinges (`results.joint_rows`)."""
         from yade import O
 
         pos, rot = body_states(self.scene)
         if not np.all(np.isfinite(pos)):
             raise RunFailedError(f"NaN in block positions at step {O.iter}")
         points, normal, shear = self.scene.contacts.joint_contacts()
-        tan_friction = self.scene.stiffness.tan_friction
-        friction_use = np.divide(np.abs(shear), normal * tan_friction, out=np.zeros_like(shear),
-                                 where=normal > 0.0)
-        js = joint_states(self.scene.geometry, self.scene.pos0, pos, rot, points)
-        if self.scene.imperfections is not None:  # the real faces' openings: a wedge closed flat is closed
-            wedge_intrados, wedge_extrados = self.scene.imperfections.wedge_openings()
-            js = replace(js, opening_intrados=js.opening_intrados + wedge_intrados,
-                         opening_extrados=js.opening_extrados + wedge_extrados)
-        rotation = hinge_rotation(js.opening_intrados, js.opening_extrados, self.scene.geometry.thickness)
-        hinges = hinges_at(rotation, self.num.hinge_rotation_mrad * 1e-3)
-        return {"pos": pos, "rot": rot, "js": js, "normal": normal, "shear": shear,
-                "friction_use": friction_use, "slip": self.scene.contacts.joint_slip(),
-                "hinge_rotation": rotation}, hinges
+        return joint_snapshot(self.scene.geometry, self.scene.pos0, pos, rot, points, normal, shear,
+                              self.scene.contacts.joint_slip(), self.scene.stiffness.tan_friction,
+                              self.scene.imperfections, self.num.hinge_rotation_mrad * 1e-3)
 
     def joints(self, label: str | None = None) -> list[Hinge]:
         """Record every interface now (and, with a `label`, the block positions as a snapshot)."""
@@ -105,35 +95,12 @@ class Recorder:
         """Append the rows of joints.csv for a `joint_snapshot`, and its snapshot under `label`."""
         from yade import O
 
-        js = snap["js"]
         delta_mm = units.to_mm(self.driver.displacement())
-        common = {"stage": self.stage, "step": O.iter, "delta_mm": delta_mm}
-        columns = zip(js.rotation.tolist(), units.to_mm(js.opening_intrados).tolist(),
-                      units.to_mm(js.opening_extrados).tolist(), js.force_position.tolist(),
-                      snap["normal"].tolist(), snap["shear"].tolist(), snap["friction_use"].tolist(),
-                      units.to_mm(snap["slip"]).tolist())
-        self.records.joints.extend(
-            {**common, "interface": k + 1, "rotation_rad": rotation, "opening_intrados_mm": intrados,
-             "opening_extrados_mm": extrados, "force_position": position, "normal_force_N": normal,
-             "shear_force_N": shear, "friction_use": use, "slip_mm": slip}
-            for k, (rotation, intrados, extrados, position, normal, shear, use, slip)
-            in enumerate(columns))
+        self.records.joints.extend(joint_rows(snap, {"stage": self.stage, "step": O.iter, "delta_mm": delta_mm}))
         if label:
-            self.records.snapshots[label] = {
-                "delta_mm": delta_mm, "step": O.iter,
-                "pos_m": snap["pos"][:, :2].tolist(), "rot_rad": snap["rot"].tolist(),
-                "hinges": [h.to_json() for h in hinges],
-            }
+            self.records.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, O.iter)
 
     def track_friction(self, snap: dict) -> None:
-        """Keep the largest mobilised friction |T| / (N tan phi) and the largest accumulated slip
-        met in the equilibrium states, with their interfaces: friction can move du only where
-        some joint slides."""
-        use, slip = snap["friction_use"], snap["slip"]
-        k = int(np.argmax(use))
-        if use[k] > self.friction.get("max_friction_use", -1.0):
-            self.friction.update(max_friction_use=float(use[k]), friction_interface=k + 1,
-                                 friction_delta_mm=units.to_mm(self.driver.displacement()))
-        finite = np.nan_to_num(slip, nan=0.0)
-        j = int(np.argmax(finite))
-        self.friction.update(max_slip_mm=units.to_mm(float(slip[j])), slip_interface=j + 1)
+        """Keep the largest mobilised friction and slip met in the equilibrium states, with their
+        interfaces: friction can move du only where some joint slides."""
+        friction_extremes(self.friction, snap, units.to_mm(self.driver.displacement()))

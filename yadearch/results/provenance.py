@@ -21,5 +21,5 @@ def git_revision() -> str | None:
     return rev + ("+dirty" if dirty else "")
 
 
-def provenance(yade_version: str) -> dict[str, str | None]:
+def provenance(yade_version: str | None) -> dict[str, str | None]:
     return {"yade_version": yade_version, "yadearch_version": __version__, "git_revision": git_revision()}

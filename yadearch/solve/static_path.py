@@ -1,0 +1,168 @@
+"""The static engine's equilibrium oracle (pure numpy, no YADE): self-weight, then each support
+position solved by Newton's method from a predictor, a descent where Newton fails, and the same
+path logic as the DEM (`solve.path`) to bracket du (docs/theory.md, "The static engine").
+
+An increment is accepted when the arch is in a stable equilibrium (the free blocks' tangent
+stiffness positive definite) no block of which stands further than `runaway` from the predicted
+state; past a fold, the descent decides as the DEM's hold does: a stable state within `runaway` is
+a snap survived, a block moving `runaway` is collapse.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.linalg
+
+from yadearch.model.joint_law import JointForces
+from yadearch.solve.newton import Equilibrium, Solver, SolverSettings, largest_move
+from yadearch.solve.path import STABLE, PathResult, PathSettings, PathStep, follow_path
+from yadearch.solve.statics import StaticArch, smallest_eigenvalue
+
+GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
+SELFWEIGHT_FALL = 0.05  # a block falling this far (m) under self-weight means the arch cannot stand
+COLLAPSE_RUNAWAYS = 10.0  # the mechanism at collapse is shown this many runaway distances on
+
+
+class StaticEngineError(RuntimeError):
+    """The static engine cannot go on (no self-weight equilibrium)."""
+
+
+@dataclass
+class StaticState:
+    """An equilibrium (or the collapse) state: where the support was, the blocks, the joints."""
+
+    stage: str
+    lam: float
+    u: np.ndarray
+    forces: JointForces
+    slip: np.ndarray  # each joint's accumulated sliding beyond its Coulomb cap (m)
+    min_stiffness: float
+    iterations: int
+    residual: float
+    move: float = 0.0  # how far the blocks moved from the predicted state to reach it (m)
+
+
+@dataclass
+class StaticLoading:
+    """The path of one arch: its accepted states, the failures, and the solver's counts."""
+
+    arch: StaticArch
+    settings: PathSettings
+    runaway: float
+    solver_settings: SolverSettings = field(default_factory=SolverSettings)
+    log: Callable[[str], None] = print
+
+    def __post_init__(self) -> None:
+        self.solver = Solver(self.arch, self.solver_settings)
+        self.accepted: list[StaticState] = []
+        self.failures: dict[float, Equilibrium] = {}
+        self.snaps: list[dict] = []  # increments that needed the descent and survived
+        self.iterations = 0
+        self._trial: StaticState | None = None
+        self._before: StaticState | None = None
+
+    # ---- self-weight ------------------------------------------------------------------------
+    def selfweight(self) -> StaticState:
+        """Gravity in GRAVITY_STEPS load steps from the blocks exactly touching, each solved by the
+        descent (their joints have no stiffness before they are pressed), then by Newton."""
+        u = self.arch.with_supports(self.arch.at_rest(), 0.0)
+        shear = np.zeros(len(self.arch.table.left))
+        start = u.copy()
+        for k in range(1, GRAVITY_STEPS + 1):
+            found = self.solver.descend(u, start, shear, SELFWEIGHT_FALL, gravity=k / GRAVITY_STEPS)
+            self.iterations += found.iterations
+            if found.verdict != STABLE:
+                raise StaticEngineError(
+                    f"the arch does not stand under its own weight ({found.verdict} at {k}/{GRAVITY_STEPS} "
+                    f"of gravity, a block moved {1e3 * found.moved:.1f} mm)")
+            u = found.u
+        state = self._state("selfweight", 0.0, found, np.zeros_like(shear), found.joints.forces)
+        self.accepted = [state]
+        return state
+
+    # ---- the oracle ---------------------------------------------------------------------------
+    def try_increment(self, target: float) -> str:
+        """Solve the arch with the support at `target` from the last accepted state."""
+        base = self.accepted[-1]
+        predicted = self.predict(target)
+        found = self.solver.newton(predicted, base.u, base.forces.shear_force)
+        if found is None or not found.stable() or found.moved > self.runaway:
+            newton_failed = found is None
+            found = self.solver.descend(predicted, base.u, base.forces.shear_force, self.runaway)
+            if found.verdict == STABLE:
+                self.snaps.append({"delta_mm": 1e3 * target, "move_mm": 1e3 * found.moved,
+                                   "newton_failed": newton_failed})
+        self.iterations += found.iterations
+        if found.verdict != STABLE:
+            self.failures[target] = found
+            return found.verdict
+        self._trial = self._state("equilibrium", target, found, base.slip + found.joints.forces.plastic_slip,
+                                  found.joints.forces)
+        self._trial.move = found.moved
+        return STABLE
+
+    def accept(self) -> None:
+        assert self._trial is not None
+        self._trial.min_stiffness = smallest_eigenvalue(self._stiffness_of(self._trial))
+        self.accepted.append(self._trial)
+        self._trial = None
+
+    def settle(self) -> bool:
+        """A static equilibrium is at rest already: nothing creeps."""
+        return True
+
+    def discard(self) -> None:
+        self.accepted.pop()
+
+    def predict(self, target: float) -> np.ndarray:
+        """Where the arch should be with the support at `target`: the secant through the last two
+        accepted states, or from the self-weight state the tangent's response to the support's move."""
+        last = self.accepted[-1]
+        if len(self.accepted) >= 2 and self.accepted[-2].lam != last.lam:
+            before = self.accepted[-2]
+            ratio = (target - last.lam) / (last.lam - before.lam)
+            return self.arch.with_supports(last.u + ratio * (last.u - before.u), target)
+        moved = self.arch.with_supports(last.u, target)
+        stiffness = self.arch.stiffness(self.solver.state(last.u, last.u, last.forces.shear_force)[0])
+        free = self.arch.free_dofs
+        driven = np.setdiff1d(np.arange(len(moved)), free)
+        load = -stiffness[np.ix_(free, driven)] @ (moved - last.u)[driven]
+        try:
+            moved[free] += scipy.linalg.solve(stiffness[np.ix_(free, free)], load, check_finite=False)
+        except (np.linalg.LinAlgError, ValueError):
+            pass  # a singular tangent: the descent starts from the state with only the support moved
+        return moved
+
+    # ---- the whole path ---------------------------------------------------------------------------
+    def follow(self, on_step: Callable[[PathStep], None] | None = None) -> PathResult:
+        """From the self-weight state, increments to collapse (`solve.path.follow_path`)."""
+        return follow_path(self, self.settings, on_step=on_step)
+
+    def collapse_state(self, upper: float) -> StaticState:
+        """The mechanism at collapse: the failure at du's upper bracket end carried on until a block
+        has moved COLLAPSE_RUNAWAYS runaway distances."""
+        lam = min(self.failures, key=lambda d: abs(d - upper))
+        failure = self.failures[lam]
+        base = self.accepted[-1]
+        shear = base.forces.shear_force
+        carried = self.solver.descend(failure.u, base.u, shear, COLLAPSE_RUNAWAYS * self.runaway)
+        end = carried if carried.verdict != STABLE else failure
+        return self._state("collapse", lam, end, base.slip + end.joints.forces.plastic_slip,
+                           end.joints.forces)
+
+    def _state(self, stage: str, lam: float, found: Equilibrium, slip: np.ndarray,
+               forces: JointForces) -> StaticState:
+        return StaticState(stage, lam, found.u, forces, slip, float("nan"), found.iterations, found.residual)
+
+    def _stiffness_of(self, state: StaticState) -> np.ndarray:
+        base = self.accepted[-1]
+        joints, _ = self.solver.state(state.u, base.u, base.forces.shear_force)
+        free = self.arch.free_dofs
+        return self.arch.stiffness(joints)[np.ix_(free, free)]
+
+    def moved(self, state: StaticState) -> float:
+        """The largest block translation of a state from the self-weight state (m)."""
+        return largest_move(state.u, self.accepted[0].u)

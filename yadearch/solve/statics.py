@@ -1,0 +1,125 @@
+"""The arch as the static engine sees it (pure numpy/numba, no YADE): rigid planar blocks, the DEM's
+own joint function, the blocks' weights, and the supports placed along their path.
+
+A state is every block's pose (x, y, rotation) together with the joints' shear forces. The
+generalised coordinates are x, y and rotation x `length` (the ring's thickness), so that the tangent
+stiffness K = -dF/du is in N/m throughout, as `model.stability` records it for the DEM.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg
+
+from yadearch.case.config import ArchCase
+from yadearch.case.imperfect import ArchImperfections, arch_imperfections
+from yadearch.case.mechanics import arch_geometry, contact_stiffness
+from yadearch.case.movement import case_movement
+from yadearch.model import units
+from yadearch.model.geometry import ArchGeometry, block_volume
+from yadearch.model.joint_law import JointLaw, JointTable, joint_table
+from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, assemble, joint_tangent
+from yadearch.model.movement import Movement
+from yadearch.solve.rigid import polygon_centroid, rotate
+
+
+@dataclass(frozen=True)
+class StaticArch:
+    """A case's blocks for the static engine: geometry, joints, weights (N, per block), undeformed
+    centroids (m), the supports' movement, and which blocks are free."""
+
+    geometry: ArchGeometry
+    table: JointTable
+    law: JointLaw
+    weight: np.ndarray
+    centroid0: np.ndarray
+    movement: Movement
+    imperfections: ArchImperfections | None
+
+    @property
+    def n_blocks(self) -> int:
+        return len(self.weight)
+
+    @property
+    def length(self) -> float:
+        """The rotation's lever (m) in the generalised coordinates: the ring's thickness."""
+        return self.geometry.thickness
+
+    @property
+    def free_dofs(self) -> np.ndarray:
+        """Indices of the voussoirs' degrees of freedom in the generalised vector (supports are driven)."""
+        return np.arange(BLOCK_DOFS, BLOCK_DOFS * (self.n_blocks - 1))
+
+    def loads(self, gravity_fraction: float = 1.0) -> np.ndarray:
+        """The weights as generalised forces (n_blocks x 3), a fraction of them while gravity is ramped."""
+        forces = np.zeros((self.n_blocks, BLOCK_DOFS))
+        forces[:, 1] = -gravity_fraction * self.weight
+        return forces.ravel()
+
+    def supports_at(self, lam: float) -> tuple[np.ndarray, np.ndarray]:
+        """The two support blocks' centroids (2, 2) and rotations (2,) at path length `lam` (m)."""
+        centroids, turns = self.centroid0[[0, -1]].copy(), np.zeros(2)
+        for k, side in enumerate(("left", "right")):
+            motion = self.movement.motion(side)
+            if motion is not None:
+                angle, offset = motion.placement(lam)
+                centroids[k] = rotate(self.centroid0[[0, -1][k]], angle) + offset
+                turns[k] = angle
+        return centroids, turns
+
+    def with_supports(self, u: np.ndarray, lam: float) -> np.ndarray:
+        """`u` (generalised, all blocks) with both supports placed at path length `lam`."""
+        placed = u.reshape(-1, BLOCK_DOFS).copy()
+        centroids, turns = self.supports_at(lam)
+        placed[[0, -1], 0:2] = centroids
+        placed[[0, -1], 2] = turns * self.length
+        return placed.ravel()
+
+    def at_rest(self) -> np.ndarray:
+        """The undeformed generalised coordinates: blocks exactly touching, nothing turned."""
+        return np.column_stack([self.centroid0, np.zeros(self.n_blocks)]).ravel()
+
+    def poses(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Positions (n_blocks, 2) and rotations (rad) of generalised coordinates `u`."""
+        placed = u.reshape(-1, BLOCK_DOFS)
+        return placed[:, 0:2], placed[:, 2] / self.length
+
+    def evaluate(self, u: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray) -> JointTangent:
+        """The joints at `u`, having moved from `u_before` where their shear forces were `shear_before`."""
+        pos, rot = self.poses(u)
+        pos_before, rot_before = self.poses(u_before)
+        return joint_tangent(self.table, self.law, np.ascontiguousarray(pos), np.ascontiguousarray(rot),
+                             np.ascontiguousarray(pos_before), np.ascontiguousarray(rot_before), shear_before)
+
+    def generalised_forces(self, joints: JointTangent) -> np.ndarray:
+        """The joints' forces on every block as a generalised vector (torques / `length`)."""
+        f = joints.forces
+        return np.column_stack([f.block_force, f.block_torque / self.length]).ravel()
+
+    def stiffness(self, joints: JointTangent) -> np.ndarray:
+        """K = -dF/du on every degree of freedom (N/m)."""
+        return assemble(joints.local, self.table.left, self.table.right, self.n_blocks, self.length)
+
+
+def static_arch(case: ArchCase) -> StaticArch:
+    """The static engine's model of `case`: its geometry with every imperfection, the DEM's joint
+    law and stiffnesses, the blocks' weights (density x g x volume) and the supports' movement."""
+    geometry = arch_geometry(case)
+    imperfections = arch_imperfections(case, geometry)
+    stiffness = contact_stiffness(case, geometry)
+    centroid0 = np.array([polygon_centroid(b[: len(b) // 2, :2]) for b in geometry.blocks])
+    profiles = imperfections.profiles if imperfections is not None else None
+    unit_weight = units.density(case.material.density_g_per_cm3) * case.loading.gravity_m_per_s2
+    return StaticArch(
+        geometry=geometry, table=joint_table(geometry, centroid0, profiles),
+        law=JointLaw(stiffness.kn, stiffness.ks, stiffness.tan_friction, geometry.depth),
+        weight=np.array([unit_weight * block_volume(b) for b in geometry.blocks]),
+        centroid0=centroid0, movement=case_movement(case, geometry), imperfections=imperfections)
+
+
+def smallest_eigenvalue(stiffness: np.ndarray) -> float:
+    """The smallest eigenvalue of a square stiffness's symmetric part (N/m): > 0 for a stable state."""
+    symmetric = 0.5 * (stiffness + stiffness.T)
+    return float(scipy.linalg.eigvalsh(symmetric, subset_by_index=[0, 0], check_finite=False)[0])

@@ -1,0 +1,71 @@
+"""What a static run records (no YADE): the rows of series.csv and joints.csv and the snapshots of its
+states, in the DEM's columns (docs/usage.md, "The run folder"), so that every reader takes both."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from yadearch.model import units
+from yadearch.model.hinges import Hinge
+from yadearch.results.joint_rows import friction_extremes, joint_rows, joint_snapshot, snapshot_entry
+from yadearch.results.rundir import STIFFNESS_COLUMN
+from yadearch.solve.static_path import StaticState
+from yadearch.solve.statics import StaticArch
+
+# numerics of the DEM that a static run does not use: time stepping, damping, holds, the support's speed
+DEM_ONLY_NUMERICS = (
+    "settlement_rate_mm_per_s", "rate_reference_kn_N_per_mm3", "support_acceleration_mm_per_s2",
+    "support_horizontal_acceleration_mm_per_s2", "damping", "hold_damping", "timestep_safety", "threads",
+    "contact_model", "equilibrium_tolerance", "gravity_ramp_periods", "selfweight_max_s", "hold_max_s",
+    "hold_min_s", "still_speed_mm_per_s", "settle_speed_mm_per_s", "series_every_steps", "max_steps")
+
+
+@dataclass
+class StaticRecords:
+    """Rows and snapshots of one static run, added state by state."""
+
+    arch: StaticArch
+    hinge_threshold: float  # rad
+    series: list[dict[str, Any]] = field(default_factory=list)
+    joints: list[dict[str, Any]] = field(default_factory=list)
+    snapshots: dict[str, dict[str, Any]] = field(default_factory=dict)
+    friction: dict[str, Any] = field(default_factory=dict)
+    iterations: int = 0
+
+    def add(self, state: StaticState, label: str | None = None) -> list[Hinge]:
+        """Record `state` (a series row, its joints, the snapshot under `label`); its hinges."""
+        self.iterations += state.iterations
+        pos, rot = self.arch.poses(state.u)
+        f = state.forces
+        snap, hinges = joint_snapshot(self.arch.geometry, self.arch.centroid0, pos, rot, f.point,
+                                      f.normal_force, f.shear_force, state.slip, self.arch.law.tan_friction,
+                                      self.arch.imperfections, self.hinge_threshold)
+        delta_mm = units.to_mm(state.lam)
+        common = {"stage": state.stage, "step": self.iterations, "delta_mm": delta_mm}
+        self.series.append({**common, **self._series_columns(state, pos)})
+        self.joints.extend(joint_rows(snap, common))
+        if label:
+            self.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, self.iterations)
+        if state.stage == "equilibrium":
+            friction_extremes(self.friction, snap, delta_mm)
+        return hinges
+
+    def _series_columns(self, state: StaticState, pos: np.ndarray) -> dict[str, Any]:
+        """Reactions (the supports' forces on the arch), the crown's displacement, the residual."""
+        force = state.forces.block_force
+        crown = self.arch.geometry.crown_voussoir
+        crown_disp = pos[crown] - self.arch.centroid0[crown]
+        weights = -self.arch.weight[1:-1]
+        resultant = force[1:-1].copy()
+        resultant[:, 1] += weights
+        contact = np.hypot(state.forces.normal_force, state.forces.shear_force)[state.forces.in_contact]
+        unbalanced = float(np.mean(np.hypot(resultant[:, 0], resultant[:, 1])) / np.mean(contact)) \
+            if contact.size else float("inf")
+        return {"left_Rx_N": -force[0, 0], "left_Ry_N": -force[0, 1], "right_Rx_N": -force[-1, 0],
+                "right_Ry_N": -force[-1, 1], "crown_dx_mm": units.to_mm(crown_disp[0]),
+                "crown_dy_mm": units.to_mm(crown_disp[1]), "kinetic_J": 0.0, "unbalanced": unbalanced,
+                "max_block_speed_mm_per_s": 0.0, "iterations": state.iterations,
+                STIFFNESS_COLUMN: state.min_stiffness}

@@ -1,0 +1,166 @@
+"""One run with the static engine: `python -m yadearch.statics.simulate CASE.toml OUT_DIR`, the run
+folder written exactly as a DEM run writes it (no YADE). Exit code 0: complete; 1: failed."""
+
+from __future__ import annotations
+
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+from yadearch.case.config import ArchCase, load_case
+from yadearch.case.movement import path_end_mm
+from yadearch.errors import YadearchError
+from yadearch.model import units
+from yadearch.results.provenance import provenance
+from yadearch.results.rundir import LOG_FILE, final_folder, hinge_list, write_run
+from yadearch.solve.path import PathSettings, PathStep
+from yadearch.solve.static_path import StaticEngineError, StaticLoading
+from yadearch.solve.statics import static_arch
+from yadearch.statics.records import DEM_ONLY_NUMERICS, StaticRecords
+
+ENGINE = "static"
+INTERRUPTED_EXIT = 130
+
+
+def path_settings(case: ArchCase, max_displacement_mm: float) -> PathSettings:
+    """The increments of the DEM's path logic from the case's numerics (m)."""
+    num, mm = case.numerics, units.mm
+    return PathSettings(first_increment=mm(num.first_increment_mm),
+                        max_increment=mm(max(num.max_increment_mm, num.first_increment_mm)),
+                        growth=num.increment_growth, tolerance=mm(num.du_tolerance_mm),
+                        max_displacement=mm(max_displacement_mm))
+
+
+def criterion_text(case: ArchCase) -> str:
+    """The static loading protocol and collapse criterion with this case's numbers."""
+    n = case.numerics
+    return (f"Loading by support increments (first {n.first_increment_mm} mm, growing x{n.increment_growth} "
+            f"up to {n.max_increment_mm} mm after each equilibrium), each solved as a static equilibrium by "
+            "Newton's method from a predictor (the secant of the last two states), or, where Newton fails, "
+            "by a descent at the fixed support position that releases energy as a damped hold would. "
+            "Equilibrium: residual forces at round-off and the free blocks' tangent stiffness positive "
+            f"definite, no block further than {n.runaway_mm} mm from the predicted state. No equilibrium: "
+            f"the descent moves a block {n.runaway_mm} mm. After a failed increment the increment halves "
+            "(bisection); du = midpoint of the bracket [last support displacement in equilibrium; first "
+            f"without], narrowed to < {n.du_tolerance_mm} mm.")
+
+
+def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = print) -> dict[str, Any]:
+    """Run `case` with the static engine and write its run folder to `out`; returns the summary."""
+    wall0 = time.time()
+    started = time.strftime("%Y-%m-%dT%H:%M:%S")
+    num = case.numerics
+    arch = static_arch(case)
+    end_mm = path_end_mm(case, arch.movement)
+    loading = StaticLoading(arch, path_settings(case, end_mm), units.mm(num.runaway_mm), log=log)
+    records = StaticRecords(arch, num.hinge_rotation_mrad * 1e-3)
+    unused = {key: getattr(num, key) for key in DEM_ONLY_NUMERICS}
+    log(f"[{case.name}] static engine: kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
+        f"{arch.n_blocks} blocks; not used by this engine: {', '.join(unused)}")
+    selfweight = _selfweight(case, loading, records, log)
+    solver_start = time.time()
+
+    def progress(step: PathStep) -> None:
+        wall = time.time() - wall0
+        log(f"[{case.name}] increment {units.to_mm(step.start):7.3f} -> {units.to_mm(step.target):7.3f} mm: "
+            f"{step.verdict} (iterations {loading.iterations}, {loading.iterations / wall:6.0f} it/s, "
+            f"wall {wall:.1f} s)")
+
+    path = loading.follow(on_step=progress)
+    for state in loading.accepted[1:]:
+        last_hinges = records.add(state)
+    summary: dict[str, Any] = {
+        "name": case.name, "started": started, "engine": ENGINE,
+        "kn_N_per_mm3": case.interface.kn_N_per_mm3, "ks_N_per_mm3": case.ks_N_per_mm3,
+        "kn_effective_N_per_mm3": arch.law.kn / units.N_PER_MM3, "contact_model": "joint",
+        "loading": {"moving_support": case.loading.moving_support, "motion": case.loading.support_motion,
+                    "direction_deg": case.loading.settlement_direction_deg, "max_displacement_mm": end_mm},
+        "collapse_criterion": criterion_text(case), "unused_parameters": unused, "selfweight": selfweight}
+    if arch.imperfections is not None:
+        summary["imperfections"] = arch.imperfections.summary()
+    lo = units.to_mm(path.lower)
+    hinges_last = last_hinges if len(loading.accepted) > 1 else []
+    summary.update(increments=len(path.steps), equilibria=len(path.equilibria), last_equilibrium_mm=lo,
+                   hinges_last_equilibrium=[h.to_json() for h in hinges_last], friction=records.friction,
+                   relaxations={"runaway_mm": num.runaway_mm,
+                                "delta_mm": [units.to_mm(s.lam) for s in loading.accepted[1:]],
+                                "increment_mm": _increments_mm(loading), "move_mm": [units.to_mm(s.move) for s in
+                                                                                     loading.accepted[1:]]},
+                   snaps=loading.snaps)
+    if path.collapsed:
+        hinges = records.add(loading.collapse_state(path.upper), label="collapse")
+        dx, dy = arch.movement.components(path.du)
+        summary.update(collapsed=True, du_mm=units.to_mm(path.du), du_bracket_mm=[lo, units.to_mm(path.upper)],
+                       collapse_verdict=path.upper_verdict, du_components_mm=[units.to_mm(dx), units.to_mm(dy)],
+                       du_rotation_mrad=1e3 * arch.movement.rotation(path.du))
+        summary["hinges_at_collapse"] = [{"interface": h.interface, "side": h.side} for h in hinges]
+    else:
+        hinges = hinges_last
+        summary.update(collapsed=False, du_mm=None, du_bracket_mm=None, collapse_verdict=None, hinges_at_collapse=[])
+    wall = time.time() - wall0
+    summary.update(hinges_detail=[h.to_json() for h in hinges], iterations=loading.iterations,
+                   steps=loading.iterations, joint_evaluations=loading.solver.evaluations,
+                   solver_wall_s=time.time() - solver_start, wall_s=wall, **provenance(None))
+    write_run(out, case.to_toml(), records.series, records.joints, records.snapshots, summary,
+              arch.imperfections.table() if arch.imperfections is not None else None)
+    du = summary["du_mm"]
+    log(f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} "
+        f"hinges={hinge_list(summary['hinges_at_collapse']) or '-'} iterations={loading.iterations} "
+        f"wall={wall:.2f} s -> {final_folder(out)}")
+    return summary
+
+
+def _selfweight(case: ArchCase, loading: StaticLoading, records: StaticRecords,
+                log: Callable[[str], None]) -> dict[str, Any]:
+    """The self-weight state, recorded, and summary.json's `selfweight` entry."""
+    try:
+        state = loading.selfweight()
+    except StaticEngineError as exc:
+        raise YadearchError(f"{exc} (kn {case.interface.kn_N_per_mm3} N/mm3)") from None
+    records.add(state, label="selfweight")
+    row = records.series[-1]
+    weight = float(loading.arch.weight[1:-1].sum())
+    info = {"steps": state.iterations, "unbalanced": row["unbalanced"], "arch_weight_N": weight,
+            "vertical_reaction_sum_N": row["left_Ry_N"] + row["right_Ry_N"],
+            "horizontal_reaction_sum_N": row["left_Rx_N"] + row["right_Rx_N"], "thrust_N": abs(row["left_Rx_N"]),
+            "crown_settlement_mm": -row["crown_dy_mm"]}
+    log(f"[{case.name}] self-weight equilibrium after {loading.iterations} iterations: reactions "
+        f"{info['vertical_reaction_sum_N']:.3f} N for a weight of {weight:.3f} N, thrust {info['thrust_N']:.3f} N")
+    return info
+
+
+def _increments_mm(loading: StaticLoading) -> list[float]:
+    lams = [s.lam for s in loading.accepted]
+    return [units.to_mm(b - a) for a, b in zip(lams, lams[1:])]
+
+
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if len(argv) != 2:
+        print("usage: python -m yadearch.statics.simulate CASE.toml OUT_DIR", file=sys.stderr)
+        return 2
+    out = Path(argv[1])
+    out.mkdir(parents=True, exist_ok=True)
+    with (out / LOG_FILE).open("w") as log_file:
+        def log(line: str) -> None:
+            stamped = f"{time.strftime('%H:%M:%S')} {line}"
+            print(stamped, flush=True)
+            log_file.write(stamped + "\n")
+            log_file.flush()
+        try:
+            simulate_static(load_case(argv[0]), out, log)
+        except YadearchError as exc:
+            print(f"error: {exc}", file=sys.stderr)
+            log_file.write(f"FAILED: {exc}\n")
+            return 1
+        except KeyboardInterrupt as exc:
+            print(f"error: interrupted ({exc or 'SIGINT'})", file=sys.stderr)
+            log_file.write(f"INTERRUPTED: {exc or 'SIGINT'}\n")
+            return INTERRUPTED_EXIT
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
