@@ -60,6 +60,11 @@ class RunResult:
         return self.summary.get("du_mm")
 
     @property
+    def engine(self) -> str:
+        """The engine that made this run: 'dem' (YADE) or 'static' (Newton's method)."""
+        return str(self.summary.get("engine", "dem"))
+
+    @property
     def collapsed(self) -> bool:
         return bool(self.summary.get("collapsed"))
 
@@ -140,13 +145,28 @@ def open_run(path: str | Path) -> RunResult:
     return RunResult(read_run(path))
 
 
+ENGINES = ("dem", "static")
+
+
+def with_engine(case: ArchCase, engine: str | None) -> ArchCase:
+    """`case` solved by `engine` ('dem': YADE, 'static': Newton's method; None: the case's own,
+    numerics.engine); ValueError naming the argument for another value."""
+    if engine is None:
+        return case
+    if engine not in ENGINES:
+        raise ValueError(f"engine must be one of {', '.join(ENGINES)}, got {engine!r}")
+    return case.with_overrides({"numerics.engine": engine})
+
+
 def run(case: ArchCase, out: str | Path | None = None, timeout_s: float | None = None,
-        figures: bool = True, rerun: bool = False, overwrite: bool = False) -> RunResult:
-    """Run `case` to collapse in a child YADE process, writing the run folder `out` (default
-    runs/NAME) and its figures; returns the result read back. A finished run of the same case in
-    `out` is reused (unless `rerun`); one of another case is kept unless `overwrite`."""
+        figures: bool = True, rerun: bool = False, overwrite: bool = False, engine: str | None = None) -> RunResult:
+    """Run `case` to collapse in a child process (YADE, or the static engine with `engine="static"`),
+    writing the run folder `out` (default runs/NAME) and its figures; returns the result read back.
+    A finished run of the same case in `out` is reused (unless `rerun`); one of another case is kept
+    unless `overwrite`."""
     from yadearch.engine.process import run_case_process
 
+    case = with_engine(case, engine)
     folder = Path(out) if out is not None else DEFAULT_RUNS_DIR / case.name
     if is_complete(folder) and not rerun:
         differences = case_differences(folder, case)
@@ -164,7 +184,7 @@ def run(case: ArchCase, out: str | Path | None = None, timeout_s: float | None =
 
 
 def sweep(case: ArchCase, out: str | Path, jobs: int | None = None, scheduler: str | None = None,
-          timeout_s: float | None = None, **values: list[Any]) -> pd.DataFrame:
+          timeout_s: float | None = None, engine: str | None = None, **values: list[Any]) -> pd.DataFrame:
     """Run `case` over the grid of parameter `values` (e.g. `kn_N_per_mm3=[0.25, 1, 5.2]`) as a
     resumable campaign in `out`; returns its results table (one row a run)."""
     from yadearch.studies.campaign import run_campaign
@@ -172,11 +192,11 @@ def sweep(case: ArchCase, out: str | Path, jobs: int | None = None, scheduler: s
     from yadearch.studies.grid import grid
 
     with open_pool(jobs, scheduler) as pool:
-        return run_campaign(case, grid(values), Path(out), pool, timeout_s=timeout_s)
+        return run_campaign(with_engine(case, engine), grid(values), Path(out), pool, timeout_s=timeout_s)
 
 
 def montecarlo(case: ArchCase, out: str | Path, samples: int, seed: int = 1, jobs: int | None = None,
-               scheduler: str | None = None, timeout_s: float | None = None,
+               scheduler: str | None = None, timeout_s: float | None = None, engine: str | None = None,
                **levels: list[Any]) -> pd.DataFrame:
     """`samples` seeded draws of `case`'s imperfections (at every combination of the amplitude
     `levels`, e.g. `edge_radius_mm=[0.5, 1]`) as a resumable campaign in `out`; returns the table
@@ -185,11 +205,13 @@ def montecarlo(case: ArchCase, out: str | Path, samples: int, seed: int = 1, job
     from yadearch.studies.montecarlo import run_montecarlo
 
     with open_pool(jobs, scheduler) as pool:
-        return run_montecarlo(case, Path(out), pool, samples, seed, levels or None, timeout_s=timeout_s)
+        return run_montecarlo(with_engine(case, engine), Path(out), pool, samples, seed, levels or None,
+                              timeout_s=timeout_s)
 
 
 def calibrate(case: ArchCase, target_du_mm: float, out: str | Path, kn_min: float = 0.1,
-              kn_max: float = 100.0, tolerance_mm: float = 0.5, jobs: int | None = None):
+              kn_max: float = 100.0, tolerance_mm: float = 0.5, jobs: int | None = None,
+              engine: str | None = None):
     """The kn at which `case` collapses at `target_du_mm` (within `tolerance_mm`), by bracketing
     root finding over runs kept in `out`; returns the `Calibration`."""
     from yadearch.studies.calibration import calibrate as calibrate_kn
@@ -197,7 +219,7 @@ def calibrate(case: ArchCase, target_du_mm: float, out: str | Path, kn_min: floa
     from yadearch.studies.executors import open_pool
 
     with open_pool(jobs) as pool:
-        return calibrate_kn(campaign_evaluator(case, Path(out), pool), target_du_mm, tolerance_mm,
+        return calibrate_kn(campaign_evaluator(with_engine(case, engine), Path(out), pool), target_du_mm, tolerance_mm,
                             kn_min, kn_max)
 
 

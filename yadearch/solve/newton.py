@@ -9,6 +9,7 @@ is the hold's: stable, runaway (a block moved `runaway` from where it started) o
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -58,6 +59,10 @@ class Equilibrium:
         except np.linalg.LinAlgError:
             return False
         return True
+
+
+# near a fold the tangent is nearly singular by nature: the line search and the descent judge the step
+warnings.filterwarnings("ignore", category=scipy.linalg.LinAlgWarning, module=__name__)
 
 
 class Solver:

@@ -1,0 +1,146 @@
+"""The static engine against the DEM: every committed DEM run solved again statically, du and the
+hinges at collapse side by side (docs/validation.md, "Static engine against the DEM").
+
+A DEM run is any finished run folder (case.toml and summary.json); the static run takes the same
+case with numerics.engine = 'static'. Static runs execute in worker processes, each reused from its
+folder when it already holds a finished run of the same case (the cross-check resumes).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import tomllib
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+from yadearch.case.config import ArchCase, case_from_dict
+from yadearch.results.rundir import SUMMARY_FILE, hinge_list, holds_case, is_complete, read_summary
+from yadearch.studies.campaign import FAILED_FILE
+from yadearch.studies.robustness import same_hinge_set
+
+AGREEMENT_PCT = 1.0  # the issue's target: static du within 1 % of the DEM's where the DEM is converged
+
+
+@dataclass(frozen=True)
+class Pair:
+    """One DEM run and the static run of the same case."""
+
+    group: str
+    name: str
+    case: ArchCase
+    dem: dict[str, Any]  # the DEM run's summary.json
+
+
+def pair_from_folder(group: str, folder: Path) -> Pair:
+    """The DEM run in `folder` and its case switched to the static engine."""
+    case = case_from_dict(tomllib.loads((folder / "case.toml").read_text()))
+    summary = folder / SUMMARY_FILE
+    if summary.is_file():
+        dem = json.loads(summary.read_text())
+    else:  # a failed DEM run: its reason, which the static run should share
+        failed = folder / FAILED_FILE
+        dem = {"error": json.loads(failed.read_text()).get("reason", "failed") if failed.is_file() else "no summary"}
+    return Pair(group, folder.name, case.with_overrides({"numerics.engine": "static"}), dem)
+
+
+def _run_static(case: ArchCase, folder: Path) -> dict[str, Any]:
+    """Solve `case` statically into `folder` (reused when it holds this case); its summary, or the
+    failure's reason under "error"."""
+    from yadearch.statics.simulate import simulate_static
+
+    if holds_case(folder, case):
+        return read_summary(folder)
+    try:
+        return simulate_static(case, folder, log=lambda line: None)
+    except Exception as exc:  # noqa: BLE001  a failed run is recorded with its reason, the others go on
+        return {"error": f"{type(exc).__name__}: {exc}"}
+
+
+def run_pairs(pairs: list[Pair], out: Path, jobs: int) -> pd.DataFrame:
+    """Every pair's static run (in `out`/GROUP/NAME, `jobs` processes) beside its DEM summary."""
+    os.environ.setdefault("OMP_NUM_THREADS", "1")
+    folders = [out / pair.group / pair.name for pair in pairs]
+    with ProcessPoolExecutor(max_workers=jobs) as pool:
+        statics = list(pool.map(_run_static, [p.case for p in pairs], folders))
+    return pd.DataFrame([comparison_row(pair, static) for pair, static in zip(pairs, statics)])
+
+
+def comparison_row(pair: Pair, static: dict[str, Any]) -> dict[str, Any]:
+    """One table row: both engines' du, hinges, verdicts and costs."""
+    dem, num = pair.dem, pair.case
+    dem_du, static_du = dem.get("du_mm"), static.get("du_mm")
+    dem_hinges, static_hinges = hinge_list(dem.get("hinges_at_collapse")), hinge_list(static.get("hinges_at_collapse"))
+    diff = 100.0 * (static_du / dem_du - 1.0) if dem_du and static_du else math.nan
+    snaps = [s for s in static.get("snaps", []) if s["move_mm"] > 0.1 * num.numerics.runaway_mm]
+    return {
+        "group": pair.group, "run": pair.name, "kn_N_per_mm3": num.interface.kn_N_per_mm3,
+        "direction_deg": num.loading.settlement_direction_deg, "seed": num.imperfections.seed,
+        "dem_du_mm": dem_du, "static_du_mm": static_du, "difference_pct": diff,
+        "within_1pct": bool(abs(diff) <= AGREEMENT_PCT) if math.isfinite(diff) else False,
+        "dem_hinges": dem_hinges, "static_hinges": static_hinges,
+        "same_hinges": same_hinge_set(dem_hinges, static_hinges),
+        "dem_verdict": dem.get("collapse_verdict"), "static_verdict": static.get("collapse_verdict"),
+        "static_snaps": len(snaps), "largest_snap_mm": max((s["move_mm"] for s in snaps), default=0.0),
+        "dem_wall_s": dem.get("wall_s"), "static_wall_s": static.get("wall_s"),
+        "dem_error": dem.get("error", ""), "static_error": static.get("error", ""),
+    }
+
+
+def dem_folders(root: Path, pattern: str) -> list[Path]:
+    """Finished DEM run folders under `root` matching `pattern`, in name order."""
+    return sorted(f for f in root.glob(pattern) if f.is_dir() and (f / "case.toml").is_file()
+                  and (f / SUMMARY_FILE).is_file() and is_complete(f))
+
+
+def crosscheck_markdown(table: pd.DataFrame, limits: pd.DataFrame, wall_s: float, jobs: int) -> str:
+    """crosscheck.md: the agreement per group, every pair outside 1 % or with other hinges, and the
+    stiff end against the limit analyses."""
+    lines = ["# Static engine against the DEM", "",
+             "Every committed DEM run solved again by the static engine (same case, `numerics.engine = "
+             "'static'`): du and the hinges at collapse. Regenerate with "
+             "`.venv/bin/python scripts/static_crosscheck.py` (table: `crosscheck.csv`).", "",
+             f"{len(table)} pairs; the static runs took {wall_s:.0f} s on {jobs} processes "
+             f"(the DEM runs {table['dem_wall_s'].sum() / 3600:.1f} h of one core).", "",
+             "| group | runs | within 1 % | same hinges (±1 interface) | largest |difference| (%) | "
+             "static wall (s, median) | DEM wall (s, median) |", "|---|---|---|---|---|---|---|"]
+    for group, rows in table.groupby("group", sort=False):
+        lines.append(f"| {group} | {len(rows)} | {int(rows['within_1pct'].sum())} | {int(rows['same_hinges'].sum())} | "
+                     f"{rows['difference_pct'].abs().max():.2f} | {rows['static_wall_s'].median():.2f} | "
+                     f"{rows['dem_wall_s'].median():.0f} |")
+    outside = table[~table["within_1pct"] | ~table["same_hinges"]]
+    lines += ["", "## Pairs outside 1 % or with other hinges", ""]
+    if outside.empty:
+        lines.append("None.")
+    else:
+        lines += ["| group | run | kn (N/mm³) | DEM du (mm) | static du (mm) | difference (%) | DEM hinges | "
+                  "static hinges | DEM verdict | static snaps (largest, mm) |",
+                  "|---|---|---|---|---|---|---|---|---|---|"]
+        for r in outside.itertuples():
+            lines.append(f"| {r.group} | {r.run} | {r.kn_N_per_mm3:g} | {_mm(r.dem_du_mm)} | {_mm(r.static_du_mm)} | "
+                         f"{r.difference_pct:+.2f} | {r.dem_hinges} | {r.static_hinges} | {r.dem_verdict} | "
+                         f"{r.static_snaps} ({r.largest_snap_mm:.2f}) |")
+    if not limits.empty:
+        lines += ["", "## Toward stiff joints: the compliant march and the rigid limit", "",
+                  "| run | kn (N/mm³) | static du (mm) | compliant march (mm) | difference (%) | rigid du (mm) | "
+                  "difference (%) |", "|---|---|---|---|---|---|---|"]
+        for r in limits.itertuples():
+            rigid = r.rigid_du_mm if isinstance(r.rigid_du_mm, float) and math.isfinite(r.rigid_du_mm) else None
+            lines.append(f"| {r.run} | {r.kn_N_per_mm3:g} | {_mm(r.static_du_mm)} | {_mm(r.compliant_du_mm)} | "
+                         f"{_pct(r.static_du_mm, r.compliant_du_mm)} | {_mm(rigid)} | {_pct(r.static_du_mm, rigid)} |")
+    return "\n".join(lines) + "\n"
+
+
+def _mm(value: float | None) -> str:
+    return "—" if value is None or not math.isfinite(value) else f"{value:.2f}"
+
+
+def _pct(value: float | None, reference: float | None) -> str:
+    if value is None or reference is None or not math.isfinite(value) or not math.isfinite(reference):
+        return "—"
+    return f"{100.0 * (value / reference - 1.0):+.2f}"
