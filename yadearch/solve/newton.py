@@ -16,6 +16,7 @@ import numpy as np
 import scipy.linalg
 
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent
+from yadearch.solve import banded
 from yadearch.solve.path import RUNAWAY, STABLE, TIMEOUT
 from yadearch.solve.statics import StaticArch
 
@@ -54,11 +55,7 @@ class Equilibrium:
 
     def stable(self) -> bool:
         """The free blocks' tangent stiffness is positive definite (its symmetric part)."""
-        try:
-            scipy.linalg.cho_factor(0.5 * (self.stiffness + self.stiffness.T), check_finite=False)
-        except np.linalg.LinAlgError:
-            return False
-        return True
+        return banded.positive_definite(self.stiffness)
 
 
 # near a fold the tangent is nearly singular by nature: the line search and the descent judge the step
@@ -94,9 +91,13 @@ class Solver:
 
     def result(self, u: np.ndarray, joints: JointTangent, residual: np.ndarray, iterations: int,
                start: np.ndarray, verdict: str = STABLE) -> Equilibrium:
-        stiffness = self.arch.stiffness(joints)[np.ix_(self.free, self.free)]
+        stiffness = self.free_stiffness(joints)
         return Equilibrium(u, joints, stiffness, float(np.abs(residual).max()) / self.scale, iterations,
                            verdict, largest_move(u, start))
+
+    def free_stiffness(self, joints: JointTangent) -> np.ndarray:
+        """K on the free degrees of freedom (the voussoirs': a contiguous block of the whole K)."""
+        return self.arch.stiffness(joints)[self.free[0]: self.free[-1] + 1, self.free[0]: self.free[-1] + 1]
 
     def _capped(self, d: np.ndarray) -> np.ndarray:
         """`d` (free dofs) shortened so that no block moves more than `max_step` in one iteration."""
@@ -112,9 +113,9 @@ class Solver:
             norm = float(np.abs(residual).max())
             if norm <= self.converged:
                 return self.result(u, joints, residual, iteration, u0)
-            stiffness = self.arch.stiffness(joints)[np.ix_(self.free, self.free)]
+            stiffness = self.free_stiffness(joints)
             try:
-                d = self._capped(scipy.linalg.solve(stiffness, residual, check_finite=False))
+                d = self._capped(banded.solve(stiffness, residual))
             except (np.linalg.LinAlgError, ValueError):
                 return None
             merit, alpha = float(residual @ residual), 1.0
@@ -142,9 +143,8 @@ class Solver:
         joints, residual = self.state(u, u_before, shear_before, gravity)
         floor = self.initial_shift(joints)
         shift = floor
-        identity = np.eye(len(self.free))
         for iteration in range(budget):
-            stiffness = self.arch.stiffness(joints)[np.ix_(self.free, self.free)]
+            stiffness = self.free_stiffness(joints)
             if float(np.abs(residual).max()) <= self.converged:
                 found = self.result(u, joints, residual, iteration, u0)
                 if found.stable():
@@ -156,7 +156,7 @@ class Solver:
             if shift > MAX_SHIFT_RATIO * floor:
                 break  # no step releases energy: stuck where no equilibrium is
             try:
-                d = self._capped(scipy.linalg.solve(stiffness + shift * identity, residual, check_finite=False))
+                d = self._capped(banded.solve(stiffness, residual, shift))
             except (np.linalg.LinAlgError, ValueError):
                 shift *= SHIFT_GROWTH
                 continue
@@ -181,8 +181,8 @@ class Solver:
 
     def _kick(self, u: np.ndarray, stiffness: np.ndarray) -> np.ndarray:
         """`u` moved along the softest mode of `stiffness`, the way the weights go down."""
-        _, vectors = scipy.linalg.eigh(0.5 * (stiffness + stiffness.T), subset_by_index=[0, 0])
-        mode = vectors[:, 0] / float(np.abs(vectors[:, 0]).max())
+        mode = banded.softest_mode(stiffness)
+        mode = mode / float(np.abs(mode).max())
         if float(self.arch.loads()[self.free] @ mode) < 0.0:
             mode = -mode
         kicked = u.copy()

@@ -14,12 +14,13 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.linalg
 
 from yadearch.model.joint_law import JointForces
 from yadearch.solve.newton import Equilibrium, Solver, SolverSettings, largest_move
 from yadearch.solve.path import STABLE, PathResult, PathSettings, PathStep, follow_path
-from yadearch.solve.statics import StaticArch, smallest_eigenvalue
+from yadearch.solve import banded
+from yadearch.solve.banded import smallest_eigenvalue
+from yadearch.solve.statics import StaticArch
 
 GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
 SELFWEIGHT_FALL = 0.05  # a block falling this far (m) under self-weight means the arch cannot stand
@@ -131,7 +132,7 @@ class StaticLoading:
         driven = np.setdiff1d(np.arange(len(moved)), free)
         load = -stiffness[np.ix_(free, driven)] @ (moved - last.u)[driven]
         try:
-            moved[free] += scipy.linalg.solve(stiffness[np.ix_(free, free)], load, check_finite=False)
+            moved[free] += banded.solve(stiffness[np.ix_(free, free)], load)
         except (np.linalg.LinAlgError, ValueError):
             pass  # a singular tangent: the descent starts from the state with only the support moved
         return moved
@@ -160,8 +161,7 @@ class StaticLoading:
     def _stiffness_of(self, state: StaticState) -> np.ndarray:
         base = self.accepted[-1]
         joints, _ = self.solver.state(state.u, base.u, base.forces.shear_force)
-        free = self.arch.free_dofs
-        return self.arch.stiffness(joints)[np.ix_(free, free)]
+        return self.solver.free_stiffness(joints)
 
     def moved(self, state: StaticState) -> float:
         """The largest block translation of a state from the self-weight state (m)."""

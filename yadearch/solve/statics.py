@@ -11,7 +11,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg
 
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import ArchImperfections, arch_imperfections
@@ -117,9 +116,3 @@ def static_arch(case: ArchCase) -> StaticArch:
         law=JointLaw(stiffness.kn, stiffness.ks, stiffness.tan_friction, geometry.depth),
         weight=np.array([unit_weight * block_volume(b) for b in geometry.blocks]),
         centroid0=centroid0, movement=case_movement(case, geometry), imperfections=imperfections)
-
-
-def smallest_eigenvalue(stiffness: np.ndarray) -> float:
-    """The smallest eigenvalue of a square stiffness's symmetric part (N/m): > 0 for a stable state."""
-    symmetric = 0.5 * (stiffness + stiffness.T)
-    return float(scipy.linalg.eigvalsh(symmetric, subset_by_index=[0, 0], check_finite=False)[0])
