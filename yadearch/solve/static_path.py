@@ -16,10 +16,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from yadearch.model.joint_law import JointForces
-from yadearch.solve.newton import Equilibrium, Solver, SolverSettings, largest_move
-from yadearch.solve.path import STABLE, PathResult, PathSettings, PathStep, follow_path
 from yadearch.solve import banded
 from yadearch.solve.banded import smallest_eigenvalue
+from yadearch.solve.newton import Equilibrium, Solver, SolverSettings, largest_move
+from yadearch.solve.path import STABLE, PathResult, PathSettings, PathStep, follow_path
 from yadearch.solve.statics import StaticArch
 
 GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
