@@ -16,6 +16,7 @@ from yadearch.case.plan import plan_run
 from yadearch.engine.yade_env import YADE_PY_DIRS
 from yadearch.errors import RunFailedError, RunInterruptedError, YadeMissingError
 from yadearch.results.rundir import CASE_FILE, LOG_FILE, STAGING_PREFIX, is_complete, staging_folder
+from yadearch.statics.pool import run_static, stop_workers
 
 STATIC_ENGINE = "static"  # numerics.engine of a run solved by the static engine (no YADE)
 REPLACED_SUFFIX = ".replaced"  # the previous folder NAME, for the moment of the swap
@@ -31,6 +32,7 @@ def stop_children() -> None:
         running = [proc for proc in _children if proc.poll() is None]
     for proc in running:
         proc.terminate()
+    stop_workers()
 
 
 def _run_child(cmd: list[str], env: dict[str, str], timeout_s: float | None, quiet: bool) -> tuple[int, str]:
@@ -87,10 +89,10 @@ def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
     case_file = staging / CASE_FILE
     case_file.write_text(case.to_toml())
     env = dict(os.environ, OMP_NUM_THREADS=str(case.numerics.threads))
-    module = "yadearch.statics.simulate" if static else "yadearch.engine.simulate"
-    cmd = [sys.executable, "-m", module, str(case_file), str(staging)]
+    cmd = [sys.executable, "-m", "yadearch.engine.simulate", str(case_file), str(staging)]
     try:
-        returncode, stderr = _run_child(cmd, env, timeout_s, quiet)
+        returncode, stderr = run_static(case_file, staging, timeout_s) if static else \
+            _run_child(cmd, env, timeout_s, quiet)
     except subprocess.TimeoutExpired:
         where = _keep_failed(staging, out)
         raise RunFailedError(f"run {case.name!r} timed out after {timeout_s:.0f} s "

@@ -24,6 +24,7 @@ from yadearch.solve.statics import StaticArch
 
 GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
 SELFWEIGHT_FALL = 0.05  # a block falling this far (m) under self-weight means the arch cannot stand
+PREDICTOR_POINTS = 3  # accepted states the predictor extrapolates through (a parabola)
 COLLAPSE_RUNAWAYS = 10.0  # the mechanism at collapse is shown this many runaway distances on
 
 
@@ -122,10 +123,12 @@ class StaticLoading:
         """Where the arch should be with the support at `target`: the secant through the last two
         accepted states, or from the self-weight state the tangent's response to the support's move."""
         last = self.accepted[-1]
-        if len(self.accepted) >= 2 and self.accepted[-2].lam != last.lam:
-            before = self.accepted[-2]
-            ratio = (target - last.lam) / (last.lam - before.lam)
-            return self.arch.with_supports(last.u + ratio * (last.u - before.u), target)
+        history = [s for s in self.accepted[-PREDICTOR_POINTS:]]
+        lams = [s.lam for s in history]
+        if len(set(lams)) == len(lams) >= 2:  # Lagrange extrapolation through the last states
+            weights = [np.prod([(target - lams[m]) / (lams[k] - lams[m]) for m in range(len(lams)) if m != k])
+                       for k in range(len(lams))]
+            return self.arch.with_supports(sum(w * s.u for w, s in zip(weights, history)), target)
         moved = self.arch.with_supports(last.u, target)
         stiffness = self.arch.stiffness(self.solver.state(last.u, last.u, last.forces.shear_force)[0])
         free = self.arch.free_dofs

@@ -1,0 +1,106 @@
+"""Where static runs execute: long-lived worker processes (`python -m yadearch.statics.pool`), up to one
+per core, each importing numpy, numba's cached kernels and yadearch once and then solving one case
+after another. A static run lasts about a second; a fresh interpreter per run would cost as much
+again (a DEM run keeps its own process: YADE has one global scene per interpreter). Workers are plain
+child processes fed one line per run, so a script or notebook that starts runs is never re-imported
+in them (as multiprocessing's spawn would)."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import os
+import queue
+import subprocess
+import sys
+import threading
+from pathlib import Path
+
+_idle: queue.LifoQueue[subprocess.Popen] = queue.LifoQueue()
+_all: set[subprocess.Popen] = set()
+_lock = threading.Lock()
+
+
+def _worker() -> subprocess.Popen:
+    """An idle worker, or a new one."""
+    try:
+        worker = _idle.get_nowait()
+        if worker.poll() is None:
+            return worker
+    except queue.Empty:
+        pass
+    env = dict(os.environ, OMP_NUM_THREADS="1")  # one BLAS thread a worker: the cores go to the workers
+    worker = subprocess.Popen([sys.executable, "-m", "yadearch.statics.pool"], stdin=subprocess.PIPE,
+                              stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, env=env)
+    with _lock:
+        _all.add(worker)
+    return worker
+
+
+def _answer(worker: subprocess.Popen, timeout_s: float | None) -> str:
+    """The worker's one-line answer, waited for at most `timeout_s` (TimeoutExpired)."""
+    box: list[str] = []
+    reader = threading.Thread(target=lambda: box.append(worker.stdout.readline() if worker.stdout else ""),
+                              daemon=True)
+    reader.start()
+    reader.join(timeout_s)
+    if reader.is_alive():
+        raise subprocess.TimeoutExpired(["static engine"], timeout_s or 0.0)
+    return box[0]
+
+
+def run_static(case_file: Path, staging: Path, timeout_s: float | None) -> tuple[int, str]:
+    """Solve the case file into the staging folder in a worker; the exit code and standard error of
+    `yadearch.statics.simulate` (subprocess.TimeoutExpired after `timeout_s`, the worker stopped)."""
+    worker = _worker()
+    try:
+        assert worker.stdin is not None
+        worker.stdin.write(json.dumps([str(case_file), str(staging)]) + "\n")
+        worker.stdin.flush()
+        line = _answer(worker, timeout_s)
+    except subprocess.TimeoutExpired:
+        _stop(worker)
+        raise
+    except (BrokenPipeError, OSError):
+        _stop(worker)
+        return 1, "the static engine's worker process ended"
+    if not line:  # the worker died (killed, or out of memory)
+        code = worker.wait()
+        _stop(worker)
+        return code if code else 1, "the static engine's worker process ended"
+    _idle.put(worker)
+    code, stderr = json.loads(line)
+    return int(code), str(stderr)
+
+
+def _stop(worker: subprocess.Popen) -> None:
+    worker.kill()
+    worker.wait()
+    with _lock:
+        _all.discard(worker)
+
+
+def stop_workers() -> None:
+    """Stop every worker now (an interrupted campaign); later runs start new ones."""
+    with _lock:
+        workers = list(_all)
+    for worker in workers:
+        worker.terminate()
+
+
+def serve() -> None:
+    """The worker's loop: one JSON line [case_file, staging] in, one [exit code, stderr] out."""
+    from yadearch.statics.simulate import main
+
+    for line in sys.stdin:
+        case_file, staging = json.loads(line)
+        errors = io.StringIO()
+        with contextlib.redirect_stderr(errors), contextlib.redirect_stdout(io.StringIO()):
+            code = main([case_file, staging])
+        sys.stdout.write(json.dumps([code, errors.getvalue()]) + "\n")
+        sys.stdout.flush()
+
+
+if __name__ == "__main__":
+    serve()
