@@ -3,7 +3,7 @@ reference, the rigid-block limit analysis of the paper arch, the contact models'
 steps, the driver's overhead over YADE's engine loop, and the sweep's wall time.
 
     .venv/bin/python scripts/benchmark.py [--out reports/benchmark.json] [--stiff] [--sweep DIR] [--measure-mm X]
-        [--threads-steps N]
+        [--threads-steps N] [--static]
 
 Each run goes through the same process launcher as `yadearch run`. The slow reference is set 2 at
 half the default settlement rate, run in this invocation (or a stored run folder given by
@@ -15,6 +15,8 @@ contact model (joint elements) and for YADE's CGAL polyhedra contacts, the basel
 their steps/s on the same steps is the contact model's speed-up. The sweep's wall time is the sum of
 the sessions a campaign folder recorded.
 --threads-steps N times N steps of the set 2 scene with 1 and with 2 OpenMP threads.
+--static times the static engine on set 2, kn 100, a 100-point kn sweep and 200 Monte Carlo samples,
+and prints its ratios to this invocation's DEM runs.
 Prints a verdict line per target and writes everything to the JSON file.
 """
 
@@ -243,6 +245,59 @@ def limit_measurement(case) -> dict:
     return {"wall_s": wall, "du_rigid_mm": result.du_rigid_mm}
 
 
+def static_measurement(runs: Path, dem_set2: dict, dem_stiff: dict | None) -> dict:
+    """The static engine's costs: set 2 and kn 100 through the whole `yadearch run --engine static`
+    (interpreter, figures) and their solver time, a 100-point kn sweep and 200 Monte Carlo samples of
+    the imperfection study's final case on 2 cores; ratios to the DEM runs of this invocation."""
+    import shutil
+    import subprocess
+
+    import numpy as np
+
+    import yadearch as ya
+
+    cli = str(Path(sys.executable).with_name("yadearch"))
+    summaries = {}
+    for name, extra in (("set2", []), ("kn100", ["--kn", "100"])):
+        folder = runs / name
+        start = time.time()
+        subprocess.run([cli, "run", "--preset", "set2", *extra, "--engine", "static", "--out", str(folder),
+                        "--rerun"], check=True, capture_output=True)
+        summaries[name] = {**json.loads((folder / "summary.json").read_text()), "cli_wall_s": time.time() - start}
+    timings = {}
+    for name, job in (("sweep100", lambda out: ya.sweep(ya.preset("set2"), out=out, jobs=2, engine="static",
+                                                        kn_N_per_mm3=list(np.logspace(np.log10(0.05), 4, 100)))),
+                      ("mc200", lambda out: ya.montecarlo(ya.preset("set2").with_overrides(
+                          {"imperfections.face_bump_sd_mm": 0.18}), out=out, samples=200, jobs=2, engine="static"))):
+        shutil.rmtree(runs / name, ignore_errors=True)
+        start = time.time()
+        table = job(runs / name)
+        timings[name] = (time.time() - start, int((table["status"] == "done").sum()), len(table))
+    s2, k100 = summaries["set2"], summaries["kn100"]
+    speedup = dem_set2["wall_s"] / s2["cli_wall_s"]
+    result = {"static_set2_wall_s": s2["cli_wall_s"], "static_set2_solver_s": s2["solver_wall_s"],
+              "static_set2_du_mm": s2["du_mm"], "static_kn100_wall_s": k100["solver_wall_s"],
+              "static_kn100_cli_wall_s": k100["cli_wall_s"], "static_kn100_du_mm": k100["du_mm"],
+              "static_sweep100_wall_s": timings["sweep100"][0], "static_mc200_wall_s": timings["mc200"][0],
+              "static_over_dem_speedup": speedup,
+              "static_kn100_over_dem_speedup": dem_stiff["wall_s"] / k100["cli_wall_s"] if dem_stiff else None}
+    du_diff = abs(s2["du_mm"] / dem_set2["du_mm"] - 1.0)
+    print(f"static engine: set 2 {s2['cli_wall_s']:.1f} s whole run ({s2['solver_wall_s']:.2f} s solver), "
+          f"{speedup:.0f}x faster than the DEM's {dem_set2['wall_s']:.0f} s; du {s2['du_mm']:.2f} against "
+          f"{dem_set2['du_mm']:.2f} mm ({du_diff:.2%})")
+    result["verdicts"] = [
+        ("static set 2 solver <= 0.5 s, whole run <= 10 s", s2["solver_wall_s"] <= 0.5 and s2["cli_wall_s"] <= 10.0,
+         f"{s2['solver_wall_s']:.2f} s solver, {s2['cli_wall_s']:.1f} s whole run"),
+        ("static set 2 du within 1 % of the DEM's", du_diff <= TARGET_DU_REL, f"{du_diff:.2%}"),
+        ("static kn 100 <= 2 s", k100["solver_wall_s"] <= 2.0,
+         f"{k100['solver_wall_s']:.2f} s solver ({k100['cli_wall_s']:.1f} s whole run), du {k100['du_mm']:.2f} mm"),
+        ("static 100-point kn sweep 0.05-10000 <= 2 min on 2 cores", timings["sweep100"][0] <= 120.0,
+         f"{timings['sweep100'][0]:.0f} s, {timings['sweep100'][1]} of {timings['sweep100'][2]} done"),
+        ("static 200 Monte Carlo samples <= 3 min on 2 cores", timings["mc200"][0] <= 180.0,
+         f"{timings['mc200'][0]:.0f} s, {timings['mc200'][1]} of {timings['mc200'][2]} done")]
+    return result
+
+
 def line(name: str, s: dict) -> str:
     """One printed line per run."""
     from yadearch.results.rundir import hinge_list
@@ -263,6 +318,8 @@ def main() -> int:
     parser.add_argument("--set1-run", help="use this complete set 1 run folder instead of running")
     parser.add_argument("--set2-run", help="use this complete set 2 run folder instead of running")
     parser.add_argument("--stiff", action="store_true", help="also run the stiffest sweep case (kn 100)")
+    parser.add_argument("--static", action="store_true", help="also time the static engine (set 2, kn 100, "
+                        "a 100-point kn sweep, 200 Monte Carlo samples) against the DEM runs of this invocation")
     parser.add_argument("--stiff-run", help="use this stored run folder of a stiff sweep case (e.g. the "
                         "stiffest that finished) instead of running kn 100")
     parser.add_argument("--sweep", help="campaign folder of the dense kn sweep (its sessions.json)")
@@ -348,6 +405,9 @@ def main() -> int:
         "integrator_ratio": breakdown["integrator_ratio"] if breakdown else None,
         "measured": time.strftime("%Y-%m-%dT%H:%M:%S"),
     }
+    static = static_measurement(runs / "static", s2, stiff) if args.static else None
+    if static is not None:
+        report.update({k: v for k, v in static.items() if k != "verdicts"})
     Path(args.out).parent.mkdir(parents=True, exist_ok=True)
     Path(args.out).write_text(json.dumps(report, indent=2) + "\n")
     print(f"set 2: {speedup:.1f}x faster than the slow reference ({reference['wall_s']:.0f} s)")
@@ -394,6 +454,7 @@ def main() -> int:
                      and breakdown["step_us"] <= TARGET_STEP_US,
                      f"{breakdown['step_us']:.0f} us, {breakdown['integrator_ratio']:.0f}x YADE's bare "
                      "integrator on the same scene" if breakdown else "not measured"))
+    verdicts += static["verdicts"] if static is not None else []
     for label, ok, detail in verdicts:
         print(f"{'PASS' if ok else 'FAIL'}  {label}: {detail}")
     return 0

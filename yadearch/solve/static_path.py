@@ -24,6 +24,7 @@ from yadearch.solve.statics import StaticArch
 
 GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
 SELFWEIGHT_FALL = 0.05  # a block falling this far (m) under self-weight means the arch cannot stand
+SNAP_FRACTION = 0.1  # a descent that moves a block this x runaway to a stable state is a snap survived
 PREDICTOR_POINTS = 3  # accepted states the predictor extrapolates through (a parabola)
 COLLAPSE_RUNAWAYS = 10.0  # the mechanism at collapse is shown this many runaway distances on
 
@@ -61,7 +62,8 @@ class StaticLoading:
         self.solver = Solver(self.arch, self.solver_settings)
         self.accepted: list[StaticState] = []
         self.failures: dict[float, Equilibrium] = {}
-        self.snaps: list[dict] = []  # increments that needed the descent and survived
+        self.snaps: list[dict] = []  # increments the descent carried to a state SNAP_FRACTION x runaway away
+        self.descents = 0  # increments Newton did not solve
         self.iterations = 0
         self._trial: StaticState | None = None
         self._before: StaticState | None = None
@@ -94,7 +96,8 @@ class StaticLoading:
         if found is None or not found.stable() or found.moved > self.runaway:
             newton_failed = found is None
             found = self.solver.descend(predicted, base.u, base.forces.shear_force, self.runaway)
-            if found.verdict == STABLE:
+            self.descents += 1
+            if found.verdict == STABLE and found.moved > SNAP_FRACTION * self.runaway:
                 self.snaps.append({"delta_mm": 1e3 * target, "move_mm": 1e3 * found.moved,
                                    "newton_failed": newton_failed})
         self.iterations += found.iterations

@@ -59,8 +59,8 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
     unused = {key: getattr(num, key) for key in DEM_ONLY_NUMERICS}
     log(f"[{case.name}] static engine: kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
         f"{arch.n_blocks} blocks; not used by this engine: {', '.join(unused)}")
-    selfweight = _selfweight(case, loading, records, log)
     solver_start = time.time()
+    selfweight = _selfweight(case, loading, records, log)
 
     def progress(step: PathStep) -> None:
         wall = time.time() - wall0
@@ -88,7 +88,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
                                 "delta_mm": [units.to_mm(s.lam) for s in loading.accepted[1:]],
                                 "increment_mm": _increments_mm(loading), "move_mm": [units.to_mm(s.move) for s in
                                                                                      loading.accepted[1:]]},
-                   snaps=loading.snaps)
+                   snaps=loading.snaps, descents=loading.descents)
     if path.collapsed:
         hinges = records.add(loading.collapse_state(path.upper), label="collapse")
         dx, dy = arch.movement.components(path.du)

@@ -77,7 +77,7 @@ def comparison_row(pair: Pair, static: dict[str, Any]) -> dict[str, Any]:
     dem_du, static_du = dem.get("du_mm"), static.get("du_mm")
     dem_hinges, static_hinges = hinge_list(dem.get("hinges_at_collapse")), hinge_list(static.get("hinges_at_collapse"))
     diff = 100.0 * (static_du / dem_du - 1.0) if dem_du and static_du else math.nan
-    snaps = [s for s in static.get("snaps", []) if s["move_mm"] > 0.1 * num.numerics.runaway_mm]
+    snaps = static.get("snaps", [])
     return {
         "group": pair.group, "run": pair.name, "kn_N_per_mm3": num.interface.kn_N_per_mm3,
         "direction_deg": num.loading.settlement_direction_deg, "seed": num.imperfections.seed,
