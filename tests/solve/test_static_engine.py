@@ -29,7 +29,7 @@ from yadearch.statics.simulate import path_settings, simulate_static
 
 IMPERFECT = {"imperfections.face_bump_mm": 0.05, "imperfections.face_bump_sd_mm": 0.02,
              "imperfections.edge_radius_mm": 0.5, "imperfections.seed": 3}
-FD_STEP = 1e-11  # m: the round-off of a 0.3 m coordinate (~1e-16 m) is ~1e-6 of the joints' stiffness times it
+FD_STEP = 1e-11  # m: a 0.3 m coordinate rounds to ~6e-17 m, ~1e-6 of the difference it spans
 MM = 1e-3
 
 
@@ -179,8 +179,8 @@ def _inclines(alpha: float) -> StaticArch:
     """Two blocks of 50 x 20 mm (depth 100 mm), each resting on a fixed base along a joint inclined by
     `alpha`: blocks 0 (base) and 1 (block) on the left, 2 (block) and 3 (base) 0.2 m to the right, so
     that the second joint is numbered from the block to the base (normal pointing down, handedness
-    -1). Two free blocks, since the static engine frees blocks 1..n-2 and its banded solver needs six
-    free degrees of freedom (see the report: it fails on three)."""
+    -1). Two free blocks, since the static engine frees blocks 1..n-2 and `solve.banded.general`
+    cannot store a matrix of 2 to 4 rows (a single free block's 3 x 3 tangent)."""
     along = np.array([math.cos(alpha), math.sin(alpha)])
     normal = np.array([-math.sin(alpha), math.cos(alpha)])
     width, height, depth = SLIDER
@@ -213,8 +213,9 @@ def test_block_on_an_incline_slides_at_the_friction_angle(alpha_deg):
     """The descent from the blocks just touching their bases: below phi = 41.2 deg a stable
     equilibrium where each joint carries its block's weight (1e-8) with |T| / N = tan(alpha) (1e-5:
     a block's tilt of ~1e-6 rad mixes N and T), touches over the length the resultant's eccentricity
-    leaves (1e-5) and has that length's elastic shear stiffness ks d c (1e-4); above it no equilibrium: the blocks slide straight down the slope the runaway distance
-    with |T| = tan(phi) N, and the tangent's shear row is then tan(phi) times its normal row."""
+    leaves (1e-5) and has that length's elastic shear stiffness ks d c (1e-4); above it no
+    equilibrium: the blocks slide straight down the slope the runaway distance with |T| = tan(phi) N,
+    and the tangent's shear row is then tan(phi) times its normal row."""
     alpha = math.radians(alpha_deg)
     arch = _inclines(alpha)
     start = arch.at_rest()
@@ -330,8 +331,11 @@ def test_increments_either_side_of_du_are_stable_then_runaway(set2_path):
     assert loading.accepted[-1].lam == path.lower
     below = path.lower + 0.25 * (path.upper - path.lower)
     assert loading.try_increment(below) == STABLE
-    assert loading._trial is not None and loading._trial.move < 0.01 * MM
-    loading._trial = None  # not accepted: the path's states stay as they were
+    loading.accept()
+    reached = loading.accepted[-1]
+    assert reached.lam == below and reached.move < 0.01 * MM and reached.min_stiffness > 0.0
+    loading.discard()  # the path's states stay as they were
+    assert loading.accepted[-1].lam == path.lower
     assert loading.try_increment(path.upper) == RUNAWAY
     assert loading.failures[path.upper].moved >= units.mm(1.0)
 

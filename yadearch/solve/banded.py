@@ -15,7 +15,7 @@ def general(a: np.ndarray, shift: float = 0.0) -> np.ndarray:
     """`a` + shift I in LAPACK's general band storage (ab[BAND + i - j, j] = a[i, j])."""
     n = len(a)
     ab = np.zeros((2 * BAND + 1, n))
-    for k in range(-BAND, BAND + 1):
+    for k in range(-min(BAND, n - 1), min(BAND, n - 1) + 1):
         ab[BAND - k, max(0, k): n + min(0, k)] = np.diagonal(a, k)
     ab[BAND] += shift
     return ab
@@ -25,7 +25,7 @@ def symmetric_upper(a: np.ndarray) -> np.ndarray:
     """The symmetric part of `a` in upper band storage (ab[BAND + i - j, j], i <= j)."""
     n = len(a)
     ab = np.zeros((BAND + 1, n))
-    for k in range(BAND + 1):
+    for k in range(min(BAND, n - 1) + 1):
         ab[BAND - k, k:] = 0.5 * (np.diagonal(a, k) + np.diagonal(a, -k))
     return ab
 

@@ -106,6 +106,8 @@ def static_arch(case: ArchCase) -> StaticArch:
     """The static engine's model of `case`: its geometry with every imperfection, the DEM's joint
     law and stiffnesses, the blocks' weights (density x g x volume) and the supports' movement."""
     geometry = arch_geometry(case)
+    if any(j.right != j.left + 1 for j in geometry.joints):
+        raise ValueError("the static engine's banded tangent needs every joint between consecutive blocks")
     imperfections = arch_imperfections(case, geometry)
     stiffness = contact_stiffness(case, geometry)
     centroid0 = np.array([polygon_centroid(b[: len(b) // 2, :2]) for b in geometry.blocks])

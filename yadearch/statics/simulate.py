@@ -122,7 +122,7 @@ def _selfweight(case: ArchCase, loading: StaticLoading, records: StaticRecords,
     records.add(state, label="selfweight")
     row = records.series[-1]
     weight = float(loading.arch.weight[1:-1].sum())
-    info = {"steps": state.iterations, "unbalanced": row["unbalanced"], "arch_weight_N": weight,
+    info = {"steps": loading.iterations, "unbalanced": row["unbalanced"], "arch_weight_N": weight,
             "vertical_reaction_sum_N": row["left_Ry_N"] + row["right_Ry_N"],
             "horizontal_reaction_sum_N": row["left_Rx_N"] + row["right_Rx_N"], "thrust_N": abs(row["left_Rx_N"]),
             "crown_settlement_mm": -row["crown_dy_mm"]}
