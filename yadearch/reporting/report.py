@@ -64,6 +64,15 @@ PAPER_SECTIONS = ("geometry", "material", "loading", "imperfections")  # what ma
 NOT_PHYSICAL = {"max_settlement_mm"}  # a run's stopping point, not part of the arch or its loading
 
 
+ENGINE_NAMES = {"dem": "the DEM (YADE, explicit dynamics relaxed to equilibrium)",
+                "static": "the static engine (Newton's method on the same blocks and joints)"}
+
+
+def engine_of(summary: dict[str, Any]) -> str:
+    """Which engine made a run: summary.json's `engine` ('dem' for runs that predate the field)."""
+    return str(summary.get("engine", "dem"))
+
+
 def case_mismatch(case: dict[str, Any]) -> str | None:
     """How a run's case.toml differs from the paper's arch, material, loading and perfect joints
     (the first difference, e.g. "geometry.n_voussoirs 10, paper 55"); None if it is the paper's case."""
@@ -179,6 +188,7 @@ def run_section(reported: ReportedRun) -> list[str]:
              f"- run folder: `{run.path}`",
              f"- kn = {summary.get('kn_N_per_mm3')} N/mm3, ks = {summary.get('ks_N_per_mm3')} N/mm3, "
              f"joints computed by {CONTACT_MODEL_NAMES.get(summary.get('contact_model', 'cgal'))}",
+             f"- solved by {ENGINE_NAMES[engine_of(summary)]}",
              f"- du = {'no collapse' if du is None else f'{du:.2f} mm'}"
              + (f" (bracket {summary['du_bracket_mm'][0]:.2f}–{summary['du_bracket_mm'][1]:.2f} mm)"
                 if summary.get("du_bracket_mm") else ""),
@@ -217,23 +227,23 @@ def run_section(reported: ReportedRun) -> list[str]:
         lines += [f"![{name}]({reported.folder}/{name}.png)", "",
                   f"*{caption}* ([PDF]({reported.folder}/{name}.pdf))", ""]
     lines += ["### Provenance", "", "| | |", "|---|---|"]
-    for key in ("yade_version", "yadearch_version", "git_revision", "steps", "wall_s"):
-        value = summary.get(key)
+    for key in ("engine", "yade_version", "yadearch_version", "git_revision", "steps", "wall_s"):
+        value = engine_of(summary) if key == "engine" else summary.get(key)
         lines.append(f"| {key} | {f'{value:.0f}' if key == 'wall_s' and value is not None else value} |")
     return lines + [""]
 
 
 def overview(reported: list[ReportedRun]) -> list[str]:
     """One line per run: its reference set, du against the paper's."""
-    lines = ["| run | paper set | du (mm) | paper numerical du (mm) | paper experimental du (mm) "
+    lines = ["| run | engine | paper set | du (mm) | paper numerical du (mm) | paper experimental du (mm) "
              "| hinges at collapse |",
-             "|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|"]
     for r in reported:
         s = r.run.summary
         ref = reference.SETS.get(r.reference_name or "", {})
         du = s.get("du_mm")
         hinges = hinge_list(s["hinges_at_collapse"]) or "—"
-        lines.append(f"| {s.get('name', r.run.path.name)} | {r.reference_name or '—'} | "
+        lines.append(f"| {s.get('name', r.run.path.name)} | {engine_of(s)} | {r.reference_name or '—'} | "
                      f"{'no collapse' if du is None else f'{du:.2f}'} | "
                      f"{ref['numerical']['du_mm'] if ref else '—'} | {ref['experimental']['du_mm'] if ref else '—'} | "
                      f"{hinges} |")

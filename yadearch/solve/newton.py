@@ -74,6 +74,7 @@ class Solver:
         law, size = arch.law, float(np.abs(arch.centroid0).max())
         self.resolution = ROUNDOFF * law.kn * law.depth * float(arch.table.length.max()) * size
         self.evaluations = 0
+        self.iterations = 0  # Newton and descent iterations, over every solve
 
     @property
     def converged(self) -> float:
@@ -110,6 +111,7 @@ class Solver:
         u = u0.copy()
         joints, residual = self.state(u, u_before, shear_before, gravity)
         for iteration in range(self.settings.newton_iterations):
+            self.iterations += 1
             norm = float(np.abs(residual).max())
             if norm <= self.converged:
                 return self.result(u, joints, residual, iteration, u0)
@@ -144,6 +146,7 @@ class Solver:
         floor = self.initial_shift(joints)
         shift = floor
         for iteration in range(budget):
+            self.iterations += 1
             stiffness = self.free_stiffness(joints)
             if float(np.abs(residual).max()) <= self.converged:
                 found = self.result(u, joints, residual, iteration, u0)

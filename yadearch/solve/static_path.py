@@ -25,6 +25,7 @@ from yadearch.solve.statics import StaticArch
 GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
 SELFWEIGHT_FALL = 0.05  # a block falling this far (m) under self-weight means the arch cannot stand
 SNAP_FRACTION = 0.1  # a descent that moves a block this x runaway to a stable state is a snap survived
+SUBSTEPS = 8  # an increment Newton cannot solve at once is marched in this many steps
 PREDICTOR_POINTS = 3  # accepted states the predictor extrapolates through (a parabola)
 COLLAPSE_RUNAWAYS = 10.0  # the mechanism at collapse is shown this many runaway distances on
 
@@ -64,7 +65,6 @@ class StaticLoading:
         self.failures: dict[float, Equilibrium] = {}
         self.snaps: list[dict] = []  # increments the descent carried to a state SNAP_FRACTION x runaway away
         self.descents = 0  # increments Newton did not solve
-        self.iterations = 0
         self._trial: StaticState | None = None
         self._before: StaticState | None = None
 
@@ -77,7 +77,6 @@ class StaticLoading:
         start = u.copy()
         for k in range(1, GRAVITY_STEPS + 1):
             found = self.solver.descend(u, start, shear, SELFWEIGHT_FALL, gravity=k / GRAVITY_STEPS)
-            self.iterations += found.iterations
             if found.verdict != STABLE:
                 raise StaticEngineError(
                     f"the arch does not stand under its own weight ({found.verdict} at {k}/{GRAVITY_STEPS} "
@@ -89,25 +88,58 @@ class StaticLoading:
 
     # ---- the oracle ---------------------------------------------------------------------------
     def try_increment(self, target: float) -> str:
-        """Solve the arch with the support at `target` from the last accepted state."""
+        """Solve the arch with the support at `target` from the last accepted state: Newton from the
+        predicted state, or, where that fails, a march to `target` in SUBSTEPS steps (`_march`)."""
         base = self.accepted[-1]
-        predicted = self.predict(target)
-        found = self.solver.newton(predicted, base.u, base.forces.shear_force)
-        if found is None or not found.stable() or found.moved > self.runaway:
-            newton_failed = found is None
-            found = self.solver.descend(predicted, base.u, base.forces.shear_force, self.runaway)
-            self.descents += 1
-            if found.verdict == STABLE and found.moved > SNAP_FRACTION * self.runaway:
-                self.snaps.append({"delta_mm": 1e3 * target, "move_mm": 1e3 * found.moved,
-                                   "newton_failed": newton_failed})
-        self.iterations += found.iterations
-        if found.verdict != STABLE:
-            self.failures[target] = found
-            return found.verdict
+        found = self._newton(self.accepted, target)
+        if found is None:
+            return self._march(target)
         self._trial = self._state("equilibrium", target, found, base.slip + found.joints.forces.plastic_slip,
                                   found.joints.forces)
         self._trial.move = found.moved
         return STABLE
+
+    def _newton(self, history: list[StaticState], target: float) -> Equilibrium | None:
+        """Newton from the state predicted at `target` through `history`; None unless it ends in a
+        stable equilibrium within `runaway` of the prediction."""
+        last = history[-1]
+        found = self.solver.newton(self.predict(target, history), last.u, last.forces.shear_force)
+        if found is None or not found.stable() or found.moved > self.runaway:
+            return None
+        return found
+
+    def _march(self, target: float) -> str:
+        """From the last accepted state to `target` in SUBSTEPS equal steps, each solved by Newton or,
+        where Newton fails (the path folds: a hinge snaps), by the descent from the state predicted
+        there, as the DEM's arch snaps during its move, where the fold is, not at the move's end. A
+        descent that runs away is the increment's failure; one that settles is a snap survived."""
+        history = list(self.accepted[-PREDICTOR_POINTS:])
+        start, slip, largest = history[-1].lam, history[-1].slip, 0.0
+        for k in range(1, SUBSTEPS + 1):
+            lam = start + (target - start) * k / SUBSTEPS
+            found = self._newton(history, lam)
+            jumped = found is None
+            if found is None:
+                last = history[-1]
+                found = self.solver.descend(self.predict(lam, history), last.u, last.forces.shear_force,
+                                            self.runaway)
+                self.descents += 1
+                if found.verdict != STABLE:
+                    self.failures[target] = found
+                    return found.verdict
+                if found.moved > SNAP_FRACTION * self.runaway:
+                    self.snaps.append({"delta_mm": 1e3 * lam, "move_mm": 1e3 * found.moved})
+            largest, slip = max(largest, found.moved), slip + found.joints.forces.plastic_slip
+            state = self._state("equilibrium", lam, found, slip, found.joints.forces)
+            history = [state] if jumped else (history + [state])[-PREDICTOR_POINTS:]
+        self._trial = state
+        self._trial.move = largest
+        return STABLE
+
+    @property
+    def iterations(self) -> int:
+        """Newton and descent iterations so far."""
+        return self.solver.iterations
 
     def accept(self) -> None:
         assert self._trial is not None
@@ -122,11 +154,11 @@ class StaticLoading:
     def discard(self) -> None:
         self.accepted.pop()
 
-    def predict(self, target: float) -> np.ndarray:
-        """Where the arch should be with the support at `target`: the secant through the last two
-        accepted states, or from the self-weight state the tangent's response to the support's move."""
-        last = self.accepted[-1]
-        history = [s for s in self.accepted[-PREDICTOR_POINTS:]]
+    def predict(self, target: float, history: list[StaticState]) -> np.ndarray:
+        """Where the arch should be with the support at `target`: a parabola (or a line) through the
+        last states of `history`, or from a single state the tangent's response to the support's move."""
+        last = history[-1]
+        history = history[-PREDICTOR_POINTS:]
         lams = [s.lam for s in history]
         if len(set(lams)) == len(lams) >= 2:  # Lagrange extrapolation through the last states
             weights = [np.prod([(target - lams[m]) / (lams[k] - lams[m]) for m in range(len(lams)) if m != k])

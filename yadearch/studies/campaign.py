@@ -235,7 +235,8 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
     row.setdefault("n_voussoirs", None if case is None else case.geometry.n_voussoirs)
     empty = {"du_mm": math.nan, "collapsed": None, "hinges": "", "mechanism": "", "hinge_A": None,
              "hinge_B": None, "hinge_C": None, "hinge_D": None, "steps": None, "wall_s": math.nan,
-             "max_slip_mm": math.nan, "max_friction_use": math.nan, "friction_interface": None}
+             "max_slip_mm": math.nan, "max_friction_use": math.nan, "friction_interface": None,
+             "engine": None if case is None else case.numerics.engine}
     if case is not None and is_complete(spec.folder):
         summary = json.loads((spec.folder / SUMMARY_FILE).read_text())
         hinges = summary.get("hinges_at_collapse") or []
@@ -248,7 +249,8 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
                    hinges=hinge_list(hinges),
                    mechanism="-".join(h["side"] for h in hinges),
                    **label_hinges(summary, case.geometry.n_voussoirs),
-                   steps=summary.get("steps"), wall_s=summary.get("wall_s"), status="done",
+                   steps=summary.get("steps"), wall_s=summary.get("wall_s"), engine=summary.get("engine", "dem"),
+                   status="done",
                    reason="" if summary.get("collapsed") else f"no collapse up to {_path_end_mm(summary, case):g} mm")
     elif (spec.folder / FAILED_FILE).is_file():
         failed = json.loads((spec.folder / FAILED_FILE).read_text())
