@@ -33,5 +33,7 @@ import numpy, pandas, matplotlib, click, tomli_w, dask, distributed, numba  # no
 from yadearch.engine.yade_env import import_yade
 import_yade()
 import yade.config
+from yadearch.solve.statics import compile_kernels
+compile_kernels()  # the static engine's numba kernel, compiled once into its cache
 print(f"setup: ok (numpy {numpy.__version__}, YADE {yade.config.version})")
 PY

@@ -35,10 +35,10 @@ def test_report_numbers_are_those_of_summary_json(written):
     _, summary, markdown = written
     du = f"{summary['du_mm']:.2f}"
     assert table_row(markdown, "du (mm)")[3] == du
-    assert table_row(markdown, "set2")[2] == du
+    assert table_row(markdown, "set2")[1:4] == ["dem", "set2", du]  # run | engine | paper set | du
     hinges = " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"])
     assert f"- hinges at collapse: {hinges}" in markdown
-    assert table_row(markdown, "set2")[5] == hinges
+    assert table_row(markdown, "set2")[6] == hinges
     run_hinges = {table_row(markdown, f"hinge {x}")[3].split(" (")[0] for x in "ABC"}
     assert run_hinges <= {f"{h['interface']} {h['side']}" for h in summary["hinges_at_collapse"]}
     assert "**Note:**" not in markdown  # the analysis agrees with summary.json
@@ -91,7 +91,7 @@ def test_a_run_matching_neither_set_gets_figures_and_its_own_numbers(tmp_path):
     markdown = write_report([tmp_path / "k1"], tmp_path / "out").read_text()
     assert "No reference: its name and kn are neither set's" in markdown
     assert "Comparison with the paper" not in markdown
-    assert table_row(markdown, "stiff")[2] == f"{summary['du_mm']:.2f}"
+    assert table_row(markdown, "stiff")[3] == f"{summary['du_mm']:.2f}"
     assert (tmp_path / "out" / "k1" / "collapse.png").stat().st_size > 0  # figures beside the run folder name
 
 

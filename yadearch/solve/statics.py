@@ -23,6 +23,8 @@ from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, assemble, joi
 from yadearch.model.movement import Movement
 from yadearch.solve.rigid import polygon_centroid, rotate
 
+WARM_UP_VOUSSOIRS = 3  # the smallest arch that compiles every kernel
+
 
 @dataclass(frozen=True)
 class StaticArch:
@@ -118,3 +120,13 @@ def static_arch(case: ArchCase) -> StaticArch:
         law=JointLaw(stiffness.kn, stiffness.ks, stiffness.tan_friction, geometry.depth),
         weight=np.array([unit_weight * block_volume(b) for b in geometry.blocks]),
         centroid0=centroid0, movement=case_movement(case, geometry), imperfections=imperfections)
+
+
+def compile_kernels() -> None:
+    """Compile the static engine's joint kernel once and leave it in numba's cache (scripts/setup.sh
+    calls this, so that the first run of a fresh install is not the one that waits ~10 s for it)."""
+    from yadearch.case.config import preset
+
+    arch = static_arch(preset("set2").with_overrides({"geometry.n_voussoirs": WARM_UP_VOUSSOIRS}))
+    u = arch.at_rest()
+    arch.evaluate(u, u, np.zeros(len(arch.table.left)))
