@@ -3,7 +3,7 @@ support movement, every 15 degrees from spreading (0) through settlement (-90) t
 beside the rigid-block limit of each direction, with the reaction-displacement curves.
 
     .venv/bin/python scripts/capacity_map.py [--out reports/movements/capacity] [--jobs 2]
-                                             [--report-only | --rigid-only]
+                                             [--report-only | --rigid-only] [--engine dem|static]
 
 The runs form one resumable campaign (OUT/runs); the report (OUT/capacity.md), the table
 (OUT/capacity.csv) and the figures are rewritten from what is finished. --rigid-only rewrites the
@@ -45,12 +45,12 @@ POLAR_FIGURE = "capacity_map"
 REACTION_FIGURE = "reactions"
 
 
-def run_campaign_of_directions(out: Path, jobs: int) -> pd.DataFrame:
-    """Every set at every direction, as one campaign (the costliest runs first)."""
+def run_campaign_of_directions(out: Path, jobs: int, engine: str = "dem") -> pd.DataFrame:
+    """Every set at every direction, as one campaign (the costliest runs first), on `engine`."""
     kns = [reference.SETS[name]["kn_N_per_mm3"] for name in SETS]
     rows = [{"kn_N_per_mm3": kn, DIRECTION_PARAMETER: direction} for kn in kns for direction in DIRECTIONS_DEG]
     with open_pool(jobs) as pool:
-        return run_campaign(preset(SETS[0]), rows, out / RUNS, pool)
+        return run_campaign(preset(SETS[0]).with_overrides({"numerics.engine": engine}), rows, out / RUNS, pool)
 
 
 def rigid_limits() -> dict[float, RigidLimit]:
@@ -97,6 +97,8 @@ def main() -> int:
     parser.add_argument("--out", type=Path, default=Path("reports/movements/capacity"))
     parser.add_argument("--jobs", type=int, default=2, help="runs at once (one core each)")
     parser.add_argument("--report-only", action="store_true", help="write the report from finished runs")
+    parser.add_argument("--engine", choices=("dem", "static"), default="dem",
+                        help="solver of the runs (static: Newton's method, seconds; docs/theory.md)")
     parser.add_argument("--rigid-only", action="store_true",
                         help="rewrite the rigid columns of OUT/capacity.csv, the report and the map (no runs needed)")
     args = parser.parse_args()
@@ -106,7 +108,7 @@ def main() -> int:
         table["hinges"] = table["hinges"].fillna("")
     else:
         results = (pd.read_csv(args.out / RUNS / RESULTS_FILE) if args.report_only
-                   else run_campaign_of_directions(args.out, args.jobs))
+                   else run_campaign_of_directions(args.out, args.jobs, args.engine))
         table = pd.concat([map_table(name, _runs_of(results, name), rigid) for name in SETS], ignore_index=True)
         curves = {name: {float(getattr(r, DIRECTION_PARAMETER)): reaction_curve(
             pd.read_csv(args.out / RUNS / r.folder / SERIES_FILE), float(getattr(r, DIRECTION_PARAMETER)))
