@@ -10,7 +10,7 @@ import yadearch as ya
 
 
 def test_the_api_is_one_namespace_imported_on_first_use():
-    for name in ("preset", "run", "open_run", "sweep", "calibrate", "limit"):
+    for name in ("preset", "run", "open_run", "sweep", "montecarlo", "calibrate", "limit"):
         assert callable(getattr(ya, name))
     with pytest.raises(AttributeError):
         ya.not_a_function  # noqa: B018
@@ -63,3 +63,27 @@ def test_a_result_lists_the_references_it_stands_on(tmp_path):
     assert ya.open_run(tmp_path / "paper").references[0].startswith("Effect of geometrical imperfections")
     coarse = ya.open_run(tmp_path / "coarse").references
     assert len(coarse) == 1 and "Yade" in coarse[0]
+
+
+@pytest.mark.parametrize("bad", [None, {"kn_N_per_mm3": 1.0}, 3.5])
+def test_the_api_refuses_what_is_not_a_case_naming_the_argument(bad, tmp_path):
+    with pytest.raises(TypeError, match="case must be an ArchCase"):
+        ya.run(bad, out=tmp_path / "run")
+    with pytest.raises(TypeError, match="case must be an ArchCase"):
+        ya.limit(bad)
+
+
+def test_a_preset_name_stands_for_its_case_and_an_unknown_engine_is_refused(tmp_path):
+    assert ya.limit("set2").du_rigid_mm == pytest.approx(ya.limit(ya.preset("set2")).du_rigid_mm)
+    with pytest.raises(ValueError, match="engine must be one of dem, static, got 'fast'"):
+        ya.run("set2", out=tmp_path / "run", engine="fast")
+
+
+def test_the_static_engine_runs_through_the_api_and_says_so(tmp_path):
+    """A 9-voussoir arch at kn 5.2 settles to 122.29 mm on 1E 2I 6E 10E (the DEM: 122.21 mm)."""
+    case = ya.preset("set2").with_overrides({"n_voussoirs": 9})
+    res = ya.run(case, out=tmp_path / "static", engine="static", figures=False)
+    assert res.engine == "static" and res.summary["unused_parameters"]["damping"] == case.numerics.damping
+    assert res.du_mm == pytest.approx(122.21, rel=0.01)
+    assert [str(h) for h in res.hinges] == ["1E", "2I", "6E", "10E"]
+    assert (res.loading_curve()["min_stiffness_N_per_m"].dropna() > 0).all()

@@ -148,9 +148,21 @@ def open_run(path: str | Path) -> RunResult:
 ENGINES = ("dem", "static")
 
 
-def with_engine(case: ArchCase, engine: str | None) -> ArchCase:
-    """`case` solved by `engine` ('dem': YADE, 'static': Newton's method; None: the case's own,
-    numerics.engine); ValueError naming the argument for another value."""
+def as_case(case: ArchCase | str) -> ArchCase:
+    """An ArchCase, or a preset's name ('set1', 'set2') taken as that preset; TypeError naming the
+    argument for anything else."""
+    if isinstance(case, ArchCase):
+        return case
+    if isinstance(case, str):
+        return _preset(case)
+    raise TypeError(f"case must be an ArchCase (ya.preset, ya.load_case) or a preset name ('set1', 'set2'), "
+                    f"got {type(case).__name__}")
+
+
+def with_engine(case: ArchCase | str, engine: str | None) -> ArchCase:
+    """`case` (or a preset's name) solved by `engine` ('dem': YADE, 'static': Newton's method; None:
+    the case's own numerics.engine); ValueError naming the argument for another value."""
+    case = as_case(case)
     if engine is None:
         return case
     if engine not in ENGINES:
@@ -158,7 +170,7 @@ def with_engine(case: ArchCase, engine: str | None) -> ArchCase:
     return case.with_overrides({"numerics.engine": engine})
 
 
-def run(case: ArchCase, out: str | Path | None = None, timeout_s: float | None = None,
+def run(case: ArchCase | str, out: str | Path | None = None, timeout_s: float | None = None,
         figures: bool = True, rerun: bool = False, overwrite: bool = False, engine: str | None = None) -> RunResult:
     """Run `case` to collapse in a child process (YADE, or the static engine with `engine="static"`),
     writing the run folder `out` (default runs/NAME) and its figures; returns the result read back.
@@ -183,7 +195,7 @@ def run(case: ArchCase, out: str | Path | None = None, timeout_s: float | None =
     return result
 
 
-def sweep(case: ArchCase, out: str | Path, jobs: int | None = None, scheduler: str | None = None,
+def sweep(case: ArchCase | str, out: str | Path, jobs: int | None = None, scheduler: str | None = None,
           timeout_s: float | None = None, engine: str | None = None, **values: list[Any]) -> pd.DataFrame:
     """Run `case` over the grid of parameter `values` (e.g. `kn_N_per_mm3=[0.25, 1, 5.2]`) as a
     resumable campaign in `out`; returns its results table (one row a run)."""
@@ -195,7 +207,7 @@ def sweep(case: ArchCase, out: str | Path, jobs: int | None = None, scheduler: s
         return run_campaign(with_engine(case, engine), grid(values), Path(out), pool, timeout_s=timeout_s)
 
 
-def montecarlo(case: ArchCase, out: str | Path, samples: int, seed: int = 1, jobs: int | None = None,
+def montecarlo(case: ArchCase | str, out: str | Path, samples: int, seed: int = 1, jobs: int | None = None,
                scheduler: str | None = None, timeout_s: float | None = None, engine: str | None = None,
                **levels: list[Any]) -> pd.DataFrame:
     """`samples` seeded draws of `case`'s imperfections (at every combination of the amplitude
@@ -209,7 +221,7 @@ def montecarlo(case: ArchCase, out: str | Path, samples: int, seed: int = 1, job
                               timeout_s=timeout_s)
 
 
-def calibrate(case: ArchCase, target_du_mm: float, out: str | Path, kn_min: float = 0.1,
+def calibrate(case: ArchCase | str, target_du_mm: float, out: str | Path, kn_min: float = 0.1,
               kn_max: float = 100.0, tolerance_mm: float = 0.5, jobs: int | None = None,
               engine: str | None = None):
     """The kn at which `case` collapses at `target_du_mm` (within `tolerance_mm`), by bracketing
@@ -223,10 +235,10 @@ def calibrate(case: ArchCase, target_du_mm: float, out: str | Path, kn_min: floa
                             kn_min, kn_max)
 
 
-def limit(case: ArchCase, compliant: bool = False):
+def limit(case: ArchCase | str, compliant: bool = False):
     """Rigid-block limit analysis of `case` (no YADE, seconds): du_rigid and the hinge history;
     `compliant`: with the joints folding at the margin the case's kn allows (what a DEM run of that
     stiffness should find; docs/validation.md)."""
     from yadearch.solve.limit import limit_analysis
 
-    return limit_analysis(case, compliant=compliant)
+    return limit_analysis(as_case(case), compliant=compliant)
