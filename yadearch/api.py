@@ -107,11 +107,11 @@ class RunResult:
 
     @property
     def references(self) -> list[str]:
-        """What this result stands on: the DEM engine and, for a run of the paper's case, the paper."""
+        """What this result stands on: the DEM engine (for a DEM run) and, for the paper's case, the paper."""
         from yadearch.case.reference import references_for
         from yadearch.reporting.report import case_mismatch
 
-        return references_for(paper_case=case_mismatch(self.folder.case) is None)
+        return references_for(dem=self.engine == "dem", paper_case=case_mismatch(self.folder.case) is None)
 
     def write_figures(self, out: str | Path | None = None) -> dict[str, tuple[Path, Path]]:
         """Write the run's figures (PDF and PNG) into `out` (default: the run folder's `figures/`)."""

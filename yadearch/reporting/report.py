@@ -276,7 +276,8 @@ def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
     lines = ["# yadearch report", "", f"Reference: *{reference.PAPER}*.", ""] + overview(reported) + [""]
     for r in reported:
         lines += run_section(r)
-    cited = reference.references_for(paper_case=any(r.reference_name for r in reported))
+    cited = reference.references_for(dem=any(engine_of(r.run.summary) == "dem" for r in reported),
+                                     paper_case=any(r.reference_name for r in reported))
     lines += ["## References", ""] + [f"{k}. {text}" for k, text in enumerate(cited, start=1)] + [""]
     path = out / REPORT_FILE
     write_text_atomically(path, "\n".join(lines))
