@@ -47,7 +47,7 @@ class Equilibrium:
 
     u: np.ndarray
     joints: JointTangent
-    stiffness: np.ndarray
+    stiffness: np.ndarray  # on the free degrees of freedom, in band storage (`solve.banded`)
     residual: float
     iterations: int
     verdict: str = STABLE
@@ -97,8 +97,9 @@ class Solver:
                            verdict, largest_move(u, start))
 
     def free_stiffness(self, joints: JointTangent) -> np.ndarray:
-        """K on the free degrees of freedom (the voussoirs': a contiguous block of the whole K)."""
-        return self.arch.stiffness(joints)[self.free[0]: self.free[-1] + 1, self.free[0]: self.free[-1] + 1]
+        """K on the free degrees of freedom (the voussoirs': a contiguous block of the whole K), in
+        band storage (`solve.banded`)."""
+        return self.arch.band_stiffness(joints, banded.BAND)[:, self.free[0]: self.free[-1] + 1]
 
     def _capped(self, d: np.ndarray) -> np.ndarray:
         """`d` (free dofs) shortened so that no block moves more than `max_step` in one iteration."""
@@ -178,7 +179,7 @@ class Solver:
     def initial_shift(self, joints: JointTangent) -> float:
         """The descent's first shift (N/m): the stiffest diagonal term, or a whole joint's normal
         stiffness where nothing touches yet (the pseudo-time of one step is then a joint's own)."""
-        diagonal = np.abs(np.diag(self.arch.stiffness(joints))[self.free])
+        diagonal = np.abs(self.free_stiffness(joints)[banded.BAND])
         law, table = self.arch.law, self.arch.table
         return max(float(diagonal.max()), law.kn * law.depth * float(table.length.max()))
 

@@ -70,13 +70,16 @@ class StaticLoading:
 
     # ---- self-weight ------------------------------------------------------------------------
     def selfweight(self) -> StaticState:
-        """Gravity in GRAVITY_STEPS load steps from the blocks exactly touching, each solved by the
-        descent (their joints have no stiffness before they are pressed), then by Newton."""
+        """Gravity in GRAVITY_STEPS load steps from the blocks exactly touching: the first solved by the
+        descent (the joints have no stiffness before they are pressed), the others by Newton from the
+        last (by the descent where Newton fails)."""
         u = self.arch.with_supports(self.arch.at_rest(), 0.0)
         shear = np.zeros(len(self.arch.table.left))
         start = u.copy()
         for k in range(1, GRAVITY_STEPS + 1):
-            found = self.solver.descend(u, start, shear, SELFWEIGHT_FALL, gravity=k / GRAVITY_STEPS)
+            pressed = self.solver.newton(u, start, shear, gravity=k / GRAVITY_STEPS) if k > 1 else None
+            found = pressed if pressed is not None and pressed.stable() else \
+                self.solver.descend(u, start, shear, SELFWEIGHT_FALL, gravity=k / GRAVITY_STEPS)
             if found.verdict != STABLE:
                 raise StaticEngineError(
                     f"the arch does not stand under its own weight ({found.verdict} at {k}/{GRAVITY_STEPS} "
@@ -170,7 +173,7 @@ class StaticLoading:
         driven = np.setdiff1d(np.arange(len(moved)), free)
         load = -stiffness[np.ix_(free, driven)] @ (moved - last.u)[driven]
         try:
-            moved[free] += banded.solve(stiffness[np.ix_(free, free)], load)
+            moved[free] += banded.solve(banded.from_dense(stiffness[np.ix_(free, free)]), load)
         except (np.linalg.LinAlgError, ValueError):
             pass  # a singular tangent: the descent starts from the state with only the support moved
         return moved
