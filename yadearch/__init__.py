@@ -1,12 +1,12 @@
 """yadearch: masonry arches on moving supports, simulated with YADE's polyhedral discrete elements.
 
 The public API (`yadearch.api`): `preset`, `movement`, `run`, `open_run`, `sweep`, `montecarlo`, `calibrate`,
-`limit`, imported on first use so that `import yadearch` stays light (no pandas, no YADE)."""
+`capacity`, `limit`, imported on first use so that `import yadearch` stays light (no pandas, no YADE)."""
 
 __version__ = "0.1.0"
 
-_API = ("preset", "movement", "run", "open_run", "sweep", "montecarlo", "calibrate", "limit", "RunResult",
-        "HingeAtCollapse")
+_API = ("preset", "movement", "run", "open_run", "sweep", "montecarlo", "calibrate", "capacity", "limit",
+        "RunResult", "HingeAtCollapse")
 __all__ = ["__version__", *_API]
 
 

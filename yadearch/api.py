@@ -235,6 +235,23 @@ def calibrate(case: ArchCase | str, target_du_mm: float, out: str | Path, kn_min
                             kn_min, kn_max)
 
 
+def capacity(case: ArchCase | str, out: str | Path, step_deg: float = 15.0, engine: str | None = None,
+             jobs: int | None = None, scheduler: str | None = None, timeout_s: float | None = None,
+             rigid: bool = True) -> pd.DataFrame:
+    """The capacity map of `case`: du against the direction of the support movement every `step_deg`
+    from spreading (0) to closing (-180), a resumable campaign in OUT/runs, with the rigid limit of
+    each direction (unless not `rigid`); writes OUT/capacity.csv, capacity.md and the polar figure
+    and returns the table."""
+    from yadearch.studies.capacity import directions
+    from yadearch.studies.capacity_map import run_capacity
+    from yadearch.studies.executors import open_pool
+
+    case = with_engine(case, engine)
+    directions(step_deg)  # refuses a bad step before anything starts
+    with open_pool(jobs, scheduler) as pool:
+        return run_capacity(case, Path(out), pool, step_deg, rigid=rigid, timeout_s=timeout_s)
+
+
 def limit(case: ArchCase | str, compliant: bool = False):
     """Rigid-block limit analysis of `case` (no YADE, seconds): du_rigid and the hinge history;
     `compliant`: with the joints folding at the margin the case's kn allows (what a DEM run of that

@@ -13,6 +13,7 @@ from yadearch import api
 from yadearch.analysis.mechanism import run_warnings
 from yadearch.case.config import parameter_docs, preset
 from yadearch.cli.campaigns import calibrate, robustness, sweep
+from yadearch.cli.capacity import capacity
 from yadearch.cli.montecarlo import montecarlo
 from yadearch.cli.options import case_options, resolve_case
 from yadearch.engine.process import run_case_process
@@ -146,6 +147,7 @@ cli.add_command(sweep)
 cli.add_command(calibrate)
 cli.add_command(robustness)
 cli.add_command(montecarlo)
+cli.add_command(capacity)
 
 
 @cli.command("report")

@@ -21,12 +21,12 @@ RIGID_STYLE = {"color": RIGID_COLOR, "ls": "--", "marker": "x", "ms": 3, "lw": 0
 OTHER_BRANCH_STYLE = {"color": RIGID_COLOR, "ls": ":", "marker": "+", "ms": 3, "lw": 0.8}
 
 
-def capacity_polar_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
+def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") -> list[Path]:
     """Left: du (radius, mm) against the direction of the support movement (angle, degrees from +x;
     the half-plane below the horizontal) for every `set` of `table`, with the rigid limit
     (`du_rigid_mm`) and that of the keystone tie's other branch (`du_rigid_other_mm`). Right: the
-    collapse mechanism of each direction, its hinges' interfaces (I = intrados, E = extrados).
-    STEM.pdf and STEM.png."""
+    collapse mechanism of each direction, its hinges' interfaces (I = intrados, E = extrados); the
+    curves are labelled with the `engine` that made them. STEM.pdf and STEM.png."""
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, 3.4), layout="constrained")
         polar = fig.add_subplot(1, 2, 1, projection="polar")
@@ -35,7 +35,7 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
         for k, (name, runs) in enumerate(groups):
             runs = runs.sort_values("direction_deg")
             polar.plot(np.radians(runs["direction_deg"].to_numpy(dtype=float)), runs["du_mm"], marker="o",
-                       ms=3, lw=1, color=f"C{k}", label=f"{name} (DEM)")
+                       ms=3, lw=1, color=f"C{k}", label=f"{name} ({engine})")
             offset = (k - (len(groups) - 1) / 2) * SET_OFFSET_DEG
             _hinge_marks(hinges, runs["direction_deg"], runs["hinges"], f"C{k}", offset)
         rigid = table.drop_duplicates("direction_deg").sort_values("direction_deg")

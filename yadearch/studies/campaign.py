@@ -23,7 +23,7 @@ from tqdm import tqdm
 from yadearch.atomic import remove_stale_temporaries, write_atomically, write_text_atomically
 from yadearch.case.config import ArchCase, preset
 from yadearch.case.plan import plan_run
-from yadearch.engine.process import check_yade_installed, run_case_process
+from yadearch.engine.process import STATIC_ENGINE, check_yade_installed, run_case_process
 from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, YadearchError
 from yadearch.model.hinges import PAPER_LABELS, paper_labels
 from yadearch.results.rundir import SUMMARY_FILE, case_differences, hinge_list, is_complete
@@ -166,8 +166,8 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
             record_failure(spec.folder, spec.name, spec.error or "", 0.0)
     for spec in todo:
         (spec.folder / FAILED_FILE).unlink(missing_ok=True)
-    if todo and task is execute:
-        check_yade_installed()
+    if task is execute and any(s.ready.numerics.engine != STATIC_ENGINE for s in todo):
+        check_yade_installed()  # a campaign of static runs needs no YADE
     skipped = sum(1 for s in specs if s.case is not None) - len(todo)
     bar = tqdm(total=len(specs), initial=len(specs) - len(todo), unit="run", disable=not progress,
                desc=out.name, dynamic_ncols=True)

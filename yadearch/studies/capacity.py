@@ -11,7 +11,19 @@ import numpy as np
 import pandas as pd
 
 DIRECTION_STEP_DEG = 15
-DIRECTIONS_DEG = tuple(float(d) for d in range(0, -181, -DIRECTION_STEP_DEG))
+MAX_STEP_DEG = 90  # coarser than this a map would not show the half-plane
+
+
+def directions(step_deg: float = DIRECTION_STEP_DEG) -> tuple[float, ...]:
+    """Directions every `step_deg` from spreading (0) through settlement (-90) to closing (-180);
+    ValueError naming the argument unless 0 < step_deg <= MAX_STEP_DEG and it divides 180."""
+    count = 180.0 / step_deg if step_deg > 0 else math.nan
+    if not (0 < step_deg <= MAX_STEP_DEG and abs(count - round(count)) < 1e-9):
+        raise ValueError(f"step_deg must divide 180 and lie in (0, {MAX_STEP_DEG}], got {step_deg!r}")
+    return tuple(round(-k * step_deg, 9) + 0.0 for k in range(int(round(count)) + 1))
+
+
+DIRECTIONS_DEG = directions()
 DIRECTION_PARAMETER = "settlement_direction_deg"
 EQUILIBRIUM_STAGE = "equilibrium"
 MAP_COLUMNS = ("set", "direction_deg", "du_mm", "du_x_mm", "du_y_mm", "hinges", "mechanism",
