@@ -21,7 +21,7 @@ from yadearch.reporting.kn_curve import kn_curve_markdown
 from yadearch.solve.limit import limit_analysis
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import open_pool
-from yadearch.studies.kn_curve import KN, bisect_jumps, grid_values, jumps_table
+from yadearch.studies.kn_curve import KN, bisect_jumps, grid_values, hinge_moves, jumps_table
 from yadearch.studies.sessions import campaign_wall_s
 
 DEM_SWEEP = Path("reports/kn-sweep")
@@ -59,7 +59,8 @@ def main() -> int:
     kn_curve_figure(static, dem, limits, du_rigid, args.out / "du_vs_kn")
     dem_wall = campaign_wall_s(DEM_SWEEP) if dem is not None else None
     write_text_atomically(args.out / "kn-curve.md",
-                          kn_curve_markdown(static, jumps, dem, limits, du_rigid, static_wall, dem_wall))
+                          kn_curve_markdown(static, jumps, hinge_moves(static), dem, limits, du_rigid, static_wall,
+                                            dem_wall))
     print(f"{len(static)} static runs, {len(jumps)} jumps -> {args.out}")
     return 0
 

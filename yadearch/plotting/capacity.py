@@ -92,3 +92,39 @@ def reaction_curves_figure(curves: dict[str, dict[float, pd.DataFrame]], stem: P
         axes[0].set_ylabel("force of the arch on the moving\nsupport along its path (N)")
         axes[-1].legend(title="direction", ncol=2, loc="upper right")
         return list(save_figure(fig, stem))
+
+
+def stiffness_figure(table: pd.DataFrame, dem: pd.DataFrame, stem: Path) -> list[Path]:
+    """Capacity maps at several stiffnesses (`table`: direction_deg, label, du_mm, du_rigid_mm, one
+    `label` a curve, e.g. "kn 5.2, runaway 1 mm") with the DEM's points (`dem`: direction_deg, label,
+    du_mm) on top. Left: du (radius, mm) against the direction; right: du / du_rigid against it."""
+    with matplotlib.rc_context(SWEEP_STYLE):
+        fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, 3.6), layout="constrained")
+        polar = fig.add_subplot(1, 2, 1, projection="polar")
+        ratio = fig.add_subplot(1, 2, 2)
+        for k, (label, runs) in enumerate(table.groupby("label", sort=False)):
+            runs = runs.sort_values("direction_deg")
+            angle = np.radians(runs["direction_deg"].to_numpy(dtype=float))
+            style = {"color": f"C{k // 2}", "ls": "-" if k % 2 == 0 else "--", "lw": 0.9}
+            polar.plot(angle, runs["du_mm"], label=label, **style)
+            ratio.plot(runs["direction_deg"], runs["du_mm"] / runs["du_rigid_mm"], **style)
+        rigid = table.drop_duplicates("direction_deg").sort_values("direction_deg")
+        polar.plot(np.radians(rigid["direction_deg"].to_numpy(dtype=float)), rigid["du_rigid_mm"], label="rigid blocks",
+                   **RIGID_STYLE)
+        for k, (label, points) in enumerate(dem.groupby("label", sort=False)):
+            polar.plot(np.radians(points["direction_deg"].to_numpy(dtype=float)), points["du_mm"], "o", mfc="none",
+                       mec=f"C{k}", ms=4, mew=0.8, label=label)
+            ratio.plot(points["direction_deg"], points["du_mm"] / points["du_rigid_mm"], "o", mfc="none", mec=f"C{k}",
+                       ms=4, mew=0.8)
+        polar.set_thetamin(-180)
+        polar.set_thetamax(0)
+        polar.set_xticks(np.radians(np.arange(-180, 1, 30)))
+        polar.yaxis.set_major_locator(MaxNLocator(RADIAL_TICKS))
+        polar.set_title("du (mm) against the direction (deg from +x)")
+        polar.legend(loc="upper center", bbox_to_anchor=(0.5, -0.02), ncol=2, frameon=False)
+        ratio.axhline(1.0, color=RIGID_COLOR, lw=0.6, ls="--")
+        ratio.set_xlabel("direction of the support movement (deg from +x)")
+        ratio.set_ylabel("du / du of rigid blocks")
+        ratio.set_xticks(np.arange(-180, 1, 30))
+        ratio.grid(alpha=0.3, lw=0.5)
+        return list(save_figure(fig, stem))

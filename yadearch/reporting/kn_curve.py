@@ -9,7 +9,7 @@ import pandas as pd
 KN = "kn_N_per_mm3"
 
 
-def kn_curve_markdown(static: pd.DataFrame, jumps: pd.DataFrame, dem: pd.DataFrame | None,
+def kn_curve_markdown(static: pd.DataFrame, jumps: pd.DataFrame, moves: pd.DataFrame, dem: pd.DataFrame | None,
                       limits: pd.DataFrame, du_rigid_mm: float, static_wall_s: float, dem_wall_s: float | None) -> str:
     """The report: how the curve was made and what it cost, its jumps, the DEM's points against it,
     the stiff end against the compliant march and the rigid limit."""
@@ -30,6 +30,10 @@ def kn_curve_markdown(static: pd.DataFrame, jumps: pd.DataFrame, dem: pd.DataFra
         below = "—" if math.isnan(j.du_below_mm) else f"{j.du_below_mm:.2f}"
         lines.append(f"| {j.kn_below:.4g} → {j.kn_above:.4g} | {below} → {j.du_above_mm:.2f} | "
                      f"{j.hinges_below or '—'} → {j.hinges_above} | {j.what} |")
+    if not moves.empty:
+        lines += ["", "Hinge moves without a jump of du (located to the grid's spacing, not bisected): "
+                  + "; ".join(f"{m.what} between kn {m.kn_below:.4g} and {m.kn_above:.4g} ({m.du_mm:.2f} mm)"
+                              for m in moves.itertuples()) + "."]
     if dem is not None:
         lines += ["", "## The DEM's sweep points", "", "| kn (N/mm³) | DEM du (mm) | static du (mm) | difference (%) | "
                   "DEM hinges | static hinges |", "|---|---|---|---|---|---|"]

@@ -1,9 +1,9 @@
 """The whole du(kn) curve on the static engine: a log grid of kn, every jump of du located by
 bisection in kn and tied to the hinge that moves there (docs/validation.md, "The whole kn curve").
 
-A jump is a change of du by more than JUMP_FRACTION between neighbouring kn, or a change of the
-hinges A or B; each is bisected (geometric midpoints, all jumps of a round as one campaign) until
-its bracket spans less than BRACKET_RATIO in kn. The lowest kn at which the arch stands under its
+A jump is a change of du by more than JUMP_FRACTION between neighbouring kn; each is bisected
+(geometric midpoints, all jumps of a round as one campaign) until its bracket spans less than
+BRACKET_RATIO in kn. The lowest kn at which the arch stands under its
 own weight is bracketed the same way.
 """
 
@@ -27,6 +27,7 @@ GRID_POINTS = 200
 JUMP_FRACTION = 0.03  # du changing by more than this between neighbouring kn is a jump
 BRACKET_RATIO = 1.01  # a jump is located once its bracket spans less than this ratio of kn
 MAX_ROUNDS = 12  # bisection rounds at most (each halves every bracket's log-width)
+STEEP = "a steep stretch, no hinge A or B moving"
 KN_DIGITS = 6  # significant figures of a bisection's kn (the run folders' names)
 
 
@@ -58,7 +59,7 @@ def _stands(row: pd.Series) -> bool:
 
 def find_jumps(table: pd.DataFrame) -> list[Jump]:
     """The jumps between neighbouring kn of `table` (a campaign's results): du changing by more than
-    JUMP_FRACTION, hinge A or B moving, or the arch starting to stand."""
+    JUMP_FRACTION, or the arch starting to stand."""
     runs = table.sort_values(KN).drop_duplicates(KN).reset_index(drop=True)
     jumps = []
     for k in range(len(runs) - 1):
@@ -69,10 +70,22 @@ def find_jumps(table: pd.DataFrame) -> list[Jump]:
             if below["status"] == "failed":
                 jumps.append(Jump(below, above))
             continue
-        moved = any(_differs(below[h], above[h]) for h in ("hinge_A", "hinge_B"))
-        if moved or abs(above["du_mm"] / below["du_mm"] - 1.0) > JUMP_FRACTION:
+        if abs(above["du_mm"] / below["du_mm"] - 1.0) > JUMP_FRACTION:
             jumps.append(Jump(below, above))
     return jumps
+
+
+def hinge_moves(table: pd.DataFrame) -> pd.DataFrame:
+    """Neighbouring kn between which hinge A or B moves without a jump of du (located to the spacing
+    of `table`'s kn, not bisected)."""
+    runs = table[table["status"] == "done"].sort_values(KN).drop_duplicates(KN).reset_index(drop=True)
+    rows = []
+    for k in range(len(runs) - 1):
+        b, a = runs.iloc[k], runs.iloc[k + 1]
+        moved = [f"{h[-1]} {_at(b[h])} -> {_at(a[h])}" for h in ("hinge_A", "hinge_B") if _differs(b[h], a[h])]
+        if moved and abs(a["du_mm"] / b["du_mm"] - 1.0) <= JUMP_FRACTION:
+            rows.append({"kn_below": b[KN], "kn_above": a[KN], "du_mm": a["du_mm"], "what": ", ".join(moved)})
+    return pd.DataFrame(rows)
 
 
 def bisect_jumps(base: ArchCase, table: pd.DataFrame, out: Path, pool: Pool,
@@ -93,17 +106,23 @@ def bisect_jumps(base: ArchCase, table: pd.DataFrame, out: Path, pool: Pool,
 
 
 def jumps_table(table: pd.DataFrame) -> pd.DataFrame:
-    """One row a located jump: its kn bracket, du and hinges on both sides, the hinge that moved."""
-    rows = []
+    """One row a located jump: its kn bracket, du and hinges on both sides, the hinge that moved; a
+    run of adjacent brackets whose du changes without any hinge A or B moving is one row, a steep
+    stretch of the curve rather than a jump."""
+    rows: list[dict] = []
     for jump in find_jumps(table):
         b, a = jump.below, jump.above
         standing = not _stands(b)
         moved = [f"{h[-1]} {_at(b[h])} -> {_at(a[h])}" for h in ("hinge_A", "hinge_B") if _differs(b[h], a[h])]
+        what = "the arch starts to stand under its own weight" if standing else ", ".join(moved) or STEEP
+        last = rows[-1] if rows else None
+        if what == STEEP and last is not None and last["what"] == STEEP and last["kn_above"] == b[KN]:
+            last.update(kn_above=a[KN], bracket_ratio=a[KN] / last["kn_below"], du_above_mm=a["du_mm"],
+                        hinges_above=a["hinges"])
+            continue
         rows.append({"kn_below": b[KN], "kn_above": a[KN], "bracket_ratio": jump.ratio,
                      "du_below_mm": math.nan if standing else b["du_mm"], "du_above_mm": a["du_mm"],
-                     "hinges_below": "" if standing else b["hinges"], "hinges_above": a["hinges"],
-                     "what": "the arch starts to stand under its own weight" if standing
-                     else ", ".join(moved) or "du alone (same hinges A and B)"})
+                     "hinges_below": "" if standing else b["hinges"], "hinges_above": a["hinges"], "what": what})
     return pd.DataFrame(rows)
 
 

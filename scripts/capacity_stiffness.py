@@ -1,0 +1,82 @@
+"""The capacity map of the paper's arch at every stiffness, on the static engine: du against the
+direction of the right support's movement every 5 degrees at kn 0.25, 5.2 and 100 N/mm^3, each with
+the DEM's collapse criterion (a snap moving a block 1 mm is collapse) and with snaps to 5 mm
+survived, beside the rigid-block limit and the DEM's map: reports/movements/capacity/stiffness/.
+
+    .venv/bin/python scripts/capacity_stiffness.py [--out reports/movements/capacity/stiffness] [--jobs 2]
+
+The rigid limits are kept in OUT/rigid.csv and reused (they take minutes; kn plays no part in them).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+import pandas as pd
+
+from yadearch.atomic import write_text_atomically
+from yadearch.case import reference
+from yadearch.case.config import preset
+from yadearch.plotting.capacity import stiffness_figure
+from yadearch.studies.capacity import RigidLimit, directions
+from yadearch.studies.capacity_explained import stiffness_markdown
+from yadearch.studies.capacity_map import rigid_limits, run_capacity
+from yadearch.studies.executors import open_pool
+
+STEP_DEG = 5.0
+KNS = (0.25, 5.2, 100.0)
+RUNAWAYS_MM = (1.0, 5.0)  # the DEM's collapse criterion, and snaps to 5 mm survived
+DEM_MAP = Path("reports/movements/capacity/capacity.csv")
+FIGURE = "capacity_stiffness"
+
+
+def cached_rigid(path: Path) -> dict[float, RigidLimit]:
+    """The rigid limit of every direction, from `path` if it holds them all, else computed and kept."""
+    values = directions(STEP_DEG)
+    if path.is_file():
+        table = pd.read_csv(path).fillna({"hinges": "", "other_hinges": ""})
+        if set(values) <= set(table["direction_deg"]):
+            return {r.direction_deg: RigidLimit(None if pd.isna(r.du_mm) else r.du_mm, r.hinges,
+                                                None if pd.isna(r.other_du_mm) else r.other_du_mm, r.other_hinges)
+                    for r in table.itertuples()}
+    limits = rigid_limits(preset("set2"), values)
+    write_text_atomically(path, pd.DataFrame([{"direction_deg": d, "du_mm": r.du_mm, "hinges": r.hinges,
+                                               "other_du_mm": r.other_du_mm, "other_hinges": r.other_hinges}
+                                              for d, r in limits.items()]).to_csv(index=False))
+    return limits
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--out", type=Path, default=Path("reports/movements/capacity/stiffness"))
+    parser.add_argument("--runs", type=Path, default=Path("runs/capacity-stiffness"))
+    parser.add_argument("--jobs", type=int, default=2)
+    args = parser.parse_args()
+    args.out.mkdir(parents=True, exist_ok=True)
+    rigid = cached_rigid(args.out / "rigid.csv")
+    tables = []
+    start = time.time()
+    with open_pool(args.jobs) as pool:
+        for kn in KNS:
+            for runaway in RUNAWAYS_MM:
+                case = preset("set2").with_overrides({"kn_N_per_mm3": kn, "runaway_mm": runaway,
+                                                      "numerics.engine": "static"})
+                case.name = f"kn {kn:g}, runaway {runaway:g} mm"
+                table = run_capacity(case, args.runs / f"kn{kn:g}_runaway{runaway:g}", pool, STEP_DEG, rigid=rigid)
+                tables.append(table.assign(kn_N_per_mm3=kn, runaway_mm=runaway, label=case.name))
+    static_wall = time.time() - start
+    static = pd.concat(tables, ignore_index=True)
+    dem = pd.read_csv(DEM_MAP)
+    dem = dem.assign(label=[f"DEM, kn {reference.SETS[s]['kn_N_per_mm3']:g}" for s in dem["set"]])
+    write_text_atomically(args.out / "capacity_stiffness.csv", static.to_csv(index=False, float_format="%.6g"))
+    stiffness_figure(static, dem, args.out / FIGURE)
+    write_text_atomically(args.out / "capacity_stiffness.md", stiffness_markdown(static, dem, static_wall, FIGURE))
+    print(f"{len(static)} static runs in {static_wall:.0f} s -> {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
