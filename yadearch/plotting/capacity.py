@@ -61,6 +61,7 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") 
         return list(save_figure(fig, stem))
 
 
+RATIO_CEILING = 1.5  # du / du_rigid above this (a rigid march locked early) is cut off the panel
 SET_OFFSET_DEG = 3.0  # the sets' hinge marks side by side at one direction
 SIDE_MARKERS = {"I": "o", "E": "s"}
 
@@ -123,8 +124,9 @@ def stiffness_figure(table: pd.DataFrame, dem: pd.DataFrame, stem: Path) -> list
         polar.set_title("du (mm) against the direction (deg from +x)")
         polar.legend(loc="upper center", bbox_to_anchor=(0.5, -0.02), ncol=2, frameon=False)
         ratio.axhline(1.0, color=RIGID_COLOR, lw=0.6, ls="--")
+        ratio.set_ylim(0.0, RATIO_CEILING)  # where the rigid march locks early the ratio leaves the frame
         ratio.set_xlabel("direction of the support movement (deg from +x)")
-        ratio.set_ylabel("du / du of rigid blocks")
+        ratio.set_ylabel(f"du / du of rigid blocks (clipped at {RATIO_CEILING:g})")
         ratio.set_xticks(np.arange(-180, 1, 30))
         ratio.grid(alpha=0.3, lw=0.5)
         return list(save_figure(fig, stem))

@@ -28,6 +28,7 @@ JUMP_FRACTION = 0.03  # du changing by more than this between neighbouring kn is
 BRACKET_RATIO = 1.01  # a jump is located once its bracket spans less than this ratio of kn
 MAX_ROUNDS = 12  # bisection rounds at most (each halves every bracket's log-width)
 STEEP = "a steep stretch, no hinge A or B moving"
+DROP = "du drops, no hinge A or B moving (a snap counted as collapse?)"
 KN_DIGITS = 6  # significant figures of a bisection's kn (the run folders' names)
 
 
@@ -114,7 +115,8 @@ def jumps_table(table: pd.DataFrame) -> pd.DataFrame:
         b, a = jump.below, jump.above
         standing = not _stands(b)
         moved = [f"{h[-1]} {_at(b[h])} -> {_at(a[h])}" for h in ("hinge_A", "hinge_B") if _differs(b[h], a[h])]
-        what = "the arch starts to stand under its own weight" if standing else ", ".join(moved) or STEEP
+        what = "the arch starts to stand under its own weight" if standing else ", ".join(moved) or \
+            (STEEP if a["du_mm"] > b["du_mm"] else DROP)
         last = rows[-1] if rows else None
         if what == STEEP and last is not None and last["what"] == STEEP and last["kn_above"] == b[KN]:
             last.update(kn_above=a[KN], bracket_ratio=a[KN] / last["kn_below"], du_above_mm=a["du_mm"],
