@@ -180,26 +180,11 @@ def _tangent_kernel(left, right, left_intrados, right_intrados, normal0, along0,
 
 
 @njit(cache=True)
-def assemble(local, left, right, n_blocks, length):
-    """The blocks' tangent K = -dF/du (3 n_blocks square, N/m) from the joints' local tangents, each
-    block's degrees of freedom x, y and its rotation times `length` (so that every entry is N/m)."""
-    size = BLOCK_DOFS * n_blocks
-    stiffness = np.zeros((size, size))
-    scales = np.array([1.0, 1.0, 1.0 / length])
-    for j in range(local.shape[0]):
-        blocks = (left[j], right[j])
-        for a in range(6):
-            row = BLOCK_DOFS * blocks[a // 3] + a % 3
-            for b in range(6):
-                col = BLOCK_DOFS * blocks[b // 3] + b % 3
-                stiffness[row, col] -= local[j, a, b] * scales[a % 3] * scales[b % 3]
-    return stiffness
-
-
-@njit(cache=True)
 def assemble_band(local, left, right, n_blocks, length, band):
-    """The same K in LAPACK's general band storage, (2 band + 1, 3 n_blocks): K[i, j] at
-    [band + i - j, j]; joints between neighbouring blocks keep it within `band` = 5 diagonals."""
+    """The blocks' tangent K = -dF/du (N/m) from the joints' local tangents, each block's degrees of
+    freedom x, y and its rotation times `length` (so that every entry is N/m), in LAPACK's general
+    band storage, (2 band + 1, 3 n_blocks): K[i, j] at [band + i - j, j]; joints between
+    neighbouring blocks keep it within `band` = 5 diagonals."""
     size = BLOCK_DOFS * n_blocks
     stiffness = np.zeros((2 * band + 1, size))
     scales = np.array([1.0, 1.0, 1.0 / length])

@@ -48,12 +48,7 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") 
         if not other.empty:
             polar.plot(np.radians(other["direction_deg"].to_numpy(dtype=float)), other["du_rigid_other_mm"],
                        label="rigid, other branch", **OTHER_BRANCH_STYLE)
-        polar.set_thetamin(-180)
-        polar.set_thetamax(0)
-        polar.set_xticks(np.radians(np.arange(-180, 1, 30)))
-        polar.yaxis.set_major_locator(MaxNLocator(RADIAL_TICKS))
-        polar.set_title("du (mm) against the direction (deg from +x)")
-        polar.legend(loc="upper center", bbox_to_anchor=(0.5, -0.02), ncol=3, frameon=False)
+        _half_plane(polar, legend_columns=3)
         hinges.set_xlabel("direction of the support movement (deg from +x)")
         hinges.set_ylabel("hinge interface (o intrados, s extrados)")
         hinges.set_xticks(np.arange(-180, 1, 30))
@@ -62,6 +57,16 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") 
 
 
 RATIO_CEILING = 1.5  # du / du_rigid above this (a rigid march locked early) is cut off the panel
+def _half_plane(polar, legend_columns: int) -> None:
+    """A polar axis over the directions below the horizontal, du rings, title and legend under it."""
+    polar.set_thetamin(-180)
+    polar.set_thetamax(0)
+    polar.set_xticks(np.radians(np.arange(-180, 1, 30)))
+    polar.yaxis.set_major_locator(MaxNLocator(RADIAL_TICKS))
+    polar.set_title("du (mm) against the direction (deg from +x)")
+    polar.legend(loc="upper center", bbox_to_anchor=(0.5, -0.02), ncol=legend_columns, frameon=False)
+
+
 SET_OFFSET_DEG = 3.0  # the sets' hinge marks side by side at one direction
 SIDE_MARKERS = {"I": "o", "E": "s"}
 
@@ -117,12 +122,7 @@ def stiffness_figure(table: pd.DataFrame, dem: pd.DataFrame, stem: Path) -> list
                        mec=f"C{k}", ms=4, mew=0.8, label=label)
             ratio.plot(points["direction_deg"], points["du_mm"] / points["du_rigid_mm"], "o", mfc="none", mec=f"C{k}",
                        ms=4, mew=0.8)
-        polar.set_thetamin(-180)
-        polar.set_thetamax(0)
-        polar.set_xticks(np.radians(np.arange(-180, 1, 30)))
-        polar.yaxis.set_major_locator(MaxNLocator(RADIAL_TICKS))
-        polar.set_title("du (mm) against the direction (deg from +x)")
-        polar.legend(loc="upper center", bbox_to_anchor=(0.5, -0.02), ncol=2, frameon=False)
+        _half_plane(polar, legend_columns=2)
         ratio.axhline(1.0, color=RIGID_COLOR, lw=0.6, ls="--")
         ratio.set_ylim(0.0, RATIO_CEILING)  # where the rigid march locks early the ratio leaves the frame
         ratio.set_xlabel("direction of the support movement (deg from +x)")

@@ -21,6 +21,16 @@ def from_dense(a: np.ndarray) -> np.ndarray:
     return ab
 
 
+def to_dense(ab: np.ndarray) -> np.ndarray:
+    """The square matrix of a general band storage."""
+    n = ab.shape[1]
+    a = np.zeros((n, n))
+    for k in range(-min(BAND, n - 1), min(BAND, n - 1) + 1):
+        rows = np.arange(max(0, -k), n - max(0, k))
+        a[rows, rows + k] = ab[BAND - k, rows + k]
+    return a
+
+
 def symmetric_upper(ab: np.ndarray) -> np.ndarray:
     """The symmetric part of a band matrix in upper band storage (LAPACK's, for Cholesky and eigen)."""
     n = ab.shape[1]

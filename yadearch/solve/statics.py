@@ -19,8 +19,9 @@ from yadearch.case.movement import case_movement
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, block_volume
 from yadearch.model.joint_law import JointLaw, JointTable, joint_table
-from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, assemble, assemble_band, joint_tangent
+from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, assemble_band, joint_tangent
 from yadearch.model.movement import Movement
+from yadearch.solve import banded
 from yadearch.solve.rigid import polygon_centroid, rotate
 
 WARM_UP_VOUSSOIRS = 3  # the smallest arch that compiles every kernel
@@ -101,8 +102,8 @@ class StaticArch:
         return np.column_stack([f.block_force, f.block_torque / self.length]).ravel()
 
     def stiffness(self, joints: JointTangent) -> np.ndarray:
-        """K = -dF/du on every degree of freedom (N/m), dense."""
-        return assemble(joints.local, self.table.left, self.table.right, self.n_blocks, self.length)
+        """K = -dF/du on every degree of freedom (N/m), dense (for tests and the first predictor)."""
+        return banded.to_dense(self.band_stiffness(joints, banded.BAND))
 
     def band_stiffness(self, joints: JointTangent, band: int) -> np.ndarray:
         """The same K in LAPACK's general band storage with `band` diagonals either side."""
@@ -135,5 +136,4 @@ def compile_kernels() -> None:
     arch = static_arch(preset("set2").with_overrides({"geometry.n_voussoirs": WARM_UP_VOUSSOIRS}))
     u = arch.at_rest()
     joints = arch.evaluate(u, u, np.zeros(len(arch.table.left)))
-    arch.stiffness(joints)
     arch.band_stiffness(joints, WARM_UP_BAND)
