@@ -16,10 +16,10 @@ COARSE = {"n_voussoirs": 9, "progress_every_s": 1e9}
 AGREEMENT = 0.01  # the issue's target where the DEM is converged
 
 
-@pytest.mark.parametrize("kn", [1.0, 5.2, 10.0])
+@pytest.mark.parametrize("kn", [0.5, 1.0, 5.2])
 def test_static_engine_meets_the_dem_on_a_coarse_arch(kn, tmp_path):
-    """Measured, DEM / static: 115.18 / 115.10 mm at kn 1 (DEM 32 s), 122.21 / 122.29 at kn 5.2 (50 s),
-    125.57 / 125.49 at kn 20 (155 s), all on 1E 2I 6E 10E."""
+    """Measured, DEM / static: 110.34 / 110.26 mm at kn 0.5 (DEM 18 s), 115.18 / 115.10 at kn 1 (32 s),
+    122.21 / 122.29 at kn 5.2 (50 s); 125.57 / 125.49 at kn 20 (155 s, not run here), all on 1E 2I 6E 10E."""
     from yadearch.engine.runner import Runner
 
     case = preset("set2").with_overrides({**COARSE, "kn_N_per_mm3": kn})
