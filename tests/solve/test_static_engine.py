@@ -22,10 +22,10 @@ from yadearch.model.joint_tangent import joint_tangent
 from yadearch.model.movement import Movement
 from yadearch.solve.limit import limit_analysis
 from yadearch.solve.newton import Solver, SolverSettings, largest_move
-from yadearch.solve.path import RUNAWAY, STABLE
+from yadearch.solve.path import RUNAWAY, STABLE, path_settings
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.statics import StaticArch, static_arch
-from yadearch.statics.simulate import path_settings, simulate_static
+from yadearch.statics.simulate import simulate_static
 
 IMPERFECT = {"imperfections.face_bump_mm": 0.05, "imperfections.face_bump_sd_mm": 0.02,
              "imperfections.edge_radius_mm": 0.5, "imperfections.seed": 3}
@@ -39,7 +39,7 @@ def _quiet(_line: str) -> None:
 
 def _loading(case) -> StaticLoading:
     arch = static_arch(case)
-    return StaticLoading(arch, path_settings(case, case.loading.max_settlement_mm),
+    return StaticLoading(arch, path_settings(case.numerics, case.loading.max_settlement_mm),
                          units.mm(case.numerics.runaway_mm), log=_quiet)
 
 

@@ -9,7 +9,7 @@ from yadearch.case.config import NumericsConfig
 from yadearch.case.movement import path_end_mm
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
-from yadearch.solve.path import RUNAWAY, STABLE, PathResult, PathSettings, PathStep, follow_path
+from yadearch.solve.path import RUNAWAY, STABLE, PathResult, PathStep, follow_path, path_settings
 
 if TYPE_CHECKING:
     from yadearch.engine.runner import Runner
@@ -33,12 +33,7 @@ class EquilibriumPath:
         self.relaxations: dict = {"runaway_mm": runner.num.runaway_mm, "delta_mm": [], "increment_mm": [],
                                   "move_mm": []}
         self._start = 0.0  # where the last increment started (m)
-        num, mm = runner.num, units.mm
-        self.settings = PathSettings(
-            first_increment=mm(num.first_increment_mm),
-            max_increment=mm(max(num.max_increment_mm, num.first_increment_mm)),
-            growth=num.increment_growth, tolerance=mm(num.du_tolerance_mm),
-            max_displacement=mm(path_end_mm(runner.case, runner.movement)))
+        self.settings = path_settings(runner.num, path_end_mm(runner.case, runner.movement))
 
     def try_increment(self, target: float) -> str:
         """From the last accepted equilibrium state, move the support to `target` and relax there

@@ -1,10 +1,11 @@
 """Equilibrium of the blocks at a fixed support position (pure numpy/scipy): Newton's method with the
 consistent tangent and a backtracking line search, and a descent for where Newton cannot go.
 
-The descent is a pseudo-transient continuation: (K + mu I) d = R with mu following the residual
-(switched evolution relaxation), the implicit analogue of the DEM's hold at a fixed support. From
-a state past a fold it creeps toward the nearest stable equilibrium or away from it, and its verdict
-is the hold's: stable, runaway (a block moved `runaway` from where it started) or timeout.
+The descent takes damped Newton steps (K + mu I) d = R and keeps a step only where it releases
+energy (mu falls after such a step, rises otherwise), the implicit analogue of the DEM's hold at a
+fixed support. From a state past a fold it creeps toward the nearest stable equilibrium or away from
+it, and its verdict is the hold's: stable, runaway (a block moved `runaway` from where it started) or
+timeout.
 """
 
 from __future__ import annotations

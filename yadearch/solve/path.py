@@ -16,6 +16,9 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Protocol
 
+from yadearch.case.config import NumericsConfig
+from yadearch.model import units
+
 STABLE = "stable"
 RUNAWAY = "runaway"
 TIMEOUT = "timeout"
@@ -96,6 +99,16 @@ class PathResult:
             return None
         failed = (s.verdict for s in reversed(self.steps) if s.target == self.upper and s.verdict != STABLE)
         return next(failed, RUNAWAY)
+
+
+def path_settings(numerics: NumericsConfig, max_displacement_mm: float) -> PathSettings:
+    """The increments of a case's numerics (mm) as PathSettings in metres, the path ending at
+    `max_displacement_mm`: one reading for the DEM and the static engine."""
+    mm = units.mm
+    return PathSettings(first_increment=mm(numerics.first_increment_mm),
+                        max_increment=mm(max(numerics.max_increment_mm, numerics.first_increment_mm)),
+                        growth=numerics.increment_growth, tolerance=mm(numerics.du_tolerance_mm),
+                        max_displacement=mm(max_displacement_mm))
 
 
 def follow_path(oracle: EquilibriumOracle, settings: PathSettings,

@@ -18,7 +18,7 @@ import numpy as np
 from yadearch.model.joint_law import JointForces
 from yadearch.solve import banded
 from yadearch.solve.banded import smallest_eigenvalue
-from yadearch.solve.newton import Equilibrium, Solver, SolverSettings, largest_move
+from yadearch.solve.newton import Equilibrium, Solver, SolverSettings
 from yadearch.solve.path import STABLE, PathResult, PathSettings, PathStep, follow_path
 from yadearch.solve.statics import StaticArch
 
@@ -57,7 +57,6 @@ class StaticLoading:
     settings: PathSettings
     runaway: float
     solver_settings: SolverSettings = field(default_factory=SolverSettings)
-    log: Callable[[str], None] = print
 
     def __post_init__(self) -> None:
         self.solver = Solver(self.arch, self.solver_settings)
@@ -66,7 +65,6 @@ class StaticLoading:
         self.snaps: list[dict] = []  # increments the descent carried to a state SNAP_FRACTION x runaway away
         self.descents = 0  # increments Newton did not solve
         self._trial: StaticState | None = None
-        self._before: StaticState | None = None
 
     # ---- self-weight ------------------------------------------------------------------------
     def selfweight(self) -> StaticState:
@@ -203,7 +201,3 @@ class StaticLoading:
         base = self.accepted[-1]
         joints, _ = self.solver.state(state.u, base.u, base.forces.shear_force)
         return self.solver.free_stiffness(joints)
-
-    def moved(self, state: StaticState) -> float:
-        """The largest block translation of a state from the self-weight state (m)."""
-        return largest_move(state.u, self.accepted[0].u)

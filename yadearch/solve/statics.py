@@ -25,7 +25,6 @@ from yadearch.solve import banded
 from yadearch.solve.rigid import polygon_centroid, rotate
 
 WARM_UP_VOUSSOIRS = 3  # the smallest arch that compiles every kernel
-WARM_UP_BAND = 5
 
 
 @dataclass(frozen=True)
@@ -136,4 +135,4 @@ def compile_kernels() -> None:
     arch = static_arch(preset("set2").with_overrides({"geometry.n_voussoirs": WARM_UP_VOUSSOIRS}))
     u = arch.at_rest()
     joints = arch.evaluate(u, u, np.zeros(len(arch.table.left)))
-    arch.band_stiffness(joints, WARM_UP_BAND)
+    arch.band_stiffness(joints, banded.BAND)

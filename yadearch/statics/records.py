@@ -10,6 +10,7 @@ import numpy as np
 
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
+from yadearch.model.joint_law import unbalanced_force
 from yadearch.results.joint_rows import friction_extremes, joint_rows, joint_snapshot, snapshot_entry
 from yadearch.results.rundir import STIFFNESS_COLUMN
 from yadearch.solve.static_path import StaticState
@@ -58,12 +59,10 @@ class StaticRecords:
         force = state.forces.block_force
         crown = self.arch.geometry.crown_voussoir
         crown_disp = pos[crown] - self.arch.centroid0[crown]
-        weights = -self.arch.weight[1:-1]
-        resultant = force[1:-1].copy()
-        resultant[:, 1] += weights
-        contact = np.hypot(state.forces.normal_force, state.forces.shear_force)[state.forces.in_contact]
-        unbalanced = float(np.mean(np.hypot(resultant[:, 0], resultant[:, 1])) / np.mean(contact)) \
-            if contact.size else float("inf")
+        free = np.zeros(self.arch.n_blocks, bool)
+        free[1:-1] = True
+        weights = np.column_stack([np.zeros(free.sum()), -self.arch.weight[free]])
+        unbalanced = unbalanced_force(state.forces, free, weights)
         return {"left_Rx_N": -force[0, 0], "left_Ry_N": -force[0, 1], "right_Rx_N": -force[-1, 0],
                 "right_Ry_N": -force[-1, 1], "crown_dx_mm": units.to_mm(crown_disp[0]),
                 "crown_dy_mm": units.to_mm(crown_disp[1]), "kinetic_J": 0.0, "unbalanced": unbalanced,

@@ -15,22 +15,13 @@ from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.results.provenance import provenance
 from yadearch.results.rundir import LOG_FILE, final_folder, hinge_list, write_run
-from yadearch.solve.path import PathSettings, PathStep
+from yadearch.solve.path import PathStep, path_settings
 from yadearch.solve.static_path import StaticEngineError, StaticLoading
 from yadearch.solve.statics import static_arch
 from yadearch.statics.records import DEM_ONLY_NUMERICS, StaticRecords
 
 ENGINE = "static"
 INTERRUPTED_EXIT = 130
-
-
-def path_settings(case: ArchCase, max_displacement_mm: float) -> PathSettings:
-    """The increments of the DEM's path logic from the case's numerics (m)."""
-    num, mm = case.numerics, units.mm
-    return PathSettings(first_increment=mm(num.first_increment_mm),
-                        max_increment=mm(max(num.max_increment_mm, num.first_increment_mm)),
-                        growth=num.increment_growth, tolerance=mm(num.du_tolerance_mm),
-                        max_displacement=mm(max_displacement_mm))
 
 
 def criterion_text(case: ArchCase) -> str:
@@ -54,7 +45,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
     num = case.numerics
     arch = static_arch(case)
     end_mm = path_end_mm(case, arch.movement)
-    loading = StaticLoading(arch, path_settings(case, end_mm), units.mm(num.runaway_mm), log=log)
+    loading = StaticLoading(arch, path_settings(num, end_mm), units.mm(num.runaway_mm))
     records = StaticRecords(arch, num.hinge_rotation_mrad * 1e-3)
     unused = {key: getattr(num, key) for key in DEM_ONLY_NUMERICS}
     log(f"[{case.name}] static engine: kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
