@@ -40,7 +40,7 @@ def _quiet(_line: str) -> None:
 def _loading(case) -> StaticLoading:
     arch = static_arch(case)
     return StaticLoading(arch, path_settings(case.numerics, case.loading.max_settlement_mm),
-                         units.mm(case.numerics.runaway_mm), log=_quiet)
+                         units.mm(case.numerics.runaway_mm))
 
 
 @pytest.fixture(scope="module", params=["perfect", "imperfect"])
