@@ -1,11 +1,11 @@
 """yadearch: masonry arches on moving supports, simulated with YADE's polyhedral discrete elements.
 
 The public API (`yadearch.api`): `preset`, `movement`, `run`, `open_run`, `sweep`, `montecarlo`, `calibrate`,
-`capacity`, `limit`, imported on first use so that `import yadearch` stays light (no pandas, no YADE)."""
+`capacity`, `sensitivity`, `limit`, imported on first use so that `import yadearch` stays light (no pandas, no YADE)."""
 
 __version__ = "0.1.0"
 
-_API = ("preset", "movement", "run", "open_run", "sweep", "montecarlo", "calibrate", "capacity", "limit",
+_API = ("preset", "movement", "run", "open_run", "sweep", "montecarlo", "calibrate", "capacity", "sensitivity", "limit",
         "RunResult", "HingeAtCollapse")
 __all__ = ["__version__", *_API]
 

@@ -252,6 +252,25 @@ def capacity(case: ArchCase | str, out: str | Path, step_deg: float = 15.0, engi
         return run_capacity(case, Path(out), pool, step_deg, rigid=rigid, timeout_s=timeout_s)
 
 
+def sensitivity(case: ArchCase | str, out: str | Path, base_points: int = 256, factors: tuple | None = None,
+                engine: str | None = None, jobs: int | None = None, scheduler: str | None = None,
+                timeout_s: float | None = None):
+    """What du of `case` is sensitive to: each factor alone at the ends of its range (a tornado) and
+    Sobol indices from Saltelli's sample of `base_points` (a power of two), both resumable campaigns in
+    `out`; `factors` (`yadearch.studies.sensitivity.Factor`s) default to the paper arch's plausible
+    ranges. Writes the tables, figures and sensitivity.md; returns the `SensitivityResult`."""
+    from yadearch.studies.executors import open_pool
+    from yadearch.studies.sensitivity import PAPER_FACTORS, check_base_points, check_factors
+    from yadearch.studies.sensitivity_campaign import run_sensitivity
+
+    case = with_engine(case, engine)
+    chosen = tuple(factors) if factors else PAPER_FACTORS
+    check_base_points(base_points)  # refused before a pool starts
+    check_factors(case, chosen)
+    with open_pool(jobs, scheduler) as pool:
+        return run_sensitivity(case, Path(out), pool, base_points, chosen, timeout_s=timeout_s)
+
+
 def limit(case: ArchCase | str, compliant: bool = False):
     """Rigid-block limit analysis of `case` (no YADE, seconds): du_rigid and the hinge history;
     `compliant`: with the joints folding at the margin the case's kn allows (what a DEM run of that

@@ -34,6 +34,15 @@ def write_text_atomically(path: Path, text: str) -> Path:
     return write_atomically(path, lambda temporary: temporary.write_text(text))
 
 
+CSV_FLOAT_FORMAT = "%.6g"  # six significant figures: tables stay readable and diff cleanly
+
+
+def write_csv_atomically(path: Path, table) -> Path:
+    """`write_atomically` for a pandas table as CSV (no index, floats to six significant figures)."""
+    return write_atomically(path, lambda temporary: table.to_csv(temporary, index=False,
+                                                                  float_format=CSV_FLOAT_FORMAT))
+
+
 TEMPORARY_PATTERN = ".*.tmp"  # the names write_atomically gives its temporary files
 
 

@@ -14,6 +14,7 @@ from yadearch.analysis.mechanism import run_warnings
 from yadearch.case.config import parameter_docs, preset
 from yadearch.cli.campaigns import calibrate, robustness, sweep
 from yadearch.cli.capacity import capacity
+from yadearch.cli.sensitivity import sensitivity
 from yadearch.cli.montecarlo import montecarlo
 from yadearch.cli.options import case_options, resolve_case
 from yadearch.engine.process import run_case_process
@@ -148,6 +149,7 @@ cli.add_command(calibrate)
 cli.add_command(robustness)
 cli.add_command(montecarlo)
 cli.add_command(capacity)
+cli.add_command(sensitivity)
 
 
 @cli.command("report")

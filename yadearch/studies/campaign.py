@@ -20,7 +20,7 @@ from typing import Any
 import pandas as pd
 from tqdm import tqdm
 
-from yadearch.atomic import remove_stale_temporaries, write_atomically, write_text_atomically
+from yadearch.atomic import remove_stale_temporaries, write_atomically, write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase, preset
 from yadearch.case.plan import plan_run
 from yadearch.engine.process import STATIC_ENGINE, check_yade_installed, run_case_process
@@ -205,7 +205,7 @@ def write_run_table(specs: list[RunSpec], out: Path) -> None:
 def write_results(specs: list[RunSpec], out: Path) -> pd.DataFrame:
     """results.csv from the run folders as they are now, written atomically; returns the table."""
     table = results_table(specs, out)
-    write_atomically(out / RESULTS_FILE, lambda tmp: table.to_csv(tmp, index=False, float_format="%.6g"))
+    write_csv_atomically(out / RESULTS_FILE, table)
     return table
 
 

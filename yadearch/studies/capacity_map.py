@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from yadearch.atomic import write_text_atomically
+from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.errors import YadearchError
 from yadearch.plotting.capacity import capacity_polar_figure
@@ -49,7 +49,7 @@ def run_capacity(case: ArchCase, out: Path, pool: Pool, step_deg: float = 15.0,
                            timeout_s=timeout_s)
     limits = rigid if isinstance(rigid, dict) else rigid_limits(case, values) if rigid else {}
     table = map_table(case.name, results, limits)
-    write_text_atomically(Path(out) / TABLE, table.to_csv(index=False, float_format="%.6g"))
+    write_csv_atomically(Path(out) / TABLE, table)
     capacity_polar_figure(table, Path(out) / FIGURE, engine=ENGINE_LABELS[case.numerics.engine])
     write_text_atomically(Path(out) / REPORT, capacity_markdown(case, table, step_deg, FIGURE))
     return table

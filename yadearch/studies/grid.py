@@ -68,6 +68,11 @@ def check_parameter(key: str) -> None:
         raise CaseError(f"unknown parameter {key!r}; see `yadearch params` for the list")
 
 
+def qualified_name(key: str) -> str:
+    """`section.key` of a case parameter given bare or qualified."""
+    return _BARE_NAMES.get(key, key)
+
+
 def grid(params: dict[str, list[Any]]) -> list[dict[str, Any]]:
     """Every combination of the values of `params` (last parameter varies fastest)."""
     for key in params:

@@ -15,7 +15,7 @@ import numpy as np
 import pandas as pd
 from scipy.stats import binom
 
-from yadearch.atomic import write_atomically, write_text_atomically
+from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.errors import RunFolderError
 from yadearch.model.hinges import PAPER_LABELS
@@ -60,7 +60,7 @@ def write_montecarlo(results: pd.DataFrame, out: Path, axes: dict[str, list[Any]
     """montecarlo.csv and montecarlo.md of a campaign from its results table (finished or not: a
     stopped campaign's results.csv lists its unfinished samples as pending); returns the table."""
     table = with_imperfections(results, out)
-    write_atomically(out / MONTECARLO_FILE, lambda tmp: table.to_csv(tmp, index=False, float_format="%.6g"))
+    write_csv_atomically(out / MONTECARLO_FILE, table)
     write_text_atomically(out / SUMMARY_FILE, summary_markdown(table, levels(table, axes)))
     return table
 

@@ -15,7 +15,7 @@ from typing import Any
 
 import pandas as pd
 
-from yadearch.atomic import write_atomically, write_text_atomically
+from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.studies.campaign import RESULTS_FILE, run_campaign
 from yadearch.studies.executors import Pool
@@ -60,7 +60,7 @@ def run_study(base: ArchCase, out: Path, pool: Pool, kn_values: tuple[float, ...
     rows = study_rows(base, kn_values, variants)
     results = run_campaign(base, rows, out, pool, timeout_s=timeout_s, progress=progress)
     table = robustness_table(results)
-    write_atomically(out / ROBUSTNESS_FILE, lambda tmp: table.to_csv(tmp, index=False, float_format="%.6g"))
+    write_csv_atomically(out / ROBUSTNESS_FILE, table)
     write_text_atomically(out / SUMMARY_FILE, summary_markdown(table))
     return table
 

@@ -1,0 +1,96 @@
+"""The sensitivity study: its sampling and estimators on a function whose indices are known, and
+`ya.sensitivity` on the static engine (a 9-voussoir arch, seconds) with the mechanics it must show."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import yadearch as ya
+from yadearch.errors import CaseError, YadearchError
+from yadearch.studies.grid import RUN_COLUMN
+from yadearch.studies.sensitivity import (
+    PAPER_FACTORS,
+    Factor,
+    check_base_points,
+    check_factors,
+    parse_factor,
+    sobol_indices,
+    sobol_rows,
+)
+
+ISHIGAMI = (Factor("geometry.thickness_mm", "x1", -math.pi, math.pi),
+            Factor("geometry.embrace_deg", "x2", -math.pi, math.pi),
+            Factor("material.friction_deg", "x3", -math.pi, math.pi))
+ISHIGAMI_S1 = (0.3139, 0.4424, 0.0)  # a = 7, b = 0.1 (Saltelli et al. 2008, Global Sensitivity Analysis)
+ISHIGAMI_ST = (0.5576, 0.4424, 0.2437)
+
+
+def _ishigami(row: dict) -> float:
+    x1, x2, x3 = (row[f.key] for f in ISHIGAMI)
+    return math.sin(x1) + 7.0 * math.sin(x2) ** 2 + 0.1 * x3 ** 4 * math.sin(x1)
+
+
+def test_factor_values_span_their_ranges_linearly_logarithmically_and_over_integers():
+    kn = Factor("interface.kn_N_per_mm3", "kn", 0.25, 100.0, log=True)
+    assert (kn.value(0.0), kn.value(1.0), kn.value(0.5)) == pytest.approx((0.25, 100.0, 5.0))
+    count = Factor("geometry.n_voussoirs", "n", 45, 65, integer=True)
+    assert [count.value(u) for u in (0.0, 0.999, 1.0)] == [45, 65, 65]
+    assert {count.value(u) for u in np.linspace(0, 1, 2000)} == set(range(45, 66))  # every count, each end included
+
+
+def test_a_doubled_sample_starts_with_the_smaller_one_so_a_campaign_resumes():
+    small, large = sobol_rows(PAPER_FACTORS, 8), sobol_rows(PAPER_FACTORS, 16)
+    assert len(small) == 8 * (len(PAPER_FACTORS) + 2) and len(large) == 2 * len(small)
+    assert large[:len(small)] == small
+    assert len({row[RUN_COLUMN] for row in large}) == len(large)
+
+
+def test_sobol_indices_of_the_ishigami_function_match_its_analytic_values():
+    rows = sobol_rows(ISHIGAMI, 1024)
+    indices = sobol_indices(ISHIGAMI, np.array([_ishigami(r) for r in rows]), 1024)
+    assert indices["S1"].to_numpy() == pytest.approx(ISHIGAMI_S1, abs=0.03)
+    assert indices["ST"].to_numpy() == pytest.approx(ISHIGAMI_ST, abs=0.03)
+
+
+def test_blocks_with_a_failed_run_are_left_out_of_the_estimate():
+    rows = sobol_rows(ISHIGAMI, 64)
+    du = np.array([_ishigami(r) for r in rows])
+    du[[0, 7, 12]] = np.nan  # blocks 0, 1 and 2 (5 runs a block)
+    assert sobol_indices(ISHIGAMI, du, 64)["used_points"].iloc[0] == 61
+
+
+def test_bad_designs_are_refused_in_one_line_naming_the_value():
+    with pytest.raises(YadearchError, match="base_points must be a power of two >= 8, got 100"):
+        check_base_points(100)
+    with pytest.raises(YadearchError, match="NAME=LOW:HIGH"):
+        parse_factor("kn_N_per_mm3=0.25")
+    with pytest.raises(CaseError, match="unknown parameter 'stiffness'"):
+        parse_factor("stiffness=1:2")
+    with pytest.raises(YadearchError, match="low 3 must be below high 2"):
+        check_factors(ya.preset("set2"), (parse_factor("friction_deg=3:2"),))
+    with pytest.raises(CaseError, match="friction_deg"):
+        check_factors(ya.preset("set2"), (parse_factor("friction_deg=30:95"),))
+    assert parse_factor("kn_N_per_mm3=0.25:100:log") == Factor("interface.kn_N_per_mm3", "kn_N_per_mm3", 0.25, 100.0,
+                                                              log=True)
+
+
+def test_static_sensitivity_of_a_small_arch_puts_thickness_before_friction(tmp_path):
+    """9 voussoirs at set 2's kn: du grows with the ring's thickness; friction above 38° leaves the
+    joints sticking (no slip in these mechanisms), so it hardly matters."""
+    case = ya.preset("set2").with_overrides({"n_voussoirs": 9})
+    factors = (parse_factor("thickness_mm=22:26"), parse_factor("friction_deg=38:44"))
+    result = ya.sensitivity(case, tmp_path, base_points=8, factors=factors, engine="static", jobs=2)
+    tornado = result.tornado.set_index("factor")
+    assert tornado.loc["thickness_mm", "du_high_mm"] > tornado.loc["thickness_mm", "du_low_mm"]
+    assert tornado.index[0] == "thickness_mm"
+    assert tornado.loc["friction_deg", "swing_mm"] < 0.02 * tornado.loc["thickness_mm", "swing_mm"]
+    indices = result.indices[result.indices["base_points"] == 8].set_index("factor")
+    assert indices["ST"].idxmax() == "thickness_mm"
+    assert (result.samples["status"] == "done").all()
+    assert pd.read_csv(tmp_path / "indices.csv")["base_points"].tolist() == [4, 4, 8, 8]
+    assert (tmp_path / "tornado.png").stat().st_size > 0 and (tmp_path / "indices.png").stat().st_size > 0
+    assert "## Sobol indices" in (tmp_path / "sensitivity.md").read_text()
