@@ -14,9 +14,9 @@ from yadearch.analysis.mechanism import run_warnings
 from yadearch.case.config import parameter_docs, preset
 from yadearch.cli.campaigns import calibrate, robustness, sweep
 from yadearch.cli.capacity import capacity
-from yadearch.cli.sensitivity import sensitivity
 from yadearch.cli.montecarlo import montecarlo
 from yadearch.cli.options import case_options, resolve_case
+from yadearch.cli.sensitivity import sensitivity
 from yadearch.engine.process import run_case_process
 from yadearch.errors import YadearchError
 from yadearch.reporting.report import write_report

@@ -24,7 +24,7 @@ from yadearch.engine.scene import CALLBACK_NAME, body_states, build_scene
 from yadearch.engine.scene_state import capture, put_back
 from yadearch.engine.stepping import SteppingGate
 from yadearch.engine.timing import EngineClock
-from yadearch.errors import RunFailedError
+from yadearch.errors import CANNOT_STAND, RunFailedError
 from yadearch.model import units
 from yadearch.solve.path import RUNAWAY, STABLE, TIMEOUT
 
@@ -163,7 +163,7 @@ class Runner:
             self._progress(f"gravity {fraction:.0%}, unbalanced {unbalanced:.2e}")
             sag = float(np.max(np.abs(body_states(self.scene)[0] - self.scene.pos0)))
             if sag > units.mm(SELFWEIGHT_COLLAPSE_MM):
-                raise RunFailedError(f"the arch does not stand under its own weight: a block fell "
+                raise RunFailedError(f"{CANNOT_STAND}: a block fell "
                                      f"{units.to_mm(sag):.0f} mm (kn {self.case.interface.kn_N_per_mm3} N/mm3)")
             if fraction >= 1.0 and unbalanced < self.num.equilibrium_tolerance \
                     and O.iter - start > ramp_steps + 10 * CHECK_EVERY_STEPS \

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from yadearch.errors import CANNOT_STAND
 from yadearch.model.joint_law import JointForces
 from yadearch.solve import banded
 from yadearch.solve.banded import smallest_eigenvalue
@@ -80,7 +81,7 @@ class StaticLoading:
                 self.solver.descend(u, start, shear, SELFWEIGHT_FALL, gravity=k / GRAVITY_STEPS)
             if found.verdict != STABLE:
                 raise StaticEngineError(
-                    f"the arch does not stand under its own weight ({found.verdict} at {k}/{GRAVITY_STEPS} "
+                    f"{CANNOT_STAND} ({found.verdict} at {k}/{GRAVITY_STEPS} "
                     f"of gravity, a block moved {1e3 * found.moved:.1f} mm)")
             u = found.u
         state = self._state("selfweight", 0.0, found, np.zeros_like(shear), found.joints.forces)

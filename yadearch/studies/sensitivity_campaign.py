@@ -21,6 +21,7 @@ from yadearch.studies.sensitivity import (
     Factor,
     check_base_points,
     check_factors,
+    collapse_displacement,
     index_shift,
     sobol_indices,
     sobol_rows,
@@ -68,7 +69,7 @@ def run_sensitivity(base: ArchCase, out: Path, pool: Pool, base_points: int = DE
     samples = run_campaign(base, sobol_rows(factors, base_points), out / SOBOL_RUNS, pool, timeout_s=timeout_s,
                            progress=progress)
     tornado = tornado_table(base, factors, tornado_results)
-    du = samples["du_mm"].where(samples["status"] == "done").to_numpy(dtype=float)
+    du = collapse_displacement(samples)
     indices = pd.concat([sobol_indices(factors, du, n) for n in (base_points // 2, base_points)], ignore_index=True)
     shift = index_shift(indices[indices["base_points"] == base_points // 2],
                         indices[indices["base_points"] == base_points])
@@ -88,6 +89,7 @@ def sensitivity_markdown(base: ArchCase, factors: tuple[Factor, ...], result: Se
     they are stable, and what the runs cost."""
     samples = result.samples
     done = samples[samples["status"] == "done"]
+    fell = int(((samples["status"] == "failed") & (collapse_displacement(samples) == 0.0)).sum())
     largest = result.indices["base_points"].max()
     fine = result.indices[result.indices["base_points"] == largest].set_index("factor")
     coarse = result.indices[result.indices["base_points"] == largest // 2].set_index("factor")
@@ -102,8 +104,9 @@ def sensitivity_markdown(base: ArchCase, factors: tuple[Factor, ...], result: Se
     lines += ["", f"![tornado]({TORNADO_FIGURE}.png)", "", "## Sobol indices (all factors at once)", "",
               f"Saltelli's sample with SALib: {largest} base points x {len(factors) + 2} runs = {len(samples)} runs, "
               f"{len(done)} done; {int(fine['used_points'].iloc[0])} base points with every run done enter the "
-              f"estimate. {int((samples['status'] == 'failed').sum())} runs failed, "
-              f"{int((done['collapsed'] == False).sum())} stood to the end of the path.", "",  # noqa: E712
+              f"estimate. {fell} runs found an arch that cannot stand under its own weight (du = 0 in the "
+              f"estimate), {int((samples['status'] == 'failed').sum()) - fell} failed otherwise, "
+              f"{int((done['collapsed'] == False).sum())} stood to the end of the path (both left out).", "",  # noqa: E712
               f"| factor | S1 | ST | S1 at {largest // 2} | ST at {largest // 2} |", "|---|---|---|---|---|"]
     for factor in sorted(factors, key=lambda f: -fine.loc[f.name, "ST"]):
         f, c = fine.loc[factor.name], coarse.loc[factor.name]
