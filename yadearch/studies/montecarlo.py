@@ -17,7 +17,7 @@ from scipy.stats import binom
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.errors import RunFolderError
+from yadearch.errors import CANNOT_STAND, RunFolderError
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.results.rundir import read_summary
 from yadearch.studies.campaign import run_campaign
@@ -92,6 +92,14 @@ def du_statistics(du: pd.Series) -> dict[str, float]:
     return {"n": int(values.size), "median": float(np.median(values)), "low": float(low),
             "high": float(high), "mean": float(values.mean()), "median_low": median_low,
             "median_high": median_high}
+
+
+def collapse_displacement(runs: pd.DataFrame) -> np.ndarray:
+    """du (mm) of each run for the indices: 0 for an arch that cannot stand under its own weight (it
+    carries no settlement), nan for a run that failed otherwise or stood to the end of its path."""
+    done = (runs["status"] == "done") & (runs["collapsed"] == True)  # noqa: E712  (object column)
+    fell = (runs["status"] == "failed") & runs["reason"].fillna("").str.contains(CANNOT_STAND, regex=False)
+    return np.where(done, runs["du_mm"], np.where(fell, 0.0, np.nan)).astype(float)
 
 
 def median_interval(values: np.ndarray, confidence: float = MEDIAN_CONFIDENCE) -> tuple[float, float]:

@@ -16,7 +16,7 @@ import numpy as np
 import pandas as pd
 
 from yadearch.case.config import ArchCase
-from yadearch.errors import CANNOT_STAND, YadearchError
+from yadearch.errors import YadearchError
 from yadearch.studies.grid import RUN_COLUMN, check_parameter, qualified_name, round_sig
 
 SAMPLE_SEED = 20261126  # scrambling of the Sobol sequence (fixed: the same sample on every machine)
@@ -158,14 +158,6 @@ def sobol_rows(factors: tuple[Factor, ...], base_points: int) -> list[dict[str, 
     block = len(factors) + 2
     return [{**{f.key: f.value(float(u)) for f, u in zip(factors, point)},
              RUN_COLUMN: f"b{row // block:05d}_{row % block:02d}"} for row, point in enumerate(unit)]
-
-
-def collapse_displacement(runs: pd.DataFrame) -> np.ndarray:
-    """du (mm) of each run for the indices: 0 for an arch that cannot stand under its own weight (it
-    carries no settlement), nan for a run that failed otherwise or stood to the end of its path."""
-    done = (runs["status"] == "done") & (runs["collapsed"] == True)  # noqa: E712  (object column)
-    fell = (runs["status"] == "failed") & runs["reason"].fillna("").str.contains(CANNOT_STAND, regex=False)
-    return np.where(done, runs["du_mm"], np.where(fell, 0.0, np.nan)).astype(float)
 
 
 def sobol_indices(factors: tuple[Factor, ...], du_mm: np.ndarray, base_points: int) -> pd.DataFrame:

@@ -15,13 +15,13 @@ from yadearch.case.config import ArchCase
 from yadearch.plotting.sensitivity import indices_figure, tornado_figure
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool
+from yadearch.studies.montecarlo import collapse_displacement
 from yadearch.studies.sensitivity import (
     PAPER_FACTORS,
     STABLE_TO,
     Factor,
     check_base_points,
     check_factors,
-    collapse_displacement,
     index_shift,
     sobol_indices,
     sobol_rows,
