@@ -57,7 +57,12 @@ def probes() -> list[list[str]]:
               ["calibrate", "--preset", "set1", "--target-du", "-5", "--out", "OUT/c.json"],
               ["calibrate", "--preset", "set1", "--target-du", "48", "--kn-min", "5", "--kn-max", "1",
                "--out", "OUT/c.json"],
-              ["report", "OUT/not-a-run", "--out", "OUT/r"], ["limit", "--set", "friction_deg=95"]]
+              ["report", "OUT/not-a-run", "--out", "OUT/r"], ["limit", "--set", "friction_deg=95"],
+              ["sensitivity", "--preset", "set2", "--base-points", "100", "--out", "OUT/s"],
+              ["sensitivity", "--preset", "set2", "--factor", "kn_N_per_mm3=1", "--out", "OUT/s"],
+              ["sensitivity", "--preset", "set2", "--factor", "nothing=1:2", "--out", "OUT/s"],
+              ["sensitivity", "--preset", "set2", "--factor", "friction_deg=40:95", "--out", "OUT/s"],
+              ["sensitivity", "--preset", "set2", "--factor", "kn_N_per_mm3=0:5:log", "--out", "OUT/s"]]
     shapes = [["shape=oval"], ["joint_orientation=skew"], ["shape=pointed", "pointed_radius_over_span=0.4"],
               ["shape=elliptical", "rise_mm=400"], ["shape=three_centred", "rise_mm=300"],
               ["shape=three_centred", "rise_mm=50", "thickness_mm=40"],
