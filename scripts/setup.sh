@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 DEBIAN_PACKAGES=(yade python3-venv python3-pip python3-setuptools python3-numpy python3-pandas
                  python3-matplotlib python3-scipy python3-click python3-tomli-w python3-tqdm
                  python3-dask python3-distributed python3-pytest python3-numba
-                 python3-hypothesis python3-nbclient python3-ipykernel python3-nbformat)
+                 python3-hypothesis python3-nbclient python3-ipykernel python3-nbformat
+                 python3-multiprocess)
 
 missing=()
 for pkg in "${DEBIAN_PACKAGES[@]}"; do
@@ -26,10 +27,13 @@ if [ ! -x .venv/bin/python ]; then
     /usr/bin/python3 -m venv --system-site-packages .venv
 fi
 .venv/bin/python -m pip install -q --no-build-isolation --no-deps -e .
+# SALib (the sensitivity study's Sobol sampling and estimators) is not in Debian: pip, without its
+# dependencies, which are all Debian's (numpy, scipy, pandas, matplotlib, multiprocess)
+.venv/bin/python -m pip install -q --no-deps "SALib==1.4.7"
 # ruff and mypy (the linter and type checker the tests run) are optional: without them those tests skip
 .venv/bin/python -m pip install -q ruff mypy 2>/dev/null || echo "setup: ruff or mypy unavailable, their tests will be skipped"
 .venv/bin/python - <<'PY'
-import numpy, pandas, matplotlib, click, tomli_w, dask, distributed, numba  # noqa: F401  the whole stack imports
+import numpy, pandas, matplotlib, click, tomli_w, dask, distributed, numba, SALib  # noqa: F401  the whole stack imports
 from yadearch.engine.yade_env import import_yade
 import_yade()
 import yade.config
