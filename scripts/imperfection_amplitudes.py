@@ -19,6 +19,7 @@ from pathlib import Path
 
 import pandas as pd
 
+from yadearch.analysis.samples import du_statistics
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import preset
@@ -38,7 +39,6 @@ from yadearch.studies.imperfection_amplitudes import (
     nearest_level,
     with_levels,
 )
-from yadearch.studies.montecarlo import du_statistics
 
 BASE_PRESET = "set2"  # the accurate (CNC) voussoirs' kn: the defects alone must bring du down
 SAMPLES = {"bump": 200, "combined": 200}  # seeds a level; the other kinds OTHER_SAMPLES

@@ -18,6 +18,7 @@ from pathlib import Path
 
 import pandas as pd
 
+from yadearch.analysis.samples import du_statistics
 from yadearch.atomic import write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import preset
@@ -39,7 +40,7 @@ from yadearch.studies.imperfection_study import (
     paired_medians,
     table_markdown,
 )
-from yadearch.studies.montecarlo import MONTECARLO_FILE, du_statistics, run_montecarlo, write_montecarlo
+from yadearch.studies.montecarlo import MONTECARLO_FILE, run_montecarlo, write_montecarlo
 
 BASE_PRESET = "set2"  # accurate voussoirs: the CNC set's kn
 SEED = 1

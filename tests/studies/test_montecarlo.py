@@ -9,15 +9,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from yadearch.analysis.samples import du_statistics, hinge_frequencies, median_interval
 from yadearch.plotting.montecarlo import du_amplitude_figure, du_distribution_figure, hinge_frequency_figure
-from yadearch.studies.montecarlo import (
-    SEED_KEY,
-    du_statistics,
-    hinge_frequencies,
-    median_interval,
-    sample_rows,
-    summary_markdown,
-)
+from yadearch.studies.montecarlo import SEED_KEY, sample_rows, summary_markdown
 
 
 def _table(n: int = 40) -> pd.DataFrame:

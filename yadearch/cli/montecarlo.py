@@ -9,11 +9,12 @@ from pathlib import Path
 import click
 import pandas as pd
 
+from yadearch.analysis.samples import du_statistics
 from yadearch.cli.campaigns import parse_axes
 from yadearch.cli.options import case_options, pool_options, resolve_case, timeout_s
 from yadearch.errors import YadearchError
 from yadearch.studies.executors import open_pool
-from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE, du_statistics, levels, run_montecarlo
+from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE, levels, run_montecarlo
 
 
 @click.command()

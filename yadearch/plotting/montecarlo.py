@@ -12,10 +12,10 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
+from yadearch.analysis.samples import BAND, du_statistics, hinge_frequencies
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.plotting.run_figures import save_figure
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
-from yadearch.studies.montecarlo import BAND, du_statistics, hinge_frequencies
 
 HINGE_SIDES = {"A": "intrados", "B": "extrados", "C": "extrados, moving support",
                "D": "extrados, fixed support"}

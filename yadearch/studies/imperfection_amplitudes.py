@@ -18,9 +18,10 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from yadearch.analysis.samples import collapse_displacement, du_statistics, hinge_frequencies
 from yadearch.studies.grid import RUN_COLUMN, round_sig
 from yadearch.studies.imperfection_study import amplitude_for, paired_amplitude_interval
-from yadearch.studies.montecarlo import SEED_KEY, collapse_displacement, du_statistics, hinge_frequencies
+from yadearch.studies.montecarlo import SEED_KEY
 
 FIRST_SEED = 1
 LEVEL = "amplitude"  # the column of a campaign table that holds each run's amplitude

@@ -17,8 +17,8 @@ import numpy as np
 import pandas as pd
 
 from yadearch.analysis.run import analyse_run, load_run
+from yadearch.analysis.samples import du_statistics, hinge_frequencies
 from yadearch.analysis.tracking import HingeTrack
-from yadearch.studies.montecarlo import du_statistics, hinge_frequencies
 
 BOOTSTRAP_RESAMPLES = 2000  # resamples of the seeds for the interval of a paired amplitude
 

@@ -7,17 +7,15 @@ from 100 to 200 samples keeps its first 100 runs. docs/usage.md shows the comman
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 from typing import Any
 
-import numpy as np
 import pandas as pd
-from scipy.stats import binom
 
+from yadearch.analysis.samples import BAND, MEDIAN_CONFIDENCE, du_statistics, hinge_frequencies
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.errors import CANNOT_STAND, RunFolderError
+from yadearch.errors import RunFolderError
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.results.rundir import read_summary
 from yadearch.studies.campaign import run_campaign
@@ -27,8 +25,6 @@ from yadearch.studies.grid import RUN_COLUMN, grid, run_tag
 SEED_KEY = "imperfections.seed"
 MONTECARLO_FILE = "montecarlo.csv"
 SUMMARY_FILE = "montecarlo.md"
-BAND = (0.05, 0.95)  # the quantiles of du's band
-MEDIAN_CONFIDENCE = 0.95  # of the interval that brackets the median du
 
 
 def sample_rows(samples: int, seed: int, axes: dict[str, list[Any]] | None = None) -> list[dict[str, Any]]:
@@ -79,50 +75,6 @@ def with_imperfections(results: pd.DataFrame, out: Path) -> pd.DataFrame:
 def levels(table: pd.DataFrame, axes: dict[str, list[Any]] | None) -> list[str]:
     """The table's columns of the swept amplitudes (empty without axes)."""
     return [key.split(".")[-1] for key in axes or {} if key.split(".")[-1] in table.columns]
-
-
-def du_statistics(du: pd.Series) -> dict[str, float]:
-    """Count, median, band, mean and the median's confidence interval of the finished samples' du (mm)."""
-    values = du.dropna().to_numpy(dtype=float)
-    if values.size == 0:
-        return {"n": 0, "median": math.nan, "low": math.nan, "high": math.nan, "mean": math.nan,
-                "median_low": math.nan, "median_high": math.nan}
-    low, high = np.quantile(values, BAND)
-    median_low, median_high = median_interval(values)
-    return {"n": int(values.size), "median": float(np.median(values)), "low": float(low),
-            "high": float(high), "mean": float(values.mean()), "median_low": median_low,
-            "median_high": median_high}
-
-
-def collapse_displacement(runs: pd.DataFrame) -> np.ndarray:
-    """du (mm) of each run for the indices: 0 for an arch that cannot stand under its own weight (it
-    carries no settlement), nan for a run that failed otherwise or stood to the end of its path."""
-    done = (runs["status"] == "done") & (runs["collapsed"] == True)  # noqa: E712  (object column)
-    fell = (runs["status"] == "failed") & runs["reason"].fillna("").str.contains(CANNOT_STAND, regex=False)
-    return np.where(done, runs["du_mm"], np.where(fell, 0.0, np.nan)).astype(float)
-
-
-def median_interval(values: np.ndarray, confidence: float = MEDIAN_CONFIDENCE) -> tuple[float, float]:
-    """Distribution-free interval that holds the true median with at least `confidence`: the order
-    statistics whose ranks the binomial(n, 1/2) law puts around the middle; nan if n is too small."""
-    n = len(values)
-    rank = int(binom.ppf((1.0 - confidence) / 2.0, n, 0.5))  # lower order statistic, 1-based
-    if n == 0 or rank < 1:
-        return math.nan, math.nan
-    ordered = np.sort(values)
-    return float(ordered[rank - 1]), float(ordered[n - rank])
-
-
-def hinge_frequencies(table: pd.DataFrame) -> pd.DataFrame:
-    """How often each of the hinges A-D formed at each interface: one row a (label, interface)."""
-    rows = []
-    done = table[table["status"] == "done"]
-    for label in PAPER_LABELS:
-        counts = done[f"hinge_{label}"].dropna().astype(int).value_counts()
-        for interface, count in sorted(counts.items()):
-            rows.append({"hinge": label, "interface": interface, "count": int(count),
-                         "share": count / len(done) if len(done) else math.nan})
-    return pd.DataFrame(rows, columns=["hinge", "interface", "count", "share"])
 
 
 def summary_markdown(table: pd.DataFrame, level_columns: list[str]) -> str:

@@ -10,12 +10,12 @@ from pathlib import Path
 
 import pandas as pd
 
+from yadearch.analysis.samples import collapse_displacement
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.plotting.sensitivity import indices_figure, tornado_figure
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool
-from yadearch.studies.montecarlo import collapse_displacement
 from yadearch.studies.sensitivity import (
     PAPER_FACTORS,
     STABLE_TO,

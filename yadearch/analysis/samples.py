@@ -1,0 +1,61 @@
+"""Statistics of a set of runs of one arch (Monte Carlo samples, a study's level): du's median with
+a distribution-free interval and its band, how often each paper hinge forms where, and du for
+statistics in which an arch that cannot stand under its own weight carries nothing."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+from scipy.stats import binom
+
+from yadearch.errors import CANNOT_STAND
+from yadearch.model.hinges import PAPER_LABELS
+
+BAND = (0.05, 0.95)  # the quantiles of du's band
+MEDIAN_CONFIDENCE = 0.95  # of the interval that brackets the median du
+
+
+def du_statistics(du: pd.Series) -> dict[str, float]:
+    """Count, median, band, mean and the median's confidence interval of the finished samples' du (mm)."""
+    values = du.dropna().to_numpy(dtype=float)
+    if values.size == 0:
+        return {"n": 0, "median": math.nan, "low": math.nan, "high": math.nan, "mean": math.nan,
+                "median_low": math.nan, "median_high": math.nan}
+    low, high = np.quantile(values, BAND)
+    median_low, median_high = median_interval(values)
+    return {"n": int(values.size), "median": float(np.median(values)), "low": float(low),
+            "high": float(high), "mean": float(values.mean()), "median_low": median_low,
+            "median_high": median_high}
+
+
+def median_interval(values: np.ndarray, confidence: float = MEDIAN_CONFIDENCE) -> tuple[float, float]:
+    """Distribution-free interval that holds the true median with at least `confidence`: the order
+    statistics whose ranks the binomial(n, 1/2) law puts around the middle; nan if n is too small."""
+    n = len(values)
+    rank = int(binom.ppf((1.0 - confidence) / 2.0, n, 0.5))  # lower order statistic, 1-based
+    if n == 0 or rank < 1:
+        return math.nan, math.nan
+    ordered = np.sort(values)
+    return float(ordered[rank - 1]), float(ordered[n - rank])
+
+
+def hinge_frequencies(table: pd.DataFrame) -> pd.DataFrame:
+    """How often each of the hinges A-D formed at each interface: one row a (label, interface)."""
+    rows = []
+    done = table[table["status"] == "done"]
+    for label in PAPER_LABELS:
+        counts = done[f"hinge_{label}"].dropna().astype(int).value_counts()
+        for interface, count in sorted(counts.items()):
+            rows.append({"hinge": label, "interface": interface, "count": int(count),
+                         "share": count / len(done) if len(done) else math.nan})
+    return pd.DataFrame(rows, columns=["hinge", "interface", "count", "share"])
+
+
+def collapse_displacement(runs: pd.DataFrame) -> np.ndarray:
+    """du (mm) of each run for the indices: 0 for an arch that cannot stand under its own weight (it
+    carries no settlement), nan for a run that failed otherwise or stood to the end of its path."""
+    done = (runs["status"] == "done") & (runs["collapsed"] == True)  # noqa: E712  (object column)
+    fell = (runs["status"] == "failed") & runs["reason"].fillna("").str.contains(CANNOT_STAND, regex=False)
+    return np.where(done, runs["du_mm"], np.where(fell, 0.0, np.nan)).astype(float)
