@@ -1,17 +1,35 @@
 """yadearch: masonry arches on moving supports, simulated with YADE's polyhedral discrete elements.
 
 The public API (`yadearch.api`): `preset`, `movement`, `run`, `open_run`, `sweep`, `montecarlo`, `calibrate`,
-`capacity`, `sensitivity`, `limit`, imported on first use so that `import yadearch` stays light (no pandas, no YADE)."""
+`capacity`, `sensitivity`, `limit`, imported on first use so that `import yadearch` stays light (no pandas,
+no YADE); type checkers and IDEs see them through the TYPE_CHECKING import below."""
+
+from typing import TYPE_CHECKING
 
 __version__ = "0.1.0"
 
-_API = ("preset", "movement", "run", "open_run", "sweep", "montecarlo", "calibrate", "capacity", "sensitivity", "limit",
-        "RunResult", "HingeAtCollapse")
-__all__ = ["__version__", *_API]
+if TYPE_CHECKING:
+    from yadearch.api import (
+        HingeAtCollapse,
+        RunResult,
+        calibrate,
+        capacity,
+        limit,
+        montecarlo,
+        movement,
+        open_run,
+        preset,
+        run,
+        sensitivity,
+        sweep,
+    )
+
+__all__ = ["__version__", "preset", "movement", "run", "open_run", "sweep", "montecarlo", "calibrate", "capacity",
+           "sensitivity", "limit", "RunResult", "HingeAtCollapse"]
 
 
 def __getattr__(name: str):
-    if name in _API:
+    if name in __all__:
         from yadearch import api
 
         return getattr(api, name)
