@@ -12,6 +12,10 @@ class CaseError(YadearchError, ValueError):
     """A case parameter is unknown or outside its accepted range."""
 
 
+class CampaignError(YadearchError, ValueError):
+    """A campaign's grid, table or size is unusable (refused before anything runs)."""
+
+
 class YadeMissingError(YadearchError):
     """YADE cannot be imported in this Python."""
 

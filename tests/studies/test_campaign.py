@@ -18,7 +18,7 @@ from conftest import REPO
 from yadearch.case.config import preset
 from yadearch.cli.campaigns import sweep
 from yadearch.engine.process import exit_reason
-from yadearch.errors import CaseError, YadearchError
+from yadearch.errors import CampaignError, CaseError, YadearchError
 from yadearch.plotting.sweep import kn_sweep_figure
 from yadearch.studies.campaign import (
     FAILED_FILE,
@@ -114,29 +114,44 @@ def test_the_costliest_runs_start_first(tmp_path):
     assert task.calls == ["kn100", "kn31.62", "kn1", "kn0.1"]
 
 
-def test_results_table_failures_and_invalid_cases(tmp_path):
+def test_results_table_with_a_failed_run(tmp_path):
     task = FakeRuns(fail=(10.0,))
-    rows = grid({"kn_N_per_mm3": [0.1, 1.0, 10.0, -1.0]})
+    rows = grid({"kn_N_per_mm3": [0.1, 1.0, 10.0]})
     table = campaign(tmp_path, task, rows)
-    assert sorted(task.calls) == ["kn0.1", "kn1", "kn10"]  # the invalid case never starts
+    assert sorted(task.calls) == ["kn0.1", "kn1", "kn10"]
     read = pd.read_csv(tmp_path / RESULTS_FILE)
     for column in ("run", "kn_N_per_mm3", "du_mm", "hinges", "mechanism", "hinge_A", "hinge_B",
                    "hinge_C", "hinge_D", "status", "reason", "wall_s"):
         assert column in read.columns
-    assert list(read["status"]) == ["done", "done", "failed", "failed"]
+    assert list(read["status"]) == ["done", "done", "failed"]
     assert read["du_mm"].tolist()[:2] == pytest.approx([40.0, 50.0])
-    assert "timed out" in read.loc[2, "reason"] and "kn_N_per_mm3 must be in (0, 100000]" in read.loc[3, "reason"]
+    assert "timed out" in read.loc[2, "reason"]
     assert json.loads((tmp_path / "kn10" / FAILED_FILE).read_text())["reason"].endswith("after 1 s")
     assert read.loc[0, "mechanism"] == "E-I-E-I-E" and read.loc[0, "hinges"] == "1E 3I 8E 12I 16E"
     assert table.loc[0, ["hinge_A", "hinge_B", "hinge_C", "hinge_D"]].tolist() == [3, 8, 16, 1]
 
 
-def test_a_campaign_of_invalid_cases_only_still_writes_its_table(tmp_path):
+def test_an_invalid_value_anywhere_in_the_grid_refuses_the_campaign_before_any_run(tmp_path):
     task = FakeRuns()
-    table = campaign(tmp_path, task, grid({"kn_N_per_mm3": [-1.0, -2.0]}))
-    assert task.calls == []
-    assert list(table["status"]) == ["failed", "failed"] and table["n_voussoirs"].isna().all()
-    assert "kn_N_per_mm3 must be in" in pd.read_csv(tmp_path / RESULTS_FILE).loc[0, "reason"]
+    with pytest.raises(CaseError, match=r"run kn-1: kn_N_per_mm3 must be in \(0, 100000\], got -1.0 \(and 1 more of "
+                       r"the 4 runs\); nothing was run"):
+        campaign(tmp_path, task, grid({"kn_N_per_mm3": [0.1, -1.0, 1.0, -2.0]}))
+    assert task.calls == [] and not (tmp_path / RESULTS_FILE).exists()
+
+
+@pytest.mark.parametrize("params, message", [
+    ({"kn_N_per_mm3": []}, "kn_N_per_mm3: no values to run"),
+    ({"kn_N_per_mm3": list(range(1, 400)), "n_voussoirs": list(range(3, 303))}, "campaign of 119700 runs exceeds "
+     "the bound of 100000; set YADEARCH_MAX_RUNS to raise it"),
+])
+def test_empty_and_huge_grids_are_refused_in_one_line(params, message):
+    with pytest.raises(CampaignError, match=re.escape(message)):
+        grid(params)
+
+
+def test_a_scalar_where_a_list_of_values_is_expected_is_a_type_error():
+    with pytest.raises(TypeError, match="kn_N_per_mm3: give a list of values, got 5"):
+        grid({"kn_N_per_mm3": 5})
 
 
 def test_resume_redoes_only_unfinished_runs(tmp_path):

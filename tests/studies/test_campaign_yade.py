@@ -24,7 +24,7 @@ pytestmark = [pytest.mark.yade, needs_yade]
 
 COARSE = ["--preset", "set1", "--set", "n_voussoirs=9", "--set", "settlement_rate_mm_per_s=30",
           "--set", "progress_every_s=1e9"]
-TABLE = "kn_N_per_mm3\n0.1\n0.12\n0.2\n-1\n"  # three coarse arches and one invalid case
+TABLE = "kn_N_per_mm3\n0.1\n0.12\n0.2\n"  # three coarse arches
 COMPARED = ["run", "kn_N_per_mm3", "collapsed", "hinges", "mechanism", "hinge_A", "hinge_B", "hinge_C",
             "hinge_D", "status", "reason"]
 
@@ -40,15 +40,13 @@ def local_sweep(tmp_path_factory) -> Path:
     """The coarse campaign through `yadearch sweep` on two local processes."""
     out = tmp_path_factory.mktemp("local") / "sweep"
     result = run_sweep(out, "--jobs", "2")
-    assert isinstance(result.exception, YadearchError), result.output
-    assert "1 of 4 runs failed" in str(result.exception)
+    assert result.exit_code == 0, result.output
     return out
 
 
 def test_local_campaign_writes_the_results_table(local_sweep):
     table = pd.read_csv(local_sweep / RESULTS_FILE)
-    assert table["status"].tolist() == ["done", "done", "done", "failed"]
-    assert "kn_N_per_mm3 must be in (0, 100000]" in table.loc[3, "reason"]
+    assert table["status"].tolist() == ["done", "done", "done"]
     done = table[table["status"] == "done"]
     assert done["du_mm"].between(50, 150).all() and done["collapsed"].all()
     assert (done["hinge_C"] == 10).all() and done["hinge_A"].notna().all()
@@ -62,7 +60,7 @@ def test_dask_cluster_gives_the_same_results(local_sweep, tmp_path):
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                       dashboard_address=None) as cluster:
         result = run_sweep(tmp_path / "sweep", "--scheduler", cluster.scheduler_address, "--no-figure")
-    assert "1 of 4 runs failed" in str(result.exception), result.output
+    assert result.exit_code == 0, result.output
     local = pd.read_csv(local_sweep / RESULTS_FILE)
     remote = pd.read_csv(tmp_path / "sweep" / RESULTS_FILE)
     pd.testing.assert_frame_equal(local[COMPARED], remote[COMPARED])
@@ -77,10 +75,10 @@ def test_restart_redoes_nothing_finished_and_records_a_timeout(local_sweep, tmp_
     (out / "kn0.2" / "summary.json").unlink()  # killed while kn0.2 ran
     finished = {p: p.stat().st_mtime_ns for p in out.glob("kn0.1*/*")}
     result = run_sweep(out, "--jobs", "1", "--timeout-min", str(1 / 60), "--no-figure")
-    assert "2 of 4 runs failed" in str(result.exception), result.output
+    assert "1 of 3 runs failed" in str(result.exception), result.output
     assert {p: p.stat().st_mtime_ns for p in out.glob("kn0.1*/*")} == finished
     table = pd.read_csv(out / RESULTS_FILE)
-    assert table["status"].tolist() == ["done", "done", "failed", "failed"]
+    assert table["status"].tolist() == ["done", "done", "failed"]
     assert "timed out after 1 s" in table.loc[2, "reason"]
     assert "timed out" in json.loads((out / "kn0.2" / "failed.json").read_text())["reason"]
     local = pd.read_csv(local_sweep / RESULTS_FILE)

@@ -175,7 +175,9 @@ def robustness(preset_name: str | None, case_file: str | None, settings: tuple[s
     """Run every kn with each numerical variant and with higher friction (resumable); write
     OUT/robustness.csv and OUT/robustness.md with a verdict per kn."""
     base = _base_case(preset_name or "set2", case_file, settings)
-    kn_values = tuple(float(v) for v in parse_values(kn_spec))
+    kn_values = tuple(parse_values(kn_spec))
+    if not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in kn_values):
+        raise click.BadParameter(f"kn values must be numbers, got {kn_spec!r}", param_hint="--kn")
     folder = Path(out)
     with open_pool(jobs, scheduler) as pool:
         table = run_study(base, folder, pool, kn_values, variant_names or tuple(VARIANTS),

@@ -28,7 +28,7 @@ from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, Yade
 from yadearch.model.hinges import PAPER_LABELS, paper_labels
 from yadearch.results.rundir import SUMMARY_FILE, case_differences, hinge_list, is_complete
 from yadearch.studies.executors import Pool
-from yadearch.studies.grid import RUN_COLUMN, check_parameter, run_tag
+from yadearch.studies.grid import RUN_COLUMN, check_campaign_size, check_parameter, run_tag
 from yadearch.studies.sessions import record_session
 
 FAILED_FILE = "failed.json"
@@ -40,39 +40,37 @@ RESULTS_FILE = "results.csv"
 
 @dataclass
 class RunSpec:
-    """One run of a campaign: its name, overrides, folder, and the case (or why it is invalid)."""
+    """One run of a campaign: its name, overrides, folder and case."""
 
     name: str
     overrides: dict[str, Any]
     folder: Path
-    case: ArchCase | None
-    error: str | None = None
-
-    @property
-    def ready(self) -> ArchCase:
-        """The case of a valid run (an invalid one is recorded as failed and never runs)."""
-        if self.case is None:
-            raise YadearchError(f"run {self.name} has no valid case: {self.error}")
-        return self.case
+    case: ArchCase
 
 
 def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]:
-    """The runs of a campaign. An invalid parameter value makes that run fail (not the campaign);
-    a finished folder that holds a different case is an error (resuming would mix campaigns)."""
+    """The runs of a campaign, every one checked before any runs: an invalid parameter value (or an
+    absurd combination, `plan_run`) refuses the campaign in one line naming the run; so does a
+    finished folder that holds a different case (resuming would mix campaigns)."""
+    check_campaign_size(len(rows))
     specs: list[RunSpec] = []
+    invalid: list[str] = []
     for row in rows:
         overrides = {k: v for k, v in row.items() if k != RUN_COLUMN}
         name = str(row.get(RUN_COLUMN) or (run_tag(overrides) if overrides else base.name))
-        case, error = None, None
         try:
             case = base.with_overrides({**overrides, "name": name})
             plan_run(case)
         except CaseError as exc:
-            case, error = None, f"invalid case: {exc}"
-        spec = RunSpec(name, overrides, out / confined_folder_name(name), case, error)
-        if case is not None and is_complete(spec.folder):
+            invalid.append(f"run {name}: {exc}")
+            continue
+        spec = RunSpec(name, overrides, out / confined_folder_name(name), case)
+        if is_complete(spec.folder):
             _check_same_case(spec)
         specs.append(spec)
+    if invalid:
+        more = f" (and {len(invalid) - 1} more of the {len(rows)} runs)" if len(invalid) > 1 else ""
+        raise CaseError(f"{invalid[0]}{more}; nothing was run")
     names = [s.name for s in specs]
     duplicates = sorted({n for n in names if names.count(n) > 1})
     if duplicates:
@@ -91,7 +89,7 @@ def confined_folder_name(name: str) -> str:
 def _check_same_case(spec: RunSpec) -> None:
     """Refuse to resume over a finished run folder that ran another case (`rundir.case_differences`:
     a parameter the run predates counts as the value that keeps its old behaviour)."""
-    differences = case_differences(spec.folder, spec.ready)
+    differences = case_differences(spec.folder, spec.case)
     if differences:
         raise YadearchError(f"run folder {spec.folder} holds a different case ({differences[0]}); "
                             "use another --out")
@@ -108,8 +106,6 @@ def batch_run(params: dict[str, Any]) -> tuple[ArchCase, Path]:
         check_parameter(key)
     spec = plan(preset(str(params.get("preset", "set2"))), [overrides],
                 Path(str(params.get("out", "runs/yade-batch"))))[0]
-    if spec.case is None:
-        raise CaseError(spec.error)
     return spec.case, spec.folder
 
 
@@ -156,26 +152,23 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
     out.mkdir(parents=True, exist_ok=True)
     remove_stale_temporaries(out)  # left by a campaign killed while it wrote its tables
     write_run_table(specs, out)
-    todo = [s for s in specs if s.case is not None and not is_complete(s.folder)
+    todo = [s for s in specs if not is_complete(s.folder)
             and (retry_failed or not (s.folder / FAILED_FILE).is_file())]
     # Longest first: the last runs to start are short, so no core idles while one long run ends
     # the campaign (the 13-point kn sweep's stiffest points take 10-40x its softest).
-    todo.sort(key=lambda spec: expected_cost(spec.ready), reverse=True)
-    for spec in specs:
-        if spec.case is None:
-            record_failure(spec.folder, spec.name, spec.error or "", 0.0)
+    todo.sort(key=lambda spec: expected_cost(spec.case), reverse=True)
     for spec in todo:
         (spec.folder / FAILED_FILE).unlink(missing_ok=True)
-    if task is execute and any(s.ready.numerics.engine != STATIC_ENGINE for s in todo):
+    if task is execute and any(s.case.numerics.engine != STATIC_ENGINE for s in todo):
         check_yade_installed()  # a campaign of static runs needs no YADE
-    skipped = sum(1 for s in specs if s.case is not None) - len(todo)
+    finished = sum(1 for s in specs if is_complete(s.folder))
     bar = tqdm(total=len(specs), initial=len(specs) - len(todo), unit="run", disable=not progress,
                desc=out.name, dynamic_ncols=True)
-    counts = {"done": skipped, "failed": len(specs) - len(todo) - skipped, "interrupted": 0}
+    counts = {"done": finished, "failed": len(specs) - len(todo) - finished, "interrupted": 0}
     futures: dict[Future, RunSpec] = {}
     started = time.time()
     try:
-        futures = {pool.executor.submit(task, s.ready, s.folder, timeout_s): s for s in todo}
+        futures = {pool.executor.submit(task, s.case, s.folder, timeout_s): s for s in todo}
         pending = set(futures)
         bar.set_postfix(counts, running=min(pool.slots, len(pending)))
         while pending:
@@ -230,14 +223,13 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
     """One results row: the run's parameters and what its folder says (done, failed or pending)."""
     case = spec.case
     row: dict[str, Any] = {RUN_COLUMN: spec.name, **_columns(spec.overrides)}
-    if case is not None:
-        row.setdefault("kn_N_per_mm3", case.interface.kn_N_per_mm3)
-    row.setdefault("n_voussoirs", None if case is None else case.geometry.n_voussoirs)
+    row.setdefault("kn_N_per_mm3", case.interface.kn_N_per_mm3)
+    row.setdefault("n_voussoirs", case.geometry.n_voussoirs)
     empty = {"du_mm": math.nan, "collapsed": None, "hinges": "", "mechanism": "", "hinge_A": None,
              "hinge_B": None, "hinge_C": None, "hinge_D": None, "steps": None, "wall_s": math.nan,
              "max_slip_mm": math.nan, "max_friction_use": math.nan, "friction_interface": None,
-             "engine": None if case is None else case.numerics.engine}
-    if case is not None and is_complete(spec.folder):
+             "engine": case.numerics.engine}
+    if is_complete(spec.folder):
         summary = json.loads((spec.folder / SUMMARY_FILE).read_text())
         hinges = summary.get("hinges_at_collapse") or []
         du = summary.get("du_mm")

@@ -7,6 +7,8 @@ import csv
 import hashlib
 import itertools
 import json
+import math
+import os
 import re
 import tomllib
 from pathlib import Path
@@ -15,12 +17,22 @@ from typing import Any
 import numpy as np
 
 from yadearch.case.config import parameter_docs
-from yadearch.errors import CaseError, YadearchError
+from yadearch.errors import CampaignError, CaseError, YadearchError
 
 RUN_COLUMN = "run"  # optional column of an explicit table: the run's name
 MAX_TAG = 64
+MAX_RUNS = 100_000  # a larger campaign is refused (a typo in a grid), unless MAX_RUNS_VARIABLE raises it
+MAX_RUNS_VARIABLE = "YADEARCH_MAX_RUNS"
 _UNIT_SUFFIXES = ("_N_per_mm3", "_mm_per_s", "_g_per_cm3", "_m_per_s2", "_mm", "_deg", "_MPa", "_s")
 _BARE_NAMES = {q.split(".")[-1]: q for q, _, _ in parameter_docs()}
+
+
+def check_campaign_size(runs: int) -> None:
+    """Refuse a campaign of more than MAX_RUNS runs (or the bound set in YADEARCH_MAX_RUNS)."""
+    bound = int(os.environ.get(MAX_RUNS_VARIABLE, MAX_RUNS))
+    if runs > bound:
+        raise CampaignError(f"campaign of {runs} runs exceeds the bound of {bound}; set {MAX_RUNS_VARIABLE} to "
+                            "raise it")
 
 
 def parse_scalar(text: str) -> Any:
@@ -48,9 +60,10 @@ def parse_values(spec: str) -> list[Any]:
     if len(parts) != 4 or parts[2] not in ("log", "lin"):
         raise YadearchError(f"range {spec!r} must read start:stop:log:n or start:stop:lin:n")
     start, stop, count = parse_scalar(parts[0]), parse_scalar(parts[1]), parse_scalar(parts[3])
-    if not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in (start, stop)) \
+    if not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in (start, stop)) \
             or not isinstance(count, int) or count < 1:
-        raise YadearchError(f"range {spec!r}: start and stop must be numbers and n a positive integer")
+        raise YadearchError(f"range {spec!r}: start and stop must be finite numbers and n a positive integer")
+    check_campaign_size(count)
     if parts[2] == "log":
         if start <= 0 or stop <= 0:
             raise YadearchError(f"log range {spec!r} needs positive start and stop")
@@ -75,8 +88,13 @@ def qualified_name(key: str) -> str:
 
 def grid(params: dict[str, list[Any]]) -> list[dict[str, Any]]:
     """Every combination of the values of `params` (last parameter varies fastest)."""
-    for key in params:
+    for key, values in params.items():
         check_parameter(key)
+        if isinstance(values, (str, bytes)) or not hasattr(values, "__len__"):
+            raise TypeError(f"{key}: give a list of values, got {values!r}")
+        if len(values) == 0:
+            raise CampaignError(f"{key}: no values to run")
+    check_campaign_size(math.prod(len(values) for values in params.values()))
     keys = list(params)
     return [dict(zip(keys, combo)) for combo in itertools.product(*(params[k] for k in keys))]
 

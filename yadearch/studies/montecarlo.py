@@ -15,12 +15,12 @@ import pandas as pd
 from yadearch.analysis.samples import BAND, MEDIAN_CONFIDENCE, du_statistics, hinge_frequencies
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.errors import RunFolderError
+from yadearch.errors import CampaignError, RunFolderError
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.results.rundir import read_summary
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool
-from yadearch.studies.grid import RUN_COLUMN, grid, run_tag
+from yadearch.studies.grid import RUN_COLUMN, check_campaign_size, grid, run_tag
 
 SEED_KEY = "imperfections.seed"
 MONTECARLO_FILE = "montecarlo.csv"
@@ -31,7 +31,8 @@ def sample_rows(samples: int, seed: int, axes: dict[str, list[Any]] | None = Non
     """The campaign's rows: `samples` seeds from `seed` at every combination of the swept `axes`,
     named `<amplitudes>_s<seed>` (or `s<seed>` without axes)."""
     if samples < 1:
-        raise ValueError(f"samples must be >= 1, got {samples}")
+        raise CampaignError(f"samples must be >= 1, got {samples}")
+    check_campaign_size(samples * (len(grid(axes)) if axes else 1))
     rows = []
     for level in (grid(axes) if axes else [{}]):
         tag = run_tag(level) if level else ""
