@@ -87,3 +87,20 @@ def test_the_static_engine_runs_through_the_api_and_says_so(tmp_path):
     assert res.du_mm == pytest.approx(122.21, rel=0.01)
     assert [str(h) for h in res.hinges] == ["1E", "2I", "6E", "10E"]
     assert (res.loading_curve()["min_stiffness_N_per_m"].dropna() > 0).all()
+
+
+@pytest.mark.parametrize("call, error, message", [
+    (lambda out: ya.sweep("set2", out, kn_N_per_mm3=[]), ValueError, "kn_N_per_mm3: no values to run"),
+    (lambda out: ya.sweep("set2", out, kn_N_per_mm3=5.2), TypeError, "kn_N_per_mm3: give a list of values, got 5.2"),
+    (lambda out: ya.sweep("set2", out, kn_N_per_mm3=[1.0, -1.0]), ValueError,
+     r"run kn-1: kn_N_per_mm3 must be in \(0, 100000\], got -1.0; nothing was run"),
+    (lambda out: ya.montecarlo("set2", out, samples=0), ValueError, "samples must be >= 1, got 0"),
+    (lambda out: ya.montecarlo("set2", out, samples=3, face_bump_sd_mm=[-1.0]), ValueError,
+     r"face_bump_sd_mm must be in \[0, 1000\], got -1.0"),
+    (lambda out: ya.sensitivity("set2", out, base_points=12), ValueError, "base_points must be a power of two"),
+    (lambda out: ya.capacity("set2", out, step_deg=7), ValueError, "step_deg must divide 180"),
+])
+def test_campaigns_refuse_bad_arguments_before_anything_runs(call, error, message, tmp_path):
+    with pytest.raises(error, match=message):
+        call(tmp_path / "out")
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").rglob("summary.json"))

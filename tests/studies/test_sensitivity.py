@@ -10,7 +10,7 @@ import pandas as pd
 import pytest
 
 import yadearch as ya
-from yadearch.errors import CaseError, YadearchError
+from yadearch.errors import CampaignError, CaseError
 from yadearch.studies.grid import RUN_COLUMN
 from yadearch.studies.sensitivity import (
     PAPER_FACTORS,
@@ -64,13 +64,13 @@ def test_blocks_with_a_failed_run_are_left_out_of_the_estimate():
 
 
 def test_bad_designs_are_refused_in_one_line_naming_the_value():
-    with pytest.raises(YadearchError, match="base_points must be a power of two >= 8, got 100"):
+    with pytest.raises(CampaignError, match="base_points must be a power of two >= 8, got 100"):
         check_base_points(100)
-    with pytest.raises(YadearchError, match="NAME=LOW:HIGH"):
+    with pytest.raises(CampaignError, match="NAME=LOW:HIGH"):
         parse_factor("kn_N_per_mm3=0.25")
     with pytest.raises(CaseError, match="unknown parameter 'stiffness'"):
         parse_factor("stiffness=1:2")
-    with pytest.raises(YadearchError, match="low 3 must be below high 2"):
+    with pytest.raises(CampaignError, match="low 3 must be below high 2"):
         check_factors(ya.preset("set2"), (parse_factor("friction_deg=3:2"),))
     with pytest.raises(CaseError, match="friction_deg"):
         check_factors(ya.preset("set2"), (parse_factor("friction_deg=30:95"),))

@@ -16,7 +16,7 @@ import numpy as np
 import pandas as pd
 
 from yadearch.case.config import ArchCase
-from yadearch.errors import YadearchError
+from yadearch.errors import CampaignError
 from yadearch.studies.grid import RUN_COLUMN, check_parameter, qualified_name, round_sig
 
 SAMPLE_SEED = 20261126  # scrambling of the Sobol sequence (fixed: the same sample on every machine)
@@ -82,12 +82,12 @@ def parse_factor(text: str) -> Factor:
     name, _, spec = text.partition("=")
     parts = spec.split(":")
     if not name.strip() or len(parts) not in (2, 3) or (len(parts) == 3 and parts[2] not in ("log", "int")):
-        raise YadearchError(f"factor {text!r} must read NAME=LOW:HIGH, NAME=LOW:HIGH:log or NAME=LOW:HIGH:int")
+        raise CampaignError(f"factor {text!r} must read NAME=LOW:HIGH, NAME=LOW:HIGH:log or NAME=LOW:HIGH:int")
     check_parameter(name.strip())
     try:
         low, high = float(parts[0]), float(parts[1])
     except ValueError:
-        raise YadearchError(f"factor {text!r}: LOW and HIGH must be numbers") from None
+        raise CampaignError(f"factor {text!r}: LOW and HIGH must be numbers") from None
     key = qualified_name(name.strip())
     kind = parts[2] if len(parts) == 3 else ""
     return Factor(key, key.split(".")[-1], low, high, log=kind == "log", integer=kind == "int",
@@ -98,13 +98,13 @@ def check_factors(base: ArchCase, factors: tuple[Factor, ...]) -> None:
     """Refuse factors whose range is empty or whose end values the case does not accept, before
     anything runs (one line naming the factor)."""
     if len({f.key for f in factors}) != len(factors):
-        raise YadearchError("sensitivity factors: a parameter is listed twice")
+        raise CampaignError("sensitivity factors: a parameter is listed twice")
     for factor in factors:
         if not factor.low < factor.high:
-            raise YadearchError(f"sensitivity factor {factor.key}: low {factor.low:g} must be below high "
+            raise CampaignError(f"sensitivity factor {factor.key}: low {factor.low:g} must be below high "
                                 f"{factor.high:g}")
         if factor.log and factor.low <= 0:
-            raise YadearchError(f"sensitivity factor {factor.key}: a log range needs low > 0, got {factor.low:g}")
+            raise CampaignError(f"sensitivity factor {factor.key}: a log range needs low > 0, got {factor.low:g}")
         for end in (factor.low, factor.high):
             base.with_overrides({factor.key: factor.value(0.0) if end == factor.low else factor.value(1.0)})
 
@@ -146,7 +146,7 @@ def salib_problem(factors: tuple[Factor, ...]) -> dict[str, Any]:
 def check_base_points(base_points: int) -> None:
     """Saltelli's scheme needs a power of two of base points (Sobol sequences balance only there)."""
     if base_points < MIN_BASE_POINTS or base_points & (base_points - 1):
-        raise YadearchError(f"base_points must be a power of two >= {MIN_BASE_POINTS}, got {base_points}")
+        raise CampaignError(f"base_points must be a power of two >= {MIN_BASE_POINTS}, got {base_points}")
 
 
 def sobol_rows(factors: tuple[Factor, ...], base_points: int) -> list[dict[str, Any]]:
@@ -169,7 +169,7 @@ def sobol_indices(factors: tuple[Factor, ...], du_mm: np.ndarray, base_points: i
     values = np.asarray(du_mm, dtype=float)[:base_points * block].reshape(-1, block)
     complete = values[np.isfinite(values).all(axis=1)]
     if len(complete) < MIN_ESTIMATE_POINTS:
-        raise YadearchError(f"only {len(complete)} of {len(values)} base points have every run done")
+        raise CampaignError(f"only {len(complete)} of {len(values)} base points have every run done")
     result = sobol_analyze.analyze(salib_problem(factors), complete.ravel(), calc_second_order=False,
                                    num_resamples=BOOTSTRAP_RESAMPLES, conf_level=CONFIDENCE, seed=SAMPLE_SEED)
     return pd.DataFrame({"base_points": base_points, "used_points": len(complete), "factor": [f.name for f in factors],
