@@ -15,6 +15,7 @@ from yadearch.case.config import ArchCase
 from yadearch.case.plan import plan_run
 from yadearch.engine.yade_env import YADE_PY_DIRS
 from yadearch.errors import RunFailedError, RunInterruptedError, YadeMissingError
+from yadearch.results.lock import folder_lock
 from yadearch.results.rundir import CASE_FILE, LOG_FILE, STAGING_PREFIX, is_complete, staging_folder
 from yadearch.statics.pool import run_static, stop_workers
 
@@ -83,6 +84,12 @@ def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
     if not static:
         check_yade_installed()
     out = Path(out)
+    with folder_lock(out):
+        return _run_locked(case, out, static, timeout_s, quiet)
+
+
+def _run_locked(case: ArchCase, out: Path, static: bool, timeout_s: float | None, quiet: bool) -> Path:
+    """`run_case_process` once it holds the folder's lock."""
     staging = staging_folder(out)
     shutil.rmtree(staging, ignore_errors=True)
     staging.mkdir(parents=True)

@@ -26,6 +26,7 @@ from yadearch.case.plan import plan_run
 from yadearch.engine.process import STATIC_ENGINE, check_yade_installed, run_case_process
 from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, YadearchError
 from yadearch.model.hinges import PAPER_LABELS, paper_labels
+from yadearch.results.lock import folder_lock
 from yadearch.results.rundir import SUMMARY_FILE, case_differences, hinge_list, is_complete
 from yadearch.studies.executors import Pool
 from yadearch.studies.grid import RUN_COLUMN, check_campaign_size, check_parameter, run_tag
@@ -149,6 +150,13 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
     inject stand-ins)."""
     out = Path(out)
     specs = plan(base, rows, out)
+    with folder_lock(out, "campaign"):
+        return _run_planned(specs, out, pool, timeout_s, progress, task, retry_failed)
+
+
+def _run_planned(specs: list[RunSpec], out: Path, pool: Pool, timeout_s: float | None, progress: bool,
+                 task: Task, retry_failed: bool) -> pd.DataFrame:
+    """`run_campaign` once its runs are planned and it holds the campaign folder's lock."""
     out.mkdir(parents=True, exist_ok=True)
     remove_stale_temporaries(out)  # left by a campaign killed while it wrote its tables
     write_run_table(specs, out)
@@ -161,10 +169,10 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
         (spec.folder / FAILED_FILE).unlink(missing_ok=True)
     if task is execute and any(s.case.numerics.engine != STATIC_ENGINE for s in todo):
         check_yade_installed()  # a campaign of static runs needs no YADE
-    finished = sum(1 for s in specs if is_complete(s.folder))
+    complete = sum(1 for s in specs if is_complete(s.folder))
     bar = tqdm(total=len(specs), initial=len(specs) - len(todo), unit="run", disable=not progress,
                desc=out.name, dynamic_ncols=True)
-    counts = {"done": finished, "failed": len(specs) - len(todo) - finished, "interrupted": 0}
+    counts = {"done": complete, "failed": len(specs) - len(todo) - complete, "interrupted": 0}
     futures: dict[Future, RunSpec] = {}
     started = time.time()
     try:
