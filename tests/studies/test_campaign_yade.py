@@ -160,3 +160,27 @@ def test_a_sigkilled_campaign_leaves_no_orphan_and_resumes_where_it_stopped(tmp_
     assert {p: p.stat().st_mtime_ns for p in (out / first).iterdir()} == finished
     results = pd.read_csv(out / RESULTS_FILE)
     assert results["status"].tolist() == ["done", "done"] and results["du_mm"].notna().all()
+
+
+def test_ctrl_c_at_a_terminal_interrupts_a_run_instead_of_failing_it(tmp_path):
+    """SIGINT to the whole process group of `yadearch run`, as a terminal's Ctrl-C sends it, while
+    YADE runs: the run ends as interrupted (the simulation stopped by SIGTERM from its parent, its
+    log says so), not as failed (before: "RuntimeError: release unlocked lock")."""
+    import os
+    import signal
+    import time
+
+    out = tmp_path / "run"
+    argv = [sys.executable, "-m", "yadearch.cli", "run", *COARSE, "--kn", "0.1", "--out", str(out)]
+    run = subprocess.Popen(argv, cwd=REPO, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                           start_new_session=True)  # a group of its own, as a terminal's foreground job
+    log = tmp_path / ".run.partial" / "run.log"
+    deadline = time.time() + 120
+    while not log.is_file() and time.time() < deadline:
+        time.sleep(0.1)
+    time.sleep(3.0)  # inside YADE now (the run takes ~10 s)
+    os.killpg(run.pid, signal.SIGINT)
+    _, stderr = run.communicate(timeout=60)
+    assert run.returncode == 1 and "was interrupted" in stderr and "run it again to resume" in stderr, stderr
+    assert "INTERRUPTED: SIGTERM" in (out / "run.log").read_text()
+    assert not (out / "summary.json").exists()

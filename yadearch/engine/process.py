@@ -39,8 +39,10 @@ def stop_children() -> None:
 def _run_child(cmd: list[str], env: dict[str, str], timeout_s: float | None, quiet: bool) -> tuple[int, str]:
     """Run `cmd` to its end (killed after `timeout_s`: TimeoutExpired), known to `stop_children`
     meanwhile: its exit code and standard error."""
+    # its own session: a terminal's Ctrl-C (SIGINT to the foreground group) reaches this process only,
+    # which stops the simulation with SIGTERM, the signal it ends on cleanly, as interrupted
     proc = subprocess.Popen(cmd, env=env, text=True, stdout=subprocess.DEVNULL if quiet else None,
-                            stderr=subprocess.PIPE)
+                            stderr=subprocess.PIPE, start_new_session=True)
     with _children_lock:
         _children.add(proc)
     try:
@@ -49,6 +51,9 @@ def _run_child(cmd: list[str], env: dict[str, str], timeout_s: float | None, qui
         proc.kill()
         proc.communicate()
         raise
+    except KeyboardInterrupt:
+        proc.terminate()
+        _, stderr = proc.communicate()
     finally:
         with _children_lock:
             _children.discard(proc)

@@ -32,7 +32,8 @@ def _worker() -> subprocess.Popen:
         pass
     env = dict(os.environ, OMP_NUM_THREADS="1")  # one BLAS thread a worker: the cores go to the workers
     worker = subprocess.Popen([sys.executable, "-m", "yadearch.statics.pool"], stdin=subprocess.PIPE,
-                              stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, env=env)
+                              stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, env=env,
+                              start_new_session=True)  # a terminal's Ctrl-C stops the caller, which stops it
     with _lock:
         _all.add(worker)
     return worker
@@ -59,8 +60,8 @@ def run_static(case_file: Path, staging: Path, timeout_s: float | None) -> tuple
         worker.stdin.write(json.dumps([str(case_file), str(staging)]) + "\n")
         worker.stdin.flush()
         line = _answer(worker, timeout_s)
-    except subprocess.TimeoutExpired:
-        _stop(worker)
+    except (subprocess.TimeoutExpired, KeyboardInterrupt):
+        _stop(worker)  # nothing may go on writing the staging folder once its caller has stopped
         raise
     except (BrokenPipeError, OSError):
         _stop(worker)
