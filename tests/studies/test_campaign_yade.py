@@ -165,12 +165,15 @@ def test_a_sigkilled_campaign_leaves_no_orphan_and_resumes_where_it_stopped(tmp_
 def test_ctrl_c_at_a_terminal_interrupts_a_run_instead_of_failing_it(tmp_path):
     """SIGINT to the whole process group of `yadearch run`, as a terminal's Ctrl-C sends it, while
     YADE runs: the run ends as interrupted (the simulation stopped by SIGTERM from its parent, its
-    log says so), not as failed (before: "RuntimeError: release unlocked lock")."""
+    log says so), not as failed (before: "RuntimeError: release unlocked lock"); and leaves no
+    yade-XXXXXX folder in the system's temporary directory."""
     import os
     import signal
+    import tempfile
     import time
 
     out = tmp_path / "run"
+    before = set(Path(tempfile.gettempdir()).glob("yade-*"))
     argv = [sys.executable, "-m", "yadearch.cli", "run", *COARSE, "--kn", "0.1", "--out", str(out)]
     run = subprocess.Popen(argv, cwd=REPO, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
                            start_new_session=True)  # a group of its own, as a terminal's foreground job
@@ -184,3 +187,5 @@ def test_ctrl_c_at_a_terminal_interrupts_a_run_instead_of_failing_it(tmp_path):
     assert run.returncode == 1 and "was interrupted" in stderr and "run it again to resume" in stderr, stderr
     assert "INTERRUPTED: SIGTERM" in (out / "run.log").read_text()
     assert not (out / "summary.json").exists()
+    assert set(Path(tempfile.gettempdir()).glob("yade-*")) == before  # YADE's temporary folder went with the run
+    assert not (out / ".yade_scratch").exists()

@@ -13,6 +13,7 @@ from pathlib import Path
 
 from yadearch.case.config import ArchCase
 from yadearch.case.plan import plan_run
+from yadearch.engine.simulate import SCRATCH_RECORD
 from yadearch.engine.yade_env import YADE_PY_DIRS
 from yadearch.errors import RunFailedError, RunInterruptedError, YadeMissingError
 from yadearch.results.lock import folder_lock
@@ -103,8 +104,11 @@ def _run_locked(case: ArchCase, out: Path, static: bool, timeout_s: float | None
     env = dict(os.environ, OMP_NUM_THREADS=str(case.numerics.threads))
     cmd = [sys.executable, "-m", "yadearch.engine.simulate", str(case_file), str(staging)]
     try:
-        returncode, stderr = run_static(case_file, staging, timeout_s) if static else \
-            _run_child(cmd, env, timeout_s, quiet)
+        try:
+            returncode, stderr = run_static(case_file, staging, timeout_s) if static else \
+                _run_child(cmd, env, timeout_s, quiet)
+        finally:
+            _remove_scratch(staging)
     except subprocess.TimeoutExpired:
         where = _keep_failed(staging, out)
         raise RunFailedError(f"run {case.name!r} timed out after {timeout_s:.0f} s "
@@ -121,6 +125,16 @@ def _run_locked(case: ArchCase, out: Path, static: bool, timeout_s: float | None
         raise RunFailedError(f"run {case.name!r} failed: {reason} (see {where / LOG_FILE})")
     _swap_into_place(staging, out)
     return out
+
+
+def _remove_scratch(staging: Path) -> None:
+    """Remove the temporary folder YADE made for the simulation (a killed one could not)."""
+    record = staging / SCRATCH_RECORD
+    if record.is_file():
+        scratch = Path(record.read_text().strip())
+        if scratch.name.startswith("yade-"):
+            shutil.rmtree(scratch, ignore_errors=True)
+        record.unlink()
 
 
 def _keep_failed(staging: Path, out: Path) -> Path:

@@ -20,6 +20,7 @@ from yadearch.results.provenance import provenance
 from yadearch.results.rundir import LOG_FILE, final_folder, hinge_list, write_run
 
 PR_SET_PDEATHSIG = 1  # linux/prctl.h
+SCRATCH_RECORD = ".yade_scratch"  # in the staging folder: where YADE's temporary folder is
 INTERRUPTED_EXIT = 130  # the shell's code for a run stopped by a signal, not by a failure
 
 
@@ -27,7 +28,7 @@ def simulate(case: ArchCase, out: Path) -> dict:
     """Run `case` to collapse and write its run folder to `out`; returns the summary."""
     from yadearch.engine.loading import criterion_text
     from yadearch.engine.runner import Runner
-    from yadearch.engine.yade_env import import_yade
+    from yadearch.engine.yade_env import import_yade, scratch_folder
 
     out.mkdir(parents=True, exist_ok=True)
     log_file = (out / LOG_FILE).open("w")
@@ -41,6 +42,7 @@ def simulate(case: ArchCase, out: Path) -> dict:
     import_yade(case.numerics.threads)
     import yade.config
 
+    (out / SCRATCH_RECORD).write_text(f"{scratch_folder()}\n")  # the parent removes it if this process is killed
     log(f"[{case.name}] kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
         f"support speed={case.settlement_speed_mm_per_s:.4g} mm/s, damping={case.numerics.damping}, "
         f"contacts={case.numerics.contact_model}")

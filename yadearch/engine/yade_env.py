@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+import atexit
 import contextlib
 import os
+import shutil
+import signal
 import sys
 from collections.abc import Iterator
+from pathlib import Path
 from types import ModuleType
 
 from yadearch.errors import YadeMissingError
@@ -22,18 +26,32 @@ def import_yade(threads: int = 1) -> ModuleType:
     for path in YADE_PY_DIRS:
         if os.path.isdir(path) and path not in sys.path:
             sys.path.insert(0, path)
+    # YADE makes /tmp/yade-XXXXXX at import and never removes it: a signal is held until its removal at
+    # exit is registered, so that no interrupted import leaves one behind
+    held = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
     try:
         with _stdout_silenced():  # YADE prints "Using python version: ..." to stdout at import
             import yade  # noqa: F401  (registers the C++ classes)
             import yade.log
+        atexit.register(shutil.rmtree, scratch_folder(), ignore_errors=True)
     except ImportError as exc:
         raise YadeMissingError(
             f"YADE is not importable from {sys.executable} ({exc}); on Debian run "
             "`sudo apt-get install -y yade` and use /usr/bin/python3 or a venv with "
             "--system-site-packages (see README)"
         ) from None
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, held)
     yade.log.setLevel("Polyhedra_support.cpp", yade.log.ERROR)
     return yade
+
+
+def scratch_folder() -> Path:
+    """The temporary folder YADE made for this process (/tmp/yade-XXXXXX, fixed in libyade, not
+    TMPDIR), which YADE leaves behind: removed at exit, or by the parent of a killed simulation."""
+    from yade import O
+
+    return Path(O.tmpFilename()).parent
 
 
 @contextlib.contextmanager
