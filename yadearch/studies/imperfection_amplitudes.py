@@ -47,7 +47,7 @@ class Kind:
 # (docs/validation.md gives the measured sizes these are read against).
 KINDS = (
     Kind("bump", "faces not flat (out-of-flatness, random per joint)", {"face_bump_sd_mm": 1.0},
-         (0.05, 0.1, 0.14, 0.18, 0.22), "mm (sd)"),
+         (0.05, 0.1, 0.14, 0.18, 0.22, 0.26), "mm (sd)"),
     Kind("edge", "worn edges (rounded, size varying between edges by a quarter)",
          {"edge_radius_mm": 1.0, "edge_radius_sd_mm": 0.25}, (1.0, 2.0, 2.5, 3.0, 4.0), "mm (mean radius)"),
     Kind("angle", "faces not parallel (random per joint)", {"face_angle_sd_mrad": 1.0},
