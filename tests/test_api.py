@@ -104,3 +104,12 @@ def test_campaigns_refuse_bad_arguments_before_anything_runs(call, error, messag
     with pytest.raises(error, match=message):
         call(tmp_path / "out")
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").rglob("summary.json"))
+
+
+def test_an_arch_that_cannot_stand_is_told_with_the_parameters_that_decide_it(tmp_path):
+    from yadearch.errors import RunFailedError
+
+    case = ya.preset("set2").with_overrides({"n_voussoirs": 9, "friction_deg": 0.0})
+    with pytest.raises(RunFailedError, match=r"does not stand under its own weight .*thickness_mm 24, "
+                       r"internal_radius_mm 300, embrace_deg 125, n_voussoirs 9, friction_deg 0, kn 5.2 N/mm3"):
+        ya.run(case, out=tmp_path / "run", engine="static")

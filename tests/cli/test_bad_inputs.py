@@ -58,6 +58,7 @@ def probes() -> list[list[str]]:
               ["calibrate", "--preset", "set1", "--target-du", "48", "--kn-min", "5", "--kn-max", "1",
                "--out", "OUT/c.json"],
               ["report", "OUT/not-a-run", "--out", "OUT/r"], ["limit", "--set", "friction_deg=95"],
+              ["run", "--preset", "set2", "--engine", "static", "--out", "OUT/" + "x" * 250],
               ["sensitivity", "--preset", "set2", "--base-points", "100", "--out", "OUT/s"],
               ["sensitivity", "--preset", "set2", "--factor", "kn_N_per_mm3=1", "--out", "OUT/s"],
               ["sensitivity", "--preset", "set2", "--factor", "nothing=1:2", "--out", "OUT/s"],
@@ -94,7 +95,7 @@ def test_there_are_over_a_hundred_probes():
 def test_a_bad_input_ends_in_one_line_and_exit_code_1(argv, tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(tmp_path)
     argv = [a.replace("OUT", str(tmp_path / "out")) for a in argv]
-    if argv[0] == "run":
+    if argv[0] == "run" and "--out" not in argv:
         argv += ["--out", str(tmp_path / "out" / "run")]
     code = main(argv)
     err = capsys.readouterr().err.strip()
@@ -154,3 +155,17 @@ def test_any_toml_text_is_a_case_or_one_clean_error(text):
 def test_the_whole_studied_kn_range_fits_the_default_step_budget(kn):
     plan = plan_run(case_from_dict({}).replace(kn_N_per_mm3=kn))
     assert plan.worst_case_steps < case_from_dict({}).numerics.max_steps
+
+
+def test_limit_says_when_kn_plays_no_part(tmp_path, capsys, monkeypatch):
+    """The note comes before the analysis (stood in for here: the message is what is tested)."""
+    from yadearch.solve import limit
+
+    def analysis_started(*args, **kwargs):
+        raise YadearchError("analysis started")
+    monkeypatch.setattr(limit, "limit_analysis", analysis_started)
+    assert main(["limit", "--preset", "set2", "--kn", "100", "--out", str(tmp_path)]) == 1
+    err = capsys.readouterr().err
+    assert err.startswith("note: --kn 100 plays no part in the rigid-block analysis (rigid joints); add --compliant")
+    assert main(["limit", "--preset", "set2", "--kn", "100", "--compliant", "--out", str(tmp_path)]) == 1
+    assert "note" not in capsys.readouterr().err

@@ -122,3 +122,15 @@ def test_stale_temporaries_of_killed_writes_are_removed_and_nothing_else(tmp_pat
     kept[2].write_text("mine")
     assert remove_stale_temporaries(tmp_path) == [stale]
     assert not stale.exists() and all(p.exists() for p in kept)
+
+
+def test_a_table_cut_short_after_the_run_is_an_error_not_half_a_table(tmp_path):
+    from synthetic_runs import make_run
+
+    make_run(tmp_path / "run")
+    joints = tmp_path / "run" / "joints.csv"
+    assert len(ya.open_run(tmp_path / "run").joints) > 100
+    lines = joints.read_text().splitlines(keepends=True)
+    joints.write_text("".join(lines[: len(lines) // 2]))  # a copy that stopped half-way
+    with pytest.raises(RunFolderError, match=r"joints.csv has \d+ rows where the run wrote \d+: it was cut short"):
+        ya.open_run(tmp_path / "run").joints

@@ -33,6 +33,21 @@ class ContactStiffness:
         return 2.0 * self.kn
 
 
+def standing_parameters(case: ArchCase) -> str:
+    """The parameters that decide whether an arch stands under its own weight, for the message of
+    one that does not: the ring's proportions, the friction, the joints' stiffness and any defects."""
+    g = case.geometry
+    terms = [f"{g.shape} arch, thickness_mm {g.thickness_mm:g}", f"n_voussoirs {g.n_voussoirs}"]
+    if g.shape == "segmental":
+        terms.insert(1, f"internal_radius_mm {g.internal_radius_mm:g}, embrace_deg {g.embrace_deg:g}")
+    else:
+        terms.insert(1, f"span_mm {g.span_mm:g}, rise_mm {g.rise_mm:g}")
+    terms += [f"friction_deg {case.material.friction_deg:g}", f"kn {case.interface.kn_N_per_mm3:g} N/mm3"]
+    defects = [f"{name} {value:g}" for name, value in vars(case.imperfections).items()
+               if isinstance(value, float) and value != 0.0]
+    return ", ".join(terms + defects)
+
+
 def effective_kn_N_per_mm3(case: ArchCase, voussoir_width_mm: float) -> float:
     """Interface kn, optionally in series with the blocks' axial stiffness E / width.
 

@@ -119,6 +119,9 @@ def limit(preset_name: str | None, case_file: str | None, kn: float | None, sett
     from yadearch.solve.limit_result import write_result_json
 
     case = resolve_case(preset_name, case_file, kn, settings)
+    if kn is not None and not compliant:
+        click.echo(f"note: --kn {kn:g} plays no part in the rigid-block analysis (rigid joints); add --compliant "
+                   "for the du a run at that kn should find", err=True)
     result = limit_analysis(case, max_snap_mm=max_snap_mm, compliant=compliant)
     name = f"{case.name}_compliant" if compliant else case.name
     path = write_result_json(result, case, Path(out) / f"{name}.json")

@@ -15,9 +15,9 @@ from yadearch.case.config import ArchCase
 from yadearch.case.plan import plan_run
 from yadearch.engine.simulate import SCRATCH_RECORD
 from yadearch.engine.yade_env import YADE_PY_DIRS
-from yadearch.errors import RunFailedError, RunInterruptedError, YadeMissingError
-from yadearch.results.lock import folder_lock
-from yadearch.results.rundir import CASE_FILE, LOG_FILE, STAGING_PREFIX, is_complete, staging_folder
+from yadearch.errors import RunFailedError, RunInterruptedError, YadearchError, YadeMissingError
+from yadearch.results.lock import LOCK_SUFFIX, folder_lock
+from yadearch.results.rundir import CASE_FILE, LOG_FILE, STAGING_PREFIX, STAGING_SUFFIX, is_complete, staging_folder
 from yadearch.statics.pool import run_static, stop_workers
 
 STATIC_ENGINE = "static"  # numerics.engine of a run solved by the static engine (no YADE)
@@ -90,8 +90,19 @@ def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
     if not static:
         check_yade_installed()
     out = Path(out)
+    check_name_length(out)
     with folder_lock(out):
         return _run_locked(case, out, static, timeout_s, quiet)
+
+
+def check_name_length(out: Path) -> None:
+    """Refuse a run folder name too long for the names a run derives from it (staging folder, lock)."""
+    extra = max(len(STAGING_PREFIX) + len(suffix) for suffix in (STAGING_SUFFIX, REPLACED_SUFFIX, LOCK_SUFFIX))
+    parent = next((p for p in (out.parent, *out.parent.parents) if p.is_dir()), Path("."))
+    limit = os.pathconf(parent, "PC_NAME_MAX") - extra
+    if len(out.name) > limit:
+        raise YadearchError(f"run folder name {out.name[:20]}... is {len(out.name)} characters; at most {limit} (the "
+                            f"file system's {limit + extra} less {extra} for the run's staging folder)")
 
 
 def _run_locked(case: ArchCase, out: Path, static: bool, timeout_s: float | None, quiet: bool) -> Path:
@@ -120,7 +131,7 @@ def _run_locked(case: ArchCase, out: Path, static: bool, timeout_s: float | None
     if returncode != 0 or not is_complete(staging):
         lines = [line for line in stderr.splitlines()
                  if line.strip() and not line.startswith(("Using python", "<WARNING>"))]
-        reason = lines[-1] if lines else exit_reason(returncode)
+        reason = lines[-1].removeprefix("error: ") if lines else exit_reason(returncode)
         where = _keep_failed(staging, out)
         raise RunFailedError(f"run {case.name!r} failed: {reason} (see {where / LOG_FILE})")
     _swap_into_place(staging, out)

@@ -16,6 +16,7 @@ from collections.abc import Callable
 import numpy as np
 
 from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import standing_parameters
 from yadearch.case.movement import case_movement, support_acceleration_mm_per_s2
 from yadearch.engine.driver import SupportDriver
 from yadearch.engine.loading import EquilibriumPath
@@ -164,7 +165,7 @@ class Runner:
             sag = float(np.max(np.abs(body_states(self.scene)[0] - self.scene.pos0)))
             if sag > units.mm(SELFWEIGHT_COLLAPSE_MM):
                 raise RunFailedError(f"{CANNOT_STAND}: a block fell "
-                                     f"{units.to_mm(sag):.0f} mm (kn {self.case.interface.kn_N_per_mm3} N/mm3)")
+                                     f"{units.to_mm(sag):.0f} mm ({standing_parameters(self.case)})")
             if fraction >= 1.0 and unbalanced < self.num.equilibrium_tolerance \
                     and O.iter - start > ramp_steps + 10 * CHECK_EVERY_STEPS \
                     and self.recorder.voussoir_speeds().max() < units.mm(self.num.still_speed_mm_per_s) \

@@ -18,6 +18,7 @@ from yadearch.errors import RunFolderError
 CASE_FILE = "case.toml"
 SERIES_FILE = "series.csv"
 JOINTS_FILE = "joints.csv"
+TABLE_ROWS_KEY = "table_rows"  # summary.json: the rows each table had when it was written
 STIFFNESS_COLUMN = "min_stiffness_N_per_m"  # series.csv: an equilibrium state's stability (model.stability)
 IMPERFECTIONS_FILE = "imperfections.csv"  # the defects drawn for each joint (imperfect arches only)
 SNAPSHOTS_FILE = "snapshots.json"
@@ -72,7 +73,8 @@ def write_run(out: Path, case_toml: str, series: list[dict], joints: list[dict],
     for name, rows in ((SERIES_FILE, series), (JOINTS_FILE, joints)):
         write_atomically(out / name, partial(pd.DataFrame(rows).to_csv, index=False, float_format="%.8g"))
     write_text_atomically(out / SNAPSHOTS_FILE, json.dumps(snapshots, indent=1, default=_json_default))
-    marked = {**summary, "schema_version": SCHEMA_VERSION, "complete": True}
+    marked = {**summary, TABLE_ROWS_KEY: {SERIES_FILE: len(series), JOINTS_FILE: len(joints)},
+              "schema_version": SCHEMA_VERSION, "complete": True}
     write_text_atomically(out / SUMMARY_FILE, json.dumps(marked, indent=2, default=_json_default) + "\n")
 
 
@@ -148,7 +150,7 @@ def read_run(path: str | Path) -> RunFolder:
     path = Path(path)
     summary = read_summary(path)
     try:
-        return RunFolder(
+        folder = RunFolder(
             path=path,
             case=tomllib.loads((path / CASE_FILE).read_text()),
             series=pd.read_csv(path / SERIES_FILE),
@@ -158,3 +160,9 @@ def read_run(path: str | Path) -> RunFolder:
         )
     except (OSError, ValueError, tomllib.TOMLDecodeError) as exc:
         raise RunFolderError(f"{path}: a file of the run folder cannot be read ({exc})") from None
+    for name, table in ((SERIES_FILE, folder.series), (JOINTS_FILE, folder.joints)):
+        written = (summary.get(TABLE_ROWS_KEY) or {}).get(name)  # none in runs written before the counts
+        if written is not None and len(table) != written:
+            raise RunFolderError(f"{path / name} has {len(table)} rows where the run wrote {written}: it was cut short "
+                                 "or changed; run the case again")
+    return folder

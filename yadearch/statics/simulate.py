@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from yadearch.case.config import ArchCase, load_case
+from yadearch.case.mechanics import standing_parameters
 from yadearch.case.movement import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
@@ -109,7 +110,7 @@ def _selfweight(case: ArchCase, loading: StaticLoading, records: StaticRecords,
     try:
         state = loading.selfweight()
     except StaticEngineError as exc:
-        raise YadearchError(f"{exc} (kn {case.interface.kn_N_per_mm3} N/mm3)") from None
+        raise YadearchError(f"{exc} ({standing_parameters(case)})") from None
     records.add(state, label="selfweight")
     row = records.series[-1]
     weight = float(loading.arch.weight[1:-1].sum())
