@@ -133,4 +133,4 @@ def test_a_table_cut_short_after_the_run_is_an_error_not_half_a_table(tmp_path):
     lines = joints.read_text().splitlines(keepends=True)
     joints.write_text("".join(lines[: len(lines) // 2]))  # a copy that stopped half-way
     with pytest.raises(RunFolderError, match=r"joints.csv has \d+ rows where the run wrote \d+: it was cut short"):
-        ya.open_run(tmp_path / "run").joints
+        _ = ya.open_run(tmp_path / "run").joints
