@@ -20,7 +20,7 @@ from yadearch.case.config import ArchCase
 from yadearch.case.config import preset as _preset
 from yadearch.errors import RunFolderError
 from yadearch.model.hinges import paper_labels
-from yadearch.results.rundir import RunFolder, case_differences, is_complete, read_run
+from yadearch.results.rundir import FIGURES_DIR, RunFolder, case_differences, is_complete, read_run
 
 DEFAULT_RUNS_DIR = Path("runs")
 
@@ -118,7 +118,7 @@ class RunResult:
         from yadearch.analysis import analyse_run
         from yadearch.plotting.run_figures import write_figures
 
-        folder = Path(out) if out is not None else self.path / "figures"
+        folder = Path(out) if out is not None else self.path / FIGURES_DIR
         return write_figures(self.folder, analyse_run(self.folder), folder)
 
     def __repr__(self) -> str:

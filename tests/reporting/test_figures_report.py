@@ -92,7 +92,7 @@ def test_a_run_matching_neither_set_gets_figures_and_its_own_numbers(tmp_path):
     assert "No reference: its name and kn are neither set's" in markdown
     assert "Comparison with the paper" not in markdown
     assert table_row(markdown, "stiff")[3] == f"{summary['du_mm']:.2f}"
-    assert (tmp_path / "out" / "k1" / "collapse.png").stat().st_size > 0  # figures beside the run folder name
+    assert (tmp_path / "out" / "k1" / "figures" / "collapse.png").stat().st_size > 0  # as in a run folder
 
 
 def test_a_run_of_another_arch_is_not_compared_with_the_paper_whatever_its_name(tmp_path):

@@ -20,7 +20,7 @@ from yadearch.atomic import write_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import as_ran, preset
 from yadearch.plotting.run_figures import write_figures
-from yadearch.results.rundir import RunFolder, hinge_list
+from yadearch.results.rundir import FIGURES_DIR, RunFolder, hinge_list
 
 REPORT_FILE = "report.md"
 HINGE_ROWS = ("hinge_A", "hinge_B", "hinge_C")
@@ -224,8 +224,8 @@ def run_section(reported: ReportedRun) -> list[str]:
     lines += ["### Figures", ""]
     for name in reported.figures:
         caption = CAPTIONS[name] if summary.get("collapsed") or name != "collapse" else FINAL_STATE_CAPTION
-        lines += [f"![{name}]({reported.folder}/{name}.png)", "",
-                  f"*{caption}* ([PDF]({reported.folder}/{name}.pdf))", ""]
+        lines += [f"![{name}]({reported.folder}/{FIGURES_DIR}/{name}.png)", "",
+                  f"*{caption}* ([PDF]({reported.folder}/{FIGURES_DIR}/{name}.pdf))", ""]
     lines += ["### Provenance", "", "| | |", "|---|---|"]
     for key in ("engine", "yade_version", "yadearch_version", "git_revision", "steps", "wall_s"):
         value = engine_of(summary) if key == "engine" else summary.get(key)
@@ -269,7 +269,7 @@ def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
     for run in runs:
         analysis = analyse_run(run)
         folder = _folder_name(run.summary, run.path, taken)
-        figures = write_figures(run, analysis, out / folder)
+        figures = write_figures(run, analysis, out / folder / FIGURES_DIR)
         write_atomically(out / folder / "hinges.csv",
                          lambda tmp: analysis.hinges.to_csv(tmp, index=False, float_format="%.6g"))
         reported.append(ReportedRun(run, analysis, match_reference(run.case, run.summary), folder, list(figures)))

@@ -18,6 +18,7 @@ from yadearch.errors import RunFolderError
 CASE_FILE = "case.toml"
 SERIES_FILE = "series.csv"
 JOINTS_FILE = "joints.csv"
+FIGURES_DIR = "figures"  # a run's figures, inside its run folder (or its report's folder for it)
 TABLE_ROWS_KEY = "table_rows"  # summary.json: the rows each table had when it was written
 STIFFNESS_COLUMN = "min_stiffness_N_per_m"  # series.csv: an equilibrium state's stability (model.stability)
 IMPERFECTIONS_FILE = "imperfections.csv"  # the defects drawn for each joint (imperfect arches only)
