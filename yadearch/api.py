@@ -223,16 +223,17 @@ def montecarlo(case: ArchCase | str, out: str | Path, samples: int, seed: int = 
 
 def calibrate(case: ArchCase | str, target_du_mm: float, out: str | Path, kn_min: float = 0.1,
               kn_max: float = 100.0, tolerance_mm: float = 0.5, jobs: int | None = None,
-              engine: str | None = None):
+              engine: str | None = None, scheduler: str | None = None, timeout_s: float | None = None):
     """The kn at which `case` collapses at `target_du_mm` (within `tolerance_mm`), by bracketing
-    root finding over runs kept in `out`; returns the `Calibration`."""
+    root finding over runs kept in `out` (local processes, or the dask `scheduler`); returns the
+    `Calibration`."""
     from yadearch.studies.calibration import calibrate as calibrate_kn
     from yadearch.studies.calibration import campaign_evaluator
     from yadearch.studies.executors import open_pool
 
-    with open_pool(jobs) as pool:
-        return calibrate_kn(campaign_evaluator(with_engine(case, engine), Path(out), pool), target_du_mm, tolerance_mm,
-                            kn_min, kn_max)
+    with open_pool(jobs, scheduler) as pool:
+        return calibrate_kn(campaign_evaluator(with_engine(case, engine), Path(out), pool, timeout_s), target_du_mm,
+                            tolerance_mm, kn_min, kn_max)
 
 
 def capacity(case: ArchCase | str, out: str | Path, step_deg: float = 15.0, engine: str | None = None,

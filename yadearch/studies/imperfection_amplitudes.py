@@ -72,7 +72,8 @@ PLAUSIBLE = {
     "edge": ((0.5, 2.0), "the paper's 'less sharp corners'; 3 mm would round off a quarter of a 24 mm face"),
     "angle": ((1.0, 8.0), "manual milling to about +-0.1 mm across a 24 mm face is about 4 mrad"),
     "offset": ((0.1, 0.5), "voussoirs placed by hand against their neighbours"),
-    "dimensions": ((0.1, 0.5), "manual milling and the casting's shrinkage (above 0.45 mm the errors, summed along the arch, move a joint half-way to its neighbour: no arch)"),
+    "dimensions": ((0.1, 0.5), "manual milling and the casting's shrinkage (above 0.45 mm the errors, summed "
+                   "along the arch, move a joint half-way to its neighbour: no arch)"),
     "combined": ((1.0, 2.5), "each part within its own plausible range from amplitude 1 to 2.5"),
 }
 
