@@ -14,7 +14,6 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-import time
 from pathlib import Path
 
 import pandas as pd
@@ -39,6 +38,7 @@ from yadearch.studies.imperfection_amplitudes import (
     nearest_level,
     with_levels,
 )
+from yadearch.studies.sessions import campaign_wall_s
 
 BASE_PRESET = "set2"  # the accurate (CNC) voussoirs' kn: the defects alone must bring du down
 SAMPLES = {"bump": 200, "combined": 200}  # seeds a level; the other kinds OTHER_SAMPLES
@@ -107,14 +107,13 @@ def main() -> int:
     for kind in KINDS:
         if args.only and kind.name not in args.only.split(","):
             continue
-        started = time.time()
         static = static_campaign(kind, out, args.samples or SAMPLES.get(kind.name, OTHER_SAMPLES), args.jobs)
         summary = level_summary(kind, static)
         match = matching_amplitude(summary, static, target, perfect)
         level = nearest_level(summary, match.amplitude)
         matches.append({"kind": kind.name, "title": kind.title, "unit": kind.amplitude_unit,
                         "amplitude": match.amplitude, "low": match.low, "high": match.high, "level": level,
-                        "static_wall_s": time.time() - started})
+                        "static_wall_s": campaign_wall_s(out / kind.name / "static") or 0.0})
         hinges.append(hinge_table(static, level, SET1_HINGES).assign(kind=kind.name, level=level))
         summaries.append(summary)
         panels.append((static.assign(du_mm=static["du_stat_mm"], status="done"), LEVEL,

@@ -33,8 +33,8 @@ def amplitudes_markdown(levels: pd.DataFrame, matches: pd.DataFrame, hinges: pd.
              f"`{COMMAND}`.", ""]
     for match in matches.itertuples():
         rows = levels[levels["kind"] == match.kind]
-        lines += [f"## {match.kind}: {match.title}", "", f"Amplitude in {match.unit}; "
-                  f"{_match_text(match, target)}. Static campaign: {match.static_wall_s:.0f} s.", "",
+        lines += [f"## {match.kind}: {match.title}", "", f"Amplitude in {match.unit}; {_match_text(match, target)}. "
+                  f"Static campaign: {match.static_wall_s:.0f} s on two cores (over its sessions).", "",
                   "| amplitude | samples | cannot stand | median du (mm) | median's 95 % interval | 5-95 % band |",
                   "|---|---|---|---|---|---|"]
         lines += [f"| {r[LEVEL]:g} | {r.samples} | {r.cannot_stand} | {r.median_du_mm:.2f} | {r.median_low_mm:.2f}-"
