@@ -97,6 +97,7 @@ def loading_measurement(settle_mm: float, set2_steps: int, contact_model: str) -
     from yadearch.engine.scene import CALLBACK_NAME
     from yadearch.engine.yade_env import import_yade
     from yadearch.model import units
+    from yadearch.model.movement import SupportMotion
 
     import_yade()
     from yade import O
@@ -116,7 +117,9 @@ def loading_measurement(settle_mm: float, set2_steps: int, contact_model: str) -
     runner.close()  # the bare run below is YADE's own O.run, without the runner's stepping gate
     runner.restore(settled)
     O.engines = [e for e in O.engines if getattr(e, "label", "") != DRIVER_LABEL]
-    dx, dy = runner.driver.direction
+    settlement = runner.driver.movement.reference
+    assert isinstance(settlement, SupportMotion)  # the settlement: a translation, in a unit direction
+    dx, dy = settlement.translation
     O.bodies[runner.scene.right_support].state.vel = (runner.driver.speed * dx, runner.driver.speed * dy, 0.0)
     contact_engine = next(e for e in O.engines if getattr(e, "command", "") == f"{CALLBACK_NAME}.step()")
     O.timingEnabled, contact_engine.execTime = True, 0
@@ -172,6 +175,7 @@ def step_breakdown(steps: int) -> dict:
 
 def _breakdown_child(steps: int) -> dict:
     from yadearch.case.config import preset
+    from yadearch.engine.joint_elements import JointElementContacts
     from yadearch.engine.scene import build_scene
     from yadearch.engine.yade_env import import_yade
 
@@ -181,6 +185,7 @@ def _breakdown_child(steps: int) -> dict:
 
     scene = build_scene(preset("set2"))
     contacts = scene.contacts
+    assert isinstance(contacts, JointElementContacts)  # the default contact model: joint elements
     O.run(500, True)  # under gravity, joints in contact
 
     def per_step_us(action) -> float:
@@ -360,6 +365,8 @@ def main() -> int:
             print(line(f"{name} ({results[name]['name']})", results[name]), flush=True)
     reference = stored(args.reference) if args.reference else \
         timed_run(slow_reference(cases["set2"]), runs / "set2_slow_reference")
+    if reference is None or results["set2"] is None:
+        raise SystemExit("the set 2 run or its slow reference failed: nothing to compare")
     print(line("slow reference", reference))
     s2 = results["set2"]
     stiff = results.get("stiff")
@@ -430,12 +437,12 @@ def main() -> int:
         ("rigid limit analysis <= 10 s", limit["wall_s"] <= TARGET_LIMIT_WALL_S,
          f"{limit['wall_s']:.1f} s ({limit['wall_s'] / TARGET_LIMIT_WALL_S:.2f}x the target), du_rigid "
          f"{limit['du_rigid_mm']:.2f} mm"),
-        (f"{TARGET_SWEEP_POINTS}-point sweep <= {TARGET_SWEEP_WALL_S / 60:g} min on 2 cores", sweep_wall is not None
-         and sweep_wall <= TARGET_SWEEP_WALL_S and sweep["failed"] == 0
+        (f"{TARGET_SWEEP_POINTS}-point sweep <= {TARGET_SWEEP_WALL_S / 60:g} min on 2 cores", sweep is not None
+         and sweep_wall is not None and sweep_wall <= TARGET_SWEEP_WALL_S and sweep["failed"] == 0
          and sweep["done"] >= TARGET_SWEEP_POINTS,
          f"{sweep_wall / 60:.1f} min in its recorded sessions ({sweep_wall / TARGET_SWEEP_WALL_S:.1f}x the "
          f"target), {sweep['done']} done, {sweep['failed']} failed; the runs' own wall times add up to "
-         f"{sweep['run_wall_s'] / 60:.1f} min" if sweep_wall is not None
+         f"{sweep['run_wall_s'] / 60:.1f} min" if sweep is not None and sweep_wall is not None
          else "no sweep folder given (sweep_wall_s null)"),
     ]
     per_sample_s = montecarlo["run_wall_s"] / max(1, montecarlo["done"] + montecarlo["failed"]) \

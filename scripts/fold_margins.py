@@ -46,7 +46,9 @@ def margin_mm(arch: RigidArch, kn: float, hinges: tuple[str, ...], at_mm: float,
     and that joint's fold margin (mm); NaN where the linkage has no admissible equilibrium there."""
     pivots = tuple(parse_pivot(h) for h in hinges)
     placement = close_linkage(arch, at_rest(arch), pivots, units.mm(at_mm))
-    statics = None if placement is None else solve_statics(arch, placement)
+    if placement is None:
+        return float("nan"), float("nan")
+    statics = solve_statics(arch, placement)
     if statics is None or not statics.feasible:
         return float("nan"), float("nan")
     target = parse_pivot(joint)

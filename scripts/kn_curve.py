@@ -53,6 +53,8 @@ def main() -> int:
                             "compliant_du_mm": compliant_du(base.with_overrides({KN: kn}))}
                            for kn in COMPLIANT_KN if kn in done.index])
     du_rigid = limit_analysis(base).du_rigid_mm
+    if du_rigid is None:
+        raise SystemExit("the rigid analysis finds no collapse of the paper arch: nothing to draw the curve toward")
     args.out.mkdir(parents=True, exist_ok=True)
     write_text_atomically(args.out / "kn_curve.csv", static.sort_values(KN).to_csv(index=False, float_format="%.6g"))
     write_text_atomically(args.out / "jumps.csv", jumps.to_csv(index=False, float_format="%.6g"))
