@@ -58,7 +58,9 @@ def static_campaign(kind: Kind, out: Path, samples: int, jobs: int) -> pd.DataFr
     """The kind's static campaign (resumed), with amplitudes and du for the statistics."""
     base = preset(BASE_PRESET).with_overrides({"numerics.engine": "static"})
     with open_pool(jobs) as pool:
-        return with_levels(kind, run_campaign(base, kind_rows(kind, samples), out / kind.name / "static", pool))
+        # a static run is deterministic: a recorded failure (an arch that cannot stand) is not run again
+        return with_levels(kind, run_campaign(base, kind_rows(kind, samples), out / kind.name / "static", pool,
+                                              retry_failed=False))
 
 
 def dem_campaign(kind: Kind, out: Path, level: float, jobs: int) -> pd.DataFrame:
