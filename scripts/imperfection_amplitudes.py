@@ -119,7 +119,7 @@ def main() -> int:
         hinges.append(hinge_table(static, level, SET1_HINGES).assign(kind=kind.name, level=level))
         summaries.append(summary)
         panels.append((static.assign(du_mm=static["du_stat_mm"], status="done"), LEVEL,
-                       f"{kind.name}: amplitude ({kind.amplitude_unit})", perfect))
+                       f"{kind.name} ({kind.amplitude_unit})", perfect))
         if not args.no_dem:
             dem = dem_bumps() if kind.name == "bump" \
                 else dem_campaign(kind, out, level, args.jobs)

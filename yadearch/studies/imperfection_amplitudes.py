@@ -60,7 +60,7 @@ KINDS = (
          "and thicknesses 0.15 mm at amplitude 1",
          {"face_bump_sd_mm": 0.05, "edge_radius_mm": 0.75, "edge_radius_sd_mm": 0.1875, "face_angle_sd_mrad": 2.0,
           "voussoir_offset_sd_mm": 0.15, "voussoir_length_sd_mm": 0.15, "voussoir_thickness_sd_mm": 0.15},
-         (0.5, 1.0, 1.5, 2.0, 3.0), "x the combination"),
+         (0.5, 1.0, 1.5, 2.0, 3.0), "x the pattern"),
 )
 
 
