@@ -43,8 +43,8 @@ from yadearch.studies.sessions import campaign_wall_s
 BASE_PRESET = "set2"  # the accurate (CNC) voussoirs' kn: the defects alone must bring du down
 SAMPLES = {"bump": 200, "combined": 200}  # seeds a level; the other kinds OTHER_SAMPLES
 OTHER_SAMPLES = 100
-DEM_SAMPLES = {"combined": 10}  # DEM confirmations at the matching level (bumps: DEM_BUMP_CAMPAIGN); others 3
-OTHER_DEM_SAMPLES = 3
+DEM_SAMPLES = {"combined": 20}  # DEM confirmations at the matching level (bumps: DEM_BUMP_CAMPAIGN); others 5
+OTHER_DEM_SAMPLES = 5
 AGREEMENT = 0.03  # DEM and static medians on the same seeds within this
 DEM_BUMP_CAMPAIGN = Path("reports/imperfections/final")  # 200 DEM seeds at face_bump_sd_mm = 0.18
 DEM_BUMP_LEVEL = 0.18
