@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from yadearch.atomic import write_text_atomically
+from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import preset
 from yadearch.plotting.capacity import stiffness_figure
@@ -71,7 +71,7 @@ def main() -> int:
     static = pd.concat(tables, ignore_index=True)
     dem = pd.read_csv(DEM_MAP)
     dem = dem.assign(label=[f"DEM, kn {reference.SETS[s]['kn_N_per_mm3']:g}" for s in dem["set"]])
-    write_text_atomically(args.out / "capacity_stiffness.csv", static.to_csv(index=False, float_format="%.6g"))
+    write_csv_atomically(args.out / "capacity_stiffness.csv", static)
     stiffness_figure(static, dem, args.out / FIGURE)
     write_text_atomically(args.out / "capacity_stiffness.md", stiffness_markdown(static, dem, static_wall, FIGURE))
     print(f"{len(static)} static runs in {static_wall:.0f} s -> {args.out}")

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from yadearch.atomic import write_text_atomically
+from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import preset
 from yadearch.plotting.kn_curve import kn_curve_figure
 from yadearch.reporting.kn_curve import kn_curve_markdown
@@ -56,8 +56,8 @@ def main() -> int:
     if du_rigid is None:
         raise SystemExit("the rigid analysis finds no collapse of the paper arch: nothing to draw the curve toward")
     args.out.mkdir(parents=True, exist_ok=True)
-    write_text_atomically(args.out / "kn_curve.csv", static.sort_values(KN).to_csv(index=False, float_format="%.6g"))
-    write_text_atomically(args.out / "jumps.csv", jumps.to_csv(index=False, float_format="%.6g"))
+    write_csv_atomically(args.out / "kn_curve.csv", static.sort_values(KN))
+    write_csv_atomically(args.out / "jumps.csv", jumps)
     kn_curve_figure(static, dem, limits, du_rigid, args.out / "du_vs_kn")
     dem_wall = campaign_wall_s(DEM_SWEEP) if dem is not None else None
     write_text_atomically(args.out / "kn-curve.md",

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from yadearch.atomic import write_text_atomically
+from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import preset
 from yadearch.solve.limit import limit_analysis
@@ -83,8 +83,8 @@ def main() -> int:
     wall = time.time() - start
     limit_table = limits(table, pairs)
     args.out.mkdir(parents=True, exist_ok=True)
-    write_text_atomically(args.out / "crosscheck.csv", table.to_csv(index=False, float_format="%.6g"))
-    write_text_atomically(args.out / "limits.csv", limit_table.to_csv(index=False, float_format="%.6g"))
+    write_csv_atomically(args.out / "crosscheck.csv", table)
+    write_csv_atomically(args.out / "limits.csv", limit_table)
     write_text_atomically(args.out / "crosscheck.md", crosscheck_markdown(table, limit_table, wall, args.jobs))
     print(f"{len(table)} pairs, {int(table['within_1pct'].sum())} within 1 %, "
           f"{int(table['same_hinges'].sum())} with the same hinges; static wall {wall:.0f} s -> {args.out}")

@@ -16,7 +16,7 @@ from typing import Any
 from yadearch.analysis import RunAnalysis, analyse_run, load_run
 from yadearch.analysis.mechanism import run_warnings
 from yadearch.analysis.tracking import format_interfaces
-from yadearch.atomic import write_atomically, write_text_atomically
+from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import as_ran, preset
 from yadearch.plotting.run_figures import write_figures
@@ -270,8 +270,7 @@ def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
         analysis = analyse_run(run)
         folder = _folder_name(run.summary, run.path, taken)
         figures = write_figures(run, analysis, out / folder / FIGURES_DIR)
-        write_atomically(out / folder / "hinges.csv",
-                         lambda tmp: analysis.hinges.to_csv(tmp, index=False, float_format="%.6g"))
+        write_csv_atomically(out / folder / "hinges.csv", analysis.hinges)
         reported.append(ReportedRun(run, analysis, match_reference(run.case, run.summary), folder, list(figures)))
     lines = ["# yadearch report", "", f"Reference: *{reference.PAPER}*.", ""] + overview(reported) + [""]
     for r in reported:

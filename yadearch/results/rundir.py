@@ -11,7 +11,7 @@ from typing import Any
 
 import pandas as pd
 
-from yadearch.atomic import write_atomically, write_text_atomically
+from yadearch.atomic import write_atomically, write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase, as_ran
 from yadearch.errors import RunFolderError
 
@@ -69,8 +69,7 @@ def write_run(out: Path, case_toml: str, series: list[dict], joints: list[dict],
     out.mkdir(parents=True, exist_ok=True)
     write_text_atomically(out / CASE_FILE, case_toml)
     if imperfections is not None:
-        write_atomically(out / IMPERFECTIONS_FILE,
-                         partial(pd.DataFrame(imperfections).to_csv, index=False, float_format="%.6g"))
+        write_csv_atomically(out / IMPERFECTIONS_FILE, pd.DataFrame(imperfections))
     for name, rows in ((SERIES_FILE, series), (JOINTS_FILE, joints)):
         write_atomically(out / name, partial(pd.DataFrame(rows).to_csv, index=False, float_format="%.8g"))
     write_text_atomically(out / SNAPSHOTS_FILE, json.dumps(snapshots, indent=1, default=_json_default))

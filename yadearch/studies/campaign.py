@@ -160,7 +160,8 @@ def _run_planned(specs: list[RunSpec], out: Path, pool: Pool, timeout_s: float |
     out.mkdir(parents=True, exist_ok=True)
     remove_stale_temporaries(out)  # left by a campaign killed while it wrote its tables
     write_run_table(specs, out)
-    todo = [s for s in specs if not is_complete(s.folder)
+    complete = {s.name for s in specs if is_complete(s.folder)}  # run names are unique (`plan`)
+    todo = [s for s in specs if s.name not in complete
             and (retry_failed or not (s.folder / FAILED_FILE).is_file())]
     # Longest first: the last runs to start are short, so no core idles while one long run ends
     # the campaign (the 13-point kn sweep's stiffest points take 10-40x its softest).
@@ -169,10 +170,9 @@ def _run_planned(specs: list[RunSpec], out: Path, pool: Pool, timeout_s: float |
         (spec.folder / FAILED_FILE).unlink(missing_ok=True)
     if task is execute and any(s.case.numerics.engine != STATIC_ENGINE for s in todo):
         check_yade_installed()  # a campaign of static runs needs no YADE
-    complete = sum(1 for s in specs if is_complete(s.folder))
     bar = tqdm(total=len(specs), initial=len(specs) - len(todo), unit="run", disable=not progress,
                desc=out.name, dynamic_ncols=True)
-    counts = {"done": complete, "failed": len(specs) - len(todo) - complete, "interrupted": 0}
+    counts = {"done": len(complete), "failed": len(specs) - len(todo) - len(complete), "interrupted": 0}
     futures: dict[Future, RunSpec] = {}
     started = time.time()
     try:
