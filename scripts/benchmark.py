@@ -24,11 +24,15 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 import time
 from pathlib import Path
+from typing import Any
 
 import __main__
+from yadearch.results.rundir import read_summary
+from yadearch.results.summary import RunSummary
 
 TARGET_SET2_WALL_S = 10.0  # docs/speed.md: the second round's targets
 TARGET_STIFF_WALL_S = 60.0  # any kn from 0.1 to 100, measured at the stiffest
@@ -42,25 +46,25 @@ TARGET_DU_REL = 0.01
 TARGET_STEP_US = 20.0  # a step's aim: the distance to YADE's bare explicit step
 
 
-def timed_run(case, folder: Path) -> dict:
+def timed_run(case, folder: Path) -> RunSummary:
     """Run a case in its own process (reusing a complete folder of the same case); its summary."""
     from yadearch.engine.process import run_case_process
     from yadearch.results.rundir import is_complete
 
     if not (is_complete(folder) and (folder / "case.toml").read_text() == case.to_toml()):
         run_case_process(case, folder, quiet=True)
-    return json.loads((folder / "summary.json").read_text())
+    return read_summary(folder)
 
 
-def stored(folder: str) -> dict | None:
+def stored(folder: str) -> RunSummary | None:
     """The summary of a stored run folder, its provenance printed; None (reason printed) if the
     run failed, e.g. a sweep point that timed out."""
     failed = Path(folder) / "failed.json"
     if failed.is_file():
         print(f"  stored run {folder} failed: {json.loads(failed.read_text()).get('reason')}")
         return None
-    summary = json.loads((Path(folder) / "summary.json").read_text())
-    print(f"  stored run {folder} (yadearch {summary.get('git_revision')}, {summary.get('started')})")
+    summary = read_summary(Path(folder))
+    print(f"  stored run {folder} (yadearch {summary.git_revision}, {summary.started})")
     return summary
 
 
@@ -250,7 +254,7 @@ def limit_measurement(case) -> dict:
     return {"wall_s": wall, "du_rigid_mm": result.du_rigid_mm}
 
 
-def static_measurement(runs: Path, dem_set2: dict, dem_stiff: dict | None) -> dict:
+def static_measurement(runs: Path, dem_set2: RunSummary, dem_stiff: RunSummary | None) -> dict:
     """The static engine's costs: set 2 and kn 100 through the whole `yadearch run --engine static`
     (interpreter, figures) and their solver time, a 100-point kn sweep and 200 Monte Carlo samples of
     the imperfection study's final case on 2 cores; ratios to the DEM runs of this invocation."""
@@ -262,13 +266,14 @@ def static_measurement(runs: Path, dem_set2: dict, dem_stiff: dict | None) -> di
     import yadearch as ya
 
     cli = str(Path(sys.executable).with_name("yadearch"))
-    summaries = {}
+    summaries: dict[str, RunSummary] = {}
+    cli_wall: dict[str, float] = {}
     for name, extra in (("set2", []), ("kn100", ["--kn", "100"])):
         folder = runs / name
         start = time.time()
         subprocess.run([cli, "run", "--preset", "set2", *extra, "--engine", "static", "--out", str(folder),
                         "--rerun"], check=True, capture_output=True)
-        summaries[name] = {**json.loads((folder / "summary.json").read_text()), "cli_wall_s": time.time() - start}
+        summaries[name], cli_wall[name] = read_summary(folder), time.time() - start
     timings = {}
     for name, job in (("sweep100", lambda out: ya.sweep(ya.preset("set2"), out=out, jobs=2, engine="static",
                                                         kn_N_per_mm3=list(np.logspace(np.log10(0.05), 4, 100)))),
@@ -279,23 +284,25 @@ def static_measurement(runs: Path, dem_set2: dict, dem_stiff: dict | None) -> di
         table = job(runs / name)
         timings[name] = (time.time() - start, int((table["status"] == "done").sum()), len(table))
     s2, k100 = summaries["set2"], summaries["kn100"]
-    speedup = dem_set2["wall_s"] / s2["cli_wall_s"]
-    result = {"static_set2_wall_s": s2["cli_wall_s"], "static_set2_solver_s": s2["solver_wall_s"],
-              "static_set2_du_mm": s2["du_mm"], "static_kn100_wall_s": k100["solver_wall_s"],
-              "static_kn100_cli_wall_s": k100["cli_wall_s"], "static_kn100_du_mm": k100["du_mm"],
-              "static_sweep100_wall_s": timings["sweep100"][0], "static_mc200_wall_s": timings["mc200"][0],
-              "static_over_dem_speedup": speedup,
-              "static_kn100_over_dem_speedup": dem_stiff["wall_s"] / k100["cli_wall_s"] if dem_stiff else None}
-    du_diff = abs(s2["du_mm"] / dem_set2["du_mm"] - 1.0)
-    print(f"static engine: set 2 {s2['cli_wall_s']:.1f} s whole run ({s2['solver_wall_s']:.2f} s solver), "
-          f"{speedup:.0f}x faster than the DEM's {dem_set2['wall_s']:.0f} s; du {s2['du_mm']:.2f} against "
-          f"{dem_set2['du_mm']:.2f} mm ({du_diff:.2%})")
+    s2_solver_s, k100_solver_s = float(s2.solver_wall_s or 0.0), float(k100.solver_wall_s or 0.0)
+    s2_du, k100_du, dem_du = float(s2.du_mm or 0.0), float(k100.du_mm or 0.0), float(dem_set2.du_mm or math.nan)
+    speedup = dem_set2.wall_s / cli_wall["set2"]
+    result: dict[str, Any] = {
+        "static_set2_wall_s": cli_wall["set2"], "static_set2_solver_s": s2_solver_s, "static_set2_du_mm": s2_du,
+        "static_kn100_wall_s": k100_solver_s, "static_kn100_cli_wall_s": cli_wall["kn100"],
+        "static_kn100_du_mm": k100_du, "static_sweep100_wall_s": timings["sweep100"][0],
+        "static_mc200_wall_s": timings["mc200"][0], "static_over_dem_speedup": speedup,
+        "static_kn100_over_dem_speedup": dem_stiff.wall_s / cli_wall["kn100"] if dem_stiff else None}
+    du_diff = abs(s2_du / dem_du - 1.0)
+    print(f"static engine: set 2 {cli_wall['set2']:.1f} s whole run ({s2_solver_s:.2f} s solver), "
+          f"{speedup:.0f}x faster than the DEM's {dem_set2.wall_s:.0f} s; du {s2_du:.2f} against "
+          f"{dem_du:.2f} mm ({du_diff:.2%})")
     result["verdicts"] = [
-        ("static set 2 solver <= 0.5 s, whole run <= 10 s", s2["solver_wall_s"] <= 0.5 and s2["cli_wall_s"] <= 10.0,
-         f"{s2['solver_wall_s']:.2f} s solver, {s2['cli_wall_s']:.1f} s whole run"),
+        ("static set 2 solver <= 0.5 s, whole run <= 10 s", s2_solver_s <= 0.5 and cli_wall["set2"] <= 10.0,
+         f"{s2_solver_s:.2f} s solver, {cli_wall['set2']:.1f} s whole run"),
         ("static set 2 du within 1 % of the DEM's", du_diff <= TARGET_DU_REL, f"{du_diff:.2%}"),
-        ("static kn 100 <= 2 s", k100["solver_wall_s"] <= 2.0,
-         f"{k100['solver_wall_s']:.2f} s solver ({k100['cli_wall_s']:.1f} s whole run), du {k100['du_mm']:.2f} mm"),
+        ("static kn 100 <= 2 s", k100_solver_s <= 2.0,
+         f"{k100_solver_s:.2f} s solver ({cli_wall['kn100']:.1f} s whole run), du {k100_du:.2f} mm"),
         ("static 100-point kn sweep 0.05-10000 <= 2 min on 2 cores", timings["sweep100"][0] <= 120.0,
          f"{timings['sweep100'][0]:.0f} s, {timings['sweep100'][1]} of {timings['sweep100'][2]} done"),
         ("static 200 Monte Carlo samples <= 3 min on 2 cores", timings["mc200"][0] <= 180.0,
@@ -303,16 +310,14 @@ def static_measurement(runs: Path, dem_set2: dict, dem_stiff: dict | None) -> di
     return result
 
 
-def line(name: str, s: dict) -> str:
+def line(name: str, s: RunSummary) -> str:
     """One printed line per run."""
-    from yadearch.results.rundir import hinge_list
-
-    profile = s.get("profile") or {}
-    hinges = hinge_list(s["hinges_at_collapse"])
+    profile = s.profile or {}
+    hinges = s.hinge_labels
     overhead = f", wall / scene engine time {profile['driver_overhead_ratio']:.3f}" \
         if profile.get("driver_overhead_ratio") and "scene_engines_s" in profile else ""
-    return (f"{name}: steps {s['steps']}, wall {s['wall_s']:.0f} s, {s['steps_per_s']:.0f} steps/s, "
-            f"du {s['du_mm']:.2f} mm, hinges {hinges}{overhead}")
+    return (f"{name}: steps {s.steps}, wall {s.wall_s:.0f} s, {s.steps_per_s:.0f} steps/s, "
+            f"du {s.du_mm:.2f} mm, hinges {hinges}{overhead}")
 
 
 def main() -> int:
@@ -348,7 +353,6 @@ def main() -> int:
         return 0
 
     from yadearch.case.config import preset
-    from yadearch.model.hinges import same_hinges
     from yadearch.studies.sessions import campaign_core_s, campaign_wall_s
 
     runs = Path(args.runs)
@@ -362,7 +366,7 @@ def main() -> int:
     for name, case in cases.items():
         results[name] = stored(given[name]) if given[name] else timed_run(case, runs / name)
         if results[name] is not None:
-            print(line(f"{name} ({results[name]['name']})", results[name]), flush=True)
+            print(line(f"{name} ({results[name].name})", results[name]), flush=True)
     reference = stored(args.reference) if args.reference else \
         timed_run(slow_reference(cases["set2"]), runs / "set2_slow_reference")
     if reference is None or results["set2"] is None:
@@ -370,14 +374,13 @@ def main() -> int:
     print(line("slow reference", reference))
     s2 = results["set2"]
     stiff = results.get("stiff")
-    du, du_ref = s2["du_mm"], reference["du_mm"]
+    du, du_ref = s2.du_mm, reference.du_mm
     rel = abs(du - du_ref) / du_ref if du is not None and du_ref else None
-    hinges_match = same_hinges(s2.get("hinges_detail", s2["hinges_at_collapse"]),
-                               reference.get("hinges_detail", reference["hinges_at_collapse"]))
-    speedup = reference["wall_s"] / s2["wall_s"]
-    measured = {model: loading_measurement(args.measure_mm, s2["steps"], model)
+    hinges_match = s2.same_mechanism(reference)
+    speedup = reference.wall_s / s2.wall_s
+    measured = {model: loading_measurement(args.measure_mm, s2.steps, model)
                 for model in ("joint", "cgal")} if args.measure_mm else None
-    default_model = s2.get("contact_model", "joint")
+    default_model = s2.contact_model or "joint"
     overhead = measured[default_model]["driver_overhead_ratio"] if measured else None
     model_speedup = measured["joint"]["steps_per_s"] / measured["cgal"]["steps_per_s"] if measured else None
     limit = limit_measurement(cases["set2"])
@@ -391,13 +394,13 @@ def main() -> int:
         **{f"{n}_{k}": (results[n] or {}).get(k) for n in results for k in ("wall_s", "du_mm", "steps", "steps_per_s")},
         "stiff_name": (results.get("stiff") or {}).get("name"),
         "set2_du_reference_mm": du_ref, "set2_du_rel_diff": rel, "set2_same_hinges": hinges_match,
-        "set2_reference_wall_s": reference["wall_s"], "set2_speedup_vs_reference": speedup,
-        "driver_overhead_ratio": overhead, "loading_measurement": measured, "set2_profile": s2["profile"],
+        "set2_reference_wall_s": reference.wall_s, "set2_speedup_vs_reference": speedup,
+        "driver_overhead_ratio": overhead, "loading_measurement": measured, "set2_profile": s2.profile,
         "joint_over_cgal_steps_per_s": model_speedup,
         "threads": threads_measurement(args.threads_steps) if args.threads_steps else None,
         "sweep_wall_s": sweep_wall, "sweep_folder": args.sweep, "sweep": sweep,
         "limit_wall_s": limit["wall_s"], "du_rigid_mm": limit["du_rigid_mm"],
-        "kn100_wall_s": stiff["wall_s"] if stiff is not None else None,
+        "kn100_wall_s": stiff.wall_s if stiff is not None else None,
         "sweep25_wall_s": sweep_wall if sweep is not None and sweep["done"] >= TARGET_SWEEP_POINTS else None,
         # the samples' own wall times (each run beside another on this 2-core machine) over 2 cores:
         # the campaign's sessions ran with 1 or 2 jobs and some were killed before they recorded
@@ -417,13 +420,13 @@ def main() -> int:
         report.update({k: v for k, v in static.items() if k != "verdicts"})
     Path(args.out).parent.mkdir(parents=True, exist_ok=True)
     Path(args.out).write_text(json.dumps(report, indent=2) + "\n")
-    print(f"set 2: {speedup:.1f}x faster than the slow reference ({reference['wall_s']:.0f} s)")
+    print(f"set 2: {speedup:.1f}x faster than the slow reference ({reference.wall_s:.0f} s)")
     if model_speedup:
         print(f"joint elements / CGAL polyhedra, steps/s on the same {args.measure_mm:g} mm of set 2: "
               f"{model_speedup:.1f}x")
     verdicts = [
-        (f"set 2 wall <= {TARGET_SET2_WALL_S:g} s", s2["wall_s"] <= TARGET_SET2_WALL_S,
-         f"{s2['wall_s']:.0f} s ({s2['wall_s'] / TARGET_SET2_WALL_S:.1f}x the target)"),
+        (f"set 2 wall <= {TARGET_SET2_WALL_S:g} s", s2.wall_s <= TARGET_SET2_WALL_S,
+         f"{s2.wall_s:.0f} s ({s2.wall_s / TARGET_SET2_WALL_S:.1f}x the target)"),
         ("set 2 du within 1 % of the slow reference, same hinges",
          rel is not None and rel <= TARGET_DU_REL and hinges_match,
          f"{du:.2f} vs {du_ref:.2f} mm ({rel:.2%}), hinges {'same' if hinges_match else 'differ'}"
@@ -431,9 +434,9 @@ def main() -> int:
         ("driver overhead <= 5 %", overhead is not None and overhead <= TARGET_OVERHEAD,
          f"runner / bare O.run of the same scene and steps = {overhead:.3f} ({default_model} contacts; "
          f"CGAL: {measured['cgal']['driver_overhead_ratio']:.3f})" if measured else "not measured (--measure-mm)"),
-        (f"kn 100 <= {TARGET_STIFF_WALL_S:g} s", stiff is not None and stiff["wall_s"] <= TARGET_STIFF_WALL_S,
-         f"{stiff['wall_s']:.0f} s ({stiff['wall_s'] / TARGET_STIFF_WALL_S:.1f}x the target), du "
-         f"{stiff['du_mm']:.2f} mm" if stiff is not None else "not run (--stiff)"),
+        (f"kn 100 <= {TARGET_STIFF_WALL_S:g} s", stiff is not None and stiff.wall_s <= TARGET_STIFF_WALL_S,
+         f"{stiff.wall_s:.0f} s ({stiff.wall_s / TARGET_STIFF_WALL_S:.1f}x the target), du "
+         f"{stiff.du_mm:.2f} mm" if stiff is not None else "not run (--stiff)"),
         ("rigid limit analysis <= 10 s", limit["wall_s"] <= TARGET_LIMIT_WALL_S,
          f"{limit['wall_s']:.1f} s ({limit['wall_s'] / TARGET_LIMIT_WALL_S:.2f}x the target), du_rigid "
          f"{limit['du_rigid_mm']:.2f} mm"),

@@ -13,15 +13,14 @@ reproduction run).
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from yadearch.case.config import preset
 from yadearch.engine.process import run_case_process
-from yadearch.model.hinges import same_hinges
-from yadearch.results.rundir import hinge_list, holds_case
+from yadearch.results.rundir import holds_case, read_summary
+from yadearch.results.summary import RunSummary
 
 TOLERANCE = 0.01
 
@@ -56,34 +55,30 @@ def main() -> int:
         case.name = f"{prefix}_{label}"
         cases[label] = case
 
-    def run(label: str) -> dict:
+    def run(label: str) -> RunSummary:
         folder = Path(args.out) / cases[label].name
         if not holds_case(folder, cases[label]):
             run_case_process(cases[label], folder, quiet=True)
-        return json.loads((folder / "summary.json").read_text())
+        return read_summary(folder)
 
     with ThreadPoolExecutor(max_workers=args.jobs) as pool:
         summaries = dict(zip(variants, pool.map(run, variants)))
 
-    def hinges(summary: dict) -> str:
-        return hinge_list(summary["hinges_at_collapse"])
-
     reference = summaries["default"]
-    has_reference = reference["du_mm"] is not None
+    has_reference = reference.du_mm is not None
     ok = has_reference
     print(f"{'variant':14s} {'speed mm/s':>9s} {'damping':>7s} {'dt safety':>9s} {'du mm':>8s} {'rel diff':>9s} "
           f"{'steps':>8s} {'wall s':>7s}  hinges at collapse")
     for label, summary in summaries.items():
         case = cases[label]
-        du = summary["du_mm"]
-        rel = (du - reference["du_mm"]) / reference["du_mm"] if du is not None and has_reference else float("nan")
-        same = same_hinges(summary.get("hinges_detail", summary["hinges_at_collapse"]),
-                           reference.get("hinges_detail", reference["hinges_at_collapse"]))
+        du, du_reference = summary.du_mm, reference.du_mm
+        rel = (du - du_reference) / du_reference if du is not None and du_reference else float("nan")
+        same = summary.same_mechanism(reference)
         ok = ok and du is not None and abs(rel) <= TOLERANCE and same
         print(f"{label:14s} {case.settlement_speed_mm_per_s:9.2f} {case.numerics.damping:7.2f} "
               f"{case.numerics.timestep_safety:9.2f} "
-              f"{du if du is not None else float('nan'):8.2f} {rel:+9.2%} {summary['steps']:8d} "
-              f"{summary['wall_s']:7.0f}  {hinges(summary)}{'' if same else '  (differs)'}")
+              f"{du if du is not None else float('nan'):8.2f} {rel:+9.2%} {summary.steps:8d} "
+              f"{summary.wall_s:7.0f}  {summary.hinge_labels}{'' if same else '  (differs)'}")
     print(f"verdict: {'PASS' if ok else 'FAIL'} (du within {TOLERANCE:.0%} and same hinges: same sides, "
           f"each peak within the other's spread)")
     return 0 if ok else 1

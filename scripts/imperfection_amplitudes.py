@@ -104,7 +104,7 @@ def main() -> int:
     args = parser.parse_args()
     out = Path(args.out)
     target = reference.SETS["set1"]["experimental"]["du_mm"]
-    perfect = simulate_static(preset(BASE_PRESET), out / "perfect", log=lambda _line: None)["du_mm"]
+    perfect = simulate_static(preset(BASE_PRESET), out / "perfect", log=lambda _line: None).collapsed_du_mm()
     summaries, confirmations, matches, panels, hinges = [], [], [], [], []
     for kind in KINDS:
         if args.only and kind.name not in args.only.split(","):

@@ -23,7 +23,8 @@ from yadearch.atomic import write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import preset
 from yadearch.plotting.montecarlo import amplitude_panels_figure, campaign_figures
-from yadearch.results.rundir import hinge_list, read_summary
+from yadearch.results.rundir import read_summary
+from yadearch.results.summary import RunSummary
 from yadearch.studies.campaign import RESULTS_FILE, label_hinges
 from yadearch.studies.executors import open_pool
 from yadearch.studies.imperfection_study import (
@@ -149,8 +150,8 @@ def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float) -> str:
               f"- paper FE with kn {reference.SETS['set1']['kn_N_per_mm3']} N/mm³: du {model['du_mm']} mm, "
               f"A {spread(model['hinge_A'])} I, "
               f"B {spread(model['hinge_B'])} E;",
-              f"- this project's low-kn model (`{SET1_RUN}`): du {set1_summary['du_mm']:.2f} mm on "
-              f"{hinge_list(set1_summary['hinges_at_collapse'])}.", ""]
+              f"- this project's low-kn model (`{SET1_RUN}`): du {set1_summary.du_mm:.2f} mm on "
+              f"{set1_summary.hinge_labels}.", ""]
     if panels:
         amplitude_panels_figure(panels, out / FIGURE, target, f"set 1 experiment, {target} mm")
         lines += [f"![du against each amplitude]({FIGURE}.png)", ""]
@@ -168,7 +169,7 @@ def _du_line(table: pd.DataFrame) -> str:
             + (f" Failed: {reasons}." if reasons else ""))
 
 
-def final_section(out: Path, set1_summary: dict) -> list[str]:
+def final_section(out: Path, set1_summary: RunSummary) -> list[str]:
     """How the final campaign's hinges compare with set 1's experiment, beside the low-kn model's."""
     path = out / FINAL.name / MONTECARLO_FILE
     if not path.is_file():
@@ -248,7 +249,7 @@ def main() -> int:
         elif (out / study.name / RESULTS_FILE).is_file():  # a stopped campaign: tabulate what is finished
             table = write_montecarlo(pd.read_csv(out / study.name / RESULTS_FILE), out / study.name, study.axes)
             draw(table, study, out)
-    perfect_du_mm = read_summary(PERFECT_RUN)["du_mm"]
+    perfect_du_mm = read_summary(PERFECT_RUN).collapsed_du_mm()
     text = report(out, pd.read_csv(Path(args.sweep) / "results.csv"), perfect_du_mm)
     write_text_atomically(out / REPORT, text)
     print(text)

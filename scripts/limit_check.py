@@ -36,19 +36,19 @@ def check(folder: Path, tolerance: float) -> tuple[str, bool]:
     rigid arch two branches, the run is compared with the branch whose mechanism it follows."""
     case = load_case(folder / CASE_FILE)
     summary = read_summary(folder)
-    mechanism = hinge_list(summary.get("hinges_last_equilibrium"))
+    mechanism = hinge_list(summary.hinges_last_equilibrium)
     branches = [_branch(case, "direct"), _branch(case, "mirrored")] if has_other_branch(case) \
         else [_branch(case, "-")]
     survived, limit, rigid, chain, name = min(branches, key=lambda b: _distance(mechanism, b[2]))
     compliant = limit_analysis(mirror_image(case) if name == "mirrored" else case,
                                max_snap_mm=case.numerics.runaway_mm, mirror=False, compliant=True)
-    du, du_rigid = summary.get("du_mm"), limit.du_rigid_mm
+    du, du_rigid = summary.du_mm, limit.du_rigid_mm
     loading = case.loading
     movement = f"{loading.settlement_direction_deg:g}" if loading.support_motion == "translation" \
         else loading.support_motion
     head = (f"| {folder.name} | {movement} | {case.interface.kn_N_per_mm3:g} | {name} "
             f"| {_mm(du)} | {_mm(survived.du_rigid_mm)} | {_mm(du_rigid)}")
-    hinges = f"{mechanism} | {rigid} | {hinge_list(summary.get('hinges_at_collapse'))} | {chain}"
+    hinges = f"{mechanism} | {rigid} | {summary.hinge_labels} | {chain}"
     if du is None or du_rigid is None:
         return f"{head} | - | {hinges} | {_mm(compliant.du_rigid_mm)} | - | no |", False
     gap = (du - du_rigid) / du_rigid

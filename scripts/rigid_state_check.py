@@ -9,8 +9,9 @@ go on loading by the run's increments from that state to collapse (docs/validati
 
 A state that stays put (blocks moving far less than a millimetre) is an equilibrium of the DEM's
 joints too; exit code 1 if a block ran away by the run's `runaway_mm`. `--load-on` writes
-DIR/summary.json (du, its bracket, the mechanisms, the relaxations) and DIR/case.toml, which
-scripts/limit_check.py reads, and prints the progress.
+DIR, a run folder of the path from the placed state (summary.json with du, its bracket, the
+mechanisms and the relaxations; the tables; case.toml) with command.json saying how the state was
+placed, which scripts/limit_check.py reads, and prints the progress.
 """
 
 from __future__ import annotations
@@ -32,10 +33,12 @@ from yadearch.engine.loading import EquilibriumPath  # noqa: E402
 from yadearch.engine.runner import Runner  # noqa: E402
 from yadearch.engine.scene_state import place_voussoirs  # noqa: E402
 from yadearch.model import units  # noqa: E402
-from yadearch.results.rundir import CASE_FILE, hinge_list  # noqa: E402
+from yadearch.results.rundir import hinge_list, write_run  # noqa: E402
+from yadearch.results.summary import HingeRef, RunSummary, collapse_fields  # noqa: E402
 from yadearch.solve.path import RUNAWAY, STABLE  # noqa: E402
 from yadearch.solve.pose import linkage_pose, rigid_pose  # noqa: E402
 
+COMMAND_FILE = "command.json"  # beside the run folder's files: how the state was placed
 PLACEMENT_TOLERANCE_MM = 1e-6  # the placed support must read the displacement asked for
 
 
@@ -49,22 +52,20 @@ def load_on(runner: Runner, start_mm: float, out: Path | None, arguments: dict) 
     """Follow the equilibrium path from the placed state at `start_mm` to collapse and report it."""
     loading = EquilibriumPath(runner)
     path = loading.follow(start=units.mm(start_mm))
-    summary = {"command": arguments, "start_mm": start_mm, "kn_N_per_mm3": runner.case.interface.kn_N_per_mm3,
-               "collapsed": path.collapsed, "last_equilibrium_mm": units.to_mm(path.lower),
-               "hinges_last_equilibrium": loading.last_equilibrium_hinges,
-               "relaxations": loading.relaxations}
+    hinges = loading.collapse_state(path.upper) if path.collapsed else []
+    summary = RunSummary(
+        name=runner.case.name, kn_N_per_mm3=runner.case.interface.kn_N_per_mm3,
+        **collapse_fields(path, runner.movement),
+        hinges_last_equilibrium=loading.last_equilibrium_hinges, relaxations=loading.relaxations,
+        hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges), hinges_detail=[h.to_json() for h in hinges],
+        steps=runner.total_steps, wall_s=time.time() - runner.wall0)
     if path.collapsed:
-        hinges = loading.collapse_state(path.upper)
-        summary.update(du_mm=units.to_mm(path.du), du_bracket_mm=[units.to_mm(path.lower), units.to_mm(path.upper)],
-                       collapse_verdict=path.upper_verdict,
-                       hinges_at_collapse=[h.to_json() for h in hinges])
-        print(f"du = {summary['du_mm']:.2f} mm ({path.upper_verdict} at {units.to_mm(path.upper):.3f}); "
+        print(f"du = {summary.du_mm:.2f} mm ({path.upper_verdict} at {units.to_mm(path.upper):.3f}); "
               f"last equilibrium on {hinge_list(loading.last_equilibrium_hinges)}", flush=True)
-    summary.update(steps=runner.total_steps, wall_s=time.time() - runner.wall0)
-    if out is not None:
-        out.mkdir(parents=True, exist_ok=True)
-        write_text_atomically(out / CASE_FILE, runner.case.to_toml())
-        write_text_atomically(out / "summary.json", json.dumps(summary, indent=1) + "\n")
+    if out is not None:  # a run folder from the placed state on, with the command that placed it
+        records = runner.records
+        write_run(out, runner.case.to_toml(), records.series, records.joints, records.snapshots, summary)
+        write_text_atomically(out / COMMAND_FILE, json.dumps({**arguments, "start_mm": start_mm}, indent=1) + "\n")
 
 
 def main() -> int:
@@ -80,7 +81,8 @@ def main() -> int:
     parser.add_argument("--compliant", action="store_true",
                         help="place where the compliant-hinge march at the case's kn has the arch")
     parser.add_argument("--load-on", action="store_true", help="go on loading from the state to collapse")
-    parser.add_argument("--out", type=Path, default=None, help="folder for summary.json (with --load-on)")
+    parser.add_argument("--out", type=Path, default=None,
+                        help="run folder of the path from the placed state (with --load-on)")
     args = parser.parse_args()
     case = resolve_case(args.preset, None, args.kn, tuple(args.settings))
     if args.hinges:

@@ -18,6 +18,7 @@ import pandas as pd
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import preset
+from yadearch.results.summary import HingeRef, RunSummary
 from yadearch.solve.limit import limit_analysis
 from yadearch.studies.capacity import DIRECTION_PARAMETER
 from yadearch.studies.crosscheck import Pair, crosscheck_markdown, dem_folders, pair_from_folder, run_pairs
@@ -48,9 +49,9 @@ def capacity_pairs() -> list[Pair]:
         kn = reference.SETS[row.set]["kn_N_per_mm3"]
         case = preset("set1").with_overrides({"interface.kn_N_per_mm3": kn, DIRECTION_PARAMETER: row.direction_deg,
                                               "numerics.engine": "static"})
-        hinges = [{"interface": int(h[:-1]), "side": h[-1]} for h in str(row.hinges).split()] \
-            if isinstance(row.hinges, str) else []
-        dem = {"du_mm": row.du_mm, "hinges_at_collapse": hinges, "wall_s": row.wall_s}
+        hinges = tuple(HingeRef(int(h[:-1]), h[-1]) for h in str(row.hinges).split()) \
+            if isinstance(row.hinges, str) else ()
+        dem = RunSummary(du_mm=row.du_mm, hinges_at_collapse=hinges, steps=0, wall_s=row.wall_s)
         pairs.append(Pair("capacity", f"{row.set}_direction{row.direction_deg:g}", case, dem))
     return pairs
 

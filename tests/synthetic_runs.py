@@ -13,6 +13,7 @@ import pandas as pd
 from yadearch.analysis import Thresholds, analyse_history
 from yadearch.analysis.blocks import block_centroids, case_geometry
 from yadearch.results.rundir import STIFFNESS_COLUMN, write_run
+from yadearch.results.summary import HingeRef, RunSummary
 
 JOINT_MM = 24.0
 FRICTION_DEG = 41.2
@@ -155,7 +156,7 @@ def paper_arch_run() -> BuiltRun:
                      BuiltHinge({1: 1.0}, "E", opens_mm=30.5)], n_interfaces=56)
 
 
-def make_run(folder: Path, name: str = "set2", kn: float = 5.2, paper_arch: bool = True) -> dict:
+def make_run(folder: Path, name: str = "set2", kn: float = 5.2, paper_arch: bool = True) -> RunSummary:
     """A complete run folder of the paper's arch (hinges 1E 12I 30E 56E), or of a 10-voussoir one
     (1E 4I 7E 11E); returns its summary."""
     import tomllib
@@ -163,13 +164,11 @@ def make_run(folder: Path, name: str = "set2", kn: float = 5.2, paper_arch: bool
     built = paper_arch_run() if paper_arch else paper_like_run()
     case_toml = CASE_TOML.format(name=name, kn=kn, voussoirs=55 if paper_arch else 10)
     case = tomllib.loads(case_toml)
-    summary = {
-        "name": name, "du_mm": built.du_mm + 0.0123, "collapsed": True,
-        "du_bracket_mm": [built.du_mm - 0.02, built.du_mm + 0.05],
-        "hinges_at_collapse": PAPER_HINGES if paper_arch else COARSE_HINGES,
-        "kn_N_per_mm3": kn, "ks_N_per_mm3": kn / 2, "steps": 12345, "wall_s": 67.8,
-        "yade_version": "2023.02a", "yadearch_version": "0.1.0", "git_revision": "abc123",
-    }
+    summary = RunSummary(
+        name=name, du_mm=built.du_mm + 0.0123, collapsed=True, du_bracket_mm=(built.du_mm - 0.02, built.du_mm + 0.05),
+        hinges_at_collapse=tuple(HingeRef.of(h) for h in (PAPER_HINGES if paper_arch else COARSE_HINGES)),
+        kn_N_per_mm3=kn, ks_N_per_mm3=kn / 2, steps=12345, wall_s=67.8,
+        yade_version="2023.02a", yadearch_version="0.1.0", git_revision="abc123")
     snapshots = {"selfweight": placed(case, 0.0), "collapse": placed(case, built.du_mm + 0.05)}
     write_run(folder, case_toml, series_rows(built), built.joints().to_dict("records"), snapshots, summary)
     return summary

@@ -25,7 +25,7 @@ def test_a_case_is_replaced_by_bare_parameter_names():
 def test_an_opened_run_gives_du_and_hinges_with_the_papers_labels(tmp_path):
     summary = make_run(tmp_path / "run")
     result = ya.open_run(tmp_path / "run")
-    assert result.du_mm == summary["du_mm"] and result.collapsed
+    assert result.du_mm == summary.du_mm and result.collapsed
     assert [(str(h), h.label) for h in result.hinges] == [("1E", "D"), ("12I", "A"), ("30E", "B"),
                                                           ("56E", "C")]
 
@@ -83,7 +83,7 @@ def test_the_static_engine_runs_through_the_api_and_says_so(tmp_path):
     """A 9-voussoir arch at kn 5.2 settles to 122.29 mm on 1E 2I 6E 10E (the DEM: 122.21 mm)."""
     case = ya.preset("set2").with_overrides({"n_voussoirs": 9})
     res = ya.run(case, out=tmp_path / "static", engine="static", figures=False)
-    assert res.engine == "static" and res.summary["unused_parameters"]["damping"] == case.numerics.damping
+    assert res.engine == "static" and res.summary.unused_parameters["damping"] == case.numerics.damping
     assert res.du_mm == pytest.approx(122.21, rel=0.01)
     assert [str(h) for h in res.hinges] == ["1E", "2I", "6E", "10E"]
     assert (res.loading_curve()["min_stiffness_N_per_m"].dropna() > 0).all()

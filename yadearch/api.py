@@ -19,8 +19,8 @@ import pandas as pd
 from yadearch.case.config import ArchCase
 from yadearch.case.config import preset as _preset
 from yadearch.errors import RunFolderError
-from yadearch.model.hinges import paper_labels
 from yadearch.results.rundir import FIGURES_DIR, RunFolder, case_differences, is_complete, read_run
+from yadearch.results.summary import DEM, RunSummary
 
 DEFAULT_RUNS_DIR = Path("runs")
 
@@ -51,22 +51,23 @@ class RunResult:
         return self.folder.path
 
     @property
-    def summary(self) -> dict[str, Any]:
+    def summary(self) -> RunSummary:
+        """summary.json, typed: du, its bracket, the hinges, the loading, the cost (docs/usage.md)."""
         return self.folder.summary
 
     @property
     def du_mm(self) -> float | None:
         """Collapse displacement of the support (mm); None if the arch did not collapse."""
-        return self.summary.get("du_mm")
+        return self.summary.du_mm
 
     @property
     def engine(self) -> str:
         """The engine that made this run: 'dem' (YADE) or 'static' (Newton's method)."""
-        return str(self.summary.get("engine", "dem"))
+        return self.summary.engine
 
     @property
     def collapsed(self) -> bool:
-        return bool(self.summary.get("collapsed"))
+        return self.summary.collapsed
 
     @property
     def series(self) -> pd.DataFrame:
@@ -81,14 +82,9 @@ class RunResult:
     @cached_property
     def hinges(self) -> list[HingeAtCollapse]:
         """The hinges at collapse, left to right, with the paper's positional labels."""
-        rotation = {(h["interface"], h["side"]): h.get("rotation_mrad")
-                    for h in self.summary.get("hinges_detail") or []}
-        hinges = [(h["interface"], h["side"], rotation.get((h["interface"], h["side"])) or 0.0)
-                  for h in self.summary.get("hinges_at_collapse") or []]
-        labels = paper_labels(hinges, self.folder.case["geometry"]["n_voussoirs"] + 1)
-        return [HingeAtCollapse(interface, side, labels.get((interface, side)),
-                                rotation.get((interface, side)))
-                for interface, side, _ in hinges]
+        rotation = self.summary.hinge_rotations_mrad
+        labels = self.summary.paper_labels(self.folder.case["geometry"]["n_voussoirs"] + 1)
+        return [HingeAtCollapse(h.interface, h.side, label, rotation.get(h)) for h, label in labels.items()]
 
     def loading_curve(self) -> pd.DataFrame:
         """The equilibrium points of the loading only (self-weight state, then each accepted
@@ -111,7 +107,7 @@ class RunResult:
         from yadearch.case.reference import references_for
         from yadearch.reporting.report import case_mismatch
 
-        return references_for(dem=self.engine == "dem", paper_case=case_mismatch(self.folder.case) is None)
+        return references_for(dem=self.engine == DEM, paper_case=case_mismatch(self.folder.case) is None)
 
     def write_figures(self, out: str | Path | None = None) -> dict[str, tuple[Path, Path]]:
         """Write the run's figures (PDF and PNG) into `out` (default: the run folder's `figures/`)."""

@@ -14,6 +14,7 @@ from yadearch.analysis import Thresholds
 from yadearch.analysis.blocks import block_centroids, polygon_centroid, tangential_slip_mm
 from yadearch.analysis.tracking import format_interfaces
 from yadearch.model.geometry import segmental_arch
+from yadearch.results.summary import RunSummary
 
 
 def summary_of(analysis) -> list[tuple]:
@@ -153,6 +154,11 @@ def test_a_joint_that_slid_below_its_friction_cap_is_flagged_as_sliding_during_t
     assert slip_during_moves({}) is None
 
 
+def _summary(**fields) -> RunSummary:
+    """A run summary with only `fields` set, as an older run or a partial record reads."""
+    return RunSummary(**{"du_mm": None, "hinges_at_collapse": (), "steps": 0, "wall_s": 0.0, **fields})
+
+
 def test_an_accepted_relaxation_that_moved_a_block_far_is_flagged_as_a_jump():
     """Spreading at kn 10000 with a 5 mm runaway distance: after 2.5 mm increments the relaxations
     moved blocks by about as much again and the hinges wandered off the rigid path; set 1's soft joints
@@ -160,23 +166,23 @@ def test_an_accepted_relaxation_that_moved_a_block_far_is_flagged_as_a_jump():
     path's own (docs/numerics.md)."""
     from yadearch.analysis.mechanism import relaxation_jump
 
-    jumped = {"du_mm": 27.91, "relaxations": {"runaway_mm": 5.0, "delta_mm": [1.0, 4.75, 17.25, 27.875],
-                                              "increment_mm": [1.0, 2.25, 2.5, 0.625],
-                                              "move_mm": [0.07, 1.17, 2.69, 1.5]}}
+    jumped = _summary(du_mm=27.91, relaxations={"runaway_mm": 5.0, "delta_mm": [1.0, 4.75, 17.25, 27.875],
+                                                "increment_mm": [1.0, 2.25, 2.5, 0.625],
+                                                "move_mm": [0.07, 1.17, 2.69, 1.5]})
     warning = relaxation_jump(jumped)
     assert warning is not None and "to 17.25 mm moved a block 2.69 mm (2 such" in warning and "\n" not in warning
-    soft = {"du_mm": 47.13, "relaxations": {"runaway_mm": 1.0, "delta_mm": [7.25, 40.0, 46.0, 47.09],
-                                            "increment_mm": [2.5, 2.5, 0.625, 0.156],
-                                            "move_mm": [0.38, 0.3, 0.66, 0.06]}}
+    soft = _summary(du_mm=47.13, relaxations={"runaway_mm": 1.0, "delta_mm": [7.25, 40.0, 46.0, 47.09],
+                                              "increment_mm": [2.5, 2.5, 0.625, 0.156],
+                                              "move_mm": [0.38, 0.3, 0.66, 0.06]})
     assert relaxation_jump(soft) is None
-    assert relaxation_jump({}) is None  # a run from before the record
+    assert relaxation_jump(_summary()) is None  # a run from before the record
 
 
 def test_a_collapse_read_from_a_timeout_is_flagged_and_a_runaway_is_not():
     from yadearch.analysis.mechanism import run_warnings
     from yadearch.solve.path import RUNAWAY, TIMEOUT
 
-    timed_out = run_warnings({"du_mm": 27.3, "collapse_verdict": TIMEOUT})
+    timed_out = run_warnings(_summary(du_mm=27.3, collapse_verdict=TIMEOUT))
     assert len(timed_out) == 1 and "numerics.hold_max_s" in timed_out[0] and "\n" not in timed_out[0]
-    assert run_warnings({"du_mm": 27.3, "collapse_verdict": RUNAWAY}) == []
-    assert run_warnings({"du_mm": 27.3}) == []  # a run from before the record
+    assert run_warnings(_summary(du_mm=27.3, collapse_verdict=RUNAWAY)) == []
+    assert run_warnings(_summary(du_mm=27.3)) == []  # a run from before the record

@@ -151,6 +151,6 @@ def test_joint_elements_and_cgal_collapse_a_coarse_arch_alike():
                         log=lambda line: None)
         results[model] = runner.run()
     joint, cgal = results["joint"], results["cgal"]
-    assert joint["collapsed"] and cgal["collapsed"]
-    assert joint["du_mm"] == pytest.approx(cgal["du_mm"], rel=0.01)
-    assert same_hinges(joint["hinges_last_equilibrium"], cgal["hinges_last_equilibrium"])
+    assert joint.collapsed and cgal.collapsed
+    assert joint.du_mm == pytest.approx(cgal.du_mm, rel=0.01)
+    assert same_hinges(joint.hinges_last_equilibrium, cgal.hinges_last_equilibrium)

@@ -11,6 +11,7 @@ from conftest import HAS_YADE, needs_yade
 from yadearch.case.config import preset
 from yadearch.model.hinges import same_hinges
 from yadearch.results.rundir import STIFFNESS_COLUMN
+from yadearch.results.summary import RunSummary
 
 pytestmark = [needs_yade, pytest.mark.yade]
 
@@ -18,7 +19,7 @@ QUIET = {"progress_every_s": 1e9}
 DU_TOLERANCE = 0.01  # du may move by 1 % at most when only the numerics change
 
 
-def run(overrides: dict) -> tuple[dict, pd.DataFrame]:
+def run(overrides: dict) -> tuple[RunSummary, pd.DataFrame]:
     from yadearch.engine.runner import Runner
 
     runner = Runner(preset("set1").with_overrides({**QUIET, **overrides}), log=lambda line: None)
@@ -35,12 +36,12 @@ def base_run():
 
 def test_every_accepted_state_of_the_loading_is_a_static_equilibrium(base_run):
     summary, series = base_run
-    assert summary["collapsed"] and summary["collapse_verdict"] == "runaway"  # a mechanism ran away
-    weight = summary["selfweight"]["arch_weight_N"]
+    assert summary.collapsed and summary.collapse_verdict == "runaway"  # a mechanism ran away
+    weight = summary.selfweight["arch_weight_N"]
     path = series[series["stage"] == "equilibrium"]
-    assert len(path) == summary["equilibria"] >= 5
+    assert len(path) == summary.equilibria >= 5
     assert (path["delta_mm"].diff().dropna() > 0).all()  # monotonic along the support path
-    assert (path["delta_mm"] < summary["du_mm"]).all()
+    assert (path["delta_mm"] < summary.du_mm).all()
     tolerance = preset("set1").numerics.equilibrium_tolerance
     assert (path["unbalanced"] < tolerance).all()
     carried = (path["left_Ry_N"] + path["right_Ry_N"]) / weight
@@ -55,9 +56,9 @@ def test_the_loading_follows_its_path_instead_of_jumping_between_states(base_run
     from yadearch.analysis.mechanism import JUMP_FRACTION, NEAR_LIMIT, relaxation_jump
 
     summary, _ = base_run
-    table = pd.DataFrame({k: summary["relaxations"][k] for k in ("delta_mm", "increment_mm", "move_mm")})
-    assert len(table) >= summary["equilibria"] and (table["increment_mm"] > 0).all()
-    far = table[table["delta_mm"] <= NEAR_LIMIT * summary["du_mm"]]
+    table = pd.DataFrame({k: summary.relaxations[k] for k in ("delta_mm", "increment_mm", "move_mm")})
+    assert len(table) >= summary.equilibria and (table["increment_mm"] > 0).all()
+    far = table[table["delta_mm"] <= NEAR_LIMIT * summary.du_mm]
     assert (far["move_mm"] < JUMP_FRACTION * far["increment_mm"]).all(), table.to_dict("list")
     assert table["move_mm"].max() > far["move_mm"].max()
     assert relaxation_jump(summary) is None
@@ -78,5 +79,5 @@ def test_du_does_not_move_with_the_loading_increment(base_run):
     num = preset("set1").numerics
     halved, _ = run({"first_increment_mm": 0.5 * num.first_increment_mm,
                      "max_increment_mm": 0.5 * num.max_increment_mm})
-    assert halved["du_mm"] == pytest.approx(summary["du_mm"], rel=DU_TOLERANCE)
-    assert same_hinges(halved["hinges_detail"], summary["hinges_detail"])
+    assert halved.du_mm == pytest.approx(summary.du_mm, rel=DU_TOLERANCE)
+    assert same_hinges(halved.hinges_detail, summary.hinges_detail)

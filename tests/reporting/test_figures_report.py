@@ -16,6 +16,7 @@ from yadearch.cli.commands import report
 from yadearch.errors import YadearchError
 from yadearch.plotting import run_figures as figures
 from yadearch.reporting.report import match_reference, write_report
+from yadearch.results.summary import RunSummary
 
 
 @pytest.fixture(scope="module")
@@ -33,14 +34,14 @@ def table_row(markdown: str, first_cell: str) -> list[str]:
 
 def test_report_numbers_are_those_of_summary_json(written):
     _, summary, markdown = written
-    du = f"{summary['du_mm']:.2f}"
+    du = f"{summary.du_mm:.2f}"
     assert table_row(markdown, "du (mm)")[3] == du
     assert table_row(markdown, "set2")[1:4] == ["dem", "set2", du]  # run | engine | paper set | du
-    hinges = " ".join(f"{h['interface']}{h['side']}" for h in summary["hinges_at_collapse"])
+    hinges = summary.hinge_labels
     assert f"- hinges at collapse: {hinges}" in markdown
     assert table_row(markdown, "set2")[6] == hinges
     run_hinges = {table_row(markdown, f"hinge {x}")[3].split(" (")[0] for x in "ABC"}
-    assert run_hinges <= {f"{h['interface']} {h['side']}" for h in summary["hinges_at_collapse"]}
+    assert run_hinges <= {f"{h.interface} {h.side}" for h in summary.hinges_at_collapse}
     assert "**Note:**" not in markdown  # the analysis agrees with summary.json
 
 
@@ -49,14 +50,14 @@ def test_report_compares_with_the_matching_paper_set(written):
     assert "### Comparison with the paper (set2" in markdown
     row = table_row(markdown, "du (mm)")
     assert row[1:3] == ["91.5", "91.8"]
-    assert row[5].startswith(f"{summary['du_mm'] - 91.8:+.2f}")
+    assert row[5].startswith(f"{summary.du_mm - 91.8:+.2f}")
     assert "asymmetric four-hinge mechanism, E-I-E-E, D at the left support" in markdown
 
 
 def test_report_shows_provenance_and_links_every_figure(written):
     root, summary, markdown = written
     for key in ("yade_version", "yadearch_version", "git_revision", "steps"):
-        assert f"| {key} | {summary[key]} |" in markdown
+        assert f"| {key} | {getattr(summary, key)} |" in markdown
     assert "## References\n\n1. Effect of geometrical imperfections" in markdown and "Yade Documentation" in markdown
     links = re.findall(r"\]\((set2/[^)]+)\)", markdown)
     assert {Path(l).suffix for l in links} == {".png", ".pdf", ".csv"}
@@ -91,7 +92,7 @@ def test_a_run_matching_neither_set_gets_figures_and_its_own_numbers(tmp_path):
     markdown = write_report([tmp_path / "k1"], tmp_path / "out").read_text()
     assert "No reference: its name and kn are neither set's" in markdown
     assert "Comparison with the paper" not in markdown
-    assert table_row(markdown, "stiff")[3] == f"{summary['du_mm']:.2f}"
+    assert table_row(markdown, "stiff")[3] == f"{summary.du_mm:.2f}"
     assert (tmp_path / "out" / "k1" / "figures" / "collapse.png").stat().st_size > 0  # as in a run folder
 
 
@@ -102,16 +103,20 @@ def test_a_run_of_another_arch_is_not_compared_with_the_paper_whatever_its_name(
     assert "Comparison with the paper" not in markdown
 
 
+def _named(name: str, kn: float | None = None) -> RunSummary:
+    return RunSummary(name=name, kn_N_per_mm3=kn, du_mm=None, hinges_at_collapse=(), steps=0, wall_s=0.0)
+
+
 def test_runs_of_the_paper_case_are_matched_by_name_or_kn():
     case = {"geometry": {"n_voussoirs": 55}}
-    assert match_reference(case, {"name": "set1", "kn_N_per_mm3": 9.0}) == "set1"
-    assert match_reference(case, {"name": "mine", "kn_N_per_mm3": 5.2}) == "set2"
-    assert match_reference(case, {"name": "mine", "kn_N_per_mm3": 0.25}) == "set1"
-    assert match_reference(case, {"name": "mine", "kn_N_per_mm3": 1.0}) is None
+    assert match_reference(case, _named("set1", 9.0)) == "set1"
+    assert match_reference(case, _named("mine", 5.2)) == "set2"
+    assert match_reference(case, _named("mine", 0.25)) == "set1"
+    assert match_reference(case, _named("mine", 1.0)) is None
     for other in ({"geometry": {"thickness_mm": 20.0}}, {"loading": {"settlement_direction_deg": 0.0}},
                   {"material": {"density_g_per_cm3": 2.0}}, {"imperfections": {"edge_radius_mm": 1.0}}):
-        assert match_reference(other, {"name": "set2", "kn_N_per_mm3": 5.2}) is None
-    assert match_reference({"loading": {"max_settlement_mm": 120.0}}, {"name": "set2"}) == "set2"
+        assert match_reference(other, _named("set2", 5.2)) is None
+    assert match_reference({"loading": {"max_settlement_mm": 120.0}}, _named("set2")) == "set2"
 
 
 def test_a_path_that_is_not_a_run_folder_is_a_one_line_error(tmp_path):

@@ -4,6 +4,7 @@ same case and refuses to overwrite another."""
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from pathlib import Path
 
@@ -14,15 +15,17 @@ from yadearch.case.config import preset
 from yadearch.engine import process
 from yadearch.errors import RunFailedError, RunFolderError
 from yadearch.results.rundir import LOG_FILE, SUMMARY_FILE, is_complete, read_run, write_run
+from yadearch.results.summary import RunSummary
 
-SUMMARY = {"name": "set2", "du_mm": 87.0, "collapsed": True, "hinges_at_collapse": [], "steps": 10,
-           "wall_s": 1.0}
+
+def summary_of(du_mm: float) -> RunSummary:
+    return RunSummary(name="set2", du_mm=du_mm, collapsed=True, hinges_at_collapse=(), steps=10, wall_s=1.0)
 
 
 def finished(folder: Path, case=None, du_mm: float = 87.0) -> None:
     case = case or preset("set2")
     write_run(folder, case.to_toml(), [{"stage": "equilibrium", "delta_mm": 0.0}],
-              [{"stage": "equilibrium", "interface": 1}], {}, {**SUMMARY, "du_mm": du_mm})
+              [{"stage": "equilibrium", "interface": 1}], {}, summary_of(du_mm))
 
 
 @pytest.mark.parametrize("damage", ["truncated", "empty object", "not an object", "newer schema",
@@ -45,8 +48,9 @@ def test_a_summary_that_does_not_validate_is_an_unfinished_run(tmp_path, damage)
 
 def test_a_complete_folder_reads_back_with_its_schema_marker(tmp_path):
     finished(tmp_path)
-    summary = read_run(tmp_path).summary
-    assert summary["complete"] is True and summary["schema_version"] >= 1 and summary["du_mm"] == 87.0
+    written = json.loads((tmp_path / SUMMARY_FILE).read_text())
+    assert written["complete"] is True and written["schema_version"] >= 1
+    assert read_run(tmp_path).summary == dataclasses.replace(summary_of(87.0), table_rows=written["table_rows"])
     assert not list(tmp_path.glob(".*.tmp"))  # every file was renamed into place
 
 
@@ -74,7 +78,7 @@ def test_a_failed_run_leaves_the_finished_run_in_place(tmp_path, monkeypatch, no
     monkeypatch.setattr(process, "_run_child", FakeChild(ok=False))
     with pytest.raises(RunFailedError, match="boom") as error:
         process.run_case_process(preset("set2"), tmp_path / "run")
-    assert read_run(tmp_path / "run").summary["du_mm"] == 87.0
+    assert read_run(tmp_path / "run").summary.du_mm == 87.0
     assert ".run.partial" in str(error.value)  # the failed run's log is kept beside it
 
 
@@ -82,7 +86,7 @@ def test_a_finished_run_replaces_the_folder_only_when_complete(tmp_path, monkeyp
     finished(tmp_path / "run")
     monkeypatch.setattr(process, "_run_child", FakeChild(ok=True))
     process.run_case_process(preset("set2"), tmp_path / "run")
-    assert read_run(tmp_path / "run").summary["du_mm"] == 42.0
+    assert read_run(tmp_path / "run").summary.du_mm == 42.0
     assert sorted(p.name for p in tmp_path.iterdir()) == ["run"]  # no staging or replaced folder left
 
 
@@ -93,7 +97,7 @@ def test_run_reuses_the_same_case_and_refuses_another(tmp_path, monkeypatch):
     assert ya.run(preset("set2"), out=tmp_path / "run", figures=False).du_mm == 87.0 and calls == []
     with pytest.raises(RunFolderError, match="another case .*kn_N_per_mm3"):
         ya.run(preset("set2").replace(kn_N_per_mm3=10.0), out=tmp_path / "run", figures=False)
-    assert read_run(tmp_path / "run").summary["du_mm"] == 87.0
+    assert read_run(tmp_path / "run").summary.du_mm == 87.0
 
 
 def test_an_interrupted_run_is_not_a_failure_and_stays_pending(tmp_path, monkeypatch, no_yade_check):

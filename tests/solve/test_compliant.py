@@ -61,8 +61,8 @@ def test_stiff_joints_collapse_at_the_compliant_limit_not_at_the_rigid_one(tmp_p
     compliant = limit_analysis(case, mirror=False, compliant=True).du_rigid_mm
     rigid = limit_analysis(case, mirror=False)
     summary = simulate_static(case, tmp_path / "run", log=lambda _line: None)
-    du = summary["du_mm"]
-    assert summary["collapsed"] and du == pytest.approx(compliant, rel=DEM_TOLERANCE)
+    du = summary.du_mm
+    assert summary.collapsed and du == pytest.approx(compliant, rel=DEM_TOLERANCE)
     assert rigid.du_rigid_mm - du > 3 * abs(du - compliant)  # nearer the compliant limit than the rigid one
     followed = {h.label for h in rigid.hinge_history if h.to_mm is None}
-    assert {f"{h['interface']}{h['side']}" for h in summary["hinges_last_equilibrium"]} == followed
+    assert {f"{h['interface']}{h['side']}" for h in summary.hinges_last_equilibrium} == followed

@@ -6,7 +6,6 @@ the rigid-block limit put them, the descent telling a survived snap from a colla
 from __future__ import annotations
 
 import csv
-import json
 import math
 
 import numpy as np
@@ -20,6 +19,8 @@ from yadearch.model.geometry import ArchGeometry, Joint, prism
 from yadearch.model.joint_law import JointLaw, joint_forces, joint_table
 from yadearch.model.joint_tangent import joint_tangent
 from yadearch.model.movement import Movement
+from yadearch.results.rundir import read_summary
+from yadearch.results.summary import HingeRef
 from yadearch.solve.limit import limit_analysis
 from yadearch.solve.newton import Solver, SolverSettings, largest_move
 from yadearch.solve.path import RUNAWAY, STABLE, path_settings
@@ -255,8 +256,8 @@ def test_block_on_an_incline_slides_at_the_friction_angle(alpha_deg):
 
 
 # ---- the paper's arches ----------------------------------------------------------------------------
-def _labels(hinges: list[dict]) -> list[str]:
-    return [f"{h['interface']}{h['side']}" for h in hinges]
+def _labels(hinges: tuple[HingeRef, ...]) -> list[str]:
+    return [h.label for h in hinges]
 
 
 @pytest.mark.parametrize("name", ["set1", "set2"])
@@ -267,26 +268,26 @@ def test_static_path_of_the_paper_arch_meets_the_dem(name, tmp_path):
     under self-weight the supports' vertical reactions carry the arch's weight (1e-6) and their
     horizontal reactions cancel, the thrust within 2 % of the DEM's (whose holds end at an unbalanced
     force of a few 1e-4); every accepted state has a positive definite tangent stiffness."""
-    dem = json.loads((REPO / "reports" / name / "summary.json").read_text())
+    dem = read_summary(REPO / "reports" / name)
     summary = simulate_static(preset(name), tmp_path / name, log=_quiet)
-    assert summary["collapsed"] and summary["collapse_verdict"] == RUNAWAY
-    assert summary["du_mm"] == pytest.approx(dem["du_mm"], rel=0.01)
-    ours, theirs = summary["hinges_at_collapse"], dem["hinges_at_collapse"]
+    assert summary.collapsed and summary.collapse_verdict == RUNAWAY
+    assert summary.du_mm == pytest.approx(dem.du_mm, rel=0.01)
+    ours, theirs = summary.hinges_at_collapse, dem.hinges_at_collapse
     if name == "set2":
         assert _labels(ours) == _labels(theirs) == ["1E", "9I", "29E", "56E"]
     else:
-        assert [h["side"] for h in ours] == [h["side"] for h in theirs]
-        assert all(abs(a["interface"] - b["interface"]) <= 1 for a, b in zip(ours, theirs))
-        spread = {d["interface"]: d["interfaces"] for d in dem["hinges_detail"]}
-        assert all(a["interface"] in spread[b["interface"]] for a, b in zip(ours, theirs))
-    weight = summary["selfweight"]["arch_weight_N"]
-    assert weight == pytest.approx(dem["selfweight"]["arch_weight_N"], rel=1e-9)
-    assert summary["selfweight"]["vertical_reaction_sum_N"] == pytest.approx(weight, rel=1e-6)
-    assert abs(summary["selfweight"]["horizontal_reaction_sum_N"]) <= 1e-6 * weight
-    assert summary["selfweight"]["thrust_N"] == pytest.approx(dem["selfweight"]["thrust_N"], rel=0.02)
+        assert [h.side for h in ours] == [h.side for h in theirs]
+        assert all(abs(a.interface - b.interface) <= 1 for a, b in zip(ours, theirs))
+        spread = {d["interface"]: d["interfaces"] for d in dem.hinges_detail}
+        assert all(a.interface in spread[b.interface] for a, b in zip(ours, theirs))
+    weight = summary.selfweight["arch_weight_N"]
+    assert weight == pytest.approx(dem.selfweight["arch_weight_N"], rel=1e-9)
+    assert summary.selfweight["vertical_reaction_sum_N"] == pytest.approx(weight, rel=1e-6)
+    assert abs(summary.selfweight["horizontal_reaction_sum_N"]) <= 1e-6 * weight
+    assert summary.selfweight["thrust_N"] == pytest.approx(dem.selfweight["thrust_N"], rel=0.02)
     with (tmp_path / name / "series.csv").open() as f:
         rows = [r for r in csv.DictReader(f) if r["stage"] == "equilibrium"]
-    assert len(rows) == summary["equilibria"] >= 10
+    assert len(rows) == summary.equilibria >= 10
     assert all(float(r["min_stiffness_N_per_m"]) > 0.0 for r in rows)
 
 
@@ -306,12 +307,12 @@ def test_stiff_joints_approach_the_rigid_limit(coarse):
     rigid, runs = coarse
     stiff, soft = runs[1000], runs[300]
     assert rigid.collapse_mode == "hinging"
-    assert stiff["du_mm"] == pytest.approx(rigid.du_rigid_mm, rel=0.03)
-    ours = _labels(stiff["hinges_at_collapse"])
+    assert stiff.du_mm == pytest.approx(rigid.du_rigid_mm, rel=0.03)
+    ours = _labels(stiff.hinges_at_collapse)
     assert len(ours) == len(rigid.collapse_hinges) == 4
     for a, b in zip(ours, rigid.collapse_hinges):
         assert a[-1] == b[-1] and abs(int(a[:-1]) - int(b[:-1])) <= 1
-    assert soft["du_mm"] < stiff["du_mm"] < rigid.du_rigid_mm
+    assert soft.du_mm < stiff.du_mm < rigid.du_rigid_mm
 
 
 @pytest.fixture(scope="module")

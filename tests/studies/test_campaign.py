@@ -20,6 +20,7 @@ from yadearch.cli.campaigns import sweep
 from yadearch.engine.process import exit_reason
 from yadearch.errors import CampaignError, CaseError, YadearchError
 from yadearch.plotting.sweep import kn_sweep_figure
+from yadearch.results.summary import RunSummary
 from yadearch.studies.campaign import (
     FAILED_FILE,
     RESULTS_FILE,
@@ -203,9 +204,13 @@ def test_resume_accepts_a_run_that_predates_a_parameter_at_its_default(tmp_path)
 
 def test_hinge_labels_follow_the_paper():
     detail = [{**h, "rotation_mrad": r} for h, r in zip(HINGES, (147, 460, 231, 8, 93))]
-    labels = label_hinges({"hinges_at_collapse": HINGES, "hinges_detail": detail}, 15)
+    def summary(hinges: list[dict], detail: list[dict]) -> RunSummary:
+        return RunSummary.from_json({"du_mm": 50.0, "steps": 1, "wall_s": 1.0, "hinges_at_collapse": hinges,
+                                     "hinges_detail": detail})
+
+    labels = label_hinges(summary(HINGES, detail), 15)
     assert labels == {"hinge_A": 3, "hinge_B": 8, "hinge_C": 16, "hinge_D": 1}
-    assert label_hinges({"hinges_at_collapse": []}, 15) == dict.fromkeys(labels)
+    assert label_hinges(summary([], []), 15) == dict.fromkeys(labels)
 
 
 def read_batch_table(path: Path) -> list[dict]:

@@ -32,6 +32,7 @@ from pathlib import Path
 from yadearch.case.config import preset
 from yadearch.engine.process import _swap_into_place
 from yadearch.results.rundir import staging_folder, write_run
+from yadearch.results.summary import RunSummary
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import local_pool
 from yadearch.studies.grid import grid
@@ -43,8 +44,8 @@ def slow_run(case, folder, timeout_s):
     staging.mkdir(parents=True)
     time.sleep(random.uniform(0.0, 0.3))
     kn = case.interface.kn_N_per_mm3
-    summary = {{"du_mm": 50 + 10 * math.log10(kn), "collapsed": True, "hinges_at_collapse": [],
-               "steps": 100, "wall_s": 0.1}}
+    summary = RunSummary(du_mm=50 + 10 * math.log10(kn), collapsed=True, hinges_at_collapse=(), steps=100,
+                         wall_s=0.1)
     write_run(staging, case.to_toml(), [{{"stage": "equilibrium", "delta_mm": 1.0}}] * 200,
               [{{"stage": "equilibrium", "interface": 1}}] * 200, {{}}, summary)
     time.sleep(random.uniform(0.0, 0.1))
@@ -95,11 +96,12 @@ def test_a_resume_in_process_trusts_only_complete_folders(tmp_path):
 
     def quick_run(case, folder, timeout_s):
         from yadearch.results.rundir import write_run
+        from yadearch.results.summary import RunSummary
 
         calls.append(case.name)
         kn = case.interface.kn_N_per_mm3
-        write_run(folder, case.to_toml(), [], [], {}, {"du_mm": expected_du(kn), "collapsed": True,
-                                                      "hinges_at_collapse": [], "steps": 1, "wall_s": 0.1})
+        write_run(folder, case.to_toml(), [], [], {}, RunSummary(du_mm=expected_du(kn), collapsed=True,
+                                                                hinges_at_collapse=(), steps=1, wall_s=0.1))
         return {"status": "done", "reason": ""}
 
     base = preset("set1").with_overrides({"n_voussoirs": 15})

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from yadearch.analysis.tracking import HingeTrack, sequence
+from yadearch.results.summary import RunSummary
 
 CAP_TOLERANCE = 0.05  # |shear| >= (1 - this) tan(phi) |normal| counts as at the Coulomb cap
 SLIP_THRESHOLD_MM = 0.2  # tangential slip that is sliding, not elastic shear (ks) deformation
@@ -43,14 +44,14 @@ def slip_during_moves(friction: dict, slip_threshold_mm: float = SLIP_THRESHOLD_
             "while the joint was open")
 
 
-def relaxation_jump(summary: dict, fraction: float = JUMP_FRACTION, near_limit: float = NEAR_LIMIT) -> str | None:
+def relaxation_jump(summary: RunSummary, fraction: float = JUMP_FRACTION, near_limit: float = NEAR_LIMIT) -> str | None:
     """A warning when, short of `near_limit` x du, the relaxation of an accepted increment moved a
     block by at least `fraction` of the increment (and JUMP_FLOOR of the runaway distance; summary.json's
     `relaxations`): the arch did not follow the support but jumped to that state (a snap to another
     branch), so du may depend on `runaway_mm` and on the increments (docs/numerics.md). Close to du
     the equilibrium moves fast with the support (the fold): larger relaxations there are the path's."""
-    relaxations = summary.get("relaxations") or {}
-    end = summary.get("du_mm") or summary.get("last_equilibrium_mm")
+    relaxations = summary.relaxations or {}
+    end = summary.du_mm or summary.last_equilibrium_mm
     if not relaxations.get("move_mm") or end is None:
         return None
     runaway_mm = relaxations["runaway_mm"]
@@ -65,19 +66,19 @@ def relaxation_jump(summary: dict, fraction: float = JUMP_FRACTION, near_limit: 
             "du may depend on numerics.runaway_mm and the increments")
 
 
-def collapse_by_timeout(summary: dict) -> str | None:
+def collapse_by_timeout(summary: RunSummary) -> str | None:
     """A warning when du's upper end had no equilibrium only because the time allowed ran out (no
     block moved the runaway distance): a slow snap, as under heavy damping, reads as collapse."""
-    if summary.get("collapse_verdict") != TIMED_OUT:
+    if summary.collapse_verdict != TIMED_OUT:
         return None
     return ("du's upper end reached no equilibrium within numerics.hold_max_s but no block ran away: a "
             "slow hinge snap may have been read as collapse; confirm with a larger numerics.hold_max_s")
 
 
-def run_warnings(summary: dict) -> list[str]:
+def run_warnings(summary: RunSummary) -> list[str]:
     """The warnings a finished run's summary.json calls for: slip during the moves, jumps in the path,
     a collapse read from a timeout."""
-    warnings = (slip_during_moves(summary.get("friction") or {}), relaxation_jump(summary),
+    warnings = (slip_during_moves(summary.friction), relaxation_jump(summary),
                 collapse_by_timeout(summary))
     return [w for w in warnings if w]
 

@@ -105,8 +105,7 @@ def default_thresholds(case: dict[str, Any]) -> Thresholds:
 
 def analyse_run(run: RunFolder, thresholds: Thresholds | None = None) -> RunAnalysis:
     """Analyse a run folder read with `load_run` / `rundir.read_run`."""
-    summary = run.summary
     return analyse_history(run.joints, run.case["geometry"]["thickness_mm"],
-                           run.case["material"]["friction_deg"], summary.get("du_mm"),
-                           bool(summary.get("collapsed")), _final_slip_mm(run),
+                           run.case["material"]["friction_deg"], run.summary.du_mm,
+                           run.summary.collapsed, _final_slip_mm(run),
                            thresholds or default_thresholds(run.case))

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import signal
 import sys
 from pathlib import Path
@@ -20,25 +19,17 @@ from yadearch.cli.sensitivity import sensitivity
 from yadearch.engine.process import run_case_process
 from yadearch.errors import YadearchError
 from yadearch.reporting.report import write_report
-from yadearch.results.rundir import hinge_list, holds_case
+from yadearch.results.rundir import holds_case, read_summary
 
 
 def _report_summary(out: Path) -> None:
-    summary = json.loads((out / "summary.json").read_text())
-    du = summary["du_mm"]
-    hinges = hinge_list(summary["hinges_at_collapse"])
-    click.echo(f"{summary['name']}: du = {'no collapse' if du is None else f'{du:.2f} mm'}, "
-               f"hinges at collapse {hinges or '-'}, {_effort(summary)}, "
-               f"{summary['wall_s']:.0f} s -> {out}")
+    summary = read_summary(out)
+    du = summary.du_mm
+    click.echo(f"{summary.name}: du = {'no collapse' if du is None else f'{du:.2f} mm'}, "
+               f"hinges at collapse {summary.hinge_labels or '-'}, {summary.cost}, "
+               f"{summary.wall_s:.0f} s -> {out}")
     for warning in run_warnings(summary):
         click.echo(f"warning: {warning}")
-
-
-def _effort(summary: dict) -> str:
-    """What the run cost its engine: YADE steps, or the static engine's Newton iterations."""
-    if summary.get("engine") == "static":
-        return f"static engine, {summary['iterations']} iterations"
-    return f"{summary['steps']} steps"
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})

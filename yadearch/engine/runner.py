@@ -27,6 +27,7 @@ from yadearch.engine.stepping import SteppingGate
 from yadearch.engine.timing import EngineClock
 from yadearch.errors import CANNOT_STAND, RunFailedError
 from yadearch.model import units
+from yadearch.results.summary import HingeRef, RunSummary, collapse_fields
 from yadearch.solve.path import RUNAWAY, STABLE, TIMEOUT
 
 SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
@@ -257,44 +258,36 @@ class Runner:
             self._run_steps(CHECK_EVERY_STEPS // 5)
             self._voussoir_positions()  # raises on a NaN
 
-    def run(self) -> dict:
-        """All stages, then YADE's simulation thread stopped; returns the summary dict (records are
-        in `self.records`)."""
+    def run(self) -> RunSummary:
+        """All stages, then YADE's simulation thread stopped; returns what the run found and cost
+        (the case's own fields are the caller's to add; records are in `self.records`)."""
         try:
             return self._stages()
         finally:
             self.close()
 
-    def _stages(self) -> dict:
+    def _stages(self) -> RunSummary:
         from yade import O
 
         selfweight = self.selfweight()
         loading = EquilibriumPath(self)
         path = loading.follow()
-        summary: dict = {"selfweight": selfweight}
-        lo = units.to_mm(path.lower)
-        summary.update(increments=len(path.steps), equilibria=len(path.equilibria),
-                       last_equilibrium_mm=lo, hinges_last_equilibrium=loading.last_equilibrium_hinges,
-                       friction=dict(self.recorder.friction), relaxations=loading.relaxations)
+        outcome = collapse_fields(path, self.movement)
         if path.collapsed:
             hinges = loading.collapse_state(path.upper)
-            du, hi = units.to_mm(path.du), units.to_mm(path.upper)
-            dx, dy = self.movement.components(path.du)
-            summary.update(collapsed=True, du_mm=du, du_bracket_mm=[lo, hi], collapse_verdict=path.upper_verdict,
-                           du_components_mm=[units.to_mm(dx), units.to_mm(dy)],
-                           du_rotation_mrad=1e3 * self.movement.rotation(path.du))
-            self.log(f"[{self.case.name}] du = {du:.2f} mm (no equilibrium at {hi:.2f}, "
-                     f"equilibrium at {lo:.2f})")
+            self.log(f"[{self.case.name}] du = {outcome['du_mm']:.2f} mm (no equilibrium at "
+                     f"{units.to_mm(path.upper):.2f}, equilibrium at {units.to_mm(path.lower):.2f})")
         else:
             self.log(f"[{self.case.name}] no collapse up to {units.to_mm(loading.settings.max_displacement):g} mm")
-            summary.update(collapsed=False, du_mm=None, du_bracket_mm=None, collapse_verdict=None)
             self.stage = "end"
             hinges = self.recorder.joints("end")
-        summary["hinges_at_collapse"] = [{"interface": h.interface, "side": h.side} for h in hinges] \
-            if summary["collapsed"] else []
-        summary["hinges_detail"] = [h.to_json() for h in hinges]
         wall = time.time() - self.wall0
-        summary.update(steps=self.total_steps, steps_by_stage=dict(self.steps_by_stage), dt_s=O.dt, wall_s=wall,
-                       steps_per_s=self.total_steps / wall if wall > 0 else None, profile=self.clock.profile(wall))
         self._progress("done", force=True)
-        return summary
+        return RunSummary(
+            **outcome, selfweight=selfweight, increments=len(path.steps), equilibria=len(path.equilibria),
+            hinges_last_equilibrium=loading.last_equilibrium_hinges, friction=dict(self.recorder.friction),
+            relaxations=loading.relaxations,
+            hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges) if path.collapsed else (),
+            hinges_detail=[h.to_json() for h in hinges], steps=self.total_steps,
+            steps_by_stage=dict(self.steps_by_stage), dt_s=O.dt, wall_s=wall,
+            steps_per_s=self.total_steps / wall if wall > 0 else None, profile=self.clock.profile(wall))

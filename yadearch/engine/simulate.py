@@ -6,6 +6,7 @@ campaign down). Exit code 0: run folder complete; 1: the run failed (reason in r
 
 from __future__ import annotations
 
+import dataclasses
 import os
 import signal
 import sys
@@ -17,14 +18,15 @@ from yadearch.case.movement import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.results.provenance import provenance
-from yadearch.results.rundir import LOG_FILE, final_folder, hinge_list, write_run
+from yadearch.results.rundir import LOG_FILE, final_folder, write_run
+from yadearch.results.summary import DEM, RunSummary, loading_info
 
 PR_SET_PDEATHSIG = 1  # linux/prctl.h
 SCRATCH_RECORD = ".yade_scratch"  # in the staging folder: where YADE's temporary folder is
 INTERRUPTED_EXIT = 130  # the shell's code for a run stopped by a signal, not by a failure
 
 
-def simulate(case: ArchCase, out: Path) -> dict:
+def simulate(case: ArchCase, out: Path) -> RunSummary:
     """Run `case` to collapse and write its run folder to `out`; returns the summary."""
     from yadearch.engine.loading import criterion_text
     from yadearch.engine.runner import Runner
@@ -50,27 +52,21 @@ def simulate(case: ArchCase, out: Path) -> dict:
     runner = Runner(case, log=log)
     log(f"[{case.name}] dt={runner.scene.dt:.3e} s, {len(runner.scene.body_ids)} bodies")
     started = time.strftime("%Y-%m-%dT%H:%M:%S")
-    summary: dict = {"name": case.name, "started": started,
-                     "kn_N_per_mm3": case.interface.kn_N_per_mm3, "ks_N_per_mm3": case.ks_N_per_mm3,
-                     "kn_effective_N_per_mm3": runner.scene.stiffness.kn / units.N_PER_MM3,
-                     "settlement_speed_mm_per_s": case.settlement_speed_mm_per_s,
-                     "contact_model": case.numerics.contact_model,
-                     "loading": {"moving_support": case.loading.moving_support,
-                                 "motion": case.loading.support_motion,
-                                 "direction_deg": case.loading.settlement_direction_deg,
-                                 "max_displacement_mm": path_end_mm(case, runner.movement)},
-                     "collapse_criterion": criterion_text(case.numerics)}
     imperfections = runner.scene.imperfections
-    if imperfections is not None:
-        summary["imperfections"] = imperfections.summary()
-    summary.update(runner.run())
-    summary.update(origin)
+    found = runner.run()
+    summary = dataclasses.replace(
+        found, name=case.name, started=started, engine=DEM,
+        kn_N_per_mm3=case.interface.kn_N_per_mm3, ks_N_per_mm3=case.ks_N_per_mm3,
+        kn_effective_N_per_mm3=runner.scene.stiffness.kn / units.N_PER_MM3,
+        settlement_speed_mm_per_s=case.settlement_speed_mm_per_s, contact_model=case.numerics.contact_model,
+        loading=loading_info(case.loading, path_end_mm(case, runner.movement)),
+        collapse_criterion=criterion_text(case.numerics),
+        imperfections=imperfections.summary() if imperfections is not None else None, **origin)
     write_run(out, case.to_toml(), runner.records.series, runner.records.joints,
               runner.records.snapshots, summary, imperfections.table() if imperfections else None)
-    du = summary["du_mm"]
-    hinges = hinge_list(summary["hinges_at_collapse"])
-    log(f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} hinges={hinges or '-'} "
-        f"steps={summary['steps']} wall={summary['wall_s']:.0f} s -> {final_folder(out)}")
+    du = summary.du_mm
+    log(f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} hinges={summary.hinge_labels or '-'} "
+        f"steps={summary.steps} wall={summary.wall_s:.0f} s -> {final_folder(out)}")
     log_file.close()
     return summary
 

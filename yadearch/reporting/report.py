@@ -20,7 +20,8 @@ from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import as_ran, preset
 from yadearch.plotting.run_figures import write_figures
-from yadearch.results.rundir import FIGURES_DIR, RunFolder, hinge_list
+from yadearch.results.rundir import FIGURES_DIR, RunFolder
+from yadearch.results.summary import DEM, HingeRef, RunSummary
 
 REPORT_FILE = "report.md"
 HINGE_ROWS = ("hinge_A", "hinge_B", "hinge_C")
@@ -68,11 +69,6 @@ ENGINE_NAMES = {"dem": "the DEM (YADE, explicit dynamics relaxed to equilibrium)
                 "static": "the static engine (Newton's method on the same blocks and joints)"}
 
 
-def engine_of(summary: dict[str, Any]) -> str:
-    """Which engine made a run: summary.json's `engine` ('dem' for runs that predate the field)."""
-    return str(summary.get("engine", "dem"))
-
-
 def case_mismatch(case: dict[str, Any]) -> str | None:
     """How a run's case.toml differs from the paper's arch, material, loading and perfect joints
     (the first difference, e.g. "geometry.n_voussoirs 10, paper 55"); None if it is the paper's case."""
@@ -84,14 +80,14 @@ def case_mismatch(case: dict[str, Any]) -> str | None:
     return None
 
 
-def match_reference(case: dict[str, Any], summary: dict[str, Any]) -> str | None:
+def match_reference(case: dict[str, Any], summary: RunSummary) -> str | None:
     """The paper set a run reproduces: only a run of the paper's case (`case_mismatch`), then the set
     by its name ("set1"/"set2"), else by its kn (N/mm3)."""
     if case_mismatch(case) is not None:
         return None
-    if summary.get("name") in reference.SETS:
-        return summary["name"]
-    kn = summary.get("kn_N_per_mm3")
+    if summary.name in reference.SETS:
+        return summary.name
+    kn = summary.kn_N_per_mm3
     for name, ref in reference.SETS.items():
         if kn is not None and math.isclose(kn, ref["kn_N_per_mm3"], rel_tol=KN_MATCH_RELATIVE):
             return name
@@ -109,14 +105,15 @@ def _difference(run_interface: int, paper: list[int]) -> str:
     return f"{gap:+d}" if gap else "0"
 
 
-def match_hinges(summary_hinges: list[dict], paper_rows: list[tuple[str, list[int], str]]) -> dict[str, dict | None]:
+def match_hinges(summary_hinges: tuple[HingeRef, ...],
+                 paper_rows: list[tuple[str, list[int], str]]) -> dict[str, HingeRef | None]:
     """Each paper hinge (row, interfaces, side) paired with the run's hinge of the same side nearest
     to it; a run hinge is used once, rows in the order given."""
     free = list(summary_hinges)
-    pairs: dict[str, dict | None] = {}
+    pairs: dict[str, HingeRef | None] = {}
     for row, interfaces, side in paper_rows:
-        same = [h for h in free if h["side"] == side]
-        best = min(same, key=lambda h: min(abs(h["interface"] - k) for k in interfaces), default=None)
+        same = [h for h in free if h.side == side]
+        best = min(same, key=lambda h: min(abs(h.interface - k) for k in interfaces), default=None)
         pairs[row] = best
         if best is not None:
             free.remove(best)
@@ -132,7 +129,7 @@ def table_one(reported: ReportedRun) -> list[str]:
     order = {t.interface: t.order for t in reported.analysis.tracks}
     rows = [(row, ref["numerical"][row], reference.HINGE_SIDES[row]) for row in HINGE_ROWS]
     rows.append(("hinge_D", [reference.HINGE_D_INTERFACE], reference.HINGE_SIDES["hinge_D"]))
-    pairs = match_hinges(summary["hinges_at_collapse"], rows)
+    pairs = match_hinges(summary.hinges_at_collapse, rows)
     lines = ["| | paper experimental | paper numerical | this run | run − exp. | run − num. |",
              "|---|---|---|---|---|---|"]
     for row, _, side in rows:
@@ -142,13 +139,13 @@ def table_one(reported: ReportedRun) -> list[str]:
         if hinge is None:
             run_text, d_exp, d_num = "—", "—", "—"
         else:
-            formed = order.get(hinge["interface"])
-            run_text = f"{hinge['interface']} {hinge['side']}" + (f" (formed #{formed})" if formed else "")
-            d_exp, d_num = _difference(hinge["interface"], exp), _difference(hinge["interface"], num)
+            formed = order.get(hinge.interface)
+            run_text = f"{hinge.interface} {hinge.side}" + (f" (formed #{formed})" if formed else "")
+            d_exp, d_num = _difference(hinge.interface, exp), _difference(hinge.interface, num)
         name = row.replace("hinge_", "hinge ") + ("¹" if row == "hinge_D" else "")
         lines.append(f"| {name} | {_hinge_text(exp, side)} | {_hinge_text(num, side)} | {run_text} | "
                      f"{d_exp} | {d_num} |")
-    du = summary.get("du_mm")
+    du = summary.du_mm
     exp_du, num_du = ref["experimental"]["du_mm"], ref["numerical"]["du_mm"]
     if du is None:
         lines.append(f"| du (mm) | {exp_du:.1f} | {num_du:.1f} | no collapse | — | — |")
@@ -182,16 +179,16 @@ def run_section(reported: ReportedRun) -> list[str]:
     """The Markdown section of one run."""
     run, analysis = reported.run, reported.analysis
     summary = run.summary
-    du = summary.get("du_mm")
-    hinges = hinge_list(summary["hinges_at_collapse"]) or "—"
-    lines = [f"## {summary.get('name', run.path.name)}", "",
+    du = summary.du_mm
+    hinges = summary.hinge_labels or "—"
+    lines = [f"## {summary.name or run.path.name}", "",
              f"- run folder: `{run.path}`",
-             f"- kn = {summary.get('kn_N_per_mm3')} N/mm3, ks = {summary.get('ks_N_per_mm3')} N/mm3, "
-             f"joints computed by {CONTACT_MODEL_NAMES.get(summary.get('contact_model', 'cgal'))}",
-             f"- solved by {ENGINE_NAMES[engine_of(summary)]}",
+             f"- kn = {summary.kn_N_per_mm3} N/mm3, ks = {summary.ks_N_per_mm3} N/mm3, "
+             f"joints computed by {CONTACT_MODEL_NAMES.get(summary.contact_model or 'cgal')}",
+             f"- solved by {ENGINE_NAMES[summary.engine]}",
              f"- du = {'no collapse' if du is None else f'{du:.2f} mm'}"
-             + (f" (bracket {summary['du_bracket_mm'][0]:.2f}–{summary['du_bracket_mm'][1]:.2f} mm)"
-                if summary.get("du_bracket_mm") else ""),
+             + (f" (bracket {summary.du_bracket_mm[0]:.2f}–{summary.du_bracket_mm[1]:.2f} mm)"
+                if summary.du_bracket_mm else ""),
              f"- hinges at collapse: {hinges}",
              f"- mechanism: {analysis.mechanism}",
              "- formation: " + (", then ".join(f"{label or '(unlabelled)'} at {delta:.2f} mm ({seq})"
@@ -203,7 +200,7 @@ def run_section(reported: ReportedRun) -> list[str]:
     for warning in run_warnings(summary):
         lines += [f"**Warning:** {warning}.", ""]
     own = [(t.interface, t.side) for t in sorted(analysis.tracks, key=lambda t: t.interface)]
-    if own != [(h["interface"], h["side"]) for h in summary["hinges_at_collapse"]] and summary.get("collapsed"):
+    if own != [(h.interface, h.side) for h in summary.hinges_at_collapse] and summary.collapsed:
         lines += [f"**Note:** the analysis finds hinges {' '.join(f'{k}{s}' for k, s in own)} at collapse, "
                   "summary.json lists the ones above (different hinge threshold?).", ""]
     if reported.reference_name:
@@ -223,12 +220,12 @@ def run_section(reported: ReportedRun) -> list[str]:
         f"Every hinge at every recorded δ: [hinges.csv]({reported.folder}/hinges.csv).", ""]
     lines += ["### Figures", ""]
     for name in reported.figures:
-        caption = CAPTIONS[name] if summary.get("collapsed") or name != "collapse" else FINAL_STATE_CAPTION
+        caption = CAPTIONS[name] if summary.collapsed or name != "collapse" else FINAL_STATE_CAPTION
         lines += [f"![{name}]({reported.folder}/{FIGURES_DIR}/{name}.png)", "",
                   f"*{caption}* ([PDF]({reported.folder}/{FIGURES_DIR}/{name}.pdf))", ""]
     lines += ["### Provenance", "", "| | |", "|---|---|"]
     for key in ("engine", "yade_version", "yadearch_version", "git_revision", "steps", "wall_s"):
-        value = engine_of(summary) if key == "engine" else summary.get(key)
+        value = getattr(summary, key)
         lines.append(f"| {key} | {f'{value:.0f}' if key == 'wall_s' and value is not None else value} |")
     return lines + [""]
 
@@ -241,18 +238,18 @@ def overview(reported: list[ReportedRun]) -> list[str]:
     for r in reported:
         s = r.run.summary
         ref = reference.SETS.get(r.reference_name or "", {})
-        du = s.get("du_mm")
-        hinges = hinge_list(s["hinges_at_collapse"]) or "—"
-        lines.append(f"| {s.get('name', r.run.path.name)} | {engine_of(s)} | {r.reference_name or '—'} | "
+        du = s.du_mm
+        hinges = s.hinge_labels or "—"
+        lines.append(f"| {s.name or r.run.path.name} | {s.engine} | {r.reference_name or '—'} | "
                      f"{'no collapse' if du is None else f'{du:.2f}'} | "
                      f"{ref['numerical']['du_mm'] if ref else '—'} | {ref['experimental']['du_mm'] if ref else '—'} | "
                      f"{hinges} |")
     return lines
 
 
-def _folder_name(summary: dict[str, Any], path: Path, taken: set[str]) -> str:
+def _folder_name(summary: RunSummary, path: Path, taken: set[str]) -> str:
     """Sub-folder of the report for a run's figures: the run folder's own name (unique)."""
-    base = str(path.resolve().name or summary.get("name")).replace("/", "_")
+    base = str(path.resolve().name or summary.name).replace("/", "_")
     name, k = base, 2
     while name in taken:
         name, k = f"{base}-{k}", k + 1
@@ -275,7 +272,7 @@ def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
     lines = ["# yadearch report", "", f"Reference: *{reference.PAPER}*.", ""] + overview(reported) + [""]
     for r in reported:
         lines += run_section(r)
-    cited = reference.references_for(dem=any(engine_of(r.run.summary) == "dem" for r in reported),
+    cited = reference.references_for(dem=any(r.run.summary.engine == DEM for r in reported),
                                      paper_case=any(r.reference_name for r in reported))
     lines += ["## References", ""] + [f"{k}. {text}" for k, text in enumerate(cited, start=1)] + [""]
     path = out / REPORT_FILE

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import subprocess
 from pathlib import Path
+from typing import Any
 
 from yadearch import __version__
 
@@ -21,5 +22,6 @@ def git_revision() -> str | None:
     return rev + ("+dirty" if dirty else "")
 
 
-def provenance(yade_version: str | None) -> dict[str, str | None]:
+def provenance(yade_version: str | None) -> dict[str, Any]:
+    """The versions and revision a run records in its summary (RunSummary fields)."""
     return {"yade_version": yade_version, "yadearch_version": __version__, "git_revision": git_revision()}

@@ -3,6 +3,7 @@ what it means (summary.json) and how it went (run.log). Pure Python: readable wi
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from dataclasses import dataclass
 from functools import partial
@@ -14,12 +15,12 @@ import pandas as pd
 from yadearch.atomic import write_atomically, write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase, as_ran
 from yadearch.errors import RunFolderError
+from yadearch.results.summary import RunSummary
 
 CASE_FILE = "case.toml"
 SERIES_FILE = "series.csv"
 JOINTS_FILE = "joints.csv"
 FIGURES_DIR = "figures"  # a run's figures, inside its run folder (or its report's folder for it)
-TABLE_ROWS_KEY = "table_rows"  # summary.json: the rows each table had when it was written
 STIFFNESS_COLUMN = "min_stiffness_N_per_m"  # series.csv: an equilibrium state's stability (model.stability)
 IMPERFECTIONS_FILE = "imperfections.csv"  # the defects drawn for each joint (imperfect arches only)
 SNAPSHOTS_FILE = "snapshots.json"
@@ -32,7 +33,7 @@ REQUIRED_KEYS = ("du_mm", "hinges_at_collapse", "steps", "wall_s")  # what campa
 
 
 def hinge_list(hinges: list[dict] | None) -> str:
-    """A summary's hinges (`hinges_at_collapse`, `hinges_last_equilibrium`) as "1E 9I 29E 56E"."""
+    """Hinge records (a summary's `hinges_last_equilibrium`, a snapshot's) as "1E 9I 29E 56E"."""
     return " ".join(f"{h['interface']}{h['side']}" for h in hinges or [])
 
 @dataclass
@@ -44,7 +45,7 @@ class RunFolder:
     series: pd.DataFrame
     joints: pd.DataFrame
     snapshots: dict[str, Any]
-    summary: dict[str, Any]
+    summary: RunSummary
 
 
 def staging_folder(out: Path) -> Path:
@@ -61,7 +62,7 @@ def final_folder(path: Path) -> Path:
 
 
 def write_run(out: Path, case_toml: str, series: list[dict], joints: list[dict],
-              snapshots: dict[str, Any], summary: dict[str, Any],
+              snapshots: dict[str, Any], summary: RunSummary,
               imperfections: dict[str, Any] | None = None) -> None:
     """Write every file of a run folder, each atomically (imperfections.csv only for an imperfect
     arch); summary.json last, with its schema version and a completeness marker, so that a valid
@@ -73,8 +74,8 @@ def write_run(out: Path, case_toml: str, series: list[dict], joints: list[dict],
     for name, rows in ((SERIES_FILE, series), (JOINTS_FILE, joints)):
         write_atomically(out / name, partial(pd.DataFrame(rows).to_csv, index=False, float_format="%.8g"))
     write_text_atomically(out / SNAPSHOTS_FILE, json.dumps(snapshots, indent=1, default=_json_default))
-    marked = {**summary, TABLE_ROWS_KEY: {SERIES_FILE: len(series), JOINTS_FILE: len(joints)},
-              "schema_version": SCHEMA_VERSION, "complete": True}
+    counted = dataclasses.replace(summary, table_rows={SERIES_FILE: len(series), JOINTS_FILE: len(joints)})
+    marked = {**counted.to_json(), "schema_version": SCHEMA_VERSION, "complete": True}
     write_text_atomically(out / SUMMARY_FILE, json.dumps(marked, indent=2, default=_json_default) + "\n")
 
 
@@ -115,12 +116,24 @@ def is_complete(path: Path) -> bool:
     return summary_problem(Path(path)) is None
 
 
-def read_summary(path: Path) -> dict[str, Any]:
+def read_summary(path: Path) -> RunSummary:
     """A finished run's summary; RunFolderError in one line if the folder is not complete."""
     problem = summary_problem(Path(path))
     if problem:
         raise RunFolderError(f"{path} is not a complete run folder: {problem}")
-    return json.loads((Path(path) / SUMMARY_FILE).read_text())
+    try:
+        return RunSummary.from_json(json.loads((Path(path) / SUMMARY_FILE).read_text()))
+    except (TypeError, ValueError, KeyError) as exc:
+        raise RunFolderError(f"{path / SUMMARY_FILE} cannot be read as a run summary ({exc})") from None
+
+
+def finished_summary(path: Path) -> RunSummary | None:
+    """The summary of a finished run in `path`; None if the folder holds none (missing, unfinished,
+    damaged: `summary_problem` says why)."""
+    try:
+        return read_summary(path)
+    except RunFolderError:
+        return None
 
 
 def case_differences(path: Path, case: ArchCase) -> list[str]:
@@ -161,7 +174,7 @@ def read_run(path: str | Path) -> RunFolder:
     except (OSError, ValueError, tomllib.TOMLDecodeError) as exc:
         raise RunFolderError(f"{path}: a file of the run folder cannot be read ({exc})") from None
     for name, table in ((SERIES_FILE, folder.series), (JOINTS_FILE, folder.joints)):
-        written = (summary.get(TABLE_ROWS_KEY) or {}).get(name)  # none in runs written before the counts
+        written = (summary.table_rows or {}).get(name)  # none in runs written before the counts
         if written is not None and len(table) != written:
             raise RunFolderError(f"{path / name} has {len(table)} rows where the run wrote {written}: it was cut short "
                                  "or changed; run the case again")

@@ -15,13 +15,13 @@ from yadearch.case.movement import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.results.provenance import provenance
-from yadearch.results.rundir import LOG_FILE, final_folder, hinge_list, write_run
+from yadearch.results.rundir import LOG_FILE, final_folder, write_run
+from yadearch.results.summary import STATIC, HingeRef, RunSummary, collapse_fields, loading_info
 from yadearch.solve.path import PathStep, path_settings
 from yadearch.solve.static_path import StaticEngineError, StaticLoading
 from yadearch.solve.statics import static_arch
 from yadearch.statics.records import DEM_ONLY_NUMERICS, StaticRecords
 
-ENGINE = "static"
 INTERRUPTED_EXIT = 130
 
 
@@ -39,7 +39,7 @@ def criterion_text(case: ArchCase) -> str:
             f"without], narrowed to < {n.du_tolerance_mm} mm.")
 
 
-def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = print) -> dict[str, Any]:
+def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = print) -> RunSummary:
     """Run `case` with the static engine and write its run folder to `out`; returns the summary."""
     wall0 = time.time()
     started = time.strftime("%Y-%m-%dT%H:%M:%S")
@@ -63,44 +63,30 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
     path = loading.follow(on_step=progress)
     for state in loading.accepted[1:]:
         last_hinges = records.add(state)
-    summary: dict[str, Any] = {
-        "name": case.name, "started": started, "engine": ENGINE,
-        "kn_N_per_mm3": case.interface.kn_N_per_mm3, "ks_N_per_mm3": case.ks_N_per_mm3,
-        "kn_effective_N_per_mm3": arch.law.kn / units.N_PER_MM3, "contact_model": "joint",
-        "loading": {"moving_support": case.loading.moving_support, "motion": case.loading.support_motion,
-                    "direction_deg": case.loading.settlement_direction_deg, "max_displacement_mm": end_mm},
-        "collapse_criterion": criterion_text(case), "unused_parameters": unused, "selfweight": selfweight}
-    if arch.imperfections is not None:
-        summary["imperfections"] = arch.imperfections.summary()
-    lo = units.to_mm(path.lower)
     hinges_last = last_hinges if len(loading.accepted) > 1 else []
-    summary.update(increments=len(path.steps), equilibria=len(path.equilibria), last_equilibrium_mm=lo,
-                   hinges_last_equilibrium=[h.to_json() for h in hinges_last], friction=records.friction,
-                   relaxations={"runaway_mm": num.runaway_mm,
-                                "delta_mm": [units.to_mm(s.lam) for s in loading.accepted[1:]],
-                                "increment_mm": _increments_mm(loading), "move_mm": [units.to_mm(s.move) for s in
-                                                                                     loading.accepted[1:]]},
-                   snaps=loading.snaps, descents=loading.descents)
-    if path.collapsed:
-        hinges = records.add(loading.collapse_state(path.upper), label="collapse")
-        dx, dy = arch.movement.components(path.du)
-        summary.update(collapsed=True, du_mm=units.to_mm(path.du), du_bracket_mm=[lo, units.to_mm(path.upper)],
-                       collapse_verdict=path.upper_verdict, du_components_mm=[units.to_mm(dx), units.to_mm(dy)],
-                       du_rotation_mrad=1e3 * arch.movement.rotation(path.du))
-        summary["hinges_at_collapse"] = [{"interface": h.interface, "side": h.side} for h in hinges]
-    else:
-        hinges = hinges_last
-        summary.update(collapsed=False, du_mm=None, du_bracket_mm=None, collapse_verdict=None, hinges_at_collapse=[])
-    wall = time.time() - wall0
-    summary.update(hinges_detail=[h.to_json() for h in hinges], iterations=loading.iterations,
-                   steps=loading.iterations, joint_evaluations=loading.solver.evaluations,
-                   solver_wall_s=time.time() - solver_start, wall_s=wall, **provenance(None))
+    hinges = records.add(loading.collapse_state(path.upper), label="collapse") if path.collapsed else hinges_last
+    summary = RunSummary(
+        name=case.name, started=started, engine=STATIC, kn_N_per_mm3=case.interface.kn_N_per_mm3,
+        ks_N_per_mm3=case.ks_N_per_mm3, kn_effective_N_per_mm3=arch.law.kn / units.N_PER_MM3,
+        contact_model="joint", loading=loading_info(case.loading, end_mm), collapse_criterion=criterion_text(case),
+        unused_parameters=unused, selfweight=selfweight,
+        imperfections=arch.imperfections.summary() if arch.imperfections is not None else None,
+        **collapse_fields(path, arch.movement), increments=len(path.steps), equilibria=len(path.equilibria),
+        hinges_last_equilibrium=[h.to_json() for h in hinges_last], friction=records.friction,
+        relaxations={"runaway_mm": num.runaway_mm, "delta_mm": [units.to_mm(s.lam) for s in loading.accepted[1:]],
+                     "increment_mm": _increments_mm(loading),
+                     "move_mm": [units.to_mm(s.move) for s in loading.accepted[1:]]},
+        snaps=loading.snaps, descents=loading.descents,
+        hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges) if path.collapsed else (),
+        hinges_detail=[h.to_json() for h in hinges], iterations=loading.iterations, steps=loading.iterations,
+        joint_evaluations=loading.solver.evaluations, solver_wall_s=time.time() - solver_start,
+        wall_s=time.time() - wall0, **provenance(None))
     write_run(out, case.to_toml(), records.series, records.joints, records.snapshots, summary,
               arch.imperfections.table() if arch.imperfections is not None else None)
-    du = summary["du_mm"]
+    du = summary.du_mm
     log(f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} "
-        f"hinges={hinge_list(summary['hinges_at_collapse']) or '-'} iterations={loading.iterations} "
-        f"wall={wall:.2f} s -> {final_folder(out)}")
+        f"hinges={summary.hinge_labels or '-'} iterations={loading.iterations} "
+        f"wall={summary.wall_s:.2f} s -> {final_folder(out)}")
     return summary
 
 

@@ -25,9 +25,10 @@ from yadearch.case.config import ArchCase, preset
 from yadearch.case.plan import plan_run
 from yadearch.engine.process import STATIC_ENGINE, check_yade_installed, run_case_process
 from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, YadearchError
-from yadearch.model.hinges import PAPER_LABELS, paper_labels
+from yadearch.model.hinges import PAPER_LABELS
 from yadearch.results.lock import folder_lock
-from yadearch.results.rundir import SUMMARY_FILE, case_differences, hinge_list, is_complete
+from yadearch.results.rundir import case_differences, finished_summary, is_complete
+from yadearch.results.summary import RunSummary
 from yadearch.studies.executors import Pool
 from yadearch.studies.grid import RUN_COLUMN, check_campaign_size, check_parameter, run_tag
 from yadearch.studies.sessions import record_session
@@ -216,14 +217,10 @@ def _columns(overrides: dict[str, Any]) -> dict[str, Any]:
 
 # ---------------------------------------------------------------- results
 
-def label_hinges(summary: dict[str, Any], n_voussoirs: int) -> dict[str, int | None]:
+def label_hinges(summary: RunSummary, n_voussoirs: int) -> dict[str, int | None]:
     """The interface of each of the paper's hinges A-D in a run's collapse mechanism (None where
-    the mechanism has no such hinge); `model.hinges.paper_labels` says which is which."""
-    rotation = {(h["interface"], h["side"]): h.get("rotation_mrad", 0.0)
-                for h in summary.get("hinges_detail") or []}
-    hinges = [(h["interface"], h["side"], rotation.get((h["interface"], h["side"]), 0.0))
-              for h in summary.get("hinges_at_collapse") or []]
-    by_label = {label: interface for (interface, _), label in paper_labels(hinges, n_voussoirs + 1).items()}
+    the mechanism has no such hinge)."""
+    by_label = {label: h.interface for h, label in summary.paper_labels(n_voussoirs + 1).items() if label}
     return {f"hinge_{label}": by_label.get(label) for label in PAPER_LABELS}
 
 
@@ -237,21 +234,20 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
              "hinge_B": None, "hinge_C": None, "hinge_D": None, "steps": None, "wall_s": math.nan,
              "max_slip_mm": math.nan, "max_friction_use": math.nan, "friction_interface": None,
              "engine": case.numerics.engine}
-    if is_complete(spec.folder):
-        summary = json.loads((spec.folder / SUMMARY_FILE).read_text())
-        hinges = summary.get("hinges_at_collapse") or []
-        du = summary.get("du_mm")
-        friction = summary.get("friction") or {}
+    summary = finished_summary(spec.folder)
+    if summary is not None:
+        du = summary.du_mm
+        friction = summary.friction
         row.update(max_slip_mm=friction.get("max_slip_mm", math.nan),
                    max_friction_use=friction.get("max_friction_use", math.nan),
                    friction_interface=friction.get("friction_interface"))
-        row.update(du_mm=math.nan if du is None else du, collapsed=bool(summary.get("collapsed")),
-                   hinges=hinge_list(hinges),
-                   mechanism="-".join(h["side"] for h in hinges),
+        row.update(du_mm=math.nan if du is None else du, collapsed=summary.collapsed,
+                   hinges=summary.hinge_labels,
+                   mechanism="-".join(h.side for h in summary.hinges_at_collapse),
                    **label_hinges(summary, case.geometry.n_voussoirs),
-                   steps=summary.get("steps"), wall_s=summary.get("wall_s"), engine=summary.get("engine", "dem"),
+                   steps=summary.steps, wall_s=summary.wall_s, engine=summary.engine,
                    status="done",
-                   reason="" if summary.get("collapsed") else f"no collapse up to {_path_end_mm(summary, case):g} mm")
+                   reason="" if summary.collapsed else f"no collapse up to {_path_end_mm(summary, case):g} mm")
     elif (spec.folder / FAILED_FILE).is_file():
         failed = json.loads((spec.folder / FAILED_FILE).read_text())
         row.update(empty, wall_s=failed.get("wall_s", math.nan), status="failed",
@@ -263,9 +259,9 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
     return row
 
 
-def _path_end_mm(summary: dict[str, Any], case: ArchCase) -> float:
+def _path_end_mm(summary: RunSummary, case: ArchCase) -> float:
     """Where a run that did not collapse stopped: its path's end, or the case's largest displacement."""
-    return float((summary.get("loading") or {}).get("max_displacement_mm", case.loading.max_settlement_mm))
+    return summary.loading.max_displacement_mm if summary.loading else case.loading.max_settlement_mm
 
 
 def results_table(specs: list[RunSpec], out: Path) -> pd.DataFrame:

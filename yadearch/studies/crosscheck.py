@@ -20,7 +20,8 @@ from typing import Any
 import pandas as pd
 
 from yadearch.case.config import ArchCase, case_from_dict
-from yadearch.results.rundir import SUMMARY_FILE, hinge_list, holds_case, is_complete, read_summary
+from yadearch.results.rundir import SUMMARY_FILE, holds_case, is_complete, read_summary
+from yadearch.results.summary import RunSummary
 from yadearch.studies.campaign import FAILED_FILE
 from yadearch.studies.robustness import same_hinge_set
 
@@ -35,24 +36,24 @@ class Pair:
     group: str
     name: str
     case: ArchCase
-    dem: dict[str, Any]  # the DEM run's summary.json
+    dem: RunSummary | str  # the DEM run's summary, or why it failed
 
 
 def pair_from_folder(group: str, folder: Path) -> Pair:
     """The DEM run in `folder` and its case switched to the static engine."""
     case = case_from_dict(tomllib.loads((folder / "case.toml").read_text()))
-    summary = folder / SUMMARY_FILE
-    if summary.is_file():
-        dem = json.loads(summary.read_text())
+    dem: RunSummary | str
+    if (folder / SUMMARY_FILE).is_file():
+        dem = read_summary(folder)
     else:  # a failed DEM run: its reason, which the static run should share
         failed = folder / FAILED_FILE
-        dem = {"error": json.loads(failed.read_text()).get("reason", "failed") if failed.is_file() else "no summary"}
+        dem = json.loads(failed.read_text()).get("reason", "failed") if failed.is_file() else "no summary"
     return Pair(group, folder.name, case.with_overrides({"numerics.engine": "static"}), dem)
 
 
-def _run_static(case: ArchCase, folder: Path) -> dict[str, Any]:
-    """Solve `case` statically into `folder` (reused when it holds this case); its summary, or the
-    failure's reason under "error"."""
+def _run_static(case: ArchCase, folder: Path) -> RunSummary | str:
+    """Solve `case` statically into `folder` (reused when it holds this case); its summary, or why
+    it failed."""
     from yadearch.statics.simulate import simulate_static
 
     if holds_case(folder, case):
@@ -60,7 +61,7 @@ def _run_static(case: ArchCase, folder: Path) -> dict[str, Any]:
     try:
         return simulate_static(case, folder, log=lambda line: None)
     except Exception as exc:  # noqa: BLE001  a failed run is recorded with its reason, the others go on
-        return {"error": f"{type(exc).__name__}: {exc}"}
+        return f"{type(exc).__name__}: {exc}"
 
 
 def run_pairs(pairs: list[Pair], out: Path, jobs: int) -> pd.DataFrame:
@@ -77,19 +78,21 @@ def run_pairs(pairs: list[Pair], out: Path, jobs: int) -> pd.DataFrame:
         cases = [pairs[k].case.with_overrides({"numerics.runaway_mm": SNAP_RUNAWAY_MM}) for k in differ]
         again = list(pool.map(_run_static, cases, [out / pairs[k].group / f"{pairs[k].name}_snaps" for k in differ]))
     for k, static in zip(differ, again):
-        rows[k].update(snaps_survived_du_mm=static.get("du_mm"),
-                       snaps_survived_hinges=hinge_list(static.get("hinges_at_collapse")))
+        survived = static if isinstance(static, RunSummary) else None
+        rows[k].update(snaps_survived_du_mm=survived.du_mm if survived else None,
+                       snaps_survived_hinges=survived.hinge_labels if survived else "")
     return pd.DataFrame(rows)
 
 
-def comparison_row(pair: Pair, static: dict[str, Any]) -> dict[str, Any]:
+def comparison_row(pair: Pair, static_run: RunSummary | str) -> dict[str, Any]:
     """One table row: both engines' du, hinges, verdicts and costs."""
-    dem, num = pair.dem, pair.case
-    dem_du, static_du = dem.get("du_mm"), static.get("du_mm")
-    dem_hinges, static_hinges = hinge_list(dem.get("hinges_at_collapse")), hinge_list(static.get("hinges_at_collapse"))
+    num = pair.case
+    (dem, dem_error), (static, static_error) = _split(pair.dem), _split(static_run)
+    dem_du, static_du = dem.du_mm, static.du_mm
+    dem_hinges, static_hinges = dem.hinge_labels, static.hinge_labels
     diff = 100.0 * (static_du / dem_du - 1.0) if dem_du and static_du else math.nan
-    both_failed = bool(dem.get("error")) and bool(static.get("error"))  # e.g. neither stands under its weight
-    snaps = static.get("snaps", [])
+    both_failed = bool(dem_error) and bool(static_error)  # e.g. neither stands under its weight
+    snaps = static.snaps or []
     return {
         "group": pair.group, "run": pair.name, "kn_N_per_mm3": num.interface.kn_N_per_mm3,
         "direction_deg": num.loading.settlement_direction_deg, "seed": num.imperfections.seed,
@@ -97,12 +100,19 @@ def comparison_row(pair: Pair, static: dict[str, Any]) -> dict[str, Any]:
         "within_1pct": bool(abs(diff) <= AGREEMENT_PCT) if math.isfinite(diff) else both_failed,
         "dem_hinges": dem_hinges, "static_hinges": static_hinges,
         "same_hinges": same_hinge_set(dem_hinges, static_hinges) or both_failed,
-        "dem_verdict": dem.get("collapse_verdict"), "static_verdict": static.get("collapse_verdict"),
+        "dem_verdict": dem.collapse_verdict, "static_verdict": static.collapse_verdict,
         "static_snaps": len(snaps), "largest_snap_mm": max((s["move_mm"] for s in snaps), default=0.0),
-        "dem_wall_s": dem.get("wall_s"), "static_wall_s": static.get("wall_s"),
-        "dem_error": dem.get("error", ""), "static_error": static.get("error", ""),
+        "dem_wall_s": dem.wall_s, "static_wall_s": static.wall_s,
+        "dem_error": dem_error, "static_error": static_error,
         "snaps_survived_du_mm": None, "snaps_survived_hinges": "",
     }
+
+
+def _split(run: RunSummary | str) -> tuple[RunSummary, str]:
+    """A run's summary and "", or an empty summary (no du, no hinges) and why the run failed."""
+    if isinstance(run, RunSummary):
+        return run, ""
+    return RunSummary(du_mm=None, hinges_at_collapse=(), steps=0, wall_s=math.nan), run
 
 
 def dem_folders(root: Path, pattern: str) -> list[Path]:

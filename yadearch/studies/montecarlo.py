@@ -15,9 +15,9 @@ import pandas as pd
 from yadearch.analysis.samples import BAND, MEDIAN_CONFIDENCE, du_statistics, hinge_frequencies
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.errors import CampaignError, RunFolderError
+from yadearch.errors import CampaignError
 from yadearch.model.hinges import PAPER_LABELS
-from yadearch.results.rundir import read_summary
+from yadearch.results.rundir import finished_summary
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool
 from yadearch.studies.grid import RUN_COLUMN, check_campaign_size, grid, run_tag
@@ -66,10 +66,8 @@ def with_imperfections(results: pd.DataFrame, out: Path) -> pd.DataFrame:
     """The campaign's results with each finished run's imperfection summary (summary.json)."""
     extra = []
     for _, row in results.iterrows():
-        try:
-            extra.append(read_summary(out / row["folder"]).get("imperfections", {}))
-        except RunFolderError:
-            extra.append({})
+        summary = finished_summary(out / row["folder"])
+        extra.append((summary.imperfections if summary else None) or {})
     return pd.concat([results.reset_index(drop=True), pd.DataFrame(extra)], axis=1)
 
 

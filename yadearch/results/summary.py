@@ -1,0 +1,192 @@
+"""summary.json as one type: what a run of either engine found (du, its bracket, the hinges), how it
+was loaded and what it cost. Written and read only through `RunSummary` (docs/usage.md, "The run
+folder"); the keys are the dataclass's fields, so the file stays flat and readable by hand."""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass, field
+from typing import Any
+
+from yadearch.case.sections import LoadingConfig
+from yadearch.errors import RunFolderError
+from yadearch.model import units
+from yadearch.model.hinges import paper_labels, same_hinges
+from yadearch.model.movement import Movement
+from yadearch.solve.path import PathResult
+
+DEM, STATIC = "dem", "static"  # the engines that write run folders
+TRANSLATION = "translation"
+# written only when set: engine-specific figures and what older runs lack
+OPTIONAL_KEYS = frozenset({
+    "settlement_speed_mm_per_s", "imperfections", "unused_parameters", "relaxations", "snaps", "descents",
+    "collapse_verdict", "du_components_mm", "du_rotation_mrad", "iterations", "joint_evaluations",
+    "solver_wall_s", "steps_by_stage", "dt_s", "steps_per_s", "profile", "table_rows"})
+
+
+@dataclass(frozen=True)
+class HingeRef:
+    """A hinge named by its interface (1 = the left support's) and the face it pivots on (I or E)."""
+
+    interface: int
+    side: str
+
+    @property
+    def label(self) -> str:
+        """The hinge as the tables print it, e.g. "30E"."""
+        return f"{self.interface}{self.side}"
+
+    def to_json(self) -> dict[str, Any]:
+        return {"interface": self.interface, "side": self.side}
+
+    @classmethod
+    def of(cls, hinge: Any) -> HingeRef:
+        """The reference of anything with an interface and a side (a model Hinge, a JSON record)."""
+        if isinstance(hinge, dict):
+            return cls(int(hinge["interface"]), str(hinge["side"]))
+        return cls(int(hinge.interface), str(hinge.side))
+
+
+@dataclass(frozen=True)
+class LoadingInfo:
+    """Which support moved, how, and how far the path was allowed to go."""
+
+    moving_support: str
+    direction_deg: float
+    max_displacement_mm: float
+    motion: str = TRANSLATION  # runs written before rotations and paths moved it in a straight line
+
+
+@dataclass(kw_only=True)
+class RunSummary:
+    """One run's summary.json; every field a reader may use, typed, in the file's order. Engine-specific
+    figures are None for the other engine and for runs written before they existed."""
+
+    name: str = ""
+    started: str = ""
+    engine: str = DEM  # runs written before the static engine existed are DEM runs
+    kn_N_per_mm3: float | None = None
+    ks_N_per_mm3: float | None = None
+    kn_effective_N_per_mm3: float | None = None
+    settlement_speed_mm_per_s: float | None = None
+    contact_model: str | None = None
+    loading: LoadingInfo | None = None
+    collapse_criterion: str = ""
+    unused_parameters: dict[str, Any] | None = None
+    selfweight: dict[str, Any] = field(default_factory=dict)
+    imperfections: dict[str, Any] | None = None
+    increments: int = 0
+    equilibria: int = 0
+    last_equilibrium_mm: float | None = None
+    hinges_last_equilibrium: list[dict[str, Any]] = field(default_factory=list)
+    friction: dict[str, Any] = field(default_factory=dict)
+    relaxations: dict[str, Any] | None = None
+    snaps: list[Any] | None = None
+    descents: int | None = None
+    collapsed: bool = False
+    du_mm: float | None
+    du_bracket_mm: tuple[float, float] | None = None
+    collapse_verdict: str | None = None
+    du_components_mm: tuple[float, float] | None = None
+    du_rotation_mrad: float | None = None
+    hinges_at_collapse: tuple[HingeRef, ...]
+    hinges_detail: list[dict[str, Any]] = field(default_factory=list)
+    iterations: int | None = None
+    steps: int
+    joint_evaluations: int | None = None
+    solver_wall_s: float | None = None
+    steps_by_stage: dict[str, int] | None = None
+    dt_s: float | None = None
+    wall_s: float
+    steps_per_s: float | None = None
+    profile: dict[str, Any] | None = None
+    yade_version: str | None = None
+    yadearch_version: str | None = None
+    git_revision: str | None = None
+    table_rows: dict[str, int] | None = None
+
+    def collapsed_du_mm(self) -> float:
+        """du (mm) of a run that must have collapsed (a reference, a baseline); RunFolderError otherwise."""
+        if self.du_mm is None:
+            raise RunFolderError(f"run {self.name or '(unnamed)'} did not collapse: it has no du")
+        return float(self.du_mm)
+
+    @property
+    def hinge_labels(self) -> str:
+        """The hinges at collapse as "1E 12I 30E 56E" ("" if none)."""
+        return " ".join(h.label for h in self.hinges_at_collapse)
+
+    @property
+    def hinge_rotations_mrad(self) -> dict[HingeRef, float | None]:
+        """Each hinge's rotation at the recorded state (mrad), from the detailed hinge records."""
+        return {HingeRef.of(h): h.get("rotation_mrad") for h in self.hinges_detail}
+
+    def paper_labels(self, n_interfaces: int) -> dict[HingeRef, str | None]:
+        """Each hinge at collapse with the paper's positional letter (A-D; None for a hinge left
+        over), `model.hinges.paper_labels` deciding which is which."""
+        rotation = self.hinge_rotations_mrad
+        labels = paper_labels([(h.interface, h.side, rotation.get(h) or 0.0) for h in self.hinges_at_collapse],
+                              n_interfaces)
+        return {h: labels.get((h.interface, h.side)) for h in self.hinges_at_collapse}
+
+    def same_mechanism(self, other: RunSummary) -> bool:
+        """Whether both runs ended on the same hinges, each within the other's spread
+        (`model.hinges.same_hinges`)."""
+        return same_hinges(self._hinge_records(), other._hinge_records())
+
+    def _hinge_records(self) -> list[dict[str, Any]]:
+        return self.hinges_detail or [h.to_json() for h in self.hinges_at_collapse]
+
+    @property
+    def cost(self) -> str:
+        """What the run cost in the engine's own unit: "N steps" or "static engine, N iterations"."""
+        return f"static engine, {self.iterations} iterations" if self.engine == STATIC else f"{self.steps} steps"
+
+    def to_json(self) -> dict[str, Any]:
+        """The summary.json object: every field in order, engine-specific ones only when set."""
+        out: dict[str, Any] = {}
+        for f in dataclasses.fields(self):
+            value = getattr(self, f.name)
+            if value is None and f.name in OPTIONAL_KEYS:
+                continue
+            if f.name == "hinges_at_collapse":
+                value = [h.to_json() for h in value]
+            elif isinstance(value, LoadingInfo):
+                value = dataclasses.asdict(value)
+            elif isinstance(value, tuple):
+                value = list(value)
+            out[f.name] = value
+        return out
+
+    @classmethod
+    def from_json(cls, data: dict[str, Any]) -> RunSummary:
+        """A summary.json object read back (unknown keys, such as the completeness marker, ignored;
+        runs written before a key existed get its default)."""
+        known = {f.name for f in dataclasses.fields(cls)}
+        values = {key: value for key, value in data.items() if key in known}
+        values["hinges_at_collapse"] = tuple(HingeRef.of(h) for h in data.get("hinges_at_collapse") or [])
+        if isinstance(data.get("loading"), dict):
+            values["loading"] = LoadingInfo(**data["loading"])
+        for key in ("du_bracket_mm", "du_components_mm"):
+            if data.get(key) is not None:
+                values[key] = tuple(data[key])
+        return cls(**values)
+
+
+def collapse_fields(path: PathResult, movement: Movement) -> dict[str, Any]:
+    """A followed path's outcome as RunSummary fields: du, its bracket and verdict, its components,
+    or only the last equilibrium if the arch stood to the end."""
+    lower = units.to_mm(path.lower)
+    if not path.collapsed:
+        return {"collapsed": False, "du_mm": None, "last_equilibrium_mm": lower}
+    dx, dy = movement.components(path.du)
+    return {"collapsed": True, "du_mm": units.to_mm(path.du), "last_equilibrium_mm": lower,
+            "du_bracket_mm": (lower, units.to_mm(path.upper)), "collapse_verdict": path.upper_verdict,
+            "du_components_mm": (units.to_mm(dx), units.to_mm(dy)),
+            "du_rotation_mrad": 1e3 * movement.rotation(path.du)}
+
+
+def loading_info(loading: LoadingConfig, max_displacement_mm: float) -> LoadingInfo:
+    """The case's loading as the summary records it."""
+    return LoadingInfo(moving_support=loading.moving_support, motion=loading.support_motion,
+                       direction_deg=loading.settlement_direction_deg, max_displacement_mm=max_displacement_mm)
