@@ -3,74 +3,114 @@ increments, relaxations, acceptance and settling, played on the runner's live sc
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from collections.abc import Callable
+from typing import Any, Protocol
 
-from yadearch.case.config import NumericsConfig
+from yadearch.case.config import ArchCase, NumericsConfig
 from yadearch.case.movement import path_end_mm
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
+from yadearch.model.movement import Movement
 from yadearch.solve.path import RUNAWAY, STABLE, PathResult, PathStep, follow_path, path_settings
 
-if TYPE_CHECKING:
-    from yadearch.engine.runner import Runner
-
 SETTLE_TOLERANCE_FACTOR = 0.01  # a settled state's unbalanced force, relative to equilibrium_tolerance
-DISCARDED_STAGE = "discarded"  # records of an accepted state that ran away while settling
+
+
+class PathRecorder(Protocol):
+    """What the path records through (engine.recorder.Recorder)."""
+
+    def record_equilibrium(self) -> tuple[tuple[int, int], list[Hinge]]: ...
+
+    def discard_since(self, mark: tuple[int, int]) -> None: ...
+
+    def record_collapse(self) -> list[Hinge]: ...
+
+
+class LiveArch(Protocol):
+    """What the path needs of a live DEM scene (engine.runner.Runner): move the support, hold it,
+    go back to a kept state, record; `stage` labels the records."""
+
+    stage: str
+
+    @property
+    def case(self) -> ArchCase: ...
+
+    @property
+    def movement(self) -> Movement: ...
+
+    @property
+    def recorder(self) -> PathRecorder: ...
+
+    @property
+    def hold_move(self) -> float: ...  # the largest block displacement of the last hold (m)
+
+    @property
+    def total_steps(self) -> int: ...
+
+    @property
+    def log(self) -> Callable[[str], None]: ...
+
+    def delta(self) -> float: ...
+
+    def snapshot(self) -> dict[str, Any]: ...
+
+    def restore(self, snapshot: dict[str, Any]) -> None: ...
+
+    def move_support(self, target: float, speed_fraction: float) -> None: ...
+
+    def hold(self, runaway: float | None = None, max_s: float | None = None, from_rest: bool = True,
+             still_speed: float | None = None, tolerance: float | None = None) -> str: ...
 
 
 class EquilibriumPath:
     """The equilibrium states of the loading (snapshots) and the states failures ended in, kept for
     the bracket of du and for the collapse mechanism."""
 
-    def __init__(self, runner: Runner):
-        self.runner = runner
+    def __init__(self, arch: LiveArch):
+        self.arch = arch
+        self.num = arch.case.numerics
         self._accepted: list[dict] = []  # snapshots of the equilibrium states of the loading path
         self._at_accepted = True  # the live scene is that state
-        self._records: list[tuple[int, int]] = []  # first series and joints row of each
+        self._records: list[tuple[int, int]] = []  # where each accepted state's rows begin
         self._failures: dict[float, dict] = {}  # support displacement -> state a failure ended in
         self.last_equilibrium_hinges: list[dict] = []
         # how far the relaxation of each accepted increment moved the blocks (mm), for summary.json
-        self.relaxations: dict = {"runaway_mm": runner.num.runaway_mm, "delta_mm": [], "increment_mm": [],
+        self.relaxations: dict = {"runaway_mm": self.num.runaway_mm, "delta_mm": [], "increment_mm": [],
                                   "move_mm": []}
         self._start = 0.0  # where the last increment started (m)
-        self.settings = path_settings(runner.num, path_end_mm(runner.case, runner.movement))
+        self.settings = path_settings(self.num, path_end_mm(arch.case, arch.movement))
 
     def try_increment(self, target: float) -> str:
         """From the last accepted equilibrium state, move the support to `target` and relax there
         with the support held: 'stable', 'runaway' or 'timeout' (see `hold`). A failed state is kept
         for `collapse_state`."""
         if not self._at_accepted:
-            self.runner.restore(self._accepted[-1])
-        self.runner.stage = "increment"
-        self._start = self.runner.delta()
+            self.arch.restore(self._accepted[-1])
+        self.arch.stage = "increment"
+        self._start = self.arch.delta()
         # every move lasts as long as the largest increment's: the short moves near collapse are
         # gentle, and the arch ends them close to its equilibrium configuration
         fraction = abs(target - self._start) / self.settings.max_increment
-        self.runner.driver.set_speed(self.runner.full_speed * min(1.0, fraction))
-        self.runner.move_to(target)
-        self.runner.stage = "relax"
-        verdict = self.runner.hold()
+        self.arch.move_support(target, min(1.0, fraction))
+        self.arch.stage = "relax"
+        verdict = self.arch.hold()
         self._at_accepted = False
         if verdict != STABLE:
-            self._failures[target] = self.runner.snapshot()
+            self._failures[target] = self.arch.snapshot()
         return verdict
 
     def accept(self) -> None:
         """The state the last increment relaxed to is the new equilibrium state: keep and record it,
         with how far its relaxation moved the blocks (a quasi-static step barely moves them)."""
-        self.relaxations["delta_mm"].append(units.to_mm(self.runner.delta()))
-        self.relaxations["increment_mm"].append(units.to_mm(self.runner.delta() - self._start))
-        self.relaxations["move_mm"].append(units.to_mm(self.runner.hold_move))
-        self._accepted.append(self.runner.snapshot())
+        self.relaxations["delta_mm"].append(units.to_mm(self.arch.delta()))
+        self.relaxations["increment_mm"].append(units.to_mm(self.arch.delta() - self._start))
+        self.relaxations["move_mm"].append(units.to_mm(self.arch.hold_move))
+        self._accepted.append(self.arch.snapshot())
         self._at_accepted = True
-        self.runner.stage = "equilibrium"
-        first_series, first_joint = len(self.runner.recorder.records.series), len(self.runner.recorder.records.joints)
-        self.runner.recorder.series(force=True, stability=True)
-        snap, hinges = self.runner.recorder.joint_snapshot()
-        self.runner.recorder.write_joints(snap, hinges)
-        self._records.append((first_series, first_joint))
+        self.arch.stage = "equilibrium"
+        mark, hinges = self.arch.recorder.record_equilibrium()
+        self._records.append(mark)
         self.last_equilibrium_hinges = [h.to_json() for h in hinges]
-        self.runner.recorder.track_friction(snap)
 
     def settle(self) -> bool:
         """Relax the accepted state, support held and blocks in their motion, until every block is
@@ -78,17 +118,17 @@ class EquilibriumPath:
         `equilibrium_tolerance`, or `hold_max_s` passes (CGAL contacts never get that quiet), and
         keep the state reached. False if it runs away: it was not an equilibrium."""
         if not self._at_accepted:
-            self.runner.restore(self._accepted[-1])
-        self.runner.stage = "settle"
-        verdict = self.runner.hold(from_rest=False, still_speed=units.mm(self.runner.num.settle_speed_mm_per_s),
-                            tolerance=SETTLE_TOLERANCE_FACTOR * self.runner.num.equilibrium_tolerance)
-        self.runner.log(f"[{self.runner.case.name}] settling the state at "
-                        f"{units.to_mm(self.runner.delta()):.3f} mm: {verdict}")
+            self.arch.restore(self._accepted[-1])
+        self.arch.stage = "settle"
+        verdict = self.arch.hold(from_rest=False, still_speed=units.mm(self.num.settle_speed_mm_per_s),
+                                 tolerance=SETTLE_TOLERANCE_FACTOR * self.num.equilibrium_tolerance)
+        self.arch.log(f"[{self.arch.case.name}] settling the state at {units.to_mm(self.arch.delta()):.3f} mm: "
+                      f"{verdict}")
         if verdict == RUNAWAY:
-            self._failures[self.runner.delta()] = self.runner.snapshot()
+            self._failures[self.arch.delta()] = self.arch.snapshot()
             self._at_accepted = False
             return False
-        self._accepted[-1] = self.runner.snapshot()
+        self._accepted[-1] = self.arch.snapshot()
         self._at_accepted = True
         return True
 
@@ -96,32 +136,26 @@ class EquilibriumPath:
         """Drop the last accepted state (it did not settle): the one before is the accepted one."""
         self._accepted.pop()
         self._at_accepted = False
-        first_series, first_joint = self._records.pop()
-        records = self.runner.recorder.records
-        for row in records.series[first_series:] + records.joints[first_joint:]:
-            if row["stage"] == "equilibrium":
-                row["stage"] = DISCARDED_STAGE
+        self.arch.recorder.discard_since(self._records.pop())
 
     def follow(self, start: float = 0.0) -> PathResult:
         """Load by increments relaxed to equilibrium until du is bracketed (`solve.path`), from the
         scene's equilibrium at support displacement `start` (m)."""
-        self._accepted, self._at_accepted = [self.runner.snapshot()], True
+        self._accepted, self._at_accepted = [self.arch.snapshot()], True
         return follow_path(self, self.settings, on_step=self._log_increment, start=start)
 
     def _log_increment(self, step: PathStep) -> None:
-        self.runner.log(f"[{self.runner.case.name}] increment {units.to_mm(step.start):7.3f} -> "
-                 f"{units.to_mm(step.target):7.3f} mm: {step.verdict} (step {self.runner.total_steps})")
+        self.arch.log(f"[{self.arch.case.name}] increment {units.to_mm(step.start):7.3f} -> "
+                      f"{units.to_mm(step.target):7.3f} mm: {step.verdict} (step {self.arch.total_steps})")
 
     def collapse_state(self, upper: float) -> list[Hinge]:
         """Show the mechanism: continue the failure at du's upper bracket end `upper` until the
         arch has run away (10 runaway distances more, at most `hold_max_s` more), then read its
         hinges."""
-        self.runner.stage = "collapse"
-        self.runner.restore(self._failures[min(self._failures, key=lambda d: abs(d - upper))])
-        self.runner.hold(runaway=10.0 * units.mm(self.runner.num.runaway_mm), from_rest=False)
-        hinges = self.runner.recorder.joints("collapse")
-        self.runner.recorder.series(force=True)
-        return hinges
+        self.arch.stage = "collapse"
+        self.arch.restore(self._failures[min(self._failures, key=lambda d: abs(d - upper))])
+        self.arch.hold(runaway=10.0 * units.mm(self.num.runaway_mm), from_rest=False)
+        return self.arch.recorder.record_collapse()
 
 
 def criterion_text(n: NumericsConfig) -> str:

@@ -16,6 +16,9 @@ from yadearch.model.hinges import Hinge
 from yadearch.results.joint_rows import friction_extremes, joint_rows, joint_snapshot, snapshot_entry
 from yadearch.results.rundir import STIFFNESS_COLUMN
 
+DISCARDED_STAGE = "discarded"  # rows of an accepted state that ran away while settling
+RowMark = tuple[int, int]  # how many series and joints rows there were: where a state's rows begin
+
 
 @dataclass
 class Records:
@@ -99,6 +102,28 @@ class Recorder:
         self.records.joints.extend(joint_rows(snap, {"stage": self.stage, "step": O.iter, "delta_mm": delta_mm}))
         if label:
             self.records.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, O.iter)
+
+    def record_equilibrium(self) -> tuple[RowMark, list[Hinge]]:
+        """Record the live scene as an equilibrium state of the path (a series row with its stability,
+        every joint, the friction it mobilises); where its rows begin, and its hinges."""
+        mark = (len(self.records.series), len(self.records.joints))
+        self.series(force=True, stability=True)
+        snap, hinges = self.joint_snapshot()
+        self.write_joints(snap, hinges)
+        self.track_friction(snap)
+        return mark, hinges
+
+    def discard_since(self, mark: RowMark) -> None:
+        """Relabel the equilibrium rows recorded since `mark`: that state turned out not to be one."""
+        for row in self.records.series[mark[0]:] + self.records.joints[mark[1]:]:
+            if row["stage"] == "equilibrium":
+                row["stage"] = DISCARDED_STAGE
+
+    def record_collapse(self) -> list[Hinge]:
+        """Record the collapse mechanism (every joint, the snapshot, a series row); its hinges."""
+        hinges = self.joints("collapse")
+        self.series(force=True)
+        return hinges
 
     def track_friction(self, snap: dict) -> None:
         """Keep the largest mobilised friction and slip met in the equilibrium states, with their

@@ -250,6 +250,11 @@ class Runner:
             O.bodies[i].state.angVel = (0.0, 0.0, 0.0)
         self.scene.contacts.stopped()
 
+    def move_support(self, target: float, speed_fraction: float) -> None:
+        """Move the support to `target` at `speed_fraction` of the case's support speed."""
+        self.driver.set_speed(self.full_speed * speed_fraction)
+        self.move_to(target)
+
     def move_to(self, delta: float) -> None:
         """Move the support to `delta` along the trapezoidal profile."""
         self.driver.target = delta
