@@ -26,7 +26,7 @@ def test_an_opened_run_gives_du_and_hinges_with_the_papers_labels(tmp_path):
     summary = make_run(tmp_path / "run")
     result = ya.open_run(tmp_path / "run")
     assert result.du_mm == summary.du_mm and result.collapsed
-    assert [(str(h), h.label) for h in result.hinges] == [("1E", "D"), ("12I", "A"), ("30E", "B"),
+    assert [(h.label, h.paper_label) for h in result.hinges] == [("1E", "D"), ("12I", "A"), ("30E", "B"),
                                                           ("56E", "C")]
 
 

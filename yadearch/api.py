@@ -28,16 +28,21 @@ DEFAULT_RUNS_DIR = Path("runs")
 @dataclass(frozen=True)
 class HingeAtCollapse:
     """One hinge of the collapse mechanism: interface (1 = left support), side (I intrados, E
-    extrados), its label in the paper's positional convention (A the intrados hinge, B the other
-    extrados hinge, C at the right support, D at the left one; None if it has none) and its rotation."""
+    extrados), its letter in the paper's positional convention (A the intrados hinge, B the other
+    extrados hinge, C at the right support, D at the left one; None if it has none) and its rotation.
+    As everywhere in yadearch (run summaries, limit analyses), `label` is "30E"."""
 
     interface: int
     side: str
-    label: str | None
+    paper_label: str | None
     rotation_mrad: float | None
 
-    def __str__(self) -> str:
+    @property
+    def label(self) -> str:
         return f"{self.interface}{self.side}"
+
+    def __str__(self) -> str:
+        return self.label
 
 
 class RunResult:

@@ -18,7 +18,7 @@ from yadearch.results.summary import RunSummary
 
 
 def summary_of(analysis) -> list[tuple]:
-    return [(t.label, t.interface, t.final.interfaces, t.side) for t in analysis.tracks]
+    return [(t.paper_label, t.interface, t.final.interfaces, t.side) for t in analysis.tracks]
 
 
 def test_finds_the_built_hinges_in_order_of_formation():

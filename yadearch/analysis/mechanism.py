@@ -129,5 +129,5 @@ def describe_mechanism(tracks: list[HingeTrack], sliding: list[SlidingJoint], n_
     symmetry = "symmetric" if is_symmetric(tracks, n_interfaces) else "asymmetric"
     last = tracks[-1]
     text = (f"{symmetry} {count}-hinge mechanism, {sequence(tracks)}, "
-            f"{last.label} at {_place(last.interface, n_interfaces)}")
+            f"{last.paper_label} at {_place(last.interface, n_interfaces)}")
     return text if collapsed else f"no collapse; {text.replace(' mechanism', ' pattern')}"

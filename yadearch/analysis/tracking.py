@@ -44,7 +44,7 @@ class HingeTrack:
     per_record: list[Hinge | None]
     opening_mm: np.ndarray
     formed_record: int
-    label: str = ""  # the paper's positional label (A-D, model.hinges.paper_labels); "" if none
+    paper_label: str = ""  # the paper's positional letter (A-D, model.hinges.paper_labels); "" if none
     order: int = 0  # 1 for the first hinge to form, 2 for the next...
     migrations: list[Migration] = field(default_factory=list)
 
@@ -145,7 +145,7 @@ def track_hinges(history: JointHistory, rotation_threshold_mrad: float = ROTATIO
     labels = paper_labels([(t.interface, t.side, t.final.rotation) for t in tracks], history.n_interfaces)
     for order, track in enumerate(tracks, start=1):
         track.order = order
-        track.label = labels.get((track.interface, track.side), "")
+        track.paper_label = labels.get((track.interface, track.side), "")
     return tracks
 
 
@@ -156,7 +156,7 @@ def sequence(tracks: list[HingeTrack]) -> str:
 
 def formation_steps(tracks: list[HingeTrack], deltas: np.ndarray) -> list[tuple[str, float, str]]:
     """(label, delta at formation, sequence of the hinges formed so far) in order of formation."""
-    return [(t.label, float(deltas[t.formed_record]), sequence(tracks[: k + 1]))
+    return [(t.paper_label, float(deltas[t.formed_record]), sequence(tracks[: k + 1]))
             for k, t in enumerate(tracks)]
 
 
@@ -164,7 +164,7 @@ def hinge_table(history: JointHistory, tracks: list[HingeTrack],
                 rotation_threshold_mrad: float = ROTATION_THRESHOLD_MRAD) -> pd.DataFrame:
     """Every hinge at every record: delta, interface (peak), spread, side, rotation, opening and the
     label of the final hinge it belongs to (empty for hinges that do not last to collapse)."""
-    labels = {(r, seen.interface): t.label
+    labels = {(r, seen.interface): t.paper_label
               for t in tracks for r in range(history.n_records) if (seen := t.per_record[r]) is not None}
     rows = []
     for r, hinges in enumerate(hinges_per_record(history, rotation_threshold_mrad * 1e-3)):

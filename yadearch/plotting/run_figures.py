@@ -146,7 +146,7 @@ def collapse_figure(run: RunFolder, analysis: RunAnalysis, ax: Axes | None = Non
         outward = (point - centre) / np.linalg.norm(point - centre)
         direction = outward if track.side == "E" else -outward
         ax.plot(*point, "o", ms=4, mfc=colour, mec="white", mew=0.5, zorder=4)
-        ax.annotate(f"{track.label} ({track.interface}{track.side})", point, xytext=direction * 5,
+        ax.annotate(f"{track.paper_label} ({track.interface}{track.side})", point, xytext=direction * 5,
                     textcoords="offset points", ha="left" if direction[0] > 0 else "right",
                     va="bottom" if direction[1] > 0 else "top", color=colour, fontweight="bold", zorder=5)
     ax.plot([], [], color="0.65", lw=0.6, ls="--", label="undeformed")
@@ -192,7 +192,7 @@ def plot_hinge_openings(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tu
     top, bottom = fig.subplots(2, 1, sharex=True)
     for k, track in enumerate(analysis.tracks):
         colour = HINGE_COLOURS[k % len(HINGE_COLOURS)]
-        label = f"{track.label}: {track.interface}{track.side}"
+        label = f"{track.paper_label}: {track.interface}{track.side}"
         r = track.formed_record
         top.plot(delta, track.opening_mm, color=colour, label=label)
         top.plot(delta[r], track.opening_mm[r], "o", ms=3.5, color=colour)

@@ -168,7 +168,7 @@ def formation_table(analysis: RunAnalysis) -> list[str]:
              "|---|---|---|---|---|---|---|---|---|---|"]
     for t in analysis.tracks:
         moves = "; ".join(f"{m.from_interface} → {m.to_interface} at {m.delta_mm:.2f} mm" for m in t.migrations)
-        lines.append(f"| #{t.order} | {t.label or '—'} | {t.interface} | "
+        lines.append(f"| #{t.order} | {t.paper_label or '—'} | {t.interface} | "
                      f"{format_interfaces(t.final.interfaces)} | {t.side} | "
                      f"{deltas[t.formed_record]:.2f} | {t.hinge_at(t.formed_record).interface} | "
                      f"{t.opening_mm[-1]:.3f} | {abs(t.final.rotation) * 1e3:.1f} | {moves or '—'} |")

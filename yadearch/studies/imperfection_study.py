@@ -157,7 +157,7 @@ TOWARD_CROWN, TOWARD_SPRINGING, STAYED = "toward the crown", "toward the springi
 def hinge_shift(tracks: list[HingeTrack], label: str, n_interfaces: int) -> tuple[int, int, str] | None:
     """Where a run's hinge `label` (A-D) formed, where it was at collapse, and which way it moved
     between them (the experiment's A formed at 12 and moved toward the crown); None without it."""
-    track = next((t for t in tracks if t.label == label), None)
+    track = next((t for t in tracks if t.paper_label == label), None)
     if track is None:
         return None
     formed, final = track.hinge_at(track.formed_record).interface, track.interface
