@@ -1,8 +1,9 @@
 """yadearch: masonry arches on moving supports, simulated with YADE's polyhedral discrete elements.
 
-The public API (`yadearch.api`): `preset`, `movement`, `run`, `open_run`, `sweep`, `montecarlo`, `calibrate`,
-`capacity`, `sensitivity`, `limit`, imported on first use so that `import yadearch` stays light (no pandas,
-no YADE); type checkers and IDEs see them through the TYPE_CHECKING import below."""
+The public API (`yadearch.api`): `preset`, `movement`, `run`, `reproduce`, `report`, `open_run`, `sweep`,
+`montecarlo`, `calibrate`, `robustness`, `capacity`, `sensitivity`, `limit`, imported on first use so that
+`import yadearch` stays light (no pandas, no YADE); type checkers and IDEs see them through the
+TYPE_CHECKING import below."""
 
 from typing import TYPE_CHECKING
 
@@ -19,13 +20,16 @@ if TYPE_CHECKING:
         movement,
         open_run,
         preset,
+        report,
+        reproduce,
+        robustness,
         run,
         sensitivity,
         sweep,
     )
 
-__all__ = ["__version__", "preset", "movement", "run", "open_run", "sweep", "montecarlo", "calibrate", "capacity",
-           "sensitivity", "limit", "RunResult", "HingeAtCollapse"]
+__all__ = ["__version__", "preset", "movement", "run", "reproduce", "report", "open_run", "sweep", "montecarlo",
+           "calibrate", "robustness", "capacity", "sensitivity", "limit", "RunResult", "HingeAtCollapse"]
 
 
 def __getattr__(name: str):

@@ -7,20 +7,16 @@ from pathlib import Path
 from typing import Any
 
 import click
-import pandas as pd
 
+from yadearch import api
 from yadearch.case import reference
 from yadearch.case.config import ArchCase
 from yadearch.cli.options import case_options, pool_options, resolve_case, timeout_s
 from yadearch.errors import YadearchError
-from yadearch.studies.calibration import calibrate as calibrate_kn
-from yadearch.studies.calibration import campaign_evaluator
-from yadearch.studies.campaign import RESULTS_FILE, run_campaign
-from yadearch.studies.executors import open_pool
-from yadearch.studies.grid import grid, parse_values, read_table, short_name
-from yadearch.studies.robustness import KN_VALUES, VARIANTS, run_study, verdicts
-
-KN_KEY = "kn_N_per_mm3"
+from yadearch.studies.campaign import RESULTS_FILE
+from yadearch.studies.grid import parse_values
+from yadearch.studies.robustness import KN_VALUES, VARIANTS
+from yadearch.studies.sweep_figures import KN_KEY
 
 
 def _base_case(preset_name: str | None, case_file: str | None, settings: tuple[str, ...]) -> ArchCase:
@@ -50,75 +46,40 @@ def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, .
     base = _base_case(preset_name, case_file, settings)
     if table_file and (kn_spec or param_specs):
         raise click.UsageError("give either --table or --kn/--param, not both")
-    if table_file:
-        rows = read_table(table_file)
-    else:
-        axes: dict[str, list[Any]] = {}
-        if kn_spec:
-            axes[KN_KEY] = parse_values(kn_spec)
-            bad = [v for v in axes[KN_KEY] if isinstance(v, (bool, str))]
-            if bad:
-                raise click.UsageError(f"--kn values must be numbers, got {bad[0]!r}")
-        axes.update(parse_axes(param_specs))
-        if not axes:
-            raise click.UsageError("nothing to sweep: give --kn, --param or --table")
-        rows = grid(axes)
+    axes: dict[str, Any] = {}  # grid axes, passed to the API as keyword arguments
+    if kn_spec:
+        axes[KN_KEY] = parse_values(kn_spec)
+        bad = [v for v in axes[KN_KEY] if isinstance(v, (bool, str))]
+        if bad:
+            raise click.UsageError(f"--kn values must be numbers, got {bad[0]!r}")
+    axes.update(parse_axes(param_specs))
+    if not axes and not table_file:
+        raise click.UsageError("nothing to sweep: give --kn, --param or --table")
     folder = Path(out)
-    with open_pool(jobs, scheduler) as pool:
-        click.echo(f"campaign {folder}: {len(rows)} runs on {pool.where}")
-        table = run_campaign(base, rows, folder, pool, timeout_s=timeout_s(timeout_min),
-                             retry_failed=retry_failed)
+    table = api.sweep(base, folder, jobs=jobs, scheduler=scheduler, timeout_s=timeout_s(timeout_min),
+                      table=table_file, retry_failed=retry_failed, figures=figure, log=note, **axes)
     counts = table["status"].value_counts().to_dict()
     click.echo(f"{len(table)} runs: {counts.get('done', 0)} done, {counts.get('failed', 0)} failed, "
                f"{counts.get('pending', 0)} pending -> {folder / RESULTS_FILE}")
-    if figure:
-        _sweep_figures(table, rows, folder, base)
     if counts.get("failed"):
         raise YadearchError(f"{counts['failed']} of {len(table)} runs failed; reasons in "
                             f"{folder / RESULTS_FILE}")
 
 
-def parse_axes(param_specs: tuple[str, ...]) -> dict[str, list[Any]]:
+def note(line: str) -> None:
+    """The API's messages: notes of what could not be drawn to standard error, the rest to standard output."""
+    click.echo(line, err=line.startswith("no "))
+
+
+def parse_axes(param_specs: tuple[str, ...]) -> dict[str, Any]:
     """--param NAME=VALUES options as grid axes."""
-    axes: dict[str, list[Any]] = {}
+    axes: dict[str, Any] = {}
     for spec in param_specs:
         if "=" not in spec:
             raise click.UsageError(f"--param expects NAME=VALUES, got {spec!r}")
         name, values = spec.split("=", 1)
         axes[name.strip()] = parse_values(values)
     return axes
-
-
-def _sweep_figures(table: pd.DataFrame, rows: list[dict[str, Any]], folder: Path, base: ArchCase) -> None:
-    """du against each swept parameter (the paper's Fig. 8 with hinges when kn alone is swept), or
-    one line saying why there is none."""
-    from yadearch.plotting.sweep import kn_sweep_figure, parameter_sweep_figure, swept_columns
-
-    swept = {short_name(k) for row in rows for k in row if k != "run"}
-    columns = swept_columns(table)
-    try:
-        if swept == {short_name(KN_KEY)}:
-            paths = kn_sweep_figure(table, folder / "du_vs_kn", _rigid_limit_mm(base))
-        elif columns:
-            paths = [p for c in columns for p in parameter_sweep_figure(table, c, folder / f"du_vs_{c}")]
-        else:
-            click.echo("no figure: no numeric parameter takes two values in this campaign", err=True)
-            return
-        click.echo(f"figure -> {', '.join(map(str, paths))}")
-    except ValueError as exc:
-        click.echo(f"no figure: {exc}", err=True)
-
-
-def _rigid_limit_mm(base: ArchCase) -> float | None:
-    """du of the rigid-block limit analysis of the sweep's arch (the stiff asymptote), or None with a
-    note when the analysis cannot treat the case."""
-    from yadearch.solve.limit import limit_analysis
-
-    try:
-        return limit_analysis(base).du_rigid_mm
-    except YadearchError as exc:
-        click.echo(f"no rigid-block asymptote in the figure: {exc}", err=True)
-        return None
 
 
 @click.command()
@@ -148,9 +109,9 @@ def calibrate(preset_name: str | None, case_file: str | None, settings: tuple[st
     runs = Path(runs_dir) if runs_dir else out_path.with_suffix("")
     click.echo(f"calibrating kn of {base.name} to du = {target_du:g} +- {tolerance_mm:g} mm, "
                f"kn in [{kn_min:g}, {kn_max:g}] N/mm3; runs in {runs}")
-    with open_pool(jobs, scheduler) as pool:
-        result = calibrate_kn(campaign_evaluator(base, runs, pool, timeout_s(timeout_min)),
-                              target_du, tolerance_mm, kn_min, kn_max, max_runs, log=click.echo)
+    result = api.calibrate(base, target_du, runs, kn_min=kn_min, kn_max=kn_max, tolerance_mm=tolerance_mm,
+                           max_runs=max_runs, jobs=jobs, scheduler=scheduler, timeout_s=timeout_s(timeout_min),
+                           log=click.echo)
     result.write(out_path)
     click.echo(f"kn = {result.kn_N_per_mm3:.4g} N/mm3 gives du = {result.du_mm:.2f} mm "
                f"(target {target_du:g} +- {tolerance_mm:g}) after {result.runs} runs "
@@ -179,10 +140,8 @@ def robustness(preset_name: str | None, case_file: str | None, settings: tuple[s
     if not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in kn_values):
         raise click.BadParameter(f"kn values must be numbers, got {kn_spec!r}", param_hint="--kn")
     folder = Path(out)
-    with open_pool(jobs, scheduler) as pool:
-        table = run_study(base, folder, pool, kn_values, variant_names or tuple(VARIANTS),
-                          timeout_s=timeout_s(timeout_min))
-    for _, row in verdicts(table).iterrows():
+    for _, row in api.robustness(base, folder, kn_values, variant_names or None, jobs=jobs, scheduler=scheduler,
+                                 timeout_s=timeout_s(timeout_min)).iterrows():
         click.echo(f"kn {row.kn_N_per_mm3:g}: base du {row.base_du_mm:.2f} mm ({row.base_hinges}), numerics "
                    f"spread {row.numerics_spread:.2%}, hinges {'kept' if row.hinges_kept else 'moved'}, "
                    f"friction moves du {row.friction_move:.2%}: {row.verdict}")

@@ -10,16 +10,14 @@ import click
 
 from yadearch import api
 from yadearch.analysis.mechanism import run_warnings
-from yadearch.case.config import parameter_docs, preset
+from yadearch.case.config import parameter_docs
 from yadearch.cli.campaigns import calibrate, robustness, sweep
 from yadearch.cli.capacity import capacity
 from yadearch.cli.montecarlo import montecarlo
 from yadearch.cli.options import case_options, resolve_case
 from yadearch.cli.sensitivity import sensitivity
-from yadearch.engine.process import run_case_process
 from yadearch.errors import YadearchError
-from yadearch.reporting.report import write_report
-from yadearch.results.rundir import holds_case, read_summary
+from yadearch.results.rundir import read_summary
 
 
 def _report_summary(out: Path) -> None:
@@ -66,20 +64,13 @@ def reproduce(out: str, jobs: int, rerun: bool) -> None:
 
     A finished run of exactly the same case already in OUT is reused (an interrupted reproduction
     resumes), unless --rerun."""
-    from concurrent.futures import ThreadPoolExecutor
+    def reused(folder: Path) -> None:
+        click.echo(f"{folder.name}: reusing the finished run in {folder} (--rerun to run it again)")
 
-    folders = [Path(out) / name for name in ("set1", "set2")]
-    todo = []
-    for folder in folders:
-        if rerun or not holds_case(folder, preset(folder.name)):
-            todo.append(folder)
-        else:
-            click.echo(f"{folder.name}: reusing the finished run in {folder} (--rerun to run it again)")
-    with ThreadPoolExecutor(max_workers=jobs) as pool:
-        list(pool.map(lambda folder: run_case_process(preset(folder.name), folder), todo))
-    for folder in folders:
-        _report_summary(folder)
-    click.echo(f"report: {write_report(folders, out)}")
+    results, path = api.reproduce(out, jobs=jobs, rerun=rerun, on_reuse=reused)
+    for result in results:
+        _report_summary(result.path)
+    click.echo(f"report: {path}")
 
 
 @cli.command()
@@ -104,19 +95,14 @@ def limit(preset_name: str | None, case_file: str | None, kn: float | None, sett
           out: str, max_snap_mm: float | None, compliant: bool) -> None:
     """Rigid-block limit analysis, no YADE: du_rigid, hinges, thrust-line figure (kn only with --compliant)."""
     from yadearch.case.imperfect import amplitudes
-    from yadearch.plotting.thrust_line import save_thrust_line
     from yadearch.solve.compliant import VALID_MARGIN_FRACTION
-    from yadearch.solve.limit import limit_analysis
-    from yadearch.solve.limit_result import write_result_json
 
     case = resolve_case(preset_name, case_file, kn, settings)
     if kn is not None and not compliant:
         click.echo(f"note: --kn {kn:g} plays no part in the rigid-block analysis (rigid joints); add --compliant "
                    "for the du a run at that kn should find", err=True)
-    result = limit_analysis(case, max_snap_mm=max_snap_mm, compliant=compliant)
-    name = f"{case.name}_compliant" if compliant else case.name
-    path = write_result_json(result, case, Path(out) / f"{name}.json")
-    save_thrust_line(result, case, Path(out) / name)
+    result = api.limit(case, compliant=compliant, max_snap_mm=max_snap_mm, out=out)
+    path = Path(out) / f"{case.name}_compliant.json" if compliant else Path(out) / f"{case.name}.json"
     du = "no collapse" if result.du_rigid_mm is None else f"{result.du_rigid_mm:.2f} mm"
     if compliant:
         du += f" with compliant hinges at kn {case.interface.kn_N_per_mm3:g} N/mm^3"
@@ -152,8 +138,7 @@ cli.add_command(sensitivity)
               help="folder that receives report.md and the figures")
 def report(runs: tuple[str, ...], out: str) -> None:
     """Write OUT/report.md for the run folders RUNS: comparison with the paper, hinges, figures."""
-    path = write_report(list(runs), out)
-    click.echo(f"report -> {path}")
+    click.echo(f"report -> {api.report(runs, out)}")
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -3,18 +3,16 @@ levels), resumable, with the distribution of du and of the hinges as a table, Ma
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import click
-import pandas as pd
 
+from yadearch import api
 from yadearch.analysis.samples import du_statistics
-from yadearch.cli.campaigns import parse_axes
+from yadearch.cli.campaigns import note, parse_axes
 from yadearch.cli.options import case_options, pool_options, resolve_case, timeout_s
 from yadearch.errors import YadearchError
-from yadearch.studies.executors import open_pool
-from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE, levels, run_montecarlo
+from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE
 
 
 @click.command()
@@ -35,27 +33,13 @@ def montecarlo(preset_name: str | None, case_file: str | None, kn: float | None,
     base = resolve_case(preset_name, case_file, kn, settings)
     axes = parse_axes(param_specs)
     folder = Path(out)
-    with open_pool(jobs, scheduler) as pool:
-        n_levels = math.prod(len(values) for values in axes.values())
-        click.echo(f"Monte Carlo {folder}: {samples} samples x {n_levels} level(s) on {pool.where}")
-        table = run_montecarlo(base, folder, pool, samples, seed, axes, timeout_s=timeout_s(timeout_min))
+    table = api.montecarlo(base, folder, samples, seed=seed, jobs=jobs, scheduler=scheduler,
+                           timeout_s=timeout_s(timeout_min), log=note, **axes)
     stats = du_statistics(table.loc[table["status"] == "done", "du_mm"])
     click.echo(f"{stats['n']} of {len(table)} samples done: median du {stats['median']:.2f} mm "
                f"(95 % interval {stats['median_low']:.2f}-{stats['median_high']:.2f}), "
                f"5-95 % {stats['low']:.2f}-{stats['high']:.2f} mm -> {folder / MONTECARLO_FILE}, "
                f"{folder / SUMMARY_FILE}")
-    _figures(table, folder, levels(table, axes))
     failed = int((table["status"] == "failed").sum())
     if failed:
         raise YadearchError(f"{failed} of {len(table)} samples failed; reasons in {folder / MONTECARLO_FILE}")
-
-
-def _figures(table: pd.DataFrame, folder: Path, level_columns: list[str]) -> None:
-    from yadearch.plotting.montecarlo import campaign_figures
-
-    try:
-        paths = campaign_figures(table, folder, level_columns)
-    except ValueError as exc:
-        click.echo(f"no figure: {exc}", err=True)
-        return
-    click.echo(f"figures -> {', '.join(str(p) for p in paths if p.suffix == '.pdf')}")

@@ -1,0 +1,150 @@
+"""Campaigns as functions: sweeps, Monte Carlo draws, kn calibration, robustness, capacity maps and
+sensitivity studies, each resumable in its folder, on local cores or a dask scheduler; each `log`s
+what it starts and draws its figures, and the command line prints and exits on what they return."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import pandas as pd
+
+from yadearch.api.runs import as_case, with_engine
+from yadearch.case.config import ArchCase
+from yadearch.errors import CampaignError
+
+if TYPE_CHECKING:
+    from yadearch.studies.calibration import Calibration
+    from yadearch.studies.sensitivity_campaign import SensitivityResult
+
+Log = Callable[[str], None]
+
+
+def _quiet(_line: str) -> None:
+    """The default `log`: a notebook gets the progress bars, not the messages."""
+
+
+def sweep(case: ArchCase | str, out: str | Path, jobs: int | None = None, scheduler: str | None = None,
+          timeout_s: float | None = None, engine: str | None = None, table: str | Path | None = None,
+          retry_failed: bool = True, figures: bool = True, log: Log = _quiet, **values: list[Any]) -> pd.DataFrame:
+    """Run `case` over the grid of parameter `values` (e.g. `kn_N_per_mm3=[0.25, 1, 5.2]`), or the
+    rows of a CSV `table` (one column a parameter), as a resumable campaign in `out` (runs recorded
+    as failed are run again unless not `retry_failed`); draws du against each swept parameter
+    (`figures`) and returns the results table (one row a run)."""
+    from yadearch.studies.campaign import run_campaign
+    from yadearch.studies.executors import open_pool
+    from yadearch.studies.grid import grid, read_table
+    from yadearch.studies.sweep_figures import sweep_figures
+
+    if table is not None and values:
+        raise CampaignError("give either a table of runs or grid values, not both")
+    if table is None and not values:
+        raise CampaignError("nothing to sweep: give grid values (e.g. kn_N_per_mm3=[...]) or a table of runs")
+    base, folder = with_engine(case, engine), Path(out)
+    rows = read_table(table) if table is not None else grid(values)
+    with open_pool(jobs, scheduler) as pool:
+        log(f"campaign {folder}: {len(rows)} runs on {pool.where}")
+        results = run_campaign(base, rows, folder, pool, timeout_s=timeout_s, retry_failed=retry_failed)
+    if figures:
+        paths = sweep_figures(results, rows, folder, base, note=log)
+        if paths:
+            log(f"figure -> {', '.join(map(str, paths))}")
+    return results
+
+
+def montecarlo(case: ArchCase | str, out: str | Path, samples: int, seed: int = 1, jobs: int | None = None,
+               scheduler: str | None = None, timeout_s: float | None = None, engine: str | None = None,
+               figures: bool = True, log: Log = _quiet, **levels: list[Any]) -> pd.DataFrame:
+    """`samples` seeded draws of `case`'s imperfections (at every combination of the amplitude
+    `levels`, e.g. `edge_radius_mm=[0.5, 1]`) as a resumable campaign in `out`, with the distribution
+    figures (`figures`); returns the table of montecarlo.csv (du, hinges and each sample's
+    imperfection summary)."""
+    import math
+
+    from yadearch.studies.executors import open_pool
+    from yadearch.studies.montecarlo import levels as level_columns
+    from yadearch.studies.montecarlo import run_montecarlo
+
+    folder = Path(out)
+    with open_pool(jobs, scheduler) as pool:
+        n_levels = math.prod(len(v) for v in levels.values())
+        log(f"Monte Carlo {folder}: {samples} samples x {n_levels} level(s) on {pool.where}")
+        table = run_montecarlo(with_engine(case, engine), folder, pool, samples, seed, levels or None,
+                               timeout_s=timeout_s)
+    if figures:
+        from yadearch.plotting.montecarlo import campaign_figures
+
+        try:
+            paths = campaign_figures(table, folder, level_columns(table, levels))
+            log(f"figures -> {', '.join(str(p) for p in paths if p.suffix == '.pdf')}")
+        except ValueError as exc:
+            log(f"no figure: {exc}")
+    return table
+
+
+def calibrate(case: ArchCase | str, target_du_mm: float, out: str | Path, kn_min: float = 0.1,
+              kn_max: float = 100.0, tolerance_mm: float = 0.5, max_runs: int = 12, jobs: int | None = None,
+              engine: str | None = None, scheduler: str | None = None, timeout_s: float | None = None,
+              log: Log = _quiet) -> Calibration:
+    """The kn at which `case` collapses at `target_du_mm` (within `tolerance_mm`, at most `max_runs`
+    runs), by bracketing root finding over runs kept in `out` (local processes, or the dask
+    `scheduler`); returns the `Calibration` (its `write(path)` saves it as JSON)."""
+    from yadearch.studies.calibration import calibrate as calibrate_kn
+    from yadearch.studies.calibration import campaign_evaluator
+    from yadearch.studies.executors import open_pool
+
+    with open_pool(jobs, scheduler) as pool:
+        return calibrate_kn(campaign_evaluator(with_engine(case, engine), Path(out), pool, timeout_s), target_du_mm,
+                            tolerance_mm, kn_min, kn_max, max_runs, log=log)
+
+
+def robustness(case: ArchCase | str, out: str | Path, kn_values: tuple[float, ...] | None = None,
+               variants: tuple[str, ...] | None = None, jobs: int | None = None, scheduler: str | None = None,
+               timeout_s: float | None = None) -> pd.DataFrame:
+    """Every kn (default: the study's) with each numerical variant and with higher friction, a
+    resumable study in `out` that writes robustness.csv and robustness.md; returns the verdict per
+    kn (`studies.robustness.verdicts`)."""
+    from yadearch.studies.executors import open_pool
+    from yadearch.studies.robustness import KN_VALUES, VARIANTS, run_study, verdicts
+
+    with open_pool(jobs, scheduler) as pool:
+        table = run_study(as_case(case), Path(out), pool, kn_values or KN_VALUES,
+                          variants or tuple(VARIANTS), timeout_s=timeout_s)
+    return verdicts(table)
+
+
+def capacity(case: ArchCase | str, out: str | Path, step_deg: float = 15.0, engine: str | None = None,
+             jobs: int | None = None, scheduler: str | None = None, timeout_s: float | None = None,
+             rigid: bool = True) -> pd.DataFrame:
+    """The capacity map of `case`: du against the direction of the support movement every `step_deg`
+    from spreading (0) to closing (-180), a resumable campaign in OUT/runs, with the rigid limit of
+    each direction (unless not `rigid`); writes OUT/capacity.csv, capacity.md and the polar figure
+    and returns the table."""
+    from yadearch.studies.capacity import directions
+    from yadearch.studies.capacity_map import run_capacity
+    from yadearch.studies.executors import open_pool
+
+    case = with_engine(case, engine)
+    directions(step_deg)  # refuses a bad step before anything starts
+    with open_pool(jobs, scheduler) as pool:
+        return run_capacity(case, Path(out), pool, step_deg, rigid=rigid, timeout_s=timeout_s)
+
+
+def sensitivity(case: ArchCase | str, out: str | Path, base_points: int = 256, factors: tuple | None = None,
+                engine: str | None = None, jobs: int | None = None, scheduler: str | None = None,
+                timeout_s: float | None = None) -> SensitivityResult:
+    """What du of `case` is sensitive to: each factor alone at the ends of its range (a tornado) and
+    Sobol indices from Saltelli's sample of `base_points` (a power of two), both resumable campaigns in
+    `out`; `factors` (`yadearch.studies.sensitivity.Factor`s) default to the paper arch's plausible
+    ranges. Writes the tables, figures and sensitivity.md; returns the `SensitivityResult`."""
+    from yadearch.studies.executors import open_pool
+    from yadearch.studies.sensitivity import PAPER_FACTORS, check_base_points, check_factors
+    from yadearch.studies.sensitivity_campaign import run_sensitivity
+
+    case = with_engine(case, engine)
+    chosen = tuple(factors) if factors else PAPER_FACTORS
+    check_base_points(base_points)  # refused before a pool starts
+    check_factors(case, chosen)
+    with open_pool(jobs, scheduler) as pool:
+        return run_sensitivity(case, Path(out), pool, base_points, chosen, timeout_s=timeout_s)

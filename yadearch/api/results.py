@@ -1,0 +1,120 @@
+"""A finished run read back for notebooks and scripts: its typed summary, its hinges with the
+paper's letters, its tables and figures."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+from pathlib import Path
+
+import pandas as pd
+
+from yadearch.results.rundir import FIGURES_DIR, RunFolder, read_run
+from yadearch.results.summary import DEM, RunSummary
+
+
+@dataclass(frozen=True)
+class HingeAtCollapse:
+    """One hinge of the collapse mechanism: interface (1 = left support), side (I intrados, E
+    extrados), its letter in the paper's positional convention (A the intrados hinge, B the other
+    extrados hinge, C at the right support, D at the left one; None if it has none) and its rotation.
+    As everywhere in yadearch (run summaries, limit analyses), `label` is "30E"."""
+
+    interface: int
+    side: str
+    paper_label: str | None
+    rotation_mrad: float | None
+
+    @property
+    def label(self) -> str:
+        return f"{self.interface}{self.side}"
+
+    def __str__(self) -> str:
+        return self.label
+
+
+class RunResult:
+    """A finished run folder read back: its summary as attributes, its tables as DataFrames."""
+
+    def __init__(self, folder: RunFolder):
+        self.folder = folder
+
+    @property
+    def path(self) -> Path:
+        return self.folder.path
+
+    @property
+    def summary(self) -> RunSummary:
+        """summary.json, typed: du, its bracket, the hinges, the loading, the cost (docs/usage.md)."""
+        return self.folder.summary
+
+    @property
+    def du_mm(self) -> float | None:
+        """Collapse displacement of the support (mm); None if the arch did not collapse."""
+        return self.summary.du_mm
+
+    @property
+    def engine(self) -> str:
+        """The engine that made this run: 'dem' (YADE) or 'static' (Newton's method)."""
+        return self.summary.engine
+
+    @property
+    def collapsed(self) -> bool:
+        return self.summary.collapsed
+
+    @property
+    def series(self) -> pd.DataFrame:
+        """series.csv: one row every few steps, labelled by stage (docs/numerics.md)."""
+        return self.folder.series
+
+    @property
+    def joints(self) -> pd.DataFrame:
+        """joints.csv: every interface at every equilibrium state and at collapse."""
+        return self.folder.joints
+
+    @cached_property
+    def hinges(self) -> list[HingeAtCollapse]:
+        """The hinges at collapse, left to right, with the paper's positional labels."""
+        rotation = self.summary.hinge_rotations_mrad
+        labels = self.summary.paper_labels(self.folder.case["geometry"]["n_voussoirs"] + 1)
+        return [HingeAtCollapse(h.interface, h.side, label, rotation.get(h)) for h, label in labels.items()]
+
+    def loading_curve(self) -> pd.DataFrame:
+        """The equilibrium points of the loading only (self-weight state, then each accepted
+        equilibrium), in increasing support displacement."""
+        from yadearch.plotting.run_figures import loading_path
+
+        return loading_path(self.series)
+
+    def plot_collapse(self, ax=None, snapshot: str = "collapse"):
+        """The arch at collapse with its hinges (the paper's Fig. 9) into a matplotlib `ax`, or a new
+        figure at print size; returns the figure."""
+        from yadearch.analysis import analyse_run
+        from yadearch.plotting.run_figures import collapse_figure
+
+        return collapse_figure(self.folder, analyse_run(self.folder), ax=ax, snapshot=snapshot)
+
+    @property
+    def references(self) -> list[str]:
+        """What this result stands on: the DEM engine (for a DEM run) and, for the paper's case, the paper."""
+        from yadearch.case.reference import references_for
+        from yadearch.reporting.report import case_mismatch
+
+        return references_for(dem=self.engine == DEM, paper_case=case_mismatch(self.folder.case) is None)
+
+    def write_figures(self, out: str | Path | None = None) -> dict[str, tuple[Path, Path]]:
+        """Write the run's figures (PDF and PNG) into `out` (default: the run folder's `figures/`)."""
+        from yadearch.analysis import analyse_run
+        from yadearch.plotting.run_figures import write_figures
+
+        folder = Path(out) if out is not None else self.path / FIGURES_DIR
+        return write_figures(self.folder, analyse_run(self.folder), folder)
+
+    def __repr__(self) -> str:
+        du = "no collapse" if self.du_mm is None else f"du={self.du_mm:.2f} mm"
+        return f"RunResult({self.path}, {du}, hinges {' '.join(map(str, self.hinges)) or '-'})"
+
+
+def open_run(path: str | Path) -> RunResult:
+    """Read a finished run folder."""
+    return RunResult(read_run(path))

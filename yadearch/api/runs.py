@@ -1,0 +1,132 @@
+"""Cases, single runs, the paper's reproduction, reports and the rigid-block limit analysis as
+functions; the command line calls the same functions."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from yadearch.api.results import RunResult, open_run
+from yadearch.case.config import ArchCase
+from yadearch.case.config import preset as _preset
+from yadearch.errors import RunFolderError
+from yadearch.results.rundir import case_differences, is_complete
+
+if TYPE_CHECKING:
+    from yadearch.solve.limit_result import LimitResult
+
+DEFAULT_RUNS_DIR = Path("runs")
+PAPER_SETS = ("set1", "set2")
+
+
+def preset(name: str) -> ArchCase:
+    """The paper's arch with the kn of voussoir set 1 or set 2 ("set1", "set2")."""
+    return _preset(name)
+
+
+def movement(name: str) -> dict:
+    """The [loading] parameters of a named support movement, for `case.with_overrides(...)`:
+    settlement, spreading, closing, inclined, symmetric_spreading, abutment_tilt, settle_then_spread
+    (docs/movements.md)."""
+    from yadearch.case.movement import movement_overrides
+
+    return movement_overrides(name)
+
+
+ENGINES = ("dem", "static")
+
+
+def as_case(case: ArchCase | str) -> ArchCase:
+    """An ArchCase, or a preset's name ('set1', 'set2') taken as that preset; TypeError naming the
+    argument for anything else."""
+    if isinstance(case, ArchCase):
+        return case
+    if isinstance(case, str):
+        return _preset(case)
+    raise TypeError(f"case must be an ArchCase (ya.preset, ya.load_case) or a preset name ('set1', 'set2'), "
+                    f"got {type(case).__name__}")
+
+
+def with_engine(case: ArchCase | str, engine: str | None) -> ArchCase:
+    """`case` (or a preset's name) solved by `engine` ('dem': YADE, 'static': Newton's method; None:
+    the case's own numerics.engine); ValueError naming the argument for another value."""
+    case = as_case(case)
+    if engine is None:
+        return case
+    if engine not in ENGINES:
+        raise ValueError(f"engine must be one of {', '.join(ENGINES)}, got {engine!r}")
+    return case.with_overrides({"numerics.engine": engine})
+
+
+def run(case: ArchCase | str, out: str | Path | None = None, timeout_s: float | None = None,
+        figures: bool = True, rerun: bool = False, overwrite: bool = False, engine: str | None = None) -> RunResult:
+    """Run `case` to collapse in a child process (YADE, or the static engine with `engine="static"`),
+    writing the run folder `out` (default runs/NAME) and its figures; returns the result read back.
+    A finished run of the same case in `out` is reused (unless `rerun`); one of another case is kept
+    unless `overwrite`."""
+    from yadearch.engine.process import run_case_process
+
+    case = with_engine(case, engine)
+    folder = Path(out) if out is not None else DEFAULT_RUNS_DIR / case.name
+    if is_complete(folder) and not rerun:
+        differences = case_differences(folder, case)
+        if not differences:
+            return open_run(folder)
+        if not overwrite:
+            raise RunFolderError(f"{folder} holds a finished run of another case ({differences[0]}"
+                                 f"{', ...' if len(differences) > 1 else ''}); choose another output "
+                                 "folder or overwrite it")
+    run_case_process(case, folder, timeout_s=timeout_s)
+    result = open_run(folder)
+    if figures:
+        result.write_figures()
+    return result
+
+
+def reproduce(out: str | Path = "reports", jobs: int = 2, rerun: bool = False,
+              on_reuse: Callable[[Path], None] | None = None) -> tuple[list[RunResult], Path]:
+    """The paper's two cases (OUT/set1, OUT/set2, `jobs` at once) and OUT/report.md with figures; a
+    finished run of exactly the same case in OUT is reused (`on_reuse` is told), unless `rerun`.
+    Returns both results and the report's path."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    from yadearch.engine.process import run_case_process
+    from yadearch.results.rundir import holds_case
+
+    folders = [Path(out) / name for name in PAPER_SETS]
+    todo = [f for f in folders if rerun or not holds_case(f, _preset(f.name))]
+    for folder in set(folders) - set(todo):
+        if on_reuse is not None:
+            on_reuse(folder)
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        list(pool.map(lambda folder: run_case_process(_preset(folder.name), folder), todo))
+    return [open_run(f) for f in folders], report(folders, out)
+
+
+def report(runs: Sequence[str | Path], out: str | Path) -> Path:
+    """OUT/report.md for the run folders `runs`: comparison with the paper where a run is the
+    paper's case, hinges and how they formed, figures; returns its path."""
+    from yadearch.reporting.report import write_report
+
+    return write_report(list(runs), out)
+
+
+def limit(case: ArchCase | str, compliant: bool = False, max_snap_mm: float | None = None,
+          out: str | Path | None = None) -> LimitResult:
+    """Rigid-block limit analysis of `case` (no YADE, seconds): du_rigid and the hinge history;
+    `compliant`: with the joints folding at the margin the case's kn allows (what a DEM run of that
+    stiffness should find; docs/validation.md); `max_snap_mm`: a hinge snap moving a block further
+    is collapse, as in a run. With `out`, writes OUT/NAME.json and the thrust-line figure
+    (NAME_compliant.* when compliant)."""
+    from yadearch.plotting.thrust_line import save_thrust_line
+    from yadearch.solve.limit import limit_analysis
+    from yadearch.solve.limit_result import write_result_json
+
+    case = as_case(case)
+    result = limit_analysis(case, max_snap_mm=max_snap_mm, compliant=compliant)
+    if out is not None:
+        name = f"{case.name}_compliant" if compliant else case.name
+        write_result_json(result, case, Path(out) / f"{name}.json")
+        save_thrust_line(result, case, Path(out) / name)
+    return result

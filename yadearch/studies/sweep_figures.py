@@ -1,0 +1,47 @@
+"""The figures of a sweep: du against each swept parameter, or the paper's Fig. 8 with the hinges and
+the rigid-block asymptote when kn alone is swept."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+from yadearch.case.config import ArchCase
+from yadearch.errors import YadearchError
+from yadearch.studies.grid import short_name
+
+KN_KEY = "kn_N_per_mm3"
+
+
+def sweep_figures(table: pd.DataFrame, rows: list[dict[str, Any]], folder: Path, base: ArchCase,
+                  note: Callable[[str], None]) -> list[Path]:
+    """Draw the sweep's figures into `folder`; their paths (PDF and PNG), or none with a `note` saying
+    why (no numeric parameter takes two values, too few runs done)."""
+    from yadearch.plotting.sweep import kn_sweep_figure, parameter_sweep_figure, swept_columns
+
+    swept = {short_name(k) for row in rows for k in row if k != "run"}
+    columns = swept_columns(table)
+    try:
+        if swept == {short_name(KN_KEY)}:
+            return list(kn_sweep_figure(table, folder / "du_vs_kn", _rigid_limit_mm(base, note)))
+        if columns:
+            return [p for c in columns for p in parameter_sweep_figure(table, c, folder / f"du_vs_{c}")]
+        note("no figure: no numeric parameter takes two values in this campaign")
+    except ValueError as exc:
+        note(f"no figure: {exc}")
+    return []
+
+
+def _rigid_limit_mm(base: ArchCase, note: Callable[[str], None]) -> float | None:
+    """du of the rigid-block limit analysis of the sweep's arch (the stiff asymptote), or None with a
+    note when the analysis cannot treat the case."""
+    from yadearch.solve.limit import limit_analysis
+
+    try:
+        return limit_analysis(base).du_rigid_mm
+    except YadearchError as exc:
+        note(f"no rigid-block asymptote in the figure: {exc}")
+        return None
