@@ -8,7 +8,7 @@ DEBIAN_PACKAGES=(yade python3-venv python3-pip python3-setuptools python3-numpy 
                  python3-matplotlib python3-scipy python3-click python3-tomli-w python3-tqdm
                  python3-dask python3-distributed python3-pytest python3-numba
                  python3-hypothesis python3-nbclient python3-ipykernel python3-nbformat
-                 python3-multiprocess)
+                 python3-multiprocess python3-vtk9 ffmpeg xvfb xauth)
 
 missing=()
 for pkg in "${DEBIAN_PACKAGES[@]}"; do
@@ -33,7 +33,7 @@ fi
 # ruff and mypy (the linter and type checker the tests run) are optional: without them those tests skip
 .venv/bin/python -m pip install -q ruff mypy 2>/dev/null || echo "setup: ruff or mypy unavailable, their tests will be skipped"
 .venv/bin/python - <<'PY'
-import numpy, pandas, matplotlib, click, tomli_w, dask, distributed, numba, SALib  # noqa: F401  the whole stack imports
+import numpy, pandas, matplotlib, click, tomli_w, dask, distributed, numba, SALib, vtkmodules  # noqa: F401  the whole stack imports
 from yadearch.engine.yade_env import import_yade
 import_yade()
 import yade.config

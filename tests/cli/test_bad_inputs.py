@@ -9,6 +9,7 @@ import tomllib
 from dataclasses import fields
 
 import pytest
+from conftest import REPO
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -75,7 +76,11 @@ def probes() -> list[list[str]]:
               ["sensitivity", "--preset", "set2", "--factor", "kn_N_per_mm3=1", "--out", "OUT/s"],
               ["sensitivity", "--preset", "set2", "--factor", "nothing=1:2", "--out", "OUT/s"],
               ["sensitivity", "--preset", "set2", "--factor", "friction_deg=40:95", "--out", "OUT/s"],
-              ["sensitivity", "--preset", "set2", "--factor", "kn_N_per_mm3=0:5:log", "--out", "OUT/s"]]
+              ["sensitivity", "--preset", "set2", "--factor", "kn_N_per_mm3=0:5:log", "--out", "OUT/s"],
+              # views of a run: no run folder, an unknown format, no --vtk, a run from before states.npz
+              ["animate", "OUT/not-a-run"], ["animate", f"{REPO}/reports/set1", "--format", "avi"],
+              ["animate", f"{REPO}/reports/limit"], ["export", f"{REPO}/reports/set2"],
+              ["export", "OUT/not-a-run", "--vtk"], ["export", f"{REPO}/reports/kn-sweep/kn100", "--vtk"]]
     shapes = [["shape=oval"], ["joint_orientation=skew"], ["shape=pointed", "pointed_radius_over_span=0.4"],
               ["shape=elliptical", "rise_mm=400"], ["shape=three_centred", "rise_mm=300"],
               ["shape=three_centred", "rise_mm=50", "thickness_mm=40"],

@@ -3,21 +3,21 @@ runs (no YADE: the runs and the report are replaced by recorders)."""
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 from click.testing import CliRunner
 
+from yadearch.api import runs as api_runs
 from yadearch.case.config import preset
 from yadearch.cli import commands as cli
-from yadearch.results.rundir import CASE_FILE, SUMMARY_FILE, holds_case
+from yadearch.engine import process
+from yadearch.results.rundir import CASE_FILE, holds_case, write_run
+from yadearch.results.summary import RunSummary
 
 
 def finished(folder: Path, case_toml: str) -> None:
-    folder.mkdir(parents=True, exist_ok=True)
-    (folder / CASE_FILE).write_text(case_toml)
-    (folder / SUMMARY_FILE).write_text(json.dumps({"name": folder.name, "du_mm": 48.0, "steps": 10,
-                                                   "wall_s": 1.0, "hinges_at_collapse": []}))
+    write_run(folder, case_toml, [{"stage": "equilibrium", "delta_mm": 0.0}],
+              [{"stage": "equilibrium", "interface": 1}], {}, RunSummary(name=folder.name, du_mm=48.0, steps=10, wall_s=1.0, hinges_at_collapse=()))
 
 
 def test_only_a_finished_run_of_the_same_case_is_reusable(tmp_path):
@@ -41,8 +41,8 @@ def test_reproduce_runs_only_what_is_missing(tmp_path, monkeypatch):
         ran.append(folder.name)
         finished(folder, case.to_toml())
 
-    monkeypatch.setattr(cli, "run_case_process", fake_run)
-    monkeypatch.setattr(cli, "write_report", lambda folders, out: Path(out) / "report.md")
+    monkeypatch.setattr(process, "run_case_process", fake_run)
+    monkeypatch.setattr(api_runs, "report", lambda folders, out: Path(out) / "report.md")
     finished(tmp_path / "set1", preset("set1").to_toml())
     result = CliRunner().invoke(cli.cli, ["reproduce", "--out", str(tmp_path), "--jobs", "1"])
     assert result.exit_code == 0, result.output

@@ -9,7 +9,8 @@ from pathlib import Path
 
 import pandas as pd
 
-from yadearch.results.rundir import FIGURES_DIR, RunFolder, read_run
+from yadearch.results.rundir import FIGURES_DIR, VTK_DIR, RunFolder, read_run
+from yadearch.results.states import RunStates
 from yadearch.results.summary import DEM, RunSummary
 
 
@@ -101,6 +102,30 @@ class RunResult:
         from yadearch.reporting.report import case_mismatch
 
         return references_for(dem=self.engine == DEM, paper_case=case_mismatch(self.folder.case) is None)
+
+    @property
+    def states(self) -> RunStates:
+        """Every recorded state (states.npz) as arrays: support displacement, stage, step, block
+        positions and rotations; RunFolderError for a run written before states were kept."""
+        from yadearch.plotting.states import run_states
+
+        return run_states(self.folder)
+
+    def animate(self, out: str | Path | None = None, fmt: str = "mp4") -> Path:
+        """The run as a movie (MP4 through ffmpeg, or GIF) along its loading path to collapse, written
+        to `out` (default: the run folder's figures/NAME.FMT); returns its path."""
+        from yadearch.analysis import analyse_run
+        from yadearch.plotting.animation import animate_run
+
+        path = Path(out) if out is not None else self.path / FIGURES_DIR / f"{self.path.name}.{fmt}"
+        return animate_run(self.folder, analyse_run(self.folder), path, fmt)
+
+    def export_vtk(self, out: str | Path | None = None) -> Path:
+        """Every state as a ParaView time series (a .pvd of .vtu files: the voussoirs as 3D cells, the
+        joints as points with their forces) in `out` (default: the run folder's vtk/); returns the .pvd."""
+        from yadearch.reporting.paraview import export_run
+
+        return export_run(self.folder, Path(out) if out is not None else self.path / VTK_DIR)
 
     def write_figures(self, out: str | Path | None = None) -> dict[str, tuple[Path, Path]]:
         """Write the run's figures (PDF and PNG) into `out` (default: the run folder's `figures/`)."""

@@ -16,6 +16,7 @@ from yadearch.cli.capacity import capacity
 from yadearch.cli.montecarlo import montecarlo
 from yadearch.cli.options import case_options, resolve_case
 from yadearch.cli.sensitivity import sensitivity
+from yadearch.cli.views import animate, export
 from yadearch.errors import YadearchError
 from yadearch.results.rundir import read_summary
 
@@ -130,6 +131,8 @@ cli.add_command(robustness)
 cli.add_command(montecarlo)
 cli.add_command(capacity)
 cli.add_command(sensitivity)
+cli.add_command(animate)
+cli.add_command(export)
 
 
 @cli.command("report")

@@ -19,9 +19,9 @@ SETTLE_TOLERANCE_FACTOR = 0.01  # a settled state's unbalanced force, relative t
 class PathRecorder(Protocol):
     """What the path records through (engine.recorder.Recorder)."""
 
-    def record_equilibrium(self) -> tuple[tuple[int, int], list[Hinge]]: ...
+    def record_equilibrium(self) -> tuple[tuple[int, int, int], list[Hinge]]: ...
 
-    def discard_since(self, mark: tuple[int, int]) -> None: ...
+    def discard_since(self, mark: tuple[int, int, int]) -> None: ...
 
     def record_collapse(self) -> list[Hinge]: ...
 
@@ -71,7 +71,7 @@ class EquilibriumPath:
         self.num = arch.case.numerics
         self._accepted: list[dict] = []  # snapshots of the equilibrium states of the loading path
         self._at_accepted = True  # the live scene is that state
-        self._records: list[tuple[int, int]] = []  # where each accepted state's rows begin
+        self._records: list[tuple[int, int, int]] = []  # where each accepted state's records begin
         self._failures: dict[float, dict] = {}  # support displacement -> state a failure ended in
         self.last_equilibrium_hinges: list[dict] = []
         # how far the relaxation of each accepted increment moved the blocks (mm), for summary.json

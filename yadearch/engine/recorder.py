@@ -15,17 +15,20 @@ from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.results.joint_rows import friction_extremes, joint_rows, joint_snapshot, snapshot_entry
 from yadearch.results.rundir import STIFFNESS_COLUMN
+from yadearch.results.states import state_entry
 
 DISCARDED_STAGE = "discarded"  # rows of an accepted state that ran away while settling
-RowMark = tuple[int, int]  # how many series and joints rows there were: where a state's rows begin
+RowMark = tuple[int, int, int]  # how many series rows, joints rows and states there were: where a state begins
 
 
 @dataclass
 class Records:
-    """Everything the run folder gets: time series rows, per-interface rows, events, snapshots."""
+    """Everything the run folder gets: time series rows, per-interface rows, the block poses of each
+    state of joints.csv, events, snapshots."""
 
     series: list[dict] = field(default_factory=list)
     joints: list[dict] = field(default_factory=list)
+    states: list[dict] = field(default_factory=list)
     events: list[str] = field(default_factory=list)
     snapshots: dict[str, dict] = field(default_factory=dict)
 
@@ -100,13 +103,14 @@ class Recorder:
 
         delta_mm = units.to_mm(self.driver.displacement())
         self.records.joints.extend(joint_rows(snap, {"stage": self.stage, "step": O.iter, "delta_mm": delta_mm}))
+        self.records.states.append(state_entry(self.stage, O.iter, delta_mm, snap["pos"], snap["rot"]))
         if label:
             self.records.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, O.iter)
 
     def record_equilibrium(self) -> tuple[RowMark, list[Hinge]]:
         """Record the live scene as an equilibrium state of the path (a series row with its stability,
         every joint, the friction it mobilises); where its rows begin, and its hinges."""
-        mark = (len(self.records.series), len(self.records.joints))
+        mark = (len(self.records.series), len(self.records.joints), len(self.records.states))
         self.series(force=True, stability=True)
         snap, hinges = self.joint_snapshot()
         self.write_joints(snap, hinges)
@@ -115,7 +119,7 @@ class Recorder:
 
     def discard_since(self, mark: RowMark) -> None:
         """Relabel the equilibrium rows recorded since `mark`: that state turned out not to be one."""
-        for row in self.records.series[mark[0]:] + self.records.joints[mark[1]:]:
+        for row in self.records.series[mark[0]:] + self.records.joints[mark[1]:] + self.records.states[mark[2]:]:
             if row["stage"] == "equilibrium":
                 row["stage"] = DISCARDED_STAGE
 

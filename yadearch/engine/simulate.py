@@ -63,7 +63,8 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
         collapse_criterion=criterion_text(case.numerics),
         imperfections=imperfections.summary() if imperfections is not None else None, **origin)
     write_run(out, case.to_toml(), runner.records.series, runner.records.joints,
-              runner.records.snapshots, summary, imperfections.table() if imperfections else None)
+              runner.records.snapshots, summary, imperfections.table() if imperfections else None,
+              runner.records.states)
     du = summary.du_mm
     log(f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} hinges={summary.hinge_labels or '-'} "
         f"steps={summary.steps} wall={summary.wall_s:.0f} s -> {final_folder(out)}")

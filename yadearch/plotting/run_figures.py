@@ -66,7 +66,7 @@ def save_figure(fig: Figure, stem: Path) -> tuple[Path, Path]:
     return pdf, png
 
 
-def _styled(draw):
+def house_style(draw):
     """Run a figure builder under the house rcParams."""
     import matplotlib
 
@@ -112,7 +112,7 @@ def _plot_until_du(ax, delta: np.ndarray, value: np.ndarray, du_mm: float | None
         ax.plot(delta[tail], value[tail], **{**style, "label": None, "alpha": PAST_DU_ALPHA})
 
 
-@_styled
+@house_style
 def collapse_figure(run: RunFolder, analysis: RunAnalysis, ax: Axes | None = None, width_cm: float = COLUMN_CM,
                     snapshot: str = "collapse") -> Figure:
     """The arch at collapse drawn to scale over its undeformed outline, hinges marked and labelled
@@ -161,14 +161,14 @@ def collapse_figure(run: RunFolder, analysis: RunAnalysis, ax: Axes | None = Non
     return cast(Figure, ax.get_figure())
 
 
-@_styled
+@house_style
 def plot_collapse(run: RunFolder, analysis: RunAnalysis, stem: Path, width_cm: float = COLUMN_CM,
                   snapshot: str = "collapse") -> tuple[Path, Path]:
     """`collapse_figure` written as STEM.pdf and STEM.png."""
     return save_figure(collapse_figure(run, analysis, width_cm=width_cm, snapshot=snapshot), stem)
 
 
-@_styled
+@house_style
 def plot_reactions(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
     """Vertical and horizontal forces of both supports on the arch against the settlement."""
     path, delta, fig = _against_delta(run, height_cm=9.0)
@@ -184,7 +184,7 @@ def plot_reactions(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[P
     return save_figure(fig, stem)
 
 
-@_styled
+@house_style
 def plot_hinge_openings(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
     """Opening and rotation of every hinge against the settlement, its formation marked."""
     delta = analysis.history.delta_mm
@@ -210,7 +210,7 @@ def plot_hinge_openings(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tu
     return save_figure(fig, stem)
 
 
-@_styled
+@house_style
 def plot_crown_displacement(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
     """Horizontal and vertical displacement of the crown voussoir against the settlement."""
     path, delta, fig = _against_delta(run, height_cm=5.5)
@@ -226,7 +226,7 @@ def plot_crown_displacement(run: RunFolder, analysis: RunAnalysis, stem: Path) -
     return save_figure(fig, stem)
 
 
-@_styled
+@house_style
 def plot_stability(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
     """The smallest eigenvalue of the free blocks' tangent stiffness at each equilibrium state: it
     falls toward zero as du, a fold of the equilibrium path, approaches (docs/numerics.md)."""
@@ -244,7 +244,8 @@ def plot_stability(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[P
 
 def write_figures(run: RunFolder, analysis: RunAnalysis, out: Path) -> dict[str, tuple[Path, Path]]:
     """Every figure of a run into `out`; returns {name: (pdf, png)}: collapse (if the run has a final
-    snapshot), reactions, hinges, crown, and stability (if the run recorded it)."""
+    snapshot), reactions, hinges, crown, stability (if the run recorded it) and the strip of four
+    states (if it kept its states)."""
     figures = {
         "reactions": plot_reactions(run, analysis, out / "reactions"),
         "hinges": plot_hinge_openings(run, analysis, out / "hinges"),
@@ -254,4 +255,8 @@ def write_figures(run: RunFolder, analysis: RunAnalysis, out: Path) -> dict[str,
         figures["stability"] = plot_stability(run, analysis, out / "stability")
     if run.snapshots.get("collapse") or run.snapshots.get("end"):
         figures = {"collapse": plot_collapse(run, analysis, out / "collapse"), **figures}
+    if run.states is not None:  # runs written before states.npz have no strip
+        from yadearch.plotting.states import plot_strip  # it draws with this module's helpers
+
+        figures["strip"] = plot_strip(run, analysis, out / "strip")
     return figures

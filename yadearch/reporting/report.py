@@ -27,6 +27,9 @@ REPORT_FILE = "report.md"
 HINGE_ROWS = ("hinge_A", "hinge_B", "hinge_C")
 KN_MATCH_RELATIVE = 1e-6
 CAPTIONS = {
+    "strip": "Four states of the run at one scale: after the self-weight, at a third and two thirds of "
+             "du, and at collapse; open hinges marked with the paper's letters, the line of the joints' "
+             "contact-force resultants (the thrust line) in red, the undeformed outline dashed.",
     "collapse": "The arch at collapse (at the upper end of du's bracket, after the failed hold went on "
                 "until a block moved 10 mm or another hold time passed), drawn to scale over its "
                 "undeformed outline (dashed); hinges labelled A-D by position as in the paper, with "

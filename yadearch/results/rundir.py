@@ -15,12 +15,14 @@ import pandas as pd
 from yadearch.atomic import write_atomically, write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase, as_ran
 from yadearch.errors import RunFolderError
+from yadearch.results.states import STATES_FILE, RunStates, read_states, write_states
 from yadearch.results.summary import RunSummary
 
 CASE_FILE = "case.toml"
 SERIES_FILE = "series.csv"
 JOINTS_FILE = "joints.csv"
 FIGURES_DIR = "figures"  # a run's figures, inside its run folder (or its report's folder for it)
+VTK_DIR = "vtk"  # a run's ParaView export, inside its run folder
 STIFFNESS_COLUMN = "min_stiffness_N_per_m"  # series.csv: an equilibrium state's stability (model.stability)
 IMPERFECTIONS_FILE = "imperfections.csv"  # the defects drawn for each joint (imperfect arches only)
 SNAPSHOTS_FILE = "snapshots.json"
@@ -46,6 +48,7 @@ class RunFolder:
     joints: pd.DataFrame
     snapshots: dict[str, Any]
     summary: RunSummary
+    states: RunStates | None = None  # none in runs written before states were recorded
 
 
 def staging_folder(out: Path) -> Path:
@@ -63,10 +66,10 @@ def final_folder(path: Path) -> Path:
 
 def write_run(out: Path, case_toml: str, series: list[dict], joints: list[dict],
               snapshots: dict[str, Any], summary: RunSummary,
-              imperfections: dict[str, Any] | None = None) -> None:
+              imperfections: dict[str, Any] | None = None, states: list[dict[str, Any]] | None = None) -> None:
     """Write every file of a run folder, each atomically (imperfections.csv only for an imperfect
-    arch); summary.json last, with its schema version and a completeness marker, so that a valid
-    summary means a complete folder."""
+    arch, states.npz when the run kept its states); summary.json last, with its schema version and a
+    completeness marker, so that a valid summary means a complete folder."""
     out.mkdir(parents=True, exist_ok=True)
     write_text_atomically(out / CASE_FILE, case_toml)
     if imperfections is not None:
@@ -74,6 +77,8 @@ def write_run(out: Path, case_toml: str, series: list[dict], joints: list[dict],
     for name, rows in ((SERIES_FILE, series), (JOINTS_FILE, joints)):
         write_atomically(out / name, partial(pd.DataFrame(rows).to_csv, index=False, float_format="%.8g"))
     write_text_atomically(out / SNAPSHOTS_FILE, json.dumps(snapshots, indent=1, default=_json_default))
+    if states:
+        write_states(out / STATES_FILE, states)
     counted = dataclasses.replace(summary, table_rows={SERIES_FILE: len(series), JOINTS_FILE: len(joints)})
     marked = {**counted.to_json(), "schema_version": SCHEMA_VERSION, "complete": True}
     write_text_atomically(out / SUMMARY_FILE, json.dumps(marked, indent=2, default=_json_default) + "\n")
@@ -170,6 +175,7 @@ def read_run(path: str | Path) -> RunFolder:
             joints=pd.read_csv(path / JOINTS_FILE),
             snapshots=json.loads((path / SNAPSHOTS_FILE).read_text()),
             summary=summary,
+            states=read_states(path),
         )
     except (OSError, ValueError, tomllib.TOMLDecodeError) as exc:
         raise RunFolderError(f"{path}: a file of the run folder cannot be read ({exc})") from None

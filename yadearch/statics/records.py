@@ -13,6 +13,7 @@ from yadearch.model.hinges import Hinge
 from yadearch.model.joint_law import unbalanced_force
 from yadearch.results.joint_rows import friction_extremes, joint_rows, joint_snapshot, snapshot_entry
 from yadearch.results.rundir import STIFFNESS_COLUMN
+from yadearch.results.states import state_entry
 from yadearch.solve.static_path import StaticState
 from yadearch.solve.statics import StaticArch
 
@@ -33,6 +34,7 @@ class StaticRecords:
     series: list[dict[str, Any]] = field(default_factory=list)
     joints: list[dict[str, Any]] = field(default_factory=list)
     snapshots: dict[str, dict[str, Any]] = field(default_factory=dict)
+    states: list[dict[str, Any]] = field(default_factory=list)
     friction: dict[str, Any] = field(default_factory=dict)
     iterations: int = 0
 
@@ -48,6 +50,7 @@ class StaticRecords:
         common = {"stage": state.stage, "step": self.iterations, "delta_mm": delta_mm}
         self.series.append({**common, **self._series_columns(state, pos)})
         self.joints.extend(joint_rows(snap, common))
+        self.states.append(state_entry(state.stage, self.iterations, delta_mm, pos, rot))
         if label:
             self.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, self.iterations)
         if state.stage == "equilibrium":

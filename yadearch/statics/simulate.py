@@ -82,7 +82,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         joint_evaluations=loading.solver.evaluations, solver_wall_s=time.time() - solver_start,
         wall_s=time.time() - wall0, **provenance(None))
     write_run(out, case.to_toml(), records.series, records.joints, records.snapshots, summary,
-              arch.imperfections.table() if arch.imperfections is not None else None)
+              arch.imperfections.table() if arch.imperfections is not None else None, records.states)
     du = summary.du_mm
     log(f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} "
         f"hinges={summary.hinge_labels or '-'} iterations={loading.iterations} "

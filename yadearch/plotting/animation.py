@@ -1,0 +1,69 @@
+"""A run as a movie: the arch along its loading path to collapse, one frame a recorded state, drawn
+to scale as `plotting.states` draws a state, the collapse held at the end. MP4 through ffmpeg,
+GIF through Pillow (no ffmpeg needed)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from matplotlib.animation import FFMpegWriter, FuncAnimation, PillowWriter, writers
+
+from yadearch.analysis import RunAnalysis
+from yadearch.analysis.blocks import case_geometry
+from yadearch.atomic import write_atomically
+from yadearch.errors import CaseError, YadearchError
+from yadearch.plotting.run_figures import house_style, new_figure
+from yadearch.plotting.states import draw_state, drawing_limits, joints_per_state, run_states, state_view
+from yadearch.results.rundir import RunFolder
+
+FORMATS = ("mp4", "gif")
+FRAMES_PER_S = 8
+HOLD_COLLAPSE_S = 2.0  # the last state stays on screen this long: the mechanism at collapse
+FRAME_CM = (17.0, 9.5)
+FRAME_DPI = 150
+
+
+def check_format(fmt: str) -> None:
+    """A clear one-line error for an unknown format, or for MP4 without ffmpeg."""
+    if fmt not in FORMATS:
+        raise CaseError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
+    if fmt == "mp4" and not writers.is_available("ffmpeg"):
+        raise YadearchError("MP4 needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg); "
+                            "or write a GIF with --format gif")
+
+
+@house_style
+def animate_run(run: RunFolder, analysis: RunAnalysis, out: Path, fmt: str = "mp4",
+                fps: int = FRAMES_PER_S) -> Path:
+    """Write the run's movie to `out` (atomically): every state of the loading path, self-weight to
+    collapse, then the collapse held for HOLD_COLLAPSE_S; returns `out`."""
+    check_format(fmt)
+    joints_per_state(run)
+    states = run_states(run)
+    geometry = case_geometry(run.case)
+    limits = drawing_limits(geometry)
+    path = list(states.path())
+    frames = path + [path[-1]] * int(HOLD_COLLAPSE_S * fps)
+    views = {i: state_view(run, geometry, analysis, i) for i in path}
+    fig = new_figure(height_cm=FRAME_CM[1], width_cm=FRAME_CM[0])
+    ax = fig.add_subplot()
+    title = f"{run.summary.name or run.path.name}: {run.summary.engine} engine" + (
+        f", du = {run.summary.du_mm:.2f} mm" if run.summary.du_mm is not None else ", no collapse")
+
+    def draw(index: int) -> list:
+        ax.clear()
+        draw_state(ax, views[index], geometry, limits)
+        ax.set_title(title)
+        return []
+
+    movie = FuncAnimation(fig, draw, frames=frames, blit=False)
+    writer = FFMpegWriter(fps=fps) if fmt == "mp4" else PillowWriter(fps=fps)
+    def save(temporary: Path) -> None:
+        named = temporary.with_name(f"{temporary.stem}.{fmt}")  # the writers pick the container by suffix
+        try:
+            movie.save(str(named), writer=writer, dpi=FRAME_DPI)
+            named.replace(temporary)
+        finally:
+            named.unlink(missing_ok=True)
+
+    return write_atomically(Path(out), save)

@@ -1,0 +1,153 @@
+"""Any recorded state of a run drawn to scale (states.npz): the blocks, the hinges open at that state
+with the paper's letters, the line of the joints' contact-force resultants (the thrust line), the
+support displacement and the moving support's reaction; and the strip of four states (self-weight,
+a third and two thirds of du, collapse) written with every run's figures."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+from matplotlib.patches import Polygon
+
+from yadearch.analysis import RunAnalysis
+from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
+from yadearch.analysis.run import default_thresholds
+from yadearch.errors import RunFolderError
+from yadearch.model.geometry import ArchGeometry
+from yadearch.model.hinges import PAPER_LABELS, hinge_rotation, hinges_at
+from yadearch.plotting.run_figures import HINGE_COLOURS, house_style, new_figure, save_figure
+from yadearch.results.rundir import RunFolder
+from yadearch.results.states import RunStates
+
+MM_PER_M = 1e3
+BLOCK_COLOUR, SUPPORT_COLOUR, THRUST_COLOUR = "#EADDCA", "0.45", "#B2182B"
+UNLABELLED_COLOUR = "0.3"  # a hinge that is not one of the collapse mechanism's A-D
+MARGIN = 0.06  # of the arch's span, around the drawing
+STRIP_FRACTIONS = (0.0, 1 / 3, 2 / 3, 1.0)  # of du: the strip's four states
+STRIP_CM = (17.0, 9.0)  # two columns wide
+
+
+@dataclass(frozen=True)
+class StateView:
+    """What one drawn state shows, in mm: block outlines, open hinges (interface, side, pivot point,
+    paper letter), the thrust line's points, the support displacement and reaction."""
+
+    outlines: list[np.ndarray]
+    hinges: list[tuple[int, str, np.ndarray, str]]
+    thrust: np.ndarray
+    delta_mm: float
+    stage: str
+    reaction_N: tuple[float, float] | None
+
+
+def run_states(run: RunFolder) -> RunStates:
+    """The run's states; RunFolderError in one line for a run written before they were recorded."""
+    if run.states is None:
+        raise RunFolderError(f"{run.path} has no states.npz (written before runs kept every state): run the "
+                             "case again to animate or export it")
+    return run.states
+
+
+def state_view(run: RunFolder, geometry: ArchGeometry, analysis: RunAnalysis, index: int) -> StateView:
+    """State `index` of the run as drawn: its hinges as the run finds them (adjacent joints turning the
+    same way beyond the run's threshold, marked at their peak, `model.hinges.hinges_at`), each with the
+    letter of the collapse mechanism's hinge whose spread holds it on that side."""
+    states = run_states(run)
+    rotation_mrad = default_thresholds(run.case).rotation_mrad
+    snapshot = states.snapshot(index)
+    n_joints = len(geometry.joints)
+    rows = run.joints.iloc[index * n_joints:(index + 1) * n_joints]
+    ends = {side: joint_points(geometry, snapshot, side) * MM_PER_M for side in ("I", "E")}
+    letters = {(k, t.side): t.paper_label for t in analysis.tracks for k in t.final.interfaces}
+    hinges = [(h.interface, h.side, ends[h.side][h.interface - 1], letters.get((h.interface, h.side), ""))
+              for h in hinges_at(hinge_rotation(rows["opening_intrados_mm"].to_numpy(),
+                                                rows["opening_extrados_mm"].to_numpy(), geometry.thickness * MM_PER_M),
+                                 rotation_mrad * 1e-3)]
+    loaded = (rows["normal_force_N"].to_numpy() > 0) & np.isfinite(rows["force_position"].to_numpy())
+    where = rows["force_position"].to_numpy()[:, None]
+    thrust = (ends["I"] + where * (ends["E"] - ends["I"]))[loaded]
+    same_step = run.series[run.series["step"] == states.step[index]]
+    reaction = None if same_step.empty else (float(same_step["right_Rx_N"].iloc[-1]),
+                                             float(same_step["right_Ry_N"].iloc[-1]))
+    outlines = [o * MM_PER_M for o in snapshot_outlines(geometry, snapshot)]
+    return StateView(outlines, hinges, thrust, float(states.delta_mm[index]), str(states.stage[index]), reaction)
+
+
+def drawing_limits(geometry: ArchGeometry) -> tuple[tuple[float, float], tuple[float, float]]:
+    """Axis limits (mm) that hold the arch and its supports with a margin: one frame for every state."""
+    xy = np.vstack([b[: len(b) // 2, :2] for b in geometry.blocks]) * MM_PER_M
+    span = float(np.ptp(xy[:, 0]))
+    return ((xy[:, 0].min() - MARGIN * span, xy[:, 0].max() + MARGIN * span),
+            (xy[:, 1].min() - 3 * MARGIN * span, xy[:, 1].max() + MARGIN * span))
+
+
+def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple, corner: bool = True) -> None:
+    """Draw `view` into `ax` to scale, over the undeformed outline, with the support displacement and
+    the reaction under the arch (`corner`)."""
+    last = len(view.outlines) - 1
+    for b, (vertices, moved) in enumerate(zip(geometry.blocks, view.outlines)):
+        ax.add_patch(Polygon(vertices[: len(vertices) // 2, :2] * MM_PER_M, closed=True, fill=False, ec="0.7",
+                             lw=0.4, ls="--", zorder=1))
+        ax.add_patch(Polygon(moved, closed=True, fc=SUPPORT_COLOUR if b in (0, last) else BLOCK_COLOUR, ec="0.15",
+                             lw=0.3, zorder=2))
+    if len(view.thrust):
+        ax.plot(view.thrust[:, 0], view.thrust[:, 1], "-", color=THRUST_COLOUR, lw=0.8, zorder=3)
+    for interface, side, point, letter in view.hinges:
+        colour = HINGE_COLOURS[PAPER_LABELS.index(letter)] if letter else UNLABELLED_COLOUR
+        ax.plot(*point, "o", ms=4, mfc=colour, mec="white", mew=0.5, zorder=4)
+        ax.annotate(f"{letter} {interface}{side}".strip(), point, xytext=(0, 6 if side == "E" else -9),
+                    textcoords="offset points", ha="center", fontsize=6, color=colour, zorder=5)
+    if corner:
+        text = f"δ = {view.delta_mm:.2f} mm ({view.stage})"
+        if view.reaction_N is not None:
+            text += f"\nright support on the arch: Rx = {view.reaction_N[0]:.2f} N, Ry = {view.reaction_N[1]:.2f} N"
+        ax.text(0.5, 0.02, text, transform=ax.transAxes, va="bottom", ha="center", fontsize=6)
+    ax.set_aspect("equal")
+    ax.set_xlim(*limits[0])
+    ax.set_ylim(*limits[1])
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+
+
+def strip_indices(states: RunStates, du_mm: float | None) -> list[int]:
+    """The strip's states: self-weight, a third and two thirds of du (the nearest path states), and
+    the last state (the collapse, or the end of a path that did not collapse)."""
+    last = int(states.path()[-1])
+    end = du_mm if du_mm is not None else float(states.delta_mm[last])
+    return [0, states.nearest(STRIP_FRACTIONS[1] * end), states.nearest(STRIP_FRACTIONS[2] * end), last]
+
+
+@house_style
+def strip_figure(run: RunFolder, analysis: RunAnalysis) -> Figure:
+    """Four states of the run side by side, two by two, at one scale (a page-wide figure)."""
+    joints_per_state(run)
+    geometry = case_geometry(run.case)
+    limits = drawing_limits(geometry)
+    fig = new_figure(height_cm=STRIP_CM[1], width_cm=STRIP_CM[0])
+    axes = fig.subplots(2, 2, sharex=True, sharey=True).ravel()
+    for ax, index in zip(axes, strip_indices(run_states(run), analysis.du_mm)):
+        draw_state(ax, state_view(run, geometry, analysis, index), geometry, limits)
+    for ax in axes[:2]:
+        ax.set_xlabel("")
+    for ax in axes[1::2]:
+        ax.set_ylabel("")
+    return fig
+
+
+def plot_strip(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
+    """`strip_figure` written as STEM.pdf and STEM.png."""
+    return save_figure(strip_figure(run, analysis), stem)
+
+
+def joints_per_state(run: RunFolder) -> pd.DataFrame:
+    """joints.csv checked against states.npz: as many joint rows as states times joints."""
+    states, n_joints = run_states(run), len(case_geometry(run.case).joints)
+    if len(run.joints) != len(states) * n_joints:
+        raise RunFolderError(f"{run.path}: joints.csv has {len(run.joints)} rows for {len(states)} states of "
+                             f"{n_joints} joints; run the case again")
+    return run.joints

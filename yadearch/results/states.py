@@ -1,0 +1,80 @@
+"""Every recorded state of a run in one array file (states.npz): the support displacement, stage and
+step of each state and the block poses (centroid position and rotation), so that any state can be
+drawn, animated or exported after the run. The states are those of joints.csv, in its order."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from yadearch.atomic import write_atomically
+from yadearch.errors import RunFolderError
+
+STATES_FILE = "states.npz"
+COLLAPSE_STAGE = "collapse"
+EQUILIBRIUM_STAGE = "equilibrium"
+
+
+def state_entry(stage: str, step: int, delta_mm: float, pos: np.ndarray, rot: np.ndarray) -> dict[str, Any]:
+    """One recorded state: `pos` (n_blocks, 2 or 3; m, only x and y kept) and `rot` (n_blocks; rad)."""
+    return {"stage": stage, "step": int(step), "delta_mm": float(delta_mm),
+            "pos_m": np.asarray(pos, float)[:, :2].copy(), "rot_rad": np.asarray(rot, float).copy()}
+
+
+def write_states(path: Path, states: list[dict[str, Any]]) -> None:
+    """Write the states as one compressed array file, atomically."""
+    arrays = {"stage": np.array([s["stage"] for s in states], dtype=str),
+              "step": np.array([s["step"] for s in states], dtype=np.int64),
+              "delta_mm": np.array([s["delta_mm"] for s in states], dtype=float),
+              "pos_m": np.array([s["pos_m"] for s in states], dtype=float),
+              "rot_rad": np.array([s["rot_rad"] for s in states], dtype=float)}
+    def save(temporary: Path) -> None:
+        with temporary.open("wb") as handle:  # a file object: numpy would add .npz to a name
+            np.savez_compressed(handle, **arrays)
+
+    write_atomically(path, save)
+
+
+@dataclass(frozen=True)
+class RunStates:
+    """A run's recorded states as arrays, one row a state (the self-weight state first, the collapse
+    last when the arch collapsed)."""
+
+    stage: np.ndarray  # str: selfweight, equilibrium, collapse, ... (docs/numerics.md)
+    step: np.ndarray
+    delta_mm: np.ndarray  # the support displacement of each state (mm)
+    pos_m: np.ndarray  # (n_states, n_blocks, 2): block centroids (m); block 0 and -1 are the supports
+    rot_rad: np.ndarray  # (n_states, n_blocks): block rotations (rad, anticlockwise)
+
+    def __len__(self) -> int:
+        return len(self.stage)
+
+    def path(self) -> np.ndarray:
+        """Indices of the loading path: the self-weight state, each equilibrium, then the collapse."""
+        keep = (np.arange(len(self)) == 0) | np.isin(self.stage, (EQUILIBRIUM_STAGE, COLLAPSE_STAGE))
+        return np.flatnonzero(keep)
+
+    def nearest(self, delta_mm: float) -> int:
+        """Index of the path state whose support displacement is nearest `delta_mm`."""
+        path = self.path()
+        return int(path[np.argmin(np.abs(self.delta_mm[path] - delta_mm))])
+
+    def snapshot(self, index: int) -> dict[str, Any]:
+        """State `index` in snapshots.json's form (for the drawing helpers of `analysis.blocks`)."""
+        return {"delta_mm": float(self.delta_mm[index]), "step": int(self.step[index]),
+                "pos_m": self.pos_m[index], "rot_rad": self.rot_rad[index]}
+
+
+def read_states(path: Path) -> RunStates | None:
+    """The states of the run folder `path`; None for a run written before states were recorded."""
+    file = Path(path) / STATES_FILE
+    if not file.is_file():
+        return None
+    try:
+        with np.load(file) as data:
+            return RunStates(**{key: data[key] for key in ("stage", "step", "delta_mm", "pos_m", "rot_rad")})
+    except (OSError, ValueError, KeyError) as exc:
+        raise RunFolderError(f"{file} cannot be read ({exc}); run the case again") from None
