@@ -60,11 +60,12 @@ def with_engine(case: ArchCase | str, engine: str | None) -> ArchCase:
 
 
 def run(case: ArchCase | str, out: str | Path | None = None, timeout_s: float | None = None,
-        figures: bool = True, rerun: bool = False, overwrite: bool = False, engine: str | None = None) -> RunResult:
+        figures: bool = True, rerun: bool = False, overwrite: bool = False, engine: str | None = None,
+        quiet: bool = False) -> RunResult:
     """Run `case` to collapse in a child process (YADE, or the static engine with `engine="static"`),
     writing the run folder `out` (default runs/NAME) and its figures; returns the result read back.
     A finished run of the same case in `out` is reused (unless `rerun`); one of another case is kept
-    unless `overwrite`."""
+    unless `overwrite`. The run's progress lines are printed unless `quiet` (run.log keeps them)."""
     from yadearch.engine.process import run_case_process
 
     case = with_engine(case, engine)
@@ -77,7 +78,7 @@ def run(case: ArchCase | str, out: str | Path | None = None, timeout_s: float | 
             raise RunFolderError(f"{folder} holds a finished run of another case ({differences[0]}"
                                  f"{', ...' if len(differences) > 1 else ''}); choose another output "
                                  "folder or overwrite it")
-    run_case_process(case, folder, timeout_s=timeout_s)
+    run_case_process(case, folder, timeout_s=timeout_s, quiet=quiet)
     result = open_run(folder)
     if figures:
         result.write_figures()
