@@ -41,8 +41,7 @@ from yadearch.studies.imperfection_amplitudes import (
 from yadearch.studies.sessions import campaign_wall_s
 
 BASE_PRESET = "set2"  # the accurate (CNC) voussoirs' kn: the defects alone must bring du down
-SAMPLES = {"bump": 200, "combined": 200}  # seeds a level; the other kinds OTHER_SAMPLES
-OTHER_SAMPLES = 100
+SAMPLES = 200  # seeds a level, every kind: the median's 95 % interval within a few percent
 DEM_SAMPLES = {"combined": 20}  # DEM confirmations at the matching level (bumps: DEM_BUMP_CAMPAIGN); others 5
 OTHER_DEM_SAMPLES = 5
 AGREEMENT = 0.03  # DEM and static medians on the same seeds within this
@@ -97,8 +96,7 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default="reports/imperfections/amplitudes")
     parser.add_argument("--jobs", type=int, default=2, help="runs at once (one core each)")
-    parser.add_argument("--samples", type=int, help="seeds a level (static; default 200 for bumps and the "
-                        "combination, 100 for the other kinds)")
+    parser.add_argument("--samples", type=int, help=f"seeds a level (static; default {SAMPLES})")
     parser.add_argument("--only", default="", help="comma-separated kinds (default: all)")
     parser.add_argument("--no-dem", action="store_true", help="skip the DEM confirmations")
     args = parser.parse_args()
@@ -109,7 +107,7 @@ def main() -> int:
     for kind in KINDS:
         if args.only and kind.name not in args.only.split(","):
             continue
-        static = static_campaign(kind, out, args.samples or SAMPLES.get(kind.name, OTHER_SAMPLES), args.jobs)
+        static = static_campaign(kind, out, args.samples or SAMPLES, args.jobs)
         summary = level_summary(kind, static)
         match = matching_amplitude(summary, static, target, perfect)
         level = nearest_level(summary, match.amplitude)

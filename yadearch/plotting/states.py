@@ -88,7 +88,7 @@ def drawing_limits(geometry: ArchGeometry) -> tuple[tuple[float, float], tuple[f
 
 def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple, corner: bool = True) -> None:
     """Draw `view` into `ax` to scale, over the undeformed outline, with the support displacement and
-    the reaction under the arch (`corner`)."""
+    the reaction in the lower left corner (`corner`)."""
     last = len(view.outlines) - 1
     for b, (vertices, moved) in enumerate(zip(geometry.blocks, view.outlines)):
         ax.add_patch(Polygon(vertices[: len(vertices) // 2, :2] * MM_PER_M, closed=True, fill=False, ec="0.7",
@@ -106,7 +106,7 @@ def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple,
         text = f"δ = {view.delta_mm:.2f} mm ({view.stage})"
         if view.reaction_N is not None:
             text += f"\nright support on the arch: Rx = {view.reaction_N[0]:.2f} N, Ry = {view.reaction_N[1]:.2f} N"
-        ax.text(0.5, 0.02, text, transform=ax.transAxes, va="bottom", ha="center", fontsize=6)
+        ax.text(0.01, 0.02, text, transform=ax.transAxes, va="bottom", ha="left", fontsize=6)
     ax.set_aspect("equal")
     ax.set_xlim(*limits[0])
     ax.set_ylim(*limits[1])

@@ -53,7 +53,7 @@ KINDS = (
     Kind("angle", "faces not parallel (random per joint)", {"face_angle_sd_mrad": 1.0},
          (2.0, 4.0, 8.0, 16.0, 32.0), "mrad (sd)"),
     Kind("offset", "voussoirs set off their neighbours (random per voussoir)", {"voussoir_offset_sd_mm": 1.0},
-         (0.25, 0.5, 1.0, 1.5, 2.0), "mm (sd)"),
+         (0.25, 0.5, 1.0, 1.5, 2.0, 3.0), "mm (sd)"),
     Kind("dimensions", "voussoirs longer or shorter and thicker or thinner (random per voussoir)",
          {"voussoir_length_sd_mm": 1.0, "voussoir_thickness_sd_mm": 1.0}, (0.05, 0.1, 0.2, 0.3, 0.4), "mm (sd)"),
     Kind("combined", "all of them at once: bumps 0.05, edges 0.75 (sd 0.19), angles 2 mrad, offsets, lengths "
