@@ -126,9 +126,8 @@ class NumericsConfig:
                                             doc="support speed during continuous loading (mm/s)"))
     rate_reference_kn_N_per_mm3: float = field(default=0.0, metadata={**_num(
         0, 1e5, doc="joints stiffer than this (N/mm^3) load more slowly: the support speed is "
-        "settlement_rate x sqrt(this / kn); 0 = no scaling (the default: with loading by "
-        "equilibrium increments, kn 100 gives du 108.21 mm unscaled and 108.84 mm at 10, the same "
-        "hinges, in 13 % fewer steps)"), "predates": 0.0})
+        "settlement_rate x sqrt(this / kn); 0 = no scaling (the default: loading by equilibrium "
+        "increments makes du independent of the speed, docs/numerics.md)"), "predates": 0.0})
     support_acceleration_mm_per_s2: float = field(default=640.0, metadata={**_num(
         0, 1e5, doc="acceleration and braking of the support at the start and end of each move (mm/s^2); "
         "0 = instantaneous. The same at any kn: it sets the inertial load of the moving arch (640 = "
@@ -166,8 +165,7 @@ class NumericsConfig:
     hold_max_s: float = field(default=2.0, metadata=_num(0, 100, low_open=True,
                               doc="simulated time allowed to find equilibrium at a fixed support (s); "
                               "a near-critical arch can creep for longer than 0.5 s before it settles "
-                              "(kn 1.778: no equilibrium from 43 mm with 0.5 s, equilibrium to 72.36 "
-                              "mm with 2 s)"))
+                              "(docs/numerics.md)"))
     hold_min_s: float = field(default=0.1, metadata=_num(0, 10, doc="simulated time a hold lasts at least "
                                                           "before it may end in equilibrium (s)"))
     still_speed_mm_per_s: float = field(default=0.5, metadata=_num(0, 1000, low_open=True,
@@ -197,8 +195,8 @@ class NumericsConfig:
                                     doc="wall seconds between progress lines"))
     max_steps: int = field(default=100_000_000, metadata={**_num(
         1, 1e12, doc="step budget of a run: a case whose estimated worst case exceeds it is refused "
-        "before YADE starts, and a run that reaches it fails (the paper's stiffest kn 100 takes "
-        "about 1.3 million)"), "predates": 100_000_000})
+        "before YADE starts, and a run that reaches it fails (docs/speed.md gives the steps the "
+        "paper's cases take)"), "predates": 100_000_000})
 
 
 @dataclass
