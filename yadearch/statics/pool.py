@@ -83,9 +83,15 @@ def _stop(worker: subprocess.Popen) -> None:
 
 
 def stop_workers() -> None:
-    """Stop every worker now (an interrupted campaign); later runs start new ones."""
+    """Stop every worker now (an interrupted campaign); later runs start new ones: the idle ones are
+    taken out of the queue first, so that none is handed out while its SIGTERM is on its way."""
     with _lock:
         workers = list(_all)
+        while True:
+            try:
+                _idle.get_nowait()
+            except queue.Empty:
+                break
     for worker in workers:
         worker.terminate()
 
