@@ -12,9 +12,7 @@ import numpy as np
 import pandas as pd
 
 from yadearch.model.hinges import hinge_rotation
-
-EQUILIBRIUM_STAGE = "equilibrium"  # series.csv / joints.csv rows of the accepted loading states
-PATH_STAGES = ("selfweight", EQUILIBRIUM_STAGE, "collapse")
+from yadearch.results.states import EQUILIBRIUM_STAGE, PATH_STAGES
 
 
 @dataclass(frozen=True)

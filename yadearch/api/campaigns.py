@@ -4,6 +4,7 @@ what it starts and draws its figures, and the command line prints and exits on w
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -60,8 +61,6 @@ def montecarlo(case: ArchCase | str, out: str | Path, samples: int, seed: int = 
     `levels`, e.g. `edge_radius_mm=[0.5, 1]`) as a resumable campaign in `out`, with the distribution
     figures (`figures`); returns the table of montecarlo.csv (du, hinges and each sample's
     imperfection summary)."""
-    import math
-
     from yadearch.studies.executors import open_pool
     from yadearch.studies.montecarlo import levels as level_columns
     from yadearch.studies.montecarlo import run_montecarlo

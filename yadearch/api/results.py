@@ -11,27 +11,18 @@ import pandas as pd
 
 from yadearch.results.rundir import FIGURES_DIR, VTK_DIR, RunFolder, read_run
 from yadearch.results.states import RunStates
-from yadearch.results.summary import DEM, RunSummary
+from yadearch.results.summary import DEM, HingeRef, RunSummary
 
 
 @dataclass(frozen=True)
-class HingeAtCollapse:
-    """One hinge of the collapse mechanism: interface (1 = left support), side (I intrados, E
-    extrados), its letter in the paper's positional convention (A the intrados hinge, B the other
-    extrados hinge, C at the right support, D at the left one; None if it has none) and its rotation.
-    As everywhere in yadearch (run summaries, limit analyses), `label` is "30E"."""
+class HingeAtCollapse(HingeRef):
+    """One hinge of the collapse mechanism: the run summary's hinge (interface, 1 = left support; side,
+    I intrados or E extrados; `label` "30E") with its letter in the paper's positional convention (A
+    the intrados hinge, B the other extrados hinge, C at the right support, D at the left one; None if
+    it has none) and its rotation."""
 
-    interface: int
-    side: str
     paper_label: str | None
     rotation_mrad: float | None
-
-    @property
-    def label(self) -> str:
-        return f"{self.interface}{self.side}"
-
-    def __str__(self) -> str:
-        return self.label
 
 
 class RunResult:

@@ -127,7 +127,14 @@ def limit(case: ArchCase | str, compliant: bool = False, max_snap_mm: float | No
     case = as_case(case)
     result = limit_analysis(case, max_snap_mm=max_snap_mm, compliant=compliant)
     if out is not None:
-        name = f"{case.name}_compliant" if compliant else case.name
-        write_result_json(result, case, Path(out) / f"{name}.json")
-        save_thrust_line(result, case, Path(out) / name)
+        json_path, figure_stem = limit_files(case, compliant, out)
+        write_result_json(result, case, json_path)
+        save_thrust_line(result, case, figure_stem)
     return result
+
+
+def limit_files(case: ArchCase, compliant: bool, out: str | Path) -> tuple[Path, Path]:
+    """Where `limit(..., out=out)` writes: OUT/NAME.json and the figure's stem OUT/NAME (NAME_compliant
+    when compliant; a name may hold dots, as kn5.2)."""
+    name = f"{case.name}_compliant" if compliant else case.name
+    return Path(out) / f"{name}.json", Path(out) / name

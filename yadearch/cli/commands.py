@@ -10,6 +10,7 @@ import click
 
 from yadearch import api
 from yadearch.analysis.mechanism import run_warnings
+from yadearch.api.runs import limit_files
 from yadearch.case.config import parameter_docs
 from yadearch.cli.campaigns import calibrate, robustness, sweep
 from yadearch.cli.capacity import capacity
@@ -103,7 +104,7 @@ def limit(preset_name: str | None, case_file: str | None, kn: float | None, sett
         click.echo(f"note: --kn {kn:g} plays no part in the rigid-block analysis (rigid joints); add --compliant "
                    "for the du a run at that kn should find", err=True)
     result = api.limit(case, compliant=compliant, max_snap_mm=max_snap_mm, out=out)
-    path = Path(out) / f"{case.name}_compliant.json" if compliant else Path(out) / f"{case.name}.json"
+    path, _ = limit_files(case, compliant, out)
     du = "no collapse" if result.du_rigid_mm is None else f"{result.du_rigid_mm:.2f} mm"
     if compliant:
         du += f" with compliant hinges at kn {case.interface.kn_N_per_mm3:g} N/mm^3"

@@ -13,7 +13,7 @@ from yadearch.analysis.blocks import case_geometry
 from yadearch.atomic import write_atomically
 from yadearch.errors import CaseError, YadearchError
 from yadearch.plotting.run_figures import house_style, new_figure
-from yadearch.plotting.states import draw_state, drawing_limits, joints_per_state, run_states, state_view
+from yadearch.plotting.states import draw_state, drawing_limits, run_states, state_view
 from yadearch.results.rundir import RunFolder
 
 FORMATS = ("mp4", "gif")
@@ -38,7 +38,6 @@ def animate_run(run: RunFolder, analysis: RunAnalysis, out: Path, fmt: str = "mp
     """Write the run's movie to `out` (atomically): every state of the loading path, self-weight to
     collapse, then the collapse held for HOLD_COLLAPSE_S; returns `out`."""
     check_format(fmt)
-    joints_per_state(run)
     states = run_states(run)
     geometry = case_geometry(run.case)
     limits = drawing_limits(geometry)

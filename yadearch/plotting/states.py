@@ -19,7 +19,7 @@ from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outli
 from yadearch.analysis.run import default_thresholds
 from yadearch.errors import RunFolderError
 from yadearch.model.geometry import ArchGeometry
-from yadearch.model.hinges import PAPER_LABELS, hinge_rotation, hinges_at
+from yadearch.model.hinges import PAPER_LABELS, Hinge, hinge_rotation, hinges_at
 from yadearch.plotting.run_figures import HINGE_COLOURS, house_style, new_figure, save_figure
 from yadearch.results.rundir import RunFolder
 from yadearch.results.states import RunStates
@@ -58,16 +58,12 @@ def state_view(run: RunFolder, geometry: ArchGeometry, analysis: RunAnalysis, in
     same way beyond the run's threshold, marked at their peak, `model.hinges.hinges_at`), each with the
     letter of the collapse mechanism's hinge whose spread holds it on that side."""
     states = run_states(run)
-    rotation_mrad = default_thresholds(run.case).rotation_mrad
     snapshot = states.snapshot(index)
-    n_joints = len(geometry.joints)
-    rows = run.joints.iloc[index * n_joints:(index + 1) * n_joints]
+    rows = state_joints(run, geometry, index)
     ends = {side: joint_points(geometry, snapshot, side) * MM_PER_M for side in ("I", "E")}
     letters = {(k, t.side): t.paper_label for t in analysis.tracks for k in t.final.interfaces}
     hinges = [(h.interface, h.side, ends[h.side][h.interface - 1], letters.get((h.interface, h.side), ""))
-              for h in hinges_at(hinge_rotation(rows["opening_intrados_mm"].to_numpy(),
-                                                rows["opening_extrados_mm"].to_numpy(), geometry.thickness * MM_PER_M),
-                                 rotation_mrad * 1e-3)]
+              for h in state_hinges(run, geometry, rows)]
     loaded = (rows["normal_force_N"].to_numpy() > 0) & np.isfinite(rows["force_position"].to_numpy())
     where = rows["force_position"].to_numpy()[:, None]
     thrust = (ends["I"] + where * (ends["E"] - ends["I"]))[loaded]
@@ -125,7 +121,6 @@ def strip_indices(states: RunStates, du_mm: float | None) -> list[int]:
 @house_style
 def strip_figure(run: RunFolder, analysis: RunAnalysis) -> Figure:
     """Four states of the run side by side, two by two, at one scale (a page-wide figure)."""
-    joints_per_state(run)
     geometry = case_geometry(run.case)
     limits = drawing_limits(geometry)
     fig = new_figure(height_cm=STRIP_CM[1], width_cm=STRIP_CM[0])
@@ -144,10 +139,19 @@ def plot_strip(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path,
     return save_figure(strip_figure(run, analysis), stem)
 
 
-def joints_per_state(run: RunFolder) -> pd.DataFrame:
-    """joints.csv checked against states.npz: as many joint rows as states times joints."""
-    states, n_joints = run_states(run), len(case_geometry(run.case).joints)
+def state_joints(run: RunFolder, geometry: ArchGeometry, index: int) -> pd.DataFrame:
+    """The joints.csv rows of state `index` (states.npz holds the states of joints.csv in its order);
+    RunFolderError in one line if the two files do not match."""
+    states, n_joints = run_states(run), len(geometry.joints)
     if len(run.joints) != len(states) * n_joints:
         raise RunFolderError(f"{run.path}: joints.csv has {len(run.joints)} rows for {len(states)} states of "
                              f"{n_joints} joints; run the case again")
-    return run.joints
+    return run.joints.iloc[index * n_joints:(index + 1) * n_joints]
+
+
+def state_hinges(run: RunFolder, geometry: ArchGeometry, rows: pd.DataFrame) -> list[Hinge]:
+    """The hinges of one state's joints.csv `rows` as the run finds them: adjacent joints turning the
+    same way beyond the run's threshold, each at its peak (`model.hinges.hinges_at`)."""
+    rotation = hinge_rotation(rows["opening_intrados_mm"].to_numpy(), rows["opening_extrados_mm"].to_numpy(),
+                              geometry.thickness * MM_PER_M)
+    return hinges_at(rotation, default_thresholds(run.case).rotation_mrad * 1e-3)

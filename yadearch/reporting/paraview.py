@@ -13,11 +13,9 @@ from typing import Any
 import numpy as np
 
 from yadearch.analysis.blocks import block_centroids, case_geometry, joint_points
-from yadearch.analysis.run import default_thresholds
 from yadearch.atomic import write_atomically
 from yadearch.model.geometry import ArchGeometry
-from yadearch.model.hinges import hinge_rotation, hinges_at
-from yadearch.plotting.states import joints_per_state, run_states
+from yadearch.plotting.states import run_states, state_hinges, state_joints
 from yadearch.results.rundir import RunFolder
 
 PARTS = ("blocks", "joints")
@@ -89,10 +87,8 @@ def export_run(run: RunFolder, out: Path) -> Path:
     from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_VERTEX
 
     states = run_states(run)
-    joints = joints_per_state(run)
     geometry = case_geometry(run.case)
     n_blocks, n_joints = len(geometry.blocks), len(geometry.joints)
-    threshold = default_thresholds(run.case).rotation_mrad * 1e-3
     depth_mid = float(np.mean([prism[:, 2].mean() for prism in geometry.blocks]))
     centroids = block_centroids(geometry)
     ids = np.arange(n_blocks)
@@ -106,10 +102,10 @@ def export_run(run: RunFolder, out: Path) -> Path:
                        np.arange(n_blocks * HEX_CORNERS).reshape(n_blocks, HEX_CORNERS),
                        {"block_id": ids, "support": np.isin(ids, (0, n_blocks - 1)).astype(np.int8),
                         "displacement_m": displacement, "rotation_rad": rot}, on_cells=True)
-        rows = joints.iloc[index * n_joints:(index + 1) * n_joints]
+        rows = state_joints(run, geometry, index)
         intrados, extrados = rows["opening_intrados_mm"].to_numpy(), rows["opening_extrados_mm"].to_numpy()
         hinged = np.zeros(n_joints, np.int8)
-        for h in hinges_at(hinge_rotation(intrados, extrados, geometry.thickness * 1e3), threshold):
+        for h in state_hinges(run, geometry, rows):
             hinged[h.interface - 1] = 1
         centres = (joint_points(geometry, snapshot, "I") + joint_points(geometry, snapshot, "E")) / 2
         joint_grid = _grid(np.column_stack([centres, np.full(n_joints, depth_mid)]), VTK_VERTEX,

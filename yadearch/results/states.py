@@ -15,7 +15,8 @@ from yadearch.errors import RunFolderError
 
 STATES_FILE = "states.npz"
 COLLAPSE_STAGE = "collapse"
-EQUILIBRIUM_STAGE = "equilibrium"
+EQUILIBRIUM_STAGE = "equilibrium"  # the loading's accepted states (joints.csv, series.csv, states.npz)
+PATH_STAGES = ("selfweight", EQUILIBRIUM_STAGE, COLLAPSE_STAGE)  # the quasi-static path, in its order
 
 
 def state_entry(stage: str, step: int, delta_mm: float, pos: np.ndarray, rot: np.ndarray) -> dict[str, Any]:
@@ -54,8 +55,7 @@ class RunStates:
 
     def path(self) -> np.ndarray:
         """Indices of the loading path: the self-weight state, each equilibrium, then the collapse."""
-        keep = (np.arange(len(self)) == 0) | np.isin(self.stage, (EQUILIBRIUM_STAGE, COLLAPSE_STAGE))
-        return np.flatnonzero(keep)
+        return np.flatnonzero(np.isin(self.stage, PATH_STAGES))
 
     def nearest(self, delta_mm: float) -> int:
         """Index of the path state whose support displacement is nearest `delta_mm`."""

@@ -36,6 +36,9 @@ class HingeRef:
         """The hinge as the tables print it, e.g. "30E"."""
         return f"{self.interface}{self.side}"
 
+    def __str__(self) -> str:
+        return self.label
+
     def to_json(self) -> dict[str, Any]:
         return {"interface": self.interface, "side": self.side}
 

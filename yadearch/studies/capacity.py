@@ -10,6 +10,8 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from yadearch.results.states import EQUILIBRIUM_STAGE
+
 DIRECTION_STEP_DEG = 15
 MAX_STEP_DEG = 90  # coarser than this a map would not show the half-plane
 
@@ -25,7 +27,6 @@ def directions(step_deg: float = DIRECTION_STEP_DEG) -> tuple[float, ...]:
 
 DIRECTIONS_DEG = directions()
 DIRECTION_PARAMETER = "settlement_direction_deg"
-EQUILIBRIUM_STAGE = "equilibrium"
 MAP_COLUMNS = ("set", "direction_deg", "du_mm", "du_x_mm", "du_y_mm", "hinges", "mechanism",
                "du_rigid_mm", "rigid_hinges", "du_over_rigid", "du_rigid_other_mm", "rigid_other_hinges",
                "steps", "wall_s", "status", "folder")
