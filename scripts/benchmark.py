@@ -33,6 +33,7 @@ from typing import Any
 import __main__
 from yadearch.results.rundir import read_summary
 from yadearch.results.summary import RunSummary
+from yadearch.solve.stages import Stage
 
 TARGET_SET2_WALL_S = 10.0  # docs/speed.md: the second round's targets
 TARGET_STIFF_WALL_S = 60.0  # any kn from 0.1 to 100, measured at the stiffest
@@ -70,7 +71,7 @@ def stored(folder: str) -> RunSummary | None:
 
 def slow_reference(case):
     """Set 2 at half the default settlement rate (the convergence script's `half_rate` variant)."""
-    slow = case.with_overrides({"settlement_rate_mm_per_s": case.numerics.settlement_rate_mm_per_s / 2})
+    slow = case.with_overrides({"support_rate_mm_per_s": case.numerics.support_rate_mm_per_s / 2})
     slow.name = "set2_half_rate"
     return slow
 
@@ -107,13 +108,13 @@ def loading_measurement(settle_mm: float, set2_steps: int, contact_model: str) -
     from yade import O
 
     # no acceleration ramp: the bare run moves the support at constant speed, so the runner must too
-    case = preset("set2").with_overrides({"progress_every_s": 1e9, "max_settlement_mm": settle_mm,
+    case = preset("set2").with_overrides({"progress_every_s": 1e9, "max_support_displacement_mm": settle_mm,
                                           "support_acceleration_mm_per_s2": 0.0,
                                           "contact_model": contact_model})
     runner = Runner(case, log=lambda text: None)
     runner.selfweight()
     settled = runner.snapshot()
-    runner.stage = "increment"
+    runner.stage = Stage.INCREMENT
     first, start = runner.total_steps, time.time()
     runner.move_to(units.mm(settle_mm))
     runner_s, steps = time.time() - start, runner.total_steps - first

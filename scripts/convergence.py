@@ -41,11 +41,11 @@ def main() -> int:
     if args.kn is not None:
         base = base.with_overrides({"kn_N_per_mm3": args.kn})
         prefix = f"kn{args.kn:g}"
-    rate, damping = base.numerics.settlement_rate_mm_per_s, base.numerics.damping
+    rate, damping = base.numerics.support_rate_mm_per_s, base.numerics.damping
     other_damping = args.damping if args.damping is not None else round(damping + 0.1, 3)
     variants = {
         "default": {},
-        "half_rate": {"numerics.settlement_rate_mm_per_s": rate / 2},
+        "half_rate": {"numerics.support_rate_mm_per_s": rate / 2},
         "other_damping": {"numerics.damping": other_damping},
         "small_timestep": {"numerics.timestep_safety": round(base.numerics.timestep_safety * 2 / 3, 3)},
     }
@@ -75,7 +75,7 @@ def main() -> int:
         rel = (du - du_reference) / du_reference if du is not None and du_reference else float("nan")
         same = summary.same_mechanism(reference)
         ok = ok and du is not None and abs(rel) <= TOLERANCE and same
-        print(f"{label:14s} {case.settlement_speed_mm_per_s:9.2f} {case.numerics.damping:7.2f} "
+        print(f"{label:14s} {case.support_speed_mm_per_s:9.2f} {case.numerics.damping:7.2f} "
               f"{case.numerics.timestep_safety:9.2f} "
               f"{du if du is not None else float('nan'):8.2f} {rel:+9.2%} {summary.steps:8d} "
               f"{summary.wall_s:7.0f}  {summary.hinge_labels}{'' if same else '  (differs)'}")

@@ -4,7 +4,7 @@ limit analysis has them at a support displacement (either branch of the keystone
 the voussoirs from rest and report how far they move and the hinges they end on; with `--load-on`,
 go on loading by the run's increments from that state to collapse (docs/validation.md).
 
-    .venv/bin/python scripts/rigid_state_check.py --preset set2 --kn 3000 --set settlement_direction_deg=-45 \\
+    .venv/bin/python scripts/rigid_state_check.py --preset set2 --kn 3000 --set support_direction_deg=-45 \\
         --at-mm 9.75 [--branch mirrored] [--compliant | --hinges 8I,28E,46I] [--load-on --out DIR]
 
 A state that stays put (blocks moving far less than a millimetre) is an equilibrium of the DEM's
@@ -35,8 +35,8 @@ from yadearch.engine.scene_state import place_voussoirs  # noqa: E402
 from yadearch.model import units  # noqa: E402
 from yadearch.results.rundir import hinge_list, write_run  # noqa: E402
 from yadearch.results.summary import HingeRef, RunSummary, collapse_fields  # noqa: E402
-from yadearch.solve.path import RUNAWAY, STABLE  # noqa: E402
 from yadearch.solve.pose import linkage_pose, rigid_pose  # noqa: E402
+from yadearch.solve.stages import Stage, Verdict  # noqa: E402
 
 COMMAND_FILE = "command.json"  # beside the run folder's files: how the state was placed
 PLACEMENT_TOLERANCE_MM = 1e-6  # the placed support must read the displacement asked for
@@ -99,15 +99,15 @@ def main() -> int:
         where = f"linkage {args.hinges}" if args.hinges else \
             f"{args.branch} branch{', compliant hinges' if args.compliant else ''}"
         print(f"placed at {args.at_mm:g} mm ({where}): {hinge_text(runner)}", flush=True)
-        runner.stage = "relax"
+        runner.stage = Stage.RELAX
         verdict = runner.hold(max_s=case.numerics.hold_max_s)
         print(f"released: {verdict}, largest block motion {units.to_mm(runner.hold_move):.3f} mm; "
               f"now on {hinge_text(runner)}", flush=True)
-        if args.load_on and verdict == STABLE:
+        if args.load_on and verdict == Verdict.STABLE:
             load_on(runner, args.at_mm, args.out, vars(args) | {"out": str(args.out)})
     finally:
         runner.close()
-    return 1 if verdict == RUNAWAY else 0
+    return 1 if verdict == Verdict.RUNAWAY else 0
 
 
 if __name__ == "__main__":

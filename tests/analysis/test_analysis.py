@@ -180,9 +180,9 @@ def test_an_accepted_relaxation_that_moved_a_block_far_is_flagged_as_a_jump():
 
 def test_a_collapse_read_from_a_timeout_is_flagged_and_a_runaway_is_not():
     from yadearch.analysis.mechanism import run_warnings
-    from yadearch.solve.path import RUNAWAY, TIMEOUT
+    from yadearch.solve.stages import Verdict
 
-    timed_out = run_warnings(_summary(du_mm=27.3, collapse_verdict=TIMEOUT))
+    timed_out = run_warnings(_summary(du_mm=27.3, collapse_verdict=Verdict.TIMEOUT))
     assert len(timed_out) == 1 and "numerics.hold_max_s" in timed_out[0] and "\n" not in timed_out[0]
-    assert run_warnings(_summary(du_mm=27.3, collapse_verdict=RUNAWAY)) == []
+    assert run_warnings(_summary(du_mm=27.3, collapse_verdict=Verdict.RUNAWAY)) == []
     assert run_warnings(_summary(du_mm=27.3)) == []  # a run from before the record

@@ -71,7 +71,7 @@ def test_cli_says_in_one_line_when_yade_is_missing(capsys, monkeypatch, tmp_path
 
 def test_support_speed_falls_as_one_over_sqrt_kn_above_the_reference_stiffness():
     case = preset("set2")  # 80 mm/s, no reference stiffness by default
-    assert case.with_overrides({"kn_N_per_mm3": 40.0}).settlement_speed_mm_per_s == 80.0
+    assert case.with_overrides({"kn_N_per_mm3": 40.0}).support_speed_mm_per_s == 80.0
     scaled = case.with_overrides({"rate_reference_kn_N_per_mm3": 10.0})
-    assert scaled.settlement_speed_mm_per_s == 80.0  # kn 5.2: below the reference, unchanged
-    assert scaled.with_overrides({"kn_N_per_mm3": 40.0}).settlement_speed_mm_per_s == pytest.approx(40.0)
+    assert scaled.support_speed_mm_per_s == 80.0  # kn 5.2: below the reference, unchanged
+    assert scaled.with_overrides({"kn_N_per_mm3": 40.0}).support_speed_mm_per_s == pytest.approx(40.0)

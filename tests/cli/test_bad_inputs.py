@@ -21,7 +21,7 @@ from yadearch.errors import YadearchError
 
 NUMERIC = [f"{name}.{f.name}" for name, section in SECTIONS.items() for f in fields(section)
            if f.type in ("int", "float", int, float)]
-VALID_NEGATIVE = ("loading.settlement_direction_deg",  # -1 deg is a valid direction
+VALID_NEGATIVE = ("loading.support_direction_deg",  # -1 deg is a valid direction
                   "loading.rotation_pivot_dx_mm", "loading.rotation_pivot_dy_mm",  # a pivot anywhere
                   "imperfections.face_angle_mrad", "imperfections.face_bump_mm",  # signed defects
                   "imperfections.voussoir_offset_mm", "imperfections.keystone_offset_mm",
@@ -29,7 +29,7 @@ VALID_NEGATIVE = ("loading.settlement_direction_deg",  # -1 deg is a valid direc
                   "imperfections.voussoir_thickness_mm")
 BAD_VALUES = ["-1", "nan", "inf", "-inf", "1e300", "'text'", "true"]
 DERIVED = [  # inside each value's range, absurd together: refused from the plan, before YADE
-    ("settlement_rate_mm_per_s=1e-9", "max_steps"), ("gravity_ramp_periods=1e6", "gravity ramp"),
+    ("support_rate_mm_per_s=1e-9", "max_steps"), ("gravity_ramp_periods=1e6", "gravity ramp"),
     ("thickness_mm=400", "internal_radius_mm"),
     ("support_acceleration_mm_per_s2=1e-9", "max_steps"), ("hold_max_s=100", "max_steps"),
     ("kn_N_per_mm3=1e5", "max_steps"), ("max_steps=10", "max_steps"),

@@ -143,7 +143,7 @@ def test_joint_elements_and_cgal_collapse_a_coarse_arch_alike():
     from yadearch.engine.runner import Runner
     from yadearch.model.hinges import same_hinges
 
-    coarse = {"n_voussoirs": 9, "kn_N_per_mm3": 0.3, "settlement_rate_mm_per_s": 30.0,
+    coarse = {"n_voussoirs": 9, "kn_N_per_mm3": 0.3, "support_rate_mm_per_s": 30.0,
               "progress_every_s": 1e9}
     results = {}
     for model in ("joint", "cgal"):

@@ -9,7 +9,7 @@ import pytest
 from conftest import HAS_YADE, needs_yade
 
 from yadearch.case.config import preset
-from yadearch.case.movement import movement_overrides
+from yadearch.case.support import movement_overrides
 from yadearch.engine.yade_env import import_yade
 from yadearch.model import units
 from yadearch.model.joints import rotate
@@ -100,10 +100,10 @@ def test_the_rigid_analysis_state_is_an_equilibrium_of_stiff_joints(mirrored):
     than a millimetre and turns on the rigid hinges (docs/validation.md)."""
     from yadearch.engine.runner import Runner
     from yadearch.engine.scene_state import place_voussoirs
-    from yadearch.solve.path import STABLE
     from yadearch.solve.pose import rigid_pose
+    from yadearch.solve.stages import Verdict
 
-    case = preset("set2").with_overrides({**COARSE, "kn_N_per_mm3": STIFF_KN, "settlement_direction_deg": -45.0})
+    case = preset("set2").with_overrides({**COARSE, "kn_N_per_mm3": STIFF_KN, "support_direction_deg": -45.0})
     centroids, turns = rigid_pose(case, PLACED_AT_MM, mirrored)
     rigid_hinges = set(np.flatnonzero(np.abs(np.diff(turns)) > units.mrad(HINGE_MRAD)) + 1)
     runner = Runner(case, log=lambda line: None)
@@ -111,7 +111,7 @@ def test_the_rigid_analysis_state_is_an_equilibrium_of_stiff_joints(mirrored):
         runner.selfweight()
         runner.move_to(units.mm(PLACED_AT_MM))
         place_voussoirs(runner.scene, centroids, turns)
-        assert runner.hold() == STABLE
+        assert runner.hold() == Verdict.STABLE
         assert runner.hold_move < units.mm(STAYS_MM)
         _, hinges = runner.recorder.joint_snapshot()
         assert {h.interface for h in hinges} == rigid_hinges

@@ -11,7 +11,7 @@ import pytest
 
 from yadearch.case.config import preset
 from yadearch.case.mechanics import arch_geometry
-from yadearch.case.movement import case_movement
+from yadearch.case.support import case_movement
 from yadearch.errors import CaseError
 
 LAM = 0.02  # m of path
@@ -27,7 +27,7 @@ def movement(**loading):
     return case_movement(case, arch_geometry(case))
 
 
-@pytest.mark.parametrize("loading", [{}, {"settlement_direction_deg": 0.0},
+@pytest.mark.parametrize("loading", [{}, {"support_direction_deg": 0.0},
                                      {"support_motion": "rotation", "rotation_pivot_dy_mm": -200.0},
                                      {"support_motion": "rotation", "rotation_pivot_dx_mm": 50.0,
                                       "rotation_sense": "counterclockwise"}])
@@ -63,8 +63,8 @@ def test_both_supports_move_as_mirror_images():
 
 
 @pytest.mark.parametrize("loading, itself", [
-    ({"settlement_direction_deg": 0.0}, True), ({"settlement_direction_deg": 180.0}, True),
-    ({"moving_support": "both"}, True), ({}, False), ({"settlement_direction_deg": -45.0}, False),
+    ({"support_direction_deg": 0.0}, True), ({"support_direction_deg": 180.0}, True),
+    ({"moving_support": "both"}, True), ({}, False), ({"support_direction_deg": -45.0}, False),
     ({"support_motion": "rotation", "rotation_pivot_dy_mm": -100.0}, False),
     ({"support_motion": "path", "path_mm_mrad": [[10.0, 0.0, 0.0], [30.0, 0.0, 0.0]]}, True),
     ({"support_motion": "path", "path_mm_mrad": [[0.0, -20.0, 0.0], [60.0, -20.0, 0.0]]}, False)])
@@ -90,7 +90,7 @@ def test_the_rates_at_the_origin_move_every_support_point_as_the_placement_does(
 
 def test_equal_settlements_of_both_supports_carry_the_arch_rigidly():
     assert movement(moving_support="both").moves_rigidly
-    assert not movement(moving_support="both", settlement_direction_deg=0.0).moves_rigidly
+    assert not movement(moving_support="both", support_direction_deg=0.0).moves_rigidly
 
 
 def test_a_pivot_on_the_springing_point_is_refused_in_one_line(geometry):
@@ -103,15 +103,15 @@ def test_a_pivot_on_the_springing_point_is_refused_in_one_line(geometry):
 
 @pytest.mark.parametrize("loading, expected", [
     ({}, 640.0),  # a settlement: no horizontal component, the default acceleration to the bit
-    ({"settlement_direction_deg": 0.0}, 40.0),
-    ({"settlement_direction_deg": -45.0}, 40.0 / math.cos(math.radians(45.0))),
-    ({"settlement_direction_deg": 0.0, "support_horizontal_acceleration_mm_per_s2": 0.0}, 640.0),  # no cap
+    ({"support_direction_deg": 0.0}, 40.0),
+    ({"support_direction_deg": -45.0}, 40.0 / math.cos(math.radians(45.0))),
+    ({"support_direction_deg": 0.0, "support_horizontal_acceleration_mm_per_s2": 0.0}, 640.0),  # no cap
     ({"support_motion": "rotation", "rotation_pivot_dy_mm": -200.0}, 40.3),  # the springing starts sideways
 ])
 def test_the_support_accelerates_gently_where_it_moves_sideways(loading, expected):
     """A horizontal jolt loads the arch like a ground acceleration (docs/validation.md): its
     horizontal component stays within support_horizontal_acceleration_mm_per_s2 (40 mm/s2)."""
-    from yadearch.case.movement import support_acceleration_mm_per_s2
+    from yadearch.case.support import support_acceleration_mm_per_s2
 
     case = preset("set2").with_overrides(loading)
     accel = support_acceleration_mm_per_s2(case, case_movement(case, arch_geometry(case)))
@@ -124,7 +124,7 @@ def test_runs_the_cap_does_not_change_stay_comparable_with_older_ones():
     from yadearch.case.config import as_ran
 
     for direction, same in ((-90.0, True), (0.0, False)):
-        old = preset("set2").replace(settlement_direction_deg=direction).to_dict()
+        old = preset("set2").replace(support_direction_deg=direction).to_dict()
         del old["numerics"]["support_horizontal_acceleration_mm_per_s2"]  # a case.toml of before
-        now = preset("set2").replace(settlement_direction_deg=direction).to_dict()
+        now = preset("set2").replace(support_direction_deg=direction).to_dict()
         assert (as_ran(old) == as_ran(now)) is same

@@ -11,7 +11,7 @@ import pytest
 
 from yadearch.case.config import preset
 from yadearch.case.mechanics import arch_geometry
-from yadearch.case.movement import case_movement, movement_overrides
+from yadearch.case.support import case_movement, movement_overrides
 from yadearch.errors import CaseError
 from yadearch.solve.limit import limit_analysis
 
@@ -96,7 +96,7 @@ def test_a_straight_path_is_the_straight_translation():
 def test_the_limit_analysis_follows_a_path_round_its_corner_and_stops_at_its_end():
     case = preset("set2").with_overrides(movement_overrides("settle_then_spread"))
     result = limit_analysis(case)
-    spreading_alone = limit_analysis(preset("set2").replace(settlement_direction_deg=0.0))
+    spreading_alone = limit_analysis(preset("set2").replace(support_direction_deg=0.0))
     # 20 mm of settlement leaves the arch standing; the spreading that follows collapses it
     assert 20.0 < result.du_rigid_mm < 20.0 + 60.0
     assert result.du_rigid_mm - 20.0 < spreading_alone.du_rigid_mm

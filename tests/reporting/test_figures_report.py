@@ -113,10 +113,10 @@ def test_runs_of_the_paper_case_are_matched_by_name_or_kn():
     assert match_reference(case, _named("mine", 5.2)) == "set2"
     assert match_reference(case, _named("mine", 0.25)) == "set1"
     assert match_reference(case, _named("mine", 1.0)) is None
-    for other in ({"geometry": {"thickness_mm": 20.0}}, {"loading": {"settlement_direction_deg": 0.0}},
+    for other in ({"geometry": {"thickness_mm": 20.0}}, {"loading": {"support_direction_deg": 0.0}},
                   {"material": {"density_g_per_cm3": 2.0}}, {"imperfections": {"edge_radius_mm": 1.0}}):
         assert match_reference(other, _named("set2", 5.2)) is None
-    assert match_reference({"loading": {"max_settlement_mm": 120.0}}, _named("set2")) == "set2"
+    assert match_reference({"loading": {"max_support_displacement_mm": 120.0}}, _named("set2")) == "set2"
 
 
 def test_a_path_that_is_not_a_run_folder_is_a_one_line_error(tmp_path):

@@ -20,7 +20,7 @@ from yadearch.analysis.blocks import case_geometry
 from yadearch.cli.commands import main
 from yadearch.errors import RunFolderError, YadearchError
 from yadearch.plotting import animation
-from yadearch.results.states import COLLAPSE_STAGE
+from yadearch.solve.stages import Stage
 
 COARSE = {"geometry.n_voussoirs": 15, "numerics.engine": "static"}
 VOLUME_TOLERANCE = 1e-9  # relative: the blocks move as rigid bodies
@@ -40,7 +40,7 @@ def test_every_state_of_the_path_is_kept_with_its_block_poses(run):
     states = run.states
     n_joints = len(case_geometry(run.folder.case).joints)
     assert len(states) * n_joints == len(run.joints) and states.pos_m.shape == (len(states), 17, 2)
-    assert states.stage[0] == "selfweight" and states.stage[-1] == COLLAPSE_STAGE
+    assert states.stage[0] == "selfweight" and states.stage[-1] == Stage.COLLAPSE
     path = states.path()
     assert (np.diff(states.delta_mm[path]) > 0).all()
     support = states.pos_m[:, -1] - states.pos_m[0, -1]

@@ -10,7 +10,7 @@ import pytest
 from conftest import REPO
 
 from yadearch.errors import RunFolderError
-from yadearch.results.summary import DEM, STATIC, HingeRef, RunSummary
+from yadearch.results.summary import DEM, RENAMED_KEYS, STATIC, HingeRef, RunSummary
 
 MARKERS = ("schema_version", "complete")  # written by the run folder, not part of the summary
 RETIRED = ("holds", "trigger_delta_mm")  # keys of early DEM runs that no reader uses any more
@@ -30,7 +30,7 @@ def test_every_committed_summary_reads_back_as_it_was_written():
         written = json.loads((REPO / path).read_text())
         summary = RunSummary.from_json(written)
         engines.add(summary.engine)
-        expected = {k: v for k, v in written.items() if k not in MARKERS + RETIRED
+        expected = {RENAMED_KEYS.get(k, k): v for k, v in written.items() if k not in MARKERS + RETIRED
                     and not (v is None and k == "collapse_verdict")}
         expected.setdefault("engine", DEM)  # runs from before the static engine are DEM runs
         if isinstance(expected.get("loading"), dict):

@@ -11,7 +11,7 @@ from conftest import REPO
 from yadearch.case.config import load_case, preset
 from yadearch.solve.limit import limit_analysis
 
-COARSE_45 = {"n_voussoirs": 15, "settlement_direction_deg": -45.0}
+COARSE_45 = {"n_voussoirs": 15, "support_direction_deg": -45.0}
 DEM_RUN = REPO / "reports/movements/validation-fine/paper_inclined45_kn3000_inc0.5"  # 0.5 mm increments
 DEM_TOLERANCE = 0.01  # the march against a DEM run of the same stiffness (measured: 0.1-0.6 %)
 
@@ -39,7 +39,7 @@ def test_the_march_collapses_where_the_dem_run_of_the_same_stiffness_does():
     increments, committed under reports/) collapses at 37.97 mm on 8I 28E 46I, 7 % short of the rigid
     40.82 mm; the compliant march moves its hinges as that run does and collapses within 1 %."""
     summary = json.loads((DEM_RUN / "summary.json").read_text())
-    overrides = {"settlement_direction_deg": -45.0,
+    overrides = {"support_direction_deg": -45.0,
                  "kn_N_per_mm3": load_case(DEM_RUN / "case.toml").interface.kn_N_per_mm3}
     result = limit_analysis(preset("set2").with_overrides(overrides), mirror=False, compliant=True)
     assert result.du_rigid_mm == pytest.approx(summary["du_mm"], rel=DEM_TOLERANCE)

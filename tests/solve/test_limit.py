@@ -106,8 +106,8 @@ def test_semicircle_spreading_hinges_where_the_minimum_thrust_line_touches(t_ove
     radius, n = 1000.0, 360
     t = t_over_r * radius
     case = arch_case(n_voussoirs=n, embrace_deg=180.0, internal_radius_mm=radius - t / 2, thickness_mm=t,
-                     friction_deg=60.0).replace(settlement_direction_deg=0.0)
-    result = limit_analysis(case, max_settlement_mm=0.5)
+                     friction_deg=60.0).replace(support_direction_deg=0.0)
+    result = limit_analysis(case, max_displacement_mm=0.5)
     first = [h for h in result.hinge_history if h.from_mm == 0.0]
     from_crown = sorted(abs(90.0 - (h.interface - 1) * 180.0 / n) for h in first)
     assert [h.side for h in first] == ["I", "E", "I"]
@@ -161,7 +161,7 @@ def test_linkage_is_closed_exactly_without_drift(paper):
     case, result = paper
     outlines, _, _ = _placed(case, result)
     n = case.geometry.n_voussoirs
-    angle = math.radians(case.loading.settlement_direction_deg)
+    angle = math.radians(case.loading.support_direction_deg)
     assert result.rotation_rad[-1] == 0.0 and result.rotation_rad[0] == 0.0
     assert np.allclose(result.shift_mm[-1], [result.du_rigid_mm * math.cos(angle),
                                              result.du_rigid_mm * math.sin(angle)], rtol=0, atol=1e-9)
@@ -179,7 +179,7 @@ def test_mirrored_support_motion_gives_the_mirrored_collapse(coarse):
     # Raising the right support by d = lowering the left by d, then a rigid translation: the mirror
     # image of the settlement case. Interface k mirrors to n + 2 - k, pivot sides are kept.
     case, down = coarse
-    up = limit_analysis(case.with_overrides({"settlement_direction_deg": 90.0}))
+    up = limit_analysis(case.with_overrides({"support_direction_deg": 90.0}))
     mirror = case.geometry.n_voussoirs + 2
     assert up.du_rigid_mm == pytest.approx(down.du_rigid_mm, abs=2 * TOLERANCE_MM)
     mirrored = sorted(f"{mirror - int(h[:-1])}{h[-1]}" for h in down.collapse_hinges)
@@ -198,8 +198,8 @@ def test_both_supports_spreading_collapse_at_half_the_path_of_one(coarse):
     """Spreading both supports by d each opens the span as one support spreading by 2 d; the arch
     then differs only by a rigid shift, so du halves (to the bisection's width)."""
     case, _ = coarse
-    one = limit_analysis(case.with_overrides({"settlement_direction_deg": 0.0}))
-    both = limit_analysis(case.with_overrides({"settlement_direction_deg": 0.0, "moving_support": "both"}))
+    one = limit_analysis(case.with_overrides({"support_direction_deg": 0.0}))
+    both = limit_analysis(case.with_overrides({"support_direction_deg": 0.0, "moving_support": "both"}))
     assert both.du_rigid_mm == pytest.approx(one.du_rigid_mm / 2, abs=2 * TOLERANCE_MM)
 
 
@@ -240,13 +240,13 @@ def test_an_inclined_movement_solves_both_branches_of_the_keystone_tie(coarse):
     of an odd count is solved both ways (the left support moving the mirrored way is the other
     branch); a level spreading is its own mirror image and is solved once."""
     case, _ = coarse
-    inclined = limit_analysis(case.with_overrides({"settlement_direction_deg": -45.0}))
-    other = limit_analysis(case.with_overrides({"settlement_direction_deg": -45.0, "moving_support": "left"}))
+    inclined = limit_analysis(case.with_overrides({"support_direction_deg": -45.0}))
+    other = limit_analysis(case.with_overrides({"support_direction_deg": -45.0, "moving_support": "left"}))
     assert inclined.mirror_du_rigid_mm == pytest.approx(other.du_rigid_mm, abs=1e-9)
     assert other.mirror_du_rigid_mm == pytest.approx(inclined.du_rigid_mm, abs=1e-9)
     last_interface = case.geometry.n_voussoirs + 1
     assert inclined.mirror_collapse_hinges == tuple(mirror_hinge_labels(other.collapse_hinges, last_interface))
-    assert limit_analysis(case.with_overrides({"settlement_direction_deg": 0.0})).mirror_du_rigid_mm is None
+    assert limit_analysis(case.with_overrides({"support_direction_deg": 0.0})).mirror_du_rigid_mm is None
 
 
 def test_limit_does_not_depend_on_the_step(coarse):
@@ -307,7 +307,7 @@ def test_a_snap_larger_than_allowed_is_the_collapse():
     survived by default; allowing only snaps that move no block more than 1 mm (a DEM's runaway
     distance), the march ends at the first larger one, where the full analysis records it; the
     settlement, whose only snap moves blocks 0.11 mm, is the same either way."""
-    case = preset("set2").replace(settlement_direction_deg=0.0)
+    case = preset("set2").replace(support_direction_deg=0.0)
     full = limit_analysis(case)
     capped = limit_analysis(case, max_snap_mm=1.0)
     first_large = min(h.from_mm for h in full.hinge_history if h.jump_mm > 1.0)

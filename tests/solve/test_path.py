@@ -6,7 +6,8 @@ import math
 
 import pytest
 
-from yadearch.solve.path import RUNAWAY, STABLE, TIMEOUT, PathSettings, follow_path
+from yadearch.solve.path import PathSettings, follow_path
+from yadearch.solve.stages import Verdict
 
 
 class FakeArch:
@@ -15,7 +16,7 @@ class FakeArch:
     `creep_reach` is accepted still creeping, and every move from it fails until it is settled; a
     relaxation judges states up to `du + false_margin` stable, but those beyond du never settle."""
 
-    def __init__(self, du: float, dynamic_reach: float = math.inf, verdict: str = RUNAWAY,
+    def __init__(self, du: float, dynamic_reach: float = math.inf, verdict: str = Verdict.RUNAWAY,
                  creep_reach: float = math.inf, false_margin: float = 0.0, start: float = 0.0):
         self.du, self.dynamic_reach, self.verdict = du, dynamic_reach, verdict
         self.creep_reach, self.false_margin = creep_reach, false_margin
@@ -32,7 +33,7 @@ class FakeArch:
         if not self.stack[-1][1] or target > self.du + self.false_margin \
                 or target - self.accepted > self.dynamic_reach:
             return self.verdict
-        return STABLE
+        return Verdict.STABLE
 
     def accept(self) -> None:
         assert self.reached <= self.du + self.false_margin
@@ -108,10 +109,10 @@ def test_a_state_that_never_comes_to_rest_is_discarded():
 
 
 def test_timeouts_count_as_no_equilibrium_and_say_so():
-    result = follow_path(FakeArch(40.0, verdict=TIMEOUT), SETTINGS)
+    result = follow_path(FakeArch(40.0, verdict=Verdict.TIMEOUT), SETTINGS)
     assert result.lower <= 40.0 < result.upper
-    assert result.upper_verdict == TIMEOUT
-    assert follow_path(FakeArch(40.0), SETTINGS).upper_verdict == RUNAWAY
+    assert result.upper_verdict == Verdict.TIMEOUT
+    assert follow_path(FakeArch(40.0), SETTINGS).upper_verdict == Verdict.RUNAWAY
     assert follow_path(FakeArch(500.0), SETTINGS).upper_verdict is None
 
 

@@ -23,7 +23,8 @@ from yadearch.results.rundir import read_summary
 from yadearch.results.summary import HingeRef
 from yadearch.solve.limit import limit_analysis
 from yadearch.solve.newton import Solver, SolverSettings, largest_move
-from yadearch.solve.path import RUNAWAY, STABLE, path_settings
+from yadearch.solve.path import path_settings
+from yadearch.solve.stages import Verdict
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.statics import StaticArch, static_arch
 from yadearch.statics.simulate import simulate_static
@@ -40,7 +41,7 @@ def _quiet(_line: str) -> None:
 
 def _loading(case) -> StaticLoading:
     arch = static_arch(case)
-    return StaticLoading(arch, path_settings(case.numerics, case.loading.max_settlement_mm),
+    return StaticLoading(arch, path_settings(case.numerics, case.loading.max_support_displacement_mm),
                          units.mm(case.numerics.runaway_mm))
 
 
@@ -225,9 +226,9 @@ def test_block_on_an_incline_slides_at_the_friction_angle(alpha_deg):
     along = np.array([math.cos(alpha), math.sin(alpha)])
     turned = found.u.reshape(-1, 3)[:, 2] / arch.length
     if alpha < FRICTION:
-        assert found.verdict == STABLE and found.stable()
+        assert found.verdict == Verdict.STABLE and found.stable()
     else:
-        assert found.verdict == RUNAWAY
+        assert found.verdict == Verdict.RUNAWAY
     for j, block in enumerate((1, 2)):
         n, t = float(f.normal_force[j]), float(f.shear_force[j])
         turn = 0.5 * float(turned[block])  # the joint's mean direction: half the block's turn (bases fixed)
@@ -270,7 +271,7 @@ def test_static_path_of_the_paper_arch_meets_the_dem(name, tmp_path):
     force of a few 1e-4); every accepted state has a positive definite tangent stiffness."""
     dem = read_summary(REPO / "reports" / name)
     summary = simulate_static(preset(name), tmp_path / name, log=_quiet)
-    assert summary.collapsed and summary.collapse_verdict == RUNAWAY
+    assert summary.collapsed and summary.collapse_verdict == Verdict.RUNAWAY
     assert summary.du_mm == pytest.approx(dem.du_mm, rel=0.01)
     ours, theirs = summary.hinges_at_collapse, dem.hinges_at_collapse
     if name == "set2":
@@ -331,13 +332,13 @@ def test_increments_either_side_of_du_are_stable_then_runaway(set2_path):
     assert path.collapsed and path.upper - path.lower <= units.mm(0.1)
     assert loading.accepted[-1].lam == path.lower
     below = path.lower + 0.25 * (path.upper - path.lower)
-    assert loading.try_increment(below) == STABLE
+    assert loading.try_increment(below) == Verdict.STABLE
     loading.accept()
     reached = loading.accepted[-1]
     assert reached.lam == below and reached.move < 0.01 * MM and reached.min_stiffness > 0.0
     loading.discard()  # the path's states stay as they were
     assert loading.accepted[-1].lam == path.lower
-    assert loading.try_increment(path.upper) == RUNAWAY
+    assert loading.try_increment(path.upper) == Verdict.RUNAWAY
     assert loading.failures[path.upper].moved >= units.mm(1.0)
 
 
@@ -352,9 +353,9 @@ def test_descent_survives_a_kick_but_not_the_state_past_du(set2_path, block):
         kicked = state.u.copy()
         kicked[3 * block + 1] -= 0.05 * MM
         found = loading.solver.descend(kicked, before.u, before.forces.shear_force, runaway=MM)
-        assert found.verdict == STABLE and found.stable()
+        assert found.verdict == Verdict.STABLE and found.stable()
         assert largest_move(found.u, state.u) < 1e-6
     base = loading.accepted[-1]
     past = loading.arch.with_supports(base.u, path.upper)
     found = loading.solver.descend(past, base.u, base.forces.shear_force, runaway=MM)
-    assert found.verdict == RUNAWAY and found.moved >= MM
+    assert found.verdict == Verdict.RUNAWAY and found.moved >= MM

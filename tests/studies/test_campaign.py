@@ -84,7 +84,7 @@ def test_grid_is_the_product_and_names_are_deterministic():
     assert rows[1] == {"kn_N_per_mm3": 0.1, "numerics.damping": 0.2} and len(rows) == 4
     assert [run_tag(r) for r in rows] == ["kn0.1_damping0.1", "kn0.1_damping0.2", "kn1_damping0.1",
                                           "kn1_damping0.2"]
-    long = {"kn_N_per_mm3": 0.1, "settlement_direction_deg": -90.0, "max_settlement_mm": 150.0,
+    long = {"kn_N_per_mm3": 0.1, "support_direction_deg": -90.0, "max_support_displacement_mm": 150.0,
             "hinge_rotation_mrad": 2.0, "first_increment_mm": 2.0}
     assert run_tag(long) == run_tag(dict(long)) and len(run_tag(long)) <= 64
     assert run_tag(long) != run_tag({**long, "first_increment_mm": 1.0})

@@ -22,7 +22,7 @@ from yadearch.studies.campaign import RESULTS_FILE, batch_run
 
 pytestmark = [pytest.mark.yade, needs_yade]
 
-COARSE = ["--preset", "set1", "--set", "n_voussoirs=9", "--set", "settlement_rate_mm_per_s=30",
+COARSE = ["--preset", "set1", "--set", "n_voussoirs=9", "--set", "support_rate_mm_per_s=30",
           "--set", "progress_every_s=1e9"]
 TABLE = "kn_N_per_mm3\n0.1\n0.12\n0.2\n"  # three coarse arches
 COMPARED = ["run", "kn_N_per_mm3", "collapsed", "hinges", "mechanism", "hinge_A", "hinge_B", "hinge_C",

@@ -44,7 +44,7 @@ def test_a_settling_support_carries_the_arch_s_weight_share_along_its_path_at_eq
 
 def _results() -> pd.DataFrame:
     return pd.DataFrame({
-        "settlement_direction_deg": [0.0, -90.0, -180.0], "du_mm": [20.0, 88.0, None],
+        "support_direction_deg": [0.0, -90.0, -180.0], "du_mm": [20.0, 88.0, None],
         "status": ["done", "done", "failed"], "hinges": ["9I 29E 49I", "1E 9I 29E 56E", None],
         "mechanism": ["I-E-I", "E-I-E-E", None], "steps": [1, 2, 3], "wall_s": [1.0, 2.0, 3.0],
         "folder": ["a", "b", "c"]})

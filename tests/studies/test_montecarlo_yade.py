@@ -20,7 +20,7 @@ from yadearch.results.rundir import IMPERFECTIONS_FILE, SUMMARY_FILE
 
 pytestmark = [pytest.mark.yade, needs_yade]
 
-COARSE = ["--preset", "set2", "--set", "n_voussoirs=9", "--set", "settlement_rate_mm_per_s=30",
+COARSE = ["--preset", "set2", "--set", "n_voussoirs=9", "--set", "support_rate_mm_per_s=30",
           "--set", "progress_every_s=1e9"]
 WORN = ["--set", "edge_radius_mm=3", "--set", "edge_radius_sd_mm=0.5"]  # an eighth of the 24 mm thickness
 SAMPLES = 3

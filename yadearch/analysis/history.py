@@ -12,7 +12,7 @@ import numpy as np
 import pandas as pd
 
 from yadearch.model.hinges import hinge_rotation
-from yadearch.results.states import EQUILIBRIUM_STAGE, PATH_STAGES
+from yadearch.solve.stages import PATH_STAGES, Stage
 
 
 @dataclass(frozen=True)
@@ -52,8 +52,8 @@ def path_records(joints: pd.DataFrame, du_mm: float | None) -> pd.DataFrame:
     """The rows of joints.csv on the quasi-static path, ordered: self-weight, the loading's
     equilibria (up to du when the arch collapsed), then the final collapse record."""
     rows = joints[joints["stage"].isin(PATH_STAGES)]
-    if du_mm is not None and (rows["stage"] == "collapse").any():
-        rows = rows[(rows["stage"] != EQUILIBRIUM_STAGE) | (rows["delta_mm"] <= du_mm)]
+    if du_mm is not None and (rows["stage"] == Stage.COLLAPSE).any():
+        rows = rows[(rows["stage"] != Stage.EQUILIBRIUM) | (rows["delta_mm"] <= du_mm)]
     order = rows["stage"].map({s: k for k, s in enumerate(PATH_STAGES)})
     return rows.assign(_order=order).sort_values(["_order", "step", "interface"], kind="stable")
 

@@ -10,13 +10,13 @@ import numpy as np
 
 from yadearch.analysis.tracking import HingeTrack, sequence
 from yadearch.results.summary import RunSummary
+from yadearch.solve.stages import Verdict
 
 CAP_TOLERANCE = 0.05  # |shear| >= (1 - this) tan(phi) |normal| counts as at the Coulomb cap
 SLIP_THRESHOLD_MM = 0.2  # tangential slip that is sliding, not elastic shear (ks) deformation
 JUMP_FRACTION = 0.5  # a relaxation moving a block this fraction of its increment...
 JUMP_FLOOR = 0.1  # ...and at least this fraction of runaway_mm is a jump to another state
 NEAR_LIMIT = 0.9  # beyond this fraction of du the path's states move fast (a fold): no jump is judged there
-TIMED_OUT = "timeout"  # summary.json's collapse_verdict when du's upper end only ran out of time
 HINGE_COUNT_NAMES = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
 
 
@@ -69,7 +69,7 @@ def relaxation_jump(summary: RunSummary, fraction: float = JUMP_FRACTION, near_l
 def collapse_by_timeout(summary: RunSummary) -> str | None:
     """A warning when du's upper end had no equilibrium only because the time allowed ran out (no
     block moved the runaway distance): a slow snap, as under heavy damping, reads as collapse."""
-    if summary.collapse_verdict != TIMED_OUT:
+    if summary.collapse_verdict != Verdict.TIMEOUT:
         return None
     return ("du's upper end reached no equilibrium within numerics.hold_max_s but no block ran away: a "
             "slow hinge snap may have been read as collapse; confirm with a larger numerics.hold_max_s")

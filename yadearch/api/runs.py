@@ -29,7 +29,7 @@ def movement(name: str) -> dict:
     """The [loading] parameters of a named support movement, for `case.with_overrides(...)`:
     settlement, spreading, closing, inclined, symmetric_spreading, abutment_tilt, settle_then_spread
     (docs/movements.md)."""
-    from yadearch.case.movement import movement_overrides
+    from yadearch.case.support import movement_overrides
 
     return movement_overrides(name)
 

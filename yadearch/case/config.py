@@ -17,6 +17,7 @@ from typing import Any
 import tomli_w
 
 from yadearch.case.sections import (
+    RENAMED,
     SECTIONS,
     GeometryConfig,
     ImperfectionsConfig,
@@ -45,9 +46,9 @@ class ArchCase:
         return self.interface.kn_N_per_mm3 * self.interface.ks_over_kn
 
     @property
-    def settlement_speed_mm_per_s(self) -> float:
+    def support_speed_mm_per_s(self) -> float:
         """Support speed of the continuous loading and of the du search's moves (mm/s)."""
-        return support_speed(self.numerics.settlement_rate_mm_per_s,
+        return support_speed(self.numerics.support_rate_mm_per_s,
                              self.numerics.rate_reference_kn_N_per_mm3, self.interface.kn_N_per_mm3)
 
     def validate(self) -> ArchCase:
@@ -100,9 +101,11 @@ def _resolve_key(key: str) -> tuple[str | None, str]:
         return None, key
     if "." in key:
         section, name = key.split(".", 1)
+        name = RENAMED.get((section, name), name)
         if section not in SECTIONS or name not in {f.name for f in fields(SECTIONS[section])}:
             raise CaseError(f"unknown parameter {key!r}")
         return section, name
+    key = next((new for (_, old), new in RENAMED.items() if old == key), key)
     owners = [s for s, cls in SECTIONS.items() if key in {f.name for f in fields(cls)}]
     if not owners:
         raise CaseError(f"unknown parameter {key!r}; see `yadearch params` for the list")
@@ -172,7 +175,7 @@ def case_from_dict(data: dict[str, Any]) -> ArchCase:
         if not isinstance(section, dict):
             raise CaseError(f"[{section_name}] must be a table of parameters (key = value lines), "
                             f"got {type(section).__name__} {section!r:.40}")
-        values = dict(section)
+        values = current_names(section_name, section)
         names = {f.name for f in fields(cls)}
         bad = set(values) - names
         if bad:
@@ -185,6 +188,23 @@ def case_from_dict(data: dict[str, Any]) -> ArchCase:
     return ArchCase(**kwargs).validate()
 
 
+def current_names(section_name: str, values: Mapping[str, Any]) -> dict[str, Any]:
+    """A section's parameters with former names (`RENAMED`) replaced by today's; both at once is an error."""
+    current = dict(values)
+    for (section, old), new in RENAMED.items():
+        if section == section_name and old in current:
+            if new in current:
+                raise CaseError(f"[{section}] gives both {old} and {new}, its new name; keep {new}")
+            current[new] = current.pop(old)
+    return current
+
+
+def with_current_names(data: Mapping[str, Any]) -> dict[str, Any]:
+    """A stored case (nested dicts) with every former parameter name replaced by today's."""
+    return {key: current_names(key, value) if key in SECTIONS and isinstance(value, Mapping) else value
+            for key, value in data.items()}
+
+
 def as_ran(data: dict[str, Any]) -> dict[str, Any]:
     """What a stored case.toml (`data`) ran with, comparable across versions: a parameter the run
     predates takes the value that reproduces the behaviour it had ("predates" in its metadata, else
@@ -192,17 +212,17 @@ def as_ran(data: dict[str, Any]) -> dict[str, Any]:
     so that a run whose speed or acceleration they do not change stays comparable."""
     filled: dict[str, Any] = {"name": data.get("name", "custom")}
     for section_name, cls in SECTIONS.items():
-        stored, defaults = data.get(section_name, {}), cls()
+        stored, defaults = current_names(section_name, data.get(section_name, {})), cls()
         filled[section_name] = {
             f.name: stored.get(f.name, f.metadata.get("predates", getattr(defaults, f.name)))
             for f in fields(cls)}
     numerics = filled["numerics"]
-    numerics["settlement_speed_mm_per_s"] = support_speed(
-        numerics["settlement_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"],
+    numerics["support_speed_mm_per_s"] = support_speed(
+        numerics["support_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"],
         filled["interface"]["kn_N_per_mm3"])
-    del numerics["settlement_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"]
+    del numerics["support_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"]
     loading = filled["loading"]  # the acceleration a run used; a turn or a path counted as horizontal
-    share = (abs(math.cos(math.radians(loading["settlement_direction_deg"])))
+    share = (abs(math.cos(math.radians(loading["support_direction_deg"])))
              if loading["support_motion"] == "translation" else 1.0)
     numerics["support_acceleration_mm_per_s2"] = capped_acceleration(
         numerics["support_acceleration_mm_per_s2"], numerics.pop("support_horizontal_acceleration_mm_per_s2"), share)

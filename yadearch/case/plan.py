@@ -12,7 +12,7 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes, arch_imperfections, check_contact_model
 from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep
-from yadearch.case.movement import case_movement, support_acceleration_mm_per_s2
+from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
@@ -98,10 +98,10 @@ def _loading_worst_case_s(case: ArchCase, accel_mm_per_s2: float) -> float:
     num = case.numerics
     largest = max(num.max_increment_mm, num.first_increment_mm)
     growing = math.ceil(math.log(largest / num.first_increment_mm) / math.log(num.increment_growth)) \
-        if num.increment_growth > 1.0 else math.ceil(case.loading.max_settlement_mm / num.first_increment_mm)
-    increments = (growing + math.ceil(case.loading.max_settlement_mm / largest)
+        if num.increment_growth > 1.0 else math.ceil(case.loading.max_support_displacement_mm / num.first_increment_mm)
+    increments = (growing + math.ceil(case.loading.max_support_displacement_mm / largest)
                   + math.ceil(math.log2(largest / num.du_tolerance_mm)) + BISECTIONS_MARGIN)
-    return increments * (_move_s(largest, case.settlement_speed_mm_per_s, accel_mm_per_s2) + num.hold_max_s)
+    return increments * (_move_s(largest, case.support_speed_mm_per_s, accel_mm_per_s2) + num.hold_max_s)
 
 
 def _move_s(distance_mm: float, speed_mm_per_s: float, accel_mm_per_s2: float) -> float:

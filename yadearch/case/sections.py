@@ -85,9 +85,9 @@ class LoadingConfig:
         "motion) or 'both' (mirror-symmetric about the arch's axis)"})
     support_motion: str = field(default="translation", metadata={
         "choices": ("translation", "rotation", "path"), "predates": "translation",
-        "doc": "'translation' along settlement_direction_deg, 'rotation' about the pivot "
+        "doc": "'translation' along support_direction_deg, 'rotation' about the pivot "
         "(rotation_pivot_dx_mm, rotation_pivot_dy_mm) in rotation_sense, or 'path' (path_mm_mrad)"})
-    settlement_direction_deg: float = field(default=-90.0, metadata=_num(-180, 180,
+    support_direction_deg: float = field(default=-90.0, metadata=_num(-180, 180,
                                             doc="direction of the right support's translation from +x "
                                                 "(deg): -90 settlement, 0 spreading, 180 closing; the "
                                                 "left support mirrors it"))
@@ -107,7 +107,7 @@ class LoadingConfig:
         "springing point displacement and rotation (counter-clockwise), each reached in a straight "
         "line from the previous row (the first from rest); du is the distance along it and the run "
         "stops at its end"})
-    max_settlement_mm: float = field(default=150.0, metadata=_num(0, 10_000, low_open=True,
+    max_support_displacement_mm: float = field(default=150.0, metadata=_num(0, 10_000, low_open=True,
                                      doc="stop without collapse beyond this support displacement (mm, "
                                          "along the path)"))
 
@@ -122,11 +122,11 @@ class NumericsConfig:
         "each support increment (the reference, and the only one for dynamics); 'static' = Newton's "
         "method on the same blocks and joint law, each increment solved as a static equilibrium "
         "(docs/theory.md, 'The static engine')"})
-    settlement_rate_mm_per_s: float = field(default=80.0, metadata=_num(0, 1e4, low_open=True,
+    support_rate_mm_per_s: float = field(default=80.0, metadata=_num(0, 1e4, low_open=True,
                                             doc="support speed during continuous loading (mm/s)"))
     rate_reference_kn_N_per_mm3: float = field(default=0.0, metadata={**_num(
         0, 1e5, doc="joints stiffer than this (N/mm^3) load more slowly: the support speed is "
-        "settlement_rate x sqrt(this / kn); 0 = no scaling (the default: loading by equilibrium "
+        "support_rate x sqrt(this / kn); 0 = no scaling (the default: loading by equilibrium "
         "increments makes du independent of the speed, docs/numerics.md)"), "predates": 0.0})
     support_acceleration_mm_per_s2: float = field(default=640.0, metadata={**_num(
         0, 1e5, doc="acceleration and braking of the support at the start and end of each move (mm/s^2); "
@@ -255,4 +255,11 @@ SECTIONS: dict[str, type] = {
     "loading": LoadingConfig,
     "numerics": NumericsConfig,
     "imperfections": ImperfectionsConfig,
+}
+
+# Former parameter names still read from case files, overrides and stored runs: (section, old) -> new.
+RENAMED: dict[tuple[str, str], str] = {
+    ("loading", "settlement_direction_deg"): "support_direction_deg",
+    ("loading", "max_settlement_mm"): "max_support_displacement_mm",
+    ("numerics", "settlement_rate_mm_per_s"): "support_rate_mm_per_s",
 }

@@ -11,7 +11,7 @@ from yadearch.case.sections import GeometryConfig
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, arch_on_intrados, segmental_arch
-from yadearch.model.shapes import (
+from yadearch.model.intrados import (
     MAX_RISE_OVER_SPAN,
     HalfEllipse,
     Intrados,

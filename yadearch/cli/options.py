@@ -8,13 +8,13 @@ from typing import Any
 import click
 
 from yadearch.case.config import ArchCase, load_case, preset
-from yadearch.case.movement import movement_overrides
+from yadearch.case.support import movement_overrides
 from yadearch.studies.grid import parse_scalar
 
 PRESETS = ("set1", "set2")
 ENGINES = ("dem", "static")
 ENGINE_META = "yadearch_engine"  # where --engine leaves its choice for `resolve_case` (click's context)
-MOVEMENT_KEY = "movement"  # --set movement=NAME: a named support movement (case.movement.MOVEMENT_PRESETS)
+MOVEMENT_KEY = "movement"  # --set movement=NAME: a named support movement (case.support.MOVEMENT_PRESETS)
 
 
 def resolve_case(preset_name: str | None, case_file: str | None, kn: float | None,

@@ -7,11 +7,12 @@ from collections.abc import Callable
 from typing import Any, Protocol
 
 from yadearch.case.config import ArchCase, NumericsConfig
-from yadearch.case.movement import path_end_mm
+from yadearch.case.support import path_end_mm
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.model.movement import Movement
-from yadearch.solve.path import RUNAWAY, STABLE, PathResult, PathStep, follow_path, path_settings
+from yadearch.solve.path import PathResult, PathStep, follow_path, path_settings
+from yadearch.solve.stages import Stage, Verdict
 
 SETTLE_TOLERANCE_FACTOR = 0.01  # a settled state's unbalanced force, relative to equilibrium_tolerance
 
@@ -30,7 +31,7 @@ class LiveArch(Protocol):
     """What the path needs of a live DEM scene (engine.runner.Runner): move the support, hold it,
     go back to a kept state, record; `stage` labels the records."""
 
-    stage: str
+    stage: Stage
 
     @property
     def case(self) -> ArchCase: ...
@@ -59,7 +60,7 @@ class LiveArch(Protocol):
     def move_support(self, target: float, speed_fraction: float) -> None: ...
 
     def hold(self, runaway: float | None = None, max_s: float | None = None, from_rest: bool = True,
-             still_speed: float | None = None, tolerance: float | None = None) -> str: ...
+             still_speed: float | None = None, tolerance: float | None = None) -> Verdict: ...
 
 
 class EquilibriumPath:
@@ -80,22 +81,22 @@ class EquilibriumPath:
         self._start = 0.0  # where the last increment started (m)
         self.settings = path_settings(self.num, path_end_mm(arch.case, arch.movement))
 
-    def try_increment(self, target: float) -> str:
+    def try_increment(self, target: float) -> Verdict:
         """From the last accepted equilibrium state, move the support to `target` and relax there
         with the support held: 'stable', 'runaway' or 'timeout' (see `hold`). A failed state is kept
         for `collapse_state`."""
         if not self._at_accepted:
             self.arch.restore(self._accepted[-1])
-        self.arch.stage = "increment"
+        self.arch.stage = Stage.INCREMENT
         self._start = self.arch.delta()
         # every move lasts as long as the largest increment's: the short moves near collapse are
         # gentle, and the arch ends them close to its equilibrium configuration
         fraction = abs(target - self._start) / self.settings.max_increment
         self.arch.move_support(target, min(1.0, fraction))
-        self.arch.stage = "relax"
+        self.arch.stage = Stage.RELAX
         verdict = self.arch.hold()
         self._at_accepted = False
-        if verdict != STABLE:
+        if verdict != Verdict.STABLE:
             self._failures[target] = self.arch.snapshot()
         return verdict
 
@@ -107,7 +108,7 @@ class EquilibriumPath:
         self.relaxations["move_mm"].append(units.to_mm(self.arch.hold_move))
         self._accepted.append(self.arch.snapshot())
         self._at_accepted = True
-        self.arch.stage = "equilibrium"
+        self.arch.stage = Stage.EQUILIBRIUM
         mark, hinges = self.arch.recorder.record_equilibrium()
         self._records.append(mark)
         self.last_equilibrium_hinges = [h.to_json() for h in hinges]
@@ -119,12 +120,12 @@ class EquilibriumPath:
         keep the state reached. False if it runs away: it was not an equilibrium."""
         if not self._at_accepted:
             self.arch.restore(self._accepted[-1])
-        self.arch.stage = "settle"
+        self.arch.stage = Stage.SETTLE
         verdict = self.arch.hold(from_rest=False, still_speed=units.mm(self.num.settle_speed_mm_per_s),
                                  tolerance=SETTLE_TOLERANCE_FACTOR * self.num.equilibrium_tolerance)
         self.arch.log(f"[{self.arch.case.name}] settling the state at {units.to_mm(self.arch.delta()):.3f} mm: "
                       f"{verdict}")
-        if verdict == RUNAWAY:
+        if verdict == Verdict.RUNAWAY:
             self._failures[self.arch.delta()] = self.arch.snapshot()
             self._at_accepted = False
             return False
@@ -152,7 +153,7 @@ class EquilibriumPath:
         """Show the mechanism: continue the failure at du's upper bracket end `upper` until the
         arch has run away (10 runaway distances more, at most `hold_max_s` more), then read its
         hinges."""
-        self.arch.stage = "collapse"
+        self.arch.stage = Stage.COLLAPSE
         self.arch.restore(self._failures[min(self._failures, key=lambda d: abs(d - upper))])
         self.arch.hold(runaway=10.0 * units.mm(self.num.runaway_mm), from_rest=False)
         return self.arch.recorder.record_collapse()

@@ -16,6 +16,7 @@ from yadearch.model.hinges import Hinge
 from yadearch.results.joint_rows import friction_extremes, joint_rows, joint_snapshot, snapshot_entry
 from yadearch.results.rundir import STIFFNESS_COLUMN
 from yadearch.results.states import state_entry
+from yadearch.solve.stages import Stage
 
 DISCARDED_STAGE = "discarded"  # rows of an accepted state that ran away while settling
 RowMark = tuple[int, int, int]  # how many series rows, joints rows and states there were: where a state begins
@@ -41,7 +42,7 @@ class Recorder:
         self.driver = driver
         self.num = numerics
         self.records = Records()
-        self.stage = "selfweight"
+        self.stage = Stage.SELFWEIGHT
         self.friction: dict = {}
         self._last_series_iter = -10**9
 
@@ -120,12 +121,12 @@ class Recorder:
     def discard_since(self, mark: RowMark) -> None:
         """Relabel the equilibrium rows recorded since `mark`: that state turned out not to be one."""
         for row in self.records.series[mark[0]:] + self.records.joints[mark[1]:] + self.records.states[mark[2]:]:
-            if row["stage"] == "equilibrium":
+            if row["stage"] == Stage.EQUILIBRIUM:
                 row["stage"] = DISCARDED_STAGE
 
     def record_collapse(self) -> list[Hinge]:
         """Record the collapse mechanism (every joint, the snapshot, a series row); its hinges."""
-        hinges = self.joints("collapse")
+        hinges = self.joints(Stage.COLLAPSE)
         self.series(force=True)
         return hinges
 

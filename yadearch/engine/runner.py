@@ -17,7 +17,7 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import standing_parameters
-from yadearch.case.movement import case_movement, support_acceleration_mm_per_s2
+from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.engine.driver import SupportDriver
 from yadearch.engine.loading import EquilibriumPath
 from yadearch.engine.recorder import Recorder, Records
@@ -28,7 +28,7 @@ from yadearch.engine.timing import EngineClock
 from yadearch.errors import CANNOT_STAND, RunFailedError
 from yadearch.model import units
 from yadearch.results.summary import HingeRef, RunSummary, collapse_fields
-from yadearch.solve.path import RUNAWAY, STABLE, TIMEOUT
+from yadearch.solve.stages import Stage, Verdict
 
 SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
 CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, equilibrium, records)
@@ -43,7 +43,7 @@ class Runner:
         self.log = log
         self.scene = build_scene(case)
         self.movement = case_movement(case, self.scene.geometry)
-        self.full_speed = units.mm(case.settlement_speed_mm_per_s)
+        self.full_speed = units.mm(case.support_speed_mm_per_s)
         self.driver = SupportDriver(self.scene, self.movement, self.full_speed,
                                     units.mm(support_acceleration_mm_per_s2(case, self.movement)))
         self._install_driver()
@@ -60,12 +60,12 @@ class Runner:
         self.hold_move = 0.0  # the largest block displacement of the last hold (m)
 
     @property
-    def stage(self) -> str:
+    def stage(self) -> Stage:
         """The stage the scene is in; it labels every record."""
         return self.recorder.stage
 
     @stage.setter
-    def stage(self, value: str) -> None:
+    def stage(self, value: Stage) -> None:
         self.recorder.stage = value
 
     @property
@@ -146,7 +146,7 @@ class Runner:
         tolerance, so that the reactions read there are static), and zero du's origin there."""
         from yade import O
 
-        self.stage = "selfweight"
+        self.stage = Stage.SELFWEIGHT
         start = O.iter
         ramp_s = self.num.gravity_ramp_periods * math.pi * O.dt / self.num.timestep_safety
         max_steps = int((self.num.selfweight_max_s + ramp_s) / O.dt)
@@ -178,7 +178,7 @@ class Runner:
                                  f"{self.num.equilibrium_tolerance} or blocks still moving)")
         self.driver.zero_here()
         self.recorder.series(force=True)
-        self.recorder.joints("selfweight")
+        self.recorder.joints(Stage.SELFWEIGHT)
         left, right = self.recorder.reactions()
         crown = self.scene.geometry.crown_voussoir
         info = {
@@ -202,7 +202,7 @@ class Runner:
 
     def hold(self, runaway: float | None = None, max_s: float | None = None,
              from_rest: bool = True, still_speed: float | None = None,
-             tolerance: float | None = None) -> str:
+             tolerance: float | None = None) -> Verdict:
         """Keep the support still, blocks started from rest (or, `from_rest` false, in their motion).
 
         'stable': after `hold_min_s`, unbalanced force below `tolerance` (default
@@ -229,11 +229,11 @@ class Runner:
             self.hold_move = max(self.hold_move, moved)
             self._progress(f"holding: max block move {units.to_mm(moved):.3f} mm")
             if moved > runaway:
-                return RUNAWAY
+                return Verdict.RUNAWAY
             if O.iter - start >= min_steps and self._unbalanced() < tolerance \
                     and self.recorder.voussoir_speeds().max() < still_speed:
-                return STABLE
-        return TIMEOUT
+                return Verdict.STABLE
+        return Verdict.TIMEOUT
 
     def _set_damping(self, damping: float) -> None:
         """Local damping of the integrator: `damping` while the support moves, `hold_damping` while
@@ -284,8 +284,8 @@ class Runner:
                      f"{units.to_mm(path.upper):.2f}, equilibrium at {units.to_mm(path.lower):.2f})")
         else:
             self.log(f"[{self.case.name}] no collapse up to {units.to_mm(loading.settings.max_displacement):g} mm")
-            self.stage = "end"
-            hinges = self.recorder.joints("end")
+            self.stage = Stage.END
+            hinges = self.recorder.joints(Stage.END)
         wall = time.time() - self.wall0
         self._progress("done", force=True)
         return RunSummary(

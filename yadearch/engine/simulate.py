@@ -14,7 +14,7 @@ import time
 from pathlib import Path
 
 from yadearch.case.config import ArchCase, load_case
-from yadearch.case.movement import path_end_mm
+from yadearch.case.support import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.results.provenance import provenance
@@ -46,7 +46,7 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
 
     (out / SCRATCH_RECORD).write_text(f"{scratch_folder()}\n")  # the parent removes it if this process is killed
     log(f"[{case.name}] kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
-        f"support speed={case.settlement_speed_mm_per_s:.4g} mm/s, damping={case.numerics.damping}, "
+        f"support speed={case.support_speed_mm_per_s:.4g} mm/s, damping={case.numerics.damping}, "
         f"contacts={case.numerics.contact_model}")
     origin = provenance(str(yade.config.version))  # now: the code that runs was imported at start
     runner = Runner(case, log=log)
@@ -58,7 +58,7 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
         found, name=case.name, started=started, engine=DEM,
         kn_N_per_mm3=case.interface.kn_N_per_mm3, ks_N_per_mm3=case.ks_N_per_mm3,
         kn_effective_N_per_mm3=runner.scene.stiffness.kn / units.N_PER_MM3,
-        settlement_speed_mm_per_s=case.settlement_speed_mm_per_s, contact_model=case.numerics.contact_model,
+        support_speed_mm_per_s=case.support_speed_mm_per_s, contact_model=case.numerics.contact_model,
         loading=loading_info(case.loading, path_end_mm(case, runner.movement)),
         collapse_criterion=criterion_text(case.numerics),
         imperfections=imperfections.summary() if imperfections is not None else None, **origin)

@@ -2,7 +2,7 @@
 
 Conventions (DESIGN.md §2): arch in the x-y plane, y up, depth along z, symmetric about x = 0; the
 segmental arch has the centre of its intrados circle at the origin, the other shapes
-(`model/shapes.py`) their springing line on y = 0. Voussoirs 1..n and interfaces 1..n+1 are numbered
+(`model/intrados.py`) their springing line on y = 0. Voussoirs 1..n and interfaces 1..n+1 are numbered
 left to right. All lengths here are in metres; the case converts from the user's millimetres.
 """
 
@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from yadearch.model.shapes import Intrados, extrados_end, joint_direction, stations
+from yadearch.model.intrados import Intrados, extrados_end, joint_direction, stations
 
 
 @dataclass(frozen=True)
@@ -121,7 +121,7 @@ def segmental_arch(
 
 def arch_on_intrados(intrados: Intrados, n_voussoirs: int, orientation: str, thickness: float,
                      depth: float, support_length: float) -> ArchGeometry:
-    """An arch of any shape (`model/shapes.py`): voussoirs of equal intrados length whose joints run
+    """An arch of any shape (`model/intrados.py`): voussoirs of equal intrados length whose joints run
     normal to the intrados, vertically or radially across a ring `thickness` thick (normal to the
     intrados), on two support blocks whose faces lie on the springing joints."""
     ends = []

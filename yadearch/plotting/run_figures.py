@@ -20,10 +20,10 @@ from matplotlib.patches import Polygon
 
 from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
-from yadearch.analysis.history import EQUILIBRIUM_STAGE
 from yadearch.atomic import write_atomically
 from yadearch.errors import RunFolderError
 from yadearch.results.rundir import STIFFNESS_COLUMN, RunFolder
+from yadearch.solve.stages import Stage
 
 CM = 1 / 2.54  # inches
 COLUMN_CM = 8.5
@@ -44,7 +44,7 @@ SETTLEMENT_DEG = -90.0  # a support moving straight down settles; any other dire
 
 def delta_label(case: dict) -> str:
     """The x-axis label: "settlement" for a support moving straight down, else "displacement"."""
-    direction = case.get("loading", {}).get("settlement_direction_deg", SETTLEMENT_DEG)
+    direction = case.get("loading", {}).get("support_direction_deg", SETTLEMENT_DEG)
     movement = "settlement" if direction == SETTLEMENT_DEG else f"displacement (at {direction:g}°)"
     return rf"support {movement} $\delta$ (mm)"
 
@@ -81,8 +81,8 @@ def loading_path(series: pd.DataFrame) -> pd.DataFrame:
     """Series rows on the equilibrium path: the end of the self-weight stage, then each accepted
     equilibrium of the loading (monotonic in delta); the moves and relaxations between them, and
     the increments that failed, are left out."""
-    selfweight = series[series["stage"] == "selfweight"].tail(1)
-    equilibria = series[series["stage"] == EQUILIBRIUM_STAGE]
+    selfweight = series[series["stage"] == Stage.SELFWEIGHT].tail(1)
+    equilibria = series[series["stage"] == Stage.EQUILIBRIUM]
     return pd.concat([selfweight, equilibria]).sort_values("delta_mm", kind="stable")
 
 

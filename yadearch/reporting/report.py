@@ -65,7 +65,7 @@ CONTACT_MODEL_NAMES = {"joint": "zero-thickness joint elements", "cgal": "YADE's
 
 
 PAPER_SECTIONS = ("geometry", "material", "loading", "imperfections")  # what makes a run the paper's case
-NOT_PHYSICAL = {"max_settlement_mm"}  # a run's stopping point, not part of the arch or its loading
+NOT_PHYSICAL = {"max_support_displacement_mm"}  # a run's stopping point, not part of the arch or its loading
 
 
 ENGINE_NAMES = {"dem": "the DEM (YADE, explicit dynamics relaxed to equilibrium)",

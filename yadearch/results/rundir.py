@@ -13,7 +13,7 @@ from typing import Any
 import pandas as pd
 
 from yadearch.atomic import write_atomically, write_csv_atomically, write_text_atomically
-from yadearch.case.config import ArchCase, as_ran
+from yadearch.case.config import ArchCase, as_ran, with_current_names
 from yadearch.errors import RunFolderError
 from yadearch.results.states import STATES_FILE, RunStates, read_states, write_states
 from yadearch.results.summary import RunSummary
@@ -170,7 +170,7 @@ def read_run(path: str | Path) -> RunFolder:
     try:
         folder = RunFolder(
             path=path,
-            case=tomllib.loads((path / CASE_FILE).read_text()),
+            case=with_current_names(tomllib.loads((path / CASE_FILE).read_text())),
             series=pd.read_csv(path / SERIES_FILE),
             joints=pd.read_csv(path / JOINTS_FILE),
             snapshots=json.loads((path / SNAPSHOTS_FILE).read_text()),

@@ -12,11 +12,9 @@ import numpy as np
 
 from yadearch.atomic import write_atomically
 from yadearch.errors import RunFolderError
+from yadearch.solve.stages import PATH_STAGES
 
 STATES_FILE = "states.npz"
-COLLAPSE_STAGE = "collapse"
-EQUILIBRIUM_STAGE = "equilibrium"  # the loading's accepted states (joints.csv, series.csv, states.npz)
-PATH_STAGES = ("selfweight", EQUILIBRIUM_STAGE, COLLAPSE_STAGE)  # the quasi-static path, in its order
 
 
 def state_entry(stage: str, step: int, delta_mm: float, pos: np.ndarray, rot: np.ndarray) -> dict[str, Any]:

@@ -19,9 +19,10 @@ DEM, STATIC = "dem", "static"  # the engines that write run folders
 TRANSLATION = "translation"
 # written only when set: engine-specific figures and what older runs lack
 OPTIONAL_KEYS = frozenset({
-    "settlement_speed_mm_per_s", "imperfections", "unused_parameters", "relaxations", "snaps", "descents",
+    "support_speed_mm_per_s", "imperfections", "unused_parameters", "relaxations", "snaps", "descents",
     "collapse_verdict", "du_components_mm", "du_rotation_mrad", "iterations", "joint_evaluations",
     "solver_wall_s", "steps_by_stage", "dt_s", "steps_per_s", "profile", "table_rows"})
+RENAMED_KEYS = {"settlement_speed_mm_per_s": "support_speed_mm_per_s"}  # former key: today's, read alike
 
 
 @dataclass(frozen=True)
@@ -71,7 +72,7 @@ class RunSummary:
     kn_N_per_mm3: float | None = None
     ks_N_per_mm3: float | None = None
     kn_effective_N_per_mm3: float | None = None
-    settlement_speed_mm_per_s: float | None = None
+    support_speed_mm_per_s: float | None = None
     contact_model: str | None = None
     loading: LoadingInfo | None = None
     collapse_criterion: str = ""
@@ -166,6 +167,7 @@ class RunSummary:
         """A summary.json object read back (unknown keys, such as the completeness marker, ignored;
         runs written before a key existed get its default)."""
         known = {f.name for f in dataclasses.fields(cls)}
+        data = {RENAMED_KEYS.get(key, key): value for key, value in data.items()}
         values = {key: value for key, value in data.items() if key in known}
         values["hinges_at_collapse"] = tuple(HingeRef.of(h) for h in data.get("hinges_at_collapse") or [])
         if isinstance(data.get("loading"), dict):
@@ -192,4 +194,4 @@ def collapse_fields(path: PathResult, movement: Movement) -> dict[str, Any]:
 def loading_info(loading: LoadingConfig, max_displacement_mm: float) -> LoadingInfo:
     """The case's loading as the summary records it."""
     return LoadingInfo(moving_support=loading.moving_support, motion=loading.support_motion,
-                       direction_deg=loading.settlement_direction_deg, max_displacement_mm=max_displacement_mm)
+                       direction_deg=loading.support_direction_deg, max_displacement_mm=max_displacement_mm)

@@ -55,7 +55,7 @@ def stands(case: ArchCase) -> bool:
 
 def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
                    tolerance_mm: float = DEFAULT_TOLERANCE_MM,
-                   max_settlement_mm: float | None = None, max_snap_mm: float | None = None,
+                   max_displacement_mm: float | None = None, max_snap_mm: float | None = None,
                    mirror: bool = True, compliant: bool = False) -> LimitResult:
     """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible
     equilibrium, its hinge history and its last admissible state (see the module docstring). A hinge
@@ -65,11 +65,11 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
     (`mirror_du_rigid_mm`; `mirror` false: not): the keystone's two joints tie, and each branch has
     its own limit. `compliant`: the joints beside the hinges fold at the margin the case's kn allows
     (`solve.compliant`), giving the du a DEM run of that stiffness should find instead of the rigid one."""
-    result, arch = _solve(case, step_mm, tolerance_mm, max_settlement_mm, max_snap_mm, compliant)
+    result, arch = _solve(case, step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant)
     if not (mirror and has_other_branch(case)):
         return result
     try:
-        mirrored, _ = _solve(mirror_image(case), step_mm, tolerance_mm, max_settlement_mm, max_snap_mm, compliant)
+        mirrored, _ = _solve(mirror_image(case), step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant)
     except LimitError as exc:
         return replace(result, mirror_collapse_mode=f"failed: {exc}")
     return replace(result, mirror_du_rigid_mm=mirrored.du_rigid_mm, mirror_collapse_mode=mirrored.collapse_mode,
@@ -77,7 +77,7 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
                    wall_s=result.wall_s + mirrored.wall_s)
 
 
-def _solve(case: ArchCase, step_mm: float, tolerance_mm: float, max_settlement_mm: float | None,
+def _solve(case: ArchCase, step_mm: float, tolerance_mm: float, max_displacement_mm: float | None,
            max_snap_mm: float | None, compliant: bool) -> tuple[LimitResult, RigidArch]:
     """`limit_analysis` of `case` as it stands (the keystone's tie broken toward its left joint), and
     the rigid arch it solved."""
@@ -86,7 +86,7 @@ def _solve(case: ArchCase, step_mm: float, tolerance_mm: float, max_settlement_m
     snap_cap = math.inf if max_snap_mm is None else max_snap_mm
     kn = units.stiffness_per_volume(case.interface.kn_N_per_mm3) if compliant else None
     march = March(arch, units.mm(step_mm), units.mm(tolerance_mm), snap_cap, kn)
-    limit = min(units.mm(max_settlement_mm or case.loading.max_settlement_mm), arch.movement.length)
+    limit = min(units.mm(max_displacement_mm or case.loading.max_support_displacement_mm), arch.movement.length)
     last, read_at, mechanism, chain = march.run(limit)
     mode, hinges = "none", tuple(p.label for p in mechanism.pivots)
     new: tuple[str, ...] = ()
@@ -106,7 +106,7 @@ def _solve(case: ArchCase, step_mm: float, tolerance_mm: float, max_settlement_m
         max_friction_use=float(use.max()), max_friction_interface=int(np.argmax(use)) + 1,
         rotation_rad=tuple(float(r) for r in last.rot),
         shift_mm=tuple((units.to_mm(float(x)), units.to_mm(float(y))) for x, y in last.shift),
-        settlement_direction_deg=case.loading.settlement_direction_deg,
+        support_direction_deg=case.loading.support_direction_deg,
         max_snap_mm=None if math.isinf(snap_cap) else snap_cap, snap_collapse_mm=march.snap_collapse_mm,
         step_mm=step_mm,
         tolerance_mm=tolerance_mm, compliant_kn_N_per_mm3=case.interface.kn_N_per_mm3 if compliant else None,

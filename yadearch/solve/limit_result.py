@@ -66,7 +66,7 @@ class LimitResult:
     max_friction_interface: int
     rotation_rad: tuple[float, ...]  # per block (0 = left support) at the last admissible state
     shift_mm: tuple[tuple[float, float], ...]  # per block: X -> R(rotation) X + shift
-    settlement_direction_deg: float
+    support_direction_deg: float
     max_snap_mm: float | None  # a snap moving a block further is the collapse (None: all survived)
     snap_collapse_mm: float | None  # the largest block movement of the snap that was the collapse
     step_mm: float

@@ -18,7 +18,7 @@ import scipy.linalg
 
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent
 from yadearch.solve import banded
-from yadearch.solve.path import RUNAWAY, STABLE, TIMEOUT
+from yadearch.solve.stages import Verdict
 from yadearch.solve.statics import StaticArch
 
 BACKTRACKS = 12  # halvings of a Newton step before it counts as failed
@@ -51,7 +51,7 @@ class Equilibrium:
     stiffness: np.ndarray  # on the free degrees of freedom, in band storage (`solve.banded`)
     residual: float
     iterations: int
-    verdict: str = STABLE
+    verdict: Verdict = Verdict.STABLE
     moved: float = 0.0  # the largest block translation from the start (m)
 
     def stable(self) -> bool:
@@ -92,7 +92,7 @@ class Solver:
         return joints, residual
 
     def result(self, u: np.ndarray, joints: JointTangent, residual: np.ndarray, iterations: int,
-               start: np.ndarray, verdict: str = STABLE) -> Equilibrium:
+               start: np.ndarray, verdict: Verdict = Verdict.STABLE) -> Equilibrium:
         stiffness = self.free_stiffness(joints)
         return Equilibrium(u, joints, stiffness, float(np.abs(residual).max()) / self.scale, iterations,
                            verdict, largest_move(u, start))
@@ -140,8 +140,8 @@ class Solver:
         """Damped Newton steps (K + mu I) d = R from `u0`, a step kept only where it releases energy
         (the work of the residual forces along it, by the trapezoidal rule, is positive; then mu
         falls, else it rises): the arch creeps downhill, as the DEM's hold lets it. Ends in a stable
-        equilibrium (STABLE), or when a block has moved `runaway` (m) from `u0` (RUNAWAY), or when the
-        budget is spent or no step releases energy (TIMEOUT)."""
+        equilibrium (Verdict.STABLE), or when a block has moved `runaway` (m) from `u0` (Verdict.RUNAWAY), or when the
+        budget is spent or no step releases energy (Verdict.TIMEOUT)."""
         budget = iterations or self.settings.descent_iterations
         u = u0.copy()
         joints, residual = self.state(u, u_before, shear_before, gravity)
@@ -174,8 +174,8 @@ class Solver:
             shift = max(shift * SHIFT_FALL, MIN_SHIFT_RATIO * floor)
             u, joints, residual = trial, trial_joints, trial_residual
             if largest_move(u, u0) > runaway:
-                return self.result(u, joints, residual, iteration + 1, u0, RUNAWAY)
-        return self.result(u, joints, residual, budget, u0, TIMEOUT)
+                return self.result(u, joints, residual, iteration + 1, u0, Verdict.RUNAWAY)
+        return self.result(u, joints, residual, budget, u0, Verdict.TIMEOUT)
 
     def initial_shift(self, joints: JointTangent) -> float:
         """The descent's first shift (N/m): the stiffest diagonal term, or a whole joint's normal

@@ -18,21 +18,17 @@ from typing import Protocol
 
 from yadearch.case.config import NumericsConfig
 from yadearch.model import units
-
-STABLE = "stable"
-RUNAWAY = "runaway"
-TIMEOUT = "timeout"
-VERDICTS = (STABLE, RUNAWAY, TIMEOUT)
+from yadearch.solve.stages import Verdict
 
 
 class EquilibriumOracle(Protocol):
     """Moves the support from the last accepted equilibrium state and relaxes the arch there."""
 
-    def try_increment(self, target: float) -> str:
-        """Restore the last accepted state, move the support to `target`, relax: one of VERDICTS."""
+    def try_increment(self, target: float) -> Verdict:
+        """Restore the last accepted state, move the support to `target`, relax: a Verdict."""
 
     def accept(self) -> None:
-        """Make the state the last `try_increment` ended in (a STABLE one) the accepted state."""
+        """Make the state the last `try_increment` ended in (a stable one) the accepted state."""
 
     def settle(self) -> bool:
         """Relax the accepted state further (until it is at rest, or for a bounded time) and keep
@@ -92,13 +88,13 @@ class PathResult:
 
     @property
     def upper_verdict(self) -> str | None:
-        """How the arch failed at `upper`: RUNAWAY (a block moved the runaway distance, or the state
-        ran away while settling) or TIMEOUT (no equilibrium in the time allowed, nothing ran away);
+        """How the arch failed at `upper`: Verdict.RUNAWAY (a block moved the runaway distance, or the state
+        ran away while settling) or Verdict.TIMEOUT (no equilibrium in the time allowed, nothing ran away);
         None without collapse."""
         if not self.collapsed:
             return None
-        failed = (s.verdict for s in reversed(self.steps) if s.target == self.upper and s.verdict != STABLE)
-        return next(failed, RUNAWAY)
+        failed = (s.verdict for s in reversed(self.steps) if s.target == self.upper and s.verdict != Verdict.STABLE)
+        return next(failed, Verdict.RUNAWAY)
 
 
 def path_settings(numerics: NumericsConfig, max_displacement_mm: float) -> PathSettings:
@@ -151,13 +147,13 @@ def follow_path(oracle: EquilibriumOracle, settings: PathSettings,
         else:
             target = min(result.lower + increment, settings.max_displacement)
         verdict = oracle.try_increment(target)
-        if verdict not in VERDICTS:
-            raise ValueError(f"oracle verdict must be one of {VERDICTS}, got {verdict!r}")
+        if verdict not in tuple(Verdict):
+            raise ValueError(f"oracle verdict must be one of {', '.join(Verdict)}, got {verdict!r}")
         step = PathStep(result.lower, target, verdict)
         result.steps.append(step)
         if on_step is not None:
             on_step(step)
-        if verdict == STABLE:
+        if verdict == Verdict.STABLE:
             oracle.accept()
             settled = False
             result.equilibria.append(target)

@@ -39,7 +39,7 @@ def rigid_pose(case: ArchCase, at_mm: float, mirrored: bool = False,
     other support moving the mirrored way) and reflected back; `compliant`: in the compliant-hinge
     march at the case's kn (where the DEM should be)."""
     solved = mirror_image(case) if mirrored else case
-    result = limit_analysis(solved, max_settlement_mm=at_mm, mirror=False, compliant=compliant)
+    result = limit_analysis(solved, max_displacement_mm=at_mm, mirror=False, compliant=compliant)
     turns = np.array(result.rotation_rad)
     placement = Placement(units.mm(at_mm), turns, units.mm(np.array(result.shift_mm)))
     centroids = placement.centroids(rigid_arch(solved))

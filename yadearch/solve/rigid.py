@@ -15,7 +15,7 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import arch_imperfections
 from yadearch.case.mechanics import arch_geometry
-from yadearch.case.movement import case_movement
+from yadearch.case.support import case_movement
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, block_volume
@@ -84,7 +84,7 @@ def rigid_arch(case: ArchCase) -> RigidArch:
     movement = case_movement(case, geometry)
     if movement.moves_rigidly:
         raise LimitError("both supports translate alike (loading.moving_support 'both', "
-                         f"settlement_direction_deg {case.loading.settlement_direction_deg:g}): the arch "
+                         f"support_direction_deg {case.loading.support_direction_deg:g}): the arch "
                          "is carried as one rigid body and cannot collapse")
     return RigidArch(
         geometry=geometry, weight=weight, centroid0=centroid0,

@@ -20,7 +20,8 @@ from yadearch.model.joint_law import JointForces
 from yadearch.solve import banded
 from yadearch.solve.banded import smallest_eigenvalue
 from yadearch.solve.newton import Equilibrium, Solver, SolverSettings
-from yadearch.solve.path import STABLE, PathResult, PathSettings, PathStep, follow_path
+from yadearch.solve.path import PathResult, PathSettings, PathStep, follow_path
+from yadearch.solve.stages import Stage, Verdict
 from yadearch.solve.statics import StaticArch
 
 GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
@@ -79,27 +80,27 @@ class StaticLoading:
             pressed = self.solver.newton(u, start, shear, gravity=k / GRAVITY_STEPS) if k > 1 else None
             found = pressed if pressed is not None and pressed.stable() else \
                 self.solver.descend(u, start, shear, SELFWEIGHT_FALL, gravity=k / GRAVITY_STEPS)
-            if found.verdict != STABLE:
+            if found.verdict != Verdict.STABLE:
                 raise StaticEngineError(
                     f"{CANNOT_STAND} ({found.verdict} at {k}/{GRAVITY_STEPS} "
                     f"of gravity, a block moved {1e3 * found.moved:.1f} mm)")
             u = found.u
-        state = self._state("selfweight", 0.0, found, np.zeros_like(shear), found.joints.forces)
+        state = self._state(Stage.SELFWEIGHT, 0.0, found, np.zeros_like(shear), found.joints.forces)
         self.accepted = [state]
         return state
 
     # ---- the oracle ---------------------------------------------------------------------------
-    def try_increment(self, target: float) -> str:
+    def try_increment(self, target: float) -> Verdict:
         """Solve the arch with the support at `target` from the last accepted state: Newton from the
         predicted state, or, where that fails, a march to `target` in SUBSTEPS steps (`_march`)."""
         base = self.accepted[-1]
         found = self._newton(self.accepted, target)
         if found is None:
             return self._march(target)
-        self._trial = self._state("equilibrium", target, found, base.slip + found.joints.forces.plastic_slip,
+        self._trial = self._state(Stage.EQUILIBRIUM, target, found, base.slip + found.joints.forces.plastic_slip,
                                   found.joints.forces)
         self._trial.move = found.moved
-        return STABLE
+        return Verdict.STABLE
 
     def _newton(self, history: list[StaticState], target: float) -> Equilibrium | None:
         """Newton from the state predicted at `target` through `history`; None unless it ends in a
@@ -110,7 +111,7 @@ class StaticLoading:
             return None
         return found
 
-    def _march(self, target: float) -> str:
+    def _march(self, target: float) -> Verdict:
         """From the last accepted state to `target` in SUBSTEPS equal steps, each solved by Newton or,
         where Newton fails (the path folds: a hinge snaps), by the descent from the state predicted
         there, as the DEM's arch snaps during its move, where the fold is, not at the move's end. A
@@ -126,17 +127,17 @@ class StaticLoading:
                 found = self.solver.descend(self.predict(lam, history), last.u, last.forces.shear_force,
                                             self.runaway)
                 self.descents += 1
-                if found.verdict != STABLE:
+                if found.verdict != Verdict.STABLE:
                     self.failures[target] = found
                     return found.verdict
                 if found.moved > SNAP_FRACTION * self.runaway:
                     self.snaps.append({"delta_mm": 1e3 * lam, "move_mm": 1e3 * found.moved})
             largest, slip = max(largest, found.moved), slip + found.joints.forces.plastic_slip
-            state = self._state("equilibrium", lam, found, slip, found.joints.forces)
+            state = self._state(Stage.EQUILIBRIUM, lam, found, slip, found.joints.forces)
             history = [state] if jumped else (history + [state])[-PREDICTOR_POINTS:]
         self._trial = state
         self._trial.move = largest
-        return STABLE
+        return Verdict.STABLE
 
     @property
     def iterations(self) -> int:
@@ -190,8 +191,8 @@ class StaticLoading:
         base = self.accepted[-1]
         shear = base.forces.shear_force
         carried = self.solver.descend(failure.u, base.u, shear, COLLAPSE_RUNAWAYS * self.runaway)
-        end = carried if carried.verdict != STABLE else failure
-        return self._state("collapse", lam, end, base.slip + end.joints.forces.plastic_slip,
+        end = carried if carried.verdict != Verdict.STABLE else failure
+        return self._state(Stage.COLLAPSE, lam, end, base.slip + end.joints.forces.plastic_slip,
                            end.joints.forces)
 
     def _state(self, stage: str, lam: float, found: Equilibrium, slip: np.ndarray,

@@ -15,7 +15,7 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import ArchImperfections, arch_imperfections
 from yadearch.case.mechanics import arch_geometry, contact_stiffness
-from yadearch.case.movement import case_movement
+from yadearch.case.support import case_movement
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, block_volume
 from yadearch.model.joint_law import JointLaw, JointTable, joint_table

@@ -14,12 +14,13 @@ from yadearch.model.joint_law import unbalanced_force
 from yadearch.results.joint_rows import friction_extremes, joint_rows, joint_snapshot, snapshot_entry
 from yadearch.results.rundir import STIFFNESS_COLUMN
 from yadearch.results.states import state_entry
+from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import StaticState
 from yadearch.solve.statics import StaticArch
 
 # numerics of the DEM that a static run does not use: time stepping, damping, holds, the support's speed
 DEM_ONLY_NUMERICS = (
-    "settlement_rate_mm_per_s", "rate_reference_kn_N_per_mm3", "support_acceleration_mm_per_s2",
+    "support_rate_mm_per_s", "rate_reference_kn_N_per_mm3", "support_acceleration_mm_per_s2",
     "support_horizontal_acceleration_mm_per_s2", "damping", "hold_damping", "timestep_safety", "threads",
     "contact_model", "equilibrium_tolerance", "gravity_ramp_periods", "selfweight_max_s", "hold_max_s",
     "hold_min_s", "still_speed_mm_per_s", "settle_speed_mm_per_s", "series_every_steps", "max_steps")
@@ -53,7 +54,7 @@ class StaticRecords:
         self.states.append(state_entry(state.stage, self.iterations, delta_mm, pos, rot))
         if label:
             self.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, self.iterations)
-        if state.stage == "equilibrium":
+        if state.stage == Stage.EQUILIBRIUM:
             friction_extremes(self.friction, snap, delta_mm)
         return hinges
 

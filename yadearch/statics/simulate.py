@@ -11,13 +11,14 @@ from typing import Any
 
 from yadearch.case.config import ArchCase, load_case
 from yadearch.case.mechanics import standing_parameters
-from yadearch.case.movement import path_end_mm
+from yadearch.case.support import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.results.provenance import provenance
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 from yadearch.results.summary import STATIC, HingeRef, RunSummary, collapse_fields, loading_info
 from yadearch.solve.path import PathStep, path_settings
+from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import StaticEngineError, StaticLoading
 from yadearch.solve.statics import static_arch
 from yadearch.statics.records import DEM_ONLY_NUMERICS, StaticRecords
@@ -64,7 +65,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
     for state in loading.accepted[1:]:
         last_hinges = records.add(state)
     hinges_last = last_hinges if len(loading.accepted) > 1 else []
-    hinges = records.add(loading.collapse_state(path.upper), label="collapse") if path.collapsed else hinges_last
+    hinges = records.add(loading.collapse_state(path.upper), label=Stage.COLLAPSE) if path.collapsed else hinges_last
     summary = RunSummary(
         name=case.name, started=started, engine=STATIC, kn_N_per_mm3=case.interface.kn_N_per_mm3,
         ks_N_per_mm3=case.ks_N_per_mm3, kn_effective_N_per_mm3=arch.law.kn / units.N_PER_MM3,
@@ -97,7 +98,7 @@ def _selfweight(case: ArchCase, loading: StaticLoading, records: StaticRecords,
         state = loading.selfweight()
     except StaticEngineError as exc:
         raise YadearchError(f"{exc} ({standing_parameters(case)})") from None
-    records.add(state, label="selfweight")
+    records.add(state, label=Stage.SELFWEIGHT)
     row = records.series[-1]
     weight = float(loading.arch.weight[1:-1].sum())
     info = {"steps": loading.iterations, "unbalanced": row["unbalanced"], "arch_weight_N": weight,

@@ -26,7 +26,7 @@ from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool
 from yadearch.studies.grid import round_sig, run_tag
 
-MAX_TARGET_DU_MM = 10_000.0  # the largest support displacement a case accepts (loading.max_settlement_mm)
+MAX_TARGET_DU_MM = 10_000.0  # the largest support displacement a case accepts (loading.max_support_displacement_mm)
 
 
 @dataclass

@@ -136,8 +136,8 @@ Task = Callable[[ArchCase, Path, float | None], dict[str, Any]]
 def expected_cost(case: ArchCase) -> float:
     """A run's CPU cost relative to other runs, to start the longest first: its loading takes
     max settlement / (support speed x time step) steps, and the time step falls as 1/sqrt(kn)."""
-    return math.sqrt(case.interface.kn_N_per_mm3) * case.loading.max_settlement_mm \
-        / case.settlement_speed_mm_per_s
+    return math.sqrt(case.interface.kn_N_per_mm3) * case.loading.max_support_displacement_mm \
+        / case.support_speed_mm_per_s
 
 
 def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Pool,
@@ -261,7 +261,7 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
 
 def _path_end_mm(summary: RunSummary, case: ArchCase) -> float:
     """Where a run that did not collapse stopped: its path's end, or the case's largest displacement."""
-    return summary.loading.max_displacement_mm if summary.loading else case.loading.max_settlement_mm
+    return summary.loading.max_displacement_mm if summary.loading else case.loading.max_support_displacement_mm
 
 
 def results_table(specs: list[RunSpec], out: Path) -> pd.DataFrame:

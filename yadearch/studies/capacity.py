@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from yadearch.results.states import EQUILIBRIUM_STAGE
+from yadearch.solve.stages import Stage
 
 DIRECTION_STEP_DEG = 15
 MAX_STEP_DEG = 90  # coarser than this a map would not show the half-plane
@@ -26,7 +26,7 @@ def directions(step_deg: float = DIRECTION_STEP_DEG) -> tuple[float, ...]:
 
 
 DIRECTIONS_DEG = directions()
-DIRECTION_PARAMETER = "settlement_direction_deg"
+DIRECTION_PARAMETER = "support_direction_deg"
 MAP_COLUMNS = ("set", "direction_deg", "du_mm", "du_x_mm", "du_y_mm", "hinges", "mechanism",
                "du_rigid_mm", "rigid_hinges", "du_over_rigid", "du_rigid_other_mm", "rigid_other_hinges",
                "steps", "wall_s", "status", "folder")
@@ -85,7 +85,7 @@ def reaction_curve(series: pd.DataFrame, direction_deg: float) -> pd.DataFrame:
     of a run's `series` (series.csv): columns delta_mm and force_N = -(R . d) for the support's
     reaction R on the arch, positive when the arch pushes the support along its movement (a
     settling or spreading support holds the arch back), negative when it resists (closing)."""
-    states = series[series["stage"] == EQUILIBRIUM_STAGE]
+    states = series[series["stage"] == Stage.EQUILIBRIUM]
     angle = math.radians(direction_deg)
     reaction = -(states["right_Rx_N"] * math.cos(angle) + states["right_Ry_N"] * math.sin(angle))
     return pd.DataFrame({"delta_mm": states["delta_mm"].to_numpy(), "force_N": reaction.to_numpy()})

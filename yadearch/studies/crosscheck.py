@@ -95,7 +95,7 @@ def comparison_row(pair: Pair, static_run: RunSummary | str) -> dict[str, Any]:
     snaps = static.snaps or []
     return {
         "group": pair.group, "run": pair.name, "kn_N_per_mm3": num.interface.kn_N_per_mm3,
-        "direction_deg": num.loading.settlement_direction_deg, "seed": num.imperfections.seed,
+        "direction_deg": num.loading.support_direction_deg, "seed": num.imperfections.seed,
         "dem_du_mm": dem_du, "static_du_mm": static_du, "difference_pct": diff,
         "within_1pct": bool(abs(diff) <= AGREEMENT_PCT) if math.isfinite(diff) else both_failed,
         "dem_hinges": dem_hinges, "static_hinges": static_hinges,

@@ -20,7 +20,7 @@ import pandas as pd
 
 from yadearch.analysis.samples import collapse_displacement, du_statistics, hinge_frequencies
 from yadearch.studies.grid import RUN_COLUMN, round_sig
-from yadearch.studies.imperfection_study import amplitude_for, paired_amplitude_interval
+from yadearch.studies.imperfection_matching import amplitude_for, paired_amplitude_interval
 from yadearch.studies.montecarlo import SEED_KEY
 
 FIRST_SEED = 1

@@ -18,7 +18,7 @@ from yadearch.results.rundir import read_summary
 from yadearch.results.summary import RunSummary
 from yadearch.studies.campaign import label_hinges
 from yadearch.studies.executors import open_pool
-from yadearch.studies.imperfection_study import (
+from yadearch.studies.imperfection_matching import (
     STAYED,
     TOWARD_CROWN,
     TOWARD_SPRINGING,

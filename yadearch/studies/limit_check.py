@@ -38,7 +38,7 @@ def check(folder: Path, tolerance: float) -> tuple[str, bool]:
                                max_snap_mm=case.numerics.runaway_mm, mirror=False, compliant=True)
     du, du_rigid = summary.du_mm, limit.du_rigid_mm
     loading = case.loading
-    movement = f"{loading.settlement_direction_deg:g}" if loading.support_motion == "translation" \
+    movement = f"{loading.support_direction_deg:g}" if loading.support_motion == "translation" \
         else loading.support_motion
     head = (f"| {folder.name} | {movement} | {case.interface.kn_N_per_mm3:g} | {name} "
             f"| {_mm(du)} | {_mm(survived.du_rigid_mm)} | {_mm(du_rigid)}")

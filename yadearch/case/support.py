@@ -17,7 +17,7 @@ def case_movement(case: ArchCase, geometry: ArchGeometry) -> Movement:
     path = np.array([[units.mm(dx), units.mm(dy), units.mrad(turn)] for dx, dy, turn in loading.path_mm_mrad])
     try:
         return support_movement(geometry, loading.moving_support, loading.support_motion,
-                                loading.settlement_direction_deg,
+                                loading.support_direction_deg,
                                 (units.mm(loading.rotation_pivot_dx_mm), units.mm(loading.rotation_pivot_dy_mm)),
                                 loading.rotation_sense, path.reshape(-1, 3))
     except ValueError as exc:
@@ -28,9 +28,9 @@ def case_movement(case: ArchCase, geometry: ArchGeometry) -> Movement:
 
 
 def path_end_mm(case: ArchCase, movement: Movement) -> float:
-    """Where a run stops without collapse (mm along the path): max_settlement_mm, or the end of a
+    """Where a run stops without collapse (mm along the path): max_support_displacement_mm, or the end of a
     shorter prescribed path."""
-    return min(case.loading.max_settlement_mm, units.to_mm(movement.length))
+    return min(case.loading.max_support_displacement_mm, units.to_mm(movement.length))
 
 
 def support_acceleration_mm_per_s2(case: ArchCase, movement: Movement) -> float:
@@ -45,7 +45,7 @@ def support_acceleration_mm_per_s2(case: ArchCase, movement: Movement) -> float:
 def _loading(moving_support: str, motion: str, direction_deg: float = -90.0, pivot_dy_mm: float = 0.0,
              path: list[list[float]] | None = None) -> dict:
     return {"loading.moving_support": moving_support, "loading.support_motion": motion,
-            "loading.settlement_direction_deg": direction_deg, "loading.rotation_pivot_dx_mm": 0.0,
+            "loading.support_direction_deg": direction_deg, "loading.rotation_pivot_dx_mm": 0.0,
             "loading.rotation_pivot_dy_mm": pivot_dy_mm, "loading.rotation_sense": "clockwise",
             "loading.path_mm_mrad": path or []}
 

@@ -24,7 +24,7 @@ from yadearch.case.shape import INTRADOS
 from yadearch.cli.commands import main
 from yadearch.errors import CaseError
 from yadearch.model.geometry import arch_on_intrados, block_volume, segmental_arch
-from yadearch.model.shapes import ORIENTATIONS, circular, three_centred
+from yadearch.model.intrados import ORIENTATIONS, circular, three_centred
 from yadearch.solve.limit import limit_analysis, stands
 
 REFERENCE = DATA / "paper_arch.npz"
