@@ -83,8 +83,11 @@ def sweep_status(folder: Path) -> dict:
     from yadearch.studies.campaign import RESULTS_FILE
 
     table = pd.read_csv(folder / RESULTS_FILE)
-    return {"done": int((table["status"] == "done").sum()), "failed": int((table["status"] == "failed").sum()),
-            "run_wall_s": float(table["wall_s"].sum())}
+    return {
+        "done": int((table["status"] == "done").sum()),
+        "failed": int((table["status"] == "failed").sum()),
+        "run_wall_s": float(table["wall_s"].sum()),
+    }
 
 
 def loading_measurement(settle_mm: float, set2_steps: int, contact_model: str) -> dict:
@@ -108,9 +111,14 @@ def loading_measurement(settle_mm: float, set2_steps: int, contact_model: str) -
     from yade import O
 
     # no acceleration ramp: the bare run moves the support at constant speed, so the runner must too
-    case = preset("set2").with_overrides({"progress_every_s": 1e9, "max_support_displacement_mm": settle_mm,
-                                          "support_acceleration_mm_per_s2": 0.0,
-                                          "contact_model": contact_model})
+    case = preset("set2").with_overrides(
+        {
+            "progress_every_s": 1e9,
+            "max_support_displacement_mm": settle_mm,
+            "support_acceleration_mm_per_s2": 0.0,
+            "contact_model": contact_model,
+        }
+    )
     runner = Runner(case, log=lambda text: None)
     runner.selfweight()
     settled = runner.snapshot()
@@ -132,15 +140,25 @@ def loading_measurement(settle_mm: float, set2_steps: int, contact_model: str) -
     O.run(steps, True)
     bare_s, contact_s = time.time() - begin, contact_engine.execTime * 1e-9
     rate = steps / runner_s
-    result = {"contact_model": contact_model, "settle_mm": settle_mm, "steps": steps, "runner_s": runner_s,
-              "bare_scene_s": bare_s, "bare_contact_python_engine_s": contact_s,
-              "driver_overhead_ratio": runner_s / bare_s, "steps_per_s": rate,
-              "set2_wall_estimate_s": set2_steps / rate, "load_average": os.getloadavg()[0]}
-    print(f"[{contact_model}] loading {settle_mm:g} mm of set 2 ({steps} steps): runner {runner_s:.1f} s, "
-          f"bare O.run of the same scene {bare_s:.1f} s (ratio {result['driver_overhead_ratio']:.3f}), of "
-          f"which the contact model's Python engine {contact_s:.1f} s; {rate:.0f} steps/s (load average "
-          f"{result['load_average']:.2f}): set 2's {set2_steps} steps would take "
-          f"{result['set2_wall_estimate_s']:.0f} s")
+    result = {
+        "contact_model": contact_model,
+        "settle_mm": settle_mm,
+        "steps": steps,
+        "runner_s": runner_s,
+        "bare_scene_s": bare_s,
+        "bare_contact_python_engine_s": contact_s,
+        "driver_overhead_ratio": runner_s / bare_s,
+        "steps_per_s": rate,
+        "set2_wall_estimate_s": set2_steps / rate,
+        "load_average": os.getloadavg()[0],
+    }
+    print(
+        f"[{contact_model}] loading {settle_mm:g} mm of set 2 ({steps} steps): runner {runner_s:.1f} s, "
+        f"bare O.run of the same scene {bare_s:.1f} s (ratio {result['driver_overhead_ratio']:.3f}), of "
+        f"which the contact model's Python engine {contact_s:.1f} s; {rate:.0f} steps/s (load average "
+        f"{result['load_average']:.2f}): set 2's {set2_steps} steps would take "
+        f"{result['set2_wall_estimate_s']:.0f} s"
+    )
     return result
 
 
@@ -169,12 +187,15 @@ def step_breakdown(steps: int) -> dict:
     Runs in a child process: it resets YADE's scene."""
     import subprocess
 
-    out = subprocess.run([sys.executable, __file__, "--breakdown-child", str(steps)], check=True,
-                         capture_output=True, text=True).stdout
+    out = subprocess.run(
+        [sys.executable, __file__, "--breakdown-child", str(steps)], check=True, capture_output=True, text=True
+    ).stdout
     result = json.loads(out.strip().splitlines()[-1])
     parts = ", ".join(f"{k} {v:.1f}" for k, v in result["step_breakdown_us"].items())
-    print(f"a step of the set 2 scene: {result['step_us']:.1f} us ({parts}); whole / bare integrator "
-          f"= {result['integrator_ratio']:.1f}")
+    print(
+        f"a step of the set 2 scene: {result['step_us']:.1f} us ({parts}); whole / bare integrator "
+        f"= {result['integrator_ratio']:.1f}"
+    )
     return result
 
 
@@ -207,6 +228,7 @@ def _breakdown_child(steps: int) -> dict:
     reads_us = per_step_us(contacts.read_poses)
     law_us = per_step_us(lambda: contacts.forces(rows))
     apply_us = per_step_us(lambda: contacts.apply(forces))
+
     def bare_step_us(*extra) -> float:
         O.engines = [ForceResetter(), *extra, NewtonIntegrator(damping=0.2, gravity=(0.0, -9.81, 0.0))]
         start = time.perf_counter()
@@ -217,10 +239,19 @@ def _breakdown_child(steps: int) -> dict:
     __main__._benchmark_noop = lambda: None
     call_us = bare_step_us(PyRunner(command="_benchmark_noop()", iterPeriod=1)) - bare_us
     rest = step_us - bare_us - reads_us - law_us - apply_us - call_us
-    return {"steps": steps, "step_us": step_us, "integrator_ratio": step_us / bare_us,
-            "step_breakdown_us": {"yade_integrator": bare_us, "state_reads": reads_us, "joint_law": law_us,
-                                  "force_application": apply_us, "python_engine_call": call_us,
-                                  "driver_and_rest": rest}}
+    return {
+        "steps": steps,
+        "step_us": step_us,
+        "integrator_ratio": step_us / bare_us,
+        "step_breakdown_us": {
+            "yade_integrator": bare_us,
+            "state_reads": reads_us,
+            "joint_law": law_us,
+            "force_application": apply_us,
+            "python_engine_call": call_us,
+            "driver_and_rest": rest,
+        },
+    }
 
 
 def threads_measurement(steps: int) -> dict:
@@ -233,14 +264,24 @@ def threads_measurement(steps: int) -> dict:
     for model in ("joint", "cgal"):
         rates = {}
         for threads in (1, 2):
-            out = subprocess.run([sys.executable, __file__, "--scene-rate", str(steps), "--scene-model", model],
-                                 check=True, capture_output=True, text=True,
-                                 env=dict(os.environ, OMP_NUM_THREADS=str(threads))).stdout
+            out = subprocess.run(
+                [sys.executable, __file__, "--scene-rate", str(steps), "--scene-model", model],
+                check=True,
+                capture_output=True,
+                text=True,
+                env=dict(os.environ, OMP_NUM_THREADS=str(threads)),
+            ).stdout
             rates[threads] = float(out.strip().splitlines()[-1])
-        print(f"[{model}] OpenMP threads: 1 thread {rates[1]:.0f} steps/s, 2 threads {rates[2]:.0f} steps/s "
-              f"(x{rates[2] / rates[1]:.2f}) over {steps} steps of the set 2 scene")
-        result[model] = {"steps": steps, "steps_per_s_1_thread": rates[1], "steps_per_s_2_threads": rates[2],
-                         "speedup": rates[2] / rates[1]}
+        print(
+            f"[{model}] OpenMP threads: 1 thread {rates[1]:.0f} steps/s, 2 threads {rates[2]:.0f} steps/s "
+            f"(x{rates[2] / rates[1]:.2f}) over {steps} steps of the set 2 scene"
+        )
+        result[model] = {
+            "steps": steps,
+            "steps_per_s_1_thread": rates[1],
+            "steps_per_s_2_threads": rates[2],
+            "speedup": rates[2] / rates[1],
+        }
     return result
 
 
@@ -272,14 +313,35 @@ def static_measurement(runs: Path, dem_set2: RunSummary, dem_stiff: RunSummary |
     for name, extra in (("set2", []), ("kn100", ["--kn", "100"])):
         folder = runs / name
         start = time.time()
-        subprocess.run([cli, "run", "--preset", "set2", *extra, "--engine", "static", "--out", str(folder),
-                        "--rerun"], check=True, capture_output=True)
+        subprocess.run(
+            [cli, "run", "--preset", "set2", *extra, "--engine", "static", "--out", str(folder), "--rerun"],
+            check=True,
+            capture_output=True,
+        )
         summaries[name], cli_wall[name] = read_summary(folder), time.time() - start
     timings = {}
-    for name, job in (("sweep100", lambda out: ya.sweep(ya.preset("set2"), out=out, jobs=2, engine="static",
-                                                        kn_N_per_mm3=list(np.logspace(np.log10(0.05), 4, 100)))),
-                      ("mc200", lambda out: ya.montecarlo(ya.preset("set2").with_overrides(
-                          {"imperfections.face_bump_sd_mm": 0.18}), out=out, samples=200, jobs=2, engine="static"))):
+    for name, job in (
+        (
+            "sweep100",
+            lambda out: ya.sweep(
+                ya.preset("set2"),
+                out=out,
+                jobs=2,
+                engine="static",
+                kn_N_per_mm3=list(np.logspace(np.log10(0.05), 4, 100)),
+            ),
+        ),
+        (
+            "mc200",
+            lambda out: ya.montecarlo(
+                ya.preset("set2").with_overrides({"imperfections.face_bump_sd_mm": 0.18}),
+                out=out,
+                samples=200,
+                jobs=2,
+                engine="static",
+            ),
+        ),
+    ):
         shutil.rmtree(runs / name, ignore_errors=True)
         start = time.time()
         table = job(runs / name)
@@ -289,25 +351,46 @@ def static_measurement(runs: Path, dem_set2: RunSummary, dem_stiff: RunSummary |
     s2_du, k100_du, dem_du = float(s2.du_mm or 0.0), float(k100.du_mm or 0.0), float(dem_set2.du_mm or math.nan)
     speedup = dem_set2.wall_s / cli_wall["set2"]
     result: dict[str, Any] = {
-        "static_set2_wall_s": cli_wall["set2"], "static_set2_solver_s": s2_solver_s, "static_set2_du_mm": s2_du,
-        "static_kn100_wall_s": k100_solver_s, "static_kn100_cli_wall_s": cli_wall["kn100"],
-        "static_kn100_du_mm": k100_du, "static_sweep100_wall_s": timings["sweep100"][0],
-        "static_mc200_wall_s": timings["mc200"][0], "static_over_dem_speedup": speedup,
-        "static_kn100_over_dem_speedup": dem_stiff.wall_s / cli_wall["kn100"] if dem_stiff else None}
+        "static_set2_wall_s": cli_wall["set2"],
+        "static_set2_solver_s": s2_solver_s,
+        "static_set2_du_mm": s2_du,
+        "static_kn100_wall_s": k100_solver_s,
+        "static_kn100_cli_wall_s": cli_wall["kn100"],
+        "static_kn100_du_mm": k100_du,
+        "static_sweep100_wall_s": timings["sweep100"][0],
+        "static_mc200_wall_s": timings["mc200"][0],
+        "static_over_dem_speedup": speedup,
+        "static_kn100_over_dem_speedup": dem_stiff.wall_s / cli_wall["kn100"] if dem_stiff else None,
+    }
     du_diff = abs(s2_du / dem_du - 1.0)
-    print(f"static engine: set 2 {cli_wall['set2']:.1f} s whole run ({s2_solver_s:.2f} s solver), "
-          f"{speedup:.0f}x faster than the DEM's {dem_set2.wall_s:.0f} s; du {s2_du:.2f} against "
-          f"{dem_du:.2f} mm ({du_diff:.2%})")
+    print(
+        f"static engine: set 2 {cli_wall['set2']:.1f} s whole run ({s2_solver_s:.2f} s solver), "
+        f"{speedup:.0f}x faster than the DEM's {dem_set2.wall_s:.0f} s; du {s2_du:.2f} against "
+        f"{dem_du:.2f} mm ({du_diff:.2%})"
+    )
     result["verdicts"] = [
-        ("static set 2 solver <= 0.5 s, whole run <= 10 s", s2_solver_s <= 0.5 and cli_wall["set2"] <= 10.0,
-         f"{s2_solver_s:.2f} s solver, {cli_wall['set2']:.1f} s whole run"),
+        (
+            "static set 2 solver <= 0.5 s, whole run <= 10 s",
+            s2_solver_s <= 0.5 and cli_wall["set2"] <= 10.0,
+            f"{s2_solver_s:.2f} s solver, {cli_wall['set2']:.1f} s whole run",
+        ),
         ("static set 2 du within 1 % of the DEM's", du_diff <= TARGET_DU_REL, f"{du_diff:.2%}"),
-        ("static kn 100 <= 2 s", k100_solver_s <= 2.0,
-         f"{k100_solver_s:.2f} s solver ({cli_wall['kn100']:.1f} s whole run), du {k100_du:.2f} mm"),
-        ("static 100-point kn sweep 0.05-10000 <= 2 min on 2 cores", timings["sweep100"][0] <= 120.0,
-         f"{timings['sweep100'][0]:.0f} s, {timings['sweep100'][1]} of {timings['sweep100'][2]} done"),
-        ("static 200 Monte Carlo samples <= 3 min on 2 cores", timings["mc200"][0] <= 180.0,
-         f"{timings['mc200'][0]:.0f} s, {timings['mc200'][1]} of {timings['mc200'][2]} done")]
+        (
+            "static kn 100 <= 2 s",
+            k100_solver_s <= 2.0,
+            f"{k100_solver_s:.2f} s solver ({cli_wall['kn100']:.1f} s whole run), du {k100_du:.2f} mm",
+        ),
+        (
+            "static 100-point kn sweep 0.05-10000 <= 2 min on 2 cores",
+            timings["sweep100"][0] <= 120.0,
+            f"{timings['sweep100'][0]:.0f} s, {timings['sweep100'][1]} of {timings['sweep100'][2]} done",
+        ),
+        (
+            "static 200 Monte Carlo samples <= 3 min on 2 cores",
+            timings["mc200"][0] <= 180.0,
+            f"{timings['mc200'][0]:.0f} s, {timings['mc200'][1]} of {timings['mc200'][2]} done",
+        ),
+    ]
     return result
 
 
@@ -315,10 +398,15 @@ def line(name: str, s: RunSummary) -> str:
     """One printed line per run."""
     profile = s.profile or {}
     hinges = s.hinge_labels
-    overhead = f", wall / scene engine time {profile['driver_overhead_ratio']:.3f}" \
-        if profile.get("driver_overhead_ratio") and "scene_engines_s" in profile else ""
-    return (f"{name}: steps {s.steps}, wall {s.wall_s:.0f} s, {s.steps_per_s:.0f} steps/s, "
-            f"du {s.du_mm:.2f} mm, hinges {hinges}{overhead}")
+    overhead = (
+        f", wall / scene engine time {profile['driver_overhead_ratio']:.3f}"
+        if profile.get("driver_overhead_ratio") and "scene_engines_s" in profile
+        else ""
+    )
+    return (
+        f"{name}: steps {s.steps}, wall {s.wall_s:.0f} s, {s.steps_per_s:.0f} steps/s, "
+        f"du {s.du_mm:.2f} mm, hinges {hinges}{overhead}"
+    )
 
 
 def main() -> int:
@@ -329,19 +417,38 @@ def main() -> int:
     parser.add_argument("--set1-run", help="use this complete set 1 run folder instead of running")
     parser.add_argument("--set2-run", help="use this complete set 2 run folder instead of running")
     parser.add_argument("--stiff", action="store_true", help="also run the stiffest sweep case (kn 100)")
-    parser.add_argument("--static", action="store_true", help="also time the static engine (set 2, kn 100, "
-                        "a 100-point kn sweep, 200 Monte Carlo samples) against the DEM runs of this invocation")
-    parser.add_argument("--stiff-run", help="use this stored run folder of a stiff sweep case (e.g. the "
-                        "stiffest that finished) instead of running kn 100")
+    parser.add_argument(
+        "--static",
+        action="store_true",
+        help="also time the static engine (set 2, kn 100, "
+        "a 100-point kn sweep, 200 Monte Carlo samples) against the DEM runs of this invocation",
+    )
+    parser.add_argument(
+        "--stiff-run",
+        help="use this stored run folder of a stiff sweep case (e.g. the "
+        "stiffest that finished) instead of running kn 100",
+    )
     parser.add_argument("--sweep", help="campaign folder of the dense kn sweep (its sessions.json)")
     parser.add_argument("--montecarlo", help="folder of a Monte Carlo campaign (its sessions.json)")
-    parser.add_argument("--measure-mm", type=float, default=0.0,
-                        help="also time this much of set 2's loading here, runner vs bare O.run "
-                        "(the overhead target; run it on a free core)")
-    parser.add_argument("--threads-steps", type=int, default=0,
-                        help="also time this many steps of the set 2 scene with 1 and 2 OpenMP threads")
-    parser.add_argument("--breakdown-steps", type=int, default=3000,
-                        help="steps over which a step's time is split into its parts (0: skip)")
+    parser.add_argument(
+        "--measure-mm",
+        type=float,
+        default=0.0,
+        help="also time this much of set 2's loading here, runner vs bare O.run "
+        "(the overhead target; run it on a free core)",
+    )
+    parser.add_argument(
+        "--threads-steps",
+        type=int,
+        default=0,
+        help="also time this many steps of the set 2 scene with 1 and 2 OpenMP threads",
+    )
+    parser.add_argument(
+        "--breakdown-steps",
+        type=int,
+        default=3000,
+        help="steps over which a step's time is split into its parts (0: skip)",
+    )
     parser.add_argument("--breakdown-child", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--scene-rate", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--scene-model", default="joint", help=argparse.SUPPRESS)
@@ -368,8 +475,11 @@ def main() -> int:
         results[name] = stored(given[name]) if given[name] else timed_run(case, runs / name)
         if results[name] is not None:
             print(line(f"{name} ({results[name].name})", results[name]), flush=True)
-    reference = stored(args.reference) if args.reference else \
-        timed_run(slow_reference(cases["set2"]), runs / "set2_slow_reference")
+    reference = (
+        stored(args.reference)
+        if args.reference
+        else timed_run(slow_reference(cases["set2"]), runs / "set2_slow_reference")
+    )
     if reference is None or results["set2"] is None:
         raise SystemExit("the set 2 run or its slow reference failed: nothing to compare")
     print(line("slow reference", reference))
@@ -379,8 +489,11 @@ def main() -> int:
     rel = abs(du - du_ref) / du_ref if du is not None and du_ref else None
     hinges_match = s2.same_mechanism(reference)
     speedup = reference.wall_s / s2.wall_s
-    measured = {model: loading_measurement(args.measure_mm, s2.steps, model)
-                for model in ("joint", "cgal")} if args.measure_mm else None
+    measured = (
+        {model: loading_measurement(args.measure_mm, s2.steps, model) for model in ("joint", "cgal")}
+        if args.measure_mm
+        else None
+    )
     default_model = s2.contact_model or "joint"
     overhead = measured[default_model]["driver_overhead_ratio"] if measured else None
     model_speedup = measured["joint"]["steps_per_s"] / measured["cgal"]["steps_per_s"] if measured else None
@@ -394,22 +507,33 @@ def main() -> int:
     report = {
         **{f"{n}_{k}": (results[n] or {}).get(k) for n in results for k in ("wall_s", "du_mm", "steps", "steps_per_s")},
         "stiff_name": (results.get("stiff") or {}).get("name"),
-        "set2_du_reference_mm": du_ref, "set2_du_rel_diff": rel, "set2_same_hinges": hinges_match,
-        "set2_reference_wall_s": reference.wall_s, "set2_speedup_vs_reference": speedup,
-        "driver_overhead_ratio": overhead, "loading_measurement": measured, "set2_profile": s2.profile,
+        "set2_du_reference_mm": du_ref,
+        "set2_du_rel_diff": rel,
+        "set2_same_hinges": hinges_match,
+        "set2_reference_wall_s": reference.wall_s,
+        "set2_speedup_vs_reference": speedup,
+        "driver_overhead_ratio": overhead,
+        "loading_measurement": measured,
+        "set2_profile": s2.profile,
         "joint_over_cgal_steps_per_s": model_speedup,
         "threads": threads_measurement(args.threads_steps) if args.threads_steps else None,
-        "sweep_wall_s": sweep_wall, "sweep_folder": args.sweep, "sweep": sweep,
-        "limit_wall_s": limit["wall_s"], "du_rigid_mm": limit["du_rigid_mm"],
+        "sweep_wall_s": sweep_wall,
+        "sweep_folder": args.sweep,
+        "sweep": sweep,
+        "limit_wall_s": limit["wall_s"],
+        "du_rigid_mm": limit["du_rigid_mm"],
         "kn100_wall_s": stiff.wall_s if stiff is not None else None,
         "sweep25_wall_s": sweep_wall if sweep is not None and sweep["done"] >= TARGET_SWEEP_POINTS else None,
         # the samples' own wall times (each run beside another on this 2-core machine) over 2 cores:
         # the campaign's sessions ran with 1 or 2 jobs and some were killed before they recorded
         # themselves, so its session wall time does not say what 200 samples take on 2 cores; a sample
         # that failed (an arch that does not stand) cost its time too
-        "montecarlo200_wall_s": montecarlo["run_wall_s"] / 2 if montecarlo is not None
-        and montecarlo["done"] + montecarlo["failed"] >= TARGET_MONTECARLO_SAMPLES else None,
-        "montecarlo_folder": args.montecarlo, "montecarlo": montecarlo, "montecarlo_wall_s": montecarlo_wall,
+        "montecarlo200_wall_s": montecarlo["run_wall_s"] / 2
+        if montecarlo is not None and montecarlo["done"] + montecarlo["failed"] >= TARGET_MONTECARLO_SAMPLES
+        else None,
+        "montecarlo_folder": args.montecarlo,
+        "montecarlo": montecarlo,
+        "montecarlo_wall_s": montecarlo_wall,
         "montecarlo_core_s": montecarlo_core_s,
         "step_breakdown_us": breakdown["step_breakdown_us"] if breakdown else None,
         "step_us": breakdown["step_us"] if breakdown else None,
@@ -423,48 +547,89 @@ def main() -> int:
     Path(args.out).write_text(json.dumps(report, indent=2) + "\n")
     print(f"set 2: {speedup:.1f}x faster than the slow reference ({reference.wall_s:.0f} s)")
     if model_speedup:
-        print(f"joint elements / CGAL polyhedra, steps/s on the same {args.measure_mm:g} mm of set 2: "
-              f"{model_speedup:.1f}x")
+        print(
+            f"joint elements / CGAL polyhedra, steps/s on the same {args.measure_mm:g} mm of set 2: "
+            f"{model_speedup:.1f}x"
+        )
     verdicts = [
-        (f"set 2 wall <= {TARGET_SET2_WALL_S:g} s", s2.wall_s <= TARGET_SET2_WALL_S,
-         f"{s2.wall_s:.0f} s ({s2.wall_s / TARGET_SET2_WALL_S:.1f}x the target)"),
-        ("set 2 du within 1 % of the slow reference, same hinges",
-         rel is not None and rel <= TARGET_DU_REL and hinges_match,
-         f"{du:.2f} vs {du_ref:.2f} mm ({rel:.2%}), hinges {'same' if hinges_match else 'differ'}"
-         if rel is not None else "no du"),
-        ("driver overhead <= 5 %", overhead is not None and overhead <= TARGET_OVERHEAD,
-         f"runner / bare O.run of the same scene and steps = {overhead:.3f} ({default_model} contacts; "
-         f"CGAL: {measured['cgal']['driver_overhead_ratio']:.3f})" if measured else "not measured (--measure-mm)"),
-        (f"kn 100 <= {TARGET_STIFF_WALL_S:g} s", stiff is not None and stiff.wall_s <= TARGET_STIFF_WALL_S,
-         f"{stiff.wall_s:.0f} s ({stiff.wall_s / TARGET_STIFF_WALL_S:.1f}x the target), du "
-         f"{stiff.du_mm:.2f} mm" if stiff is not None else "not run (--stiff)"),
-        ("rigid limit analysis <= 10 s", limit["wall_s"] <= TARGET_LIMIT_WALL_S,
-         f"{limit['wall_s']:.1f} s ({limit['wall_s'] / TARGET_LIMIT_WALL_S:.2f}x the target), du_rigid "
-         f"{limit['du_rigid_mm']:.2f} mm"),
-        (f"{TARGET_SWEEP_POINTS}-point sweep <= {TARGET_SWEEP_WALL_S / 60:g} min on 2 cores", sweep is not None
-         and sweep_wall is not None and sweep_wall <= TARGET_SWEEP_WALL_S and sweep["failed"] == 0
-         and sweep["done"] >= TARGET_SWEEP_POINTS,
-         f"{sweep_wall / 60:.1f} min in its recorded sessions ({sweep_wall / TARGET_SWEEP_WALL_S:.1f}x the "
-         f"target), {sweep['done']} done, {sweep['failed']} failed; the runs' own wall times add up to "
-         f"{sweep['run_wall_s'] / 60:.1f} min" if sweep is not None and sweep_wall is not None
-         else "no sweep folder given (sweep_wall_s null)"),
+        (
+            f"set 2 wall <= {TARGET_SET2_WALL_S:g} s",
+            s2.wall_s <= TARGET_SET2_WALL_S,
+            f"{s2.wall_s:.0f} s ({s2.wall_s / TARGET_SET2_WALL_S:.1f}x the target)",
+        ),
+        (
+            "set 2 du within 1 % of the slow reference, same hinges",
+            rel is not None and rel <= TARGET_DU_REL and hinges_match,
+            f"{du:.2f} vs {du_ref:.2f} mm ({rel:.2%}), hinges {'same' if hinges_match else 'differ'}"
+            if rel is not None
+            else "no du",
+        ),
+        (
+            "driver overhead <= 5 %",
+            overhead is not None and overhead <= TARGET_OVERHEAD,
+            f"runner / bare O.run of the same scene and steps = {overhead:.3f} ({default_model} contacts; "
+            f"CGAL: {measured['cgal']['driver_overhead_ratio']:.3f})"
+            if measured
+            else "not measured (--measure-mm)",
+        ),
+        (
+            f"kn 100 <= {TARGET_STIFF_WALL_S:g} s",
+            stiff is not None and stiff.wall_s <= TARGET_STIFF_WALL_S,
+            f"{stiff.wall_s:.0f} s ({stiff.wall_s / TARGET_STIFF_WALL_S:.1f}x the target), du {stiff.du_mm:.2f} mm"
+            if stiff is not None
+            else "not run (--stiff)",
+        ),
+        (
+            "rigid limit analysis <= 10 s",
+            limit["wall_s"] <= TARGET_LIMIT_WALL_S,
+            f"{limit['wall_s']:.1f} s ({limit['wall_s'] / TARGET_LIMIT_WALL_S:.2f}x the target), du_rigid "
+            f"{limit['du_rigid_mm']:.2f} mm",
+        ),
+        (
+            f"{TARGET_SWEEP_POINTS}-point sweep <= {TARGET_SWEEP_WALL_S / 60:g} min on 2 cores",
+            sweep is not None
+            and sweep_wall is not None
+            and sweep_wall <= TARGET_SWEEP_WALL_S
+            and sweep["failed"] == 0
+            and sweep["done"] >= TARGET_SWEEP_POINTS,
+            f"{sweep_wall / 60:.1f} min in its recorded sessions ({sweep_wall / TARGET_SWEEP_WALL_S:.1f}x the "
+            f"target), {sweep['done']} done, {sweep['failed']} failed; the runs' own wall times add up to "
+            f"{sweep['run_wall_s'] / 60:.1f} min"
+            if sweep is not None and sweep_wall is not None
+            else "no sweep folder given (sweep_wall_s null)",
+        ),
     ]
-    per_sample_s = montecarlo["run_wall_s"] / max(1, montecarlo["done"] + montecarlo["failed"]) \
-        if montecarlo is not None else float("nan")
-    montecarlo_label = (f"{TARGET_MONTECARLO_SAMPLES} Monte Carlo samples <= "
-                        f"{TARGET_MONTECARLO_WALL_S / 60:g} min on 2 cores")
-    verdicts.append((montecarlo_label,
-                     montecarlo is not None
-                     and montecarlo["done"] + montecarlo["failed"] >= TARGET_MONTECARLO_SAMPLES
-                     and montecarlo["run_wall_s"] / 2 <= TARGET_MONTECARLO_WALL_S,
-                     f"{montecarlo['done']} samples done ({montecarlo['failed']} failed), "
-                     f"{per_sample_s:.0f} s a sample beside another: {TARGET_MONTECARLO_SAMPLES} take about "
-                     f"{per_sample_s * TARGET_MONTECARLO_SAMPLES / 2 / 60:.0f} min on 2 cores"
-                     if montecarlo is not None else "no Monte Carlo folder given (--montecarlo)"))
-    verdicts.append((f"a step <= {TARGET_STEP_US:g} us", breakdown is not None
-                     and breakdown["step_us"] <= TARGET_STEP_US,
-                     f"{breakdown['step_us']:.0f} us, {breakdown['integrator_ratio']:.0f}x YADE's bare "
-                     "integrator on the same scene" if breakdown else "not measured"))
+    per_sample_s = (
+        montecarlo["run_wall_s"] / max(1, montecarlo["done"] + montecarlo["failed"])
+        if montecarlo is not None
+        else float("nan")
+    )
+    montecarlo_label = (
+        f"{TARGET_MONTECARLO_SAMPLES} Monte Carlo samples <= {TARGET_MONTECARLO_WALL_S / 60:g} min on 2 cores"
+    )
+    verdicts.append(
+        (
+            montecarlo_label,
+            montecarlo is not None
+            and montecarlo["done"] + montecarlo["failed"] >= TARGET_MONTECARLO_SAMPLES
+            and montecarlo["run_wall_s"] / 2 <= TARGET_MONTECARLO_WALL_S,
+            f"{montecarlo['done']} samples done ({montecarlo['failed']} failed), "
+            f"{per_sample_s:.0f} s a sample beside another: {TARGET_MONTECARLO_SAMPLES} take about "
+            f"{per_sample_s * TARGET_MONTECARLO_SAMPLES / 2 / 60:.0f} min on 2 cores"
+            if montecarlo is not None
+            else "no Monte Carlo folder given (--montecarlo)",
+        )
+    )
+    verdicts.append(
+        (
+            f"a step <= {TARGET_STEP_US:g} us",
+            breakdown is not None and breakdown["step_us"] <= TARGET_STEP_US,
+            f"{breakdown['step_us']:.0f} us, {breakdown['integrator_ratio']:.0f}x YADE's bare "
+            "integrator on the same scene"
+            if breakdown
+            else "not measured",
+        )
+    )
     verdicts += static["verdicts"] if static is not None else []
     for label, ok, detail in verdicts:
         print(f"{'PASS' if ok else 'FAIL'}  {label}: {detail}")

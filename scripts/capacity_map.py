@@ -28,10 +28,17 @@ def main() -> int:
     parser.add_argument("--out", type=Path, default=Path("reports/movements/capacity"))
     parser.add_argument("--jobs", type=int, default=2, help="runs at once (one core each)")
     parser.add_argument("--report-only", action="store_true", help="write the report from finished runs")
-    parser.add_argument("--engine", choices=("dem", "static"), default="dem",
-                        help="solver of the runs (static: Newton's method, seconds; docs/theory.md)")
-    parser.add_argument("--rigid-only", action="store_true",
-                        help="rewrite the rigid columns of OUT/capacity.csv, the report and the map (no runs needed)")
+    parser.add_argument(
+        "--engine",
+        choices=("dem", "static"),
+        default="dem",
+        help="solver of the runs (static: Newton's method, seconds; docs/theory.md)",
+    )
+    parser.add_argument(
+        "--rigid-only",
+        action="store_true",
+        help="rewrite the rigid columns of OUT/capacity.csv, the report and the map (no runs needed)",
+    )
     args = parser.parse_args()
     rigid = paper_rigid_limits()
     if args.rigid_only:

@@ -39,13 +39,31 @@ def cached_rigid(path: Path) -> dict[float, RigidLimit]:
     if path.is_file():
         table = pd.read_csv(path).fillna({"hinges": "", "other_hinges": ""})
         if set(values) <= set(table["direction_deg"]):
-            return {r.direction_deg: RigidLimit(None if pd.isna(r.du_mm) else r.du_mm, r.hinges,
-                                                None if pd.isna(r.other_du_mm) else r.other_du_mm, r.other_hinges)
-                    for r in table.itertuples()}
+            return {
+                r.direction_deg: RigidLimit(
+                    None if pd.isna(r.du_mm) else r.du_mm,
+                    r.hinges,
+                    None if pd.isna(r.other_du_mm) else r.other_du_mm,
+                    r.other_hinges,
+                )
+                for r in table.itertuples()
+            }
     limits = rigid_limits(preset("set2"), values)
-    write_text_atomically(path, pd.DataFrame([{"direction_deg": d, "du_mm": r.du_mm, "hinges": r.hinges,
-                                               "other_du_mm": r.other_du_mm, "other_hinges": r.other_hinges}
-                                              for d, r in limits.items()]).to_csv(index=False))
+    write_text_atomically(
+        path,
+        pd.DataFrame(
+            [
+                {
+                    "direction_deg": d,
+                    "du_mm": r.du_mm,
+                    "hinges": r.hinges,
+                    "other_du_mm": r.other_du_mm,
+                    "other_hinges": r.other_hinges,
+                }
+                for d, r in limits.items()
+            ]
+        ).to_csv(index=False),
+    )
     return limits
 
 
@@ -61,8 +79,9 @@ def main() -> int:
     with open_pool(args.jobs) as pool:
         for kn in KNS:
             for runaway in RUNAWAYS_MM:
-                case = preset("set2").with_overrides({"kn_N_per_mm3": kn, "runaway_mm": runaway,
-                                                      "numerics.engine": "static"})
+                case = preset("set2").with_overrides(
+                    {"kn_N_per_mm3": kn, "runaway_mm": runaway, "numerics.engine": "static"}
+                )
                 case.name = f"kn {kn:g}, runaway {runaway:g} mm"
                 table = run_capacity(case, args.runs / f"kn{kn:g}_runaway{runaway:g}", pool, STEP_DEG, rigid=rigid)
                 tables.append(table.assign(kn_N_per_mm3=kn, runaway_mm=runaway, label=case.name))

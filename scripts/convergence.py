@@ -30,10 +30,12 @@ def main() -> int:
     parser.add_argument("--preset", default="set2", choices=["set1", "set2"])
     parser.add_argument("--jobs", type=int, default=2, help="runs at once (one core each)")
     parser.add_argument("--out", default="runs/convergence")
-    parser.add_argument("--kn", type=float, default=None,
-                        help="interface kn (N/mm3) instead of the preset's, e.g. a stiff sweep point")
-    parser.add_argument("--damping", type=float, default=None,
-                        help="the other damping (default: the default damping + 0.1)")
+    parser.add_argument(
+        "--kn", type=float, default=None, help="interface kn (N/mm3) instead of the preset's, e.g. a stiff sweep point"
+    )
+    parser.add_argument(
+        "--damping", type=float, default=None, help="the other damping (default: the default damping + 0.1)"
+    )
     args = parser.parse_args()
 
     base = preset(args.preset)
@@ -67,20 +69,26 @@ def main() -> int:
     reference = summaries["default"]
     has_reference = reference.du_mm is not None
     ok = has_reference
-    print(f"{'variant':14s} {'speed mm/s':>9s} {'damping':>7s} {'dt safety':>9s} {'du mm':>8s} {'rel diff':>9s} "
-          f"{'steps':>8s} {'wall s':>7s}  hinges at collapse")
+    print(
+        f"{'variant':14s} {'speed mm/s':>9s} {'damping':>7s} {'dt safety':>9s} {'du mm':>8s} {'rel diff':>9s} "
+        f"{'steps':>8s} {'wall s':>7s}  hinges at collapse"
+    )
     for label, summary in summaries.items():
         case = cases[label]
         du, du_reference = summary.du_mm, reference.du_mm
         rel = (du - du_reference) / du_reference if du is not None and du_reference else float("nan")
         same = summary.same_mechanism(reference)
         ok = ok and du is not None and abs(rel) <= TOLERANCE and same
-        print(f"{label:14s} {case.support_speed_mm_per_s:9.2f} {case.numerics.damping:7.2f} "
-              f"{case.numerics.timestep_safety:9.2f} "
-              f"{du if du is not None else float('nan'):8.2f} {rel:+9.2%} {summary.steps:8d} "
-              f"{summary.wall_s:7.0f}  {summary.hinge_labels}{'' if same else '  (differs)'}")
-    print(f"verdict: {'PASS' if ok else 'FAIL'} (du within {TOLERANCE:.0%} and same hinges: same sides, "
-          f"each peak within the other's spread)")
+        print(
+            f"{label:14s} {case.support_speed_mm_per_s:9.2f} {case.numerics.damping:7.2f} "
+            f"{case.numerics.timestep_safety:9.2f} "
+            f"{du if du is not None else float('nan'):8.2f} {rel:+9.2%} {summary.steps:8d} "
+            f"{summary.wall_s:7.0f}  {summary.hinge_labels}{'' if same else '  (differs)'}"
+        )
+    print(
+        f"verdict: {'PASS' if ok else 'FAIL'} (du within {TOLERANCE:.0%} and same hinges: same sides, "
+        f"each peak within the other's spread)"
+    )
     return 0 if ok else 1
 
 

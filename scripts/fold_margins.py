@@ -66,8 +66,10 @@ def main() -> int:
         parser.error(f"run {args.run}: no joints.csv and case.toml there (a finished `yadearch run` folder)")
     case = load_case(args.run / CASE_FILE)
     arch, kn = rigid_arch(case), units.stiffness_per_volume(case.interface.kn_N_per_mm3)
-    print("| from (mm) | to (mm) | mechanism before | after | joint taking a hinge "
-          "| rigid margin before / after (mm) | fold margin (mm) |")
+    print(
+        "| from (mm) | to (mm) | mechanism before | after | joint taking a hinge "
+        "| rigid margin before / after (mm) | fold margin (mm) |"
+    )
     print("|---|---|---|---|---|---|---|")
     states = mechanisms(args.run, case.numerics.hinge_rotation_mrad, case.geometry.thickness_mm)
     last = next(((d, h) for d, h in states if len(h) == 3), None)
@@ -79,8 +81,10 @@ def main() -> int:
         for joint in sorted(set(hinges) - set(last[1]), key=lambda h: int(h[:-1])):
             before, critical = margin_mm(arch, kn, last[1], last[0], joint)
             after, _ = margin_mm(arch, kn, last[1], delta, joint)
-            print(f"| {last[0]:g} | {delta:g} | {' '.join(last[1])} | {' '.join(hinges)} | {joint} "
-                  f"| {before:.3f} / {after:.3f} | {critical:.3f} |")
+            print(
+                f"| {last[0]:g} | {delta:g} | {' '.join(last[1])} | {' '.join(hinges)} | {joint} "
+                f"| {before:.3f} / {after:.3f} | {critical:.3f} |"
+            )
         if len(hinges) == 3:
             last = (delta, hinges)
     return 0

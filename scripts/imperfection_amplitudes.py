@@ -58,16 +58,18 @@ def static_campaign(kind: Kind, out: Path, samples: int, jobs: int) -> pd.DataFr
     base = preset(BASE_PRESET).with_overrides({"numerics.engine": "static"})
     with open_pool(jobs) as pool:
         # a static run is deterministic: a recorded failure (an arch that cannot stand) is not run again
-        return with_levels(kind, run_campaign(base, kind_rows(kind, samples), out / kind.name / "static", pool,
-                                              retry_failed=False))
+        return with_levels(
+            kind, run_campaign(base, kind_rows(kind, samples), out / kind.name / "static", pool, retry_failed=False)
+        )
 
 
 def dem_campaign(kind: Kind, out: Path, level: float, jobs: int) -> pd.DataFrame:
     """The DEM confirmation of a kind at `level`: the first seeds of the static campaign, on YADE."""
     samples = DEM_SAMPLES.get(kind.name, OTHER_DEM_SAMPLES)
     with open_pool(jobs) as pool:
-        return with_levels(kind, run_campaign(preset(BASE_PRESET), kind_rows(kind, samples, (level,)),
-                                              out / kind.name / "dem", pool))
+        return with_levels(
+            kind, run_campaign(preset(BASE_PRESET), kind_rows(kind, samples, (level,)), out / kind.name / "dem", pool)
+        )
 
 
 def dem_bumps() -> pd.DataFrame:
@@ -86,10 +88,17 @@ def confirmation_row(kind: Kind, static: pd.DataFrame, dem: pd.DataFrame) -> dic
     static_median = du_statistics(both["du_stat_mm_static"])["median"]
     dem_median = du_statistics(both["du_stat_mm_dem"])["median"]
     difference = dem_median / static_median - 1.0 if static_median else math.nan
-    return {"kind": kind.name, LEVEL: level, "seeds": len(both), "static_median_du_mm": static_median,
-            "dem_median_du_mm": dem_median, "difference_pct": 100 * difference,
-            "within": abs(difference) <= AGREEMENT,
-            "dem_wall_s": float(dem["wall_s"].sum()), "static_wall_s": float(same["wall_s"].sum())}
+    return {
+        "kind": kind.name,
+        LEVEL: level,
+        "seeds": len(both),
+        "static_median_du_mm": static_median,
+        "dem_median_du_mm": dem_median,
+        "difference_pct": 100 * difference,
+        "within": abs(difference) <= AGREEMENT,
+        "dem_wall_s": float(dem["wall_s"].sum()),
+        "static_wall_s": float(same["wall_s"].sum()),
+    }
 
 
 def main() -> int:
@@ -111,16 +120,30 @@ def main() -> int:
         summary = level_summary(kind, static)
         match = matching_amplitude(summary, static, target, perfect)
         level = nearest_level(summary, match.amplitude)
-        matches.append({"kind": kind.name, "title": kind.title, "unit": kind.amplitude_unit,
-                        "amplitude": match.amplitude, "low": match.low, "high": match.high, "level": level,
-                        "static_wall_s": campaign_wall_s(out / kind.name / "static") or 0.0})
+        matches.append(
+            {
+                "kind": kind.name,
+                "title": kind.title,
+                "unit": kind.amplitude_unit,
+                "amplitude": match.amplitude,
+                "low": match.low,
+                "high": match.high,
+                "level": level,
+                "static_wall_s": campaign_wall_s(out / kind.name / "static") or 0.0,
+            }
+        )
         hinges.append(hinge_table(static, level, SET1_HINGES).assign(kind=kind.name, level=level))
         summaries.append(summary)
-        panels.append((static.assign(du_mm=static["du_stat_mm"], status="done"), LEVEL,
-                       f"{kind.name} ({kind.amplitude_unit})", perfect))
+        panels.append(
+            (
+                static.assign(du_mm=static["du_stat_mm"], status="done"),
+                LEVEL,
+                f"{kind.name} ({kind.amplitude_unit})",
+                perfect,
+            )
+        )
         if not args.no_dem:
-            dem = dem_bumps() if kind.name == "bump" \
-                else dem_campaign(kind, out, level, args.jobs)
+            dem = dem_bumps() if kind.name == "bump" else dem_campaign(kind, out, level, args.jobs)
             confirmations.append(confirmation_row(kind, static, dem))
     levels = pd.concat(summaries, ignore_index=True)
     write_csv_atomically(out / SUMMARY, levels)
@@ -129,9 +152,18 @@ def main() -> int:
     if confirmations:
         write_csv_atomically(out / "confirmations.csv", pd.DataFrame(confirmations))
     amplitude_panels_figure(panels, out / FIGURE, target, f"set 1 experiment, {target} mm")
-    write_text_atomically(out / REPORT, amplitudes_markdown(levels, pd.DataFrame(matches),
-                                                            pd.concat(hinges, ignore_index=True),
-                                                            pd.DataFrame(confirmations), perfect, target, FIGURE))
+    write_text_atomically(
+        out / REPORT,
+        amplitudes_markdown(
+            levels,
+            pd.DataFrame(matches),
+            pd.concat(hinges, ignore_index=True),
+            pd.DataFrame(confirmations),
+            perfect,
+            target,
+            FIGURE,
+        ),
+    )
     print((out / REPORT).read_text())
     return 0
 

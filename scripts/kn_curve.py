@@ -49,9 +49,17 @@ def main() -> int:
     static_wall = sum(campaign_wall_s(f) or 0.0 for f in folders)
     jumps = jumps_table(static)
     done = static[static["status"] == "done"].set_index(KN)
-    limits = pd.DataFrame([{KN: kn, "static_du_mm": float(done.loc[kn, "du_mm"]),
-                            "compliant_du_mm": compliant_du(base.with_overrides({KN: kn}))}
-                           for kn in COMPLIANT_KN if kn in done.index])
+    limits = pd.DataFrame(
+        [
+            {
+                KN: kn,
+                "static_du_mm": float(done.loc[kn, "du_mm"]),
+                "compliant_du_mm": compliant_du(base.with_overrides({KN: kn})),
+            }
+            for kn in COMPLIANT_KN
+            if kn in done.index
+        ]
+    )
     du_rigid = limit_analysis(base).du_rigid_mm
     if du_rigid is None:
         raise SystemExit("the rigid analysis finds no collapse of the paper arch: nothing to draw the curve toward")
@@ -60,9 +68,10 @@ def main() -> int:
     write_csv_atomically(args.out / "jumps.csv", jumps)
     kn_curve_figure(static, dem, limits, du_rigid, args.out / "du_vs_kn")
     dem_wall = campaign_wall_s(DEM_SWEEP) if dem is not None else None
-    write_text_atomically(args.out / "kn-curve.md",
-                          kn_curve_markdown(static, jumps, hinge_moves(static), dem, limits, du_rigid, static_wall,
-                                            dem_wall))
+    write_text_atomically(
+        args.out / "kn-curve.md",
+        kn_curve_markdown(static, jumps, hinge_moves(static), dem, limits, du_rigid, static_wall, dem_wall),
+    )
     print(f"{len(static)} static runs, {len(jumps)} jumps -> {args.out}")
     return 0
 

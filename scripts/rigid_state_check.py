@@ -54,14 +54,22 @@ def load_on(runner: Runner, start_mm: float, out: Path | None, arguments: dict) 
     path = loading.follow(start=units.mm(start_mm))
     hinges = loading.collapse_state(path.upper) if path.collapsed else []
     summary = RunSummary(
-        name=runner.case.name, kn_N_per_mm3=runner.case.interface.kn_N_per_mm3,
+        name=runner.case.name,
+        kn_N_per_mm3=runner.case.interface.kn_N_per_mm3,
         **collapse_fields(path, runner.movement),
-        hinges_last_equilibrium=loading.last_equilibrium_hinges, relaxations=loading.relaxations,
-        hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges), hinges_detail=[h.to_json() for h in hinges],
-        steps=runner.total_steps, wall_s=time.time() - runner.wall0)
+        hinges_last_equilibrium=loading.last_equilibrium_hinges,
+        relaxations=loading.relaxations,
+        hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges),
+        hinges_detail=[h.to_json() for h in hinges],
+        steps=runner.total_steps,
+        wall_s=time.time() - runner.wall0,
+    )
     if path.collapsed:
-        print(f"du = {summary.du_mm:.2f} mm ({path.upper_verdict} at {units.to_mm(path.upper):.3f}); "
-              f"last equilibrium on {hinge_list(loading.last_equilibrium_hinges)}", flush=True)
+        print(
+            f"du = {summary.du_mm:.2f} mm ({path.upper_verdict} at {units.to_mm(path.upper):.3f}); "
+            f"last equilibrium on {hinge_list(loading.last_equilibrium_hinges)}",
+            flush=True,
+        )
     if out is not None:  # a run folder from the placed state on, with the command that placed it
         records = runner.records
         write_run(out, runner.case.to_toml(), records.series, records.joints, records.snapshots, summary)
@@ -74,15 +82,24 @@ def main() -> int:
     parser.add_argument("--kn", type=float, default=None, help="interface kn (N/mm3)")
     parser.add_argument("--set", dest="settings", action="append", default=[], help="KEY=VALUE, as yadearch run")
     parser.add_argument("--at-mm", type=float, required=True, help="support displacement along the path (mm)")
-    parser.add_argument("--branch", choices=["direct", "mirrored"], default="direct",
-                        help="the keystone's tie broken toward its left joint (direct) or its right one")
-    parser.add_argument("--hinges", default=None,
-                        help="place on this three-hinge linkage instead of the rigid march's state, e.g. 8I,28E,46I")
-    parser.add_argument("--compliant", action="store_true",
-                        help="place where the compliant-hinge march at the case's kn has the arch")
+    parser.add_argument(
+        "--branch",
+        choices=["direct", "mirrored"],
+        default="direct",
+        help="the keystone's tie broken toward its left joint (direct) or its right one",
+    )
+    parser.add_argument(
+        "--hinges",
+        default=None,
+        help="place on this three-hinge linkage instead of the rigid march's state, e.g. 8I,28E,46I",
+    )
+    parser.add_argument(
+        "--compliant", action="store_true", help="place where the compliant-hinge march at the case's kn has the arch"
+    )
     parser.add_argument("--load-on", action="store_true", help="go on loading from the state to collapse")
-    parser.add_argument("--out", type=Path, default=None,
-                        help="run folder of the path from the placed state (with --load-on)")
+    parser.add_argument(
+        "--out", type=Path, default=None, help="run folder of the path from the placed state (with --load-on)"
+    )
     args = parser.parse_args()
     case = resolve_case(args.preset, None, args.kn, tuple(args.settings))
     if args.hinges:
@@ -96,13 +113,19 @@ def main() -> int:
         placed_mm = units.to_mm(runner.delta())
         if abs(placed_mm - args.at_mm) > PLACEMENT_TOLERANCE_MM:
             raise SystemExit(f"the placed support reads {placed_mm:.6f} mm, not --at-mm {args.at_mm:g}")
-        where = f"linkage {args.hinges}" if args.hinges else \
-            f"{args.branch} branch{', compliant hinges' if args.compliant else ''}"
+        where = (
+            f"linkage {args.hinges}"
+            if args.hinges
+            else f"{args.branch} branch{', compliant hinges' if args.compliant else ''}"
+        )
         print(f"placed at {args.at_mm:g} mm ({where}): {hinge_text(runner)}", flush=True)
         runner.stage = Stage.RELAX
         verdict = runner.hold(max_s=case.numerics.hold_max_s)
-        print(f"released: {verdict}, largest block motion {units.to_mm(runner.hold_move):.3f} mm; "
-              f"now on {hinge_text(runner)}", flush=True)
+        print(
+            f"released: {verdict}, largest block motion {units.to_mm(runner.hold_move):.3f} mm; "
+            f"now on {hinge_text(runner)}",
+            flush=True,
+        )
         if args.load_on and verdict == Verdict.STABLE:
             load_on(runner, args.at_mm, args.out, vars(args) | {"out": str(args.out)})
     finally:

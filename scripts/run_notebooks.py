@@ -28,14 +28,22 @@ def execute_notebook(source: Path, target: Path) -> dict:
     with tempfile.TemporaryDirectory(prefix="yadearch-notebook-") as scratch:
         kernel = Path(scratch) / "kernels" / KERNEL
         kernel.mkdir(parents=True)
-        (kernel / "kernel.json").write_text(json.dumps({
-            "argv": [sys.executable, "-m", "ipykernel_launcher", "-f", "{connection_file}"],
-            "display_name": "Python 3 (yadearch)", "language": "python", "env": {"MPLBACKEND": BACKEND}}))
+        (kernel / "kernel.json").write_text(
+            json.dumps(
+                {
+                    "argv": [sys.executable, "-m", "ipykernel_launcher", "-f", "{connection_file}"],
+                    "display_name": "Python 3 (yadearch)",
+                    "language": "python",
+                    "env": {"MPLBACKEND": BACKEND},
+                }
+            )
+        )
         previous = os.environ.get("JUPYTER_PATH")
         os.environ["JUPYTER_PATH"] = scratch
         try:
-            nbclient.NotebookClient(notebook, kernel_name=KERNEL, timeout=TIMEOUT_S,
-                                    resources={"metadata": {"path": scratch}}).execute()
+            nbclient.NotebookClient(
+                notebook, kernel_name=KERNEL, timeout=TIMEOUT_S, resources={"metadata": {"path": scratch}}
+            ).execute()
         finally:
             if previous is None:
                 os.environ.pop("JUPYTER_PATH", None)

@@ -30,8 +30,9 @@ fi
 # SALib (the sensitivity study's Sobol sampling and estimators) is not in Debian: pip, without its
 # dependencies, which are all Debian's (numpy, scipy, pandas, matplotlib, multiprocess)
 .venv/bin/python -m pip install -q --no-deps "SALib==1.4.7"
-# ruff and mypy (the linter and type checker the tests run) are optional: without them those tests skip
-.venv/bin/python -m pip install -q ruff mypy 2>/dev/null || echo "setup: ruff or mypy unavailable, their tests will be skipped"
+# ruff and mypy (the linter, formatter and type checker the tests run) are optional: without them those
+# tests skip; pinned, because a new release formats or flags code differently
+.venv/bin/python -m pip install -q "ruff==0.17.6" "mypy==2.4.1" 2>/dev/null || echo "setup: ruff or mypy unavailable, their tests will be skipped"
 .venv/bin/python - <<'PY'
 import numpy, pandas, matplotlib, click, tomli_w, dask, distributed, numba, SALib, vtkmodules  # noqa: F401  the whole stack imports
 from yadearch.engine.yade_env import import_yade

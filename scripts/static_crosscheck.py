@@ -31,12 +31,16 @@ RIGID_FROM_KN = 1000.0
 
 def dem_pairs() -> list[Pair]:
     """Every DEM run the cross-check covers, grouped."""
-    groups = {"paper": [REPORTS / "set1", REPORTS / "set2"],
-              "kn-sweep": dem_folders(REPORTS / "kn-sweep", "kn*"),
-              "robustness": dem_folders(REPORTS / "robustness", "*_base"),
-              "stiff": dem_folders(REPORTS / "stiff", "kn*"),
-              "imperfections": [REPORTS / "imperfections" / "final" / f"face_bump_sd0.18_s{seed}"
-                                for seed in range(1, IMPERFECTION_SAMPLES + 1)]}
+    groups = {
+        "paper": [REPORTS / "set1", REPORTS / "set2"],
+        "kn-sweep": dem_folders(REPORTS / "kn-sweep", "kn*"),
+        "robustness": dem_folders(REPORTS / "robustness", "*_base"),
+        "stiff": dem_folders(REPORTS / "stiff", "kn*"),
+        "imperfections": [
+            REPORTS / "imperfections" / "final" / f"face_bump_sd0.18_s{seed}"
+            for seed in range(1, IMPERFECTION_SAMPLES + 1)
+        ],
+    }
     pairs = [pair_from_folder(group, folder) for group, folders in groups.items() for folder in folders]
     return pairs + capacity_pairs()
 
@@ -47,10 +51,12 @@ def capacity_pairs() -> list[Pair]:
     pairs = []
     for row in table.itertuples():
         kn = reference.SETS[row.set]["kn_N_per_mm3"]
-        case = preset("set1").with_overrides({"interface.kn_N_per_mm3": kn, DIRECTION_PARAMETER: row.direction_deg,
-                                              "numerics.engine": "static"})
-        hinges = tuple(HingeRef(int(h[:-1]), h[-1]) for h in str(row.hinges).split()) \
-            if isinstance(row.hinges, str) else ()
+        case = preset("set1").with_overrides(
+            {"interface.kn_N_per_mm3": kn, DIRECTION_PARAMETER: row.direction_deg, "numerics.engine": "static"}
+        )
+        hinges = (
+            tuple(HingeRef(int(h[:-1]), h[-1]) for h in str(row.hinges).split()) if isinstance(row.hinges, str) else ()
+        )
         dem = RunSummary(du_mm=row.du_mm, hinges_at_collapse=hinges, steps=0, wall_s=row.wall_s)
         pairs.append(Pair("capacity", f"{row.set}_direction{row.direction_deg:g}", case, dem))
     return pairs
@@ -67,8 +73,16 @@ def limits(table: pd.DataFrame, pairs: list[Pair]) -> pd.DataFrame:
             continue
         compliant = limit_analysis(pair.case, compliant=True).du_rigid_mm
         rigid = limit_analysis(pair.case).du_rigid_mm if kn >= RIGID_FROM_KN else None
-        rows.append({"group": pair.group, "run": pair.name, "kn_N_per_mm3": kn, "static_du_mm": row.static_du_mm,
-                     "compliant_du_mm": compliant, "rigid_du_mm": rigid})
+        rows.append(
+            {
+                "group": pair.group,
+                "run": pair.name,
+                "kn_N_per_mm3": kn,
+                "static_du_mm": row.static_du_mm,
+                "compliant_du_mm": compliant,
+                "rigid_du_mm": rigid,
+            }
+        )
     return pd.DataFrame(rows)
 
 
@@ -87,8 +101,10 @@ def main() -> int:
     write_csv_atomically(args.out / "crosscheck.csv", table)
     write_csv_atomically(args.out / "limits.csv", limit_table)
     write_text_atomically(args.out / "crosscheck.md", crosscheck_markdown(table, limit_table, wall, args.jobs))
-    print(f"{len(table)} pairs, {int(table['within_1pct'].sum())} within 1 %, "
-          f"{int(table['same_hinges'].sum())} with the same hinges; static wall {wall:.0f} s -> {args.out}")
+    print(
+        f"{len(table)} pairs, {int(table['within_1pct'].sum())} within 1 %, "
+        f"{int(table['same_hinges'].sum())} with the same hinges; static wall {wall:.0f} s -> {args.out}"
+    )
     return 0
 
 

@@ -28,8 +28,7 @@ def box(x0: float, x1: float, y0: float, y1: float, depth: float) -> np.ndarray:
     return np.array(front + [(x, y, h) for x, y, _ in front])
 
 
-def stacked_pairs(offsets_x: list[float], width: float, height: float, depth: float,
-                  overlap: float = 0.0):
+def stacked_pairs(offsets_x: list[float], width: float, height: float, depth: float, overlap: float = 0.0):
     """For each x offset, a base block under y = 0 and a top block above it pressed down by
     `overlap`; returns an ArchGeometry-like assembly with one horizontal joint per pair."""
     from yadearch.model.geometry import ArchGeometry, Joint
@@ -38,7 +37,23 @@ def stacked_pairs(offsets_x: list[float], width: float, height: float, depth: fl
     for k, x in enumerate(offsets_x):
         blocks.append(box(x - width / 2, x + width / 2, -height, 0.0, depth))
         blocks.append(box(x - width / 2, x + width / 2, -overlap, height - overlap, depth))
-        joints.append(Joint(k + 1, 2 * k, 2 * k + 1, np.array([x - width / 2, 0.0]),
-                            np.array([x + width / 2, 0.0]), np.array([0.0, 1.0])))
-    return ArchGeometry(blocks, joints, thickness=width, depth=depth, span=offsets_x[-1] - offsets_x[0] + width,
-                        rise=height, voussoir_width=height, longest_joint=width)
+        joints.append(
+            Joint(
+                k + 1,
+                2 * k,
+                2 * k + 1,
+                np.array([x - width / 2, 0.0]),
+                np.array([x + width / 2, 0.0]),
+                np.array([0.0, 1.0]),
+            )
+        )
+    return ArchGeometry(
+        blocks,
+        joints,
+        thickness=width,
+        depth=depth,
+        span=offsets_x[-1] - offsets_x[0] + width,
+        rise=height,
+        voussoir_width=height,
+        longest_joint=width,
+    )

@@ -59,8 +59,11 @@ class BuiltRun:
         below du (as the runner records them), the collapse record just past du showing the
         run-away arch."""
         loading = np.arange(1, int(self.du_mm / self.record_every_mm)) * self.record_every_mm
-        return ([("selfweight", 0.0, 0.0)] + [("equilibrium", d, d) for d in loading]
-                + [("collapse", self.du_mm + 0.05, self.du_mm + RUNAWAY_MM)])
+        return (
+            [("selfweight", 0.0, 0.0)]
+            + [("equilibrium", d, d) for d in loading]
+            + [("collapse", self.du_mm + 0.05, self.du_mm + RUNAWAY_MM)]
+        )
 
     def joints(self) -> pd.DataFrame:
         rows = []
@@ -76,11 +79,20 @@ class BuiltRun:
                         intrados, extrados = intrados + gap, extrados - squeeze
                 normal = 20.0
                 ratio = self.sliding.get(k, 0.2) if stage == "collapse" else 0.2
-                rows.append({"stage": stage, "step": 100 * step, "delta_mm": delta, "interface": k,
-                             "rotation_rad": (intrados - extrados) / JOINT_MM,
-                             "opening_intrados_mm": intrados, "opening_extrados_mm": extrados,
-                             "force_position": 0.5, "normal_force_N": normal,
-                             "shear_force_N": -ratio * MU * normal})
+                rows.append(
+                    {
+                        "stage": stage,
+                        "step": 100 * step,
+                        "delta_mm": delta,
+                        "interface": k,
+                        "rotation_rad": (intrados - extrados) / JOINT_MM,
+                        "opening_intrados_mm": intrados,
+                        "opening_extrados_mm": extrados,
+                        "force_position": 0.5,
+                        "normal_force_N": normal,
+                        "shear_force_N": -ratio * MU * normal,
+                    }
+                )
         return pd.DataFrame(rows)
 
     def analyse(self, thresholds: Thresholds = Thresholds(), slip_mm: np.ndarray | None = None):
@@ -90,12 +102,14 @@ class BuiltRun:
 def paper_like_run() -> BuiltRun:
     """I hinge at 4, spread E hinge 6-7-8-9 (peak 7), E at the right support (rotated by compression
     from the start), then E at the left support only at collapse: E-I-E-E, D at the left support."""
-    return BuiltRun([
-        BuiltHinge({4: 1.0}, "I", opens_mm=5.0),
-        BuiltHinge({6: 0.6, 7: 1.0, 8: 0.8, 9: 0.55}, "E", opens_mm=12.0),
-        BuiltHinge({11: 1.0}, "E", opens_mm=20.0, preload_mrad=3.0),
-        BuiltHinge({1: 1.0}, "E", opens_mm=30.5),
-    ])
+    return BuiltRun(
+        [
+            BuiltHinge({4: 1.0}, "I", opens_mm=5.0),
+            BuiltHinge({6: 0.6, 7: 1.0, 8: 0.8, 9: 0.55}, "E", opens_mm=12.0),
+            BuiltHinge({11: 1.0}, "E", opens_mm=20.0, preload_mrad=3.0),
+            BuiltHinge({1: 1.0}, "E", opens_mm=30.5),
+        ]
+    )
 
 
 CASE_TOML = """name = "{name}"
@@ -124,36 +138,70 @@ def placed(case: dict, delta_mm: float) -> dict:
     pos0 = block_centroids(case_geometry(case))
     share = np.linspace(0.0, 1.0, len(pos0))
     pos = pos0 - np.outer(share, [0.0, delta_mm * 1e-3])
-    return {"delta_mm": delta_mm, "step": 1, "pos_m": pos.tolist(), "rot_rad": (2e-4 * delta_mm * share).tolist(),
-            "hinges": []}
+    return {
+        "delta_mm": delta_mm,
+        "step": 1,
+        "pos_m": pos.tolist(),
+        "rot_rad": (2e-4 * delta_mm * share).tolist(),
+        "hinges": [],
+    }
 
 
 def series_rows(built: BuiltRun) -> list[dict]:
     rows = []
-    for stage, deltas in (("selfweight", [0.0, 0.0]), ("equilibrium", np.arange(0.5, built.du_mm, 0.5)),
-                          ("increment", [built.du_mm + 3, built.du_mm - 1, built.du_mm + 1]),
-                          ("collapse", [built.du_mm + 0.05])):
+    for stage, deltas in (
+        ("selfweight", [0.0, 0.0]),
+        ("equilibrium", np.arange(0.5, built.du_mm, 0.5)),
+        ("increment", [built.du_mm + 3, built.du_mm - 1, built.du_mm + 1]),
+        ("collapse", [built.du_mm + 0.05]),
+    ):
         for d in deltas:
-            rows.append({"stage": stage, "step": len(rows), "time_s": 0.01 * len(rows), "delta_mm": d,
-                         "left_Rx_N": 12.0, "left_Ry_N": 15.8 - 0.02 * d, "right_Rx_N": -12.0,
-                         "right_Ry_N": 15.8 + 0.02 * d, "crown_dx_mm": 0.2 * d, "crown_dy_mm": -2 - 0.6 * d,
-                         "kinetic_J": 1e-5, "unbalanced": 1e-3, "max_block_speed_mm_per_s": 0.1,
-                         STIFFNESS_COLUMN: 50.0 * (1 - d / built.du_mm) if stage == "equilibrium" else None})
+            rows.append(
+                {
+                    "stage": stage,
+                    "step": len(rows),
+                    "time_s": 0.01 * len(rows),
+                    "delta_mm": d,
+                    "left_Rx_N": 12.0,
+                    "left_Ry_N": 15.8 - 0.02 * d,
+                    "right_Rx_N": -12.0,
+                    "right_Ry_N": 15.8 + 0.02 * d,
+                    "crown_dx_mm": 0.2 * d,
+                    "crown_dy_mm": -2 - 0.6 * d,
+                    "kinetic_J": 1e-5,
+                    "unbalanced": 1e-3,
+                    "max_block_speed_mm_per_s": 0.1,
+                    STIFFNESS_COLUMN: 50.0 * (1 - d / built.du_mm) if stage == "equilibrium" else None,
+                }
+            )
     return rows
 
 
-PAPER_HINGES = [{"interface": 1, "side": "E"}, {"interface": 12, "side": "I"}, {"interface": 30, "side": "E"},
-                {"interface": 56, "side": "E"}]
-COARSE_HINGES = [{"interface": 1, "side": "E"}, {"interface": 4, "side": "I"}, {"interface": 7, "side": "E"},
-                 {"interface": 11, "side": "E"}]
+PAPER_HINGES = [
+    {"interface": 1, "side": "E"},
+    {"interface": 12, "side": "I"},
+    {"interface": 30, "side": "E"},
+    {"interface": 56, "side": "E"},
+]
+COARSE_HINGES = [
+    {"interface": 1, "side": "E"},
+    {"interface": 4, "side": "I"},
+    {"interface": 7, "side": "E"},
+    {"interface": 11, "side": "E"},
+]
 
 
 def paper_arch_run() -> BuiltRun:
     """paper_like_run's four hinges on the paper's 55-voussoir arch: 12I, 29-32E (peak 30), 56E, 1E."""
-    return BuiltRun([BuiltHinge({12: 1.0}, "I", opens_mm=5.0),
-                     BuiltHinge({29: 0.6, 30: 1.0, 31: 0.8, 32: 0.55}, "E", opens_mm=12.0),
-                     BuiltHinge({56: 1.0}, "E", opens_mm=20.0, preload_mrad=3.0),
-                     BuiltHinge({1: 1.0}, "E", opens_mm=30.5)], n_interfaces=56)
+    return BuiltRun(
+        [
+            BuiltHinge({12: 1.0}, "I", opens_mm=5.0),
+            BuiltHinge({29: 0.6, 30: 1.0, 31: 0.8, 32: 0.55}, "E", opens_mm=12.0),
+            BuiltHinge({56: 1.0}, "E", opens_mm=20.0, preload_mrad=3.0),
+            BuiltHinge({1: 1.0}, "E", opens_mm=30.5),
+        ],
+        n_interfaces=56,
+    )
 
 
 def make_run(folder: Path, name: str = "set2", kn: float = 5.2, paper_arch: bool = True) -> RunSummary:
@@ -165,10 +213,19 @@ def make_run(folder: Path, name: str = "set2", kn: float = 5.2, paper_arch: bool
     case_toml = CASE_TOML.format(name=name, kn=kn, voussoirs=55 if paper_arch else 10)
     case = tomllib.loads(case_toml)
     summary = RunSummary(
-        name=name, du_mm=built.du_mm + 0.0123, collapsed=True, du_bracket_mm=(built.du_mm - 0.02, built.du_mm + 0.05),
+        name=name,
+        du_mm=built.du_mm + 0.0123,
+        collapsed=True,
+        du_bracket_mm=(built.du_mm - 0.02, built.du_mm + 0.05),
         hinges_at_collapse=tuple(HingeRef.of(h) for h in (PAPER_HINGES if paper_arch else COARSE_HINGES)),
-        kn_N_per_mm3=kn, ks_N_per_mm3=kn / 2, steps=12345, wall_s=67.8,
-        yade_version="2023.02a", yadearch_version="0.1.0", git_revision="abc123")
+        kn_N_per_mm3=kn,
+        ks_N_per_mm3=kn / 2,
+        steps=12345,
+        wall_s=67.8,
+        yade_version="2023.02a",
+        yadearch_version="0.1.0",
+        git_revision="abc123",
+    )
     snapshots = {"selfweight": placed(case, 0.0), "collapse": placed(case, built.du_mm + 0.05)}
     write_run(folder, case_toml, series_rows(built), built.joints().to_dict("records"), snapshots, summary)
     return summary

@@ -26,8 +26,7 @@ def test_an_opened_run_gives_du_and_hinges_with_the_papers_labels(tmp_path):
     summary = make_run(tmp_path / "run")
     result = ya.open_run(tmp_path / "run")
     assert result.du_mm == summary.du_mm and result.collapsed
-    assert [(h.label, h.paper_label) for h in result.hinges] == [("1E", "D"), ("12I", "A"), ("30E", "B"),
-                                                          ("56E", "C")]
+    assert [(h.label, h.paper_label) for h in result.hinges] == [("1E", "D"), ("12I", "A"), ("30E", "B"), ("56E", "C")]
 
 
 def test_the_loading_curve_holds_only_equilibrium_points_in_increasing_displacement(tmp_path):
@@ -89,17 +88,30 @@ def test_the_static_engine_runs_through_the_api_and_says_so(tmp_path):
     assert (res.loading_curve()["min_stiffness_N_per_m"].dropna() > 0).all()
 
 
-@pytest.mark.parametrize("call, error, message", [
-    (lambda out: ya.sweep("set2", out, kn_N_per_mm3=[]), ValueError, "kn_N_per_mm3: no values to run"),
-    (lambda out: ya.sweep("set2", out, kn_N_per_mm3=5.2), TypeError, "kn_N_per_mm3: give a list of values, got 5.2"),
-    (lambda out: ya.sweep("set2", out, kn_N_per_mm3=[1.0, -1.0]), ValueError,
-     r"run kn-1: kn_N_per_mm3 must be in \(0, 100000\], got -1.0; nothing was run"),
-    (lambda out: ya.montecarlo("set2", out, samples=0), ValueError, "samples must be >= 1, got 0"),
-    (lambda out: ya.montecarlo("set2", out, samples=3, face_bump_sd_mm=[-1.0]), ValueError,
-     r"face_bump_sd_mm must be in \[0, 1000\], got -1.0"),
-    (lambda out: ya.sensitivity("set2", out, base_points=12), ValueError, "base_points must be a power of two"),
-    (lambda out: ya.capacity("set2", out, step_deg=7), ValueError, "step_deg must divide 180"),
-])
+@pytest.mark.parametrize(
+    "call, error, message",
+    [
+        (lambda out: ya.sweep("set2", out, kn_N_per_mm3=[]), ValueError, "kn_N_per_mm3: no values to run"),
+        (
+            lambda out: ya.sweep("set2", out, kn_N_per_mm3=5.2),
+            TypeError,
+            "kn_N_per_mm3: give a list of values, got 5.2",
+        ),
+        (
+            lambda out: ya.sweep("set2", out, kn_N_per_mm3=[1.0, -1.0]),
+            ValueError,
+            r"run kn-1: kn_N_per_mm3 must be in \(0, 100000\], got -1.0; nothing was run",
+        ),
+        (lambda out: ya.montecarlo("set2", out, samples=0), ValueError, "samples must be >= 1, got 0"),
+        (
+            lambda out: ya.montecarlo("set2", out, samples=3, face_bump_sd_mm=[-1.0]),
+            ValueError,
+            r"face_bump_sd_mm must be in \[0, 1000\], got -1.0",
+        ),
+        (lambda out: ya.sensitivity("set2", out, base_points=12), ValueError, "base_points must be a power of two"),
+        (lambda out: ya.capacity("set2", out, step_deg=7), ValueError, "step_deg must divide 180"),
+    ],
+)
 def test_campaigns_refuse_bad_arguments_before_anything_runs(call, error, message, tmp_path):
     with pytest.raises(error, match=message):
         call(tmp_path / "out")
@@ -110,6 +122,9 @@ def test_an_arch_that_cannot_stand_is_told_with_the_parameters_that_decide_it(tm
     from yadearch.errors import RunFailedError
 
     case = ya.preset("set2").with_overrides({"n_voussoirs": 9, "friction_deg": 0.0})
-    with pytest.raises(RunFailedError, match=r"does not stand under its own weight .*thickness_mm 24, "
-                       r"internal_radius_mm 300, embrace_deg 125, n_voussoirs 9, friction_deg 0, kn 5.2 N/mm3"):
+    with pytest.raises(
+        RunFailedError,
+        match=r"does not stand under its own weight .*thickness_mm 24, "
+        r"internal_radius_mm 300, embrace_deg 125, n_voussoirs 9, friction_deg 0, kn 5.2 N/mm3",
+    ):
         ya.run(case, out=tmp_path / "run", engine="static")

@@ -11,8 +11,22 @@ from conftest import REPO
 
 PACKAGE = REPO / "yadearch"
 # top to bottom; the modules at the bottom (errors, atomic) and the version serve every layer
-LAYERS = ("cli", "api", "reporting", "studies", "plotting", "analysis", "engine", "statics", "results",
-          "solve", "case", "model", "errors", "atomic")
+LAYERS = (
+    "cli",
+    "api",
+    "reporting",
+    "studies",
+    "plotting",
+    "analysis",
+    "engine",
+    "statics",
+    "results",
+    "solve",
+    "case",
+    "model",
+    "errors",
+    "atomic",
+)
 ENTRY_POINTS = ("__init__", "__main__")  # the package's own surface: `import yadearch` reaches the API
 
 

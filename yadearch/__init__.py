@@ -28,8 +28,24 @@ if TYPE_CHECKING:
         sweep,
     )
 
-__all__ = ["__version__", "preset", "movement", "run", "reproduce", "report", "open_run", "sweep", "montecarlo",
-           "calibrate", "robustness", "capacity", "sensitivity", "limit", "RunResult", "HingeAtCollapse"]
+__all__ = [
+    "__version__",
+    "preset",
+    "movement",
+    "run",
+    "reproduce",
+    "report",
+    "open_run",
+    "sweep",
+    "montecarlo",
+    "calibrate",
+    "robustness",
+    "capacity",
+    "sensitivity",
+    "limit",
+    "RunResult",
+    "HingeAtCollapse",
+]
 
 
 def __getattr__(name: str):

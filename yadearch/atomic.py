@@ -39,8 +39,7 @@ CSV_FLOAT_FORMAT = "%.6g"  # six significant figures: tables stay readable and d
 
 def write_csv_atomically(path: Path, table) -> Path:
     """`write_atomically` for a pandas table as CSV (no index, floats to six significant figures)."""
-    return write_atomically(path, lambda temporary: table.to_csv(temporary, index=False,
-                                                                  float_format=CSV_FLOAT_FORMAT))
+    return write_atomically(path, lambda temporary: table.to_csv(temporary, index=False, float_format=CSV_FLOAT_FORMAT))
 
 
 TEMPORARY_PATTERN = ".*.tmp"  # the names write_atomically gives its temporary files

@@ -1,6 +1,5 @@
 """Errors that mean a user mistake or an unusable environment: the CLI prints them as one line."""
 
-
 CANNOT_STAND = "the arch does not stand under its own weight"  # both engines' words; campaigns read them
 
 

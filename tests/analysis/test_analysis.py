@@ -23,10 +23,18 @@ def summary_of(analysis) -> list[tuple]:
 
 def test_finds_the_built_hinges_in_order_of_formation():
     a = paper_like_run().analyse()
-    assert summary_of(a) == [("A", 4, (4,), "I"), ("B", 7, (6, 7, 8, 9), "E"), ("C", 11, (11,), "E"),
-                             ("D", 1, (1,), "E")]
+    assert summary_of(a) == [
+        ("A", 4, (4,), "I"),
+        ("B", 7, (6, 7, 8, 9), "E"),
+        ("C", 11, (11,), "E"),
+        ("D", 1, (1,), "E"),
+    ]
     assert [(label, seq) for label, _, seq in a.formation] == [
-        ("A", "I"), ("B", "I-E"), ("C", "I-E-E"), ("D", "E-I-E-E")]
+        ("A", "I"),
+        ("B", "I-E"),
+        ("C", "I-E-E"),
+        ("D", "E-I-E-E"),
+    ]
     formed = [delta for _, delta, _ in a.formation]
     assert formed[:3] == pytest.approx([5.0, 12.0, 20.0], abs=1.0)
     assert formed[3] == pytest.approx(30.05)  # the collapse record
@@ -54,8 +62,11 @@ def test_loading_records_past_du_are_not_on_the_path():
 def test_hinge_table_lists_every_hinge_at_every_record():
     a = paper_like_run().analyse()
     at_15 = a.hinges[np.isclose(a.hinges["delta_mm"], 15.0)]
-    assert list(zip(at_15["interface"], at_15["side"], at_15["label"])) == [(4, "I", "A"), (7, "E", "B"),
-                                                                         (11, "E", "C")]
+    assert list(zip(at_15["interface"], at_15["side"], at_15["label"])) == [
+        (4, "I", "A"),
+        (7, "E", "B"),
+        (11, "E", "C"),
+    ]
     assert at_15["interfaces"].iloc[1] == "6-7-8-9"
     final = a.hinges[a.hinges["stage"] == "collapse"]
     assert list(final["label"]) == ["D", "A", "B", "C"]
@@ -77,11 +88,13 @@ def test_result_does_not_flip_when_a_threshold_changes_by_two(name, factor):
 def migrating_run() -> BuiltRun:
     """An I hinge opens at 3, then closes while one at 6 opens: it migrates 3 -> 6 (near 18.5 mm,
     where 6 overtakes 3); an E hinge at the right support forms at 10."""
-    return BuiltRun([
-        BuiltHinge({3: 1.0}, "I", opens_mm=5.0, fades_mm=(15.0, 19.0)),
-        BuiltHinge({6: 1.0}, "I", opens_mm=15.0),
-        BuiltHinge({11: 1.0}, "E", opens_mm=10.0),
-    ])
+    return BuiltRun(
+        [
+            BuiltHinge({3: 1.0}, "I", opens_mm=5.0, fades_mm=(15.0, 19.0)),
+            BuiltHinge({6: 1.0}, "I", opens_mm=15.0),
+            BuiltHinge({11: 1.0}, "E", opens_mm=10.0),
+        ]
+    )
 
 
 @pytest.mark.parametrize("factor", [0.5, 1.0, 2.0])
@@ -138,7 +151,7 @@ def test_slip_is_the_relative_motion_along_the_joint_and_not_hinge_rotation():
         turned[b] = joint.intrados + [c * d[0] - s * d[1], s * d[0] + c * d[1]]
     rot = [0.0] * 3 + [theta] * (len(pos0) - 3)
     slip = tangential_slip_mm(g, {"pos_m": turned.tolist(), "rot_rad": rot})
-    assert abs(slip[2]) < 0.5 * theta ** 2 * 24.0
+    assert abs(slip[2]) < 0.5 * theta**2 * 24.0
 
 
 def test_a_joint_that_slid_below_its_friction_cap_is_flagged_as_sliding_during_the_moves():
@@ -166,14 +179,26 @@ def test_an_accepted_relaxation_that_moved_a_block_far_is_flagged_as_a_jump():
     path's own (docs/numerics.md)."""
     from yadearch.analysis.mechanism import relaxation_jump
 
-    jumped = _summary(du_mm=27.91, relaxations={"runaway_mm": 5.0, "delta_mm": [1.0, 4.75, 17.25, 27.875],
-                                                "increment_mm": [1.0, 2.25, 2.5, 0.625],
-                                                "move_mm": [0.07, 1.17, 2.69, 1.5]})
+    jumped = _summary(
+        du_mm=27.91,
+        relaxations={
+            "runaway_mm": 5.0,
+            "delta_mm": [1.0, 4.75, 17.25, 27.875],
+            "increment_mm": [1.0, 2.25, 2.5, 0.625],
+            "move_mm": [0.07, 1.17, 2.69, 1.5],
+        },
+    )
     warning = relaxation_jump(jumped)
     assert warning is not None and "to 17.25 mm moved a block 2.69 mm (2 such" in warning and "\n" not in warning
-    soft = _summary(du_mm=47.13, relaxations={"runaway_mm": 1.0, "delta_mm": [7.25, 40.0, 46.0, 47.09],
-                                              "increment_mm": [2.5, 2.5, 0.625, 0.156],
-                                              "move_mm": [0.38, 0.3, 0.66, 0.06]})
+    soft = _summary(
+        du_mm=47.13,
+        relaxations={
+            "runaway_mm": 1.0,
+            "delta_mm": [7.25, 40.0, 46.0, 47.09],
+            "increment_mm": [2.5, 2.5, 0.625, 0.156],
+            "move_mm": [0.38, 0.3, 0.66, 0.06],
+        },
+    )
     assert relaxation_jump(soft) is None
     assert relaxation_jump(_summary()) is None  # a run from before the record
 

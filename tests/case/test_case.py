@@ -13,7 +13,12 @@ def test_presets_carry_the_paper_values():
     assert s1.ks_N_per_mm3 == pytest.approx(0.125) and s2.ks_N_per_mm3 == pytest.approx(2.6)
     g = s2.geometry
     assert (g.n_voussoirs, g.embrace_deg, g.internal_radius_mm, g.thickness_mm, g.depth_mm) == (
-        55, 125.0, 300.0, 24.0, 120.0)
+        55,
+        125.0,
+        300.0,
+        24.0,
+        120.0,
+    )
     assert (s2.material.density_g_per_cm3, s2.material.friction_deg) == (1.64, 41.2)
 
 
@@ -26,13 +31,16 @@ def test_toml_round_trip(tmp_path):
     assert again.geometry.n_voussoirs == 11 and again.numerics.damping == 0.3
 
 
-@pytest.mark.parametrize("override, message", [
-    ({"kn_N_per_mm3": -1}, "kn_N_per_mm3 must be in (0, 100000], got -1"),
-    ({"embrace_deg": 200}, "embrace_deg must be in (0, 180], got 200"),
-    ({"n_voussoirs": 2.5}, "n_voussoirs must be an integer, got 2.5"),
-    ({"damping": 1.0}, "damping must be in [0, 1), got 1.0"),
-    ({"friction_deg": "steep"}, "friction_deg must be a number, got 'steep'"),
-])
+@pytest.mark.parametrize(
+    "override, message",
+    [
+        ({"kn_N_per_mm3": -1}, "kn_N_per_mm3 must be in (0, 100000], got -1"),
+        ({"embrace_deg": 200}, "embrace_deg must be in (0, 180], got 200"),
+        ({"n_voussoirs": 2.5}, "n_voussoirs must be an integer, got 2.5"),
+        ({"damping": 1.0}, "damping must be in [0, 1), got 1.0"),
+        ({"friction_deg": "steep"}, "friction_deg must be a number, got 'steep'"),
+    ],
+)
 def test_bad_values_give_one_line_errors(override, message):
     with pytest.raises(CaseError) as info:
         preset("set2").with_overrides(override)
@@ -75,3 +83,24 @@ def test_support_speed_falls_as_one_over_sqrt_kn_above_the_reference_stiffness()
     scaled = case.with_overrides({"rate_reference_kn_N_per_mm3": 10.0})
     assert scaled.support_speed_mm_per_s == 80.0  # kn 5.2: below the reference, unchanged
     assert scaled.with_overrides({"kn_N_per_mm3": 40.0}).support_speed_mm_per_s == pytest.approx(40.0)
+
+
+def test_former_parameter_names_are_read_as_todays(tmp_path):
+    """Case files, overrides and stored runs written with settlement_* names mean support_*."""
+    old = tmp_path / "old.toml"
+    old.write_text(
+        "[loading]\nsettlement_direction_deg = -45.0\nmax_settlement_mm = 80.0\n"
+        "[numerics]\nsettlement_rate_mm_per_s = 20.0\n"
+    )
+    case = load_case(old)
+    assert (
+        case.loading.support_direction_deg,
+        case.loading.max_support_displacement_mm,
+        case.numerics.support_rate_mm_per_s,
+    ) == (-45.0, 80.0, 20.0)
+    assert preset("set2").with_overrides({"loading.settlement_direction_deg": 0.0}).loading.support_direction_deg == 0.0
+    assert preset("set2").replace(settlement_direction_deg=-30.0).loading.support_direction_deg == -30.0
+    both = tmp_path / "both.toml"
+    both.write_text("[loading]\nsettlement_direction_deg = -45.0\nsupport_direction_deg = -40.0\n")
+    with pytest.raises(CaseError, match="both settlement_direction_deg and support_direction_deg"):
+        load_case(both)

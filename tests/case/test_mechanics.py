@@ -1,6 +1,5 @@
 """Stiffness mapping from the paper's interface to YADE's volumetric law, and the time step."""
 
-
 import numpy as np
 import pytest
 from conftest import DATA
@@ -35,8 +34,7 @@ def test_block_elasticity_in_series_is_off_by_default_and_softens_when_on():
     assert effective_kn_N_per_mm3(elastic, width_mm) == pytest.approx(expected)
 
 
-@pytest.mark.parametrize("offset, length", [(0.0, 0.0), (0.004, 0.012), (0.012, 0.024),
-                                            (0.020, 0.012), (0.030, 0.0)])
+@pytest.mark.parametrize("offset, length", [(0.0, 0.0), (0.004, 0.012), (0.012, 0.024), (0.020, 0.012), (0.030, 0.0)])
 def test_compressed_length_follows_the_force_position(offset, length):
     assert compressed_length(offset, 0.024) == pytest.approx(length)
 
@@ -65,5 +63,7 @@ def test_longer_joints_shorten_the_time_step():
     vertical = case.with_overrides({"joint_orientation": "vertical"})
     g, gv = arch_geometry(case), arch_geometry(vertical)
     assert 1.9 * g.thickness < gv.longest_joint < g.thickness / np.sin(np.radians(27.5))
-    assert critical_timestep(vertical, gv, contact_stiffness(vertical, gv)) < \
-        critical_timestep(case, g, contact_stiffness(case, g)) / 2
+    assert (
+        critical_timestep(vertical, gv, contact_stiffness(vertical, gv))
+        < critical_timestep(case, g, contact_stiffness(case, g)) / 2
+    )

@@ -19,72 +19,118 @@ from yadearch.case.sections import SECTIONS
 from yadearch.cli.commands import main
 from yadearch.errors import YadearchError
 
-NUMERIC = [f"{name}.{f.name}" for name, section in SECTIONS.items() for f in fields(section)
-           if f.type in ("int", "float", int, float)]
-VALID_NEGATIVE = ("loading.support_direction_deg",  # -1 deg is a valid direction
-                  "loading.rotation_pivot_dx_mm", "loading.rotation_pivot_dy_mm",  # a pivot anywhere
-                  "imperfections.face_angle_mrad", "imperfections.face_bump_mm",  # signed defects
-                  "imperfections.voussoir_offset_mm", "imperfections.keystone_offset_mm",
-                  "imperfections.left_support_angle_mrad", "imperfections.right_support_angle_mrad",
-                  "imperfections.voussoir_thickness_mm")
+NUMERIC = [
+    f"{name}.{f.name}"
+    for name, section in SECTIONS.items()
+    for f in fields(section)
+    if f.type in ("int", "float", int, float)
+]
+VALID_NEGATIVE = (
+    "loading.support_direction_deg",  # -1 deg is a valid direction
+    "loading.rotation_pivot_dx_mm",
+    "loading.rotation_pivot_dy_mm",  # a pivot anywhere
+    "imperfections.face_angle_mrad",
+    "imperfections.face_bump_mm",  # signed defects
+    "imperfections.voussoir_offset_mm",
+    "imperfections.keystone_offset_mm",
+    "imperfections.left_support_angle_mrad",
+    "imperfections.right_support_angle_mrad",
+    "imperfections.voussoir_thickness_mm",
+)
 BAD_VALUES = ["-1", "nan", "inf", "-inf", "1e300", "'text'", "true"]
 DERIVED = [  # inside each value's range, absurd together: refused from the plan, before YADE
-    ("support_rate_mm_per_s=1e-9", "max_steps"), ("gravity_ramp_periods=1e6", "gravity ramp"),
+    ("support_rate_mm_per_s=1e-9", "max_steps"),
+    ("gravity_ramp_periods=1e6", "gravity ramp"),
     ("thickness_mm=400", "internal_radius_mm"),
-    ("support_acceleration_mm_per_s2=1e-9", "max_steps"), ("hold_max_s=100", "max_steps"),
-    ("kn_N_per_mm3=1e5", "max_steps"), ("max_steps=10", "max_steps"),
-    ("edge_radius_mm=20", "edge_radius_mm"), ("keystone_offset_mm=30", "keystone_offset_mm"),
-    ("voussoir_length_sd_mm=20", "voussoir_length_sd_mm"), ("voussoir_thickness_mm=-15", "voussoir_thickness_mm"),
-    ("du_tolerance_mm=1", "du_tolerance_mm"), ("first_increment_mm=5", "first_increment_mm"),
+    ("support_acceleration_mm_per_s2=1e-9", "max_steps"),
+    ("hold_max_s=100", "max_steps"),
+    ("kn_N_per_mm3=1e5", "max_steps"),
+    ("max_steps=10", "max_steps"),
+    ("edge_radius_mm=20", "edge_radius_mm"),
+    ("keystone_offset_mm=30", "keystone_offset_mm"),
+    ("voussoir_length_sd_mm=20", "voussoir_length_sd_mm"),
+    ("voussoir_thickness_mm=-15", "voussoir_thickness_mm"),
+    ("du_tolerance_mm=1", "du_tolerance_mm"),
+    ("first_increment_mm=5", "first_increment_mm"),
 ]
 
 
 def probes() -> list[list[str]]:
     """Command lines that must each end in one line and exit code 1 (over 100 of them)."""
-    lines = [["run", "--preset", "set2", "--set", f"{q}={v}"] for q in NUMERIC for v in BAD_VALUES
-             if not (v == "-1" and q in VALID_NEGATIVE)]
+    lines = [
+        ["run", "--preset", "set2", "--set", f"{q}={v}"]
+        for q in NUMERIC
+        for v in BAD_VALUES
+        if not (v == "-1" and q in VALID_NEGATIVE)
+    ]
     lines += [["run", "--preset", "set2", "--set", s] for s, _ in DERIVED]
-    lines += [["run", "--kn", "abc"], ["run", "--bogus"], ["run", "--preset", "set9"],
-              ["run", "--preset", "set1", "--case", "x.toml"], ["run", "--set", "nokey"],
-              ["run", "--set", "no_such_parameter=1"], ["run", "--case", "/nonexistent/case.toml"],
-              ["run", "--set", "edge_radius_mm=1", "--set", "contact_model=cgal"],
-              ["run", "--set", "edge_shape=square"], ["run", "--set", "movement=wobble"],
-              ["run", "--set", "moving_support=middle"], ["limit", "--set", "moving_support=both"],
-              ["run", "--set", "support_motion=rotation", "--set", "rotation_pivot_dx_mm=10.644",
-               "--set", "rotation_pivot_dy_mm=5.541"],
-              ["sweep", "--preset", "set2", "--out", "OUT/s"], ["sweep", "--kn", "1:2:cubic:3", "--out", "OUT/s"],
-              ["sweep", "--kn", "0:1:log:3", "--out", "OUT/s"], ["sweep", "--param", "kn_N_per_mm3", "--out", "OUT/s"],
-              ["calibrate", "--preset", "set1", "--target-du", "nan", "--out", "OUT/c.json"],
-              ["calibrate", "--preset", "set1", "--target-du", "-5", "--out", "OUT/c.json"],
-              ["calibrate", "--preset", "set1", "--target-du", "48", "--kn-min", "5", "--kn-max", "1",
-               "--out", "OUT/c.json"],
-              ["report", "OUT/not-a-run", "--out", "OUT/r"], ["limit", "--set", "friction_deg=95"],
-              ["run", "--preset", "set2", "--engine", "static", "--out", "OUT/" + "x" * 250],
-              # campaigns: every run of a grid checked before the first starts (nothing runs)
-              ["sweep", "--preset", "set2", "--param", "n_voussoirs=a,b", "--out", "OUT/s"],
-              ["montecarlo", "--preset", "set2", "--samples", "2", "--param", "face_bump_mm=a,b", "--out", "OUT/m"],
-              ["robustness", "--kn", "abc", "--out", "OUT/r"], ["robustness", "--kn", "-1", "--out", "OUT/r"],
-              ["sweep", "--preset", "set2", "--kn", "-1:1:lin:3", "--out", "OUT/s"],
-              ["sweep", "--preset", "set2", "--kn", "1,inf", "--out", "OUT/s"],
-              ["sweep", "--preset", "set2", "--kn", "nan:1:log:3", "--out", "OUT/s"],
-              ["sweep", "--preset", "set2", "--kn", "1:2:log:10000000", "--out", "OUT/s"],
-              ["montecarlo", "--preset", "set2", "--samples", "2", "--param", "face_bump_sd_mm=-1,0.1",
-               "--out", "OUT/m"],
-              ["montecarlo", "--preset", "set2", "--samples", "2", "--seed", "4294967295", "--out", "OUT/m"],
-              ["montecarlo", "--preset", "set2", "--samples", "100000000", "--out", "OUT/m"],
-              ["sensitivity", "--preset", "set2", "--base-points", "100", "--out", "OUT/s"],
-              ["sensitivity", "--preset", "set2", "--factor", "kn_N_per_mm3=1", "--out", "OUT/s"],
-              ["sensitivity", "--preset", "set2", "--factor", "nothing=1:2", "--out", "OUT/s"],
-              ["sensitivity", "--preset", "set2", "--factor", "friction_deg=40:95", "--out", "OUT/s"],
-              ["sensitivity", "--preset", "set2", "--factor", "kn_N_per_mm3=0:5:log", "--out", "OUT/s"],
-              # views of a run: no run folder, an unknown format, no --vtk, a run from before states.npz
-              ["animate", "OUT/not-a-run"], ["animate", f"{REPO}/reports/set1", "--format", "avi"],
-              ["animate", f"{REPO}/reports/limit"], ["export", f"{REPO}/reports/set2"],
-              ["export", "OUT/not-a-run", "--vtk"], ["export", f"{REPO}/reports/kn-sweep/kn100", "--vtk"]]
-    shapes = [["shape=oval"], ["joint_orientation=skew"], ["shape=pointed", "pointed_radius_over_span=0.4"],
-              ["shape=elliptical", "rise_mm=400"], ["shape=three_centred", "rise_mm=300"],
-              ["shape=three_centred", "rise_mm=50", "thickness_mm=40"],
-              ["embrace_deg=180", "joint_orientation=vertical"], ["shape=pointed", "joint_orientation=vertical"]]
+    lines += [
+        ["run", "--kn", "abc"],
+        ["run", "--bogus"],
+        ["run", "--preset", "set9"],
+        ["run", "--preset", "set1", "--case", "x.toml"],
+        ["run", "--set", "nokey"],
+        ["run", "--set", "no_such_parameter=1"],
+        ["run", "--case", "/nonexistent/case.toml"],
+        ["run", "--set", "edge_radius_mm=1", "--set", "contact_model=cgal"],
+        ["run", "--set", "edge_shape=square"],
+        ["run", "--set", "movement=wobble"],
+        ["run", "--set", "moving_support=middle"],
+        ["limit", "--set", "moving_support=both"],
+        [
+            "run",
+            "--set",
+            "support_motion=rotation",
+            "--set",
+            "rotation_pivot_dx_mm=10.644",
+            "--set",
+            "rotation_pivot_dy_mm=5.541",
+        ],
+        ["sweep", "--preset", "set2", "--out", "OUT/s"],
+        ["sweep", "--kn", "1:2:cubic:3", "--out", "OUT/s"],
+        ["sweep", "--kn", "0:1:log:3", "--out", "OUT/s"],
+        ["sweep", "--param", "kn_N_per_mm3", "--out", "OUT/s"],
+        ["calibrate", "--preset", "set1", "--target-du", "nan", "--out", "OUT/c.json"],
+        ["calibrate", "--preset", "set1", "--target-du", "-5", "--out", "OUT/c.json"],
+        ["calibrate", "--preset", "set1", "--target-du", "48", "--kn-min", "5", "--kn-max", "1", "--out", "OUT/c.json"],
+        ["report", "OUT/not-a-run", "--out", "OUT/r"],
+        ["limit", "--set", "friction_deg=95"],
+        ["run", "--preset", "set2", "--engine", "static", "--out", "OUT/" + "x" * 250],
+        # campaigns: every run of a grid checked before the first starts (nothing runs)
+        ["sweep", "--preset", "set2", "--param", "n_voussoirs=a,b", "--out", "OUT/s"],
+        ["montecarlo", "--preset", "set2", "--samples", "2", "--param", "face_bump_mm=a,b", "--out", "OUT/m"],
+        ["robustness", "--kn", "abc", "--out", "OUT/r"],
+        ["robustness", "--kn", "-1", "--out", "OUT/r"],
+        ["sweep", "--preset", "set2", "--kn", "-1:1:lin:3", "--out", "OUT/s"],
+        ["sweep", "--preset", "set2", "--kn", "1,inf", "--out", "OUT/s"],
+        ["sweep", "--preset", "set2", "--kn", "nan:1:log:3", "--out", "OUT/s"],
+        ["sweep", "--preset", "set2", "--kn", "1:2:log:10000000", "--out", "OUT/s"],
+        ["montecarlo", "--preset", "set2", "--samples", "2", "--param", "face_bump_sd_mm=-1,0.1", "--out", "OUT/m"],
+        ["montecarlo", "--preset", "set2", "--samples", "2", "--seed", "4294967295", "--out", "OUT/m"],
+        ["montecarlo", "--preset", "set2", "--samples", "100000000", "--out", "OUT/m"],
+        ["sensitivity", "--preset", "set2", "--base-points", "100", "--out", "OUT/s"],
+        ["sensitivity", "--preset", "set2", "--factor", "kn_N_per_mm3=1", "--out", "OUT/s"],
+        ["sensitivity", "--preset", "set2", "--factor", "nothing=1:2", "--out", "OUT/s"],
+        ["sensitivity", "--preset", "set2", "--factor", "friction_deg=40:95", "--out", "OUT/s"],
+        ["sensitivity", "--preset", "set2", "--factor", "kn_N_per_mm3=0:5:log", "--out", "OUT/s"],
+        # views of a run: no run folder, an unknown format, no --vtk, a run from before states.npz
+        ["animate", "OUT/not-a-run"],
+        ["animate", f"{REPO}/reports/set1", "--format", "avi"],
+        ["animate", f"{REPO}/reports/limit"],
+        ["export", f"{REPO}/reports/set2"],
+        ["export", "OUT/not-a-run", "--vtk"],
+        ["export", f"{REPO}/reports/kn-sweep/kn100", "--vtk"],
+    ]
+    shapes = [
+        ["shape=oval"],
+        ["joint_orientation=skew"],
+        ["shape=pointed", "pointed_radius_over_span=0.4"],
+        ["shape=elliptical", "rise_mm=400"],
+        ["shape=three_centred", "rise_mm=300"],
+        ["shape=three_centred", "rise_mm=50", "thickness_mm=40"],
+        ["embrace_deg=180", "joint_orientation=vertical"],
+        ["shape=pointed", "joint_orientation=vertical"],
+    ]
     for command in ("run", "limit"):  # arches that cannot be built, refused before YADE or an LP
         lines += [[command, "--preset", "set2", *(a for s in settings for a in ("--set", s))] for settings in shapes]
     return lines
@@ -101,6 +147,7 @@ def no_simulation(monkeypatch):
 
     def refuse(*args, **kwargs):
         raise SimulationStarted(f"a simulation was started: {args[0] if args else kwargs}")
+
     monkeypatch.setattr(process, "_run_child", refuse)
 
 
@@ -131,14 +178,14 @@ def test_derived_quantities_are_named_in_the_refusal():
         assert words is None or words in str(error.value), (setting, str(error.value))
 
 
-TOML_SCALARS = st.one_of(st.integers(-10**6, 10**6), st.floats(allow_nan=True), st.booleans(),
-                         st.text(max_size=5))
-SECTION_NAMES = st.sampled_from(["geometry", "material", "interface", "loading", "numerics", "name",
-                                 "other"])
+TOML_SCALARS = st.one_of(st.integers(-(10**6), 10**6), st.floats(allow_nan=True), st.booleans(), st.text(max_size=5))
+SECTION_NAMES = st.sampled_from(["geometry", "material", "interface", "loading", "numerics", "name", "other"])
 KEYS = st.sampled_from([q.split(".")[1] for q, _, _ in parameter_docs()] + ["unknown_key"])
-SECTION_VALUES = st.one_of(TOML_SCALARS, st.lists(TOML_SCALARS, max_size=2),
-                     st.dictionaries(KEYS, st.one_of(TOML_SCALARS, st.lists(TOML_SCALARS, max_size=2)),
-                                     max_size=4))
+SECTION_VALUES = st.one_of(
+    TOML_SCALARS,
+    st.lists(TOML_SCALARS, max_size=2),
+    st.dictionaries(KEYS, st.one_of(TOML_SCALARS, st.lists(TOML_SCALARS, max_size=2)), max_size=4),
+)
 
 
 @settings(max_examples=300, deadline=None)
@@ -180,6 +227,7 @@ def test_limit_says_when_kn_plays_no_part(tmp_path, capsys, monkeypatch):
 
     def analysis_started(*args, **kwargs):
         raise YadearchError("analysis started")
+
     monkeypatch.setattr(limit, "limit_analysis", analysis_started)
     assert main(["limit", "--preset", "set2", "--kn", "100", "--out", str(tmp_path)]) == 1
     err = capsys.readouterr().err

@@ -14,8 +14,7 @@ pytestmark = [needs_yade, pytest.mark.yade]
 if HAS_YADE:
     import_yade()
 
-COARSE = {"n_voussoirs": 15, "kn_N_per_mm3": 0.25, "equilibrium_tolerance": 1e-4,
-          "progress_every_s": 1e9}
+COARSE = {"n_voussoirs": 15, "kn_N_per_mm3": 0.25, "equilibrium_tolerance": 1e-4, "progress_every_s": 1e9}
 
 
 # The tests share one arch and run in file order, each settling the support further: the holds come

@@ -33,8 +33,16 @@ def _scene(model, geometry, fixed, gravity=(0.0, 0.0, 0.0), damping=0.0, dt=1e-6
 
     from yadearch.engine.scene import build_block_scene
 
-    scene = build_block_scene(geometry, ContactStiffness(KN, KS, TAN_PHI), density=RHO,
-                              gravity=gravity, damping=damping, dt=dt, fixed=fixed, contact_model=model)
+    scene = build_block_scene(
+        geometry,
+        ContactStiffness(KN, KS, TAN_PHI),
+        density=RHO,
+        gravity=gravity,
+        damping=damping,
+        dt=dt,
+        fixed=fixed,
+        contact_model=model,
+    )
     for top in scene.body_ids[1::2]:
         O.bodies[top].state.pos = O.bodies[top].state.pos - (0.0, overlap, 0.0)
     return scene
@@ -79,8 +87,7 @@ def test_two_contacts_sheared_differently_keep_their_own_shear_forces(model):
     from yade import O
 
     width, depth, overlap = 0.05, 0.1, 4e-6
-    scene = _scene(model, stacked_pairs([0.0, 1.0], width, 0.02, depth), fixed={0, 1, 2, 3},
-                   overlap=overlap)
+    scene = _scene(model, stacked_pairs([0.0, 1.0], width, 0.02, depth), fixed={0, 1, 2, 3}, overlap=overlap)
     speeds = (1e-3, -3e-3)  # m/s along x, opposite directions and different magnitudes
     for top, v in zip((1, 3), speeds):
         O.bodies[scene.body_ids[top]].state.vel = (v, 0.0, 0.0)
@@ -114,8 +121,9 @@ def test_block_on_tilted_plane_stays_below_the_friction_angle_and_slides_above(m
 
     g = 9.81
     tilt = math.radians(tilt_deg)
-    scene = _scene(model, stacked_pairs([0.0], 0.1, 0.02, 0.05), fixed={0}, gravity=(0.0, -g, 0.0),
-                   damping=0.5, dt=2e-6)
+    scene = _scene(
+        model, stacked_pairs([0.0], 0.1, 0.02, 0.05), fixed={0}, gravity=(0.0, -g, 0.0), damping=0.5, dt=2e-6
+    )
     newton = O.engines[-1]
     for k in range(1, 41):  # settle, then tilt gradually so that no impact makes the block jump
         newton.gravity = (g * math.sin(tilt * k / 40), -g * math.cos(tilt * k / 40), 0.0)
@@ -143,12 +151,10 @@ def test_joint_elements_and_cgal_collapse_a_coarse_arch_alike():
     from yadearch.engine.runner import Runner
     from yadearch.model.hinges import same_hinges
 
-    coarse = {"n_voussoirs": 9, "kn_N_per_mm3": 0.3, "support_rate_mm_per_s": 30.0,
-              "progress_every_s": 1e9}
+    coarse = {"n_voussoirs": 9, "kn_N_per_mm3": 0.3, "support_rate_mm_per_s": 30.0, "progress_every_s": 1e9}
     results = {}
     for model in ("joint", "cgal"):
-        runner = Runner(preset("set1").with_overrides({**coarse, "contact_model": model}),
-                        log=lambda line: None)
+        runner = Runner(preset("set1").with_overrides({**coarse, "contact_model": model}), log=lambda line: None)
         results[model] = runner.run()
     joint, cgal = results["joint"], results["cgal"]
     assert joint.collapsed and cgal.collapsed

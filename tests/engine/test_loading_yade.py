@@ -77,7 +77,8 @@ def test_every_accepted_state_is_stable_and_the_last_one_near_the_limit_point(ba
 def test_du_does_not_move_with_the_loading_increment(base_run):
     summary, _ = base_run
     num = preset("set1").numerics
-    halved, _ = run({"first_increment_mm": 0.5 * num.first_increment_mm,
-                     "max_increment_mm": 0.5 * num.max_increment_mm})
+    halved, _ = run(
+        {"first_increment_mm": 0.5 * num.first_increment_mm, "max_increment_mm": 0.5 * num.max_increment_mm}
+    )
     assert halved.du_mm == pytest.approx(summary.du_mm, rel=DU_TOLERANCE)
     assert same_hinges(halved.hinges_detail, summary.hinges_detail)

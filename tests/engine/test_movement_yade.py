@@ -58,8 +58,9 @@ def test_moving_supports_follow_the_path_the_case_describes(movement):
             assert angle == pytest.approx(expected_angle, abs=1e-12)
             assert shift == pytest.approx(expected_shift, abs=PLACE_TOLERANCE_M)
             pivot_now = rotate(motion.pivot, angle) + shift
-            assert pivot_now == pytest.approx(motion.pivot + motion.translation * units.mm(PATH_MM),
-                                              abs=PLACE_TOLERANCE_M)
+            assert pivot_now == pytest.approx(
+                motion.pivot + motion.translation * units.mm(PATH_MM), abs=PLACE_TOLERANCE_M
+            )
     finally:
         runner.close()
 

@@ -70,8 +70,12 @@ def test_each_voussoir_gets_its_drawn_length_and_thickness():
     nominal = np.linalg.norm(np.diff([j.intrados for j in designed.joints], axis=0), axis=1)
     now = np.linalg.norm(np.diff([j.intrados for j in built.joints], axis=0), axis=1)
     assert np.abs(now - (nominal + errors.length)).max() < 0.01 * 3e-4
-    faces = np.array([[np.linalg.norm(_front(b)[3] - _front(b)[0]), np.linalg.norm(_front(b)[2] - _front(b)[1])]
-                      for b in built.voussoirs])
+    faces = np.array(
+        [
+            [np.linalg.norm(_front(b)[3] - _front(b)[0]), np.linalg.norm(_front(b)[2] - _front(b)[1])]
+            for b in built.voussoirs
+        ]
+    )
     assert faces == pytest.approx(np.column_stack([designed.thickness + errors.thickness] * 2), abs=1e-12)
     shared = np.minimum(np.append(designed.thickness, faces[:, 1]), np.append(faces[:, 0], designed.thickness))
     assert [j.length for j in built.joints] == pytest.approx(shared, abs=1e-12)

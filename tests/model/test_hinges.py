@@ -31,12 +31,15 @@ def test_uniformly_pressed_joints_give_no_hinge():
 
 
 def test_a_hinge_whose_peak_moves_within_its_spread_is_the_same_hinge():
-    default = [{"interface": 1, "side": "E", "interfaces": [1]},
-               {"interface": 11, "side": "I", "interfaces": [10, 11, 12]}]
-    shifted = [{"interface": 1, "side": "E", "interfaces": [1]},
-               {"interface": 12, "side": "I", "interfaces": [11, 12, 13]}]
-    moved = [{"interface": 1, "side": "E", "interfaces": [1]},
-             {"interface": 14, "side": "I", "interfaces": [13, 14]}]
+    default = [
+        {"interface": 1, "side": "E", "interfaces": [1]},
+        {"interface": 11, "side": "I", "interfaces": [10, 11, 12]},
+    ]
+    shifted = [
+        {"interface": 1, "side": "E", "interfaces": [1]},
+        {"interface": 12, "side": "I", "interfaces": [11, 12, 13]},
+    ]
+    moved = [{"interface": 1, "side": "E", "interfaces": [1]}, {"interface": 14, "side": "I", "interfaces": [13, 14]}]
     assert same_hinges(default, shifted)
     assert not same_hinges(default, moved)
     assert not same_hinges(default, default[:1])

@@ -31,12 +31,22 @@ WIDTH, HEIGHT, DEPTH = 0.024, 0.02, 0.1
 LAW = JointLaw(KN, KS, TAN_PHI, DEPTH)
 
 
-def _defects(intrados_edge: float = 0.0, angle: float = 0.0, bump: float = 0.0,
-             shape: str = ROUND, offset: float = 0.0) -> JointDefects:
+def _defects(
+    intrados_edge: float = 0.0, angle: float = 0.0, bump: float = 0.0, shape: str = ROUND, offset: float = 0.0
+) -> JointDefects:
     """One joint whose upper (right) face has a worn intrados edge, an angle, a bump and an offset."""
     zero = np.zeros(1)
-    return JointDefects(zero, zero, np.array([intrados_edge]), zero, np.array([angle]), np.array([bump]), shape,
-                        zero, np.array([offset]))
+    return JointDefects(
+        zero,
+        zero,
+        np.array([intrados_edge]),
+        zero,
+        np.array([angle]),
+        np.array([bump]),
+        shape,
+        zero,
+        np.array([offset]),
+    )
 
 
 def _table(defects: JointDefects | None):
@@ -47,8 +57,9 @@ def _table(defects: JointDefects | None):
 
 
 def _forces(table, pos, rot=None):
-    return joint_forces(table, LAW, pos, np.zeros(2) if rot is None else rot, np.zeros((2, 2)),
-                        np.zeros(2), np.zeros(1), 1e-6)
+    return joint_forces(
+        table, LAW, pos, np.zeros(2) if rot is None else rot, np.zeros((2, 2)), np.zeros(2), np.zeros(1), 1e-6
+    )
 
 
 def _hinge(table, pos, angle: float, deep: float):
@@ -158,8 +169,9 @@ def test_a_convex_bump_touches_in_the_middle_and_a_hollow_one_at_the_ends():
         pressed[1, 1] -= closure
         forces = _forces(table, pressed)
         assert forces.point[0, 0] == pytest.approx(0.0, abs=1e-9)  # symmetric either way
-        assert forces.compressed_length[0] == pytest.approx(0.5 * WIDTH if middle_touches else
-                                                            (1 - math.sqrt(0.75)) * WIDTH, rel=0.02)
+        assert forces.compressed_length[0] == pytest.approx(
+            0.5 * WIDTH if middle_touches else (1 - math.sqrt(0.75)) * WIDTH, rel=0.02
+        )
 
 
 def test_a_profile_of_zero_gaps_integrates_to_the_perfect_joint():
@@ -185,8 +197,9 @@ def test_zero_amplitudes_are_the_perfect_arch_bit_for_bit():
 
 
 def test_one_seed_gives_one_geometry_and_another_seed_another():
-    case = preset("set2").replace(edge_radius_mm=1.0, edge_radius_sd_mm=0.5, face_angle_sd_mrad=1.0,
-                                  face_bump_sd_mm=0.005, seed=11)
+    case = preset("set2").replace(
+        edge_radius_mm=1.0, edge_radius_sd_mm=0.5, face_angle_sd_mrad=1.0, face_bump_sd_mm=0.005, seed=11
+    )
     geometry = arch_geometry(case)
     first, again = arch_imperfections(case, geometry), arch_imperfections(case, geometry)
     other = arch_imperfections(case.replace(seed=12), geometry)

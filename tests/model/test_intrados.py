@@ -43,13 +43,14 @@ def directions(geometry) -> np.ndarray:
 
 
 SHAPES = {
-    "pointed even": dict(shape="pointed", span_mm=SPAN, pointed_radius_over_span=1.0, thickness_mm=40.0,
-                         n_voussoirs=30),
-    "pointed odd": dict(shape="pointed", span_mm=SPAN, pointed_radius_over_span=0.8, thickness_mm=40.0,
-                        n_voussoirs=31),
+    "pointed even": dict(
+        shape="pointed", span_mm=SPAN, pointed_radius_over_span=1.0, thickness_mm=40.0, n_voussoirs=30
+    ),
+    "pointed odd": dict(shape="pointed", span_mm=SPAN, pointed_radius_over_span=0.8, thickness_mm=40.0, n_voussoirs=31),
     "elliptical": dict(shape="elliptical", span_mm=SPAN, rise_mm=RISE, thickness_mm=30.0, n_voussoirs=40),
-    "elliptical radial": dict(shape="elliptical", span_mm=SPAN, rise_mm=RISE, thickness_mm=30.0,
-                              n_voussoirs=40, joint_orientation="radial"),
+    "elliptical radial": dict(
+        shape="elliptical", span_mm=SPAN, rise_mm=RISE, thickness_mm=30.0, n_voussoirs=40, joint_orientation="radial"
+    ),
     "three-centred": dict(shape="three_centred", span_mm=SPAN, rise_mm=RISE, thickness_mm=30.0, n_voussoirs=40),
     "segmental vertical": dict(embrace_deg=90.0, joint_orientation="vertical"),
 }
@@ -89,8 +90,9 @@ def test_every_shape_is_symmetric_about_the_crown(overrides):
 @pytest.mark.parametrize("n_voussoirs, ratio", [(30, 1.0), (31, 1.0), (10, 2.2)])
 def test_pointed_arch_has_its_apex_on_the_axis_and_joints_normal_to_its_arcs(n_voussoirs, ratio):
     t = 0.04
-    _, g = build(shape="pointed", span_mm=SPAN, pointed_radius_over_span=ratio, thickness_mm=1e3 * t,
-                 n_voussoirs=n_voussoirs)
+    _, g = build(
+        shape="pointed", span_mm=SPAN, pointed_radius_over_span=ratio, thickness_mm=1e3 * t, n_voussoirs=n_voussoirs
+    )
     span, r = SPAN / 1e3, ratio * SPAN / 1e3
     offset = r - span / 2  # each arc's centre sits on the springing line, across the axis
     assert g.span == pytest.approx(span, abs=EXACT)
@@ -112,14 +114,17 @@ def test_pointed_arch_has_its_apex_on_the_axis_and_joints_normal_to_its_arcs(n_v
 
 @pytest.mark.parametrize("orientation", ["normal", "radial"])
 def test_elliptical_intrados_is_on_the_ellipse_in_voussoirs_of_equal_length(orientation):
-    _, g = build(shape="elliptical", span_mm=SPAN, rise_mm=RISE, thickness_mm=30.0, n_voussoirs=40,
-                 joint_orientation=orientation)
+    _, g = build(
+        shape="elliptical", span_mm=SPAN, rise_mm=RISE, thickness_mm=30.0, n_voussoirs=40, joint_orientation=orientation
+    )
     a, b = SPAN / 2e3, RISE / 1e3
     points = np.array([j.intrados for j in g.joints])
     assert np.allclose((points[:, 0] / a) ** 2 + (points[:, 1] / b) ** 2, 1.0, rtol=0, atol=EXACT)
     eccentric = np.arctan2(points[:, 1] / b, -points[:, 0] / a)
-    lengths = [quad(lambda p: math.hypot(a * math.sin(p), b * math.cos(p)), p0, p1, epsabs=1e-14)[0]
-               for p0, p1 in zip(eccentric[:-1], eccentric[1:])]
+    lengths = [
+        quad(lambda p: math.hypot(a * math.sin(p), b * math.cos(p)), p0, p1, epsabs=1e-14)[0]
+        for p0, p1 in zip(eccentric[:-1], eccentric[1:])
+    ]
     assert np.allclose(lengths, np.mean(lengths), rtol=1e-10, atol=0)
     for joint, d in zip(g.joints, directions(g)):
         if orientation == "normal":  # along the ellipse's normal, the ring 30 mm thick
@@ -186,8 +191,9 @@ def test_run_folders_of_the_paper_arch_rebuild_it_to_the_last_bit():
     new_keys = {"shape", "span_mm", "rise_mm", "pointed_radius_over_span", "joint_orientation"}
     stored["geometry"] = {k: v for k, v in stored["geometry"].items() if k not in new_keys}
     # to round-off: numpy's vectorised sin/cos differ in the last bit between CPUs (2 ulp here)
-    np.testing.assert_allclose(np.array(case_geometry(stored).blocks), np.load(REFERENCE)["blocks"],
-                               rtol=0.0, atol=ROUNDOFF_M)
+    np.testing.assert_allclose(
+        np.array(case_geometry(stored).blocks), np.load(REFERENCE)["blocks"], rtol=0.0, atol=ROUNDOFF_M
+    )
     case, g = build(**SHAPES["pointed odd"])
     assert np.array_equal(np.array(case_geometry(case.to_dict()).blocks), np.array(g.blocks))
 
@@ -200,11 +206,15 @@ def test_every_shape_and_orientation_offered_is_built():
 REFUSALS = [  # overrides, words the one-line refusal must contain (parameter, value, accepted range)
     (dict(shape="elliptical", span_mm=600.0, rise_mm=400.0), ["geometry.rise_mm = 400", "at most 300 mm"]),
     (dict(shape="three_centred", span_mm=600.0, rise_mm=300.0), ["geometry.rise_mm = 300", "below 300 mm"]),
-    (dict(shape="three_centred", span_mm=600.0, rise_mm=50.0, thickness_mm=40.0),
-     ["geometry.thickness_mm = 40", "below 27.44", "smallest radius of curvature"]),
+    (
+        dict(shape="three_centred", span_mm=600.0, rise_mm=50.0, thickness_mm=40.0),
+        ["geometry.thickness_mm = 40", "below 27.44", "smallest radius of curvature"],
+    ),
     (dict(shape="elliptical", span_mm=600.0, rise_mm=100.0, thickness_mm=40.0), ["thickness_mm = 40", "below 33.33"]),
-    (dict(embrace_deg=180.0, joint_orientation="vertical"),
-     ["geometry.joint_orientation = 'vertical'", "interface", "at least 20 deg"]),
+    (
+        dict(embrace_deg=180.0, joint_orientation="vertical"),
+        ["geometry.joint_orientation = 'vertical'", "interface", "at least 20 deg"],
+    ),
     (dict(shape="pointed", joint_orientation="vertical"), ["joint_orientation = 'vertical'", "0 deg"]),
     (dict(shape="pointed", pointed_radius_over_span=0.4), ["pointed_radius_over_span must be in [0.5, 10], got 0.4"]),
     (dict(shape="oval"), ["shape must be one of segmental, pointed, elliptical, three_centred, got 'oval'"]),
@@ -221,16 +231,30 @@ def test_impossible_arches_are_refused_in_one_line_naming_the_parameter(override
 
 
 @settings(max_examples=60, deadline=None)
-@given(shape=st.sampled_from(["segmental", "pointed", "elliptical", "three_centred"]),
-       orientation=st.sampled_from(["normal", "vertical", "radial"]), n=st.integers(2, 40),
-       span=st.floats(50.0, 5000.0), rise_fraction=st.floats(0.01, 0.5), ratio=st.floats(0.5, 3.0),
-       embrace=st.floats(1.0, 180.0), thickness_fraction=st.floats(0.001, 0.5))
-def test_any_shape_in_range_builds_a_sound_arch_or_is_refused_in_one_line(shape, orientation, n, span,
-                                                                          rise_fraction, ratio, embrace,
-                                                                          thickness_fraction):
-    overrides = dict(shape=shape, joint_orientation=orientation, n_voussoirs=n, span_mm=span,
-                     rise_mm=rise_fraction * span, pointed_radius_over_span=ratio, embrace_deg=embrace,
-                     internal_radius_mm=span / 2, thickness_mm=thickness_fraction * span)
+@given(
+    shape=st.sampled_from(["segmental", "pointed", "elliptical", "three_centred"]),
+    orientation=st.sampled_from(["normal", "vertical", "radial"]),
+    n=st.integers(2, 40),
+    span=st.floats(50.0, 5000.0),
+    rise_fraction=st.floats(0.01, 0.5),
+    ratio=st.floats(0.5, 3.0),
+    embrace=st.floats(1.0, 180.0),
+    thickness_fraction=st.floats(0.001, 0.5),
+)
+def test_any_shape_in_range_builds_a_sound_arch_or_is_refused_in_one_line(
+    shape, orientation, n, span, rise_fraction, ratio, embrace, thickness_fraction
+):
+    overrides = dict(
+        shape=shape,
+        joint_orientation=orientation,
+        n_voussoirs=n,
+        span_mm=span,
+        rise_mm=rise_fraction * span,
+        pointed_radius_over_span=ratio,
+        embrace_deg=embrace,
+        internal_radius_mm=span / 2,
+        thickness_mm=thickness_fraction * span,
+    )
     try:
         _, g = build(**overrides)
     except CaseError as exc:
@@ -256,8 +280,9 @@ def test_each_shape_made_a_semicircle_has_milankovitchs_minimum_thickness(semici
     # test_limit.py, now built by the general builder of each shape
     def arch(t_over_r: float) -> ArchCase:
         radius, t = 1000.0, t_over_r * 1000.0
-        return preset("set2").with_overrides({**semicircle(radius - t / 2), "n_voussoirs": 120,
-                                               "thickness_mm": t, "friction_deg": 60.0})
+        return preset("set2").with_overrides(
+            {**semicircle(radius - t / 2), "n_voussoirs": 120, "thickness_mm": t, "friction_deg": 60.0}
+        )
 
     assert stands(arch(1.02 * 0.1075))
     assert not stands(arch(0.98 * 0.1075))
@@ -273,9 +298,28 @@ def test_pointed_arch_under_settlement_collapses_on_four_hinges():
 
 def test_limit_command_takes_the_shape_from_the_command_line(tmp_path, capsys):
     out = tmp_path / "limit"
-    assert main(["limit", "--preset", "set2", "--set", "geometry.shape=pointed", "--set", "geometry.span_mm=600",
-                 "--set", "geometry.thickness_mm=40", "--set", "n_voussoirs=15", "--set", "name=pointed",
-                 "--out", str(out)]) == 0
+    assert (
+        main(
+            [
+                "limit",
+                "--preset",
+                "set2",
+                "--set",
+                "geometry.shape=pointed",
+                "--set",
+                "geometry.span_mm=600",
+                "--set",
+                "geometry.thickness_mm=40",
+                "--set",
+                "n_voussoirs=15",
+                "--set",
+                "name=pointed",
+                "--out",
+                str(out),
+            ]
+        )
+        == 0
+    )
     data = json.loads((out / "pointed.json").read_text())
     assert data["case"]["geometry"]["shape"] == "pointed" and data["du_rigid_mm"] > 0
     assert "du_rigid" in capsys.readouterr().out

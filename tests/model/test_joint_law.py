@@ -24,10 +24,16 @@ def _pairs(n_pairs: int = 1):
 
 def _evaluate(table, pos, rot=None, vel=None, ang_vel=None, shear=None, dt=1e-6):
     n_blocks, n_joints = len(pos), len(table.left)
-    return joint_forces(table, LAW, pos, np.zeros(n_blocks) if rot is None else rot,
-                        np.zeros((n_blocks, 2)) if vel is None else vel,
-                        np.zeros(n_blocks) if ang_vel is None else ang_vel,
-                        np.zeros(n_joints) if shear is None else shear, dt)
+    return joint_forces(
+        table,
+        LAW,
+        pos,
+        np.zeros(n_blocks) if rot is None else rot,
+        np.zeros((n_blocks, 2)) if vel is None else vel,
+        np.zeros(n_blocks) if ang_vel is None else ang_vel,
+        np.zeros(n_joints) if shear is None else shear,
+        dt,
+    )
 
 
 def _rotate_about(pos, index, pivot, angle):
@@ -113,8 +119,7 @@ def test_joint_forces_are_action_and_reaction():
     angle = 1e-4
     pos[1, 1] -= 3e-6
     _rotate_about(pos, 1, np.array([0.0, 0.0]), angle)
-    forces = _evaluate(table, pos, rot=np.array([0.0, angle]), vel=np.array([[0, 0], [1e-3, 0]]),
-                       shear=np.array([5.0]))
+    forces = _evaluate(table, pos, rot=np.array([0.0, angle]), vel=np.array([[0, 0], [1e-3, 0]]), shear=np.array([5.0]))
     assert forces.block_force.sum(axis=0) == pytest.approx([0.0, 0.0], abs=1e-9)
     moments = forces.block_torque + pos[:, 0] * forces.block_force[:, 1] - pos[:, 1] * forces.block_force[:, 0]
     assert moments.sum() == pytest.approx(0.0, abs=1e-9)

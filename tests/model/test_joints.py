@@ -43,8 +43,14 @@ def test_z_rotation_of_quaternions_relative_to_an_arbitrary_start():
     def mul(p, q):
         w1, x1, y1, z1 = p
         w2, x2, y2, z2 = q
-        return np.array([w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2, w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
-                         w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2])
+        return np.array(
+            [
+                w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
+                w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+                w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
+                w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
+            ]
+        )
 
     start = quat([0.3, -1.0, 0.5], 1.1)  # principal axes of a polyhedron: any orientation
     now = mul(quat([0, 0, 1], 0.25), start)

@@ -27,10 +27,15 @@ def movement(**loading):
     return case_movement(case, arch_geometry(case))
 
 
-@pytest.mark.parametrize("loading", [{}, {"support_direction_deg": 0.0},
-                                     {"support_motion": "rotation", "rotation_pivot_dy_mm": -200.0},
-                                     {"support_motion": "rotation", "rotation_pivot_dx_mm": 50.0,
-                                      "rotation_sense": "counterclockwise"}])
+@pytest.mark.parametrize(
+    "loading",
+    [
+        {},
+        {"support_direction_deg": 0.0},
+        {"support_motion": "rotation", "rotation_pivot_dy_mm": -200.0},
+        {"support_motion": "rotation", "rotation_pivot_dx_mm": 50.0, "rotation_sense": "counterclockwise"},
+    ],
+)
 def test_the_springing_point_travels_the_path_length(loading):
     """Along a straight line for a translation, an arc for a rotation: du is the path length."""
     ref = movement(**loading).reference
@@ -62,12 +67,19 @@ def test_both_supports_move_as_mirror_images():
     assert move.left.rotation == -move.right.rotation
 
 
-@pytest.mark.parametrize("loading, itself", [
-    ({"support_direction_deg": 0.0}, True), ({"support_direction_deg": 180.0}, True),
-    ({"moving_support": "both"}, True), ({}, False), ({"support_direction_deg": -45.0}, False),
-    ({"support_motion": "rotation", "rotation_pivot_dy_mm": -100.0}, False),
-    ({"support_motion": "path", "path_mm_mrad": [[10.0, 0.0, 0.0], [30.0, 0.0, 0.0]]}, True),
-    ({"support_motion": "path", "path_mm_mrad": [[0.0, -20.0, 0.0], [60.0, -20.0, 0.0]]}, False)])
+@pytest.mark.parametrize(
+    "loading, itself",
+    [
+        ({"support_direction_deg": 0.0}, True),
+        ({"support_direction_deg": 180.0}, True),
+        ({"moving_support": "both"}, True),
+        ({}, False),
+        ({"support_direction_deg": -45.0}, False),
+        ({"support_motion": "rotation", "rotation_pivot_dy_mm": -100.0}, False),
+        ({"support_motion": "path", "path_mm_mrad": [[10.0, 0.0, 0.0], [30.0, 0.0, 0.0]]}, True),
+        ({"support_motion": "path", "path_mm_mrad": [[0.0, -20.0, 0.0], [60.0, -20.0, 0.0]]}, False),
+    ],
+)
 def test_a_movement_is_its_own_mirror_image_only_when_level_or_symmetric(loading, itself):
     """A level slide of one support mirrors to the same slide plus a rigid shift of the whole arch;
     anything vertical or turning mirrors to another movement (the keystone's tie then matters)."""
@@ -97,17 +109,23 @@ def test_a_pivot_on_the_springing_point_is_refused_in_one_line(geometry):
     half = math.hypot(*(np.asarray(geometry.joints[-1].extrados[:2]) - geometry.joints[-1].intrados[:2])) / 2
     angle = math.atan2(*(np.asarray(geometry.joints[-1].extrados[:2]) - geometry.joints[-1].intrados[:2])[::-1])
     with pytest.raises(CaseError, match="rotation_pivot_dx_mm"):
-        movement(support_motion="rotation", rotation_pivot_dx_mm=1e3 * half * math.cos(angle),
-                 rotation_pivot_dy_mm=1e3 * half * math.sin(angle))
+        movement(
+            support_motion="rotation",
+            rotation_pivot_dx_mm=1e3 * half * math.cos(angle),
+            rotation_pivot_dy_mm=1e3 * half * math.sin(angle),
+        )
 
 
-@pytest.mark.parametrize("loading, expected", [
-    ({}, 640.0),  # a settlement: no horizontal component, the default acceleration to the bit
-    ({"support_direction_deg": 0.0}, 40.0),
-    ({"support_direction_deg": -45.0}, 40.0 / math.cos(math.radians(45.0))),
-    ({"support_direction_deg": 0.0, "support_horizontal_acceleration_mm_per_s2": 0.0}, 640.0),  # no cap
-    ({"support_motion": "rotation", "rotation_pivot_dy_mm": -200.0}, 40.3),  # the springing starts sideways
-])
+@pytest.mark.parametrize(
+    "loading, expected",
+    [
+        ({}, 640.0),  # a settlement: no horizontal component, the default acceleration to the bit
+        ({"support_direction_deg": 0.0}, 40.0),
+        ({"support_direction_deg": -45.0}, 40.0 / math.cos(math.radians(45.0))),
+        ({"support_direction_deg": 0.0, "support_horizontal_acceleration_mm_per_s2": 0.0}, 640.0),  # no cap
+        ({"support_motion": "rotation", "rotation_pivot_dy_mm": -200.0}, 40.3),  # the springing starts sideways
+    ],
+)
 def test_the_support_accelerates_gently_where_it_moves_sideways(loading, expected):
     """A horizontal jolt loads the arch like a ground acceleration (docs/validation.md): its
     horizontal component stays within support_horizontal_acceleration_mm_per_s2 (40 mm/s2)."""

@@ -74,12 +74,15 @@ def test_the_left_support_follows_the_mirror_image():
     assert movement([[0.0, -5.0, 0.0], [0.0, -9.0, 0.0]], moving_support="both").moves_rigidly
 
 
-@pytest.mark.parametrize("rows, match", [
-    ([[0.0, 0.0, 3.0]], "row 1 does not move the springing point"),
-    ([[1.0, 2.0]], r"path_mm_mrad must be a list of \[dx_mm, dy_mm, rotation_mrad\] rows; row 1"),
-    ([[1.0, "a", 0.0]], "row 1"),
-    ([], "needs at least one row"),
-])
+@pytest.mark.parametrize(
+    "rows, match",
+    [
+        ([[0.0, 0.0, 3.0]], "row 1 does not move the springing point"),
+        ([[1.0, 2.0]], r"path_mm_mrad must be a list of \[dx_mm, dy_mm, rotation_mrad\] rows; row 1"),
+        ([[1.0, "a", 0.0]], "row 1"),
+        ([], "needs at least one row"),
+    ],
+)
 def test_a_bad_path_is_refused_in_one_line(rows, match):
     with pytest.raises(CaseError, match=match) as caught:
         movement(rows)

@@ -15,7 +15,8 @@ from yadearch.analysis.blocks import case_geometry, snapshot_outlines
 from yadearch.cli.commands import report
 from yadearch.errors import YadearchError
 from yadearch.plotting import run_figures as figures
-from yadearch.reporting.report import match_reference, write_report
+from yadearch.reporting.paper_match import match_reference
+from yadearch.reporting.report import write_report
 from yadearch.results.summary import RunSummary
 
 
@@ -69,11 +70,13 @@ def test_every_figure_is_a_non_empty_pdf_and_png(tmp_path):
     make_run(tmp_path / "run")
     run = load_run(tmp_path / "run")
     analysis = analyse_run(run)
-    written = [figures.plot_collapse(run, analysis, tmp_path / "f" / "collapse"),
-               figures.plot_reactions(run, analysis, tmp_path / "f" / "reactions"),
-               figures.plot_hinge_openings(run, analysis, tmp_path / "f" / "hinges"),
-               figures.plot_crown_displacement(run, analysis, tmp_path / "f" / "crown"),
-               figures.plot_stability(run, analysis, tmp_path / "f" / "stability")]
+    written = [
+        figures.plot_collapse(run, analysis, tmp_path / "f" / "collapse"),
+        figures.plot_reactions(run, analysis, tmp_path / "f" / "reactions"),
+        figures.plot_hinge_openings(run, analysis, tmp_path / "f" / "hinges"),
+        figures.plot_crown_displacement(run, analysis, tmp_path / "f" / "crown"),
+        figures.plot_stability(run, analysis, tmp_path / "f" / "stability"),
+    ]
     for pdf, png in written:
         assert pdf.read_bytes()[:4] == b"%PDF" and pdf.stat().st_size > 1000
         assert png.read_bytes()[:4] == b"\x89PNG" and png.stat().st_size > 1000
@@ -113,8 +116,12 @@ def test_runs_of_the_paper_case_are_matched_by_name_or_kn():
     assert match_reference(case, _named("mine", 5.2)) == "set2"
     assert match_reference(case, _named("mine", 0.25)) == "set1"
     assert match_reference(case, _named("mine", 1.0)) is None
-    for other in ({"geometry": {"thickness_mm": 20.0}}, {"loading": {"support_direction_deg": 0.0}},
-                  {"material": {"density_g_per_cm3": 2.0}}, {"imperfections": {"edge_radius_mm": 1.0}}):
+    for other in (
+        {"geometry": {"thickness_mm": 20.0}},
+        {"loading": {"support_direction_deg": 0.0}},
+        {"material": {"density_g_per_cm3": 2.0}},
+        {"imperfections": {"edge_radius_mm": 1.0}},
+    ):
         assert match_reference(other, _named("set2", 5.2)) is None
     assert match_reference({"loading": {"max_support_displacement_mm": 120.0}}, _named("set2")) == "set2"
 

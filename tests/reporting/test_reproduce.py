@@ -16,9 +16,14 @@ from yadearch.results.summary import RunSummary
 
 
 def finished(folder: Path, case_toml: str) -> None:
-    write_run(folder, case_toml, [{"stage": "equilibrium", "delta_mm": 0.0}],
-              [{"stage": "equilibrium", "interface": 1}], {},
-              RunSummary(name=folder.name, du_mm=48.0, steps=10, wall_s=1.0, hinges_at_collapse=()))
+    write_run(
+        folder,
+        case_toml,
+        [{"stage": "equilibrium", "delta_mm": 0.0}],
+        [{"stage": "equilibrium", "interface": 1}],
+        {},
+        RunSummary(name=folder.name, du_mm=48.0, steps=10, wall_s=1.0, hinges_at_collapse=()),
+    )
 
 
 def test_only_a_finished_run_of_the_same_case_is_reusable(tmp_path):

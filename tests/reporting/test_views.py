@@ -65,8 +65,9 @@ def test_the_movie_has_a_frame_per_state_and_holds_the_collapse(run, tmp_path):
         durations.append(frame.info["duration"])
     frame_ms = 1000 / animation.FRAMES_PER_S
     assert len(frames) == len(run.states.path()) and np.abs(frames[0] - frames[-1]).max() > 0
-    assert durations[-1] == pytest.approx(frame_ms * (1 + animation.HOLD_COLLAPSE_S * animation.FRAMES_PER_S),
-                                          abs=len(frames))
+    assert durations[-1] == pytest.approx(
+        frame_ms * (1 + animation.HOLD_COLLAPSE_S * animation.FRAMES_PER_S), abs=len(frames)
+    )
     if shutil.which("ffmpeg"):
         assert run.animate(tmp_path / "coarse.mp4").stat().st_size > 10_000
 

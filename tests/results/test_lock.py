@@ -34,12 +34,15 @@ def holder(tmp_path):
 
 
 def test_a_second_run_into_a_busy_folder_is_refused_naming_the_holder(holder, tmp_path, capsys):
-    code = main(["run", "--preset", "set2", "--engine", "static", "--set", "n_voussoirs=9",
-                 "--out", str(tmp_path / "run")])
+    code = main(
+        ["run", "--preset", "set2", "--engine", "static", "--set", "n_voussoirs=9", "--out", str(tmp_path / "run")]
+    )
     err = capsys.readouterr().err.strip()
     assert code == 1 and "\n" not in err
-    assert err == f"error: {tmp_path / 'run'} is in use by another run (process {holder.pid}); wait for it to end " \
-                  "or choose another --out"
+    assert (
+        err == f"error: {tmp_path / 'run'} is in use by another run (process {holder.pid}); wait for it to end "
+        "or choose another --out"
+    )
     assert not (tmp_path / "run").exists()
 
 
@@ -58,10 +61,18 @@ def test_a_campaign_folder_is_locked_too(tmp_path):
 
     started = time.time()
     with folder_lock(tmp_path / "campaign", "campaign"):
-        proc = subprocess.run([sys.executable, "-c", "import sys; from pathlib import Path; "
-                               "from yadearch.results.lock import folder_lock\n"
-                               "with folder_lock(Path(sys.argv[1]), 'campaign'): pass", str(tmp_path / "campaign")],
-                              capture_output=True, text=True)
+        proc = subprocess.run(
+            [
+                sys.executable,
+                "-c",
+                "import sys; from pathlib import Path; "
+                "from yadearch.results.lock import folder_lock\n"
+                "with folder_lock(Path(sys.argv[1]), 'campaign'): pass",
+                str(tmp_path / "campaign"),
+            ],
+            capture_output=True,
+            text=True,
+        )
         assert "is in use by another campaign" in proc.stderr
         with local_pool(1) as pool, pytest.raises(FolderBusyError):
             # the same process, another open file: flock refuses it as it refuses another process

@@ -24,21 +24,32 @@ def summary_of(du_mm: float) -> RunSummary:
 
 def finished(folder: Path, case=None, du_mm: float = 87.0) -> None:
     case = case or preset("set2")
-    write_run(folder, case.to_toml(), [{"stage": "equilibrium", "delta_mm": 0.0}],
-              [{"stage": "equilibrium", "interface": 1}], {}, summary_of(du_mm))
+    write_run(
+        folder,
+        case.to_toml(),
+        [{"stage": "equilibrium", "delta_mm": 0.0}],
+        [{"stage": "equilibrium", "interface": 1}],
+        {},
+        summary_of(du_mm),
+    )
 
 
-@pytest.mark.parametrize("damage", ["truncated", "empty object", "not an object", "newer schema",
-                                    "unmarked", "missing key"])
+@pytest.mark.parametrize(
+    "damage", ["truncated", "empty object", "not an object", "newer schema", "unmarked", "missing key"]
+)
 def test_a_summary_that_does_not_validate_is_an_unfinished_run(tmp_path, damage):
     finished(tmp_path)
     summary_file = tmp_path / SUMMARY_FILE
     text = summary_file.read_text()
     summary = json.loads(text)
-    damaged = {"truncated": text[: len(text) // 2], "empty object": "{}", "not an object": "[1, 2]",
-               "newer schema": json.dumps({**summary, "schema_version": 99}),
-               "unmarked": json.dumps({**summary, "complete": False}),
-               "missing key": json.dumps({k: v for k, v in summary.items() if k != "du_mm"})}[damage]
+    damaged = {
+        "truncated": text[: len(text) // 2],
+        "empty object": "{}",
+        "not an object": "[1, 2]",
+        "newer schema": json.dumps({**summary, "schema_version": 99}),
+        "unmarked": json.dumps({**summary, "complete": False}),
+        "missing key": json.dumps({k: v for k, v in summary.items() if k != "du_mm"}),
+    }[damage]
     summary_file.write_text(damaged)
     assert not is_complete(tmp_path)
     with pytest.raises(RunFolderError) as error:

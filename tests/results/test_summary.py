@@ -17,8 +17,9 @@ RETIRED = ("holds", "trigger_delta_mm")  # keys of early DEM runs that no reader
 
 
 def committed_summaries() -> list[str]:
-    listed = subprocess.run(["git", "ls-files", "reports/**/summary.json"], cwd=REPO, capture_output=True,
-                            text=True, check=True).stdout.split()
+    listed = subprocess.run(
+        ["git", "ls-files", "reports/**/summary.json"], cwd=REPO, capture_output=True, text=True, check=True
+    ).stdout.split()
     return [path for path in listed if "command" not in json.loads((REPO / path).read_text())]
 
 
@@ -30,27 +31,53 @@ def test_every_committed_summary_reads_back_as_it_was_written():
         written = json.loads((REPO / path).read_text())
         summary = RunSummary.from_json(written)
         engines.add(summary.engine)
-        expected = {RENAMED_KEYS.get(k, k): v for k, v in written.items() if k not in MARKERS + RETIRED
-                    and not (v is None and k == "collapse_verdict")}
+        expected = {
+            RENAMED_KEYS.get(k, k): v
+            for k, v in written.items()
+            if k not in MARKERS + RETIRED and not (v is None and k == "collapse_verdict")
+        }
         expected.setdefault("engine", DEM)  # runs from before the static engine are DEM runs
         if isinstance(expected.get("loading"), dict):
             expected["loading"].setdefault("motion", "translation")  # ... and from before rotations
         back = summary.to_json()
         assert {k: back[k] for k in expected} == expected, path
-        assert set(back) - set(expected) <= {"increments", "equilibria", "friction", "contact_model", "loading",
-                                             "last_equilibrium_mm", "hinges_last_equilibrium"}, path
+        assert set(back) - set(expected) <= {
+            "increments",
+            "equilibria",
+            "friction",
+            "contact_model",
+            "loading",
+            "last_equilibrium_mm",
+            "hinges_last_equilibrium",
+        }, path
     assert engines == {DEM, STATIC}
 
 
 def test_the_typed_fields_answer_what_readers_asked_the_dict_for():
-    summary = RunSummary.from_json({
-        "du_mm": 87.99, "steps": 10, "wall_s": 1.0, "engine": STATIC, "iterations": 812, "collapsed": True,
-        "hinges_at_collapse": [{"interface": 1, "side": "E"}, {"interface": 9, "side": "I"},
-                               {"interface": 29, "side": "E"}, {"interface": 56, "side": "E"}],
-        "hinges_detail": [{"interface": 29, "side": "E", "rotation_mrad": 40.0, "interfaces": [28, 29, 30]}]})
+    summary = RunSummary.from_json(
+        {
+            "du_mm": 87.99,
+            "steps": 10,
+            "wall_s": 1.0,
+            "engine": STATIC,
+            "iterations": 812,
+            "collapsed": True,
+            "hinges_at_collapse": [
+                {"interface": 1, "side": "E"},
+                {"interface": 9, "side": "I"},
+                {"interface": 29, "side": "E"},
+                {"interface": 56, "side": "E"},
+            ],
+            "hinges_detail": [{"interface": 29, "side": "E", "rotation_mrad": 40.0, "interfaces": [28, 29, 30]}],
+        }
+    )
     assert summary.hinge_labels == "1E 9I 29E 56E" and summary.cost == "static engine, 812 iterations"
-    assert summary.paper_labels(56) == {HingeRef(1, "E"): "D", HingeRef(9, "I"): "A", HingeRef(29, "E"): "B",
-                                        HingeRef(56, "E"): "C"}
+    assert summary.paper_labels(56) == {
+        HingeRef(1, "E"): "D",
+        HingeRef(9, "I"): "A",
+        HingeRef(29, "E"): "B",
+        HingeRef(56, "E"): "C",
+    }
     assert "steps_by_stage" not in summary.to_json()  # the DEM's fields stay out of a static run's file
     with pytest.raises(RunFolderError, match="did not collapse"):
         RunSummary(du_mm=None, hinges_at_collapse=(), steps=0, wall_s=0.0).collapsed_du_mm()

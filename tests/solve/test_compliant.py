@@ -39,15 +39,16 @@ def test_the_march_collapses_where_the_dem_run_of_the_same_stiffness_does():
     increments, committed under reports/) collapses at 37.97 mm on 8I 28E 46I, 7 % short of the rigid
     40.82 mm; the compliant march moves its hinges as that run does and collapses within 1 %."""
     summary = json.loads((DEM_RUN / "summary.json").read_text())
-    overrides = {"support_direction_deg": -45.0,
-                 "kn_N_per_mm3": load_case(DEM_RUN / "case.toml").interface.kn_N_per_mm3}
+    overrides = {
+        "support_direction_deg": -45.0,
+        "kn_N_per_mm3": load_case(DEM_RUN / "case.toml").interface.kn_N_per_mm3,
+    }
     result = limit_analysis(preset("set2").with_overrides(overrides), mirror=False, compliant=True)
     assert result.du_rigid_mm == pytest.approx(summary["du_mm"], rel=DEM_TOLERANCE)
     followed = {h.label for h in result.hinge_history if h.to_mm is None}
     dem = {f"{h['interface']}{h['side']}" for h in summary["hinges_last_equilibrium"]}
     assert followed == dem == {"8I", "28E", "46I"}
     assert result.compliant_kn_N_per_mm3 == 3000.0
-
 
 
 def test_stiff_joints_collapse_at_the_compliant_limit_not_at_the_rigid_one(tmp_path):

@@ -54,8 +54,9 @@ def test_two_voussoir_semicircle_stands_down_to_the_hand_computed_friction_angle
     assert phi_min == pytest.approx(20.4926, abs=1e-4)
 
     def two_blocks(friction_deg: float) -> ArchCase:
-        return arch_case(n_voussoirs=2, embrace_deg=180.0, internal_radius_mm=r_i, thickness_mm=r_o - r_i,
-                         friction_deg=friction_deg)
+        return arch_case(
+            n_voussoirs=2, embrace_deg=180.0, internal_radius_mm=r_i, thickness_mm=r_o - r_i, friction_deg=friction_deg
+        )
 
     assert stands(two_blocks(phi_min + 0.02))
     assert not stands(two_blocks(phi_min - 0.02))
@@ -69,8 +70,13 @@ def test_semicircle_minimum_thickness_is_milankovitch(n_voussoirs):
     def semicircle(t_over_r: float) -> ArchCase:
         radius = 1000.0
         t = t_over_r * radius
-        return arch_case(n_voussoirs=n_voussoirs, embrace_deg=180.0, internal_radius_mm=radius - t / 2,
-                         thickness_mm=t, friction_deg=60.0)
+        return arch_case(
+            n_voussoirs=n_voussoirs,
+            embrace_deg=180.0,
+            internal_radius_mm=radius - t / 2,
+            thickness_mm=t,
+            friction_deg=60.0,
+        )
 
     assert stands(semicircle(1.02 * 0.1075))
     assert not stands(semicircle(0.98 * 0.1075))
@@ -85,8 +91,9 @@ def test_semicircle_thrust_at_its_least_thickness_is_the_published_one():
     from yadearch.solve.rigid import at_rest, rigid_arch
 
     radius, t = 1000.0, 0.1076 * 1000.0
-    case = arch_case(n_voussoirs=360, embrace_deg=180.0, internal_radius_mm=radius - t / 2, thickness_mm=t,
-                     friction_deg=60.0)
+    case = arch_case(
+        n_voussoirs=360, embrace_deg=180.0, internal_radius_mm=radius - t / 2, thickness_mm=t, friction_deg=60.0
+    )
     arch = rigid_arch(case)
     statics = solve_statics(arch, at_rest(arch))
     assert statics.feasible
@@ -105,8 +112,9 @@ def test_semicircle_spreading_hinges_where_the_minimum_thrust_line_touches(t_ove
     # at the crown's extrados and at the joints nearest +-54.5 deg (360 voussoirs of 0.5 deg).
     radius, n = 1000.0, 360
     t = t_over_r * radius
-    case = arch_case(n_voussoirs=n, embrace_deg=180.0, internal_radius_mm=radius - t / 2, thickness_mm=t,
-                     friction_deg=60.0).replace(support_direction_deg=0.0)
+    case = arch_case(
+        n_voussoirs=n, embrace_deg=180.0, internal_radius_mm=radius - t / 2, thickness_mm=t, friction_deg=60.0
+    ).replace(support_direction_deg=0.0)
     result = limit_analysis(case, max_displacement_mm=0.5)
     first = [h for h in result.hinge_history if h.from_mm == 0.0]
     from_crown = sorted(abs(90.0 - (h.interface - 1) * 180.0 / n) for h in first)
@@ -117,16 +125,16 @@ def test_semicircle_spreading_hinges_where_the_minimum_thrust_line_touches(t_ove
 def _placed(case: ArchCase, result) -> tuple[list[np.ndarray], np.ndarray, np.ndarray]:
     """Independently of the solver: block outlines (mm) as the result places them, centroids, weights."""
     g = case.geometry
-    geometry = segmental_arch(g.n_voussoirs, g.embrace_deg, g.internal_radius_mm, g.thickness_mm,
-                              g.depth_mm, g.support_length_mm)  # in mm here
+    geometry = segmental_arch(
+        g.n_voussoirs, g.embrace_deg, g.internal_radius_mm, g.thickness_mm, g.depth_mm, g.support_length_mm
+    )  # in mm here
     outlines, centroids = [], []
     for vertices, rot, shift in zip(geometry.blocks, result.rotation_rad, result.shift_mm):
         c, s = math.cos(rot), math.sin(rot)
         xy = vertices[:4, :2] @ np.array([[c, s], [-s, c]]) + np.asarray(shift)
         outlines.append(xy)
         cross = xy[:, 0] * np.roll(xy[:, 1], -1) - np.roll(xy[:, 0], -1) * xy[:, 1]
-        centroids.append([((xy[:, k] + np.roll(xy[:, k], -1)) * cross).sum() / (3 * cross.sum())
-                          for k in (0, 1)])
+        centroids.append([((xy[:, k] + np.roll(xy[:, k], -1)) * cross).sum() / (3 * cross.sum()) for k in (0, 1)])
     unit_weight = case.material.density_g_per_cm3 * 1e-6 * case.loading.gravity_m_per_s2  # N / mm3
     weights = np.array([unit_weight * block_volume(b) for b in geometry.blocks])
     return outlines, np.array(centroids), weights
@@ -163,8 +171,12 @@ def test_linkage_is_closed_exactly_without_drift(paper):
     n = case.geometry.n_voussoirs
     angle = math.radians(case.loading.support_direction_deg)
     assert result.rotation_rad[-1] == 0.0 and result.rotation_rad[0] == 0.0
-    assert np.allclose(result.shift_mm[-1], [result.du_rigid_mm * math.cos(angle),
-                                             result.du_rigid_mm * math.sin(angle)], rtol=0, atol=1e-9)
+    assert np.allclose(
+        result.shift_mm[-1],
+        [result.du_rigid_mm * math.cos(angle), result.du_rigid_mm * math.sin(angle)],
+        rtol=0,
+        atol=1e-9,
+    )
     pivots = {h.interface: h.side for h in result.hinge_history if h.to_mm is None}
     for k in range(1, n + 2):  # outline vertices (geometry.py): a voussoir's 0 I and 3 E on its left
         left, right = outlines[k - 1], outlines[k]  # joint, 1 I and 2 E on its right; a support's 0 I, 1 E
@@ -213,8 +225,11 @@ def test_a_support_turning_about_a_far_pivot_settles_like_a_translation(coarse):
     of 100 m radius: the settlement's mechanism and du, the support turning by du / 100 m (about 1 mrad
     at collapse) on top (within 0.3 %)."""
     case, settlement = coarse
-    turning = limit_analysis(case.with_overrides({"support_motion": "rotation", "rotation_pivot_dx_mm": 1e5,
-                                                  "rotation_sense": "counterclockwise"}))
+    turning = limit_analysis(
+        case.with_overrides(
+            {"support_motion": "rotation", "rotation_pivot_dx_mm": 1e5, "rotation_sense": "counterclockwise"}
+        )
+    )
     assert turning.du_rigid_mm == pytest.approx(settlement.du_rigid_mm, rel=3e-3)
     assert turning.collapse_hinges == settlement.collapse_hinges
     assert turning.rotation_rad[-1] == pytest.approx(turning.du_rigid_mm / 1e5, rel=1e-2)
@@ -287,8 +302,7 @@ def test_paper_arch_collapses_on_four_hinges_the_fourth_at_the_fixed_springing(p
 
 def test_cli_writes_json_and_figure(tmp_path, capsys):
     out = tmp_path / "limit"
-    assert main(["limit", "--preset", "set2", "--set", "n_voussoirs=9", "--set", "name=coarse",
-                 "--out", str(out)]) == 0
+    assert main(["limit", "--preset", "set2", "--set", "n_voussoirs=9", "--set", "name=coarse", "--out", str(out)]) == 0
     data = json.loads((out / "coarse.json").read_text())
     assert data["du_rigid_mm"] > 0 and data["hinge_history"]
     assert (out / "coarse.pdf").stat().st_size > 0 and (out / "coarse.png").stat().st_size > 0
@@ -297,8 +311,7 @@ def test_cli_writes_json_and_figure(tmp_path, capsys):
 
 
 def test_imports_without_yade():
-    code = ("import sys, yadearch.solve.limit; "
-            "sys.exit(any(m == 'yade' or m.startswith('yade.') for m in sys.modules))")
+    code = "import sys, yadearch.solve.limit; sys.exit(any(m == 'yade' or m.startswith('yade.') for m in sys.modules))"
     assert subprocess.run([sys.executable, "-c", code]).returncode == 0
 
 
@@ -327,9 +340,15 @@ def test_worn_edges_act_as_a_ring_thinner_by_twice_the_wear_carrying_the_same_we
     base = arch_case(n_voussoirs=15)
     g, m, wear = base.geometry, base.material, 3.0
     worn = limit_analysis(base.with_overrides({"edge_radius_mm": wear}))
-    thin = limit_analysis(base.with_overrides({
-        "internal_radius_mm": g.internal_radius_mm + wear, "thickness_mm": g.thickness_mm - 2 * wear,
-        "density_g_per_cm3": m.density_g_per_cm3 * g.thickness_mm / (g.thickness_mm - 2 * wear)}))
+    thin = limit_analysis(
+        base.with_overrides(
+            {
+                "internal_radius_mm": g.internal_radius_mm + wear,
+                "thickness_mm": g.thickness_mm - 2 * wear,
+                "density_g_per_cm3": m.density_g_per_cm3 * g.thickness_mm / (g.thickness_mm - 2 * wear),
+            }
+        )
+    )
     assert worn.du_rigid_mm == pytest.approx(thin.du_rigid_mm, rel=5e-4)
     assert worn.collapse_hinges == thin.collapse_hinges
     assert worn.du_rigid_mm < 0.8 * limit_analysis(base).du_rigid_mm

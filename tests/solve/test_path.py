@@ -16,8 +16,15 @@ class FakeArch:
     `creep_reach` is accepted still creeping, and every move from it fails until it is settled; a
     relaxation judges states up to `du + false_margin` stable, but those beyond du never settle."""
 
-    def __init__(self, du: float, dynamic_reach: float = math.inf, verdict: str = Verdict.RUNAWAY,
-                 creep_reach: float = math.inf, false_margin: float = 0.0, start: float = 0.0):
+    def __init__(
+        self,
+        du: float,
+        dynamic_reach: float = math.inf,
+        verdict: str = Verdict.RUNAWAY,
+        creep_reach: float = math.inf,
+        false_margin: float = 0.0,
+        start: float = 0.0,
+    ):
         self.du, self.dynamic_reach, self.verdict = du, dynamic_reach, verdict
         self.creep_reach, self.false_margin = creep_reach, false_margin
         self.stack, self.reached, self.reached_from = [(start, True)], start, start
@@ -30,8 +37,7 @@ class FakeArch:
     def try_increment(self, target: float) -> str:
         self.tries.append((self.accepted, target))
         self.reached, self.reached_from = target, self.accepted
-        if not self.stack[-1][1] or target > self.du + self.false_margin \
-                or target - self.accepted > self.dynamic_reach:
+        if not self.stack[-1][1] or target > self.du + self.false_margin or target - self.accepted > self.dynamic_reach:
             return self.verdict
         return Verdict.STABLE
 
@@ -49,8 +55,7 @@ class FakeArch:
         self.stack.pop()
 
 
-SETTINGS = PathSettings(first_increment=2.0, max_increment=5.0, growth=1.5, tolerance=0.1,
-                        max_displacement=150.0)
+SETTINGS = PathSettings(first_increment=2.0, max_increment=5.0, growth=1.5, tolerance=0.1, max_displacement=150.0)
 
 
 @pytest.mark.parametrize("du", [0.35, 15.3, 88.29, 109.07])

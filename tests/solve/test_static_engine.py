@@ -29,8 +29,12 @@ from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.statics import StaticArch, static_arch
 from yadearch.statics.simulate import simulate_static
 
-IMPERFECT = {"imperfections.face_bump_mm": 0.05, "imperfections.face_bump_sd_mm": 0.02,
-             "imperfections.edge_radius_mm": 0.5, "imperfections.seed": 3}
+IMPERFECT = {
+    "imperfections.face_bump_mm": 0.05,
+    "imperfections.face_bump_sd_mm": 0.02,
+    "imperfections.edge_radius_mm": 0.5,
+    "imperfections.seed": 3,
+}
 FD_STEP = 1e-11  # m: a 0.3 m coordinate rounds to ~6e-17 m, ~1e-6 of the difference it spans
 MM = 1e-3
 
@@ -41,8 +45,9 @@ def _quiet(_line: str) -> None:
 
 def _loading(case) -> StaticLoading:
     arch = static_arch(case)
-    return StaticLoading(arch, path_settings(case.numerics, case.loading.max_support_displacement_mm),
-                         units.mm(case.numerics.runaway_mm))
+    return StaticLoading(
+        arch, path_settings(case.numerics, case.loading.max_support_displacement_mm), units.mm(case.numerics.runaway_mm)
+    )
 
 
 @pytest.fixture(scope="module", params=["perfect", "imperfect"])
@@ -118,8 +123,15 @@ def test_dual_kernel_gives_the_dem_kernels_forces(selfweight):
     dual = joint_tangent(arch.table, arch.law, pos, rot, pos_before, rot_before, shear).forces
     dem = joint_forces(arch.table, arch.law, pos, rot, pos - pos_before, rot - rot_before, shear, 1.0)
     assert (dem.plastic_slip > 0.0).any() and (dem.normal_force > 0.0).all()
-    for name in ("normal_force", "shear_force", "point", "compressed_length", "plastic_slip",
-                 "block_force", "block_torque"):
+    for name in (
+        "normal_force",
+        "shear_force",
+        "point",
+        "compressed_length",
+        "plastic_slip",
+        "block_force",
+        "block_torque",
+    ):
         expected, got = getattr(dem, name), getattr(dual, name)
         scale = float(np.nanmax(np.abs(expected)))
         assert np.allclose(got, expected, rtol=0.0, atol=1e-12 * scale, equal_nan=True), name
@@ -142,8 +154,16 @@ def _turned_joint(theta: float, closure: float) -> tuple[float, float, float]:
     c, s = math.cos(theta), math.sin(theta)
     x, y = pos[1]
     pos[1] = (c * x - s * y, s * x + c * y - closure)
-    forces = joint_forces(table, JointLaw(KN, KS, TAN_PHI, DEPTH), pos, np.array([0.0, theta]),
-                          np.zeros((2, 2)), np.zeros(2), np.zeros(1), 1.0)
+    forces = joint_forces(
+        table,
+        JointLaw(KN, KS, TAN_PHI, DEPTH),
+        pos,
+        np.array([0.0, theta]),
+        np.zeros((2, 2)),
+        np.zeros(2),
+        np.zeros(1),
+        1.0,
+    )
     middle = np.array([0.0, -0.5 * closure])  # between the two faces' middles
     arm, force = pos[1] - middle, forces.block_force[1]
     moment = forces.block_torque[1] + arm[0] * force[1] - arm[1] * force[0]
@@ -159,8 +179,14 @@ def test_joint_moment_rotation_is_the_no_tension_winkler_closed_form(ratio):
     rotation differs from the closed form by ~theta^2 ~ 1e-7 at 10 x the opening rotation)."""
     opening = 2.0 * AXIAL / (KN * DEPTH * JOINT**2)  # 6.7e-5 rad
     theta = ratio * opening
-    closure = brentq(lambda z: _turned_joint(theta, z)[0] - AXIAL, -0.5 * theta * JOINT,
-                     AXIAL / (KN * DEPTH * JOINT) + theta * JOINT, xtol=1e-22, rtol=1e-15, maxiter=500)
+    closure = brentq(
+        lambda z: _turned_joint(theta, z)[0] - AXIAL,
+        -0.5 * theta * JOINT,
+        AXIAL / (KN * DEPTH * JOINT) + theta * JOINT,
+        xtol=1e-22,
+        rtol=1e-15,
+        maxiter=500,
+    )
     normal, moment, touching = _turned_joint(theta, closure)
     assert normal == pytest.approx(AXIAL, rel=1e-9)
     if theta <= opening:
@@ -193,12 +219,27 @@ def _inclines(alpha: float) -> StaticArch:
         block = [a, b, b + height * normal, a + height * normal]
         outlines += [base, block] if k == 0 else [block, base]
         joints.append(Joint(k + 1, 0, 1, a, b, normal) if k == 0 else Joint(k + 1, 2, 3, a, b, -normal))
-    geometry = ArchGeometry([prism(o, depth) for o in outlines], joints, thickness=width, depth=depth,
-                            span=0.2 + width, rise=height, voussoir_width=width, longest_joint=width)
+    geometry = ArchGeometry(
+        [prism(o, depth) for o in outlines],
+        joints,
+        thickness=width,
+        depth=depth,
+        span=0.2 + width,
+        rise=height,
+        voussoir_width=width,
+        longest_joint=width,
+    )
     centroids = np.array([np.mean(o, axis=0) for o in outlines])
     weight = np.array([0.0, 1.0, 1.0, 0.0]) * 1640.0 * 9.81 * width * height * depth
-    return StaticArch(geometry, joint_table(geometry, centroids, None), JointLaw(KN, KS, math.tan(FRICTION), depth),
-                      weight, centroids, Movement(left=None, right=None), None)
+    return StaticArch(
+        geometry,
+        joint_table(geometry, centroids, None),
+        JointLaw(KN, KS, math.tan(FRICTION), depth),
+        weight,
+        centroids,
+        Movement(left=None, right=None),
+        None,
+    )
 
 
 def _rows(local: np.ndarray, normal: np.ndarray, along: np.ndarray, handedness: float, n: float, t: float):
@@ -250,8 +291,9 @@ def test_block_on_an_incline_slides_at_the_friction_angle(alpha_deg):
             assert abs(t) == pytest.approx(math.tan(FRICTION) * n, rel=1e-12) and f.plastic_slip[j] > 0.0
             moved = (found.u - start).reshape(-1, 3)[block, 0:2]
             assert moved @ along < -0.999 * np.linalg.norm(moved)  # straight down the slope
-            assert d_shear == pytest.approx(math.copysign(math.tan(FRICTION), t) * d_normal,
-                                            abs=1e-9 * float(np.abs(d_normal).max()))
+            assert d_shear == pytest.approx(
+                math.copysign(math.tan(FRICTION), t) * d_normal, abs=1e-9 * float(np.abs(d_normal).max())
+            )
     if alpha >= FRICTION:
         assert found.moved >= MM
 

@@ -30,10 +30,16 @@ def inverse(model, du: float) -> float:
     return math.exp(lo)
 
 
-@pytest.mark.parametrize("model, target, tolerance", [
-    (sigmoid, 48.9, 0.5), (sigmoid, 91.5, 0.5), (sigmoid, 48.9, 0.05), (saturating, 60.0, 0.1),
-    (saturating, 90.0, 0.1),
-])
+@pytest.mark.parametrize(
+    "model, target, tolerance",
+    [
+        (sigmoid, 48.9, 0.5),
+        (sigmoid, 91.5, 0.5),
+        (sigmoid, 48.9, 0.05),
+        (saturating, 60.0, 0.1),
+        (saturating, 90.0, 0.1),
+    ],
+)
 def test_converges_in_few_runs(model, target, tolerance):
     result = calibrate(function_evaluator(model), target, tolerance, 0.1, 100.0)
     assert result.converged
@@ -58,8 +64,7 @@ def test_a_bracket_end_within_tolerance_is_the_answer():
 
 
 def test_a_jump_in_du_stops_without_convergence():
-    result = calibrate(function_evaluator(lambda kn: 50.0 if kn < 1.0 else 90.0), 70.0, 0.5,
-                       0.1, 100.0, max_runs=8)
+    result = calibrate(function_evaluator(lambda kn: 50.0 if kn < 1.0 else 90.0), 70.0, 0.5, 0.1, 100.0, max_runs=8)
     assert not result.converged and result.runs <= 8
     assert result.du_mm in (50.0, 90.0)
 
@@ -69,8 +74,7 @@ def test_json_record(tmp_path):
     result = calibrate(function_evaluator(sigmoid), 48.9, 0.5, 0.1, 100.0, log=lines.append)
     result.write(tmp_path / "set1.json")
     data = json.loads((tmp_path / "set1.json").read_text())
-    for key in ("target_du_mm", "kn_N_per_mm3", "du_mm", "runs", "history", "tolerance_mm",
-                "converged", "hinges"):
+    for key in ("target_du_mm", "kn_N_per_mm3", "du_mm", "runs", "history", "tolerance_mm", "converged", "hinges"):
         assert key in data
     assert data["runs"] == len(data["history"]) and data["history"][0]["kn_N_per_mm3"] == 0.1
     assert sum(line.startswith("run ") for line in lines) == data["runs"]

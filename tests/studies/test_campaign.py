@@ -35,8 +35,13 @@ from yadearch.studies.grid import grid, parse_values, read_table, run_tag
 from yadearch.studies.sessions import SESSIONS_FILE, campaign_wall_s
 
 BASE = preset("set1").with_overrides({"n_voussoirs": 15})
-HINGES = [{"interface": 1, "side": "E"}, {"interface": 3, "side": "I"}, {"interface": 8, "side": "E"},
-          {"interface": 12, "side": "I"}, {"interface": 16, "side": "E"}]
+HINGES = [
+    {"interface": 1, "side": "E"},
+    {"interface": 3, "side": "I"},
+    {"interface": 8, "side": "E"},
+    {"interface": 12, "side": "I"},
+    {"interface": 16, "side": "E"},
+]
 
 
 class FakeRuns:
@@ -57,9 +62,17 @@ class FakeRuns:
         if kn in self.fail:
             record_failure(folder, case.name, f"run {case.name!r} timed out after 1 s", 1.0)
             return {"status": "failed", "reason": "timed out"}
-        (folder / "summary.json").write_text(json.dumps({
-            "du_mm": 50 + 10 * math.log10(kn), "collapsed": True, "hinges_at_collapse": HINGES,
-            "steps": 100, "wall_s": 2.0}))
+        (folder / "summary.json").write_text(
+            json.dumps(
+                {
+                    "du_mm": 50 + 10 * math.log10(kn),
+                    "collapsed": True,
+                    "hinges_at_collapse": HINGES,
+                    "steps": 100,
+                    "wall_s": 2.0,
+                }
+            )
+        )
         return {"status": "done", "reason": ""}
 
 
@@ -70,8 +83,21 @@ def campaign(out: Path, task: FakeRuns, rows: list[dict]) -> pd.DataFrame:
 
 def test_parse_values_lists_and_ranges():
     assert parse_values("0.25,5.2") == [0.25, 5.2]
-    assert parse_values("0.1:100:log:13") == [0.1, 0.1778, 0.3162, 0.5623, 1.0, 1.778, 3.162, 5.623,
-                                               10.0, 17.78, 31.62, 56.23, 100.0]
+    assert parse_values("0.1:100:log:13") == [
+        0.1,
+        0.1778,
+        0.3162,
+        0.5623,
+        1.0,
+        1.778,
+        3.162,
+        5.623,
+        10.0,
+        17.78,
+        31.62,
+        56.23,
+        100.0,
+    ]
     assert parse_values("9:15:lin:4") == [9, 11, 13, 15]
     assert parse_values("true,false") == [True, False]
     for bad in ("1:2:cubic:3", "0:10:log:3", "1:2:lin:0", ""):
@@ -82,10 +108,14 @@ def test_parse_values_lists_and_ranges():
 def test_grid_is_the_product_and_names_are_deterministic():
     rows = grid({"kn_N_per_mm3": [0.1, 1.0], "numerics.damping": [0.1, 0.2]})
     assert rows[1] == {"kn_N_per_mm3": 0.1, "numerics.damping": 0.2} and len(rows) == 4
-    assert [run_tag(r) for r in rows] == ["kn0.1_damping0.1", "kn0.1_damping0.2", "kn1_damping0.1",
-                                          "kn1_damping0.2"]
-    long = {"kn_N_per_mm3": 0.1, "support_direction_deg": -90.0, "max_support_displacement_mm": 150.0,
-            "hinge_rotation_mrad": 2.0, "first_increment_mm": 2.0}
+    assert [run_tag(r) for r in rows] == ["kn0.1_damping0.1", "kn0.1_damping0.2", "kn1_damping0.1", "kn1_damping0.2"]
+    long = {
+        "kn_N_per_mm3": 0.1,
+        "support_direction_deg": -90.0,
+        "max_support_displacement_mm": 150.0,
+        "hinge_rotation_mrad": 2.0,
+        "first_increment_mm": 2.0,
+    }
     assert run_tag(long) == run_tag(dict(long)) and len(run_tag(long)) <= 64
     assert run_tag(long) != run_tag({**long, "first_increment_mm": 1.0})
     with pytest.raises(CaseError, match="unknown parameter 'knn'"):
@@ -96,8 +126,10 @@ def test_explicit_table(tmp_path):
     table = tmp_path / "runs.csv"
     table.write_text("run,kn_N_per_mm3,interface.ks_over_kn\nsoft,0.1,\nstiff,10,0.4\n")
     rows = read_table(table)
-    assert rows == [{"run": "soft", "kn_N_per_mm3": 0.1}, {"run": "stiff", "kn_N_per_mm3": 10,
-                                                           "interface.ks_over_kn": 0.4}]
+    assert rows == [
+        {"run": "soft", "kn_N_per_mm3": 0.1},
+        {"run": "stiff", "kn_N_per_mm3": 10, "interface.ks_over_kn": 0.4},
+    ]
     specs = plan(BASE, rows, tmp_path / "c")
     assert [s.folder.name for s in specs] == ["soft", "stiff"]
     assert specs[1].case.interface.ks_over_kn == 0.4 and specs[0].case.interface.ks_over_kn == 0.5
@@ -110,8 +142,7 @@ def test_the_costliest_runs_start_first(tmp_path):
     """Stiff joints need the most steps (smaller time step, slower loading): they start first."""
     task = FakeRuns()
     with local_pool(1) as pool:
-        run_campaign(BASE, grid({"kn_N_per_mm3": [0.1, 100.0, 1.0, 31.62]}), tmp_path, pool,
-                     progress=False, task=task)
+        run_campaign(BASE, grid({"kn_N_per_mm3": [0.1, 100.0, 1.0, 31.62]}), tmp_path, pool, progress=False, task=task)
     assert task.calls == ["kn100", "kn31.62", "kn1", "kn0.1"]
 
 
@@ -121,8 +152,20 @@ def test_results_table_with_a_failed_run(tmp_path):
     table = campaign(tmp_path, task, rows)
     assert sorted(task.calls) == ["kn0.1", "kn1", "kn10"]
     read = pd.read_csv(tmp_path / RESULTS_FILE)
-    for column in ("run", "kn_N_per_mm3", "du_mm", "hinges", "mechanism", "hinge_A", "hinge_B",
-                   "hinge_C", "hinge_D", "status", "reason", "wall_s"):
+    for column in (
+        "run",
+        "kn_N_per_mm3",
+        "du_mm",
+        "hinges",
+        "mechanism",
+        "hinge_A",
+        "hinge_B",
+        "hinge_C",
+        "hinge_D",
+        "status",
+        "reason",
+        "wall_s",
+    ):
         assert column in read.columns
     assert list(read["status"]) == ["done", "done", "failed"]
     assert read["du_mm"].tolist()[:2] == pytest.approx([40.0, 50.0])
@@ -134,17 +177,25 @@ def test_results_table_with_a_failed_run(tmp_path):
 
 def test_an_invalid_value_anywhere_in_the_grid_refuses_the_campaign_before_any_run(tmp_path):
     task = FakeRuns()
-    with pytest.raises(CaseError, match=r"run kn-1: kn_N_per_mm3 must be in \(0, 100000\], got -1.0 \(and 1 more of "
-                       r"the 4 runs\); nothing was run"):
+    with pytest.raises(
+        CaseError,
+        match=r"run kn-1: kn_N_per_mm3 must be in \(0, 100000\], got -1.0 \(and 1 more of "
+        r"the 4 runs\); nothing was run",
+    ):
         campaign(tmp_path, task, grid({"kn_N_per_mm3": [0.1, -1.0, 1.0, -2.0]}))
     assert task.calls == [] and not (tmp_path / RESULTS_FILE).exists()
 
 
-@pytest.mark.parametrize("params, message", [
-    ({"kn_N_per_mm3": []}, "kn_N_per_mm3: no values to run"),
-    ({"kn_N_per_mm3": list(range(1, 400)), "n_voussoirs": list(range(3, 303))}, "campaign of 119700 runs exceeds "
-     "the bound of 100000; set YADEARCH_MAX_RUNS to raise it"),
-])
+@pytest.mark.parametrize(
+    "params, message",
+    [
+        ({"kn_N_per_mm3": []}, "kn_N_per_mm3: no values to run"),
+        (
+            {"kn_N_per_mm3": list(range(1, 400)), "n_voussoirs": list(range(3, 303))},
+            "campaign of 119700 runs exceeds the bound of 100000; set YADEARCH_MAX_RUNS to raise it",
+        ),
+    ],
+)
 def test_empty_and_huge_grids_are_refused_in_one_line(params, message):
     with pytest.raises(CampaignError, match=re.escape(message)):
         grid(params)
@@ -186,8 +237,7 @@ def test_resume_refuses_a_folder_of_another_case(tmp_path):
     rows = grid({"kn_N_per_mm3": [0.1]})
     campaign(tmp_path, FakeRuns(), rows)
     with local_pool(1) as pool, pytest.raises(YadearchError, match="damping"):
-        run_campaign(BASE.with_overrides({"damping": 0.3}), rows, tmp_path, pool, progress=False,
-                     task=FakeRuns())
+        run_campaign(BASE.with_overrides({"damping": 0.3}), rows, tmp_path, pool, progress=False, task=FakeRuns())
 
 
 def test_resume_accepts_a_run_that_predates_a_parameter_at_its_default(tmp_path):
@@ -204,9 +254,11 @@ def test_resume_accepts_a_run_that_predates_a_parameter_at_its_default(tmp_path)
 
 def test_hinge_labels_follow_the_paper():
     detail = [{**h, "rotation_mrad": r} for h, r in zip(HINGES, (147, 460, 231, 8, 93))]
+
     def summary(hinges: list[dict], detail: list[dict]) -> RunSummary:
-        return RunSummary.from_json({"du_mm": 50.0, "steps": 1, "wall_s": 1.0, "hinges_at_collapse": hinges,
-                                     "hinges_detail": detail})
+        return RunSummary.from_json(
+            {"du_mm": 50.0, "steps": 1, "wall_s": 1.0, "hinges_at_collapse": hinges, "hinges_detail": detail}
+        )
 
     labels = label_hinges(summary(HINGES, detail), 15)
     assert labels == {"hinge_A": 3, "hinge_B": 8, "hinge_C": 16, "hinge_D": 1}
@@ -218,8 +270,9 @@ def read_batch_table(path: Path) -> list[dict]:
     values evaluated as Python)."""
     lines = [re.sub(r"\s*#.*", "", line).split() for line in path.read_text().splitlines()]
     lines = [line for line in lines if line]
-    return [{k: eval(v, math.__dict__) if k != "description" else v for k, v in zip(lines[0], line)}
-            for line in lines[1:]]
+    return [
+        {k: eval(v, math.__dict__) if k != "description" else v for k, v in zip(lines[0], line)} for line in lines[1:]
+    ]
 
 
 def test_yade_batch_table_maps_to_the_sweep_runs(tmp_path):
@@ -252,11 +305,14 @@ def test_a_sweep_of_other_parameters_draws_du_against_each(tmp_path):
         assert all(p.stat().st_size > 1000 for p in paths)
 
 
-@pytest.mark.parametrize("args, message", [
-    ([], "nothing to sweep"),
-    (["--kn", "1,2", "--table", "t.csv"], "either --table"),
-    (["--param", "kn_N_per_mm3"], "NAME=VALUES"),
-])
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        ([], "nothing to sweep"),
+        (["--kn", "1,2", "--table", "t.csv"], "either --table"),
+        (["--param", "kn_N_per_mm3"], "NAME=VALUES"),
+    ],
+)
 def test_sweep_usage_errors(tmp_path, args, message):
     result = CliRunner().invoke(sweep, ["--preset", "set1", "--out", str(tmp_path), *args])
     assert result.exit_code != 0 and message in result.output

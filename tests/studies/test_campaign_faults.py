@@ -100,8 +100,14 @@ def test_a_resume_in_process_trusts_only_complete_folders(tmp_path):
 
         calls.append(case.name)
         kn = case.interface.kn_N_per_mm3
-        write_run(folder, case.to_toml(), [], [], {}, RunSummary(du_mm=expected_du(kn), collapsed=True,
-                                                                hinges_at_collapse=(), steps=1, wall_s=0.1))
+        write_run(
+            folder,
+            case.to_toml(),
+            [],
+            [],
+            {},
+            RunSummary(du_mm=expected_du(kn), collapsed=True, hinges_at_collapse=(), steps=1, wall_s=0.1),
+        )
         return {"status": "done", "reason": ""}
 
     base = preset("set1").with_overrides({"n_voussoirs": 15})
@@ -124,8 +130,9 @@ def test_an_interrupted_local_pool_stops_its_running_simulations_at_once():
     started = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
         with local_pool(2) as pool:
-            children = [pool.executor.submit(_run_child, ["sleep", "60"], dict(os.environ), None, True)
-                        for _ in range(2)]
+            children = [
+                pool.executor.submit(_run_child, ["sleep", "60"], dict(os.environ), None, True) for _ in range(2)
+            ]
             time.sleep(0.5)
             raise KeyboardInterrupt
     assert time.monotonic() - started < 10.0

@@ -22,11 +22,30 @@ from yadearch.studies.campaign import RESULTS_FILE, batch_run
 
 pytestmark = [pytest.mark.yade, needs_yade]
 
-COARSE = ["--preset", "set1", "--set", "n_voussoirs=9", "--set", "support_rate_mm_per_s=30",
-          "--set", "progress_every_s=1e9"]
+COARSE = [
+    "--preset",
+    "set1",
+    "--set",
+    "n_voussoirs=9",
+    "--set",
+    "support_rate_mm_per_s=30",
+    "--set",
+    "progress_every_s=1e9",
+]
 TABLE = "kn_N_per_mm3\n0.1\n0.12\n0.2\n"  # three coarse arches
-COMPARED = ["run", "kn_N_per_mm3", "collapsed", "hinges", "mechanism", "hinge_A", "hinge_B", "hinge_C",
-            "hinge_D", "status", "reason"]
+COMPARED = [
+    "run",
+    "kn_N_per_mm3",
+    "collapsed",
+    "hinges",
+    "mechanism",
+    "hinge_A",
+    "hinge_B",
+    "hinge_C",
+    "hinge_D",
+    "status",
+    "reason",
+]
 
 
 def run_sweep(out: Path, *extra: str):
@@ -57,8 +76,7 @@ def test_local_campaign_writes_the_results_table(local_sweep):
 def test_dask_cluster_gives_the_same_results(local_sweep, tmp_path):
     from distributed import LocalCluster
 
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                      dashboard_address=None) as cluster:
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
         result = run_sweep(tmp_path / "sweep", "--scheduler", cluster.scheduler_address, "--no-figure")
     assert result.exit_code == 0, result.output
     local = pd.read_csv(local_sweep / RESULTS_FILE)
@@ -93,8 +111,23 @@ def test_short_real_calibration(local_sweep, tmp_path):
     low, high = local.loc["kn0.1", "du_mm"], local.loc["kn0.12", "du_mm"]
     assert high - low > 2.0, "the coarse arch's du must grow with kn for this test"
     target, tolerance = 0.5 * (low + high), max(0.5, (high - low) / 5)
-    args = [*COARSE, "--kn-min", "0.1", "--kn-max", "0.12", "--tolerance-mm", f"{tolerance:.3f}",
-            "--max-runs", "6", "--jobs", "1", "--runs-dir", str(runs), "--out", str(tmp_path / "set1.json")]
+    args = [
+        *COARSE,
+        "--kn-min",
+        "0.1",
+        "--kn-max",
+        "0.12",
+        "--tolerance-mm",
+        f"{tolerance:.3f}",
+        "--max-runs",
+        "6",
+        "--jobs",
+        "1",
+        "--runs-dir",
+        str(runs),
+        "--out",
+        str(tmp_path / "set1.json"),
+    ]
     result = CliRunner().invoke(calibrate, [*args, "--target-du", f"{target:.3f}"])
     assert result.exit_code == 0, result.output
     data = json.loads((tmp_path / "set1.json").read_text())
@@ -107,11 +140,18 @@ def test_short_real_calibration(local_sweep, tmp_path):
 
 def test_yade_reads_the_batch_table(tmp_path):
     """yade's own TableParamReader parses scripts/yade_batch_table.txt; every line maps to a run."""
-    code = ("import json, sys; from yadearch.engine.yade_env import import_yade; import_yade(); "
-            "from yade.utils import TableParamReader; "
-            "print(json.dumps(TableParamReader(sys.argv[1]).paramDict()))")
-    done = subprocess.run([sys.executable, "-c", code, str(REPO / "scripts" / "yade_batch_table.txt")],
-                          capture_output=True, text=True, timeout=120, check=True)
+    code = (
+        "import json, sys; from yadearch.engine.yade_env import import_yade; import_yade(); "
+        "from yade.utils import TableParamReader; "
+        "print(json.dumps(TableParamReader(sys.argv[1]).paramDict()))"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", code, str(REPO / "scripts" / "yade_batch_table.txt")],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=True,
+    )
     lines = json.loads(done.stdout.strip().splitlines()[-1])
     assert len(lines) == 13
     for line in lines.values():
@@ -132,8 +172,20 @@ def test_a_sigkilled_campaign_leaves_no_orphan_and_resumes_where_it_stopped(tmp_
     table = tmp_path / "table.csv"
     # runs start in decreasing expected cost (sqrt(kn)): kn 0.12 first, then the slow kn 0.1
     table.write_text("kn_N_per_mm3,timestep_safety\n0.12,\n0.1,0.05\n")
-    argv = [sys.executable, "-m", "yadearch.cli", "sweep", *COARSE, "--table", str(table), "--out", str(out),
-            "--jobs", "1", "--no-figure"]
+    argv = [
+        sys.executable,
+        "-m",
+        "yadearch.cli",
+        "sweep",
+        *COARSE,
+        "--table",
+        str(table),
+        "--out",
+        str(out),
+        "--jobs",
+        "1",
+        "--no-figure",
+    ]
     campaign = subprocess.Popen(argv, cwd=REPO, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.time() + 300
     first, second = "kn0.12", "kn0.1_timestep_safety0.05"
@@ -175,8 +227,9 @@ def test_ctrl_c_at_a_terminal_interrupts_a_run_instead_of_failing_it(tmp_path):
     out = tmp_path / "run"
     before = set(Path(tempfile.gettempdir()).glob("yade-*"))
     argv = [sys.executable, "-m", "yadearch.cli", "run", *COARSE, "--kn", "0.1", "--out", str(out)]
-    run = subprocess.Popen(argv, cwd=REPO, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
-                           start_new_session=True)  # a group of its own, as a terminal's foreground job
+    run = subprocess.Popen(
+        argv, cwd=REPO, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, start_new_session=True
+    )  # a group of its own, as a terminal's foreground job
     log = tmp_path / ".run.partial" / "run.log"
     deadline = time.time() + 120
     while not log.is_file() and time.time() < deadline:

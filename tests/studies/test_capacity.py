@@ -23,9 +23,15 @@ def test_the_directions_cover_the_half_plane_below_the_horizontal_every_15_degre
     assert len(DIRECTIONS_DEG) == 13 and -90.0 in DIRECTIONS_DEG
 
 
-@pytest.mark.parametrize("direction, expected", [(0.0, (10.0, 0.0)), (-90.0, (0.0, -10.0)),
-                                                 (-45.0, (10 / math.sqrt(2), -10 / math.sqrt(2))),
-                                                 (-180.0, (-10.0, 0.0))])
+@pytest.mark.parametrize(
+    "direction, expected",
+    [
+        (0.0, (10.0, 0.0)),
+        (-90.0, (0.0, -10.0)),
+        (-45.0, (10 / math.sqrt(2), -10 / math.sqrt(2))),
+        (-180.0, (-10.0, 0.0)),
+    ],
+)
 def test_du_splits_into_its_horizontal_and_vertical_components(direction, expected):
     du_x, du_y = du_components(10.0, direction)
     assert du_x == pytest.approx(expected[0], abs=1e-9) and du_y == pytest.approx(expected[1], abs=1e-9)
@@ -33,8 +39,14 @@ def test_du_splits_into_its_horizontal_and_vertical_components(direction, expect
 
 
 def test_a_settling_support_carries_the_arch_s_weight_share_along_its_path_at_equilibrium_states():
-    series = pd.DataFrame({"stage": ["increment", "equilibrium", "equilibrium"], "delta_mm": [0.5, 1.0, 2.0],
-                           "right_Rx_N": [3.0, -5.0, -4.0], "right_Ry_N": [9.0, 15.0, 14.0]})
+    series = pd.DataFrame(
+        {
+            "stage": ["increment", "equilibrium", "equilibrium"],
+            "delta_mm": [0.5, 1.0, 2.0],
+            "right_Rx_N": [3.0, -5.0, -4.0],
+            "right_Ry_N": [9.0, 15.0, 14.0],
+        }
+    )
     settlement = reaction_curve(series, -90.0)
     assert settlement["delta_mm"].tolist() == [1.0, 2.0]
     assert settlement["force_N"].tolist() == pytest.approx([15.0, 14.0])
@@ -43,15 +55,25 @@ def test_a_settling_support_carries_the_arch_s_weight_share_along_its_path_at_eq
 
 
 def _results() -> pd.DataFrame:
-    return pd.DataFrame({
-        "support_direction_deg": [0.0, -90.0, -180.0], "du_mm": [20.0, 88.0, None],
-        "status": ["done", "done", "failed"], "hinges": ["9I 29E 49I", "1E 9I 29E 56E", None],
-        "mechanism": ["I-E-I", "E-I-E-E", None], "steps": [1, 2, 3], "wall_s": [1.0, 2.0, 3.0],
-        "folder": ["a", "b", "c"]})
+    return pd.DataFrame(
+        {
+            "support_direction_deg": [0.0, -90.0, -180.0],
+            "du_mm": [20.0, 88.0, None],
+            "status": ["done", "done", "failed"],
+            "hinges": ["9I 29E 49I", "1E 9I 29E 56E", None],
+            "mechanism": ["I-E-I", "E-I-E-E", None],
+            "steps": [1, 2, 3],
+            "wall_s": [1.0, 2.0, 3.0],
+            "folder": ["a", "b", "c"],
+        }
+    )
 
 
-RIGID = {0.0: RigidLimit(27.9, "9I 28E 47I 56E"), -90.0: RigidLimit(113.5, "1E 8I 32E 56E", 113.5, "1E 25I 49E 56E"),
-         -180.0: RigidLimit(None, "")}
+RIGID = {
+    0.0: RigidLimit(27.9, "9I 28E 47I 56E"),
+    -90.0: RigidLimit(113.5, "1E 8I 32E 56E", 113.5, "1E 25I 49E 56E"),
+    -180.0: RigidLimit(None, ""),
+}
 
 
 def test_the_map_puts_each_direction_beside_its_rigid_limit_and_keeps_failed_runs_visible():

@@ -31,9 +31,19 @@ def _results(kind, du_of) -> pd.DataFrame:
     for row in kind_rows(kind, 40):
         level, seed = float(row["run"].split("_")[0][1:]), row["imperfections.seed"]
         du = du_of(level, seed)
-        rows.append({"run": row["run"], "status": "failed" if du is None else "done", "collapsed": du is not None,
-                     "du_mm": np.nan if du is None else du, "hinge_A": 12, "hinge_B": 31, "hinge_C": 56, "hinge_D": 1,
-                     "reason": f"error: {CANNOT_STAND} (runaway)" if du is None else ""})
+        rows.append(
+            {
+                "run": row["run"],
+                "status": "failed" if du is None else "done",
+                "collapsed": du is not None,
+                "du_mm": np.nan if du is None else du,
+                "hinge_A": 12,
+                "hinge_B": 31,
+                "hinge_C": 56,
+                "hinge_D": 1,
+                "reason": f"error: {CANNOT_STAND} (runaway)" if du is None else "",
+            }
+        )
     return pd.DataFrame(rows)
 
 

@@ -10,14 +10,26 @@ from yadearch.studies.kn_curve import BRACKET_RATIO, find_jumps, hinge_moves, ju
 
 def _table(rows: list[tuple[float, float | None, int, int]]) -> pd.DataFrame:
     """Runs (kn, du or None for an arch that does not stand, hinge A, hinge B)."""
-    return pd.DataFrame([{"kn_N_per_mm3": kn, "du_mm": du, "status": "failed" if du is None else "done",
-                          "collapsed": du is not None, "hinge_A": a, "hinge_B": b,
-                          "hinges": "" if du is None else f"1E {a}I {b}E 56E"} for kn, du, a, b in rows])
+    return pd.DataFrame(
+        [
+            {
+                "kn_N_per_mm3": kn,
+                "du_mm": du,
+                "status": "failed" if du is None else "done",
+                "collapsed": du is not None,
+                "hinge_A": a,
+                "hinge_B": b,
+                "hinges": "" if du is None else f"1E {a}I {b}E 56E",
+            }
+            for kn, du, a, b in rows
+        ]
+    )
 
 
 def test_a_jump_is_a_change_of_du_and_a_hinge_move_alone_is_listed_apart():
-    table = _table([(0.05, None, 12, 28), (0.1, 15.0, 12, 28), (0.2, 15.2, 12, 29), (0.4, 15.3, 12, 29),
-                    (0.8, 20.0, 11, 29)])
+    table = _table(
+        [(0.05, None, 12, 28), (0.1, 15.0, 12, 28), (0.2, 15.2, 12, 29), (0.4, 15.3, 12, 29), (0.8, 20.0, 11, 29)]
+    )
     jumps = jumps_table(table)
     assert list(jumps["kn_below"]) == [0.05, 0.4]
     assert jumps["what"].iloc[0] == "the arch starts to stand under its own weight"
@@ -47,8 +59,9 @@ def test_bisection_on_the_static_engine_narrows_a_jump_of_hinge_a(tmp_path):
 
     base = preset("set2").with_overrides({"n_voussoirs": 9, "numerics.engine": "static"})
     with local_pool(2) as pool:
-        grid = run_campaign(base, [{"kn_N_per_mm3": kn} for kn in (0.3, 3.0, 30.0)], tmp_path / "grid", pool,
-                            progress=False)
+        grid = run_campaign(
+            base, [{"kn_N_per_mm3": kn} for kn in (0.3, 3.0, 30.0)], tmp_path / "grid", pool, progress=False
+        )
         table = bisect_jumps(base, grid, tmp_path, pool, log=lambda line: None)
     assert (table["status"] == "done").all()
     assert all(j.ratio <= BRACKET_RATIO for j in find_jumps(table))

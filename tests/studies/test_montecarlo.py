@@ -16,13 +16,18 @@ from yadearch.studies.montecarlo import SEED_KEY, sample_rows, summary_markdown
 
 def _table(n: int = 40) -> pd.DataFrame:
     rng = np.random.default_rng(0)
-    return pd.DataFrame({
-        "run": [f"s{i}" for i in range(n)], "status": ["done"] * (n - 1) + ["failed"],
-        "du_mm": np.r_[rng.normal(60.0, 5.0, n - 1), np.nan],
-        "edge_radius_mm": np.repeat([0.5, 1.0], n // 2),
-        "hinge_A": pd.array([11 if i % 4 else 12 for i in range(n)], dtype="Int64"),
-        "hinge_B": pd.array([30] * n, dtype="Int64"), "hinge_C": pd.array([56] * n, dtype="Int64"),
-        "hinge_D": pd.array([1] * n, dtype="Int64")})
+    return pd.DataFrame(
+        {
+            "run": [f"s{i}" for i in range(n)],
+            "status": ["done"] * (n - 1) + ["failed"],
+            "du_mm": np.r_[rng.normal(60.0, 5.0, n - 1), np.nan],
+            "edge_radius_mm": np.repeat([0.5, 1.0], n // 2),
+            "hinge_A": pd.array([11 if i % 4 else 12 for i in range(n)], dtype="Int64"),
+            "hinge_B": pd.array([30] * n, dtype="Int64"),
+            "hinge_C": pd.array([56] * n, dtype="Int64"),
+            "hinge_D": pd.array([1] * n, dtype="Int64"),
+        }
+    )
 
 
 def test_samples_take_consecutive_seeds_at_every_amplitude_level():
@@ -55,9 +60,11 @@ def test_the_summary_and_the_figures_describe_the_campaign(tmp_path):
     assert "39 of 40 samples done (1 failed)" in text
     assert "| 0.5 | 20 |" in text and "| 1 | 19 |" in text
     assert "- A: 11: 74%, 12: 26%" in text
-    for paths in (du_distribution_figure(table, tmp_path / "du", reference_du_mm=70.0),
-                  hinge_frequency_figure(table, tmp_path / "hinges"),
-                  du_amplitude_figure(table, "edge_radius_mm", tmp_path / "amp")):
+    for paths in (
+        du_distribution_figure(table, tmp_path / "du", reference_du_mm=70.0),
+        hinge_frequency_figure(table, tmp_path / "hinges"),
+        du_amplitude_figure(table, "edge_radius_mm", tmp_path / "amp"),
+    ):
         assert all(p.is_file() and p.stat().st_size > 1000 for p in paths)
 
 

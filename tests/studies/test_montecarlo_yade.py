@@ -20,8 +20,16 @@ from yadearch.results.rundir import IMPERFECTIONS_FILE, SUMMARY_FILE
 
 pytestmark = [pytest.mark.yade, needs_yade]
 
-COARSE = ["--preset", "set2", "--set", "n_voussoirs=9", "--set", "support_rate_mm_per_s=30",
-          "--set", "progress_every_s=1e9"]
+COARSE = [
+    "--preset",
+    "set2",
+    "--set",
+    "n_voussoirs=9",
+    "--set",
+    "support_rate_mm_per_s=30",
+    "--set",
+    "progress_every_s=1e9",
+]
 WORN = ["--set", "edge_radius_mm=3", "--set", "edge_radius_sd_mm=0.5"]  # an eighth of the 24 mm thickness
 SAMPLES = 3
 
@@ -30,8 +38,9 @@ SAMPLES = 3
 def perfect(tmp_path_factory) -> pd.DataFrame:
     """The perfect coarse arch, with the default seed and with another (no amplitude: no effect)."""
     out = tmp_path_factory.mktemp("perfect") / "campaign"
-    result = CliRunner().invoke(sweep, [*COARSE, "--param", "seed=0,9", "--out", str(out), "--jobs", "2",
-                                        "--no-figure"])
+    result = CliRunner().invoke(
+        sweep, [*COARSE, "--param", "seed=0,9", "--out", str(out), "--jobs", "2", "--no-figure"]
+    )
     assert result.exit_code == 0, result.output
     return pd.read_csv(out / "results.csv")
 
@@ -41,8 +50,23 @@ def worn(tmp_path_factory) -> Path:
     """The worn campaign on the static engine (the same blocks and joints, seconds instead of minutes;
     the engines agree within 0.07 % on this arch, tests/engine/test_static_vs_dem_yade.py)."""
     out = tmp_path_factory.mktemp("worn") / "campaign"
-    result = CliRunner().invoke(montecarlo, [*COARSE, *WORN, "--samples", str(SAMPLES), "--seed", "5",
-                                             "--out", str(out), "--jobs", "2", "--engine", "static"])
+    result = CliRunner().invoke(
+        montecarlo,
+        [
+            *COARSE,
+            *WORN,
+            "--samples",
+            str(SAMPLES),
+            "--seed",
+            "5",
+            "--out",
+            str(out),
+            "--jobs",
+            "2",
+            "--engine",
+            "static",
+        ],
+    )
     assert result.exit_code == 0, result.output
     return out
 
@@ -94,8 +118,16 @@ def test_thinner_voussoirs_make_the_arch_collapse_earlier_and_the_run_records_th
     from yadearch.cli.commands import run
     from yadearch.solve.limit import limit_analysis
 
-    thinner = ["--set", "voussoir_thickness_mm=-3", "--set", "voussoir_thickness_sd_mm=0.3",
-               "--set", "voussoir_length_sd_mm=0.3", "--set", "seed=4"]
+    thinner = [
+        "--set",
+        "voussoir_thickness_mm=-3",
+        "--set",
+        "voussoir_thickness_sd_mm=0.3",
+        "--set",
+        "voussoir_length_sd_mm=0.3",
+        "--set",
+        "seed=4",
+    ]
     result = CliRunner().invoke(run, [*COARSE, *thinner, "--out", str(tmp_path / "thinner")])
     assert result.exit_code == 0, result.output
     summary = json.loads((tmp_path / "thinner" / SUMMARY_FILE).read_text())

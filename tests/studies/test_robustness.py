@@ -25,10 +25,23 @@ def test_hinges_may_move_one_interface_not_two_nor_change_side():
 
 
 def results(du: dict[str, float], hinges: dict[str, str], slip: float = 0.0) -> pd.DataFrame:
-    return pd.DataFrame([{"run": f"kn5.2_{v}", "kn_N_per_mm3": 5.2, "du_mm": d,
-                          "hinges": hinges.get(v, "1E 9I 29E 56E"), "max_slip_mm": slip,
-                          "max_friction_use": 0.3, "friction_interface": 1, "steps": 1000,
-                          "wall_s": 10.0, "status": "done"} for v, d in du.items()])
+    return pd.DataFrame(
+        [
+            {
+                "run": f"kn5.2_{v}",
+                "kn_N_per_mm3": 5.2,
+                "du_mm": d,
+                "hinges": hinges.get(v, "1E 9I 29E 56E"),
+                "max_slip_mm": slip,
+                "max_friction_use": 0.3,
+                "friction_interface": 1,
+                "steps": 1000,
+                "wall_s": 10.0,
+                "status": "done",
+            }
+            for v, d in du.items()
+        ]
+    )
 
 
 def test_a_numerical_variant_beyond_one_percent_fails_the_kn():

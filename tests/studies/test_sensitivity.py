@@ -22,16 +22,18 @@ from yadearch.studies.sensitivity import (
     sobol_rows,
 )
 
-ISHIGAMI = (Factor("geometry.thickness_mm", "x1", -math.pi, math.pi),
-            Factor("geometry.embrace_deg", "x2", -math.pi, math.pi),
-            Factor("material.friction_deg", "x3", -math.pi, math.pi))
+ISHIGAMI = (
+    Factor("geometry.thickness_mm", "x1", -math.pi, math.pi),
+    Factor("geometry.embrace_deg", "x2", -math.pi, math.pi),
+    Factor("material.friction_deg", "x3", -math.pi, math.pi),
+)
 ISHIGAMI_S1 = (0.3139, 0.4424, 0.0)  # a = 7, b = 0.1 (Saltelli et al. 2008, Global Sensitivity Analysis)
 ISHIGAMI_ST = (0.5576, 0.4424, 0.2437)
 
 
 def _ishigami(row: dict) -> float:
     x1, x2, x3 = (row[f.key] for f in ISHIGAMI)
-    return math.sin(x1) + 7.0 * math.sin(x2) ** 2 + 0.1 * x3 ** 4 * math.sin(x1)
+    return math.sin(x1) + 7.0 * math.sin(x2) ** 2 + 0.1 * x3**4 * math.sin(x1)
 
 
 def test_factor_values_span_their_ranges_linearly_logarithmically_and_over_integers():
@@ -45,7 +47,7 @@ def test_factor_values_span_their_ranges_linearly_logarithmically_and_over_integ
 def test_a_doubled_sample_starts_with_the_smaller_one_so_a_campaign_resumes():
     small, large = sobol_rows(PAPER_FACTORS, 8), sobol_rows(PAPER_FACTORS, 16)
     assert len(small) == 8 * (len(PAPER_FACTORS) + 2) and len(large) == 2 * len(small)
-    assert large[:len(small)] == small
+    assert large[: len(small)] == small
     assert len({row[RUN_COLUMN] for row in large}) == len(large)
 
 
@@ -74,8 +76,9 @@ def test_bad_designs_are_refused_in_one_line_naming_the_value():
         check_factors(ya.preset("set2"), (parse_factor("friction_deg=3:2"),))
     with pytest.raises(CaseError, match="friction_deg"):
         check_factors(ya.preset("set2"), (parse_factor("friction_deg=30:95"),))
-    assert parse_factor("kn_N_per_mm3=0.25:100:log") == Factor("interface.kn_N_per_mm3", "kn_N_per_mm3", 0.25, 100.0,
-                                                              log=True)
+    assert parse_factor("kn_N_per_mm3=0.25:100:log") == Factor(
+        "interface.kn_N_per_mm3", "kn_N_per_mm3", 0.25, 100.0, log=True
+    )
 
 
 def test_static_sensitivity_of_a_small_arch_puts_thickness_before_friction(tmp_path):

@@ -51,8 +51,9 @@ def joint_points(geometry: ArchGeometry, snapshot: dict[str, Any], side: str) ->
     its left, as placed in the snapshot (m): where a hinge's pivot is drawn."""
     pos0 = block_centroids(geometry)
     pos, rot = np.asarray(snapshot["pos_m"], float), np.asarray(snapshot["rot_rad"], float)
-    return np.array([_placed(j.intrados if side == "I" else j.extrados, j.left, pos0, pos, rot)
-                     for j in geometry.joints])
+    return np.array(
+        [_placed(j.intrados if side == "I" else j.extrados, j.left, pos0, pos, rot) for j in geometry.joints]
+    )
 
 
 def tangential_slip_mm(geometry: ArchGeometry, snapshot: dict[str, Any]) -> np.ndarray:

@@ -70,9 +70,12 @@ def joint_history(joints: pd.DataFrame, joint_length_mm: float, du_mm: float | N
 
     intrados, extrados = table("opening_intrados_mm"), table("opening_extrados_mm")
     return JointHistory(
-        stage=records["stage"].to_numpy(), step=records["step"].to_numpy(),
+        stage=records["stage"].to_numpy(),
+        step=records["step"].to_numpy(),
         delta_mm=records["delta_mm"].to_numpy(float),
         rotation=hinge_rotation(intrados, extrados, joint_length_mm),
-        opening_intrados_mm=intrados, opening_extrados_mm=extrados,
-        normal_force_N=table("normal_force_N"), shear_force_N=table("shear_force_N"),
+        opening_intrados_mm=intrados,
+        opening_extrados_mm=extrados,
+        normal_force_N=table("normal_force_N"),
+        shear_force_N=table("shear_force_N"),
     )

@@ -29,8 +29,9 @@ class SlidingJoint:
     slip_mm: float | None
 
 
-def slip_during_moves(friction: dict, slip_threshold_mm: float = SLIP_THRESHOLD_MM,
-                      cap_tolerance: float = CAP_TOLERANCE) -> str | None:
+def slip_during_moves(
+    friction: dict, slip_threshold_mm: float = SLIP_THRESHOLD_MM, cap_tolerance: float = CAP_TOLERANCE
+) -> str | None:
     """A warning when a run's joint slipped more than `slip_threshold_mm` although no equilibrium
     state brought any joint to its friction cap (summary.json's `friction`): it slid while the
     support moved, so the moves' inertia may be part of the answer (docs/numerics.md), or while the
@@ -38,10 +39,12 @@ def slip_during_moves(friction: dict, slip_threshold_mm: float = SLIP_THRESHOLD_
     slip, use = friction.get("max_slip_mm"), friction.get("max_friction_use")
     if slip is None or use is None or slip < slip_threshold_mm or use >= 1.0 - cap_tolerance:
         return None
-    return (f"interface {friction.get('slip_interface')} slipped {slip:.2f} mm although no equilibrium state "
-            f"used more than {use:.2f} of any joint's friction: it slid while the support moved (the moves' "
-            "inertia is then part of du: check with a lower numerics.support_acceleration_mm_per_s2) or "
-            "while the joint was open")
+    return (
+        f"interface {friction.get('slip_interface')} slipped {slip:.2f} mm although no equilibrium state "
+        f"used more than {use:.2f} of any joint's friction: it slid while the support moved (the moves' "
+        "inertia is then part of du: check with a lower numerics.support_acceleration_mm_per_s2) or "
+        "while the joint was open"
+    )
 
 
 def relaxation_jump(summary: RunSummary, fraction: float = JUMP_FRACTION, near_limit: float = NEAR_LIMIT) -> str | None:
@@ -55,15 +58,19 @@ def relaxation_jump(summary: RunSummary, fraction: float = JUMP_FRACTION, near_l
     if not relaxations.get("move_mm") or end is None:
         return None
     runaway_mm = relaxations["runaway_mm"]
-    jumps = [(move, delta, step) for delta, step, move in
-             zip(relaxations["delta_mm"], relaxations["increment_mm"], relaxations["move_mm"])
-             if delta <= near_limit * end and move >= max(fraction * step, JUMP_FLOOR * runaway_mm)]
+    jumps = [
+        (move, delta, step)
+        for delta, step, move in zip(relaxations["delta_mm"], relaxations["increment_mm"], relaxations["move_mm"])
+        if delta <= near_limit * end and move >= max(fraction * step, JUMP_FLOOR * runaway_mm)
+    ]
     if not jumps:
         return None
     move, delta, step = max(jumps)
-    return (f"the relaxation after the {step:.2f} mm increment to {delta:.2f} mm moved a block {move:.2f} mm "
-            f"({len(jumps)} such before {near_limit:g} du): the arch jumped rather than followed its path, so "
-            "du may depend on numerics.runaway_mm and the increments")
+    return (
+        f"the relaxation after the {step:.2f} mm increment to {delta:.2f} mm moved a block {move:.2f} mm "
+        f"({len(jumps)} such before {near_limit:g} du): the arch jumped rather than followed its path, so "
+        "du may depend on numerics.runaway_mm and the increments"
+    )
 
 
 def collapse_by_timeout(summary: RunSummary) -> str | None:
@@ -71,21 +78,27 @@ def collapse_by_timeout(summary: RunSummary) -> str | None:
     block moved the runaway distance): a slow snap, as under heavy damping, reads as collapse."""
     if summary.collapse_verdict != Verdict.TIMEOUT:
         return None
-    return ("du's upper end reached no equilibrium within numerics.hold_max_s but no block ran away: a "
-            "slow hinge snap may have been read as collapse; confirm with a larger numerics.hold_max_s")
+    return (
+        "du's upper end reached no equilibrium within numerics.hold_max_s but no block ran away: a "
+        "slow hinge snap may have been read as collapse; confirm with a larger numerics.hold_max_s"
+    )
 
 
 def run_warnings(summary: RunSummary) -> list[str]:
     """The warnings a finished run's summary.json calls for: slip during the moves, jumps in the path,
     a collapse read from a timeout."""
-    warnings = (slip_during_moves(summary.friction), relaxation_jump(summary),
-                collapse_by_timeout(summary))
+    warnings = (slip_during_moves(summary.friction), relaxation_jump(summary), collapse_by_timeout(summary))
     return [w for w in warnings if w]
 
 
-def sliding_joints(normal_N: np.ndarray, shear_N: np.ndarray, friction_deg: float,
-                   slip_mm: np.ndarray | None = None, cap_tolerance: float = CAP_TOLERANCE,
-                   slip_threshold_mm: float = SLIP_THRESHOLD_MM) -> list[SlidingJoint]:
+def sliding_joints(
+    normal_N: np.ndarray,
+    shear_N: np.ndarray,
+    friction_deg: float,
+    slip_mm: np.ndarray | None = None,
+    cap_tolerance: float = CAP_TOLERANCE,
+    slip_threshold_mm: float = SLIP_THRESHOLD_MM,
+) -> list[SlidingJoint]:
     """Joints (one state) whose shear force sits at the friction cap and, when the slip is known,
     that slipped more than `slip_threshold_mm` (mm)."""
     mu = math.tan(math.radians(friction_deg))
@@ -110,14 +123,18 @@ def _place(interface: int, n_interfaces: int) -> str:
 
 def is_symmetric(tracks: list[HingeTrack], n_interfaces: int, tolerance: int = 1) -> bool:
     """True if every hinge has a mirror image (interface k <-> n+2-k, same side) within `tolerance`."""
+
     def mirrored(t: HingeTrack) -> bool:
-        return any(o.side == t.side and abs(o.interface - (n_interfaces + 1 - t.interface)) <= tolerance
-                   for o in tracks)
+        return any(
+            o.side == t.side and abs(o.interface - (n_interfaces + 1 - t.interface)) <= tolerance for o in tracks
+        )
+
     return bool(tracks) and all(mirrored(t) for t in tracks)
 
 
-def describe_mechanism(tracks: list[HingeTrack], sliding: list[SlidingJoint], n_interfaces: int,
-                       collapsed: bool) -> str:
+def describe_mechanism(
+    tracks: list[HingeTrack], sliding: list[SlidingJoint], n_interfaces: int, collapsed: bool
+) -> str:
     """One line: the collapse mechanism in the paper's words."""
     if sliding:
         where = ", ".join(str(s.interface) for s in sliding)
@@ -128,6 +145,8 @@ def describe_mechanism(tracks: list[HingeTrack], sliding: list[SlidingJoint], n_
     count = HINGE_COUNT_NAMES.get(len(tracks), str(len(tracks)))
     symmetry = "symmetric" if is_symmetric(tracks, n_interfaces) else "asymmetric"
     last = tracks[-1]
-    text = (f"{symmetry} {count}-hinge mechanism, {sequence(tracks)}, "
-            f"{last.paper_label} at {_place(last.interface, n_interfaces)}")
+    text = (
+        f"{symmetry} {count}-hinge mechanism, {sequence(tracks)}, "
+        f"{last.paper_label} at {_place(last.interface, n_interfaces)}"
+    )
     return text if collapsed else f"no collapse; {text.replace(' mechanism', ' pattern')}"

@@ -67,19 +67,36 @@ class RunAnalysis:
         return formation_steps(self.tracks, self.history.delta_mm)
 
 
-def analyse_history(joints: pd.DataFrame, joint_length_mm: float, friction_deg: float,
-                    du_mm: float | None, collapsed: bool, slip_mm: np.ndarray | None = None,
-                    thresholds: Thresholds = Thresholds()) -> RunAnalysis:
+def analyse_history(
+    joints: pd.DataFrame,
+    joint_length_mm: float,
+    friction_deg: float,
+    du_mm: float | None,
+    collapsed: bool,
+    slip_mm: np.ndarray | None = None,
+    thresholds: Thresholds = Thresholds(),
+) -> RunAnalysis:
     """Analyse a joints.csv table; `slip_mm` (per interface, final state) confirms sliding if given."""
     history = joint_history(joints, joint_length_mm, du_mm if collapsed else None)
     tracks = track_hinges(history, thresholds.rotation_mrad, thresholds.opening_mm, thresholds.max_jump)
-    sliding = sliding_joints(history.normal_force_N[-1], history.shear_force_N[-1], friction_deg,
-                             slip_mm, thresholds.cap_tolerance, thresholds.slip_mm)
+    sliding = sliding_joints(
+        history.normal_force_N[-1],
+        history.shear_force_N[-1],
+        friction_deg,
+        slip_mm,
+        thresholds.cap_tolerance,
+        thresholds.slip_mm,
+    )
     return RunAnalysis(
-        du_mm=du_mm, collapsed=collapsed, history=history, tracks=tracks,
-        hinges=hinge_table(history, tracks, thresholds.rotation_mrad), sliding=sliding,
+        du_mm=du_mm,
+        collapsed=collapsed,
+        history=history,
+        tracks=tracks,
+        hinges=hinge_table(history, tracks, thresholds.rotation_mrad),
+        sliding=sliding,
         mechanism=describe_mechanism(tracks, sliding, history.n_interfaces, collapsed),
-        thresholds=thresholds)
+        thresholds=thresholds,
+    )
 
 
 def load_run(path: str | Path) -> RunFolder:
@@ -105,7 +122,12 @@ def default_thresholds(case: dict[str, Any]) -> Thresholds:
 
 def analyse_run(run: RunFolder, thresholds: Thresholds | None = None) -> RunAnalysis:
     """Analyse a run folder read with `load_run` / `rundir.read_run`."""
-    return analyse_history(run.joints, run.case["geometry"]["thickness_mm"],
-                           run.case["material"]["friction_deg"], run.summary.du_mm,
-                           run.summary.collapsed, _final_slip_mm(run),
-                           thresholds or default_thresholds(run.case))
+    return analyse_history(
+        run.joints,
+        run.case["geometry"]["thickness_mm"],
+        run.case["material"]["friction_deg"],
+        run.summary.du_mm,
+        run.summary.collapsed,
+        _final_slip_mm(run),
+        thresholds or default_thresholds(run.case),
+    )

@@ -21,13 +21,26 @@ def du_statistics(du: pd.Series) -> dict[str, float]:
     """Count, median, band, mean and the median's confidence interval of the finished samples' du (mm)."""
     values = du.dropna().to_numpy(dtype=float)
     if values.size == 0:
-        return {"n": 0, "median": math.nan, "low": math.nan, "high": math.nan, "mean": math.nan,
-                "median_low": math.nan, "median_high": math.nan}
+        return {
+            "n": 0,
+            "median": math.nan,
+            "low": math.nan,
+            "high": math.nan,
+            "mean": math.nan,
+            "median_low": math.nan,
+            "median_high": math.nan,
+        }
     low, high = np.quantile(values, BAND)
     median_low, median_high = median_interval(values)
-    return {"n": int(values.size), "median": float(np.median(values)), "low": float(low),
-            "high": float(high), "mean": float(values.mean()), "median_low": median_low,
-            "median_high": median_high}
+    return {
+        "n": int(values.size),
+        "median": float(np.median(values)),
+        "low": float(low),
+        "high": float(high),
+        "mean": float(values.mean()),
+        "median_low": median_low,
+        "median_high": median_high,
+    }
 
 
 def median_interval(values: np.ndarray, confidence: float = MEDIAN_CONFIDENCE) -> tuple[float, float]:
@@ -48,8 +61,14 @@ def hinge_frequencies(table: pd.DataFrame) -> pd.DataFrame:
     for label in PAPER_LABELS:
         counts = done[f"hinge_{label}"].dropna().astype(int).value_counts()
         for interface, count in sorted(counts.items()):
-            rows.append({"hinge": label, "interface": interface, "count": int(count),
-                         "share": count / len(done) if len(done) else math.nan})
+            rows.append(
+                {
+                    "hinge": label,
+                    "interface": interface,
+                    "count": int(count),
+                    "share": count / len(done) if len(done) else math.nan,
+                }
+            )
     return pd.DataFrame(rows, columns=["hinge", "interface", "count", "share"])
 
 

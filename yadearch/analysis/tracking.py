@@ -90,8 +90,11 @@ def _follow_back(finals: list[Hinge], detected: list[list[Hinge]], max_jump: int
     for r in range(n - 2, -1, -1):
         owned: list[list[Hinge]] = [[] for _ in finals]
         for hinge in detected[r]:
-            near = [(abs(hinge.interface - p), t) for t, p in enumerate(positions)
-                    if finals[t].side == hinge.side and abs(hinge.interface - p) <= max_jump]
+            near = [
+                (abs(hinge.interface - p), t)
+                for t, p in enumerate(positions)
+                if finals[t].side == hinge.side and abs(hinge.interface - p) <= max_jump
+            ]
             if near:
                 owned[min(near)[1]].append(hinge)
         for t, candidates in enumerate(owned):
@@ -125,9 +128,12 @@ def _migrations(per_record: list[Hinge | None], deltas: np.ndarray, start: int) 
     return moves
 
 
-def track_hinges(history: JointHistory, rotation_threshold_mrad: float = ROTATION_THRESHOLD_MRAD,
-                 opening_threshold_mm: float = OPENING_THRESHOLD_MM,
-                 max_jump: int = MAX_JUMP_INTERFACES) -> list[HingeTrack]:
+def track_hinges(
+    history: JointHistory,
+    rotation_threshold_mrad: float = ROTATION_THRESHOLD_MRAD,
+    opening_threshold_mm: float = OPENING_THRESHOLD_MM,
+    max_jump: int = MAX_JUMP_INTERFACES,
+) -> list[HingeTrack]:
     """The hinges of the final record, each followed back, dated, numbered in order of formation
     (hinges forming at the same record: left to right) and labelled A-D by position as the paper
     does; returned in order of formation."""
@@ -135,12 +141,19 @@ def track_hinges(history: JointHistory, rotation_threshold_mrad: float = ROTATIO
     tracks = []
     finals = detected[-1]  # each track ends on its final hinge
     for final, per_record in zip(finals, _follow_back(finals, detected, max_jump), strict=True):
-        opening = np.array([np.nan if h is None else history.hinge_opening_mm(r, h.interfaces, h.side)
-                            for r, h in enumerate(per_record)])
+        opening = np.array(
+            [
+                np.nan if h is None else history.hinge_opening_mm(r, h.interfaces, h.side)
+                for r, h in enumerate(per_record)
+            ]
+        )
         present = np.nan_to_num(opening) >= opening_threshold_mm
         formed = _formed_record(present)
-        tracks.append(HingeTrack(final.side, per_record, opening, formed,
-                                 migrations=_migrations(per_record, history.delta_mm, formed)))
+        tracks.append(
+            HingeTrack(
+                final.side, per_record, opening, formed, migrations=_migrations(per_record, history.delta_mm, formed)
+            )
+        )
     tracks.sort(key=lambda t: (t.formed_record, t.interface))
     labels = paper_labels([(t.interface, t.side, t.final.rotation) for t in tracks], history.n_interfaces)
     for order, track in enumerate(tracks, start=1):
@@ -156,24 +169,35 @@ def sequence(tracks: list[HingeTrack]) -> str:
 
 def formation_steps(tracks: list[HingeTrack], deltas: np.ndarray) -> list[tuple[str, float, str]]:
     """(label, delta at formation, sequence of the hinges formed so far) in order of formation."""
-    return [(t.paper_label, float(deltas[t.formed_record]), sequence(tracks[: k + 1]))
-            for k, t in enumerate(tracks)]
+    return [(t.paper_label, float(deltas[t.formed_record]), sequence(tracks[: k + 1])) for k, t in enumerate(tracks)]
 
 
-def hinge_table(history: JointHistory, tracks: list[HingeTrack],
-                rotation_threshold_mrad: float = ROTATION_THRESHOLD_MRAD) -> pd.DataFrame:
+def hinge_table(
+    history: JointHistory, tracks: list[HingeTrack], rotation_threshold_mrad: float = ROTATION_THRESHOLD_MRAD
+) -> pd.DataFrame:
     """Every hinge at every record: delta, interface (peak), spread, side, rotation, opening and the
     label of the final hinge it belongs to (empty for hinges that do not last to collapse)."""
-    labels = {(r, seen.interface): t.paper_label
-              for t in tracks for r in range(history.n_records) if (seen := t.per_record[r]) is not None}
+    labels = {
+        (r, seen.interface): t.paper_label
+        for t in tracks
+        for r in range(history.n_records)
+        if (seen := t.per_record[r]) is not None
+    }
     rows = []
     for r, hinges in enumerate(hinges_per_record(history, rotation_threshold_mrad * 1e-3)):
         for h in hinges:
-            rows.append({"stage": history.stage[r], "step": int(history.step[r]),
-                         "delta_mm": float(history.delta_mm[r]), "label": labels.get((r, h.interface), ""),
-                         "interface": h.interface, "interfaces": format_interfaces(h.interfaces),
-                         "side": h.side, "rotation_mrad": abs(h.rotation) * 1e3,
-                         "opening_mm": history.hinge_opening_mm(r, h.interfaces, h.side)})
-    columns = ["stage", "step", "delta_mm", "label", "interface", "interfaces", "side", "rotation_mrad",
-               "opening_mm"]
+            rows.append(
+                {
+                    "stage": history.stage[r],
+                    "step": int(history.step[r]),
+                    "delta_mm": float(history.delta_mm[r]),
+                    "label": labels.get((r, h.interface), ""),
+                    "interface": h.interface,
+                    "interfaces": format_interfaces(h.interfaces),
+                    "side": h.side,
+                    "rotation_mrad": abs(h.rotation) * 1e3,
+                    "opening_mm": history.hinge_opening_mm(r, h.interfaces, h.side),
+                }
+            )
+    columns = ["stage", "step", "delta_mm", "label", "interface", "interfaces", "side", "rotation_mrad", "opening_mm"]
     return pd.DataFrame(rows, columns=columns)

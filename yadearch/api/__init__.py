@@ -11,5 +11,22 @@ from yadearch.api.campaigns import calibrate, capacity, montecarlo, robustness, 
 from yadearch.api.results import HingeAtCollapse, RunResult, open_run
 from yadearch.api.runs import as_case, limit, movement, preset, report, reproduce, run, with_engine
 
-__all__ = ["preset", "movement", "as_case", "with_engine", "run", "reproduce", "report", "open_run", "limit",
-           "sweep", "montecarlo", "calibrate", "robustness", "capacity", "sensitivity", "RunResult", "HingeAtCollapse"]
+__all__ = [
+    "preset",
+    "movement",
+    "as_case",
+    "with_engine",
+    "run",
+    "reproduce",
+    "report",
+    "open_run",
+    "limit",
+    "sweep",
+    "montecarlo",
+    "calibrate",
+    "robustness",
+    "capacity",
+    "sensitivity",
+    "RunResult",
+    "HingeAtCollapse",
+]

@@ -26,9 +26,19 @@ def _quiet(_line: str) -> None:
     """The default `log`: a notebook gets the progress bars, not the messages."""
 
 
-def sweep(case: ArchCase | str, out: str | Path, jobs: int | None = None, scheduler: str | None = None,
-          timeout_s: float | None = None, engine: str | None = None, table: str | Path | None = None,
-          retry_failed: bool = True, figures: bool = True, log: Log = _quiet, **values: list[Any]) -> pd.DataFrame:
+def sweep(
+    case: ArchCase | str,
+    out: str | Path,
+    jobs: int | None = None,
+    scheduler: str | None = None,
+    timeout_s: float | None = None,
+    engine: str | None = None,
+    table: str | Path | None = None,
+    retry_failed: bool = True,
+    figures: bool = True,
+    log: Log = _quiet,
+    **values: list[Any],
+) -> pd.DataFrame:
     """Run `case` over the grid of parameter `values` (e.g. `kn_N_per_mm3=[0.25, 1, 5.2]`), or the
     rows of a CSV `table` (one column a parameter), as a resumable campaign in `out` (runs recorded
     as failed are run again unless not `retry_failed`); draws du against each swept parameter
@@ -54,9 +64,19 @@ def sweep(case: ArchCase | str, out: str | Path, jobs: int | None = None, schedu
     return results
 
 
-def montecarlo(case: ArchCase | str, out: str | Path, samples: int, seed: int = 1, jobs: int | None = None,
-               scheduler: str | None = None, timeout_s: float | None = None, engine: str | None = None,
-               figures: bool = True, log: Log = _quiet, **levels: list[Any]) -> pd.DataFrame:
+def montecarlo(
+    case: ArchCase | str,
+    out: str | Path,
+    samples: int,
+    seed: int = 1,
+    jobs: int | None = None,
+    scheduler: str | None = None,
+    timeout_s: float | None = None,
+    engine: str | None = None,
+    figures: bool = True,
+    log: Log = _quiet,
+    **levels: list[Any],
+) -> pd.DataFrame:
     """`samples` seeded draws of `case`'s imperfections (at every combination of the amplitude
     `levels`, e.g. `edge_radius_mm=[0.5, 1]`) as a resumable campaign in `out`, with the distribution
     figures (`figures`); returns the table of montecarlo.csv (du, hinges and each sample's
@@ -69,8 +89,9 @@ def montecarlo(case: ArchCase | str, out: str | Path, samples: int, seed: int = 
     with open_pool(jobs, scheduler) as pool:
         n_levels = math.prod(len(v) for v in levels.values())
         log(f"Monte Carlo {folder}: {samples} samples x {n_levels} level(s) on {pool.where}")
-        table = run_montecarlo(with_engine(case, engine), folder, pool, samples, seed, levels or None,
-                               timeout_s=timeout_s)
+        table = run_montecarlo(
+            with_engine(case, engine), folder, pool, samples, seed, levels or None, timeout_s=timeout_s
+        )
     if figures:
         from yadearch.plotting.montecarlo import campaign_figures
 
@@ -82,10 +103,20 @@ def montecarlo(case: ArchCase | str, out: str | Path, samples: int, seed: int = 
     return table
 
 
-def calibrate(case: ArchCase | str, target_du_mm: float, out: str | Path, kn_min: float = 0.1,
-              kn_max: float = 100.0, tolerance_mm: float = 0.5, max_runs: int = 12, jobs: int | None = None,
-              engine: str | None = None, scheduler: str | None = None, timeout_s: float | None = None,
-              log: Log = _quiet) -> Calibration:
+def calibrate(
+    case: ArchCase | str,
+    target_du_mm: float,
+    out: str | Path,
+    kn_min: float = 0.1,
+    kn_max: float = 100.0,
+    tolerance_mm: float = 0.5,
+    max_runs: int = 12,
+    jobs: int | None = None,
+    engine: str | None = None,
+    scheduler: str | None = None,
+    timeout_s: float | None = None,
+    log: Log = _quiet,
+) -> Calibration:
     """The kn at which `case` collapses at `target_du_mm` (within `tolerance_mm`, at most `max_runs`
     runs), by bracketing root finding over runs kept in `out` (local processes, or the dask
     `scheduler`); returns the `Calibration` (its `write(path)` saves it as JSON)."""
@@ -94,13 +125,26 @@ def calibrate(case: ArchCase | str, target_du_mm: float, out: str | Path, kn_min
     from yadearch.studies.executors import open_pool
 
     with open_pool(jobs, scheduler) as pool:
-        return calibrate_kn(campaign_evaluator(with_engine(case, engine), Path(out), pool, timeout_s), target_du_mm,
-                            tolerance_mm, kn_min, kn_max, max_runs, log=log)
+        return calibrate_kn(
+            campaign_evaluator(with_engine(case, engine), Path(out), pool, timeout_s),
+            target_du_mm,
+            tolerance_mm,
+            kn_min,
+            kn_max,
+            max_runs,
+            log=log,
+        )
 
 
-def robustness(case: ArchCase | str, out: str | Path, kn_values: tuple[float, ...] | None = None,
-               variants: tuple[str, ...] | None = None, jobs: int | None = None, scheduler: str | None = None,
-               timeout_s: float | None = None) -> pd.DataFrame:
+def robustness(
+    case: ArchCase | str,
+    out: str | Path,
+    kn_values: tuple[float, ...] | None = None,
+    variants: tuple[str, ...] | None = None,
+    jobs: int | None = None,
+    scheduler: str | None = None,
+    timeout_s: float | None = None,
+) -> pd.DataFrame:
     """Every kn (default: the study's) with each numerical variant and with higher friction, a
     resumable study in `out` that writes robustness.csv and robustness.md; returns the verdict per
     kn (`studies.robustness.verdicts`)."""
@@ -108,14 +152,22 @@ def robustness(case: ArchCase | str, out: str | Path, kn_values: tuple[float, ..
     from yadearch.studies.robustness import KN_VALUES, VARIANTS, run_study, verdicts
 
     with open_pool(jobs, scheduler) as pool:
-        table = run_study(as_case(case), Path(out), pool, kn_values or KN_VALUES,
-                          variants or tuple(VARIANTS), timeout_s=timeout_s)
+        table = run_study(
+            as_case(case), Path(out), pool, kn_values or KN_VALUES, variants or tuple(VARIANTS), timeout_s=timeout_s
+        )
     return verdicts(table)
 
 
-def capacity(case: ArchCase | str, out: str | Path, step_deg: float = 15.0, engine: str | None = None,
-             jobs: int | None = None, scheduler: str | None = None, timeout_s: float | None = None,
-             rigid: bool = True) -> pd.DataFrame:
+def capacity(
+    case: ArchCase | str,
+    out: str | Path,
+    step_deg: float = 15.0,
+    engine: str | None = None,
+    jobs: int | None = None,
+    scheduler: str | None = None,
+    timeout_s: float | None = None,
+    rigid: bool = True,
+) -> pd.DataFrame:
     """The capacity map of `case`: du against the direction of the support movement every `step_deg`
     from spreading (0) to closing (-180), a resumable campaign in OUT/runs, with the rigid limit of
     each direction (unless not `rigid`); writes OUT/capacity.csv, capacity.md and the polar figure
@@ -130,9 +182,16 @@ def capacity(case: ArchCase | str, out: str | Path, step_deg: float = 15.0, engi
         return run_capacity(case, Path(out), pool, step_deg, rigid=rigid, timeout_s=timeout_s)
 
 
-def sensitivity(case: ArchCase | str, out: str | Path, base_points: int = 256, factors: tuple | None = None,
-                engine: str | None = None, jobs: int | None = None, scheduler: str | None = None,
-                timeout_s: float | None = None) -> SensitivityResult:
+def sensitivity(
+    case: ArchCase | str,
+    out: str | Path,
+    base_points: int = 256,
+    factors: tuple | None = None,
+    engine: str | None = None,
+    jobs: int | None = None,
+    scheduler: str | None = None,
+    timeout_s: float | None = None,
+) -> SensitivityResult:
     """What du of `case` is sensitive to: each factor alone at the ends of its range (a tornado) and
     Sobol indices from Saltelli's sample of `base_points` (a power of two), both resumable campaigns in
     `out`; `factors` (`yadearch.studies.sensitivity.Factor`s) default to the paper arch's plausible

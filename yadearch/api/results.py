@@ -90,7 +90,7 @@ class RunResult:
     def references(self) -> list[str]:
         """What this result stands on: the DEM engine (for a DEM run) and, for the paper's case, the paper."""
         from yadearch.case.reference import references_for
-        from yadearch.reporting.report import case_mismatch
+        from yadearch.reporting.paper_match import case_mismatch
 
         return references_for(dem=self.engine == DEM, paper_case=case_mismatch(self.folder.case) is None)
 

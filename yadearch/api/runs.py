@@ -44,8 +44,10 @@ def as_case(case: ArchCase | str) -> ArchCase:
         return case
     if isinstance(case, str):
         return _preset(case)
-    raise TypeError(f"case must be an ArchCase (ya.preset, ya.load_case) or a preset name ('set1', 'set2'), "
-                    f"got {type(case).__name__}")
+    raise TypeError(
+        f"case must be an ArchCase (ya.preset, ya.load_case) or a preset name ('set1', 'set2'), "
+        f"got {type(case).__name__}"
+    )
 
 
 def with_engine(case: ArchCase | str, engine: str | None) -> ArchCase:
@@ -59,9 +61,16 @@ def with_engine(case: ArchCase | str, engine: str | None) -> ArchCase:
     return case.with_overrides({"numerics.engine": engine})
 
 
-def run(case: ArchCase | str, out: str | Path | None = None, timeout_s: float | None = None,
-        figures: bool = True, rerun: bool = False, overwrite: bool = False, engine: str | None = None,
-        quiet: bool = False) -> RunResult:
+def run(
+    case: ArchCase | str,
+    out: str | Path | None = None,
+    timeout_s: float | None = None,
+    figures: bool = True,
+    rerun: bool = False,
+    overwrite: bool = False,
+    engine: str | None = None,
+    quiet: bool = False,
+) -> RunResult:
     """Run `case` to collapse in a child process (YADE, or the static engine with `engine="static"`),
     writing the run folder `out` (default runs/NAME) and its figures; returns the result read back.
     A finished run of the same case in `out` is reused (unless `rerun`); one of another case is kept
@@ -75,9 +84,11 @@ def run(case: ArchCase | str, out: str | Path | None = None, timeout_s: float | 
         if not differences:
             return open_run(folder)
         if not overwrite:
-            raise RunFolderError(f"{folder} holds a finished run of another case ({differences[0]}"
-                                 f"{', ...' if len(differences) > 1 else ''}); choose another output "
-                                 "folder or overwrite it")
+            raise RunFolderError(
+                f"{folder} holds a finished run of another case ({differences[0]}"
+                f"{', ...' if len(differences) > 1 else ''}); choose another output "
+                "folder or overwrite it"
+            )
     run_case_process(case, folder, timeout_s=timeout_s, quiet=quiet)
     result = open_run(folder)
     if figures:
@@ -85,8 +96,9 @@ def run(case: ArchCase | str, out: str | Path | None = None, timeout_s: float | 
     return result
 
 
-def reproduce(out: str | Path = "reports", jobs: int = 2, rerun: bool = False,
-              on_reuse: Callable[[Path], None] | None = None) -> tuple[list[RunResult], Path]:
+def reproduce(
+    out: str | Path = "reports", jobs: int = 2, rerun: bool = False, on_reuse: Callable[[Path], None] | None = None
+) -> tuple[list[RunResult], Path]:
     """The paper's two cases (OUT/set1, OUT/set2, `jobs` at once) and OUT/report.md with figures; a
     finished run of exactly the same case in OUT is reused (`on_reuse` is told), unless `rerun`.
     Returns both results and the report's path."""
@@ -113,8 +125,9 @@ def report(runs: Sequence[str | Path], out: str | Path) -> Path:
     return write_report(list(runs), out)
 
 
-def limit(case: ArchCase | str, compliant: bool = False, max_snap_mm: float | None = None,
-          out: str | Path | None = None) -> LimitResult:
+def limit(
+    case: ArchCase | str, compliant: bool = False, max_snap_mm: float | None = None, out: str | Path | None = None
+) -> LimitResult:
     """Rigid-block limit analysis of `case` (no YADE, seconds): du_rigid and the hinge history;
     `compliant`: with the joints folding at the margin the case's kn allows (what a DEM run of that
     stiffness should find; docs/validation.md); `max_snap_mm`: a hinge snap moving a block further

@@ -48,8 +48,9 @@ class ArchCase:
     @property
     def support_speed_mm_per_s(self) -> float:
         """Support speed of the continuous loading and of the du search's moves (mm/s)."""
-        return support_speed(self.numerics.support_rate_mm_per_s,
-                             self.numerics.rate_reference_kn_N_per_mm3, self.interface.kn_N_per_mm3)
+        return support_speed(
+            self.numerics.support_rate_mm_per_s, self.numerics.rate_reference_kn_N_per_mm3, self.interface.kn_N_per_mm3
+        )
 
     def validate(self) -> ArchCase:
         """Check every number against its accepted range; raise CaseError naming the first bad one."""
@@ -145,8 +146,11 @@ def _check_table(name: str, columns: tuple[str, ...], rows: Any) -> None:
     if not isinstance(rows, list | tuple):
         raise CaseError(f"{name} must be {shape}, got {rows!r:.60}")
     for k, row in enumerate(rows, start=1):
-        if (not isinstance(row, list | tuple) or len(row) != len(columns)
-                or any(isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v) for v in row)):
+        if (
+            not isinstance(row, list | tuple)
+            or len(row) != len(columns)
+            or any(isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v) for v in row)
+        ):
             raise CaseError(f"{name} must be {shape}; row {k} is {row!r:.60}")
 
 
@@ -173,8 +177,10 @@ def case_from_dict(data: dict[str, Any]) -> ArchCase:
     for section_name, cls in SECTIONS.items():
         section = data.get(section_name, {})
         if not isinstance(section, dict):
-            raise CaseError(f"[{section_name}] must be a table of parameters (key = value lines), "
-                            f"got {type(section).__name__} {section!r:.40}")
+            raise CaseError(
+                f"[{section_name}] must be a table of parameters (key = value lines), "
+                f"got {type(section).__name__} {section!r:.40}"
+            )
         values = current_names(section_name, section)
         names = {f.name for f in fields(cls)}
         bad = set(values) - names
@@ -201,8 +207,10 @@ def current_names(section_name: str, values: Mapping[str, Any]) -> dict[str, Any
 
 def with_current_names(data: Mapping[str, Any]) -> dict[str, Any]:
     """A stored case (nested dicts) with every former parameter name replaced by today's."""
-    return {key: current_names(key, value) if key in SECTIONS and isinstance(value, Mapping) else value
-            for key, value in data.items()}
+    return {
+        key: current_names(key, value) if key in SECTIONS and isinstance(value, Mapping) else value
+        for key, value in data.items()
+    }
 
 
 def as_ran(data: dict[str, Any]) -> dict[str, Any]:
@@ -214,18 +222,22 @@ def as_ran(data: dict[str, Any]) -> dict[str, Any]:
     for section_name, cls in SECTIONS.items():
         stored, defaults = current_names(section_name, data.get(section_name, {})), cls()
         filled[section_name] = {
-            f.name: stored.get(f.name, f.metadata.get("predates", getattr(defaults, f.name)))
-            for f in fields(cls)}
+            f.name: stored.get(f.name, f.metadata.get("predates", getattr(defaults, f.name))) for f in fields(cls)
+        }
     numerics = filled["numerics"]
     numerics["support_speed_mm_per_s"] = support_speed(
-        numerics["support_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"],
-        filled["interface"]["kn_N_per_mm3"])
+        numerics["support_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"], filled["interface"]["kn_N_per_mm3"]
+    )
     del numerics["support_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"]
     loading = filled["loading"]  # the acceleration a run used; a turn or a path counted as horizontal
-    share = (abs(math.cos(math.radians(loading["support_direction_deg"])))
-             if loading["support_motion"] == "translation" else 1.0)
+    share = (
+        abs(math.cos(math.radians(loading["support_direction_deg"])))
+        if loading["support_motion"] == "translation"
+        else 1.0
+    )
     numerics["support_acceleration_mm_per_s2"] = capped_acceleration(
-        numerics["support_acceleration_mm_per_s2"], numerics.pop("support_horizontal_acceleration_mm_per_s2"), share)
+        numerics["support_acceleration_mm_per_s2"], numerics.pop("support_horizontal_acceleration_mm_per_s2"), share
+    )
     return filled
 
 

@@ -38,8 +38,9 @@ class ArchImperfections:
     @property
     def perfect_faces(self) -> bool:
         """Whether every joint's faces are flat, parallel, unworn and aligned (only dimension errors)."""
-        return not (self.profiles.imperfect.any() or self.profiles.left_offset.any()
-                    or self.profiles.right_offset.any())
+        return not (
+            self.profiles.imperfect.any() or self.profiles.left_offset.any() or self.profiles.right_offset.any()
+        )
 
     def wedge_openings(self) -> tuple[np.ndarray, np.ndarray]:
         """The faces' wedge at each joint's intrados and extrados end (m)."""
@@ -59,42 +60,60 @@ class ArchImperfections:
     def summary(self) -> dict[str, float]:
         """A few numbers that describe this draw, for campaign tables (mm, mrad)."""
         d, mm = self.defects, units.to_mm
-        edges = np.concatenate([d.left_intrados_edge[1:], d.left_extrados_edge[1:],
-                                d.right_intrados_edge[:-1], d.right_extrados_edge[:-1]])
-        return {"edge_mean_mm": mm(float(edges.mean())), "edge_max_mm": mm(float(edges.max())),
-                "face_angle_rms_mrad": units.to_mrad(float(np.sqrt(np.mean(d.face_angle**2)))),
-                "face_bump_rms_mm": mm(float(np.sqrt(np.mean(d.face_bump**2)))),
-                "offset_rms_mm": mm(float(np.sqrt(np.mean(d.right_offset[:-1] ** 2)))),
-                "largest_gap_mm": mm(float(self.profiles.gap.max())),
-                **self._dimension_summary()}
+        edges = np.concatenate(
+            [d.left_intrados_edge[1:], d.left_extrados_edge[1:], d.right_intrados_edge[:-1], d.right_extrados_edge[:-1]]
+        )
+        return {
+            "edge_mean_mm": mm(float(edges.mean())),
+            "edge_max_mm": mm(float(edges.max())),
+            "face_angle_rms_mrad": units.to_mrad(float(np.sqrt(np.mean(d.face_angle**2)))),
+            "face_bump_rms_mm": mm(float(np.sqrt(np.mean(d.face_bump**2)))),
+            "offset_rms_mm": mm(float(np.sqrt(np.mean(d.right_offset[:-1] ** 2)))),
+            "largest_gap_mm": mm(float(self.profiles.gap.max())),
+            **self._dimension_summary(),
+        }
 
     def _dimension_summary(self) -> dict[str, float]:
         if self.dimensions is None:
             return {}
         d = self.dimensions
-        return {"length_error_rms_mm": units.to_mm(float(np.sqrt(np.mean(d.length**2)))),
-                "thickness_error_mean_mm": units.to_mm(float(d.thickness.mean())),
-                "thickness_error_rms_mm": units.to_mm(float(np.sqrt(np.mean(d.thickness**2)))),
-                "joint_shift_max_mm": units.to_mm(float(np.abs(d.joint_shift).max()))}
+        return {
+            "length_error_rms_mm": units.to_mm(float(np.sqrt(np.mean(d.length**2)))),
+            "thickness_error_mean_mm": units.to_mm(float(d.thickness.mean())),
+            "thickness_error_rms_mm": units.to_mm(float(np.sqrt(np.mean(d.thickness**2)))),
+            "joint_shift_max_mm": units.to_mm(float(np.abs(d.joint_shift).max())),
+        }
 
 
 def check_contact_model(contact_model: str) -> None:
     """Only the joint elements represent imperfect faces; CaseError naming the parameter otherwise."""
     if contact_model != "joint":
-        raise CaseError(f"numerics.contact_model = {contact_model!r} cannot represent imperfect joint faces; "
-                        "use 'joint' or set the [imperfections] amplitudes to 0")
+        raise CaseError(
+            f"numerics.contact_model = {contact_model!r} cannot represent imperfect joint faces; "
+            "use 'joint' or set the [imperfections] amplitudes to 0"
+        )
 
 
 def amplitudes(case: ArchCase) -> ImperfectionAmplitudes:
     """The case's [imperfections] amplitudes in SI."""
     i = case.imperfections
-    return ImperfectionAmplitudes(i.edge_shape, units.mm(i.edge_radius_mm), units.mm(i.edge_radius_sd_mm),
-                                  units.mrad(i.face_angle_mrad), units.mrad(i.face_angle_sd_mrad),
-                                  units.mm(i.face_bump_mm), units.mm(i.face_bump_sd_mm),
-                                  units.mm(i.voussoir_offset_mm), units.mm(i.voussoir_offset_sd_mm),
-                                  units.mm(i.keystone_offset_mm), units.mrad(i.left_support_angle_mrad),
-                                  units.mrad(i.right_support_angle_mrad), units.mm(i.voussoir_length_sd_mm),
-                                  units.mm(i.voussoir_thickness_mm), units.mm(i.voussoir_thickness_sd_mm))
+    return ImperfectionAmplitudes(
+        i.edge_shape,
+        units.mm(i.edge_radius_mm),
+        units.mm(i.edge_radius_sd_mm),
+        units.mrad(i.face_angle_mrad),
+        units.mrad(i.face_angle_sd_mrad),
+        units.mm(i.face_bump_mm),
+        units.mm(i.face_bump_sd_mm),
+        units.mm(i.voussoir_offset_mm),
+        units.mm(i.voussoir_offset_sd_mm),
+        units.mm(i.keystone_offset_mm),
+        units.mrad(i.left_support_angle_mrad),
+        units.mrad(i.right_support_angle_mrad),
+        units.mm(i.voussoir_length_sd_mm),
+        units.mm(i.voussoir_thickness_mm),
+        units.mm(i.voussoir_thickness_sd_mm),
+    )
 
 
 def dimension_errors(case: ArchCase, n_voussoirs: int) -> DimensionErrors | None:
@@ -102,8 +121,13 @@ def dimension_errors(case: ArchCase, n_voussoirs: int) -> DimensionErrors | None
     amps = amplitudes(case)
     if amps.perfect_dimensions:
         return None
-    return draw_dimension_errors(n_voussoirs, case.imperfections.seed, amps.voussoir_length_sd,
-                                 amps.voussoir_thickness, amps.voussoir_thickness_sd)
+    return draw_dimension_errors(
+        n_voussoirs,
+        case.imperfections.seed,
+        amps.voussoir_length_sd,
+        amps.voussoir_thickness,
+        amps.voussoir_thickness_sd,
+    )
 
 
 def imperfect_geometry(case: ArchCase, geometry: ArchGeometry) -> ArchGeometry:
@@ -114,16 +138,20 @@ def imperfect_geometry(case: ArchCase, geometry: ArchGeometry) -> ArchGeometry:
         return geometry
     g = case.geometry
     if g.shape == "pointed" and g.n_voussoirs % 2 == 0 and case.imperfections.voussoir_length_sd_mm > 0:
-        raise CaseError(f"imperfections.voussoir_length_sd_mm = {case.imperfections.voussoir_length_sd_mm:g} "
-                        f"must be 0 for a pointed arch with an even geometry.n_voussoirs ({g.n_voussoirs}): "
-                        "its crown joint sits on the apex, which a joint moved along the arch would cut")
+        raise CaseError(
+            f"imperfections.voussoir_length_sd_mm = {case.imperfections.voussoir_length_sd_mm:g} "
+            f"must be 0 for a pointed arch with an even geometry.n_voussoirs ({g.n_voussoirs}): "
+            "its crown joint sits on the apex, which a joint moved along the arch would cut"
+        )
     try:
         return with_dimension_errors(geometry, errors)
     except ValueError as exc:
         i = case.imperfections
-        raise CaseError(f"imperfections.voussoir_length_sd_mm = {i.voussoir_length_sd_mm:g}, voussoir_thickness_mm = "
-                        f"{i.voussoir_thickness_mm:g} and voussoir_thickness_sd_mm = {i.voussoir_thickness_sd_mm:g} "
-                        f"are too large for this arch (seed {i.seed}): {exc}") from None
+        raise CaseError(
+            f"imperfections.voussoir_length_sd_mm = {i.voussoir_length_sd_mm:g}, voussoir_thickness_mm = "
+            f"{i.voussoir_thickness_mm:g} and voussoir_thickness_sd_mm = {i.voussoir_thickness_sd_mm:g} "
+            f"are too large for this arch (seed {i.seed}): {exc}"
+        ) from None
 
 
 def arch_imperfections(case: ArchCase, geometry: ArchGeometry) -> ArchImperfections | None:
@@ -133,5 +161,6 @@ def arch_imperfections(case: ArchCase, geometry: ArchGeometry) -> ArchImperfecti
         return None
     lengths = np.array([joint.length for joint in geometry.joints])
     defects = draw_defects(amps, len(lengths), case.imperfections.seed, lengths)
-    return ArchImperfections(defects, gap_profiles(defects, lengths), lengths,
-                             dimension_errors(case, geometry.n_voussoirs))
+    return ArchImperfections(
+        defects, gap_profiles(defects, lengths), lengths, dimension_errors(case, geometry.n_voussoirs)
+    )

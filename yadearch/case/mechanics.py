@@ -43,8 +43,11 @@ def standing_parameters(case: ArchCase) -> str:
     else:
         terms.insert(1, f"span_mm {g.span_mm:g}, rise_mm {g.rise_mm:g}")
     terms += [f"friction_deg {case.material.friction_deg:g}", f"kn {case.interface.kn_N_per_mm3:g} N/mm3"]
-    defects = [f"{name} {value:g}" for name, value in vars(case.imperfections).items()
-               if isinstance(value, float) and value != 0.0]
+    defects = [
+        f"{name} {value:g}"
+        for name, value in vars(case.imperfections).items()
+        if isinstance(value, float) and value != 0.0
+    ]
     return ", ".join(terms + defects)
 
 
@@ -73,8 +76,9 @@ def contact_stiffness(case: ArchCase, geometry: ArchGeometry) -> ContactStiffnes
     designed = geometry if amplitudes(case).perfect_dimensions else build_arch(case.geometry)
     width_mm = units.to_mm(designed.voussoir_width)  # the designed width: no draw changes kn
     kn = units.stiffness_per_volume(effective_kn_N_per_mm3(case, width_mm))
-    return ContactStiffness(kn=kn, ks=kn * case.interface.ks_over_kn,
-                            tan_friction=math.tan(units.radians(case.material.friction_deg)))
+    return ContactStiffness(
+        kn=kn, ks=kn * case.interface.ks_over_kn, tan_friction=math.tan(units.radians(case.material.friction_deg))
+    )
 
 
 def compressed_length(offset_from_intrados: float, joint_length: float) -> float:

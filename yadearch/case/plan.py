@@ -38,34 +38,44 @@ def plan_run(case: ArchCase) -> RunPlan:
     static engine has no time step: its plan checks the arch, the movement and the increments)."""
     num = case.numerics
     if not num.du_tolerance_mm < num.first_increment_mm <= num.max_increment_mm:
-        raise CaseError(f"numerics.du_tolerance_mm = {num.du_tolerance_mm:g}, first_increment_mm = "
-                        f"{num.first_increment_mm:g} and max_increment_mm = {num.max_increment_mm:g} must "
-                        "grow in that order (the tolerance below the first increment, that at most the largest)")
+        raise CaseError(
+            f"numerics.du_tolerance_mm = {num.du_tolerance_mm:g}, first_increment_mm = "
+            f"{num.first_increment_mm:g} and max_increment_mm = {num.max_increment_mm:g} must "
+            "grow in that order (the tolerance below the first increment, that at most the largest)"
+        )
     geometry = arch_geometry(case)  # refuses an arch that cannot be built (case/shape.py)
     _check_imperfections(case, geometry)
     movement = case_movement(case, geometry)  # refuses a movement that cannot be followed (a pivot on the path's point)
     if num.engine == "static":
         if num.contact_model != "joint":
-            raise CaseError(f"numerics.contact_model = {num.contact_model!r} is the DEM's; the static engine "
-                            "evaluates the joint elements only (numerics.contact_model = 'joint')")
+            raise CaseError(
+                f"numerics.contact_model = {num.contact_model!r} is the DEM's; the static engine "
+                "evaluates the joint elements only (numerics.contact_model = 'joint')"
+            )
         return RunPlan(math.nan, 0.0, 0.0, 0.0)  # no time stepping: nothing else to plan
     dt = num.timestep_safety * critical_timestep(case, geometry, contact_stiffness(case, geometry))
     if not math.isfinite(dt) or dt <= 0.0:
-        raise CaseError(f"the time step from interface.kn_N_per_mm3 = {case.interface.kn_N_per_mm3:g} "
-                        f"and material.density_g_per_cm3 = {case.material.density_g_per_cm3:g} is "
-                        f"{dt:g} s; both must give a finite, positive step")
+        raise CaseError(
+            f"the time step from interface.kn_N_per_mm3 = {case.interface.kn_N_per_mm3:g} "
+            f"and material.density_g_per_cm3 = {case.material.density_g_per_cm3:g} is "
+            f"{dt:g} s; both must give a finite, positive step"
+        )
     ramp_s = num.gravity_ramp_periods * math.pi * dt / num.timestep_safety
     if ramp_s > num.selfweight_max_s:
-        raise CaseError(f"numerics.gravity_ramp_periods = {num.gravity_ramp_periods:g} makes the gravity "
-                        f"ramp {ramp_s:.3g} s, longer than numerics.selfweight_max_s = "
-                        f"{num.selfweight_max_s:g} s; lower the first or raise the second")
+        raise CaseError(
+            f"numerics.gravity_ramp_periods = {num.gravity_ramp_periods:g} makes the gravity "
+            f"ramp {ramp_s:.3g} s, longer than numerics.selfweight_max_s = "
+            f"{num.selfweight_max_s:g} s; lower the first or raise the second"
+        )
     accel = support_acceleration_mm_per_s2(case, movement)
     worst_s = num.selfweight_max_s + ramp_s + _loading_worst_case_s(case, accel) + SETTLE_HOLDS * num.hold_max_s
     steps = worst_s / dt
     if steps > num.max_steps:
-        raise CaseError(f"this case could take up to {steps:.3g} steps (time step {dt:.3g} s, up to "
-                        f"{worst_s:.3g} s simulated), over numerics.max_steps = {num.max_steps:.3g}; "
-                        "check the loading speed, increments and hold times, or raise max_steps")
+        raise CaseError(
+            f"this case could take up to {steps:.3g} steps (time step {dt:.3g} s, up to "
+            f"{worst_s:.3g} s simulated), over numerics.max_steps = {num.max_steps:.3g}; "
+            "check the loading speed, increments and hold times, or raise max_steps"
+        )
     return RunPlan(dt, ramp_s, worst_s, steps)
 
 
@@ -80,27 +90,38 @@ def _check_imperfections(case: ArchCase, geometry: ArchGeometry) -> None:
         check_contact_model(case.numerics.contact_model)
     largest_mm = MAX_EDGE_FRACTION * units.to_mm(min(joint.length for joint in geometry.joints))
     if imp.edge_radius_mm > largest_mm:
-        raise CaseError(f"imperfections.edge_radius_mm = {imp.edge_radius_mm:g} must be at most "
-                        f"{largest_mm:.3g} mm ({MAX_EDGE_FRACTION:g} of the joint length)")
+        raise CaseError(
+            f"imperfections.edge_radius_mm = {imp.edge_radius_mm:g} must be at most "
+            f"{largest_mm:.3g} mm ({MAX_EDGE_FRACTION:g} of the joint length)"
+        )
     drawn = arch_imperfections(case, geometry)
     assert drawn is not None
     shift = np.abs(drawn.defects.right_offset - drawn.defects.left_offset)
     if np.any(shift > 2.0 * MAX_EDGE_FRACTION * drawn.lengths):
-        raise CaseError(f"imperfections.voussoir_offset_mm = {imp.voussoir_offset_mm:g}, voussoir_offset_sd_mm "
-                        f"= {imp.voussoir_offset_sd_mm:g} and keystone_offset_mm = {imp.keystone_offset_mm:g} "
-                        f"offset two faces by up to {units.to_mm(float(shift.max())):.3g} mm; at most "
-                        f"{2 * MAX_EDGE_FRACTION:g} of the joint length "
-                        f"({units.to_mm(float(drawn.lengths.min())):.3g} mm)")
+        raise CaseError(
+            f"imperfections.voussoir_offset_mm = {imp.voussoir_offset_mm:g}, voussoir_offset_sd_mm "
+            f"= {imp.voussoir_offset_sd_mm:g} and keystone_offset_mm = {imp.keystone_offset_mm:g} "
+            f"offset two faces by up to {units.to_mm(float(shift.max())):.3g} mm; at most "
+            f"{2 * MAX_EDGE_FRACTION:g} of the joint length "
+            f"({units.to_mm(float(drawn.lengths.min())):.3g} mm)"
+        )
 
 
 def _loading_worst_case_s(case: ArchCase, accel_mm_per_s2: float) -> float:
     """Simulated time of the loading if every increment ran its full move and its longest hold."""
     num = case.numerics
     largest = max(num.max_increment_mm, num.first_increment_mm)
-    growing = math.ceil(math.log(largest / num.first_increment_mm) / math.log(num.increment_growth)) \
-        if num.increment_growth > 1.0 else math.ceil(case.loading.max_support_displacement_mm / num.first_increment_mm)
-    increments = (growing + math.ceil(case.loading.max_support_displacement_mm / largest)
-                  + math.ceil(math.log2(largest / num.du_tolerance_mm)) + BISECTIONS_MARGIN)
+    growing = (
+        math.ceil(math.log(largest / num.first_increment_mm) / math.log(num.increment_growth))
+        if num.increment_growth > 1.0
+        else math.ceil(case.loading.max_support_displacement_mm / num.first_increment_mm)
+    )
+    increments = (
+        growing
+        + math.ceil(case.loading.max_support_displacement_mm / largest)
+        + math.ceil(math.log2(largest / num.du_tolerance_mm))
+        + BISECTIONS_MARGIN
+    )
     return increments * (_move_s(largest, case.support_speed_mm_per_s, accel_mm_per_s2) + num.hold_max_s)
 
 

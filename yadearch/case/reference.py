@@ -12,8 +12,14 @@ from typing import Any
 
 PAPER = "Effect of geometrical imperfections on the response of dry-joint masonry arches to support settlements"
 
-GEOMETRY = {"n_voussoirs": 55, "embrace_deg": 125.0, "internal_radius_mm": 300.0,
-            "thickness_mm": 24.0, "depth_mm": 120.0, "net_span_mm": 533.0}
+GEOMETRY = {
+    "n_voussoirs": 55,
+    "embrace_deg": 125.0,
+    "internal_radius_mm": 300.0,
+    "thickness_mm": 24.0,
+    "depth_mm": 120.0,
+    "net_span_mm": 533.0,
+}
 MATERIAL = {"density_g_per_cm3": 1.64, "friction_deg": 41.2, "young_MPa": 941.0, "poisson": 0.2}
 KS_OVER_KN = 0.5
 KN_SENSITIVITY_RANGE_N_PER_MM3 = (0.1, 100.0)  # paper Fig. 8
@@ -43,16 +49,19 @@ REFERENCES: dict[str, str] = {
     "paper": f"{PAPER} (the reference study: the arch, its material, both sets' kn and Table 1).",
     "yade": "V. Šmilauer et al., Yade Documentation, 3rd ed., The Yade Project, 2021 (the DEM engine).",
     "gilbert": "M. Gilbert, C. Casapulla, H. M. Ahmed, Limit analysis of masonry block structures with "
-               "non-associative frictional joints using linear programming, Computers & Structures 84 "
-               "(2006) 873-887 (the rigid-block equilibrium LP).",
+    "non-associative frictional joints using linear programming, Computers & Structures 84 "
+    "(2006) 873-887 (the rigid-block equilibrium LP).",
     "portioli": "F. Portioli, L. Cascini, Large displacement analysis of dry-jointed masonry structures "
-                "subjected to settlements using rigid block modelling, Engineering Structures 148 (2017) "
-                "485-496 (the incremental rigid-block analysis of settlements).",
+    "subjected to settlements using rigid block modelling, Engineering Structures 148 (2017) "
+    "485-496 (the incremental rigid-block analysis of settlements).",
 }
 
 
 def references_for(dem: bool = True, limit_analysis: bool = False, paper_case: bool = False) -> list[str]:
     """The references behind a result: the DEM engine, the rigid-block analysis, the reference study."""
-    keys = (["paper"] if paper_case else []) + (["yade"] if dem else []) \
+    keys = (
+        (["paper"] if paper_case else [])
+        + (["yade"] if dem else [])
         + (["gilbert", "portioli"] if limit_analysis else [])
+    )
     return [REFERENCES[key] for key in keys]

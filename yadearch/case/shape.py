@@ -29,8 +29,12 @@ INTRADOS: dict[str, Callable[[GeometryConfig], Intrados]] = {
     "elliptical": lambda g: HalfEllipse(units.mm(g.span_mm), units.mm(g.rise_mm)),
     "three_centred": lambda g: three_centred(units.mm(g.span_mm), units.mm(g.rise_mm)),
 }
-SIZED_BY = {"segmental": "geometry.internal_radius_mm", "pointed": "geometry.span_mm, pointed_radius_over_span",
-            "elliptical": "geometry.span_mm, rise_mm", "three_centred": "geometry.span_mm, rise_mm"}
+SIZED_BY = {
+    "segmental": "geometry.internal_radius_mm",
+    "pointed": "geometry.span_mm, pointed_radius_over_span",
+    "elliptical": "geometry.span_mm, rise_mm",
+    "three_centred": "geometry.span_mm, rise_mm",
+}
 
 
 def checked_intrados(g: GeometryConfig) -> Intrados:
@@ -38,22 +42,30 @@ def checked_intrados(g: GeometryConfig) -> Intrados:
     tightest radius and every joint crosses the ring at MIN_JOINT_ANGLE_DEG or more; else CaseError."""
     half_span = MAX_RISE_OVER_SPAN * g.span_mm
     if g.shape == "elliptical" and g.rise_mm > half_span:
-        raise CaseError(f"geometry.rise_mm = {g.rise_mm:g} must be at most {half_span:g} mm (half of "
-                        f"geometry.span_mm = {g.span_mm:g}) for an elliptical arch")
+        raise CaseError(
+            f"geometry.rise_mm = {g.rise_mm:g} must be at most {half_span:g} mm (half of "
+            f"geometry.span_mm = {g.span_mm:g}) for an elliptical arch"
+        )
     if g.shape == "three_centred" and g.rise_mm >= half_span:
-        raise CaseError(f"geometry.rise_mm = {g.rise_mm:g} must be below {half_span:g} mm (half of "
-                        f"geometry.span_mm = {g.span_mm:g}) for a three-centred arch")
+        raise CaseError(
+            f"geometry.rise_mm = {g.rise_mm:g} must be below {half_span:g} mm (half of "
+            f"geometry.span_mm = {g.span_mm:g}) for a three-centred arch"
+        )
     intrados = INTRADOS[g.shape](g)
     tightest_mm = units.to_mm(intrados.min_radius)
     if g.thickness_mm >= tightest_mm:
-        raise CaseError(f"geometry.thickness_mm = {g.thickness_mm:g} must be below {tightest_mm:.6g} mm, the "
-                        f"smallest radius of curvature of this {g.shape} intrados ({SIZED_BY[g.shape]})")
+        raise CaseError(
+            f"geometry.thickness_mm = {g.thickness_mm:g} must be below {tightest_mm:.6g} mm, the "
+            f"smallest radius of curvature of this {g.shape} intrados ({SIZED_BY[g.shape]})"
+        )
     angles = joint_obliquity_deg(intrados, g.n_voussoirs, g.joint_orientation)
     worst = int(np.argmin(angles))
     if angles[worst] < MIN_JOINT_ANGLE_DEG:
-        raise CaseError(f"geometry.joint_orientation = {g.joint_orientation!r} makes interface {worst + 1} "
-                        f"meet the intrados at {angles[worst]:.3g} deg; joints must be at least "
-                        f"{MIN_JOINT_ANGLE_DEG:g} deg off its tangent ('normal' joints are at 90)")
+        raise CaseError(
+            f"geometry.joint_orientation = {g.joint_orientation!r} makes interface {worst + 1} "
+            f"meet the intrados at {angles[worst]:.3g} deg; joints must be at least "
+            f"{MIN_JOINT_ANGLE_DEG:g} deg off its tangent ('normal' joints are at 90)"
+        )
     return intrados
 
 
@@ -64,8 +76,9 @@ def build_arch(g: GeometryConfig) -> ArchGeometry:
     thickness, depth, support = units.mm(g.thickness_mm), units.mm(g.depth_mm), units.mm(g.support_length_mm)
     try:
         if g.shape == "segmental" and g.joint_orientation != "vertical":
-            return segmental_arch(g.n_voussoirs, g.embrace_deg, units.mm(g.internal_radius_mm), thickness,
-                                  depth, support)
+            return segmental_arch(
+                g.n_voussoirs, g.embrace_deg, units.mm(g.internal_radius_mm), thickness, depth, support
+            )
         return arch_on_intrados(intrados, g.n_voussoirs, g.joint_orientation, thickness, depth, support)
     except ValueError as exc:
         raise CaseError(f"the arch cannot be built: {exc}") from None

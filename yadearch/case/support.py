@@ -16,14 +16,22 @@ def case_movement(case: ArchCase, geometry: ArchGeometry) -> Movement:
     loading = case.loading
     path = np.array([[units.mm(dx), units.mm(dy), units.mrad(turn)] for dx, dy, turn in loading.path_mm_mrad])
     try:
-        return support_movement(geometry, loading.moving_support, loading.support_motion,
-                                loading.support_direction_deg,
-                                (units.mm(loading.rotation_pivot_dx_mm), units.mm(loading.rotation_pivot_dy_mm)),
-                                loading.rotation_sense, path.reshape(-1, 3))
+        return support_movement(
+            geometry,
+            loading.moving_support,
+            loading.support_motion,
+            loading.support_direction_deg,
+            (units.mm(loading.rotation_pivot_dx_mm), units.mm(loading.rotation_pivot_dy_mm)),
+            loading.rotation_sense,
+            path.reshape(-1, 3),
+        )
     except ValueError as exc:
-        detail = (f"path_mm_mrad {loading.path_mm_mrad}" if loading.support_motion == "path" else
-                  f"rotation_pivot_dx_mm {loading.rotation_pivot_dx_mm}, "
-                  f"rotation_pivot_dy_mm {loading.rotation_pivot_dy_mm}")
+        detail = (
+            f"path_mm_mrad {loading.path_mm_mrad}"
+            if loading.support_motion == "path"
+            else f"rotation_pivot_dx_mm {loading.rotation_pivot_dx_mm}, "
+            f"rotation_pivot_dy_mm {loading.rotation_pivot_dy_mm}"
+        )
         raise CaseError(f"loading: {exc} ({detail:.120})") from None
 
 
@@ -38,16 +46,27 @@ def support_acceleration_mm_per_s2(case: ArchCase, movement: Movement) -> float:
     horizontal component stays within `support_horizontal_acceleration_mm_per_s2` (a horizontal
     jolt loads the arch like a ground acceleration; docs/numerics.md); 0 = instantaneous."""
     num = case.numerics
-    return capped_acceleration(num.support_acceleration_mm_per_s2, num.support_horizontal_acceleration_mm_per_s2,
-                               movement.horizontal_share)
+    return capped_acceleration(
+        num.support_acceleration_mm_per_s2, num.support_horizontal_acceleration_mm_per_s2, movement.horizontal_share
+    )
 
 
-def _loading(moving_support: str, motion: str, direction_deg: float = -90.0, pivot_dy_mm: float = 0.0,
-             path: list[list[float]] | None = None) -> dict:
-    return {"loading.moving_support": moving_support, "loading.support_motion": motion,
-            "loading.support_direction_deg": direction_deg, "loading.rotation_pivot_dx_mm": 0.0,
-            "loading.rotation_pivot_dy_mm": pivot_dy_mm, "loading.rotation_sense": "clockwise",
-            "loading.path_mm_mrad": path or []}
+def _loading(
+    moving_support: str,
+    motion: str,
+    direction_deg: float = -90.0,
+    pivot_dy_mm: float = 0.0,
+    path: list[list[float]] | None = None,
+) -> dict:
+    return {
+        "loading.moving_support": moving_support,
+        "loading.support_motion": motion,
+        "loading.support_direction_deg": direction_deg,
+        "loading.rotation_pivot_dx_mm": 0.0,
+        "loading.rotation_pivot_dy_mm": pivot_dy_mm,
+        "loading.rotation_sense": "clockwise",
+        "loading.path_mm_mrad": path or [],
+    }
 
 
 SETTLE_THEN_SPREAD_MM_MRAD = [[0.0, -20.0, 0.0], [60.0, -20.0, 0.0]]  # 20 mm down, then 60 mm outward

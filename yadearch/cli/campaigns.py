@@ -25,23 +25,55 @@ def _base_case(preset_name: str | None, case_file: str | None, settings: tuple[s
 
 @click.command()
 @case_options(with_kn=False)
-@click.option("--kn", "kn_spec", metavar="VALUES",
-              help="kn values (N/mm3): 0.25,5.2 or start:stop:log:n, e.g. 0.1:100:log:13")
-@click.option("--param", "param_specs", multiple=True, metavar="NAME=VALUES",
-              help="another grid axis, e.g. --param n_voussoirs=15,31,55 or damping=0.1:0.3:lin:3")
-@click.option("--table", "table_file", type=click.Path(dir_okay=False),
-              help="explicit CSV table of runs instead of a grid (one column per parameter)")
-@click.option("--out", required=True, type=click.Path(file_okay=False),
-              help="campaign folder: one run folder per run, runs.csv, results.csv")
+@click.option(
+    "--kn", "kn_spec", metavar="VALUES", help="kn values (N/mm3): 0.25,5.2 or start:stop:log:n, e.g. 0.1:100:log:13"
+)
+@click.option(
+    "--param",
+    "param_specs",
+    multiple=True,
+    metavar="NAME=VALUES",
+    help="another grid axis, e.g. --param n_voussoirs=15,31,55 or damping=0.1:0.3:lin:3",
+)
+@click.option(
+    "--table",
+    "table_file",
+    type=click.Path(dir_okay=False),
+    help="explicit CSV table of runs instead of a grid (one column per parameter)",
+)
+@click.option(
+    "--out",
+    required=True,
+    type=click.Path(file_okay=False),
+    help="campaign folder: one run folder per run, runs.csv, results.csv",
+)
 @pool_options
-@click.option("--figure/--no-figure", default=True, show_default=True,
-              help="draw du against each swept parameter (with the hinges when kn alone is swept)")
-@click.option("--retry-failed/--keep-failed", default=True, show_default=True,
-              help="redo runs recorded as failed, or keep them (and their reasons) as they are")
-def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, ...],
-          kn_spec: str | None, param_specs: tuple[str, ...], table_file: str | None, out: str,
-          jobs: int | None, scheduler: str | None, timeout_min: float | None, figure: bool,
-          retry_failed: bool) -> None:
+@click.option(
+    "--figure/--no-figure",
+    default=True,
+    show_default=True,
+    help="draw du against each swept parameter (with the hinges when kn alone is swept)",
+)
+@click.option(
+    "--retry-failed/--keep-failed",
+    default=True,
+    show_default=True,
+    help="redo runs recorded as failed, or keep them (and their reasons) as they are",
+)
+def sweep(
+    preset_name: str | None,
+    case_file: str | None,
+    settings: tuple[str, ...],
+    kn_spec: str | None,
+    param_specs: tuple[str, ...],
+    table_file: str | None,
+    out: str,
+    jobs: int | None,
+    scheduler: str | None,
+    timeout_min: float | None,
+    figure: bool,
+    retry_failed: bool,
+) -> None:
     """Run a campaign (a grid or a table of cases), resuming a previous one in OUT."""
     base = _base_case(preset_name, case_file, settings)
     if table_file and (kn_spec or param_specs):
@@ -56,14 +88,25 @@ def sweep(preset_name: str | None, case_file: str | None, settings: tuple[str, .
     if not axes and not table_file:
         raise click.UsageError("nothing to sweep: give --kn, --param or --table")
     folder = Path(out)
-    table = api.sweep(base, folder, jobs=jobs, scheduler=scheduler, timeout_s=timeout_s(timeout_min),
-                      table=table_file, retry_failed=retry_failed, figures=figure, log=note, **axes)
+    table = api.sweep(
+        base,
+        folder,
+        jobs=jobs,
+        scheduler=scheduler,
+        timeout_s=timeout_s(timeout_min),
+        table=table_file,
+        retry_failed=retry_failed,
+        figures=figure,
+        log=note,
+        **axes,
+    )
     counts = table["status"].value_counts().to_dict()
-    click.echo(f"{len(table)} runs: {counts.get('done', 0)} done, {counts.get('failed', 0)} failed, "
-               f"{counts.get('pending', 0)} pending -> {folder / RESULTS_FILE}")
+    click.echo(
+        f"{len(table)} runs: {counts.get('done', 0)} done, {counts.get('failed', 0)} failed, "
+        f"{counts.get('pending', 0)} pending -> {folder / RESULTS_FILE}"
+    )
     if counts.get("failed"):
-        raise YadearchError(f"{counts['failed']} of {len(table)} runs failed; reasons in "
-                            f"{folder / RESULTS_FILE}")
+        raise YadearchError(f"{counts['failed']} of {len(table)} runs failed; reasons in {folder / RESULTS_FILE}")
 
 
 def note(line: str) -> None:
@@ -84,55 +127,123 @@ def parse_axes(param_specs: tuple[str, ...]) -> dict[str, Any]:
 
 @click.command()
 @case_options(with_kn=False)
-@click.option("--target-du", "target_du", type=float, required=True,
-              help="measured collapse displacement to match (mm)")
-@click.option("--tolerance-mm", type=click.FloatRange(min=0, min_open=True), default=0.5,
-              show_default=True, help="accepted |du - target| (mm)")
-@click.option("--kn-min", type=float, default=reference.KN_SENSITIVITY_RANGE_N_PER_MM3[0],
-              show_default=True, help="lower end of the kn bracket (N/mm3)")
-@click.option("--kn-max", type=float, default=reference.KN_SENSITIVITY_RANGE_N_PER_MM3[1],
-              show_default=True, help="upper end of the kn bracket (N/mm3)")
-@click.option("--max-runs", type=click.IntRange(min=3), default=12, show_default=True,
-              help="give up after this many runs")
-@click.option("--out", required=True, type=click.Path(dir_okay=False),
-              help="result JSON, e.g. reports/calibration/set1.json")
-@click.option("--runs-dir", type=click.Path(file_okay=False),
-              help="run folders [default: OUT without .json]")
+@click.option(
+    "--target-du", "target_du", type=float, required=True, help="measured collapse displacement to match (mm)"
+)
+@click.option(
+    "--tolerance-mm",
+    type=click.FloatRange(min=0, min_open=True),
+    default=0.5,
+    show_default=True,
+    help="accepted |du - target| (mm)",
+)
+@click.option(
+    "--kn-min",
+    type=float,
+    default=reference.KN_SENSITIVITY_RANGE_N_PER_MM3[0],
+    show_default=True,
+    help="lower end of the kn bracket (N/mm3)",
+)
+@click.option(
+    "--kn-max",
+    type=float,
+    default=reference.KN_SENSITIVITY_RANGE_N_PER_MM3[1],
+    show_default=True,
+    help="upper end of the kn bracket (N/mm3)",
+)
+@click.option(
+    "--max-runs", type=click.IntRange(min=3), default=12, show_default=True, help="give up after this many runs"
+)
+@click.option(
+    "--out", required=True, type=click.Path(dir_okay=False), help="result JSON, e.g. reports/calibration/set1.json"
+)
+@click.option("--runs-dir", type=click.Path(file_okay=False), help="run folders [default: OUT without .json]")
 @pool_options
-def calibrate(preset_name: str | None, case_file: str | None, settings: tuple[str, ...],
-              target_du: float, tolerance_mm: float, kn_min: float, kn_max: float, max_runs: int,
-              out: str, runs_dir: str | None, jobs: int | None, scheduler: str | None,
-              timeout_min: float | None) -> None:
+def calibrate(
+    preset_name: str | None,
+    case_file: str | None,
+    settings: tuple[str, ...],
+    target_du: float,
+    tolerance_mm: float,
+    kn_min: float,
+    kn_max: float,
+    max_runs: int,
+    out: str,
+    runs_dir: str | None,
+    jobs: int | None,
+    scheduler: str | None,
+    timeout_min: float | None,
+) -> None:
     """Find the kn whose du matches a measured du (bracketing search on log kn)."""
     base = _base_case(preset_name, case_file, settings)
     out_path = Path(out)
     runs = Path(runs_dir) if runs_dir else out_path.with_suffix("")
-    click.echo(f"calibrating kn of {base.name} to du = {target_du:g} +- {tolerance_mm:g} mm, "
-               f"kn in [{kn_min:g}, {kn_max:g}] N/mm3; runs in {runs}")
-    result = api.calibrate(base, target_du, runs, kn_min=kn_min, kn_max=kn_max, tolerance_mm=tolerance_mm,
-                           max_runs=max_runs, jobs=jobs, scheduler=scheduler, timeout_s=timeout_s(timeout_min),
-                           log=click.echo)
+    click.echo(
+        f"calibrating kn of {base.name} to du = {target_du:g} +- {tolerance_mm:g} mm, "
+        f"kn in [{kn_min:g}, {kn_max:g}] N/mm3; runs in {runs}"
+    )
+    result = api.calibrate(
+        base,
+        target_du,
+        runs,
+        kn_min=kn_min,
+        kn_max=kn_max,
+        tolerance_mm=tolerance_mm,
+        max_runs=max_runs,
+        jobs=jobs,
+        scheduler=scheduler,
+        timeout_s=timeout_s(timeout_min),
+        log=click.echo,
+    )
     result.write(out_path)
-    click.echo(f"kn = {result.kn_N_per_mm3:.4g} N/mm3 gives du = {result.du_mm:.2f} mm "
-               f"(target {target_du:g} +- {tolerance_mm:g}) after {result.runs} runs "
-               f"({result.new_runs} new), hinges {result.hinges or '-'} -> {out_path}")
+    click.echo(
+        f"kn = {result.kn_N_per_mm3:.4g} N/mm3 gives du = {result.du_mm:.2f} mm "
+        f"(target {target_du:g} +- {tolerance_mm:g}) after {result.runs} runs "
+        f"({result.new_runs} new), hinges {result.hinges or '-'} -> {out_path}"
+    )
     if not result.converged:
-        raise YadearchError(f"no kn within {tolerance_mm:g} mm of the target after {result.runs} "
-                            f"runs (du jumps, or too few runs); the closest run is in {out_path}")
+        raise YadearchError(
+            f"no kn within {tolerance_mm:g} mm of the target after {result.runs} "
+            f"runs (du jumps, or too few runs); the closest run is in {out_path}"
+        )
 
 
 @click.command()
 @case_options(with_kn=False)
-@click.option("--kn", "kn_spec", metavar="VALUES", default=",".join(f"{k:g}" for k in KN_VALUES),
-              show_default=True, help="kn values (N/mm3)")
-@click.option("--variant", "variant_names", multiple=True, type=click.Choice(list(VARIANTS)),
-              help="run only these variants [default: all]")
-@click.option("--out", default="reports/robustness", show_default=True, type=click.Path(file_okay=False),
-              help="study folder: run folders, robustness.csv, robustness.md")
+@click.option(
+    "--kn",
+    "kn_spec",
+    metavar="VALUES",
+    default=",".join(f"{k:g}" for k in KN_VALUES),
+    show_default=True,
+    help="kn values (N/mm3)",
+)
+@click.option(
+    "--variant",
+    "variant_names",
+    multiple=True,
+    type=click.Choice(list(VARIANTS)),
+    help="run only these variants [default: all]",
+)
+@click.option(
+    "--out",
+    default="reports/robustness",
+    show_default=True,
+    type=click.Path(file_okay=False),
+    help="study folder: run folders, robustness.csv, robustness.md",
+)
 @pool_options
-def robustness(preset_name: str | None, case_file: str | None, settings: tuple[str, ...],
-               kn_spec: str, variant_names: tuple[str, ...], out: str, jobs: int | None,
-               scheduler: str | None, timeout_min: float | None) -> None:
+def robustness(
+    preset_name: str | None,
+    case_file: str | None,
+    settings: tuple[str, ...],
+    kn_spec: str,
+    variant_names: tuple[str, ...],
+    out: str,
+    jobs: int | None,
+    scheduler: str | None,
+    timeout_min: float | None,
+) -> None:
     """Run every kn with each numerical variant and with higher friction (resumable); write
     OUT/robustness.csv and OUT/robustness.md with a verdict per kn."""
     base = _base_case(preset_name or "set2", case_file, settings)
@@ -140,9 +251,12 @@ def robustness(preset_name: str | None, case_file: str | None, settings: tuple[s
     if not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in kn_values):
         raise click.BadParameter(f"kn values must be numbers, got {kn_spec!r}", param_hint="--kn")
     folder = Path(out)
-    for _, row in api.robustness(base, folder, kn_values, variant_names or None, jobs=jobs, scheduler=scheduler,
-                                 timeout_s=timeout_s(timeout_min)).iterrows():
-        click.echo(f"kn {row.kn_N_per_mm3:g}: base du {row.base_du_mm:.2f} mm ({row.base_hinges}), numerics "
-                   f"spread {row.numerics_spread:.2%}, hinges {'kept' if row.hinges_kept else 'moved'}, "
-                   f"friction moves du {row.friction_move:.2%}: {row.verdict}")
+    for _, row in api.robustness(
+        base, folder, kn_values, variant_names or None, jobs=jobs, scheduler=scheduler, timeout_s=timeout_s(timeout_min)
+    ).iterrows():
+        click.echo(
+            f"kn {row.kn_N_per_mm3:g}: base du {row.base_du_mm:.2f} mm ({row.base_hinges}), numerics "
+            f"spread {row.numerics_spread:.2%}, hinges {'kept' if row.hinges_kept else 'moved'}, "
+            f"friction moves du {row.friction_move:.2%}: {row.verdict}"
+        )
     click.echo(f"-> {folder / 'robustness.csv'}, {folder / 'robustness.md'}")

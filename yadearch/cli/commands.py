@@ -25,9 +25,11 @@ from yadearch.results.rundir import read_summary
 def _report_summary(out: Path) -> None:
     summary = read_summary(out)
     du = summary.du_mm
-    click.echo(f"{summary.name}: du = {'no collapse' if du is None else f'{du:.2f} mm'}, "
-               f"hinges at collapse {summary.hinge_labels or '-'}, {summary.cost}, "
-               f"{summary.wall_s:.0f} s -> {out}")
+    click.echo(
+        f"{summary.name}: du = {'no collapse' if du is None else f'{du:.2f} mm'}, "
+        f"hinges at collapse {summary.hinge_labels or '-'}, {summary.cost}, "
+        f"{summary.wall_s:.0f} s -> {out}"
+    )
     for warning in run_warnings(summary):
         click.echo(f"warning: {warning}")
 
@@ -44,8 +46,16 @@ def cli() -> None:
 @click.option("--out", type=click.Path(file_okay=False), help="run folder (default runs/NAME)")
 @click.option("--rerun", is_flag=True, help="run again even if OUT holds a finished run of this case")
 @click.option("--overwrite", is_flag=True, help="replace a finished run of another case in OUT")
-def run(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
-        name: str | None, out: str | None, rerun: bool, overwrite: bool) -> None:
+def run(
+    preset_name: str | None,
+    case_file: str | None,
+    kn: float | None,
+    settings: tuple[str, ...],
+    name: str | None,
+    out: str | None,
+    rerun: bool,
+    overwrite: bool,
+) -> None:
     """Run one case to collapse and write its run folder (a finished run of the same case is reused)."""
     case = resolve_case(preset_name, case_file, kn, settings)
     if name:
@@ -56,16 +66,23 @@ def run(preset_name: str | None, case_file: str | None, kn: float | None, settin
 
 
 @cli.command()
-@click.option("--out", type=click.Path(file_okay=False), default="reports", show_default=True,
-              help="folder that receives set1/ and set2/")
-@click.option("--jobs", type=click.IntRange(1, 2), default=2, show_default=True,
-              help="cases run at once (one core each)")
+@click.option(
+    "--out",
+    type=click.Path(file_okay=False),
+    default="reports",
+    show_default=True,
+    help="folder that receives set1/ and set2/",
+)
+@click.option(
+    "--jobs", type=click.IntRange(1, 2), default=2, show_default=True, help="cases run at once (one core each)"
+)
 @click.option("--rerun", is_flag=True, help="run both cases again even if OUT holds finished runs of them")
 def reproduce(out: str, jobs: int, rerun: bool) -> None:
     """Run both paper cases into OUT/set1 and OUT/set2, then write OUT/report.md with figures.
 
     A finished run of exactly the same case already in OUT is reused (an interrupted reproduction
     resumes), unless --rerun."""
+
     def reused(folder: Path) -> None:
         click.echo(f"{folder.name}: reusing the finished run in {folder} (--rerun to run it again)")
 
@@ -84,46 +101,78 @@ def params() -> None:
 
 @cli.command()
 @case_options(with_kn=True, with_engine=False)
-@click.option("--out", type=click.Path(file_okay=False), default="reports/limit", show_default=True,
-              help="folder that receives NAME.json, NAME.pdf and NAME.png")
-@click.option("--max-snap-mm", type=click.FloatRange(min=0.0, min_open=True), default=None,
-              help="count a hinge snap that moves a block further than this (mm) as collapse, as a DEM "
-                   "run counts a block running away (default: every snap that ends in equilibrium is "
-                   "survived)")
-@click.option("--compliant", is_flag=True,
-              help="let the joints fold at the margin the case's kn allows (compliant hinges): the du a DEM "
-                   "run of that stiffness should find, written as NAME_compliant.json")
-def limit(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
-          out: str, max_snap_mm: float | None, compliant: bool) -> None:
+@click.option(
+    "--out",
+    type=click.Path(file_okay=False),
+    default="reports/limit",
+    show_default=True,
+    help="folder that receives NAME.json, NAME.pdf and NAME.png",
+)
+@click.option(
+    "--max-snap-mm",
+    type=click.FloatRange(min=0.0, min_open=True),
+    default=None,
+    help="count a hinge snap that moves a block further than this (mm) as collapse, as a DEM "
+    "run counts a block running away (default: every snap that ends in equilibrium is "
+    "survived)",
+)
+@click.option(
+    "--compliant",
+    is_flag=True,
+    help="let the joints fold at the margin the case's kn allows (compliant hinges): the du a DEM "
+    "run of that stiffness should find, written as NAME_compliant.json",
+)
+def limit(
+    preset_name: str | None,
+    case_file: str | None,
+    kn: float | None,
+    settings: tuple[str, ...],
+    out: str,
+    max_snap_mm: float | None,
+    compliant: bool,
+) -> None:
     """Rigid-block limit analysis, no YADE: du_rigid, hinges, thrust-line figure (kn only with --compliant)."""
     from yadearch.case.imperfect import amplitudes
     from yadearch.solve.compliant import VALID_MARGIN_FRACTION
 
     case = resolve_case(preset_name, case_file, kn, settings)
     if kn is not None and not compliant:
-        click.echo(f"note: --kn {kn:g} plays no part in the rigid-block analysis (rigid joints); add --compliant "
-                   "for the du a run at that kn should find", err=True)
+        click.echo(
+            f"note: --kn {kn:g} plays no part in the rigid-block analysis (rigid joints); add --compliant "
+            "for the du a run at that kn should find",
+            err=True,
+        )
     result = api.limit(case, compliant=compliant, max_snap_mm=max_snap_mm, out=out)
     path, _ = limit_files(case, compliant, out)
     du = "no collapse" if result.du_rigid_mm is None else f"{result.du_rigid_mm:.2f} mm"
     if compliant:
         du += f" with compliant hinges at kn {case.interface.kn_N_per_mm3:g} N/mm^3"
     new = f" (new: {' '.join(result.new_at_collapse)})" if result.new_at_collapse else ""
-    click.echo(f"{case.name}: du_rigid = {du}, {result.collapse_mode} on {' '.join(result.collapse_hinges)}"
-               f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}")
+    click.echo(
+        f"{case.name}: du_rigid = {du}, {result.collapse_mode} on {' '.join(result.collapse_hinges)}"
+        f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}"
+    )
     if result.mirror_collapse_mode is not None:
         mirrored = "no collapse" if result.mirror_du_rigid_mm is None else f"{result.mirror_du_rigid_mm:.2f} mm"
         hinges = " ".join(result.mirror_collapse_hinges or ())
-        click.echo(f"mirrored (the keystone's other joint): du_rigid = {mirrored} ({result.mirror_collapse_mode}"
-                   f"{' on ' + hinges if hinges else ''})")
+        click.echo(
+            f"mirrored (the keystone's other joint): du_rigid = {mirrored} ({result.mirror_collapse_mode}"
+            f"{' on ' + hinges if hinges else ''})"
+        )
     largest = result.compliant_largest_margin_mm
     if largest is not None and largest > VALID_MARGIN_FRACTION * case.geometry.thickness_mm:
-        click.echo(f"note: a joint folded {largest:.2f} mm from its edge, more than "
-                   f"{VALID_MARGIN_FRACTION:.0%} of the joint: joints this soft deform the whole arch, which "
-                   "the compliant march ignores (docs/validation.md)", err=True)
+        click.echo(
+            f"note: a joint folded {largest:.2f} mm from its edge, more than "
+            f"{VALID_MARGIN_FRACTION:.0%} of the joint: joints this soft deform the whole arch, which "
+            "the compliant march ignores (docs/validation.md)",
+            err=True,
+        )
     if not amplitudes(case).flat_aligned_faces:
-        click.echo("note: the rigid analysis takes the voussoirs' dimension errors and worn edges but not the "
-                   "faces' angles, bumps or offsets: its du is that of flat, aligned faces", err=True)
+        click.echo(
+            "note: the rigid analysis takes the voussoirs' dimension errors and worn edges but not the "
+            "faces' angles, bumps or offsets: its du is that of flat, aligned faces",
+            err=True,
+        )
 
 
 cli.add_command(sweep)
@@ -138,8 +187,9 @@ cli.add_command(export)
 
 @cli.command("report")
 @click.argument("runs", nargs=-1, required=True, type=click.Path())
-@click.option("--out", required=True, type=click.Path(file_okay=False),
-              help="folder that receives report.md and the figures")
+@click.option(
+    "--out", required=True, type=click.Path(file_okay=False), help="folder that receives report.md and the figures"
+)
 def report(runs: tuple[str, ...], out: str) -> None:
     """Write OUT/report.md for the run folders RUNS: comparison with the paper, hinges, figures."""
     click.echo(f"report -> {api.report(runs, out)}")

@@ -18,28 +18,63 @@ from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE
 @click.command()
 @case_options(with_kn=True)
 @click.option("--samples", type=click.IntRange(min=1), required=True, help="samples (seeds) per amplitude level")
-@click.option("--seed", type=click.IntRange(min=0, max=2**32 - 1), default=1, show_default=True,
-              help="seed of the first sample; sample i uses seed + i")
-@click.option("--param", "param_specs", multiple=True, metavar="NAME=VALUES",
-              help="an amplitude to sweep, e.g. --param edge_radius_mm=0.5,1,2 (samples at each level)")
-@click.option("--out", required=True, type=click.Path(file_okay=False),
-              help="campaign folder: run folders, results.csv, montecarlo.csv, montecarlo.md, figures")
+@click.option(
+    "--seed",
+    type=click.IntRange(min=0, max=2**32 - 1),
+    default=1,
+    show_default=True,
+    help="seed of the first sample; sample i uses seed + i",
+)
+@click.option(
+    "--param",
+    "param_specs",
+    multiple=True,
+    metavar="NAME=VALUES",
+    help="an amplitude to sweep, e.g. --param edge_radius_mm=0.5,1,2 (samples at each level)",
+)
+@click.option(
+    "--out",
+    required=True,
+    type=click.Path(file_okay=False),
+    help="campaign folder: run folders, results.csv, montecarlo.csv, montecarlo.md, figures",
+)
 @pool_options
-def montecarlo(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
-               samples: int, seed: int, param_specs: tuple[str, ...], out: str, jobs: int | None,
-               scheduler: str | None, timeout_min: float | None) -> None:
+def montecarlo(
+    preset_name: str | None,
+    case_file: str | None,
+    kn: float | None,
+    settings: tuple[str, ...],
+    samples: int,
+    seed: int,
+    param_specs: tuple[str, ...],
+    out: str,
+    jobs: int | None,
+    scheduler: str | None,
+    timeout_min: float | None,
+) -> None:
     """Run (or resume) seeded samples of the case's imperfections; write the distribution of du and
     of the hinges (montecarlo.csv, montecarlo.md, figures)."""
     base = resolve_case(preset_name, case_file, kn, settings)
     axes = parse_axes(param_specs)
     folder = Path(out)
-    table = api.montecarlo(base, folder, samples, seed=seed, jobs=jobs, scheduler=scheduler,
-                           timeout_s=timeout_s(timeout_min), log=note, **axes)
+    table = api.montecarlo(
+        base,
+        folder,
+        samples,
+        seed=seed,
+        jobs=jobs,
+        scheduler=scheduler,
+        timeout_s=timeout_s(timeout_min),
+        log=note,
+        **axes,
+    )
     stats = du_statistics(table.loc[table["status"] == "done", "du_mm"])
-    click.echo(f"{stats['n']} of {len(table)} samples done: median du {stats['median']:.2f} mm "
-               f"(95 % interval {stats['median_low']:.2f}-{stats['median_high']:.2f}), "
-               f"5-95 % {stats['low']:.2f}-{stats['high']:.2f} mm -> {folder / MONTECARLO_FILE}, "
-               f"{folder / SUMMARY_FILE}")
+    click.echo(
+        f"{stats['n']} of {len(table)} samples done: median du {stats['median']:.2f} mm "
+        f"(95 % interval {stats['median_low']:.2f}-{stats['median_high']:.2f}), "
+        f"5-95 % {stats['low']:.2f}-{stats['high']:.2f} mm -> {folder / MONTECARLO_FILE}, "
+        f"{folder / SUMMARY_FILE}"
+    )
     failed = int((table["status"] == "failed").sum())
     if failed:
         raise YadearchError(f"{failed} of {len(table)} samples failed; reasons in {folder / MONTECARLO_FILE}")

@@ -17,8 +17,9 @@ ENGINE_META = "yadearch_engine"  # where --engine leaves its choice for `resolve
 MOVEMENT_KEY = "movement"  # --set movement=NAME: a named support movement (case.support.MOVEMENT_PRESETS)
 
 
-def resolve_case(preset_name: str | None, case_file: str | None, kn: float | None,
-                 settings: tuple[str, ...]) -> ArchCase:
+def resolve_case(
+    preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...]
+) -> ArchCase:
     """The case from a preset or a TOML file, with `--kn` and `--set key=value` overrides applied."""
     if preset_name and case_file:
         raise click.UsageError("give either --preset or --case, not both")
@@ -50,37 +51,54 @@ def case_options(with_kn: bool, with_engine: bool = True) -> Callable[[Any], Any
     """--preset/--case/--set (and --kn, for commands about one case; --engine, for commands that
     run cases): the case a command starts from."""
     options = [
-        click.option("--preset", "preset_name", type=click.Choice(PRESETS),
-                     help="paper arch with the kn of voussoir set 1 (0.25 N/mm3) or set 2 (5.2 N/mm3)"),
+        click.option(
+            "--preset",
+            "preset_name",
+            type=click.Choice(PRESETS),
+            help="paper arch with the kn of voussoir set 1 (0.25 N/mm3) or set 2 (5.2 N/mm3)",
+        ),
         click.option("--case", "case_file", type=click.Path(dir_okay=False), help="case TOML file"),
-        click.option("--set", "settings", multiple=True, metavar="KEY=VALUE",
-                     help="override any parameter, e.g. --set numerics.damping=0.3 (see `yadearch params`); "
-                     "--set movement=NAME picks a named support movement (settlement, spreading, closing, "
-                     "inclined, symmetric_spreading, abutment_tilt, settle_then_spread)"),
+        click.option(
+            "--set",
+            "settings",
+            multiple=True,
+            metavar="KEY=VALUE",
+            help="override any parameter, e.g. --set numerics.damping=0.3 (see `yadearch params`); "
+            "--set movement=NAME picks a named support movement (settlement, spreading, closing, "
+            "inclined, symmetric_spreading, abutment_tilt, settle_then_spread)",
+        ),
     ]
     if with_kn:
         options.insert(2, click.option("--kn", type=float, help="interface normal stiffness kn (N/mm3)"))
     if with_engine:
-        options.append(click.option(
-            "--engine", type=click.Choice(ENGINES), expose_value=False, callback=_keep_engine,
-            help="solver: dem (YADE, the default of the case) or static (Newton's method on the same blocks "
-            "and joints, seconds; docs/theory.md)"))
+        options.append(
+            click.option(
+                "--engine",
+                type=click.Choice(ENGINES),
+                expose_value=False,
+                callback=_keep_engine,
+                help="solver: dem (YADE, the default of the case) or static (Newton's method on the same blocks "
+                "and joints, seconds; docs/theory.md)",
+            )
+        )
 
     def decorate(func: Any) -> Any:
         for option in reversed(options):
             func = option(func)
         return func
+
     return decorate
 
 
 def pool_options(func: Any) -> Any:
     """--jobs/--scheduler/--timeout-min: where and how long runs may execute."""
-    func = click.option("--timeout-min", type=float,
-                        help="fail a run that takes longer than this (minutes)")(func)
-    func = click.option("--scheduler", metavar="ADDRESS",
-                        help="run on this dask.distributed scheduler (e.g. tcp://host:8786)")(func)
-    return click.option("--jobs", type=click.IntRange(min=1),
-                        help="runs at once on this machine [default: one per core]")(func)
+    func = click.option("--timeout-min", type=float, help="fail a run that takes longer than this (minutes)")(func)
+    func = click.option(
+        "--scheduler", metavar="ADDRESS", help="run on this dask.distributed scheduler (e.g. tcp://host:8786)"
+    )(func)
+    return click.option(
+        "--jobs", type=click.IntRange(min=1), help="runs at once on this machine [default: one per core]"
+    )(func)
 
 
 def timeout_s(timeout_min: float | None) -> float | None:

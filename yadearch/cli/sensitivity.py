@@ -15,25 +15,57 @@ from yadearch.studies.sensitivity_campaign import DEFAULT_BASE_POINTS, INDICES_T
 
 @click.command()
 @case_options(with_kn=True)
-@click.option("--base-points", type=int, default=DEFAULT_BASE_POINTS, show_default=True,
-              help="Sobol base points N (a power of two): N x (factors + 2) runs; indices also at N/2")
-@click.option("--factor", "factor_specs", multiple=True, metavar="NAME=LOW:HIGH[:log|:int]",
-              help="a factor and its range, e.g. --factor kn_N_per_mm3=0.25:100:log (repeat; replaces the "
-              "paper arch's twelve factors)")
-@click.option("--out", required=True, type=click.Path(file_okay=False),
-              help="folder: tornado_runs/, runs/, tornado.csv, indices.csv, samples.csv, figures, sensitivity.md")
+@click.option(
+    "--base-points",
+    type=int,
+    default=DEFAULT_BASE_POINTS,
+    show_default=True,
+    help="Sobol base points N (a power of two): N x (factors + 2) runs; indices also at N/2",
+)
+@click.option(
+    "--factor",
+    "factor_specs",
+    multiple=True,
+    metavar="NAME=LOW:HIGH[:log|:int]",
+    help="a factor and its range, e.g. --factor kn_N_per_mm3=0.25:100:log (repeat; replaces the "
+    "paper arch's twelve factors)",
+)
+@click.option(
+    "--out",
+    required=True,
+    type=click.Path(file_okay=False),
+    help="folder: tornado_runs/, runs/, tornado.csv, indices.csv, samples.csv, figures, sensitivity.md",
+)
 @pool_options
-def sensitivity(preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...],
-                base_points: int, factor_specs: tuple[str, ...], out: str, jobs: int | None, scheduler: str | None,
-                timeout_min: float | None) -> None:
+def sensitivity(
+    preset_name: str | None,
+    case_file: str | None,
+    kn: float | None,
+    settings: tuple[str, ...],
+    base_points: int,
+    factor_specs: tuple[str, ...],
+    out: str,
+    jobs: int | None,
+    scheduler: str | None,
+    timeout_min: float | None,
+) -> None:
     """Run (or resume) the sensitivity study of a case: du with each factor at the ends of its range,
     and Sobol's first-order and total indices over all ranges at once (SALib)."""
     case = resolve_case(preset_name, case_file, kn, settings)
     factors = tuple(parse_factor(spec) for spec in factor_specs) or None
-    result = api.sensitivity(case, out, base_points=base_points, factors=factors, jobs=jobs, scheduler=scheduler,
-                             timeout_s=timeout_s(timeout_min))
+    result = api.sensitivity(
+        case,
+        out,
+        base_points=base_points,
+        factors=factors,
+        jobs=jobs,
+        scheduler=scheduler,
+        timeout_s=timeout_s(timeout_min),
+    )
     top = result.indices[result.indices["base_points"] == base_points].sort_values("ST", ascending=False).iloc[0]
     folder = Path(out)
-    click.echo(f"largest total index: {top.factor} (ST {top.ST:.2f}); indices move {result.shift:.3f} as the "
-               f"sample doubles ({'stable' if result.stable else 'not stable'} to {STABLE_TO}) -> "
-               f"{folder / TORNADO_TABLE}, {folder / INDICES_TABLE}, {folder / REPORT}")
+    click.echo(
+        f"largest total index: {top.factor} (ST {top.ST:.2f}); indices move {result.shift:.3f} as the "
+        f"sample doubles ({'stable' if result.stable else 'not stable'} to {STABLE_TO}) -> "
+        f"{folder / TORNADO_TABLE}, {folder / INDICES_TABLE}, {folder / REPORT}"
+    )

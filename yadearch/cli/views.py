@@ -13,8 +13,9 @@ from yadearch.plotting.animation import FORMATS
 
 @click.command()
 @click.argument("run_folder", type=click.Path(exists=True, file_okay=False))
-@click.option("--format", "fmt", type=click.Choice(FORMATS), default="mp4", show_default=True,
-              help="mp4 (needs ffmpeg) or gif")
+@click.option(
+    "--format", "fmt", type=click.Choice(FORMATS), default="mp4", show_default=True, help="mp4 (needs ffmpeg) or gif"
+)
 @click.option("--out", type=click.Path(dir_okay=False), help="movie file [default: RUN/figures/NAME.FORMAT]")
 def animate(run_folder: str, fmt: str, out: str | None) -> None:
     """Draw a finished run as a movie along its loading path to collapse: the blocks to scale, hinges

@@ -42,11 +42,15 @@ class CgalContacts:
         for body_id, mask in zip(self.body_ids, joint_masks(self.geometry)):
             O.bodies[body_id].mask = mask
         self.shear.bind(pos0, ori0)
-        return [InsertionSortCollider([Bo1_Polyhedra_Aabb()]),
-                InteractionLoop([Ig2_Polyhedra_Polyhedra_PolyhedraGeom()],
-                                [Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys()],
-                                [Law2_PolyhedraGeom_PolyhedraPhys_Volumetric()]),
-                PyRunner(command=f"{callback}.step()", iterPeriod=1, initRun=True)]
+        return [
+            InsertionSortCollider([Bo1_Polyhedra_Aabb()]),
+            InteractionLoop(
+                [Ig2_Polyhedra_Polyhedra_PolyhedraGeom()],
+                [Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys()],
+                [Law2_PolyhedraGeom_PolyhedraPhys_Volumetric()],
+            ),
+            PyRunner(command=f"{callback}.step()", iterPeriod=1, initRun=True),
+        ]
 
     def step(self) -> None:
         self.shear.step()
@@ -82,8 +86,11 @@ class CgalContacts:
         """The contacts' geometry (the intersection's starting hints) and per-contact shear forces."""
         from yade import O
 
-        contacts = {(i.id1, i.id2): (tuple(i.geom.contactPoint), tuple(i.geom.normal)) for i in O.interactions
-                    if i.geom is not None}
+        contacts = {
+            (i.id1, i.id2): (tuple(i.geom.contactPoint), tuple(i.geom.normal))
+            for i in O.interactions
+            if i.geom is not None
+        }
         return {"contacts": contacts, "shear": dict(self.shear.shear)}
 
     def restore(self, snapshot: dict) -> None:

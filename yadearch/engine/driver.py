@@ -98,8 +98,12 @@ class SupportDriver:
         if remaining <= ARRIVED_M:  # a float-rounding remainder must not keep the support creeping
             speed = 0.0
         else:
-            speed = min(self.speed, self.current_speed + self.accel * dt,
-                        math.sqrt(2.0 * self.accel * remaining), remaining / dt)
+            speed = min(
+                self.speed,
+                self.current_speed + self.accel * dt,
+                math.sqrt(2.0 * self.accel * remaining),
+                remaining / dt,
+            )
         self.current_speed = speed
         for state, motion in self._moving:
             (vx, vy), turn_rate = motion.velocity(np.array([state.pos[0], state.pos[1]]), lam, speed, dt)

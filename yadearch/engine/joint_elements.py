@@ -22,8 +22,13 @@ class JointElementContacts:
 
     name = "joint"
 
-    def __init__(self, stiffness: ContactStiffness, geometry: ArchGeometry, body_ids: list[int],
-                 profiles: GapProfiles | None = None):
+    def __init__(
+        self,
+        stiffness: ContactStiffness,
+        geometry: ArchGeometry,
+        body_ids: list[int],
+        profiles: GapProfiles | None = None,
+    ):
         self.profiles = profiles  # the joints' initial gap profiles (None: perfect faces)
         self.law = JointLaw(stiffness.kn, stiffness.ks, stiffness.tan_friction, geometry.depth)
         self.geometry = geometry
@@ -58,11 +63,9 @@ class JointElementContacts:
         about 0.1-0.2 us, and the velocities follow from two successive poses (`forces`)."""
         pairs = np.empty((len(self._states), 4))
         if self._wz_states:
-            pairs[self._wz_blocks] = [(p[0], p[1], q[3], q[2]) for p, q in
-                                      ((s.pos, s.ori) for s in self._wz_states)]
+            pairs[self._wz_blocks] = [(p[0], p[1], q[3], q[2]) for p, q in ((s.pos, s.ori) for s in self._wz_states)]
         if self._xy_states:  # minieigen quaternions index (x, y, z, w)
-            pairs[self._xy_blocks] = [(p[0], p[1], q[0], q[1]) for p, q in
-                                      ((s.pos, s.ori) for s in self._xy_states)]
+            pairs[self._xy_blocks] = [(p[0], p[1], q[0], q[1]) for p, q in ((s.pos, s.ori) for s in self._xy_states)]
         pairs[:, 2] = pair_rotation(pairs[:, 2:4], self._pair0)
         return pairs[:, 0:3]
 
@@ -75,16 +78,16 @@ class JointElementContacts:
         dt = O.dt
         motion = np.zeros_like(poses) if self._previous is None else poses - self._previous
         motion[:, 2] = np.remainder(motion[:, 2] + math.pi, 2.0 * math.pi) - math.pi  # across +-pi
-        return joint_forces(self.table, self.law, poses[:, 0:2], poses[:, 2], motion[:, 0:2] / dt,
-                            motion[:, 2] / dt, self.shear, dt)
+        return joint_forces(
+            self.table, self.law, poses[:, 0:2], poses[:, 2], motion[:, 0:2] / dt, motion[:, 2] / dt, self.shear, dt
+        )
 
     def apply(self, forces: JointForces) -> None:
         """Add the joint forces and torques to YADE's force container."""
         from yade import O
 
         add_force, add_torque = O.forces.addF, O.forces.addT
-        for body_id, (fx, fy), tz in zip(self.body_ids, forces.block_force.tolist(),
-                                         forces.block_torque.tolist()):
+        for body_id, (fx, fy), tz in zip(self.body_ids, forces.block_force.tolist(), forces.block_torque.tolist()):
             add_force(body_id, (fx, fy, 0.0))  # a tuple converts faster than a built Vector3
             add_torque(body_id, (0.0, 0.0, tz))
 
@@ -109,8 +112,9 @@ class JointElementContacts:
     def smallest_stiffness(self) -> float:
         """The smallest eigenvalue of the free blocks' tangent stiffness now (N/m; `model.stability`)."""
         poses = self.read_poses()
-        stiffness = tangent_stiffness(self.table, self.law, poses[:, 0:2], poses[:, 2], self.shear,
-                                      self._free, self.geometry.thickness)
+        stiffness = tangent_stiffness(
+            self.table, self.law, poses[:, 0:2], poses[:, 2], self.shear, self._free, self.geometry.thickness
+        )
         return smallest_stiffness(stiffness)
 
     def joint_slip(self) -> np.ndarray:
@@ -120,8 +124,7 @@ class JointElementContacts:
     def snapshot(self) -> dict:
         """The joints' history (shear forces, slip, the last step's poses) and last evaluation, for
         `restore`."""
-        return {"shear": self.shear.copy(), "slip": self.slip.copy(), "last": self.last,
-                "previous": self._previous}
+        return {"shear": self.shear.copy(), "slip": self.slip.copy(), "last": self.last, "previous": self._previous}
 
     def restore(self, snapshot: dict) -> None:
         """Back to a `snapshot` (the bodies are restored by the runner)."""

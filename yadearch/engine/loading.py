@@ -59,8 +59,14 @@ class LiveArch(Protocol):
 
     def move_support(self, target: float, speed_fraction: float) -> None: ...
 
-    def hold(self, runaway: float | None = None, max_s: float | None = None, from_rest: bool = True,
-             still_speed: float | None = None, tolerance: float | None = None) -> Verdict: ...
+    def hold(
+        self,
+        runaway: float | None = None,
+        max_s: float | None = None,
+        from_rest: bool = True,
+        still_speed: float | None = None,
+        tolerance: float | None = None,
+    ) -> Verdict: ...
 
 
 class EquilibriumPath:
@@ -76,8 +82,7 @@ class EquilibriumPath:
         self._failures: dict[float, dict] = {}  # support displacement -> state a failure ended in
         self.last_equilibrium_hinges: list[dict] = []
         # how far the relaxation of each accepted increment moved the blocks (mm), for summary.json
-        self.relaxations: dict = {"runaway_mm": self.num.runaway_mm, "delta_mm": [], "increment_mm": [],
-                                  "move_mm": []}
+        self.relaxations: dict = {"runaway_mm": self.num.runaway_mm, "delta_mm": [], "increment_mm": [], "move_mm": []}
         self._start = 0.0  # where the last increment started (m)
         self.settings = path_settings(self.num, path_end_mm(arch.case, arch.movement))
 
@@ -121,10 +126,14 @@ class EquilibriumPath:
         if not self._at_accepted:
             self.arch.restore(self._accepted[-1])
         self.arch.stage = Stage.SETTLE
-        verdict = self.arch.hold(from_rest=False, still_speed=units.mm(self.num.settle_speed_mm_per_s),
-                                 tolerance=SETTLE_TOLERANCE_FACTOR * self.num.equilibrium_tolerance)
-        self.arch.log(f"[{self.arch.case.name}] settling the state at {units.to_mm(self.arch.delta()):.3f} mm: "
-                      f"{verdict}")
+        verdict = self.arch.hold(
+            from_rest=False,
+            still_speed=units.mm(self.num.settle_speed_mm_per_s),
+            tolerance=SETTLE_TOLERANCE_FACTOR * self.num.equilibrium_tolerance,
+        )
+        self.arch.log(
+            f"[{self.arch.case.name}] settling the state at {units.to_mm(self.arch.delta()):.3f} mm: {verdict}"
+        )
         if verdict == Verdict.RUNAWAY:
             self._failures[self.arch.delta()] = self.arch.snapshot()
             self._at_accepted = False
@@ -146,8 +155,10 @@ class EquilibriumPath:
         return follow_path(self, self.settings, on_step=self._log_increment, start=start)
 
     def _log_increment(self, step: PathStep) -> None:
-        self.arch.log(f"[{self.arch.case.name}] increment {units.to_mm(step.start):7.3f} -> "
-                      f"{units.to_mm(step.target):7.3f} mm: {step.verdict} (step {self.arch.total_steps})")
+        self.arch.log(
+            f"[{self.arch.case.name}] increment {units.to_mm(step.start):7.3f} -> "
+            f"{units.to_mm(step.target):7.3f} mm: {step.verdict} (step {self.arch.total_steps})"
+        )
 
     def collapse_state(self, upper: float) -> list[Hinge]:
         """Show the mechanism: continue the failure at du's upper bracket end `upper` until the
@@ -161,15 +172,15 @@ class EquilibriumPath:
 
 def criterion_text(n: NumericsConfig) -> str:
     """The loading protocol and collapse criterion with this case's numbers, for summary.json."""
-    return ("Loading by support increments (first {0} mm, growing x{1} up to {2} mm after each "
-            "equilibrium), each from the last equilibrium state: a move (the largest at the support speed, "
-            "shorter ones slower in proportion, so that every move lasts as long), then "
-            "a relaxation with the support held and the blocks started from rest. Equilibrium: after "
-            f"{n.hold_min_s} s, unbalanced force < {n.equilibrium_tolerance} and all blocks slower "
-            f"than {n.still_speed_mm_per_s} mm/s. No equilibrium: a block moves > {n.runaway_mm} mm, "
-            f"or {n.hold_max_s} s pass without equilibrium. Relaxations run at local damping "
-            f"{n.hold_damping}. After a failed increment the increment halves (bisection); du = "
-            "midpoint of the bracket [last support displacement in equilibrium; first without, "
-            f"reached from that state], narrowed to < {n.du_tolerance_mm} mm."
-            ).format(n.first_increment_mm, n.increment_growth, n.max_increment_mm)
-
+    return (
+        "Loading by support increments (first {0} mm, growing x{1} up to {2} mm after each "
+        "equilibrium), each from the last equilibrium state: a move (the largest at the support speed, "
+        "shorter ones slower in proportion, so that every move lasts as long), then "
+        "a relaxation with the support held and the blocks started from rest. Equilibrium: after "
+        f"{n.hold_min_s} s, unbalanced force < {n.equilibrium_tolerance} and all blocks slower "
+        f"than {n.still_speed_mm_per_s} mm/s. No equilibrium: a block moves > {n.runaway_mm} mm, "
+        f"or {n.hold_max_s} s pass without equilibrium. Relaxations run at local damping "
+        f"{n.hold_damping}. After a failed increment the increment halves (bisection); du = "
+        "midpoint of the bracket [last support displacement in equilibrium; first without, "
+        f"reached from that state], narrowed to < {n.du_tolerance_mm} mm."
+    ).format(n.first_increment_mm, n.increment_growth, n.max_increment_mm)

@@ -42,8 +42,14 @@ def _run_child(cmd: list[str], env: dict[str, str], timeout_s: float | None, qui
     meanwhile: its exit code and standard error."""
     # its own session: a terminal's Ctrl-C (SIGINT to the foreground group) reaches this process only,
     # which stops the simulation with SIGTERM, the signal it ends on cleanly, as interrupted
-    proc = subprocess.Popen(cmd, env=env, text=True, stdout=subprocess.DEVNULL if quiet else None,
-                            stderr=subprocess.PIPE, start_new_session=True)
+    proc = subprocess.Popen(
+        cmd,
+        env=env,
+        text=True,
+        stdout=subprocess.DEVNULL if quiet else None,
+        stderr=subprocess.PIPE,
+        start_new_session=True,
+    )
     with _children_lock:
         _children.add(proc)
     try:
@@ -64,9 +70,11 @@ def _run_child(cmd: list[str], env: dict[str, str], timeout_s: float | None, qui
 def check_yade_installed() -> None:
     """Fail early, in one line, when Debian's YADE is not installed."""
     if not any(Path(d, "yade", "__init__.py").is_file() for d in YADE_PY_DIRS):
-        raise YadeMissingError("YADE is not installed (no yade package under "
-                               f"{' or '.join(YADE_PY_DIRS)}); run `sudo apt-get install -y yade` "
-                               "or `bash scripts/setup.sh`")
+        raise YadeMissingError(
+            "YADE is not installed (no yade package under "
+            f"{' or '.join(YADE_PY_DIRS)}); run `sudo apt-get install -y yade` "
+            "or `bash scripts/setup.sh`"
+        )
 
 
 def exit_reason(returncode: int) -> str:
@@ -79,8 +87,7 @@ def exit_reason(returncode: int) -> str:
     return f"exit code {returncode}"
 
 
-def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None,
-                     quiet: bool = False) -> Path:
+def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None, quiet: bool = False) -> Path:
     """Run `case` in a child process and make `out` its run folder; raise RunFailedError with the
     reason if it fails. The child writes a staging folder beside `out`, swapped into place only
     when complete: a run that does not finish never destroys the finished run `out` may hold (its
@@ -101,8 +108,10 @@ def check_name_length(out: Path) -> None:
     parent = next((p for p in (out.parent, *out.parent.parents) if p.is_dir()), Path("."))
     limit = os.pathconf(parent, "PC_NAME_MAX") - extra
     if len(out.name) > limit:
-        raise YadearchError(f"run folder name {out.name[:20]}... is {len(out.name)} characters; at most {limit} (the "
-                            f"file system's {limit + extra} less {extra} for the run's staging folder)")
+        raise YadearchError(
+            f"run folder name {out.name[:20]}... is {len(out.name)} characters; at most {limit} (the "
+            f"file system's {limit + extra} less {extra} for the run's staging folder)"
+        )
 
 
 def _run_locked(case: ArchCase, out: Path, static: bool, timeout_s: float | None, quiet: bool) -> Path:
@@ -116,21 +125,24 @@ def _run_locked(case: ArchCase, out: Path, static: bool, timeout_s: float | None
     cmd = [sys.executable, "-m", "yadearch.engine.simulate", str(case_file), str(staging)]
     try:
         try:
-            returncode, stderr = run_static(case_file, staging, timeout_s) if static else \
-                _run_child(cmd, env, timeout_s, quiet)
+            returncode, stderr = (
+                run_static(case_file, staging, timeout_s) if static else _run_child(cmd, env, timeout_s, quiet)
+            )
         finally:
             _remove_scratch(staging)
     except subprocess.TimeoutExpired:
         where = _keep_failed(staging, out)
-        raise RunFailedError(f"run {case.name!r} timed out after {timeout_s:.0f} s "
-                             f"(see {where / LOG_FILE})") from None
+        raise RunFailedError(f"run {case.name!r} timed out after {timeout_s:.0f} s (see {where / LOG_FILE})") from None
     if returncode in INTERRUPTED_CODES:
         where = _keep_failed(staging, out)
-        raise RunInterruptedError(f"run {case.name!r} was interrupted ({exit_reason(returncode)}); "
-                                  f"run it again to resume (see {where / LOG_FILE})")
+        raise RunInterruptedError(
+            f"run {case.name!r} was interrupted ({exit_reason(returncode)}); "
+            f"run it again to resume (see {where / LOG_FILE})"
+        )
     if returncode != 0 or not is_complete(staging):
-        lines = [line for line in stderr.splitlines()
-                 if line.strip() and not line.startswith(("Using python", "<WARNING>"))]
+        lines = [
+            line for line in stderr.splitlines() if line.strip() and not line.startswith(("Using python", "<WARNING>"))
+        ]
         reason = lines[-1].removeprefix("error: ") if lines else exit_reason(returncode)
         where = _keep_failed(staging, out)
         raise RunFailedError(f"run {case.name!r} failed: {reason} (see {where / LOG_FILE})")

@@ -44,7 +44,7 @@ class Recorder:
         self.records = Records()
         self.stage = Stage.SELFWEIGHT
         self.friction: dict = {}
-        self._last_series_iter = -10**9
+        self._last_series_iter = -(10**9)
 
     def voussoir_speeds(self) -> np.ndarray:
         return np.array([state.vel.norm() for state in self.scene.voussoir_states])
@@ -56,6 +56,26 @@ class Recorder:
         left = -np.array(O.forces.f(self.scene.left_support))[:2]
         right = -np.array(O.forces.f(self.scene.right_support))[:2]
         return left, right
+
+    def weight_carried_error(self, weight: float) -> float:
+        """|sum of the supports' vertical reactions / the voussoirs' `weight` - 1| (0 in static equilibrium)."""
+        left, right = self.reactions()
+        return abs((left[1] + right[1]) / weight - 1.0)
+
+    def selfweight_record(self, weight: float, unbalanced: float, steps: int) -> dict:
+        """What the self-weight equilibrium is, for summary.json: its reactions, thrust and crown sag."""
+        left, right = self.reactions()
+        crown = self.scene.geometry.crown_voussoir
+        crown_y = body_states(self.scene)[0][crown][1]
+        return {
+            "steps": steps,
+            "unbalanced": unbalanced,
+            "arch_weight_N": weight,
+            "vertical_reaction_sum_N": float(left[1] + right[1]),
+            "horizontal_reaction_sum_N": float(left[0] + right[0]),
+            "thrust_N": float(abs(left[0])),
+            "crown_settlement_mm": -units.to_mm(float(crown_y - self.scene.pos0[crown][1])),
+        }
 
     def series(self, force: bool = False, stability: bool = False) -> None:
         """Append a time-series row (every `series_every_steps` steps, or now with `force`); with
@@ -69,14 +89,23 @@ class Recorder:
         crown = self.scene.geometry.crown_voussoir
         crown_id = self.scene.body_ids[crown]
         crown_disp = np.array(O.bodies[crown_id].state.pos) - self.scene.pos0[crown]
-        self.records.series.append({
-            "stage": self.stage, "step": O.iter, "time_s": O.time,
-            "delta_mm": units.to_mm(self.driver.displacement()),
-            "left_Rx_N": left[0], "left_Ry_N": left[1], "right_Rx_N": right[0], "right_Ry_N": right[1],
-            "crown_dx_mm": units.to_mm(crown_disp[0]), "crown_dy_mm": units.to_mm(crown_disp[1]),
-            "kinetic_J": utils.kineticEnergy(), "unbalanced": self.scene.contacts.unbalanced(),
-            "max_block_speed_mm_per_s": units.to_mm(float(self.voussoir_speeds().max())),
-        })
+        self.records.series.append(
+            {
+                "stage": self.stage,
+                "step": O.iter,
+                "time_s": O.time,
+                "delta_mm": units.to_mm(self.driver.displacement()),
+                "left_Rx_N": left[0],
+                "left_Ry_N": left[1],
+                "right_Rx_N": right[0],
+                "right_Ry_N": right[1],
+                "crown_dx_mm": units.to_mm(crown_disp[0]),
+                "crown_dy_mm": units.to_mm(crown_disp[1]),
+                "kinetic_J": utils.kineticEnergy(),
+                "unbalanced": self.scene.contacts.unbalanced(),
+                "max_block_speed_mm_per_s": units.to_mm(float(self.voussoir_speeds().max())),
+            }
+        )
         if stability:
             self.records.series[-1][STIFFNESS_COLUMN] = self.scene.contacts.smallest_stiffness()
 
@@ -88,9 +117,19 @@ class Recorder:
         if not np.all(np.isfinite(pos)):
             raise RunFailedError(f"NaN in block positions at step {O.iter}")
         points, normal, shear = self.scene.contacts.joint_contacts()
-        return joint_snapshot(self.scene.geometry, self.scene.pos0, pos, rot, points, normal, shear,
-                              self.scene.contacts.joint_slip(), self.scene.stiffness.tan_friction,
-                              self.scene.imperfections, self.num.hinge_rotation_mrad * 1e-3)
+        return joint_snapshot(
+            self.scene.geometry,
+            self.scene.pos0,
+            pos,
+            rot,
+            points,
+            normal,
+            shear,
+            self.scene.contacts.joint_slip(),
+            self.scene.stiffness.tan_friction,
+            self.scene.imperfections,
+            self.num.hinge_rotation_mrad * 1e-3,
+        )
 
     def joints(self, label: str | None = None) -> list[Hinge]:
         """Record every interface now (and, with a `label`, the block positions as a snapshot)."""
@@ -120,7 +159,7 @@ class Recorder:
 
     def discard_since(self, mark: RowMark) -> None:
         """Relabel the equilibrium rows recorded since `mark`: that state turned out not to be one."""
-        for row in self.records.series[mark[0]:] + self.records.joints[mark[1]:] + self.records.states[mark[2]:]:
+        for row in self.records.series[mark[0] :] + self.records.joints[mark[1] :] + self.records.states[mark[2] :]:
             if row["stage"] == Stage.EQUILIBRIUM:
                 row["stage"] = DISCARDED_STAGE
 

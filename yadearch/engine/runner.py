@@ -21,7 +21,7 @@ from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.engine.driver import SupportDriver
 from yadearch.engine.loading import EquilibriumPath
 from yadearch.engine.recorder import Recorder, Records
-from yadearch.engine.scene import CALLBACK_NAME, body_states, build_scene
+from yadearch.engine.scene import CALLBACK_NAME, body_states, build_scene, stop_voussoirs
 from yadearch.engine.scene_state import capture, put_back
 from yadearch.engine.stepping import SteppingGate
 from yadearch.engine.timing import EngineClock
@@ -44,8 +44,9 @@ class Runner:
         self.scene = build_scene(case)
         self.movement = case_movement(case, self.scene.geometry)
         self.full_speed = units.mm(case.support_speed_mm_per_s)
-        self.driver = SupportDriver(self.scene, self.movement, self.full_speed,
-                                    units.mm(support_acceleration_mm_per_s2(case, self.movement)))
+        self.driver = SupportDriver(
+            self.scene, self.movement, self.full_speed, units.mm(support_acceleration_mm_per_s2(case, self.movement))
+        )
         self._install_driver()
         self.recorder = Recorder(self.scene, self.driver, self.num)
         self.gate = SteppingGate()
@@ -108,14 +109,18 @@ class Runner:
         wall = now - self.wall0
         rate = self.total_steps / wall if wall > 0 else 0.0
         delta = units.to_mm(self.delta())
-        self.log(f"[{self.case.name}] {self.stage:10s} delta={delta:7.2f} mm step={self.total_steps} "
-                 f"{rate:6.0f} steps/s wall={wall:6.0f} s {extra}")
+        self.log(
+            f"[{self.case.name}] {self.stage:10s} delta={delta:7.2f} mm step={self.total_steps} "
+            f"{rate:6.0f} steps/s wall={wall:6.0f} s {extra}"
+        )
 
     def _advance(self, n: int) -> None:
         """Run n steps (the only place that steps the scene, so that steps are counted)."""
         if self.total_steps + n > self.num.max_steps:
-            raise RunFailedError(f"the run reached numerics.max_steps = {self.num.max_steps} steps "
-                                 f"at delta = {units.to_mm(self.delta()):.2f} mm ({self.stage})")
+            raise RunFailedError(
+                f"the run reached numerics.max_steps = {self.num.max_steps} steps "
+                f"at delta = {units.to_mm(self.delta()):.2f} mm ({self.stage})"
+            )
         self.gate.advance(n)
         self.total_steps += n
         self.steps_by_stage[self.stage] = self.steps_by_stage.get(self.stage, 0) + n
@@ -132,8 +137,7 @@ class Runner:
         """Current voussoir centroids (n, 3); a NaN ends the run (the law calls exit(1) on NaN)."""
         from yade import O
 
-        pos = np.array([(p[0], p[1], p[2])
-                        for p in (state.pos for state in self.scene.voussoir_states)])
+        pos = np.array([(p[0], p[1], p[2]) for p in (state.pos for state in self.scene.voussoir_states)])
         if not np.all(np.isfinite(pos)):
             raise RunFailedError(f"NaN in block positions at step {O.iter} ({self.stage})")
         return pos
@@ -153,8 +157,7 @@ class Runner:
         newton = self.scene.newton
         gravity = np.array(newton.gravity)
         ramp_steps = max(1, int(ramp_s / O.dt))
-        self.weight = sum(O.bodies[i].state.mass for i in self.scene.voussoir_ids) \
-            * self.case.loading.gravity_m_per_s2
+        self.weight = sum(O.bodies[i].state.mass for i in self.scene.voussoir_ids) * self.case.loading.gravity_m_per_s2
         unbalanced = math.inf
         while O.iter - start < max_steps:
             fraction = min(1.0, (O.iter - start) / ramp_steps)
@@ -165,44 +168,42 @@ class Runner:
             self._progress(f"gravity {fraction:.0%}, unbalanced {unbalanced:.2e}")
             sag = float(np.max(np.abs(body_states(self.scene)[0] - self.scene.pos0)))
             if sag > units.mm(SELFWEIGHT_COLLAPSE_MM):
-                raise RunFailedError(f"{CANNOT_STAND}: a block fell "
-                                     f"{units.to_mm(sag):.0f} mm ({standing_parameters(self.case)})")
-            if fraction >= 1.0 and unbalanced < self.num.equilibrium_tolerance \
-                    and O.iter - start > ramp_steps + 10 * CHECK_EVERY_STEPS \
-                    and self.recorder.voussoir_speeds().max() < units.mm(self.num.still_speed_mm_per_s) \
-                    and self._weight_carried_error() < self.num.equilibrium_tolerance:
+                raise RunFailedError(
+                    f"{CANNOT_STAND}: a block fell {units.to_mm(sag):.0f} mm ({standing_parameters(self.case)})"
+                )
+            if (
+                fraction >= 1.0
+                and unbalanced < self.num.equilibrium_tolerance
+                and O.iter - start > ramp_steps + 10 * CHECK_EVERY_STEPS
+                and self.recorder.voussoir_speeds().max() < units.mm(self.num.still_speed_mm_per_s)
+                and self.recorder.weight_carried_error(self.weight) < self.num.equilibrium_tolerance
+            ):
                 break
         else:
-            raise RunFailedError(f"no equilibrium under self-weight within {self.num.selfweight_max_s} s "
-                                 f"(unbalanced force ratio {unbalanced:.3g} > "
-                                 f"{self.num.equilibrium_tolerance} or blocks still moving)")
+            raise RunFailedError(
+                f"no equilibrium under self-weight within {self.num.selfweight_max_s} s "
+                f"(unbalanced force ratio {unbalanced:.3g} > "
+                f"{self.num.equilibrium_tolerance} or blocks still moving)"
+            )
         self.driver.zero_here()
         self.recorder.series(force=True)
         self.recorder.joints(Stage.SELFWEIGHT)
-        left, right = self.recorder.reactions()
-        crown = self.scene.geometry.crown_voussoir
-        info = {
-            "steps": O.iter - start, "unbalanced": unbalanced,
-            "arch_weight_N": self.weight,
-            "vertical_reaction_sum_N": float(left[1] + right[1]),
-            "horizontal_reaction_sum_N": float(left[0] + right[0]),
-            "thrust_N": float(abs(left[0])),
-            "crown_settlement_mm": -units.to_mm(float(O.bodies[self.scene.body_ids[crown]].state.pos[1]
-                                                      - self.scene.pos0[crown][1])),
-        }
-        self.log(f"[{self.case.name}] self-weight equilibrium after {info['steps']} steps: "
-                 f"unbalanced {unbalanced:.2e}, reactions {info['vertical_reaction_sum_N']:.3f} N "
-                 f"for a weight of {self.weight:.3f} N, thrust {info['thrust_N']:.3f} N")
+        info = self.recorder.selfweight_record(self.weight, unbalanced, O.iter - start)
+        self.log(
+            f"[{self.case.name}] self-weight equilibrium after {info['steps']} steps: "
+            f"unbalanced {unbalanced:.2e}, reactions {info['vertical_reaction_sum_N']:.3f} N "
+            f"for a weight of {self.weight:.3f} N, thrust {info['thrust_N']:.3f} N"
+        )
         return info
 
-    def _weight_carried_error(self) -> float:
-        """|sum of vertical support reactions / weight of the voussoirs - 1| (0 in static equilibrium)."""
-        left, right = self.recorder.reactions()
-        return abs((left[1] + right[1]) / self.weight - 1.0)
-
-    def hold(self, runaway: float | None = None, max_s: float | None = None,
-             from_rest: bool = True, still_speed: float | None = None,
-             tolerance: float | None = None) -> Verdict:
+    def hold(
+        self,
+        runaway: float | None = None,
+        max_s: float | None = None,
+        from_rest: bool = True,
+        still_speed: float | None = None,
+        tolerance: float | None = None,
+    ) -> Verdict:
         """Keep the support still, blocks started from rest (or, `from_rest` false, in their motion).
 
         'stable': after `hold_min_s`, unbalanced force below `tolerance` (default
@@ -214,7 +215,7 @@ class Runner:
         self.driver.target = self.delta()
         self._set_damping(self.num.hold_damping)
         if from_rest:
-            self._stop_blocks()
+            stop_voussoirs(self.scene)
         runaway = runaway if runaway is not None else units.mm(self.num.runaway_mm)
         max_steps = int((max_s if max_s is not None else self.num.hold_max_s) / O.dt)
         min_steps = int(self.num.hold_min_s / O.dt)
@@ -230,8 +231,11 @@ class Runner:
             self._progress(f"holding: max block move {units.to_mm(moved):.3f} mm")
             if moved > runaway:
                 return Verdict.RUNAWAY
-            if O.iter - start >= min_steps and self._unbalanced() < tolerance \
-                    and self.recorder.voussoir_speeds().max() < still_speed:
+            if (
+                O.iter - start >= min_steps
+                and self._unbalanced() < tolerance
+                and self.recorder.voussoir_speeds().max() < still_speed
+            ):
                 return Verdict.STABLE
         return Verdict.TIMEOUT
 
@@ -239,16 +243,6 @@ class Runner:
         """Local damping of the integrator: `damping` while the support moves, `hold_damping` while
         a hold decides equilibrium (each stage sets its own)."""
         self.scene.newton.damping = damping
-
-    def _stop_blocks(self) -> None:
-        """Zero the blocks' velocities: the hold then tests the configuration statically, without
-        kinetic energy from the loading that could carry the arch over a barrier it would not cross."""
-        from yade import O
-
-        for i in self.scene.voussoir_ids:
-            O.bodies[i].state.vel = (0.0, 0.0, 0.0)
-            O.bodies[i].state.angVel = (0.0, 0.0, 0.0)
-        self.scene.contacts.stopped()
 
     def move_support(self, target: float, speed_fraction: float) -> None:
         """Move the support to `target` at `speed_fraction` of the case's support speed."""
@@ -280,8 +274,10 @@ class Runner:
         outcome = collapse_fields(path, self.movement)
         if path.collapsed:
             hinges = loading.collapse_state(path.upper)
-            self.log(f"[{self.case.name}] du = {outcome['du_mm']:.2f} mm (no equilibrium at "
-                     f"{units.to_mm(path.upper):.2f}, equilibrium at {units.to_mm(path.lower):.2f})")
+            self.log(
+                f"[{self.case.name}] du = {outcome['du_mm']:.2f} mm (no equilibrium at "
+                f"{units.to_mm(path.upper):.2f}, equilibrium at {units.to_mm(path.lower):.2f})"
+            )
         else:
             self.log(f"[{self.case.name}] no collapse up to {units.to_mm(loading.settings.max_displacement):g} mm")
             self.stage = Stage.END
@@ -289,10 +285,19 @@ class Runner:
         wall = time.time() - self.wall0
         self._progress("done", force=True)
         return RunSummary(
-            **outcome, selfweight=selfweight, increments=len(path.steps), equilibria=len(path.equilibria),
-            hinges_last_equilibrium=loading.last_equilibrium_hinges, friction=dict(self.recorder.friction),
+            **outcome,
+            selfweight=selfweight,
+            increments=len(path.steps),
+            equilibria=len(path.equilibria),
+            hinges_last_equilibrium=loading.last_equilibrium_hinges,
+            friction=dict(self.recorder.friction),
             relaxations=loading.relaxations,
             hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges) if path.collapsed else (),
-            hinges_detail=[h.to_json() for h in hinges], steps=self.total_steps,
-            steps_by_stage=dict(self.steps_by_stage), dt_s=O.dt, wall_s=wall,
-            steps_per_s=self.total_steps / wall if wall > 0 else None, profile=self.clock.profile(wall))
+            hinges_detail=[h.to_json() for h in hinges],
+            steps=self.total_steps,
+            steps_by_stage=dict(self.steps_by_stage),
+            dt_s=O.dt,
+            wall_s=wall,
+            steps_per_s=self.total_steps / wall if wall > 0 else None,
+            profile=self.clock.profile(wall),
+        )

@@ -88,16 +88,31 @@ def build_scene(case: ArchCase) -> ArchScene:
     dt = case.numerics.timestep_safety * critical_timestep(case, geometry, stiffness)
     imperfections = arch_imperfections(case, geometry)
     return build_block_scene(
-        geometry, stiffness, density=units.density(case.material.density_g_per_cm3),
-        gravity=(0.0, -case.loading.gravity_m_per_s2, 0.0), damping=case.numerics.damping, dt=dt,
-        fixed={0, len(geometry.blocks) - 1}, threads=case.numerics.threads,
-        contact_model=case.numerics.contact_model, imperfections=imperfections)
+        geometry,
+        stiffness,
+        density=units.density(case.material.density_g_per_cm3),
+        gravity=(0.0, -case.loading.gravity_m_per_s2, 0.0),
+        damping=case.numerics.damping,
+        dt=dt,
+        fixed={0, len(geometry.blocks) - 1},
+        threads=case.numerics.threads,
+        contact_model=case.numerics.contact_model,
+        imperfections=imperfections,
+    )
 
 
-def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, density: float,
-                      gravity: tuple[float, float, float], damping: float, dt: float,
-                      fixed: set[int], threads: int = 1, contact_model: str = "joint",
-                      imperfections: ArchImperfections | None = None) -> ArchScene:
+def build_block_scene(
+    geometry: ArchGeometry,
+    stiffness: ContactStiffness,
+    density: float,
+    gravity: tuple[float, float, float],
+    damping: float,
+    dt: float,
+    fixed: set[int],
+    threads: int = 1,
+    contact_model: str = "joint",
+    imperfections: ArchImperfections | None = None,
+) -> ArchScene:
     """Reset YADE's global scene and fill it with `geometry.blocks` (indices in `fixed` do not move
     unless driven; the others move in the x-y plane) and the engines of `contact_model`; only the
     joint elements take the joints' imperfections."""
@@ -109,9 +124,13 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
 
     close_active()
     O.reset()
-    material = PolyhedraMat(young=stiffness.material_young, poisson=_NEGLIGIBLE_POISSON,
-                            frictionAngle=float(np.arctan(stiffness.tan_friction)), density=density,
-                            IsSplitable=False)
+    material = PolyhedraMat(
+        young=stiffness.material_young,
+        poisson=_NEGLIGIBLE_POISSON,
+        frictionAngle=float(np.arctan(stiffness.tan_friction)),
+        density=density,
+        IsSplitable=False,
+    )
     O.materials.append(material)
     body_ids = []
     for index, vertices in enumerate(geometry.blocks):
@@ -130,8 +149,18 @@ def build_block_scene(geometry: ArchGeometry, stiffness: ContactStiffness, densi
     newton = NewtonIntegrator(damping=damping, gravity=gravity)
     O.engines = [ForceResetter(), *contacts.bind(pos0, ori0, CALLBACK_NAME), newton]
     O.dt = dt
-    return ArchScene(geometry, stiffness, body_ids, pos0, ori0, contacts, dt,
-                     [O.bodies[i].state for i in body_ids], newton, imperfections)
+    return ArchScene(
+        geometry,
+        stiffness,
+        body_ids,
+        pos0,
+        ori0,
+        contacts,
+        dt,
+        [O.bodies[i].state for i in body_ids],
+        newton,
+        imperfections,
+    )
 
 
 def _quat_wxyz(q: Any) -> list[float]:
@@ -141,6 +170,18 @@ def _quat_wxyz(q: Any) -> list[float]:
 
 def body_states(scene: ArchScene) -> tuple[np.ndarray, np.ndarray]:
     """Current positions (n, 3) and z-rotations since the start (n,) of all blocks, in geometry order."""
-    rows = np.array([(p[0], p[1], p[2], q[3], q[0], q[1], q[2]) for p, q in
-                     ((state.pos, state.ori) for state in scene.states)])
+    rows = np.array(
+        [(p[0], p[1], p[2], q[3], q[0], q[1], q[2]) for p, q in ((state.pos, state.ori) for state in scene.states)]
+    )
     return rows[:, :3], z_rotation(rows[:, 3:], scene.ori0)
+
+
+def stop_voussoirs(scene: ArchScene) -> None:
+    """Zero the voussoirs' velocities: a hold then tests the configuration statically, without kinetic
+    energy from the loading that could carry the arch over a barrier it would not cross."""
+    from yade import O
+
+    for i in scene.voussoir_ids:
+        O.bodies[i].state.vel = (0.0, 0.0, 0.0)
+        O.bodies[i].state.angVel = (0.0, 0.0, 0.0)
+    scene.contacts.stopped()

@@ -26,8 +26,7 @@ def capture(contacts: ContactModel, driver: SupportDriver) -> dict:
     # copies: YADE's State.vel and State.angVel are references to the live vectors (pos and ori
     # are copies), so a snapshot holding them would restore whatever velocity the scene has then
     bodies = [(tuple(s.pos), s.ori, tuple(s.vel), tuple(s.angVel)) for s in (b.state for b in O.bodies)]
-    return {"bodies": bodies, "contacts": contacts.snapshot(), "target": driver.target,
-            "speed": driver.current_speed}
+    return {"bodies": bodies, "contacts": contacts.snapshot(), "target": driver.target, "speed": driver.current_speed}
 
 
 def put_back(snapshot: dict, contacts: ContactModel, driver: SupportDriver) -> None:
@@ -42,8 +41,9 @@ def put_back(snapshot: dict, contacts: ContactModel, driver: SupportDriver) -> N
     driver.current_speed = snapshot["speed"]
 
 
-def place_voussoirs(scene: ArchScene, centroids: np.ndarray, rotations: np.ndarray,
-                    with_supports: bool = False) -> None:
+def place_voussoirs(
+    scene: ArchScene, centroids: np.ndarray, rotations: np.ndarray, with_supports: bool = False
+) -> None:
     """Put every voussoir (and, `with_supports`, the two supports too) at rest at `centroids`
     (n_blocks, 2; m) turned by `rotations` (n_blocks; rad about z from the undeformed pose), e.g. a
     rigid analysis's placement: a hold then tests whether that configuration is an equilibrium of

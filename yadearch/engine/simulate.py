@@ -45,9 +45,11 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
     import yade.config
 
     (out / SCRATCH_RECORD).write_text(f"{scratch_folder()}\n")  # the parent removes it if this process is killed
-    log(f"[{case.name}] kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
+    log(
+        f"[{case.name}] kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
         f"support speed={case.support_speed_mm_per_s:.4g} mm/s, damping={case.numerics.damping}, "
-        f"contacts={case.numerics.contact_model}")
+        f"contacts={case.numerics.contact_model}"
+    )
     origin = provenance(str(yade.config.version))  # now: the code that runs was imported at start
     runner = Runner(case, log=log)
     log(f"[{case.name}] dt={runner.scene.dt:.3e} s, {len(runner.scene.body_ids)} bodies")
@@ -55,19 +57,35 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
     imperfections = runner.scene.imperfections
     found = runner.run()
     summary = dataclasses.replace(
-        found, name=case.name, started=started, engine=DEM,
-        kn_N_per_mm3=case.interface.kn_N_per_mm3, ks_N_per_mm3=case.ks_N_per_mm3,
+        found,
+        name=case.name,
+        started=started,
+        engine=DEM,
+        kn_N_per_mm3=case.interface.kn_N_per_mm3,
+        ks_N_per_mm3=case.ks_N_per_mm3,
         kn_effective_N_per_mm3=runner.scene.stiffness.kn / units.N_PER_MM3,
-        support_speed_mm_per_s=case.support_speed_mm_per_s, contact_model=case.numerics.contact_model,
+        support_speed_mm_per_s=case.support_speed_mm_per_s,
+        contact_model=case.numerics.contact_model,
         loading=loading_info(case.loading, path_end_mm(case, runner.movement)),
         collapse_criterion=criterion_text(case.numerics),
-        imperfections=imperfections.summary() if imperfections is not None else None, **origin)
-    write_run(out, case.to_toml(), runner.records.series, runner.records.joints,
-              runner.records.snapshots, summary, imperfections.table() if imperfections else None,
-              runner.records.states)
+        imperfections=imperfections.summary() if imperfections is not None else None,
+        **origin,
+    )
+    write_run(
+        out,
+        case.to_toml(),
+        runner.records.series,
+        runner.records.joints,
+        runner.records.snapshots,
+        summary,
+        imperfections.table() if imperfections else None,
+        runner.records.states,
+    )
     du = summary.du_mm
-    log(f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} hinges={summary.hinge_labels or '-'} "
-        f"steps={summary.steps} wall={summary.wall_s:.0f} s -> {final_folder(out)}")
+    log(
+        f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} hinges={summary.hinge_labels or '-'} "
+        f"steps={summary.steps} wall={summary.wall_s:.0f} s -> {final_folder(out)}"
+    )
     log_file.close()
     return summary
 

@@ -82,8 +82,9 @@ class SteppingGate:
         last_iter, last_change = O.iter, time.time()
         while not self._parked.wait(POLL_S):
             if not O.running:
-                raise RunFailedError(f"YADE stopped stepping at step {O.iter} (target {target}); an "
-                                     "engine probably raised, see stderr")
+                raise RunFailedError(
+                    f"YADE stopped stepping at step {O.iter} (target {target}); an engine probably raised, see stderr"
+                )
             if O.iter != last_iter:
                 last_iter, last_change = O.iter, time.time()
             elif time.time() - last_change > STALL_S:

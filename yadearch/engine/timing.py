@@ -21,8 +21,7 @@ class EngineClock:
         from yade import O
 
         O.timingEnabled = True
-        self.driver_labels = tuple(f"{name}({callback}" for name in PYTHON_ENGINES
-                                   for callback in driver_callbacks)
+        self.driver_labels = tuple(f"{name}({callback}" for name in PYTHON_ENGINES for callback in driver_callbacks)
         self.totals_ns: dict[str, int] = {}
 
     @staticmethod
@@ -51,7 +50,9 @@ class EngineClock:
         driver_s = sum(s for label, s in seconds.items() if label.startswith(self.driver_labels))
         scene_s = sum(seconds.values()) - driver_s
         return {
-            "engine_s": seconds, "scene_engines_s": scene_s, "driver_callbacks_s": driver_s,
+            "engine_s": seconds,
+            "scene_engines_s": scene_s,
+            "driver_callbacks_s": driver_s,
             "driver_rest_s": wall_s - scene_s - driver_s,
             "driver_overhead_ratio": wall_s / scene_s if scene_s > 0 else None,
         }

@@ -36,8 +36,9 @@ class DimensionErrors:
         return np.concatenate([[0.0], np.cumsum(self.length)[:-1], [0.0]])
 
 
-def draw_dimension_errors(n_voussoirs: int, seed: int, length_sd: float, thickness_mean: float,
-                          thickness_sd: float) -> DimensionErrors:
+def draw_dimension_errors(
+    n_voussoirs: int, seed: int, length_sd: float, thickness_mean: float, thickness_sd: float
+) -> DimensionErrors:
     """Draw every voussoir's errors from `seed`'s DIMENSION_STREAM; the lengths are centred."""
     rng = np.random.default_rng((seed, DIMENSION_STREAM))
     length = rng.normal(0.0, length_sd, n_voussoirs)
@@ -60,12 +61,14 @@ def with_dimension_errors(geometry: ArchGeometry, errors: DimensionErrors) -> Ar
     would keep less than MIN_THICKNESS_FRACTION of the ring's thickness."""
     fraction = shift_fractions(geometry, errors)
     if np.any(np.abs(fraction) > MAX_SHIFT_FRACTION):
-        raise ValueError(f"a joint moves {np.abs(fraction).max():.3g} of the way to its neighbour "
-                         f"(at most {MAX_SHIFT_FRACTION:g})")
+        raise ValueError(
+            f"a joint moves {np.abs(fraction).max():.3g} of the way to its neighbour (at most {MAX_SHIFT_FRACTION:g})"
+        )
     scale = 1.0 + errors.thickness / geometry.thickness
     if np.any(scale < MIN_THICKNESS_FRACTION):
-        raise ValueError(f"a voussoir keeps {scale.min():.3g} of the ring's thickness "
-                         f"(at least {MIN_THICKNESS_FRACTION:g})")
+        raise ValueError(
+            f"a voussoir keeps {scale.min():.3g} of the ring's thickness (at least {MIN_THICKNESS_FRACTION:g})"
+        )
     starts, directions, lengths = _moved_joints(geometry, fraction)
     n = geometry.n_voussoirs
     face = [lengths[:-1] * scale, lengths[1:] * scale]  # each voussoir's left and right face (m)
@@ -80,15 +83,30 @@ def with_dimension_errors(geometry: ArchGeometry, errors: DimensionErrors) -> Ar
     blocks.append(geometry.blocks[-1])
     # two faces meet over the shorter one; the supports' faces keep the nominal length
     shared = np.minimum(np.concatenate([[lengths[0]], face[1]]), np.concatenate([face[0], [lengths[-1]]]))
-    joints = [Joint(k + 1, k, k + 1, starts[k], starts[k] + shared[k] * directions[k],
-                    np.array([directions[k][1], -directions[k][0]])) for k in range(n + 1)]
+    joints = [
+        Joint(
+            k + 1,
+            k,
+            k + 1,
+            starts[k],
+            starts[k] + shared[k] * directions[k],
+            np.array([directions[k][1], -directions[k][0]]),
+        )
+        for k in range(n + 1)
+    ]
     middles = np.array([(j.intrados + j.extrados) / 2.0 for j in joints])
     # `thickness` stays the designed ring's: the hinges' rotation scale and the shear law's joint
     # length, the same in a run and in its analysis; the time step takes the narrowest voussoir
-    return ArchGeometry(blocks, joints, thickness=geometry.thickness, depth=geometry.depth,
-                        span=geometry.span, rise=geometry.rise,
-                        voussoir_width=float(np.linalg.norm(np.diff(middles, axis=0), axis=1).min()),
-                        longest_joint=float(max(face[0].max(), face[1].max(), geometry.longest_joint)))
+    return ArchGeometry(
+        blocks,
+        joints,
+        thickness=geometry.thickness,
+        depth=geometry.depth,
+        span=geometry.span,
+        rise=geometry.rise,
+        voussoir_width=float(np.linalg.norm(np.diff(middles, axis=0), axis=1).min()),
+        longest_joint=float(max(face[0].max(), face[1].max(), geometry.longest_joint)),
+    )
 
 
 def _moved_joints(geometry: ArchGeometry, fraction: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -24,8 +24,15 @@ def const(v):
 @njit(cache=True)
 def var(v, k):
     """Degree of freedom `k` (0..5) at value `v`."""
-    return (v, 1.0 if k == 0 else 0.0, 1.0 if k == 1 else 0.0, 1.0 if k == 2 else 0.0,
-            1.0 if k == 3 else 0.0, 1.0 if k == 4 else 0.0, 1.0 if k == 5 else 0.0)
+    return (
+        v,
+        1.0 if k == 0 else 0.0,
+        1.0 if k == 1 else 0.0,
+        1.0 if k == 2 else 0.0,
+        1.0 if k == 3 else 0.0,
+        1.0 if k == 4 else 0.0,
+        1.0 if k == 5 else 0.0,
+    )
 
 
 @njit(cache=True)
@@ -53,8 +60,15 @@ def shift(a, c):
 @njit(cache=True)
 def mul(a, b):
     v, w = a[0], b[0]
-    return (v * w, a[1] * w + v * b[1], a[2] * w + v * b[2], a[3] * w + v * b[3], a[4] * w + v * b[4],
-            a[5] * w + v * b[5], a[6] * w + v * b[6])
+    return (
+        v * w,
+        a[1] * w + v * b[1],
+        a[2] * w + v * b[2],
+        a[3] * w + v * b[3],
+        a[4] * w + v * b[4],
+        a[5] * w + v * b[5],
+        a[6] * w + v * b[6],
+    )
 
 
 @njit(cache=True)

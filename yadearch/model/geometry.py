@@ -98,15 +98,17 @@ def segmental_arch(
     blocks: list[np.ndarray] = []
     left_angle = joint_angles[0]
     outward_left = np.array([-np.sin(left_angle), np.cos(left_angle)])
-    blocks.append(_support_prism(_radial(left_angle, r_in), _radial(left_angle, r_out), outward_left,
-                                 support_length, depth))
+    blocks.append(
+        _support_prism(_radial(left_angle, r_in), _radial(left_angle, r_out), outward_left, support_length, depth)
+    )
     for a, b in zip(joint_angles[:-1], joint_angles[1:]):
         polygon = [_radial(a, r_in), _radial(b, r_in), _radial(b, r_out), _radial(a, r_out)]
         blocks.append(prism(polygon, depth))
     right_angle = joint_angles[-1]
     outward_right = np.array([np.sin(right_angle), -np.cos(right_angle)])
-    blocks.append(_support_prism(_radial(right_angle, r_in), _radial(right_angle, r_out), outward_right,
-                                 support_length, depth))
+    blocks.append(
+        _support_prism(_radial(right_angle, r_in), _radial(right_angle, r_out), outward_right, support_length, depth)
+    )
 
     joints = []
     for k, angle in enumerate(joint_angles):
@@ -114,13 +116,21 @@ def segmental_arch(
         joints.append(Joint(k + 1, k, k + 1, _radial(angle, r_in), _radial(angle, r_out), normal))
     springing = (np.pi - embrace) / 2.0  # angle of the springing planes above the horizontal
     width = 2.0 * (internal_radius + thickness / 2.0) * math.sin(embrace / n_voussoirs / 2.0)
-    return ArchGeometry(blocks, joints, thickness, depth, span=float(2.0 * internal_radius * np.cos(springing)),
-                        rise=float(internal_radius * (1.0 - np.sin(springing))), voussoir_width=float(width),
-                        longest_joint=thickness)
+    return ArchGeometry(
+        blocks,
+        joints,
+        thickness,
+        depth,
+        span=float(2.0 * internal_radius * np.cos(springing)),
+        rise=float(internal_radius * (1.0 - np.sin(springing))),
+        voussoir_width=float(width),
+        longest_joint=thickness,
+    )
 
 
-def arch_on_intrados(intrados: Intrados, n_voussoirs: int, orientation: str, thickness: float,
-                     depth: float, support_length: float) -> ArchGeometry:
+def arch_on_intrados(
+    intrados: Intrados, n_voussoirs: int, orientation: str, thickness: float, depth: float, support_length: float
+) -> ArchGeometry:
     """An arch of any shape (`model/intrados.py`): voussoirs of equal intrados length whose joints run
     normal to the intrados, vertically or radially across a ring `thickness` thick (normal to the
     intrados), on two support blocks whose faces lie on the springing joints."""
@@ -140,9 +150,16 @@ def arch_on_intrados(intrados: Intrados, n_voussoirs: int, orientation: str, thi
         blocks.append(prism(polygon, depth))
     blocks.append(_support_prism(*ends[-1], joints[-1].normal, support_length, depth))
     middles = np.array([(inner + outer) / 2.0 for inner, outer in ends])
-    return ArchGeometry(blocks, joints, thickness, depth, intrados.span, intrados.rise,
-                        voussoir_width=float(np.linalg.norm(np.diff(middles, axis=0), axis=1).min()),
-                        longest_joint=max(j.length for j in joints))
+    return ArchGeometry(
+        blocks,
+        joints,
+        thickness,
+        depth,
+        intrados.span,
+        intrados.rise,
+        voussoir_width=float(np.linalg.norm(np.diff(middles, axis=0), axis=1).min()),
+        longest_joint=max(j.length for j in joints),
+    )
 
 
 def is_convex_polygon(polygon: np.ndarray) -> bool:
@@ -152,8 +169,7 @@ def is_convex_polygon(polygon: np.ndarray) -> bool:
     return bool(np.all(turns > 0))
 
 
-def _support_prism(p_in: np.ndarray, p_out: np.ndarray, outward: np.ndarray, length: float,
-                   depth: float) -> np.ndarray:
+def _support_prism(p_in: np.ndarray, p_out: np.ndarray, outward: np.ndarray, length: float, depth: float) -> np.ndarray:
     """A rectangular support block: one face on the springing joint, extending `length` outward."""
     polygon = [p_in, p_out, p_out + length * outward, p_in + length * outward]
     return prism(polygon, depth)

@@ -24,12 +24,15 @@ class Hinge:
     rotation: float
 
     def to_json(self) -> dict:
-        return {"interface": self.interface, "side": self.side, "interfaces": list(self.interfaces),
-                "rotation_mrad": abs(self.rotation) * 1e3}
+        return {
+            "interface": self.interface,
+            "side": self.side,
+            "interfaces": list(self.interfaces),
+            "rotation_mrad": abs(self.rotation) * 1e3,
+        }
 
 
-def hinge_rotation(opening_intrados: np.ndarray, opening_extrados: np.ndarray,
-                   joint_length: float) -> np.ndarray:
+def hinge_rotation(opening_intrados: np.ndarray, opening_extrados: np.ndarray, joint_length: float) -> np.ndarray:
     """Signed hinge rotation of every joint (rad): > 0 pivots about the intrados (I)."""
     return (np.asarray(opening_extrados) - np.asarray(opening_intrados)) / joint_length
 
@@ -70,8 +73,12 @@ def same_hinges(a: list[dict], b: list[dict]) -> bool:
     spread is the same hinge (the paper reports such a hinge as the range, e.g. 11-12 I)."""
     if len(a) != len(b):
         return False
-    return all(x["side"] == y["side"] and x["interface"] in y.get("interfaces", [y["interface"]])
-               and y["interface"] in x.get("interfaces", [x["interface"]]) for x, y in zip(a, b))
+    return all(
+        x["side"] == y["side"]
+        and x["interface"] in y.get("interfaces", [y["interface"]])
+        and y["interface"] in x.get("interfaces", [x["interface"]])
+        for x, y in zip(a, b)
+    )
 
 
 def mirror_hinge_labels(labels: list[str] | tuple[str, ...], last_interface: int) -> list[str]:
@@ -89,6 +96,7 @@ def paper_labels(hinges: list[tuple[int, str, float]], last_interface: int) -> d
     rotation): D = the extrados hinge at interface 1 (the fixed support), C = the extrados hinge at
     `last_interface` (the moving support), A = the intrados hinge, B = the remaining extrados hinge
     (the most rotated where there are several); hinges left over get no label."""
+
     def most_rotated(candidates: list[tuple[int, str, float]]) -> tuple[int, str] | None:
         best = max(candidates, key=lambda h: abs(h[2]), default=None)
         return None if best is None else (best[0], best[1])
@@ -105,4 +113,3 @@ def paper_labels(hinges: list[tuple[int, str, float]], last_interface: int) -> d
     if extrados:
         labels[extrados] = "B"
     return labels
-

@@ -69,9 +69,19 @@ class ImperfectionAmplitudes:
     @property
     def flat_aligned_faces(self) -> bool:
         """Faces flat, parallel and aligned (worn edges aside): what the rigid analysis represents."""
-        return not any((self.face_angle, self.face_angle_sd, self.face_bump, self.face_bump_sd,
-                        self.voussoir_offset, self.voussoir_offset_sd, self.keystone_offset,
-                        self.left_support_angle, self.right_support_angle))
+        return not any(
+            (
+                self.face_angle,
+                self.face_angle_sd,
+                self.face_bump,
+                self.face_bump_sd,
+                self.voussoir_offset,
+                self.voussoir_offset_sd,
+                self.keystone_offset,
+                self.left_support_angle,
+                self.right_support_angle,
+            )
+        )
 
     @property
     def perfect_dimensions(self) -> bool:
@@ -111,8 +121,7 @@ class GapProfiles:
     right_offset: np.ndarray
 
 
-def draw_defects(amplitudes: ImperfectionAmplitudes, n_joints: int, seed: int,
-                 lengths: np.ndarray) -> JointDefects:
+def draw_defects(amplitudes: ImperfectionAmplitudes, n_joints: int, seed: int, lengths: np.ndarray) -> JointDefects:
     """Draw every joint's defects from `seed`. The first and last joints (against the supports) get
     the voussoir's face defects on their voussoir side only. Edge sizes below 0 count as 0 and
     above MAX_EDGE_FRACTION of the joint's length are capped there."""
@@ -133,8 +142,9 @@ def draw_defects(amplitudes: ImperfectionAmplitudes, n_joints: int, seed: int,
     angle[0] += amplitudes.left_support_angle  # a support set askew wedges its springing joint
     angle[-1] += amplitudes.right_support_angle
     blocks = np.concatenate([[0.0], voussoirs, [0.0]])  # the supports sit where they were designed
-    return JointDefects(left_in, left_out, right_in, right_out, angle, bump, amplitudes.edge_shape,
-                        blocks[:-1], blocks[1:])
+    return JointDefects(
+        left_in, left_out, right_in, right_out, angle, bump, amplitudes.edge_shape, blocks[:-1], blocks[1:]
+    )
 
 
 def keystones(n_voussoirs: int) -> list[int]:
@@ -156,10 +166,12 @@ def joint_gap(s: np.ndarray, length: float, defects: JointDefects, j: int) -> np
     """The gap (m) of joint `j` at abscissae `s` (m from the intrados), before the shift that
     makes its smallest value 0."""
     shape = defects.edge_shape
-    gap = (edge_gap(s, defects.left_intrados_edge[j], shape)
-           + edge_gap(s, defects.right_intrados_edge[j], shape)
-           + edge_gap(length - s, defects.left_extrados_edge[j], shape)
-           + edge_gap(length - s, defects.right_extrados_edge[j], shape))
+    gap = (
+        edge_gap(s, defects.left_intrados_edge[j], shape)
+        + edge_gap(s, defects.right_intrados_edge[j], shape)
+        + edge_gap(length - s, defects.left_extrados_edge[j], shape)
+        + edge_gap(length - s, defects.right_extrados_edge[j], shape)
+    )
     angle = defects.face_angle[j]
     gap = gap + (angle * s if angle >= 0 else -angle * (length - s))
     bump = defects.face_bump[j]

@@ -91,8 +91,10 @@ class Arcs:
         self.starts = np.concatenate([[0.0], np.cumsum([a.radius * a.sweep for a in arcs])])
         self.length = float(self.starts[-1])
         left, right = arcs[0].point(arcs[0].start), arcs[-1].point(arcs[-1].end)
-        tops = [a.centre[1] + a.radius if a.start >= np.pi / 2 >= a.end
-                else max(a.point(a.start)[1], a.point(a.end)[1]) for a in arcs]
+        tops = [
+            a.centre[1] + a.radius if a.start >= np.pi / 2 >= a.end else max(a.point(a.start)[1], a.point(a.end)[1])
+            for a in arcs
+        ]
         self.span, self.rise = float(right[0] - left[0]), float(max(tops) - left[1])
         self.min_radius = min(a.radius for a in arcs)
 
@@ -134,8 +136,13 @@ class Arcs:
             before, after = self.arcs[k - 1], self.arcs[k]
             station = self._end_station(k)
             if station.corner:
-                meet = _circles_meet(before.centre, before.radius + thickness, after.centre,
-                                     after.radius + thickness, station.point + thickness * station.normal)
+                meet = _circles_meet(
+                    before.centre,
+                    before.radius + thickness,
+                    after.centre,
+                    after.radius + thickness,
+                    station.point + thickness * station.normal,
+                )
                 bounds[k - 1][1] = _angle(meet - before.centre)
                 bounds[k][0] = _angle(meet - after.centre)
         return [(first, last) for first, last in bounds]
@@ -222,8 +229,13 @@ def three_centred(span: float, rise: float) -> Arcs:
     y_crown = (c * (c - a + b) / 2.0 - a * a) / b  # height of the crown arc's centre (below 0)
     left, centre, right = np.array([r_side - a, 0.0]), np.array([0.0, y_crown]), np.array([a - r_side, 0.0])
     joint = _angle(left - centre)  # direction of the left junction from both centres
-    return Arcs([Arc(left, r_side, np.pi, np.pi - joint), Arc(centre, b - y_crown, joint, 2.0 * joint - np.pi),
-                 Arc(right, r_side, np.pi - joint, np.pi - joint)])
+    return Arcs(
+        [
+            Arc(left, r_side, np.pi, np.pi - joint),
+            Arc(centre, b - y_crown, joint, 2.0 * joint - np.pi),
+            Arc(right, r_side, np.pi - joint, np.pi - joint),
+        ]
+    )
 
 
 def stations(intrados: Intrados, n_voussoirs: int) -> list[Station]:

@@ -94,27 +94,86 @@ def joint_table(geometry: ArchGeometry, centroids0: np.ndarray, profiles: GapPro
         left_point = left_point + profiles.left_offset[:, None] * along
         right_point = right_point + profiles.right_offset[:, None] * along
         fraction, gap, imperfect = profiles.fraction, profiles.gap, profiles.imperfect
-    return JointTable(left, right, left_point, right_point, normal, along, length, handedness,
-                      np.concatenate([right, left]), len(centroids0), fraction, gap, imperfect)
+    return JointTable(
+        left,
+        right,
+        left_point,
+        right_point,
+        normal,
+        along,
+        length,
+        handedness,
+        np.concatenate([right, left]),
+        len(centroids0),
+        fraction,
+        gap,
+        imperfect,
+    )
 
 
-def joint_forces(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.ndarray,
-                 vel: np.ndarray, ang_vel: np.ndarray, shear: np.ndarray, dt: float) -> JointForces:
+def joint_forces(
+    table: JointTable,
+    law: JointLaw,
+    pos: np.ndarray,
+    rot: np.ndarray,
+    vel: np.ndarray,
+    ang_vel: np.ndarray,
+    shear: np.ndarray,
+    dt: float,
+) -> JointForces:
     """Evaluate every joint for blocks at `pos` (n_blocks, 2) rotated by `rot` (rad, about z, since
     the start) moving at `vel` (n_blocks, 2) and `ang_vel` (rad/s); `shear` holds each joint's shear
     force from the previous step and `dt` is the step over which the slip rate acts."""
-    outputs = _joint_kernel(table.left, table.right, table.left_intrados, table.right_intrados,
-                            table.normal0, table.along0, table.length, table.handedness,
-                            table.n_blocks, law.kn * law.depth, law.ks * law.depth, law.tan_friction,
-                            pos, rot, vel, ang_vel, shear, dt, table.gap_fraction, table.gap,
-                            table.imperfect)
+    outputs = _joint_kernel(
+        table.left,
+        table.right,
+        table.left_intrados,
+        table.right_intrados,
+        table.normal0,
+        table.along0,
+        table.length,
+        table.handedness,
+        table.n_blocks,
+        law.kn * law.depth,
+        law.ks * law.depth,
+        law.tan_friction,
+        pos,
+        rot,
+        vel,
+        ang_vel,
+        shear,
+        dt,
+        table.gap_fraction,
+        table.gap,
+        table.imperfect,
+    )
     return JointForces(*outputs)
 
 
 @njit(cache=True)
-def _joint_kernel(left, right, left_intrados, right_intrados, normal0, along0, length, handedness,
-                  n_blocks, kn_depth, ks_depth, tan_friction, pos, rot, vel, ang_vel, shear, dt,
-                  gap_fraction, gap, imperfect):
+def _joint_kernel(
+    left,
+    right,
+    left_intrados,
+    right_intrados,
+    normal0,
+    along0,
+    length,
+    handedness,
+    n_blocks,
+    kn_depth,
+    ks_depth,
+    tan_friction,
+    pos,
+    rot,
+    vel,
+    ang_vel,
+    shear,
+    dt,
+    gap_fraction,
+    gap,
+    imperfect,
+):
     """The joint law, one joint at a time (compiled; about 1/30 of the array version's time).
 
     In the frame of the faces' mean direction, centred between the two faces' intrados points a_l
@@ -152,7 +211,8 @@ def _joint_kernel(left, right, left_intrados, right_intrados, normal0, along0, l
             continue
         if imperfect[j]:
             area, centroid, touching_length = _gapped_overlap(
-                p0, slope, start, shared, gap_fraction[j], gap[j], length[j] * math.cos(half_turn))
+                p0, slope, start, shared, gap_fraction[j], gap[j], length[j] * math.cos(half_turn)
+            )
             if area <= 0.0:
                 continue
         else:

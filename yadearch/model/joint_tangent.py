@@ -31,15 +31,39 @@ class JointTangent:
     local: np.ndarray
 
 
-def joint_tangent(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.ndarray,
-                  pos_before: np.ndarray, rot_before: np.ndarray, shear_before: np.ndarray) -> JointTangent:
+def joint_tangent(
+    table: JointTable,
+    law: JointLaw,
+    pos: np.ndarray,
+    rot: np.ndarray,
+    pos_before: np.ndarray,
+    rot_before: np.ndarray,
+    shear_before: np.ndarray,
+) -> JointTangent:
     """Every joint for blocks at `pos` (n_blocks, 2), `rot` (rad), having moved from `pos_before`,
     `rot_before`, where the joints' shear forces were `shear_before`."""
-    outputs = _tangent_kernel(table.left, table.right, table.left_intrados, table.right_intrados,
-                              table.normal0, table.along0, table.length, table.handedness, table.n_blocks,
-                              law.kn * law.depth, law.ks * law.depth, law.tan_friction, pos, rot,
-                              pos_before, rot_before, shear_before, table.gap_fraction, table.gap,
-                              table.imperfect)
+    outputs = _tangent_kernel(
+        table.left,
+        table.right,
+        table.left_intrados,
+        table.right_intrados,
+        table.normal0,
+        table.along0,
+        table.length,
+        table.handedness,
+        table.n_blocks,
+        law.kn * law.depth,
+        law.ks * law.depth,
+        law.tan_friction,
+        pos,
+        rot,
+        pos_before,
+        rot_before,
+        shear_before,
+        table.gap_fraction,
+        table.gap,
+        table.imperfect,
+    )
     *forces, local = outputs
     return JointTangent(JointForces(*forces), local)
 
@@ -47,8 +71,7 @@ def joint_tangent(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.nda
 @njit(cache=True)
 def _placed_intrados(x, y, turn, point):
     c, s = dcos(turn), dsin(turn)
-    return (add(x, sub(scale(c, point[0]), scale(s, point[1]))),
-            add(y, add(scale(s, point[0]), scale(c, point[1]))))
+    return (add(x, sub(scale(c, point[0]), scale(s, point[1]))), add(y, add(scale(s, point[0]), scale(c, point[1]))))
 
 
 @njit(cache=True)
@@ -68,8 +91,7 @@ def _perfect_overlap(p0, p1, start, shared):
     last = one if p1[0] > 0.0 else crossing
     touching = mul(shared, sub(last, first))
     q_sum = add(q0, q1)
-    centroid = add(add(start, mul(shared, first)),
-                   div(mul(touching, add(q0, scale(q1, 2.0))), scale(q_sum, 3.0)))
+    centroid = add(add(start, mul(shared, first)), div(mul(touching, add(q0, scale(q1, 2.0))), scale(q_sum, 3.0)))
     return scale(mul(touching, q_sum), 0.5), centroid, touching
 
 
@@ -102,9 +124,28 @@ def _gapped_overlap(p0, slope, start, shared, fraction, gap, projected_length):
 
 
 @njit(cache=True)
-def _tangent_kernel(left, right, left_intrados, right_intrados, normal0, along0, length, handedness,
-                    n_blocks, kn_depth, ks_depth, tan_friction, pos, rot, pos_before, rot_before,
-                    shear_before, gap_fraction, gap, imperfect):
+def _tangent_kernel(
+    left,
+    right,
+    left_intrados,
+    right_intrados,
+    normal0,
+    along0,
+    length,
+    handedness,
+    n_blocks,
+    kn_depth,
+    ks_depth,
+    tan_friction,
+    pos,
+    rot,
+    pos_before,
+    rot_before,
+    shear_before,
+    gap_fraction,
+    gap,
+    imperfect,
+):
     """`joint_law._joint_kernel` with velocity x dt = the motion since the `_before` state, every
     quantity a dual number over the joint's six degrees of freedom; returns its outputs and the
     (n_joints, 6, 6) local tangents."""
@@ -146,10 +187,14 @@ def _tangent_kernel(left, right, left_intrados, right_intrados, normal0, along0,
         normal = scale(area, kn_depth)
         arm_lx, arm_ly, arm_rx, arm_ry = sub(px, xl), sub(py, yl), sub(px, xr), sub(py, yr)
         turn_l, turn_r = shift(tl, -rot_before[lb]), shift(tr, -rot_before[rb])
-        slip_x = sub(sub(shift(xr, -pos_before[rb, 0]), mul(turn_r, arm_ry)),
-                     sub(shift(xl, -pos_before[lb, 0]), mul(turn_l, arm_ly)))
-        slip_y = sub(add(shift(yr, -pos_before[rb, 1]), mul(turn_r, arm_rx)),
-                     add(shift(yl, -pos_before[lb, 1]), mul(turn_l, arm_lx)))
+        slip_x = sub(
+            sub(shift(xr, -pos_before[rb, 0]), mul(turn_r, arm_ry)),
+            sub(shift(xl, -pos_before[lb, 0]), mul(turn_l, arm_ly)),
+        )
+        slip_y = sub(
+            add(shift(yr, -pos_before[rb, 1]), mul(turn_r, arm_rx)),
+            add(shift(yl, -pos_before[lb, 1]), mul(turn_l, arm_lx)),
+        )
         cap = scale(normal, tan_friction)
         stiffness = scale(touching, ks_depth)
         step_slip = add(mul(slip_x, ex), mul(slip_y, ey))
@@ -160,8 +205,9 @@ def _tangent_kernel(left, right, left_intrados, right_intrados, normal0, along0,
         elif trial[0] < -cap[0]:
             tangential = scale(cap, -1.0)
         if abs(trial[0]) > cap[0]:
-            plastic_slip[j] = min((abs(trial[0]) - cap[0]) / (stiffness[0] if stiffness[0] > 0.0 else 1.0),
-                                  abs(step_slip[0]))
+            plastic_slip[j] = min(
+                (abs(trial[0]) - cap[0]) / (stiffness[0] if stiffness[0] > 0.0 else 1.0), abs(step_slip[0])
+            )
         fx, fy = add(mul(normal, nx), mul(tangential, ex)), add(mul(normal, ny), mul(tangential, ey))
         torque_r = sub(mul(arm_rx, fy), mul(arm_ry, fx))
         torque_l = sub(mul(arm_ly, fx), mul(arm_lx, fy))

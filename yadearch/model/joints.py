@@ -60,8 +60,9 @@ def pair_rotation(pair: np.ndarray, pair0: np.ndarray) -> np.ndarray:
     return angles
 
 
-def joint_states(geometry: ArchGeometry, pos0: np.ndarray, pos: np.ndarray, rot: np.ndarray,
-                 contact_points: np.ndarray) -> JointState:
+def joint_states(
+    geometry: ArchGeometry, pos0: np.ndarray, pos: np.ndarray, rot: np.ndarray, contact_points: np.ndarray
+) -> JointState:
     """Kinematics of every joint; `pos0`, `pos` (n_blocks, >=2), `rot` (n_blocks,) in geometry
     order, `contact_points` (n_joints, 2) with NaN rows for joints without contact."""
     left = np.array([j.left for j in geometry.joints])
@@ -86,8 +87,7 @@ def joint_states(geometry: ArchGeometry, pos0: np.ndarray, pos: np.ndarray, rot:
     )
 
 
-def block_outlines(geometry: ArchGeometry, pos0: np.ndarray, pos: np.ndarray,
-                   rot: np.ndarray) -> list[np.ndarray]:
+def block_outlines(geometry: ArchGeometry, pos0: np.ndarray, pos: np.ndarray, rot: np.ndarray) -> list[np.ndarray]:
     """Current x-y outline (front face) of every block, for drawing the deformed arch."""
     outlines = []
     for b, vertices in enumerate(geometry.blocks):

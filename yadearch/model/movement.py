@@ -56,8 +56,13 @@ class SupportMotion:
         """(vx, vy, omega) per unit path rate of the support's material point at the origin: the
         generalised velocity the limit analysis's equilibrium rows are written for."""
         pivot_now = self.pivot_at(lam)
-        return np.array([self.translation[0] + self.rotation * pivot_now[1],
-                         self.translation[1] - self.rotation * pivot_now[0], self.rotation])
+        return np.array(
+            [
+                self.translation[0] + self.rotation * pivot_now[1],
+                self.translation[1] - self.rotation * pivot_now[0],
+                self.rotation,
+            ]
+        )
 
     def displacement_of(self, point_now: np.ndarray, lam: float, step: float) -> np.ndarray:
         """How far (2,) the support's material point now at `point_now` moves while the path goes
@@ -114,8 +119,9 @@ class SupportMotion:
         `centroid` while turning by `turn` stands: its turn over the rate, or its shift along the line."""
         if self.rotation != 0.0:
             return turn / self.rotation
-        return float((centroid[0] - centroid0[0]) * self.translation[0]
-                     + (centroid[1] - centroid0[1]) * self.translation[1])
+        return float(
+            (centroid[0] - centroid0[0]) * self.translation[0] + (centroid[1] - centroid0[1]) * self.translation[1]
+        )
 
 
 Motion = SupportMotion | PathMotion
@@ -177,8 +183,9 @@ class Movement:
         if self.left is None or self.right is None or self.rotates:
             return False
         probes = (1.0, *self.corners, *((self.length,) if math.isfinite(self.length) else ()))
-        return all(np.allclose(self.left.offset(lam), self.right.offset(lam), rtol=0.0, atol=SAME_DIRECTION)
-                   for lam in probes)
+        return all(
+            np.allclose(self.left.offset(lam), self.right.offset(lam), rtol=0.0, atol=SAME_DIRECTION) for lam in probes
+        )
 
     def components(self, lam: float) -> tuple[float, float]:
         """The reference springing point's displacement (m) at path `lam`."""
@@ -204,8 +211,15 @@ def right_springing_point(geometry: ArchGeometry) -> np.ndarray:
     return 0.5 * (np.asarray(joint.intrados[:2]) + np.asarray(joint.extrados[:2]))
 
 
-def support_movement(geometry: ArchGeometry, moving_support: str, motion: str, direction_deg: float,
-                     pivot_offset: tuple[float, float], sense: str, path: np.ndarray | None = None) -> Movement:
+def support_movement(
+    geometry: ArchGeometry,
+    moving_support: str,
+    motion: str,
+    direction_deg: float,
+    pivot_offset: tuple[float, float],
+    sense: str,
+    path: np.ndarray | None = None,
+) -> Movement:
     """The movement a case describes. `direction_deg` (from +x) is the right support's translation;
     `pivot_offset` (m) places the right support's pivot from its springing intrados point and
     `sense` gives its rotation as seen from the front; `path` rows (dx, dy in m, rotation in rad)
@@ -229,5 +243,7 @@ def support_movement(geometry: ArchGeometry, moving_support: str, motion: str, d
         turn = (-1.0 if sense == "clockwise" else 1.0) / arm  # the springing point moves at unit speed
         right = SupportMotion(np.zeros(2), turn, pivot, springing)
     left = _mirror(right)
-    return Movement(left=left if moving_support in ("left", "both") else None,
-                    right=right if moving_support in ("right", "both") else None)
+    return Movement(
+        left=left if moving_support in ("left", "both") else None,
+        right=right if moving_support in ("right", "both") else None,
+    )

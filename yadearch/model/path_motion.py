@@ -34,10 +34,13 @@ class PathMotion:
         segments = np.linalg.norm(np.diff(vertices, axis=0), axis=1)
         short = np.flatnonzero(segments < MIN_SEGMENT_M)
         if short.size:
-            raise ValueError(f"path row {short[0] + 1} does not move the springing point from the previous "
-                             "row (a turn about it alone has no path length; use support_motion 'rotation')")
-        return cls(springing, vertices, np.concatenate([[0.0], rows[:, 2]]),
-                   np.concatenate([[0.0], np.cumsum(segments)]))
+            raise ValueError(
+                f"path row {short[0] + 1} does not move the springing point from the previous "
+                "row (a turn about it alone has no path length; use support_motion 'rotation')"
+            )
+        return cls(
+            springing, vertices, np.concatenate([[0.0], rows[:, 2]]), np.concatenate([[0.0], np.cumsum(segments)])
+        )
 
     def _segment(self, lam: float) -> int:
         return int(np.clip(np.searchsorted(self.lengths, lam, side="right") - 1, 0, len(self.lengths) - 2))

@@ -17,8 +17,15 @@ from yadearch.model.joint_law import JointLaw, JointTable, joint_forces
 PROBE_M = 1e-9  # trial displacement of the central differences (m): far below any overlap of interest
 
 
-def tangent_stiffness(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.ndarray,
-                      shear: np.ndarray, free: np.ndarray, length: float) -> np.ndarray:
+def tangent_stiffness(
+    table: JointTable,
+    law: JointLaw,
+    pos: np.ndarray,
+    rot: np.ndarray,
+    shear: np.ndarray,
+    free: np.ndarray,
+    length: float,
+) -> np.ndarray:
     """K (3 n_free square, N/m) of the `free` blocks at `pos` (n_blocks, 2), `rot` (rad) with the
     joints' shear forces `shear`; each block's degrees of freedom are x, y and its rotation times
     `length` (m), so that every entry is a stiffness in N/m."""
@@ -33,8 +40,18 @@ def tangent_stiffness(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np
     return stiffness
 
 
-def _free_forces(table: JointTable, law: JointLaw, pos: np.ndarray, rot: np.ndarray, shear: np.ndarray,
-                 blocks: np.ndarray, block: int, dof: int, step: float, length: float) -> np.ndarray:
+def _free_forces(
+    table: JointTable,
+    law: JointLaw,
+    pos: np.ndarray,
+    rot: np.ndarray,
+    shear: np.ndarray,
+    blocks: np.ndarray,
+    block: int,
+    dof: int,
+    step: float,
+    length: float,
+) -> np.ndarray:
     """The joint forces and torques / `length` on the free blocks with one degree of freedom moved."""
     moved_pos, moved_rot = pos.copy(), rot.copy()
     vel, ang_vel = np.zeros_like(pos), np.zeros_like(rot)

@@ -28,13 +28,14 @@ def check_format(fmt: str) -> None:
     if fmt not in FORMATS:
         raise CaseError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
     if fmt == "mp4" and not writers.is_available("ffmpeg"):
-        raise YadearchError("MP4 needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg); "
-                            "or write a GIF with --format gif")
+        raise YadearchError(
+            "MP4 needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg); "
+            "or write a GIF with --format gif"
+        )
 
 
 @house_style
-def animate_run(run: RunFolder, analysis: RunAnalysis, out: Path, fmt: str = "mp4",
-                fps: int = FRAMES_PER_S) -> Path:
+def animate_run(run: RunFolder, analysis: RunAnalysis, out: Path, fmt: str = "mp4", fps: int = FRAMES_PER_S) -> Path:
     """Write the run's movie to `out` (atomically): every state of the loading path, self-weight to
     collapse, then the collapse held for HOLD_COLLAPSE_S; returns `out`."""
     check_format(fmt)
@@ -47,7 +48,8 @@ def animate_run(run: RunFolder, analysis: RunAnalysis, out: Path, fmt: str = "mp
     fig = new_figure(height_cm=FRAME_CM[1], width_cm=FRAME_CM[0])
     ax = fig.add_subplot()
     title = f"{run.summary.name or run.path.name}: {run.summary.engine} engine" + (
-        f", du = {run.summary.du_mm:.2f} mm" if run.summary.du_mm is not None else ", no collapse")
+        f", du = {run.summary.du_mm:.2f} mm" if run.summary.du_mm is not None else ", no collapse"
+    )
 
     def draw(index: int) -> list:
         ax.clear()
@@ -57,6 +59,7 @@ def animate_run(run: RunFolder, analysis: RunAnalysis, out: Path, fmt: str = "mp
 
     movie = FuncAnimation(fig, draw, frames=frames, blit=False)
     writer = FFMpegWriter(fps=fps) if fmt == "mp4" else PillowWriter(fps=fps)
+
     def save(temporary: Path) -> None:
         named = temporary.with_name(f"{temporary.stem}.{fmt}")  # the writers pick the container by suffix
         try:

@@ -34,20 +34,36 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") 
         groups = list(table.groupby("set", sort=False))
         for k, (name, runs) in enumerate(groups):
             runs = runs.sort_values("direction_deg")
-            polar.plot(np.radians(runs["direction_deg"].to_numpy(dtype=float)), runs["du_mm"], marker="o",
-                       ms=3, lw=1, color=f"C{k}", label=f"{name} ({engine})")
+            polar.plot(
+                np.radians(runs["direction_deg"].to_numpy(dtype=float)),
+                runs["du_mm"],
+                marker="o",
+                ms=3,
+                lw=1,
+                color=f"C{k}",
+                label=f"{name} ({engine})",
+            )
             offset = (k - (len(groups) - 1) / 2) * SET_OFFSET_DEG
             _hinge_marks(hinges, runs["direction_deg"], runs["hinges"], f"C{k}", offset)
         rigid = table.drop_duplicates("direction_deg").sort_values("direction_deg")
         if rigid["du_rigid_mm"].notna().any():
-            polar.plot(np.radians(rigid["direction_deg"].to_numpy(dtype=float)), rigid["du_rigid_mm"],
-                       label="rigid blocks", **RIGID_STYLE)
-            _hinge_marks(hinges, rigid["direction_deg"], rigid["rigid_hinges"], RIGID_COLOR,
-                         len(groups) / 2 * SET_OFFSET_DEG)
+            polar.plot(
+                np.radians(rigid["direction_deg"].to_numpy(dtype=float)),
+                rigid["du_rigid_mm"],
+                label="rigid blocks",
+                **RIGID_STYLE,
+            )
+            _hinge_marks(
+                hinges, rigid["direction_deg"], rigid["rigid_hinges"], RIGID_COLOR, len(groups) / 2 * SET_OFFSET_DEG
+            )
         other = rigid[rigid["du_rigid_other_mm"].notna()]
         if not other.empty:
-            polar.plot(np.radians(other["direction_deg"].to_numpy(dtype=float)), other["du_rigid_other_mm"],
-                       label="rigid, other branch", **OTHER_BRANCH_STYLE)
+            polar.plot(
+                np.radians(other["direction_deg"].to_numpy(dtype=float)),
+                other["du_rigid_other_mm"],
+                label="rigid, other branch",
+                **OTHER_BRANCH_STYLE,
+            )
         _half_plane(polar, legend_columns=3)
         hinges.set_xlabel("direction of the support movement (deg from +x)")
         hinges.set_ylabel("hinge interface (o intrados, s extrados)")
@@ -57,6 +73,8 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") 
 
 
 RATIO_CEILING = 1.5  # du / du_rigid above this (a rigid march locked early) is cut off the panel
+
+
 def _half_plane(polar, legend_columns: int) -> None:
     """A polar axis over the directions below the horizontal, du rings, title and legend under it."""
     polar.set_thetamin(-180)
@@ -76,8 +94,15 @@ def _hinge_marks(ax, directions: pd.Series, hinge_labels: pd.Series, color: str,
     for direction, labels in zip(directions, hinge_labels.fillna("")):
         for label in str(labels).split():
             side = label[-1]
-            ax.plot(direction + offset_deg, int(label[:-1]), SIDE_MARKERS.get(side, "x"), ms=2.5, color=color,
-                    mfc="none" if side == "E" else color, mew=0.7)
+            ax.plot(
+                direction + offset_deg,
+                int(label[:-1]),
+                SIDE_MARKERS.get(side, "x"),
+                ms=2.5,
+                color=color,
+                mfc="none" if side == "E" else color,
+                mew=0.7,
+            )
 
 
 def reaction_curves_figure(curves: dict[str, dict[float, pd.DataFrame]], stem: Path) -> list[Path]:
@@ -90,8 +115,13 @@ def reaction_curves_figure(curves: dict[str, dict[float, pd.DataFrame]], stem: P
         colormap = matplotlib.colormaps["viridis"]
         for ax, (name, by_direction) in zip(axes, curves.items()):
             for direction, curve in sorted(by_direction.items()):
-                ax.plot(curve["delta_mm"], curve["force_N"], lw=0.9,
-                        color=colormap((direction + 180.0) / 180.0), label=f"{direction:g}°")
+                ax.plot(
+                    curve["delta_mm"],
+                    curve["force_N"],
+                    lw=0.9,
+                    color=colormap((direction + 180.0) / 180.0),
+                    label=f"{direction:g}°",
+                )
             ax.set_title(name)
             ax.set_xlabel("support displacement along its path (mm)")
             ax.axhline(0.0, color="0.6", lw=0.5)
@@ -115,13 +145,32 @@ def stiffness_figure(table: pd.DataFrame, dem: pd.DataFrame, stem: Path) -> list
             polar.plot(angle, runs["du_mm"], label=label, **style)
             ratio.plot(runs["direction_deg"], runs["du_mm"] / runs["du_rigid_mm"], **style)
         rigid = table.drop_duplicates("direction_deg").sort_values("direction_deg")
-        polar.plot(np.radians(rigid["direction_deg"].to_numpy(dtype=float)), rigid["du_rigid_mm"], label="rigid blocks",
-                   **RIGID_STYLE)
+        polar.plot(
+            np.radians(rigid["direction_deg"].to_numpy(dtype=float)),
+            rigid["du_rigid_mm"],
+            label="rigid blocks",
+            **RIGID_STYLE,
+        )
         for k, (label, points) in enumerate(dem.groupby("label", sort=False)):
-            polar.plot(np.radians(points["direction_deg"].to_numpy(dtype=float)), points["du_mm"], "o", mfc="none",
-                       mec=f"C{k}", ms=4, mew=0.8, label=label)
-            ratio.plot(points["direction_deg"], points["du_mm"] / points["du_rigid_mm"], "o", mfc="none", mec=f"C{k}",
-                       ms=4, mew=0.8)
+            polar.plot(
+                np.radians(points["direction_deg"].to_numpy(dtype=float)),
+                points["du_mm"],
+                "o",
+                mfc="none",
+                mec=f"C{k}",
+                ms=4,
+                mew=0.8,
+                label=label,
+            )
+            ratio.plot(
+                points["direction_deg"],
+                points["du_mm"] / points["du_rigid_mm"],
+                "o",
+                mfc="none",
+                mec=f"C{k}",
+                ms=4,
+                mew=0.8,
+            )
         _half_plane(polar, legend_columns=2)
         ratio.axhline(1.0, color=RIGID_COLOR, lw=0.6, ls="--")
         ratio.set_ylim(0.0, RATIO_CEILING)  # where the rigid march locks early the ratio leaves the frame

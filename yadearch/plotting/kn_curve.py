@@ -17,8 +17,9 @@ from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 FIGURE_HEIGHT_IN = 4.6
 
 
-def kn_curve_figure(static: pd.DataFrame, dem: pd.DataFrame | None, limits: pd.DataFrame, du_rigid_mm: float,
-                    stem: Path) -> tuple[Path, Path]:
+def kn_curve_figure(
+    static: pd.DataFrame, dem: pd.DataFrame | None, limits: pd.DataFrame, du_rigid_mm: float, stem: Path
+) -> tuple[Path, Path]:
     """STEM.pdf and .png from the static runs (a campaign's results), the DEM's sweep results (or
     None), the compliant march's du (`limits`: kn, compliant_du_mm) and the rigid limit."""
     runs = static[(static["status"] == "done") & (static["collapsed"] == True)].sort_values("kn_N_per_mm3")  # noqa: E712
@@ -28,15 +29,19 @@ def kn_curve_figure(static: pd.DataFrame, dem: pd.DataFrame | None, limits: pd.D
         ax.plot(runs["kn_N_per_mm3"], runs["du_mm"], "-", color="C0", lw=1.0, label="static engine")
         if dem is not None:
             done = dem[dem["status"] == "done"]
-            ax.plot(done["kn_N_per_mm3"], done["du_mm"], "o", mfc="none", mec="k", ms=3.5, mew=0.7,
-                    label="DEM (YADE)")
+            ax.plot(done["kn_N_per_mm3"], done["du_mm"], "o", mfc="none", mec="k", ms=3.5, mew=0.7, label="DEM (YADE)")
         if not limits.empty:
-            ax.plot(limits["kn_N_per_mm3"], limits["compliant_du_mm"], "^", color="C2", ms=3.5,
-                    label="compliant march")
+            ax.plot(limits["kn_N_per_mm3"], limits["compliant_du_mm"], "^", color="C2", ms=3.5, label="compliant march")
         ax.axhline(du_rigid_mm, color="0.4", ls="--", lw=0.8, label=f"rigid blocks ({du_rigid_mm:.1f} mm)")
         for name, ref in reference.SETS.items():
-            ax.plot(ref["kn_N_per_mm3"], ref["numerical"]["du_mm"], "*", color="C3", ms=7,
-                    label="paper FE (set 1, set 2)" if name == "set1" else None)
+            ax.plot(
+                ref["kn_N_per_mm3"],
+                ref["numerical"]["du_mm"],
+                "*",
+                color="C3",
+                ms=7,
+                label="paper FE (set 1, set 2)" if name == "set1" else None,
+            )
         ax.set_ylabel(r"collapse displacement $d_u$ (mm)")
         ax.set_ylim(bottom=0.0)
         ax.legend(loc="lower right")

@@ -17,8 +17,7 @@ from yadearch.model.hinges import PAPER_LABELS
 from yadearch.plotting.run_figures import save_figure
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 
-HINGE_SIDES = {"A": "intrados", "B": "extrados", "C": "extrados, moving support",
-               "D": "extrados, fixed support"}
+HINGE_SIDES = {"A": "intrados", "B": "extrados", "C": "extrados, moving support", "D": "extrados, fixed support"}
 BINS = 20  # histogram bins at most
 PANELS_PER_ROW = 3  # du against amplitude: panels side by side
 PANEL_HEIGHT_IN = 2.4
@@ -31,8 +30,9 @@ def _done(table: pd.DataFrame) -> pd.DataFrame:
     return done
 
 
-def du_distribution_figure(table: pd.DataFrame, stem: Path, reference_du_mm: float | None = None,
-                           reference_label: str = "perfect arch") -> list[Path]:
+def du_distribution_figure(
+    table: pd.DataFrame, stem: Path, reference_du_mm: float | None = None, reference_label: str = "perfect arch"
+) -> list[Path]:
     """Histogram and empirical CDF of the samples' du with the median and the band marked (and a
     reference du, e.g. the perfect arch's, when given): STEM.pdf and STEM.png."""
     du = _done(table)["du_mm"].to_numpy(dtype=float)
@@ -47,12 +47,12 @@ def du_distribution_figure(table: pd.DataFrame, stem: Path, reference_du_mm: flo
         ax_cdf.set_ylabel("share of samples with du below")
         ax_cdf.set_xlabel("collapse displacement du (mm)")
         for ax in (ax_hist, ax_cdf):
-            ax.axvspan(stats["low"], stats["high"], color="C0", alpha=0.12,
-                       label=f"{BAND[0]:.0%}-{BAND[1]:.0%} band")
+            ax.axvspan(stats["low"], stats["high"], color="C0", alpha=0.12, label=f"{BAND[0]:.0%}-{BAND[1]:.0%} band")
             ax.axvline(stats["median"], color="C3", lw=1, label=f"median {stats['median']:.1f} mm")
             if reference_du_mm is not None:
-                ax.axvline(reference_du_mm, color="k", ls="--", lw=0.8,
-                           label=f"{reference_label} {reference_du_mm:.1f} mm")
+                ax.axvline(
+                    reference_du_mm, color="k", ls="--", lw=0.8, label=f"{reference_label} {reference_du_mm:.1f} mm"
+                )
         ax_hist.legend(loc="upper left", frameon=False)
         ax_hist.set_title(f"{du.size} samples", fontsize=8)
         return list(save_figure(fig, stem))
@@ -66,8 +66,7 @@ def hinge_frequency_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
         ax = fig.subplots()
         for k, label in enumerate(PAPER_LABELS):
             rows = frequencies[frequencies["hinge"] == label]
-            ax.bar(rows["interface"], rows["share"], width=0.8, color=f"C{k}",
-                   label=f"{label} ({HINGE_SIDES[label]})")
+            ax.bar(rows["interface"], rows["share"], width=0.8, color=f"C{k}", label=f"{label} ({HINGE_SIDES[label]})")
         ax.set_xlabel("interface (1 = left springing)")
         ax.set_ylabel("share of samples")
         ax.set_ylim(0, 1.3)
@@ -83,8 +82,14 @@ def _draw_du_against(ax, done: pd.DataFrame, column: str, perfect_du_mm: float |
     start = [] if perfect_du_mm is None else [perfect_du_mm]
     x = ([0.0] if start else []) + levels
     ax.plot(done[column], done["du_mm"], ".", color="0.6", ms=2.5, label="samples")
-    ax.fill_between(x, start + [s["low"] for s in stats], start + [s["high"] for s in stats], color="C0",
-                    alpha=0.2, label=f"{BAND[0]:.0%}-{BAND[1]:.0%} band")
+    ax.fill_between(
+        x,
+        start + [s["low"] for s in stats],
+        start + [s["high"] for s in stats],
+        color="C0",
+        alpha=0.2,
+        label=f"{BAND[0]:.0%}-{BAND[1]:.0%} band",
+    )
     ax.plot(x, start + [s["median"] for s in stats], "o-", color="C0", ms=3.5, lw=1, label="median")
 
 
@@ -110,8 +115,9 @@ def campaign_figures(table: pd.DataFrame, folder: Path, level_columns: list[str]
     return paths
 
 
-def amplitude_panels_figure(panels: list[tuple[pd.DataFrame, str, str, float]], stem: Path,
-                            target_du_mm: float, target_label: str) -> list[Path]:
+def amplitude_panels_figure(
+    panels: list[tuple[pd.DataFrame, str, str, float]], stem: Path, target_du_mm: float, target_label: str
+) -> list[Path]:
     """One panel per imperfection kind (table, amplitude column, axis label, du of its perfect arch):
     median du and band against the amplitude from the perfect arch at 0, with the target du dashed:
     STEM.pdf, .png."""
@@ -125,7 +131,7 @@ def amplitude_panels_figure(panels: list[tuple[pd.DataFrame, str, str, float]], 
             _draw_du_against(ax, _done(table), column, perfect_du_mm)
             ax.axhline(target_du_mm, color="C3", ls="--", lw=0.8, label=target_label)
             ax.set_xlabel(label)
-        for ax in axes[len(panels):]:
+        for ax in axes[len(panels) :]:
             ax.set_visible(False)
         for ax in grid[:, 0]:
             ax.set_ylabel("collapse displacement du (mm)")

@@ -29,10 +29,20 @@ CM = 1 / 2.54  # inches
 COLUMN_CM = 8.5
 PNG_DPI = 300
 STYLE = {
-    "font.size": 8, "axes.labelsize": 8, "axes.titlesize": 8, "legend.fontsize": 7,
-    "xtick.labelsize": 7, "ytick.labelsize": 7, "lines.linewidth": 1.0, "axes.linewidth": 0.6,
-    "xtick.major.width": 0.6, "ytick.major.width": 0.6, "legend.frameon": False,
-    "pdf.fonttype": 42, "ps.fonttype": 42, "savefig.dpi": PNG_DPI,
+    "font.size": 8,
+    "axes.labelsize": 8,
+    "axes.titlesize": 8,
+    "legend.fontsize": 7,
+    "xtick.labelsize": 7,
+    "ytick.labelsize": 7,
+    "lines.linewidth": 1.0,
+    "axes.linewidth": 0.6,
+    "xtick.major.width": 0.6,
+    "ytick.major.width": 0.6,
+    "legend.frameon": False,
+    "pdf.fonttype": 42,
+    "ps.fonttype": 42,
+    "savefig.dpi": PNG_DPI,
 }
 HINGE_COLOURS = ["#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9"]  # Okabe-Ito
 LEFT_COLOUR, RIGHT_COLOUR = "#0072B2", "#D55E00"
@@ -73,6 +83,7 @@ def house_style(draw):
     def wrapper(*args, **kwargs):
         with matplotlib.rc_context(STYLE):
             return draw(*args, **kwargs)
+
     wrapper.__name__, wrapper.__doc__ = draw.__name__, draw.__doc__
     return wrapper
 
@@ -95,8 +106,7 @@ def _against_delta(run: RunFolder, height_cm: float) -> tuple[pd.DataFrame, np.n
 def _mark_du(ax, du_mm: float | None, legend: bool = False) -> None:
     """A dotted vertical line at du, named in the legend of the axes that has one."""
     if du_mm is not None:
-        ax.axvline(du_mm, color="0.4", lw=0.7, ls=":", zorder=0,
-                   label=rf"$d_u$ = {du_mm:.2f} mm" if legend else None)
+        ax.axvline(du_mm, color="0.4", lw=0.7, ls=":", zorder=0, label=rf"$d_u$ = {du_mm:.2f} mm" if legend else None)
 
 
 def _plot_until_du(ax, delta: np.ndarray, value: np.ndarray, du_mm: float | None, **style) -> None:
@@ -113,8 +123,13 @@ def _plot_until_du(ax, delta: np.ndarray, value: np.ndarray, du_mm: float | None
 
 
 @house_style
-def collapse_figure(run: RunFolder, analysis: RunAnalysis, ax: Axes | None = None, width_cm: float = COLUMN_CM,
-                    snapshot: str = "collapse") -> Figure:
+def collapse_figure(
+    run: RunFolder,
+    analysis: RunAnalysis,
+    ax: Axes | None = None,
+    width_cm: float = COLUMN_CM,
+    snapshot: str = "collapse",
+) -> Figure:
     """The arch at collapse drawn to scale over its undeformed outline, hinges marked and labelled
     (label, pivot side), the counterpart of the paper's Fig. 9: into `ax`, or a new figure sized to
     the arch at `width_cm`; returns the figure."""
@@ -134,10 +149,14 @@ def collapse_figure(run: RunFolder, analysis: RunAnalysis, ax: Axes | None = Non
     n_blocks = len(geometry.blocks)
     for b, (vertices, moved) in enumerate(zip(geometry.blocks, outlines)):
         support = b in (0, n_blocks - 1)
-        ax.add_patch(Polygon(vertices[: len(vertices) // 2, :2] * 1e3, closed=True, fill=False,
-                             ec="0.65", lw=0.4, ls="--", zorder=1))
-        ax.add_patch(Polygon(moved * 1e3, closed=True, fc="0.45" if support else "#EADDCA",
-                             ec="0.15", lw=0.3, zorder=2))
+        ax.add_patch(
+            Polygon(
+                vertices[: len(vertices) // 2, :2] * 1e3, closed=True, fill=False, ec="0.65", lw=0.4, ls="--", zorder=1
+            )
+        )
+        ax.add_patch(
+            Polygon(moved * 1e3, closed=True, fc="0.45" if support else "#EADDCA", ec="0.15", lw=0.3, zorder=2)
+        )
     pivots = {side: joint_points(geometry, state, side) * 1e3 for side in ("I", "E")}
     centre = np.array([0.0, 0.0])
     for k, track in enumerate(analysis.tracks):
@@ -146,12 +165,21 @@ def collapse_figure(run: RunFolder, analysis: RunAnalysis, ax: Axes | None = Non
         outward = (point - centre) / np.linalg.norm(point - centre)
         direction = outward if track.side == "E" else -outward
         ax.plot(*point, "o", ms=4, mfc=colour, mec="white", mew=0.5, zorder=4)
-        ax.annotate(f"{track.paper_label} ({track.interface}{track.side})", point, xytext=direction * 5,
-                    textcoords="offset points", ha="left" if direction[0] > 0 else "right",
-                    va="bottom" if direction[1] > 0 else "top", color=colour, fontweight="bold", zorder=5)
+        ax.annotate(
+            f"{track.paper_label} ({track.interface}{track.side})",
+            point,
+            xytext=direction * 5,
+            textcoords="offset points",
+            ha="left" if direction[0] > 0 else "right",
+            va="bottom" if direction[1] > 0 else "top",
+            color=colour,
+            fontweight="bold",
+            zorder=5,
+        )
     ax.plot([], [], color="0.65", lw=0.6, ls="--", label="undeformed")
-    ax.add_patch(Polygon(np.zeros((3, 2)), fc="#EADDCA", ec="0.15", lw=0.3,
-                         label=rf"$\delta$ = {state['delta_mm']:.2f} mm"))
+    ax.add_patch(
+        Polygon(np.zeros((3, 2)), fc="#EADDCA", ec="0.15", lw=0.3, label=rf"$\delta$ = {state['delta_mm']:.2f} mm")
+    )
     ax.legend(loc="lower center", ncols=1, handlelength=1.5)  # inside the arch, under the crown
     ax.set_aspect("equal")
     ax.set_xlim(*xlim)
@@ -162,8 +190,9 @@ def collapse_figure(run: RunFolder, analysis: RunAnalysis, ax: Axes | None = Non
 
 
 @house_style
-def plot_collapse(run: RunFolder, analysis: RunAnalysis, stem: Path, width_cm: float = COLUMN_CM,
-                  snapshot: str = "collapse") -> tuple[Path, Path]:
+def plot_collapse(
+    run: RunFolder, analysis: RunAnalysis, stem: Path, width_cm: float = COLUMN_CM, snapshot: str = "collapse"
+) -> tuple[Path, Path]:
     """`collapse_figure` written as STEM.pdf and STEM.png."""
     return save_figure(collapse_figure(run, analysis, width_cm=width_cm, snapshot=snapshot), stem)
 
@@ -175,8 +204,15 @@ def plot_reactions(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[P
     top, bottom = fig.subplots(2, 1, sharex=True)
     for ax, component, name in ((top, "Ry", "vertical"), (bottom, "Rx", "horizontal")):
         for support, colour, ls in (("left", LEFT_COLOUR, "-"), ("right", RIGHT_COLOUR, "--")):
-            _plot_until_du(ax, delta, path[f"{support}_{component}_N"].to_numpy(), analysis.du_mm,
-                           color=colour, ls=ls, label=f"{support} support")
+            _plot_until_du(
+                ax,
+                delta,
+                path[f"{support}_{component}_N"].to_numpy(),
+                analysis.du_mm,
+                color=colour,
+                ls=ls,
+                label=f"{support} support",
+            )
         _mark_du(ax, analysis.du_mm, legend=ax is top)
         ax.set_ylabel(f"{name} reaction (N)")
     top.legend(loc="best")
@@ -215,10 +251,10 @@ def plot_crown_displacement(run: RunFolder, analysis: RunAnalysis, stem: Path) -
     """Horizontal and vertical displacement of the crown voussoir against the settlement."""
     path, delta, fig = _against_delta(run, height_cm=5.5)
     ax = fig.add_subplot()
-    _plot_until_du(ax, delta, path["crown_dx_mm"].to_numpy(), analysis.du_mm, color=LEFT_COLOUR,
-                   label="horizontal")
-    _plot_until_du(ax, delta, path["crown_dy_mm"].to_numpy(), analysis.du_mm, color=RIGHT_COLOUR,
-                   ls="--", label="vertical")
+    _plot_until_du(ax, delta, path["crown_dx_mm"].to_numpy(), analysis.du_mm, color=LEFT_COLOUR, label="horizontal")
+    _plot_until_du(
+        ax, delta, path["crown_dy_mm"].to_numpy(), analysis.du_mm, color=RIGHT_COLOUR, ls="--", label="vertical"
+    )
     _mark_du(ax, analysis.du_mm, legend=True)
     ax.legend(loc="lower left")
     ax.set_xlabel(delta_label(run.case))

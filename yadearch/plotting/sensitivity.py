@@ -27,10 +27,22 @@ def tornado_figure(tornado: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
     y = np.arange(len(rows))
     with matplotlib.rc_context(SWEEP_STYLE):
         ax = _bar_axes(len(rows))
-        ax.barh(y + BAR_HEIGHT / 2, rows["du_low_mm"] - base, BAR_HEIGHT, left=base, color="C0",
-                label="low end of the range")
-        ax.barh(y - BAR_HEIGHT / 2, rows["du_high_mm"] - base, BAR_HEIGHT, left=base, color="C1",
-                label="high end of the range")
+        ax.barh(
+            y + BAR_HEIGHT / 2,
+            rows["du_low_mm"] - base,
+            BAR_HEIGHT,
+            left=base,
+            color="C0",
+            label="low end of the range",
+        )
+        ax.barh(
+            y - BAR_HEIGHT / 2,
+            rows["du_high_mm"] - base,
+            BAR_HEIGHT,
+            left=base,
+            color="C1",
+            label="high end of the range",
+        )
         ax.axvline(base, color="k", lw=0.8)
         ax.set_yticks(y, [f"{r.label} [{r.low:g}, {r.high:g}]" for r in rows.itertuples()])
         ax.set_xlabel(rf"collapse displacement $d_u$ (mm); base case {base:.1f} mm")
@@ -46,10 +58,24 @@ def indices_figure(indices: pd.DataFrame, labels: dict[str, str], stem: Path) ->
     y = np.arange(len(rows))
     with matplotlib.rc_context(SWEEP_STYLE):
         ax = _bar_axes(len(rows))
-        ax.barh(y + BAR_HEIGHT / 2, rows["S1"], BAR_HEIGHT, xerr=rows["S1_conf"], color="C0", capsize=1.5,
-                label="first order $S_1$")
-        ax.barh(y - BAR_HEIGHT / 2, rows["ST"], BAR_HEIGHT, xerr=rows["ST_conf"], color="C1", capsize=1.5,
-                label="total $S_T$")
+        ax.barh(
+            y + BAR_HEIGHT / 2,
+            rows["S1"],
+            BAR_HEIGHT,
+            xerr=rows["S1_conf"],
+            color="C0",
+            capsize=1.5,
+            label="first order $S_1$",
+        )
+        ax.barh(
+            y - BAR_HEIGHT / 2,
+            rows["ST"],
+            BAR_HEIGHT,
+            xerr=rows["ST_conf"],
+            color="C1",
+            capsize=1.5,
+            label="total $S_T$",
+        )
         ax.set_yticks(y, [labels.get(name, name) for name in rows["factor"]])
         ax.set_xlabel(f"Sobol index of $d_u$ ({int(rows['used_points'].iloc[0])} base points)")
         ax.axvline(0.0, color="k", lw=0.6)

@@ -48,8 +48,10 @@ class StateView:
 def run_states(run: RunFolder) -> RunStates:
     """The run's states; RunFolderError in one line for a run written before they were recorded."""
     if run.states is None:
-        raise RunFolderError(f"{run.path} has no states.npz (written before runs kept every state): run the "
-                             "case again to animate or export it")
+        raise RunFolderError(
+            f"{run.path} has no states.npz (written before runs kept every state): run the "
+            "case again to animate or export it"
+        )
     return run.states
 
 
@@ -62,14 +64,17 @@ def state_view(run: RunFolder, geometry: ArchGeometry, analysis: RunAnalysis, in
     rows = state_joints(run, geometry, index)
     ends = {side: joint_points(geometry, snapshot, side) * MM_PER_M for side in ("I", "E")}
     letters = {(k, t.side): t.paper_label for t in analysis.tracks for k in t.final.interfaces}
-    hinges = [(h.interface, h.side, ends[h.side][h.interface - 1], letters.get((h.interface, h.side), ""))
-              for h in state_hinges(run, geometry, rows)]
+    hinges = [
+        (h.interface, h.side, ends[h.side][h.interface - 1], letters.get((h.interface, h.side), ""))
+        for h in state_hinges(run, geometry, rows)
+    ]
     loaded = (rows["normal_force_N"].to_numpy() > 0) & np.isfinite(rows["force_position"].to_numpy())
     where = rows["force_position"].to_numpy()[:, None]
     thrust = (ends["I"] + where * (ends["E"] - ends["I"]))[loaded]
     same_step = run.series[run.series["step"] == states.step[index]]
-    reaction = None if same_step.empty else (float(same_step["right_Rx_N"].iloc[-1]),
-                                             float(same_step["right_Ry_N"].iloc[-1]))
+    reaction = (
+        None if same_step.empty else (float(same_step["right_Rx_N"].iloc[-1]), float(same_step["right_Ry_N"].iloc[-1]))
+    )
     outlines = [o * MM_PER_M for o in snapshot_outlines(geometry, snapshot)]
     return StateView(outlines, hinges, thrust, float(states.delta_mm[index]), str(states.stage[index]), reaction)
 
@@ -78,8 +83,10 @@ def drawing_limits(geometry: ArchGeometry) -> tuple[tuple[float, float], tuple[f
     """Axis limits (mm) that hold the arch and its supports with a margin: one frame for every state."""
     xy = np.vstack([b[: len(b) // 2, :2] for b in geometry.blocks]) * MM_PER_M
     span = float(np.ptp(xy[:, 0]))
-    return ((xy[:, 0].min() - MARGIN * span, xy[:, 0].max() + MARGIN * span),
-            (xy[:, 1].min() - 3 * MARGIN * span, xy[:, 1].max() + MARGIN * span))
+    return (
+        (xy[:, 0].min() - MARGIN * span, xy[:, 0].max() + MARGIN * span),
+        (xy[:, 1].min() - 3 * MARGIN * span, xy[:, 1].max() + MARGIN * span),
+    )
 
 
 def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple, corner: bool = True) -> None:
@@ -87,17 +94,37 @@ def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple,
     the reaction in the lower left corner (`corner`)."""
     last = len(view.outlines) - 1
     for b, (vertices, moved) in enumerate(zip(geometry.blocks, view.outlines)):
-        ax.add_patch(Polygon(vertices[: len(vertices) // 2, :2] * MM_PER_M, closed=True, fill=False, ec="0.7",
-                             lw=0.4, ls="--", zorder=1))
-        ax.add_patch(Polygon(moved, closed=True, fc=SUPPORT_COLOUR if b in (0, last) else BLOCK_COLOUR, ec="0.15",
-                             lw=0.3, zorder=2))
+        ax.add_patch(
+            Polygon(
+                vertices[: len(vertices) // 2, :2] * MM_PER_M,
+                closed=True,
+                fill=False,
+                ec="0.7",
+                lw=0.4,
+                ls="--",
+                zorder=1,
+            )
+        )
+        ax.add_patch(
+            Polygon(
+                moved, closed=True, fc=SUPPORT_COLOUR if b in (0, last) else BLOCK_COLOUR, ec="0.15", lw=0.3, zorder=2
+            )
+        )
     if len(view.thrust):
         ax.plot(view.thrust[:, 0], view.thrust[:, 1], "-", color=THRUST_COLOUR, lw=0.8, zorder=3)
     for interface, side, point, letter in view.hinges:
         colour = HINGE_COLOURS[PAPER_LABELS.index(letter)] if letter else UNLABELLED_COLOUR
         ax.plot(*point, "o", ms=4, mfc=colour, mec="white", mew=0.5, zorder=4)
-        ax.annotate(f"{letter} {interface}{side}".strip(), point, xytext=(0, 6 if side == "E" else -9),
-                    textcoords="offset points", ha="center", fontsize=6, color=colour, zorder=5)
+        ax.annotate(
+            f"{letter} {interface}{side}".strip(),
+            point,
+            xytext=(0, 6 if side == "E" else -9),
+            textcoords="offset points",
+            ha="center",
+            fontsize=6,
+            color=colour,
+            zorder=5,
+        )
     if corner:
         text = f"δ = {view.delta_mm:.2f} mm ({view.stage})"
         if view.reaction_N is not None:
@@ -144,14 +171,17 @@ def state_joints(run: RunFolder, geometry: ArchGeometry, index: int) -> pd.DataF
     RunFolderError in one line if the two files do not match."""
     states, n_joints = run_states(run), len(geometry.joints)
     if len(run.joints) != len(states) * n_joints:
-        raise RunFolderError(f"{run.path}: joints.csv has {len(run.joints)} rows for {len(states)} states of "
-                             f"{n_joints} joints; run the case again")
-    return run.joints.iloc[index * n_joints:(index + 1) * n_joints]
+        raise RunFolderError(
+            f"{run.path}: joints.csv has {len(run.joints)} rows for {len(states)} states of "
+            f"{n_joints} joints; run the case again"
+        )
+    return run.joints.iloc[index * n_joints : (index + 1) * n_joints]
 
 
 def state_hinges(run: RunFolder, geometry: ArchGeometry, rows: pd.DataFrame) -> list[Hinge]:
     """The hinges of one state's joints.csv `rows` as the run finds them: adjacent joints turning the
     same way beyond the run's threshold, each at its peak (`model.hinges.hinges_at`)."""
-    rotation = hinge_rotation(rows["opening_intrados_mm"].to_numpy(), rows["opening_extrados_mm"].to_numpy(),
-                              geometry.thickness * MM_PER_M)
+    rotation = hinge_rotation(
+        rows["opening_intrados_mm"].to_numpy(), rows["opening_extrados_mm"].to_numpy(), geometry.thickness * MM_PER_M
+    )
     return hinges_at(rotation, default_thresholds(run.case).rotation_mrad * 1e-3)

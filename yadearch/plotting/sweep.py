@@ -17,16 +17,34 @@ from yadearch.case import reference
 from yadearch.plotting.run_figures import save_figure
 
 COLUMN_WIDTH_IN = 3.5  # one journal column
-HINGE_STYLE = {"hinge_A": ("o", "A (intrados)"), "hinge_B": ("s", "B (extrados)"),
-               "hinge_C": ("^", "C (right support)")}
+HINGE_STYLE = {
+    "hinge_A": ("o", "A (intrados)"),
+    "hinge_B": ("s", "B (extrados)"),
+    "hinge_C": ("^", "C (right support)"),
+}
 LEGEND_HEADROOM = 1.45  # hinge panel's y range as a multiple of the last interface
 PAPER_MECHANISM = "E-I-E-E"  # hinges D, A, B, C from left to right (paper: collapse when D opens)
 DECADE = 10.0
-SWEEP_STYLE = {"font.size": 8, "axes.labelsize": 8, "legend.fontsize": 6.5, "xtick.labelsize": 7,
-               "ytick.labelsize": 7}
-RESULT_COLUMNS = {"du_mm", "collapsed", "hinges", "mechanism", "hinge_A", "hinge_B", "hinge_C", "hinge_D",
-                  "steps", "wall_s", "max_slip_mm", "max_friction_use", "friction_interface", "status",
-                  "reason", "folder", "run"}
+SWEEP_STYLE = {"font.size": 8, "axes.labelsize": 8, "legend.fontsize": 6.5, "xtick.labelsize": 7, "ytick.labelsize": 7}
+RESULT_COLUMNS = {
+    "du_mm",
+    "collapsed",
+    "hinges",
+    "mechanism",
+    "hinge_A",
+    "hinge_B",
+    "hinge_C",
+    "hinge_D",
+    "steps",
+    "wall_s",
+    "max_slip_mm",
+    "max_friction_use",
+    "friction_interface",
+    "status",
+    "reason",
+    "folder",
+    "run",
+}
 
 
 def kn_sweep_figure(table: pd.DataFrame, stem: Path, du_rigid_mm: float | None = None) -> list[Path]:
@@ -53,19 +71,30 @@ def _collapsed(table: pd.DataFrame) -> pd.DataFrame:
 
 
 def _du_panel(ax: Axes, runs: pd.DataFrame, du_rigid_mm: float | None) -> None:
-    ax.plot(runs["kn_N_per_mm3"], runs["du_mm"], "o-", color="C0", ms=3.5, lw=1,
-            label="yadearch (DEM)")
+    ax.plot(runs["kn_N_per_mm3"], runs["du_mm"], "o-", color="C0", ms=3.5, lw=1, label="yadearch (DEM)")
     other = runs[runs["mechanism"] != PAPER_MECHANISM]
     if not other.empty:
-        ax.plot(other["kn_N_per_mm3"], other["du_mm"], "o", mfc="white", mec="C3", ms=5.5, mew=1,
-                label="collapse by another mechanism (see results.csv)")
+        ax.plot(
+            other["kn_N_per_mm3"],
+            other["du_mm"],
+            "o",
+            mfc="white",
+            mec="C3",
+            ms=5.5,
+            mew=1,
+            label="collapse by another mechanism (see results.csv)",
+        )
     if du_rigid_mm is not None:
-        ax.axhline(du_rigid_mm, color="0.3", ls="--", lw=0.8,
-                   label=f"rigid-block limit analysis: {du_rigid_mm:.1f} mm")
+        ax.axhline(du_rigid_mm, color="0.3", ls="--", lw=0.8, label=f"rigid-block limit analysis: {du_rigid_mm:.1f} mm")
     else:
         stiffest = runs.iloc[-1]
-        ax.axhline(stiffest["du_mm"], color="0.5", ls="--", lw=0.8,
-                   label=f"stiffest run ({stiffest['kn_N_per_mm3']:g} N/mm$^3$): {stiffest['du_mm']:.1f} mm")
+        ax.axhline(
+            stiffest["du_mm"],
+            color="0.5",
+            ls="--",
+            lw=0.8,
+            label=f"stiffest run ({stiffest['kn_N_per_mm3']:g} N/mm$^3$): {stiffest['du_mm']:.1f} mm",
+        )
     kn = [s["kn_N_per_mm3"] for s in reference.SETS.values()]
     du = [s["numerical"]["du_mm"] for s in reference.SETS.values()]
     ax.plot(kn, du, "D", mfc="none", color="C3", ms=5, label="paper FE, calibrated (sets 1, 2)")
@@ -78,8 +107,16 @@ def _failed_marks(ax: Axes, failed: pd.DataFrame) -> None:
     """Runs without a converged du, as crosses on the kn axis (their reasons are in results.csv)."""
     if failed.empty:
         return
-    ax.plot(failed["kn_N_per_mm3"], [0.02] * len(failed), "x", color="0.4", ms=4, clip_on=False,
-            transform=ax.get_xaxis_transform(), label="no converged du (failed, see results.csv)")
+    ax.plot(
+        failed["kn_N_per_mm3"],
+        [0.02] * len(failed),
+        "x",
+        color="0.4",
+        ms=4,
+        clip_on=False,
+        transform=ax.get_xaxis_transform(),
+        label="no converged du (failed, see results.csv)",
+    )
     ax.legend(loc="lower right", frameon=False)
 
 
@@ -88,14 +125,20 @@ def _hinge_panel(ax: Axes, runs: pd.DataFrame) -> None:
     so that a single interface still shows."""
     for column, (marker, label) in HINGE_STYLE.items():
         present = runs[runs[column].notna()]
-        ax.plot(present["kn_N_per_mm3"], present[column].astype(float), marker, ms=3.5,
-                mfc="none", label=label)
+        ax.plot(present["kn_N_per_mm3"], present[column].astype(float), marker, ms=3.5, mfc="none", label=label)
     if set(runs["n_voussoirs"]) == {reference.GEOMETRY["n_voussoirs"]}:
         for s in reference.SETS.values():
             for column in HINGE_STYLE:
                 interfaces = s["numerical"][column]
-                ax.plot([s["kn_N_per_mm3"]] * 2, [min(interfaces) - 0.5, max(interfaces) + 0.5], "-",
-                        color="C3", lw=2.5, alpha=0.5, solid_capstyle="round")
+                ax.plot(
+                    [s["kn_N_per_mm3"]] * 2,
+                    [min(interfaces) - 0.5, max(interfaces) + 0.5],
+                    "-",
+                    color="C3",
+                    lw=2.5,
+                    alpha=0.5,
+                    solid_capstyle="round",
+                )
         ax.plot([], [], "-", color="C3", lw=2.5, alpha=0.5, label="paper FE")
     ax.set_ylabel("hinge interface\n(1 = left support)")
     ax.yaxis.set_major_locator(MaxNLocator(integer=True))
@@ -116,8 +159,10 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path) -> list
         groups = runs.groupby(others if len(others) > 1 else others[0]) if others else [((), runs)]
         for key, group in groups:
             group = group.sort_values(column)
-            label = ", ".join(f"{c} = {v:g}" if isinstance(v, float) else f"{c} = {v}"
-                              for c, v in zip(others, key if isinstance(key, tuple) else (key,)))
+            label = ", ".join(
+                f"{c} = {v:g}" if isinstance(v, float) else f"{c} = {v}"
+                for c, v in zip(others, key if isinstance(key, tuple) else (key,))
+            )
             ax.plot(group[column], group["du_mm"], "o-", ms=3.5, lw=1, label=label or None)
         values = runs[column].astype(float)
         if (values > 0).all() and values.max() > DECADE * values.min():
@@ -132,5 +177,8 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path) -> list
 
 def swept_columns(table: pd.DataFrame) -> list[str]:
     """The parameter columns of a results table that take more than one numeric value."""
-    return [c for c in table.columns if c not in RESULT_COLUMNS
-            and pd.api.types.is_numeric_dtype(table[c]) and table[c].nunique(dropna=True) > 1]
+    return [
+        c
+        for c in table.columns
+        if c not in RESULT_COLUMNS and pd.api.types.is_numeric_dtype(table[c]) and table[c].nunique(dropna=True) > 1
+    ]

@@ -55,8 +55,7 @@ def hinge_points(result: LimitResult) -> dict[str, np.ndarray]:
     return points
 
 
-def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchCase,
-                     ax: Axes | None = None) -> Figure:
+def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchCase, ax: Axes | None = None) -> Figure:
     """Draw the arch at du_rigid with its thrust line and hinges into `ax` (a new column-wide figure
     if None); returns the figure."""
     geometry = geometry_or_case
@@ -90,11 +89,18 @@ def _draw(ax: Axes, result: LimitResult, undeformed: list[np.ndarray], outlines:
     last = len(outlines) - 1
     for b, (before, after) in enumerate(zip(undeformed, outlines)):
         ax.add_patch(Polygon(before, closed=True, **UNDEFORMED_STYLE))
-        ax.add_patch(Polygon(after, closed=True, fc=SUPPORT_COLOUR if b in (0, last) else VOUSSOIR_COLOUR,
-                             ec="0.15", lw=0.3, zorder=2))
+        ax.add_patch(
+            Polygon(
+                after,
+                closed=True,
+                fc=SUPPORT_COLOUR if b in (0, last) else VOUSSOIR_COLOUR,
+                ec="0.15",
+                lw=0.3,
+                zorder=2,
+            )
+        )
     thrust = np.array([f.thrust_mm for f in result.forces])
-    ax.plot(thrust[:, 0], thrust[:, 1], color=THRUST_COLOUR, lw=0.9, marker="o", ms=1.2, zorder=3,
-            label="thrust line")
+    ax.plot(thrust[:, 0], thrust[:, 1], color=THRUST_COLOUR, lw=0.9, marker="o", ms=1.2, zorder=3, label="thrust line")
     centre = np.zeros(2)  # the intrados circle's centre: labels go radially out (E) or in (I)
     for k, (label, point) in enumerate(hinge_points(result).items()):
         colour = HINGE_COLOURS[k % len(HINGE_COLOURS)]
@@ -102,16 +108,23 @@ def _draw(ax: Axes, result: LimitResult, undeformed: list[np.ndarray], outlines:
         direction = outward if label.endswith("E") else -outward
         text = f"{label} (new)" if label in result.new_at_collapse else label
         ax.plot(*point, "o", ms=4, mfc=colour, mec="white", mew=0.5, zorder=4)
-        ax.annotate(text, point, xytext=direction * LABEL_OFFSET_PT, textcoords="offset points",
-                    ha="left" if direction[0] > 0 else "right", va="bottom" if direction[1] > 0 else "top",
-                    color=colour, fontweight="bold", zorder=5)
+        ax.annotate(
+            text,
+            point,
+            xytext=direction * LABEL_OFFSET_PT,
+            textcoords="offset points",
+            ha="left" if direction[0] > 0 else "right",
+            va="bottom" if direction[1] > 0 else "top",
+            color=colour,
+            fontweight="bold",
+            zorder=5,
+        )
     ax.plot([], [], color="0.65", lw=0.6, ls="--", label="undeformed")
     ax.add_patch(Polygon(np.zeros((3, 2)), fc=VOUSSOIR_COLOUR, ec="0.15", lw=0.3, label="at the limit"))
     ax.legend(loc="lower center", ncols=1, handlelength=1.5)
 
 
-def save_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchCase,
-                     stem: Path) -> tuple[Path, Path]:
+def save_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchCase, stem: Path) -> tuple[Path, Path]:
     """The thrust-line figure as `stem`.pdf (vector) and `stem`.png (300 dpi), each written atomically."""
     fig = plot_thrust_line(result, geometry_or_case)
     with matplotlib.rc_context(STYLE):  # font embedding and dpi are read when saving

@@ -43,8 +43,7 @@ def placed_corners(geometry: ArchGeometry, pos: np.ndarray, rot: np.ndarray) -> 
     return np.array(corners)
 
 
-def _grid(points: np.ndarray, cell_type: int, cells: np.ndarray, data: dict[str, np.ndarray],
-          on_cells: bool) -> Any:
+def _grid(points: np.ndarray, cell_type: int, cells: np.ndarray, data: dict[str, np.ndarray], on_cells: bool) -> Any:
     """A vtkUnstructuredGrid of `cells` (rows of point indices) with `data` arrays on its cells or points."""
     from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
     from vtkmodules.vtkCommonCore import vtkPoints
@@ -98,28 +97,44 @@ def export_run(run: RunFolder, out: Path) -> Path:
         snapshot = states.snapshot(index)
         stem = f"{index:04d}_delta{states.delta_mm[index]:.3f}mm"
         displacement = np.column_stack([pos - centroids, np.zeros(n_blocks)])  # from the unloaded arch
-        blocks = _grid(placed_corners(geometry, pos, rot).reshape(-1, 3), VTK_HEXAHEDRON,
-                       np.arange(n_blocks * HEX_CORNERS).reshape(n_blocks, HEX_CORNERS),
-                       {"block_id": ids, "support": np.isin(ids, (0, n_blocks - 1)).astype(np.int8),
-                        "displacement_m": displacement, "rotation_rad": rot}, on_cells=True)
+        blocks = _grid(
+            placed_corners(geometry, pos, rot).reshape(-1, 3),
+            VTK_HEXAHEDRON,
+            np.arange(n_blocks * HEX_CORNERS).reshape(n_blocks, HEX_CORNERS),
+            {
+                "block_id": ids,
+                "support": np.isin(ids, (0, n_blocks - 1)).astype(np.int8),
+                "displacement_m": displacement,
+                "rotation_rad": rot,
+            },
+            on_cells=True,
+        )
         rows = state_joints(run, geometry, index)
         intrados, extrados = rows["opening_intrados_mm"].to_numpy(), rows["opening_extrados_mm"].to_numpy()
         hinged = np.zeros(n_joints, np.int8)
         for h in state_hinges(run, geometry, rows):
             hinged[h.interface - 1] = 1
         centres = (joint_points(geometry, snapshot, "I") + joint_points(geometry, snapshot, "E")) / 2
-        joint_grid = _grid(np.column_stack([centres, np.full(n_joints, depth_mid)]), VTK_VERTEX,
-                           np.arange(n_joints).reshape(-1, 1),
-                           {"interface": np.arange(1, n_joints + 1),
-                            "normal_force_N": rows["normal_force_N"].to_numpy(),
-                            "shear_force_N": rows["shear_force_N"].to_numpy(),
-                            "opening_intrados_m": intrados * 1e-3, "opening_extrados_m": extrados * 1e-3,
-                            "hinge": hinged}, on_cells=False)
+        joint_grid = _grid(
+            np.column_stack([centres, np.full(n_joints, depth_mid)]),
+            VTK_VERTEX,
+            np.arange(n_joints).reshape(-1, 1),
+            {
+                "interface": np.arange(1, n_joints + 1),
+                "normal_force_N": rows["normal_force_N"].to_numpy(),
+                "shear_force_N": rows["shear_force_N"].to_numpy(),
+                "opening_intrados_m": intrados * 1e-3,
+                "opening_extrados_m": extrados * 1e-3,
+                "hinge": hinged,
+            },
+            on_cells=False,
+        )
         for part, grid in enumerate((blocks, joint_grid)):
             name = f"{PARTS[part]}_{stem}.vtu"
             _write(grid, out / name)
-            ElementTree.SubElement(collection, "DataSet", timestep=f"{states.delta_mm[index]:.6g}", part=str(part),
-                                   file=name)
+            ElementTree.SubElement(
+                collection, "DataSet", timestep=f"{states.delta_mm[index]:.6g}", part=str(part), file=name
+            )
     root = ElementTree.Element("VTKFile", type="Collection", version="0.1")
     root.append(collection)
     ElementTree.indent(root)

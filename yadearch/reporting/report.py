@@ -7,46 +7,51 @@ analysis adds how the hinges formed. Runs are matched to the paper's sets by nam
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 from yadearch.analysis import RunAnalysis, analyse_run, load_run
 from yadearch.analysis.mechanism import run_warnings
 from yadearch.analysis.tracking import format_interfaces
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
-from yadearch.case.config import as_ran, preset
 from yadearch.plotting.run_figures import write_figures
+from yadearch.reporting.paper_match import (
+    case_mismatch,
+    hinge_text,
+    interface_difference,
+    match_hinges,
+    match_reference,
+)
 from yadearch.results.rundir import FIGURES_DIR, RunFolder
-from yadearch.results.summary import DEM, HingeRef, RunSummary
+from yadearch.results.summary import DEM, RunSummary
 
 REPORT_FILE = "report.md"
 HINGE_ROWS = ("hinge_A", "hinge_B", "hinge_C")
-KN_MATCH_RELATIVE = 1e-6
 CAPTIONS = {
     "strip": "Four states of the run at one scale: after the self-weight, at a third and two thirds of "
-             "du, and at collapse; open hinges marked with the paper's letters, the line of the joints' "
-             "contact-force resultants (the thrust line) in red, the undeformed outline dashed.",
+    "du, and at collapse; open hinges marked with the paper's letters, the line of the joints' "
+    "contact-force resultants (the thrust line) in red, the undeformed outline dashed.",
     "collapse": "The arch at collapse (at the upper end of du's bracket, after the failed hold went on "
-                "until a block moved 10 mm or another hold time passed), drawn to scale over its "
-                "undeformed outline (dashed); hinges labelled A-D by position as in the paper, with "
-                "interface and pivot side.",
+    "until a block moved 10 mm or another hold time passed), drawn to scale over its "
+    "undeformed outline (dashed); hinges labelled A-D by position as in the paper, with "
+    "interface and pivot side.",
     "reactions": "Forces of the supports on the arch against the settlement δ of the right support; "
-                 "faded past du, where the arch is already moving.",
+    "faded past du, where the arch is already moving.",
     "hinges": "Opening (gap at the edge opposite the pivot) and rotation of each hinge against δ; dots "
-              "mark formation, the last point is the collapse state.",
+    "mark formation, the last point is the collapse state.",
     "crown": "Displacement of the crown voussoir against δ (from the unloaded geometry, self-weight "
-             "included); faded past du.",
+    "included); faded past du.",
     "stability": "Smallest eigenvalue of the free blocks' tangent stiffness at each equilibrium state "
-                 "against δ: positive while the state is stable, falling toward zero as du (a fold "
-                 "of the equilibrium path) approaches.",
+    "against δ: positive while the state is stable, falling toward zero as du (a fold "
+    "of the equilibrium path) approaches.",
 }
-FINAL_STATE_CAPTION = ("The arch at the end of the run (no collapse), drawn to scale over its undeformed "
-                       "outline (dashed); hinges labelled A-D by position as in the paper, with interface and "
-                       "pivot side.")
+FINAL_STATE_CAPTION = (
+    "The arch at the end of the run (no collapse), drawn to scale over its undeformed "
+    "outline (dashed); hinges labelled A-D by position as in the paper, with interface and "
+    "pivot side."
+)
 
 
 @dataclass
@@ -64,63 +69,10 @@ class ReportedRun:
 CONTACT_MODEL_NAMES = {"joint": "zero-thickness joint elements", "cgal": "YADE's CGAL polyhedra contacts"}
 
 
-PAPER_SECTIONS = ("geometry", "material", "loading", "imperfections")  # what makes a run the paper's case
-NOT_PHYSICAL = {"max_support_displacement_mm"}  # a run's stopping point, not part of the arch or its loading
-
-
-ENGINE_NAMES = {"dem": "the DEM (YADE, explicit dynamics relaxed to equilibrium)",
-                "static": "the static engine (Newton's method on the same blocks and joints)"}
-
-
-def case_mismatch(case: dict[str, Any]) -> str | None:
-    """How a run's case.toml differs from the paper's arch, material, loading and perfect joints
-    (the first difference, e.g. "geometry.n_voussoirs 10, paper 55"); None if it is the paper's case."""
-    ran, paper = as_ran(case), as_ran(preset(next(iter(reference.SETS))).to_dict())
-    for section in PAPER_SECTIONS:
-        for key, value in paper[section].items():
-            if key not in NOT_PHYSICAL and ran[section][key] != value:
-                return f"{section}.{key} {ran[section][key]!r}, paper {value!r}"
-    return None
-
-
-def match_reference(case: dict[str, Any], summary: RunSummary) -> str | None:
-    """The paper set a run reproduces: only a run of the paper's case (`case_mismatch`), then the set
-    by its name ("set1"/"set2"), else by its kn (N/mm3)."""
-    if case_mismatch(case) is not None:
-        return None
-    if summary.name in reference.SETS:
-        return summary.name
-    kn = summary.kn_N_per_mm3
-    for name, ref in reference.SETS.items():
-        if kn is not None and math.isclose(kn, ref["kn_N_per_mm3"], rel_tol=KN_MATCH_RELATIVE):
-            return name
-    return None
-
-
-def _hinge_text(interfaces: list[int], side: str) -> str:
-    return f"{format_interfaces(interfaces)} {side}"
-
-
-def _difference(run_interface: int, paper: list[int]) -> str:
-    """Interfaces between the run's hinge and the paper's (0 inside a spread hinge's range)."""
-    below, above = run_interface - min(paper), run_interface - max(paper)
-    gap = 0 if below >= 0 >= above else (below if below < 0 else above)
-    return f"{gap:+d}" if gap else "0"
-
-
-def match_hinges(summary_hinges: tuple[HingeRef, ...],
-                 paper_rows: list[tuple[str, list[int], str]]) -> dict[str, HingeRef | None]:
-    """Each paper hinge (row, interfaces, side) paired with the run's hinge of the same side nearest
-    to it; a run hinge is used once, rows in the order given."""
-    free = list(summary_hinges)
-    pairs: dict[str, HingeRef | None] = {}
-    for row, interfaces, side in paper_rows:
-        same = [h for h in free if h.side == side]
-        best = min(same, key=lambda h: min(abs(h.interface - k) for k in interfaces), default=None)
-        pairs[row] = best
-        if best is not None:
-            free.remove(best)
-    return pairs
+ENGINE_NAMES = {
+    "dem": "the DEM (YADE, explicit dynamics relaxed to equilibrium)",
+    "static": "the static engine (Newton's method on the same blocks and joints)",
+}
 
 
 def table_one(reported: ReportedRun) -> list[str]:
@@ -133,8 +85,10 @@ def table_one(reported: ReportedRun) -> list[str]:
     rows = [(row, ref["numerical"][row], reference.HINGE_SIDES[row]) for row in HINGE_ROWS]
     rows.append(("hinge_D", [reference.HINGE_D_INTERFACE], reference.HINGE_SIDES["hinge_D"]))
     pairs = match_hinges(summary.hinges_at_collapse, rows)
-    lines = ["| | paper experimental | paper numerical | this run | run − exp. | run − num. |",
-             "|---|---|---|---|---|---|"]
+    lines = [
+        "| | paper experimental | paper numerical | this run | run − exp. | run − num. |",
+        "|---|---|---|---|---|---|",
+    ]
     for row, _, side in rows:
         exp = ref["experimental"].get(row, [reference.HINGE_D_INTERFACE])
         num = ref["numerical"].get(row, [reference.HINGE_D_INTERFACE])
@@ -144,21 +98,25 @@ def table_one(reported: ReportedRun) -> list[str]:
         else:
             formed = order.get(hinge.interface)
             run_text = f"{hinge.interface} {hinge.side}" + (f" (formed #{formed})" if formed else "")
-            d_exp, d_num = _difference(hinge.interface, exp), _difference(hinge.interface, num)
+            d_exp, d_num = interface_difference(hinge.interface, exp), interface_difference(hinge.interface, num)
         name = row.replace("hinge_", "hinge ") + ("¹" if row == "hinge_D" else "")
-        lines.append(f"| {name} | {_hinge_text(exp, side)} | {_hinge_text(num, side)} | {run_text} | "
-                     f"{d_exp} | {d_num} |")
+        lines.append(f"| {name} | {hinge_text(exp, side)} | {hinge_text(num, side)} | {run_text} | {d_exp} | {d_num} |")
     du = summary.du_mm
     exp_du, num_du = ref["experimental"]["du_mm"], ref["numerical"]["du_mm"]
     if du is None:
         lines.append(f"| du (mm) | {exp_du:.1f} | {num_du:.1f} | no collapse | — | — |")
     else:
-        lines.append(f"| du (mm) | {exp_du:.1f} | {num_du:.1f} | {du:.2f} | {du - exp_du:+.2f} "
-                     f"({(du - exp_du) / exp_du:+.1%}) | {du - num_du:+.2f} ({(du - num_du) / num_du:+.1%}) |")
-    lines += ["", "Hinges are interfaces numbered 1..n+1 from the left support, I/E the pivot side; the "
-              "paper's A, B, C are paired with the run's hinge of the same side nearest to them, and "
-              "#k says it was the k-th hinge to form. Differences are in interfaces "
-              "(0 = inside the paper's range). ¹ D is named in the paper's text, not in its Table 1."]
+        lines.append(
+            f"| du (mm) | {exp_du:.1f} | {num_du:.1f} | {du:.2f} | {du - exp_du:+.2f} "
+            f"({(du - exp_du) / exp_du:+.1%}) | {du - num_du:+.2f} ({(du - num_du) / num_du:+.1%}) |"
+        )
+    lines += [
+        "",
+        "Hinges are interfaces numbered 1..n+1 from the left support, I/E the pivot side; the "
+        "paper's A, B, C are paired with the run's hinge of the same side nearest to them, and "
+        "#k says it was the k-th hinge to form. Differences are in interfaces "
+        "(0 = inside the paper's range). ¹ D is named in the paper's text, not in its Table 1.",
+    ]
     return lines
 
 
@@ -166,15 +124,19 @@ def formation_table(analysis: RunAnalysis) -> list[str]:
     """Each hinge at collapse, in order of formation: its paper label, where, when it formed, how far
     it opened."""
     deltas = analysis.history.delta_mm
-    lines = ["| formed | hinge | interface | spread | side | formed at δ (mm) | peak when formed "
-             "| opening at collapse (mm) | rotation at collapse (mrad) | migrations |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+    lines = [
+        "| formed | hinge | interface | spread | side | formed at δ (mm) | peak when formed "
+        "| opening at collapse (mm) | rotation at collapse (mrad) | migrations |",
+        "|---|---|---|---|---|---|---|---|---|---|",
+    ]
     for t in analysis.tracks:
         moves = "; ".join(f"{m.from_interface} → {m.to_interface} at {m.delta_mm:.2f} mm" for m in t.migrations)
-        lines.append(f"| #{t.order} | {t.paper_label or '—'} | {t.interface} | "
-                     f"{format_interfaces(t.final.interfaces)} | {t.side} | "
-                     f"{deltas[t.formed_record]:.2f} | {t.hinge_at(t.formed_record).interface} | "
-                     f"{t.opening_mm[-1]:.3f} | {abs(t.final.rotation) * 1e3:.1f} | {moves or '—'} |")
+        lines.append(
+            f"| #{t.order} | {t.paper_label or '—'} | {t.interface} | "
+            f"{format_interfaces(t.final.interfaces)} | {t.side} | "
+            f"{deltas[t.formed_record]:.2f} | {t.hinge_at(t.formed_record).interface} | "
+            f"{t.opening_mm[-1]:.3f} | {abs(t.final.rotation) * 1e3:.1f} | {moves or '—'} |"
+        )
     return lines
 
 
@@ -184,48 +146,85 @@ def run_section(reported: ReportedRun) -> list[str]:
     summary = run.summary
     du = summary.du_mm
     hinges = summary.hinge_labels or "—"
-    lines = [f"## {summary.name or run.path.name}", "",
-             f"- run folder: `{run.path}`",
-             f"- kn = {summary.kn_N_per_mm3} N/mm3, ks = {summary.ks_N_per_mm3} N/mm3, "
-             f"joints computed by {CONTACT_MODEL_NAMES.get(summary.contact_model or 'cgal')}",
-             f"- solved by {ENGINE_NAMES[summary.engine]}",
-             f"- du = {'no collapse' if du is None else f'{du:.2f} mm'}"
-             + (f" (bracket {summary.du_bracket_mm[0]:.2f}–{summary.du_bracket_mm[1]:.2f} mm)"
-                if summary.du_bracket_mm else ""),
-             f"- hinges at collapse: {hinges}",
-             f"- mechanism: {analysis.mechanism}",
-             "- formation: " + (", then ".join(f"{label or '(unlabelled)'} at {delta:.2f} mm ({seq})"
-                                               for label, delta, seq in analysis.formation) or "—"),
-             "- sliding joints: " + (", ".join(f"{s.interface} (|V|/(μN) = {s.shear_ratio:.2f}"
-                                                + (f", slip {s.slip_mm:.2f} mm)" if s.slip_mm is not None else ")")
-                                                for s in analysis.sliding) or "none"),
-             ""]
+    lines = [
+        f"## {summary.name or run.path.name}",
+        "",
+        f"- run folder: `{run.path}`",
+        f"- kn = {summary.kn_N_per_mm3} N/mm3, ks = {summary.ks_N_per_mm3} N/mm3, "
+        f"joints computed by {CONTACT_MODEL_NAMES.get(summary.contact_model or 'cgal')}",
+        f"- solved by {ENGINE_NAMES[summary.engine]}",
+        f"- du = {'no collapse' if du is None else f'{du:.2f} mm'}"
+        + (
+            f" (bracket {summary.du_bracket_mm[0]:.2f}–{summary.du_bracket_mm[1]:.2f} mm)"
+            if summary.du_bracket_mm
+            else ""
+        ),
+        f"- hinges at collapse: {hinges}",
+        f"- mechanism: {analysis.mechanism}",
+        "- formation: "
+        + (
+            ", then ".join(
+                f"{label or '(unlabelled)'} at {delta:.2f} mm ({seq})" for label, delta, seq in analysis.formation
+            )
+            or "—"
+        ),
+        "- sliding joints: "
+        + (
+            ", ".join(
+                f"{s.interface} (|V|/(μN) = {s.shear_ratio:.2f}"
+                + (f", slip {s.slip_mm:.2f} mm)" if s.slip_mm is not None else ")")
+                for s in analysis.sliding
+            )
+            or "none"
+        ),
+        "",
+    ]
     for warning in run_warnings(summary):
         lines += [f"**Warning:** {warning}.", ""]
     own = [(t.interface, t.side) for t in sorted(analysis.tracks, key=lambda t: t.interface)]
     if own != [(h.interface, h.side) for h in summary.hinges_at_collapse] and summary.collapsed:
-        lines += [f"**Note:** the analysis finds hinges {' '.join(f'{k}{s}' for k, s in own)} at collapse, "
-                  "summary.json lists the ones above (different hinge threshold?).", ""]
+        lines += [
+            f"**Note:** the analysis finds hinges {' '.join(f'{k}{s}' for k, s in own)} at collapse, "
+            "summary.json lists the ones above (different hinge threshold?).",
+            "",
+        ]
     if reported.reference_name:
         ref = reference.SETS[reported.reference_name]
-        lines += [f"### Comparison with the paper ({reported.reference_name}: {ref['description']}, "
-                  f"kn = {ref['kn_N_per_mm3']} N/mm3)", ""] + table_one(reported) + [
-                  "", f"Paper, sequence at collapse: {ref['sequence_at_collapse']}.", ""]
+        lines += (
+            [
+                f"### Comparison with the paper ({reported.reference_name}: {ref['description']}, "
+                f"kn = {ref['kn_N_per_mm3']} N/mm3)",
+                "",
+            ]
+            + table_one(reported)
+            + ["", f"Paper, sequence at collapse: {ref['sequence_at_collapse']}.", ""]
+        )
     else:
         mismatch = case_mismatch(run.case)
         why = f"its case is not the paper's ({mismatch})" if mismatch else "its name and kn are neither set's"
         lines += [f"No reference: {why}; no comparison with the paper.", ""]
     th = analysis.thresholds
-    lines += ["### Hinges and how they formed", ""] + formation_table(analysis) + [
-        "", f"A hinge is a run of joints rotating more than {th.rotation_mrad:g} mrad the same way, "
-        f"reported at its peak with the joints rotating at least half as much (spread); it has formed "
-        f"once it is also open by {th.opening_mm:g} mm, for good. Labels follow the order of formation. "
-        f"Every hinge at every recorded δ: [hinges.csv]({reported.folder}/hinges.csv).", ""]
+    lines += (
+        ["### Hinges and how they formed", ""]
+        + formation_table(analysis)
+        + [
+            "",
+            f"A hinge is a run of joints rotating more than {th.rotation_mrad:g} mrad the same way, "
+            f"reported at its peak with the joints rotating at least half as much (spread); it has formed "
+            f"once it is also open by {th.opening_mm:g} mm, for good. Labels follow the order of formation. "
+            f"Every hinge at every recorded δ: [hinges.csv]({reported.folder}/hinges.csv).",
+            "",
+        ]
+    )
     lines += ["### Figures", ""]
     for name in reported.figures:
         caption = CAPTIONS[name] if summary.collapsed or name != "collapse" else FINAL_STATE_CAPTION
-        lines += [f"![{name}]({reported.folder}/{FIGURES_DIR}/{name}.png)", "",
-                  f"*{caption}* ([PDF]({reported.folder}/{FIGURES_DIR}/{name}.pdf))", ""]
+        lines += [
+            f"![{name}]({reported.folder}/{FIGURES_DIR}/{name}.png)",
+            "",
+            f"*{caption}* ([PDF]({reported.folder}/{FIGURES_DIR}/{name}.pdf))",
+            "",
+        ]
     lines += ["### Provenance", "", "| | |", "|---|---|"]
     for key in ("engine", "yade_version", "yadearch_version", "git_revision", "steps", "wall_s"):
         value = getattr(summary, key)
@@ -235,18 +234,22 @@ def run_section(reported: ReportedRun) -> list[str]:
 
 def overview(reported: list[ReportedRun]) -> list[str]:
     """One line per run: its reference set, du against the paper's."""
-    lines = ["| run | engine | paper set | du (mm) | paper numerical du (mm) | paper experimental du (mm) "
-             "| hinges at collapse |",
-             "|---|---|---|---|---|---|---|"]
+    lines = [
+        "| run | engine | paper set | du (mm) | paper numerical du (mm) | paper experimental du (mm) "
+        "| hinges at collapse |",
+        "|---|---|---|---|---|---|---|",
+    ]
     for r in reported:
         s = r.run.summary
         ref = reference.SETS.get(r.reference_name or "", {})
         du = s.du_mm
         hinges = s.hinge_labels or "—"
-        lines.append(f"| {s.name or r.run.path.name} | {s.engine} | {r.reference_name or '—'} | "
-                     f"{'no collapse' if du is None else f'{du:.2f}'} | "
-                     f"{ref['numerical']['du_mm'] if ref else '—'} | {ref['experimental']['du_mm'] if ref else '—'} | "
-                     f"{hinges} |")
+        lines.append(
+            f"| {s.name or r.run.path.name} | {s.engine} | {r.reference_name or '—'} | "
+            f"{'no collapse' if du is None else f'{du:.2f}'} | "
+            f"{ref['numerical']['du_mm'] if ref else '—'} | {ref['experimental']['du_mm'] if ref else '—'} | "
+            f"{hinges} |"
+        )
     return lines
 
 
@@ -275,8 +278,9 @@ def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
     lines = ["# yadearch report", "", f"Reference: *{reference.PAPER}*.", ""] + overview(reported) + [""]
     for r in reported:
         lines += run_section(r)
-    cited = reference.references_for(dem=any(r.run.summary.engine == DEM for r in reported),
-                                     paper_case=any(r.reference_name for r in reported))
+    cited = reference.references_for(
+        dem=any(r.run.summary.engine == DEM for r in reported), paper_case=any(r.reference_name for r in reported)
+    )
     lines += ["## References", ""] + [f"{k}. {text}" for k, text in enumerate(cited, start=1)] + [""]
     path = out / REPORT_FILE
     write_text_atomically(path, "\n".join(lines))

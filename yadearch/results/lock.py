@@ -36,8 +36,9 @@ def folder_lock(folder: Path, what: str = "run") -> Iterator[None]:
             fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
             holder = os.pread(handle, 64, 0).decode(errors="replace").strip() or "unknown"
-            raise FolderBusyError(f"{folder} is in use by another {what} (process {holder}); wait for it to end "
-                                  "or choose another --out") from None
+            raise FolderBusyError(
+                f"{folder} is in use by another {what} (process {holder}); wait for it to end or choose another --out"
+            ) from None
         os.ftruncate(handle, 0)
         os.pwrite(handle, f"{os.getpid()}\n".encode(), 0)
         try:

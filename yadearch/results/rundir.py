@@ -33,10 +33,10 @@ SCHEMA_VERSION = 1  # of summary.json; a summary without one predates the marker
 REQUIRED_KEYS = ("du_mm", "hinges_at_collapse", "steps", "wall_s")  # what campaigns and reports read
 
 
-
 def hinge_list(hinges: list[dict] | None) -> str:
     """Hinge records (a summary's `hinges_last_equilibrium`, a snapshot's) as "1E 9I 29E 56E"."""
     return " ".join(f"{h['interface']}{h['side']}" for h in hinges or [])
+
 
 @dataclass
 class RunFolder:
@@ -60,13 +60,20 @@ def final_folder(path: Path) -> Path:
     """The run folder a staging folder becomes when complete (any other folder: itself)."""
     name = path.name
     if name.startswith(STAGING_PREFIX) and name.endswith(STAGING_SUFFIX):
-        name = name[len(STAGING_PREFIX):-len(STAGING_SUFFIX)]
+        name = name[len(STAGING_PREFIX) : -len(STAGING_SUFFIX)]
     return path.parent / name
 
 
-def write_run(out: Path, case_toml: str, series: list[dict], joints: list[dict],
-              snapshots: dict[str, Any], summary: RunSummary,
-              imperfections: dict[str, Any] | None = None, states: list[dict[str, Any]] | None = None) -> None:
+def write_run(
+    out: Path,
+    case_toml: str,
+    series: list[dict],
+    joints: list[dict],
+    snapshots: dict[str, Any],
+    summary: RunSummary,
+    imperfections: dict[str, Any] | None = None,
+    states: list[dict[str, Any]] | None = None,
+) -> None:
     """Write every file of a run folder, each atomically (imperfections.csv only for an imperfect
     arch, states.npz when the run kept its states); summary.json last, with its schema version and a
     completeness marker, so that a valid summary means a complete folder."""
@@ -148,12 +155,17 @@ def case_differences(path: Path, case: ArchCase) -> list[str]:
 
     ran = as_ran(tomllib.loads((Path(path) / CASE_FILE).read_text()))
     wanted = as_ran(case.to_dict())
+
     def show(value: Any) -> str:
         return f"{value:.6g}" if isinstance(value, float) else repr(value)
 
-    return [f"{section}.{key}: ran {show(value)}, wanted {show(wanted[section][key])}"
-            for section, values in ran.items() if section != "name"
-            for key, value in values.items() if value != wanted[section][key]]
+    return [
+        f"{section}.{key}: ran {show(value)}, wanted {show(wanted[section][key])}"
+        for section, values in ran.items()
+        if section != "name"
+        for key, value in values.items()
+        if value != wanted[section][key]
+    ]
 
 
 def holds_case(path: Path, case: ArchCase) -> bool:
@@ -182,6 +194,8 @@ def read_run(path: str | Path) -> RunFolder:
     for name, table in ((SERIES_FILE, folder.series), (JOINTS_FILE, folder.joints)):
         written = (summary.table_rows or {}).get(name)  # none in runs written before the counts
         if written is not None and len(table) != written:
-            raise RunFolderError(f"{path / name} has {len(table)} rows where the run wrote {written}: it was cut short "
-                                 "or changed; run the case again")
+            raise RunFolderError(
+                f"{path / name} has {len(table)} rows where the run wrote {written}: it was cut short "
+                "or changed; run the case again"
+            )
     return folder

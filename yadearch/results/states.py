@@ -19,17 +19,25 @@ STATES_FILE = "states.npz"
 
 def state_entry(stage: str, step: int, delta_mm: float, pos: np.ndarray, rot: np.ndarray) -> dict[str, Any]:
     """One recorded state: `pos` (n_blocks, 2 or 3; m, only x and y kept) and `rot` (n_blocks; rad)."""
-    return {"stage": stage, "step": int(step), "delta_mm": float(delta_mm),
-            "pos_m": np.asarray(pos, float)[:, :2].copy(), "rot_rad": np.asarray(rot, float).copy()}
+    return {
+        "stage": stage,
+        "step": int(step),
+        "delta_mm": float(delta_mm),
+        "pos_m": np.asarray(pos, float)[:, :2].copy(),
+        "rot_rad": np.asarray(rot, float).copy(),
+    }
 
 
 def write_states(path: Path, states: list[dict[str, Any]]) -> None:
     """Write the states as one compressed array file, atomically."""
-    arrays = {"stage": np.array([s["stage"] for s in states], dtype=str),
-              "step": np.array([s["step"] for s in states], dtype=np.int64),
-              "delta_mm": np.array([s["delta_mm"] for s in states], dtype=float),
-              "pos_m": np.array([s["pos_m"] for s in states], dtype=float),
-              "rot_rad": np.array([s["rot_rad"] for s in states], dtype=float)}
+    arrays = {
+        "stage": np.array([s["stage"] for s in states], dtype=str),
+        "step": np.array([s["step"] for s in states], dtype=np.int64),
+        "delta_mm": np.array([s["delta_mm"] for s in states], dtype=float),
+        "pos_m": np.array([s["pos_m"] for s in states], dtype=float),
+        "rot_rad": np.array([s["rot_rad"] for s in states], dtype=float),
+    }
+
     def save(temporary: Path) -> None:
         with temporary.open("wb") as handle:  # a file object: numpy would add .npz to a name
             np.savez_compressed(handle, **arrays)
@@ -62,8 +70,12 @@ class RunStates:
 
     def snapshot(self, index: int) -> dict[str, Any]:
         """State `index` in snapshots.json's form (for the drawing helpers of `analysis.blocks`)."""
-        return {"delta_mm": float(self.delta_mm[index]), "step": int(self.step[index]),
-                "pos_m": self.pos_m[index], "rot_rad": self.rot_rad[index]}
+        return {
+            "delta_mm": float(self.delta_mm[index]),
+            "step": int(self.step[index]),
+            "pos_m": self.pos_m[index],
+            "rot_rad": self.rot_rad[index],
+        }
 
 
 def read_states(path: Path) -> RunStates | None:

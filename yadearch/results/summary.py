@@ -18,10 +18,27 @@ from yadearch.solve.path import PathResult
 DEM, STATIC = "dem", "static"  # the engines that write run folders
 TRANSLATION = "translation"
 # written only when set: engine-specific figures and what older runs lack
-OPTIONAL_KEYS = frozenset({
-    "support_speed_mm_per_s", "imperfections", "unused_parameters", "relaxations", "snaps", "descents",
-    "collapse_verdict", "du_components_mm", "du_rotation_mrad", "iterations", "joint_evaluations",
-    "solver_wall_s", "steps_by_stage", "dt_s", "steps_per_s", "profile", "table_rows"})
+OPTIONAL_KEYS = frozenset(
+    {
+        "support_speed_mm_per_s",
+        "imperfections",
+        "unused_parameters",
+        "relaxations",
+        "snaps",
+        "descents",
+        "collapse_verdict",
+        "du_components_mm",
+        "du_rotation_mrad",
+        "iterations",
+        "joint_evaluations",
+        "solver_wall_s",
+        "steps_by_stage",
+        "dt_s",
+        "steps_per_s",
+        "profile",
+        "table_rows",
+    }
+)
 RENAMED_KEYS = {"settlement_speed_mm_per_s": "support_speed_mm_per_s"}  # former key: today's, read alike
 
 
@@ -129,8 +146,9 @@ class RunSummary:
         """Each hinge at collapse with the paper's positional letter (A-D; None for a hinge left
         over), `model.hinges.paper_labels` deciding which is which."""
         rotation = self.hinge_rotations_mrad
-        labels = paper_labels([(h.interface, h.side, rotation.get(h) or 0.0) for h in self.hinges_at_collapse],
-                              n_interfaces)
+        labels = paper_labels(
+            [(h.interface, h.side, rotation.get(h) or 0.0) for h in self.hinges_at_collapse], n_interfaces
+        )
         return {h: labels.get((h.interface, h.side)) for h in self.hinges_at_collapse}
 
     def same_mechanism(self, other: RunSummary) -> bool:
@@ -185,13 +203,22 @@ def collapse_fields(path: PathResult, movement: Movement) -> dict[str, Any]:
     if not path.collapsed:
         return {"collapsed": False, "du_mm": None, "last_equilibrium_mm": lower}
     dx, dy = movement.components(path.du)
-    return {"collapsed": True, "du_mm": units.to_mm(path.du), "last_equilibrium_mm": lower,
-            "du_bracket_mm": (lower, units.to_mm(path.upper)), "collapse_verdict": path.upper_verdict,
-            "du_components_mm": (units.to_mm(dx), units.to_mm(dy)),
-            "du_rotation_mrad": 1e3 * movement.rotation(path.du)}
+    return {
+        "collapsed": True,
+        "du_mm": units.to_mm(path.du),
+        "last_equilibrium_mm": lower,
+        "du_bracket_mm": (lower, units.to_mm(path.upper)),
+        "collapse_verdict": path.upper_verdict,
+        "du_components_mm": (units.to_mm(dx), units.to_mm(dy)),
+        "du_rotation_mrad": 1e3 * movement.rotation(path.du),
+    }
 
 
 def loading_info(loading: LoadingConfig, max_displacement_mm: float) -> LoadingInfo:
     """The case's loading as the summary records it."""
-    return LoadingInfo(moving_support=loading.moving_support, motion=loading.support_motion,
-                       direction_deg=loading.support_direction_deg, max_displacement_mm=max_displacement_mm)
+    return LoadingInfo(
+        moving_support=loading.moving_support,
+        motion=loading.support_motion,
+        direction_deg=loading.support_direction_deg,
+        max_displacement_mm=max_displacement_mm,
+    )

@@ -17,7 +17,7 @@ def from_dense(a: np.ndarray) -> np.ndarray:
     n = len(a)
     ab = np.zeros((2 * BAND + 1, n))
     for k in range(-min(BAND, n - 1), min(BAND, n - 1) + 1):
-        ab[BAND - k, max(0, k): n + min(0, k)] = np.diagonal(a, k)
+        ab[BAND - k, max(0, k) : n + min(0, k)] = np.diagonal(a, k)
     return ab
 
 
@@ -58,8 +58,9 @@ def positive_definite(ab: np.ndarray) -> bool:
 
 def smallest_eigenvalue(ab: np.ndarray) -> float:
     """The smallest eigenvalue of the symmetric part of K (N/m for a stiffness): > 0 when stable."""
-    values = scipy.linalg.eig_banded(symmetric_upper(ab), eigvals_only=True, select="i", select_range=(0, 0),
-                                     check_finite=False)
+    values = scipy.linalg.eig_banded(
+        symmetric_upper(ab), eigvals_only=True, select="i", select_range=(0, 0), check_finite=False
+    )
     return float(values[0])
 
 

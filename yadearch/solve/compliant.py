@@ -10,6 +10,7 @@ if it turns a hinge back until it closes, ending lower than it started, the hing
 joints share the hinge until, further on, the chain descends; if it closes no hinge, the arch
 collapses on it.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -71,8 +72,9 @@ def chain_curvature(arch: RigidArch, placement: Placement, chain: tuple[Pivot, .
     return -(curve - slope / rate * bend) / rate**2
 
 
-def joint_margins(arch: RigidArch, placement: Placement, normal: np.ndarray, c: Contacts,
-                  pivots: tuple[Pivot, ...], kn: float) -> list[Margin]:
+def joint_margins(
+    arch: RigidArch, placement: Placement, normal: np.ndarray, c: Contacts, pivots: tuple[Pivot, ...], kn: float
+) -> list[Margin]:
     """The margin of every closed joint whose thrust comes within SCREEN_FRACTION of its length of an
     edge, from the corner normal forces `normal` (joint, side) of an admissible equilibrium; none
     while every hinge is still closed (at rest the joints beside a hinge carry the thrust alike)."""
@@ -108,8 +110,11 @@ def opening_chain(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
     closing: tuple[int, ...] = ()
     if probe is not None:
         before, after = contacts(arch, placement).gap, contacts(arch, probe).gap
-        closing = tuple(p.joint for p in pivots if p.side == fold.pivot.side
-                        and after[p.joint, 1 - p.side] < before[p.joint, 1 - p.side])
+        closing = tuple(
+            p.joint
+            for p in pivots
+            if p.side == fold.pivot.side and after[p.joint, 1 - p.side] < before[p.joint, 1 - p.side]
+        )
     return Mechanism(chain, (sign,) * len(chain), -abs(fold.curvature), closing)
 
 

@@ -52,11 +52,15 @@ def stands(case: ArchCase) -> bool:
     return solve_statics(arch, at_rest(arch)).feasible
 
 
-
-def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
-                   tolerance_mm: float = DEFAULT_TOLERANCE_MM,
-                   max_displacement_mm: float | None = None, max_snap_mm: float | None = None,
-                   mirror: bool = True, compliant: bool = False) -> LimitResult:
+def limit_analysis(
+    case: ArchCase,
+    step_mm: float = DEFAULT_STEP_MM,
+    tolerance_mm: float = DEFAULT_TOLERANCE_MM,
+    max_displacement_mm: float | None = None,
+    max_snap_mm: float | None = None,
+    mirror: bool = True,
+    compliant: bool = False,
+) -> LimitResult:
     """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible
     equilibrium, its hinge history and its last admissible state (see the module docstring). A hinge
     snap that moves a block further than `max_snap_mm` is the collapse (default: every snap that
@@ -72,13 +76,23 @@ def limit_analysis(case: ArchCase, step_mm: float = DEFAULT_STEP_MM,
         mirrored, _ = _solve(mirror_image(case), step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant)
     except LimitError as exc:
         return replace(result, mirror_collapse_mode=f"failed: {exc}")
-    return replace(result, mirror_du_rigid_mm=mirrored.du_rigid_mm, mirror_collapse_mode=mirrored.collapse_mode,
-                   mirror_collapse_hinges=tuple(mirror_hinge_labels(mirrored.collapse_hinges, arch.n_joints)),
-                   wall_s=result.wall_s + mirrored.wall_s)
+    return replace(
+        result,
+        mirror_du_rigid_mm=mirrored.du_rigid_mm,
+        mirror_collapse_mode=mirrored.collapse_mode,
+        mirror_collapse_hinges=tuple(mirror_hinge_labels(mirrored.collapse_hinges, arch.n_joints)),
+        wall_s=result.wall_s + mirrored.wall_s,
+    )
 
 
-def _solve(case: ArchCase, step_mm: float, tolerance_mm: float, max_displacement_mm: float | None,
-           max_snap_mm: float | None, compliant: bool) -> tuple[LimitResult, RigidArch]:
+def _solve(
+    case: ArchCase,
+    step_mm: float,
+    tolerance_mm: float,
+    max_displacement_mm: float | None,
+    max_snap_mm: float | None,
+    compliant: bool,
+) -> tuple[LimitResult, RigidArch]:
     """`limit_analysis` of `case` as it stands (the keystone's tie broken toward its left joint), and
     the rigid arch it solved."""
     start = time.perf_counter()
@@ -100,15 +114,25 @@ def _solve(case: ArchCase, step_mm: float, tolerance_mm: float, max_displacement
     forces, reactions = interface_forces(arch, march.statics(last, refine=True))
     use = np.array([f.friction_use for f in forces])
     return LimitResult(
-        name=case.name, du_rigid_mm=units.to_mm(last.delta) if mode != "none" else None,
-        collapse_mode=mode, hinge_history=tuple(march.history), collapse_hinges=hinges,
-        new_at_collapse=new, forces=forces, reactions_N=reactions,
-        max_friction_use=float(use.max()), max_friction_interface=int(np.argmax(use)) + 1,
+        name=case.name,
+        du_rigid_mm=units.to_mm(last.delta) if mode != "none" else None,
+        collapse_mode=mode,
+        hinge_history=tuple(march.history),
+        collapse_hinges=hinges,
+        new_at_collapse=new,
+        forces=forces,
+        reactions_N=reactions,
+        max_friction_use=float(use.max()),
+        max_friction_interface=int(np.argmax(use)) + 1,
         rotation_rad=tuple(float(r) for r in last.rot),
         shift_mm=tuple((units.to_mm(float(x)), units.to_mm(float(y))) for x, y in last.shift),
         support_direction_deg=case.loading.support_direction_deg,
-        max_snap_mm=None if math.isinf(snap_cap) else snap_cap, snap_collapse_mm=march.snap_collapse_mm,
+        max_snap_mm=None if math.isinf(snap_cap) else snap_cap,
+        snap_collapse_mm=march.snap_collapse_mm,
         step_mm=step_mm,
-        tolerance_mm=tolerance_mm, compliant_kn_N_per_mm3=case.interface.kn_N_per_mm3 if compliant else None,
+        tolerance_mm=tolerance_mm,
+        compliant_kn_N_per_mm3=case.interface.kn_N_per_mm3 if compliant else None,
         compliant_largest_margin_mm=units.to_mm(march.largest_margin) if compliant else None,
-        n_lp=march.n_lp, wall_s=time.perf_counter() - start), arch
+        n_lp=march.n_lp,
+        wall_s=time.perf_counter() - start,
+    ), arch

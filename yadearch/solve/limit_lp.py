@@ -58,10 +58,13 @@ def equilibrium_matrix(arch: RigidArch, c: Contacts) -> np.ndarray:
     touching = c.touching.astype(float)
     weights = np.where(touching.sum(1, keepdims=True) > 0, touching, 0.5)
     shear_point = (c.point * weights[:, :, None]).sum(1) / weights.sum(1, keepdims=True)
-    columns = np.concatenate([
-        np.column_stack([c.normal, cross(c.point[:, INTRADOS], c.normal)]),
-        np.column_stack([c.normal, cross(c.point[:, EXTRADOS], c.normal)]),
-        np.column_stack([c.tangent, cross(shear_point, c.tangent)])])  # (3m, 3)
+    columns = np.concatenate(
+        [
+            np.column_stack([c.normal, cross(c.point[:, INTRADOS], c.normal)]),
+            np.column_stack([c.normal, cross(c.point[:, EXTRADOS], c.normal)]),
+            np.column_stack([c.tangent, cross(shear_point, c.tangent)]),
+        ]
+    )  # (3m, 3)
     joint = np.tile(np.arange(m), 3)
     matrix = np.zeros((3 * arch.n_blocks, 3 * m))
     for sign, block in ((1.0, arch.right[joint]), (-1.0, arch.left[joint])):
@@ -77,8 +80,9 @@ def weight_load(arch: RigidArch, placement: Placement) -> np.ndarray:
     return np.column_stack([np.zeros_like(x), arch.weight, arch.weight * x]).ravel()
 
 
-def _split(arch: RigidArch, matrix: np.ndarray, load: np.ndarray,
-           placement: Placement) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _split(
+    arch: RigidArch, matrix: np.ndarray, load: np.ndarray, placement: Placement
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Rows of the voussoirs (unknown motion), and the contacts' rates per unit path rate of the
     moving supports (prescribed motion: their generalised velocities at the origin)."""
     n = arch.n_blocks
@@ -91,8 +95,7 @@ def _split(arch: RigidArch, matrix: np.ndarray, load: np.ndarray,
     return matrix[vouss], load[vouss], rates
 
 
-def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True,
-                  refine: bool = False) -> Statics:
+def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True, refine: bool = False) -> Statics:
     """The admissible equilibrium that presses least on the moving support along its motion (the
     dual of the kinematic problem, so at rest it picks the state the mechanism will follow); with
     `refine`, forces corrected by least squares so that equilibrium holds to round-off."""
@@ -108,8 +111,15 @@ def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True,
         mu = arch.tan_phi * np.eye(m)
         a_ub = np.block([[-mu, -mu, np.eye(m)], [-mu, -mu, -np.eye(m)]])
         b_ub = np.zeros(2 * m)
-    problem = {"A_ub": a_ub, "b_ub": b_ub, "A_eq": a_v * rows[:, None], "b_eq": load * rows / scale,
-               "bounds": bounds, "method": LP_METHOD, "options": LP_OPTIONS}
+    problem = {
+        "A_ub": a_ub,
+        "b_ub": b_ub,
+        "A_eq": a_v * rows[:, None],
+        "b_eq": load * rows / scale,
+        "bounds": bounds,
+        "method": LP_METHOD,
+        "options": LP_OPTIONS,
+    }
     result = linprog(objective, **problem)
     if result.status == STATUS_UNBOUNDED:  # a self-stress (flat arch) relieves the support without end
         result = linprog(np.zeros_like(objective), **problem)
@@ -121,7 +131,7 @@ def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True,
     if refine:
         free = np.array([hi is None for _, hi in bounds])
         x[free] += np.linalg.lstsq(a_v[:, free], load - a_v @ x, rcond=None)[0]
-    return Statics(True, np.column_stack([x[:m], x[m:2 * m]]), x[2 * m:], c)
+    return Statics(True, np.column_stack([x[:m], x[m : 2 * m]]), x[2 * m :], c)
 
 
 def _support_turn_rate(arch: RigidArch, side: str, placement: Placement, support_speed: float) -> float:
@@ -143,9 +153,16 @@ def solve_kinematics(arch: RigidArch, placement: Placement, support_speed: float
     length = arch.geometry.span  # rotations boxed to 1/length: velocities of order one across the arch
     box = None if support_speed else [(-1.0, 1.0), (-1.0, 1.0), (-1.0 / length, 1.0 / length)]
     bounds = [(None, None)] * len(load) if box is None else box * (len(load) // 3)
-    result = linprog(load, A_ub=-a_v.T[np.flatnonzero(corner)], b_ub=support[np.flatnonzero(corner)],
-                     A_eq=a_v.T[slip], b_eq=-support[slip], bounds=bounds, method=LP_METHOD,
-                     options=LP_OPTIONS)
+    result = linprog(
+        load,
+        A_ub=-a_v.T[np.flatnonzero(corner)],
+        b_ub=support[np.flatnonzero(corner)],
+        A_eq=a_v.T[slip],
+        b_eq=-support[slip],
+        bounds=bounds,
+        method=LP_METHOD,
+        options=LP_OPTIONS,
+    )
     if result.status == STATUS_UNBOUNDED:
         return None
     if result.status == STATUS_INFEASIBLE:
@@ -153,13 +170,22 @@ def solve_kinematics(arch: RigidArch, placement: Placement, support_speed: float
     if result.status != 0:
         raise LimitError(f"kinematic LP failed at {placement.delta * 1e3:.3f} mm: {result.message}")
     rates = a_v.T @ result.x + support  # gap rates (2m) and slip rates (m) of every interface
-    gaps = np.column_stack([rates[:m], rates[m:2 * m]])
-    omega = np.concatenate([[_support_turn_rate(arch, "left", placement, support_speed)], result.x[2::3],
-                            [_support_turn_rate(arch, "right", placement, support_speed)]])
+    gaps = np.column_stack([rates[:m], rates[m : 2 * m]])
+    omega = np.concatenate(
+        [
+            [_support_turn_rate(arch, "left", placement, support_speed)],
+            result.x[2::3],
+            [_support_turn_rate(arch, "right", placement, support_speed)],
+        ]
+    )
     relative = omega[arch.right] - omega[arch.left]
     hinged = np.flatnonzero(np.abs(relative) > HINGE_RATE_FRACTION * max(np.abs(relative).max(), 1e-300))
     closed_rates = np.where(c.touching, gaps, np.inf)  # an open corner is no pivot
     pivots = tuple(Pivot(int(k), int(np.argmin(closed_rates[k]))) for k in hinged)
     closing = ~c.touching & (gaps < -CLOSING_RATE_FRACTION * np.abs(gaps).max())
-    return Mechanism(pivots, tuple(float(relative[k]) for k in hinged), float(result.fun),
-                     tuple(int(k) for k in np.flatnonzero(closing.any(axis=1))))
+    return Mechanism(
+        pivots,
+        tuple(float(relative[k]) for k in hinged),
+        float(result.fun),
+        tuple(int(k) for k in np.flatnonzero(closing.any(axis=1))),
+    )

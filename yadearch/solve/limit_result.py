@@ -105,13 +105,26 @@ def interface_forces(arch: RigidArch, statics: Statics) -> tuple[tuple[Interface
         p_i, p_e = c.point[k, INTRADOS], c.point[k, EXTRADOS]
         thrust = p_i + (n_e / total if total > 0 else 0.5) * (p_e - p_i)
         use = abs(statics.shear[k]) / (arch.tan_phi * total) if total > 0 else 0.0
-        forces.append(InterfaceForce(k + 1, n_i, n_e, float(statics.shear[k]),
-                                     (float(c.normal[k, 0]), float(c.normal[k, 1])),
-                                     mm(p_i), mm(p_e), mm(thrust), float(use)))
-    resultant = [statics.normal[k].sum() * c.normal[k] + statics.shear[k] * c.tangent[k]
-                 for k in (0, arch.n_joints - 1)]
-    return tuple(forces), {"left": tuple(float(v) for v in resultant[0]),
-                           "right": tuple(float(v) for v in -resultant[1])}
+        forces.append(
+            InterfaceForce(
+                k + 1,
+                n_i,
+                n_e,
+                float(statics.shear[k]),
+                (float(c.normal[k, 0]), float(c.normal[k, 1])),
+                mm(p_i),
+                mm(p_e),
+                mm(thrust),
+                float(use),
+            )
+        )
+    resultant = [
+        statics.normal[k].sum() * c.normal[k] + statics.shear[k] * c.tangent[k] for k in (0, arch.n_joints - 1)
+    ]
+    return tuple(forces), {
+        "left": tuple(float(v) for v in resultant[0]),
+        "right": tuple(float(v) for v in -resultant[1]),
+    }
 
 
 def write_result_json(result: LimitResult, case: ArchCase, path: Path) -> Path:

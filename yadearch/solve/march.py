@@ -47,8 +47,9 @@ MAX_SNAPS = 5  # successive snaps at one support displacement before giving up
 class March:
     """The incremental analysis of one arch; counts its LPs."""
 
-    def __init__(self, arch: RigidArch, step: float, tolerance: float, max_snap_mm: float,
-                 kn: float | None = None) -> None:
+    def __init__(
+        self, arch: RigidArch, step: float, tolerance: float, max_snap_mm: float, kn: float | None = None
+    ) -> None:
         self.arch, self.step, self.tolerance, self.n_lp = arch, step, tolerance, 0
         self.kn = kn  # joint stiffness (N/m^3) whose fold margins the joints keep (None: rigid blocks)
         self.folding = False  # the chain followed now opens a joint that folded (it may climb first)
@@ -75,8 +76,7 @@ class March:
         statics = self.statics(placement)
         if not statics.feasible or self.kn is None:
             return statics.feasible
-        return not any(self.snaps(placement, self.opening(placement, fold))
-                       for fold in self.folds(placement, statics))
+        return not any(self.snaps(placement, self.opening(placement, fold)) for fold in self.folds(placement, statics))
 
     def folds(self, placement: Placement, statics: Statics) -> list[Margin]:
         """The joints that fold at `placement`, given its admissible equilibrium `statics`
@@ -122,8 +122,9 @@ class March:
             offset = min(self.step, corner - state.delta)
             trial, capped = self.moved(state, mechanism, offset), False
             if trial is None:  # a corner closes, or the linkage straightens, within the step
-                offset = _bisect(lambda h: self.moved(state, mechanism, h) is not None, offset,
-                                 offset / 2**CLOSURE_BISECTIONS)
+                offset = _bisect(
+                    lambda h: self.moved(state, mechanism, h) is not None, offset, offset / 2**CLOSURE_BISECTIONS
+                )
                 trial, capped = self.moved(state, mechanism, offset), True
             if trial is not None and self.admissible(trial):
                 state = trial
@@ -132,16 +133,19 @@ class March:
                 elif capped:  # a corner has closed (or the linkage straightened): solve the mechanism again
                     new = self.switch(state, mechanism, 0.0)
                     if set(new.pivots) == set(mechanism.pivots):
-                        raise LimitError(f"at {units.to_mm(state.delta):.3f} mm the mechanism can go no "
-                                         "further (its linkage straightens) and no other follows")
+                        raise LimitError(
+                            f"at {units.to_mm(state.delta):.3f} mm the mechanism can go no "
+                            "further (its linkage straightens) and no other follows"
+                        )
                     mechanism = new
                 continue
-            offset = _bisect(lambda h: self.admissible(self.moved(state, mechanism, h)), offset,
-                             self.tolerance)
+            offset = _bisect(lambda h: self.admissible(self.moved(state, mechanism, h)), offset, self.tolerance)
             last = self.moved(state, mechanism, offset) if offset > 0 else state
             if last is None:  # the bisection accepted `offset`, so the linkage reaches it
-                raise RuntimeError(f"at {units.to_mm(state.delta + offset):.3f} mm the last admissible "
-                                   "placement found by bisection can no longer be reached")
+                raise RuntimeError(
+                    f"at {units.to_mm(state.delta + offset):.3f} mm the last admissible "
+                    "placement found by bisection can no longer be reached"
+                )
             past = self.moved(state, mechanism, offset + self.tolerance)
             read_at = self.moved(last, mechanism, units.mm(COLLAPSE_PROBE_MM)) or past
             chain = self.failure_chain(read_at, past)
@@ -168,8 +172,9 @@ class March:
                 return chain
         return self.kinematics(read_at, support_speed=0.0) if read_at is not None else None
 
-    def snap(self, start: Placement, chain: Mechanism | None,
-             pivots: tuple[Pivot, ...]) -> tuple[Placement | None, float, Mechanism | None]:
+    def snap(
+        self, start: Placement, chain: Mechanism | None, pivots: tuple[Pivot, ...]
+    ) -> tuple[Placement | None, float, Mechanism | None]:
         """Follow hinge-migrating chains at a fixed support from `start` until the turned-back hinge
         closes and equilibrium exists again: that placement, the largest block movement (mm) and the
         last chain; None for the placement if the arch finds no equilibrium so (collapse)."""
@@ -182,10 +187,13 @@ class March:
                 return None, 0.0, chain
             height = [potential(self.arch, p) for p in path]
             if _climbs(height, self.folding):
-                raise LimitError(f"at {units.to_mm(start.delta):.3f} mm the arch comes to rest on four "
-                                 "open hinges, which this analysis does not follow")
-            closed = np.flatnonzero((contacts(self.arch, path[-1]).touching
-                                     & ~contacts(self.arch, state).touching).any(axis=1))
+                raise LimitError(
+                    f"at {units.to_mm(start.delta):.3f} mm the arch comes to rest on four "
+                    "open hinges, which this analysis does not follow"
+                )
+            closed = np.flatnonzero(
+                (contacts(self.arch, path[-1]).touching & ~contacts(self.arch, state).touching).any(axis=1)
+            )
             if list(closed) != list(chain.closing):
                 return None, 0.0, chain  # the chain straightened, or closed another corner first
             state = path[-1]
@@ -224,18 +232,20 @@ class March:
         new = self.kinematics(state)
         if new is None or len(new.pivots) != 3:
             found = "none" if new is None else " ".join(p.label for p in new.pivots) or "none"
-            raise LimitError(f"at {units.to_mm(state.delta):.3f} mm the support is followed by no "
-                             f"three-hinge mechanism (hinges: {found})")
+            raise LimitError(
+                f"at {units.to_mm(state.delta):.3f} mm the support is followed by no "
+                f"three-hinge mechanism (hinges: {found})"
+            )
         old = set() if mechanism is None else set(mechanism.pivots)
         self.pivots = new.pivots
         d_mm = units.to_mm(state.delta)
         stopped = {p.label for p in old - set(new.pivots)}
         for k, record in enumerate(self.history):
             if record.to_mm is None and record.label in stopped:
-                self.history[k] = HingeRecord(record.interface, record.side, record.from_mm, d_mm,
-                                              record.jump_mm)
-        self.history += [HingeRecord(p.joint + 1, "IE"[p.side], d_mm, None, jump_mm)
-                         for p in new.pivots if p not in old]
+                self.history[k] = HingeRecord(record.interface, record.side, record.from_mm, d_mm, record.jump_mm)
+        self.history += [
+            HingeRecord(p.joint + 1, "IE"[p.side], d_mm, None, jump_mm) for p in new.pivots if p not in old
+        ]
         return new
 
 
@@ -264,8 +274,10 @@ def _reached(path: list[Placement | None], start: Placement) -> list[Placement]:
     """The placements along a snap, each of which must be reachable: the search only checked its end."""
     reached = [p for p in path if p is not None]
     if len(reached) != len(path):
-        raise LimitError(f"at {units.to_mm(start.delta):.3f} mm the snapping chain cannot pass some of its "
-                         "intermediate positions, which this analysis does not follow")
+        raise LimitError(
+            f"at {units.to_mm(start.delta):.3f} mm the snapping chain cannot pass some of its "
+            "intermediate positions, which this analysis does not follow"
+        )
     return reached
 
 
@@ -278,4 +290,3 @@ def _bisect(ok, high: float, width: float) -> float:
             break
         low, high = (mid, high) if ok(mid) else (low, mid)
     return low
-

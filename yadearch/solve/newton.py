@@ -83,32 +83,48 @@ class Solver:
         weight, or the joints' round-off where that is larger (stiff joints)."""
         return max(self.settings.tolerance * self.scale, self.resolution)
 
-    def state(self, u: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray,
-              gravity: float = 1.0) -> tuple[JointTangent, np.ndarray]:
+    def state(
+        self, u: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray, gravity: float = 1.0
+    ) -> tuple[JointTangent, np.ndarray]:
         """Joints at `u` and the free blocks' residual R = joint forces + weights (generalised)."""
         joints = self.arch.evaluate(u, u_before, shear_before)
         self.evaluations += 1
         residual = (self.arch.generalised_forces(joints) + self.arch.loads(gravity))[self.free]
         return joints, residual
 
-    def result(self, u: np.ndarray, joints: JointTangent, residual: np.ndarray, iterations: int,
-               start: np.ndarray, verdict: Verdict = Verdict.STABLE) -> Equilibrium:
+    def result(
+        self,
+        u: np.ndarray,
+        joints: JointTangent,
+        residual: np.ndarray,
+        iterations: int,
+        start: np.ndarray,
+        verdict: Verdict = Verdict.STABLE,
+    ) -> Equilibrium:
         stiffness = self.free_stiffness(joints)
-        return Equilibrium(u, joints, stiffness, float(np.abs(residual).max()) / self.scale, iterations,
-                           verdict, largest_move(u, start))
+        return Equilibrium(
+            u,
+            joints,
+            stiffness,
+            float(np.abs(residual).max()) / self.scale,
+            iterations,
+            verdict,
+            largest_move(u, start),
+        )
 
     def free_stiffness(self, joints: JointTangent) -> np.ndarray:
         """K on the free degrees of freedom (the voussoirs': a contiguous block of the whole K), in
         band storage (`solve.banded`)."""
-        return self.arch.band_stiffness(joints, banded.BAND)[:, self.free[0]: self.free[-1] + 1]
+        return self.arch.band_stiffness(joints, banded.BAND)[:, self.free[0] : self.free[-1] + 1]
 
     def _capped(self, d: np.ndarray) -> np.ndarray:
         """`d` (free dofs) shortened so that no block moves more than `max_step` in one iteration."""
         largest = float(np.abs(d).max())
         return d * min(1.0, self.settings.max_step / largest) if largest > 0.0 else d
 
-    def newton(self, u0: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray,
-               gravity: float = 1.0) -> Equilibrium | None:
+    def newton(
+        self, u0: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray, gravity: float = 1.0
+    ) -> Equilibrium | None:
         """Newton from `u0` (supports already placed); None if it does not converge."""
         u = u0.copy()
         joints, residual = self.state(u, u_before, shear_before, gravity)
@@ -135,8 +151,15 @@ class Solver:
             u, joints, residual = trial, trial_joints, trial_residual
         return None
 
-    def descend(self, u0: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray, runaway: float,
-                gravity: float = 1.0, iterations: int | None = None) -> Equilibrium:
+    def descend(
+        self,
+        u0: np.ndarray,
+        u_before: np.ndarray,
+        shear_before: np.ndarray,
+        runaway: float,
+        gravity: float = 1.0,
+        iterations: int | None = None,
+    ) -> Equilibrium:
         """Damped Newton steps (K + mu I) d = R from `u0`, a step kept only where it releases energy
         (the work of the residual forces along it, by the trapezoidal rule, is positive; then mu
         falls, else it rises): the arch creeps downhill, as the DEM's hold lets it. Ends in a stable

@@ -101,14 +101,21 @@ def path_settings(numerics: NumericsConfig, max_displacement_mm: float) -> PathS
     """The increments of a case's numerics (mm) as PathSettings in metres, the path ending at
     `max_displacement_mm`: one reading for the DEM and the static engine."""
     mm = units.mm
-    return PathSettings(first_increment=mm(numerics.first_increment_mm),
-                        max_increment=mm(max(numerics.max_increment_mm, numerics.first_increment_mm)),
-                        growth=numerics.increment_growth, tolerance=mm(numerics.du_tolerance_mm),
-                        max_displacement=mm(max_displacement_mm))
+    return PathSettings(
+        first_increment=mm(numerics.first_increment_mm),
+        max_increment=mm(max(numerics.max_increment_mm, numerics.first_increment_mm)),
+        growth=numerics.increment_growth,
+        tolerance=mm(numerics.du_tolerance_mm),
+        max_displacement=mm(max_displacement_mm),
+    )
 
 
-def follow_path(oracle: EquilibriumOracle, settings: PathSettings,
-                on_step: Callable[[PathStep], None] | None = None, start: float = 0.0) -> PathResult:
+def follow_path(
+    oracle: EquilibriumOracle,
+    settings: PathSettings,
+    on_step: Callable[[PathStep], None] | None = None,
+    start: float = 0.0,
+) -> PathResult:
     """Advance by increments from the equilibrium at `start` (the oracle's state; 0 after the
     self-weight) until the bracket of du is narrower than `settings.tolerance` or the support
     reaches `settings.max_displacement` in equilibrium.

@@ -32,8 +32,9 @@ def linkage_pose(case: ArchCase, at_mm: float, hinges: tuple[str, ...]) -> tuple
     return placement.centroids(arch), placement.rot
 
 
-def rigid_pose(case: ArchCase, at_mm: float, mirrored: bool = False,
-               compliant: bool = False) -> tuple[np.ndarray, np.ndarray]:
+def rigid_pose(
+    case: ArchCase, at_mm: float, mirrored: bool = False, compliant: bool = False
+) -> tuple[np.ndarray, np.ndarray]:
     """Every block's centroid (n_blocks, 2; m) and turn (rad) in the rigid analysis of `case` at
     `at_mm` of path; `mirrored`: on the keystone's other branch, solved as the mirror image (the
     other support moving the mirrored way) and reflected back; `compliant`: in the compliant-hinge

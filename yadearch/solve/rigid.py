@@ -83,17 +83,23 @@ def rigid_arch(case: ArchCase) -> RigidArch:
     joints = geometry.joints
     movement = case_movement(case, geometry)
     if movement.moves_rigidly:
-        raise LimitError("both supports translate alike (loading.moving_support 'both', "
-                         f"support_direction_deg {case.loading.support_direction_deg:g}): the arch "
-                         "is carried as one rigid body and cannot collapse")
+        raise LimitError(
+            "both supports translate alike (loading.moving_support 'both', "
+            f"support_direction_deg {case.loading.support_direction_deg:g}): the arch "
+            "is carried as one rigid body and cannot collapse"
+        )
     return RigidArch(
-        geometry=geometry, weight=weight, centroid0=centroid0,
-        left=np.array([j.left for j in joints]), right=np.array([j.right for j in joints]),
+        geometry=geometry,
+        weight=weight,
+        centroid0=centroid0,
+        left=np.array([j.left for j in joints]),
+        right=np.array([j.right for j in joints]),
         corner0=pivot_corners(case, geometry),
         normal0=np.array([j.normal for j in joints]),
         movement=movement,
         tan_phi=float(np.tan(units.radians(case.material.friction_deg))),
-        touch_tol=TOUCH_FRACTION * geometry.thickness)
+        touch_tol=TOUCH_FRACTION * geometry.thickness,
+    )
 
 
 def pivot_corners(case: ArchCase, geometry: ArchGeometry) -> np.ndarray:
@@ -172,8 +178,7 @@ class Pivot:
         return f"{self.joint + 1}{SIDES[self.side]}"
 
 
-def close_linkage(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ...],
-                  delta: float) -> Placement | None:
+def close_linkage(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ...], delta: float) -> Placement | None:
     """The placement at support displacement `delta` reached along a three-hinge mechanism, exactly.
 
     Blocks left of the first hinge move with the left support, those right of the third with the
@@ -184,8 +189,9 @@ def close_linkage(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
         raise ValueError(f"a three-hinge linkage needs three pivots, got {len(pivots)}")
     p1, p2, p3 = sorted(pivots)
     old = [_pivot_point(arch, placement, p) for p in (p1, p2, p3)]
-    left, right = (SupportStep.between(arch.movement.motion(side), placement.delta, delta)
-                   for side in ("left", "right"))
+    left, right = (
+        SupportStep.between(arch.movement.motion(side), placement.delta, delta) for side in ("left", "right")
+    )
     first, last = left.carry(old[0]), right.carry(old[2])
     middle = _middle_joint(old[0], old[1], old[2], first, last)
     if middle is None:
@@ -230,8 +236,7 @@ class SupportStep:
         shift[blocks] = self.carry(shift[blocks])
 
 
-def turn_four_bar(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ...],
-                  angle: float) -> Placement | None:
+def turn_four_bar(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ...], angle: float) -> Placement | None:
     """The placement reached at a fixed support along a four-hinge mechanism whose first segment
     turns by `angle` (rad) about the first pivot: the other two segments close the chain exactly."""
     if len(pivots) != 4:
@@ -244,7 +249,7 @@ def turn_four_bar(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ..
         return None
     rot, shift = placement.rot.copy(), placement.shift.copy()
     for k in range(3):
-        _move(rot, shift, slice(q[k].joint + 1, q[k + 1].joint + 1), old[k:k + 2], new[k:k + 2])
+        _move(rot, shift, slice(q[k].joint + 1, q[k + 1].joint + 1), old[k : k + 2], new[k : k + 2])
     return replace(placement, rot=rot, shift=shift)
 
 
@@ -252,8 +257,9 @@ def _pivot_point(arch: RigidArch, placement: Placement, pivot: Pivot) -> np.ndar
     return placement.place(arch.corner0[pivot.joint, pivot.side], arch.left[pivot.joint])
 
 
-def _middle_joint(first: np.ndarray, middle: np.ndarray, last: np.ndarray, new_first: np.ndarray,
-                  new_last: np.ndarray) -> np.ndarray | None:
+def _middle_joint(
+    first: np.ndarray, middle: np.ndarray, last: np.ndarray, new_first: np.ndarray, new_last: np.ndarray
+) -> np.ndarray | None:
     """Where the joint of two rigid bars first-middle and middle-last goes when their ends move to
     `new_first`, `new_last`: the intersection of two circles on the current branch (None: none)."""
     bar1, bar2 = np.linalg.norm(middle - first), np.linalg.norm(middle - last)
@@ -268,8 +274,7 @@ def _middle_joint(first: np.ndarray, middle: np.ndarray, last: np.ndarray, new_f
     return new_first + along * unit + branch * height * np.array([-unit[1], unit[0]])
 
 
-def _move(rot: np.ndarray, shift: np.ndarray, blocks: slice, old: list[np.ndarray],
-          new: list[np.ndarray]) -> None:
+def _move(rot: np.ndarray, shift: np.ndarray, blocks: slice, old: list[np.ndarray], new: list[np.ndarray]) -> None:
     """Move `blocks` rigidly so that the segment old[0]-old[1] they carry lands on new[0]-new[1]."""
     before, after = old[1] - old[0], new[1] - new[0]
     angle = float(np.arctan2(cross(before, after), np.dot(before, after)))

@@ -78,12 +78,16 @@ class StaticLoading:
         start = u.copy()
         for k in range(1, GRAVITY_STEPS + 1):
             pressed = self.solver.newton(u, start, shear, gravity=k / GRAVITY_STEPS) if k > 1 else None
-            found = pressed if pressed is not None and pressed.stable() else \
-                self.solver.descend(u, start, shear, SELFWEIGHT_FALL, gravity=k / GRAVITY_STEPS)
+            found = (
+                pressed
+                if pressed is not None and pressed.stable()
+                else self.solver.descend(u, start, shear, SELFWEIGHT_FALL, gravity=k / GRAVITY_STEPS)
+            )
             if found.verdict != Verdict.STABLE:
                 raise StaticEngineError(
                     f"{CANNOT_STAND} ({found.verdict} at {k}/{GRAVITY_STEPS} "
-                    f"of gravity, a block moved {1e3 * found.moved:.1f} mm)")
+                    f"of gravity, a block moved {1e3 * found.moved:.1f} mm)"
+                )
             u = found.u
         state = self._state(Stage.SELFWEIGHT, 0.0, found, np.zeros_like(shear), found.joints.forces)
         self.accepted = [state]
@@ -97,8 +101,9 @@ class StaticLoading:
         found = self._newton(self.accepted, target)
         if found is None:
             return self._march(target)
-        self._trial = self._state(Stage.EQUILIBRIUM, target, found, base.slip + found.joints.forces.plastic_slip,
-                                  found.joints.forces)
+        self._trial = self._state(
+            Stage.EQUILIBRIUM, target, found, base.slip + found.joints.forces.plastic_slip, found.joints.forces
+        )
         self._trial.move = found.moved
         return Verdict.STABLE
 
@@ -124,8 +129,7 @@ class StaticLoading:
             jumped = found is None
             if found is None:
                 last = history[-1]
-                found = self.solver.descend(self.predict(lam, history), last.u, last.forces.shear_force,
-                                            self.runaway)
+                found = self.solver.descend(self.predict(lam, history), last.u, last.forces.shear_force, self.runaway)
                 self.descents += 1
                 if found.verdict != Verdict.STABLE:
                     self.failures[target] = found
@@ -164,8 +168,10 @@ class StaticLoading:
         history = history[-PREDICTOR_POINTS:]
         lams = [s.lam for s in history]
         if len(set(lams)) == len(lams) >= 2:  # Lagrange extrapolation through the last states
-            weights = [np.prod([(target - lams[m]) / (lams[k] - lams[m]) for m in range(len(lams)) if m != k])
-                       for k in range(len(lams))]
+            weights = [
+                np.prod([(target - lams[m]) / (lams[k] - lams[m]) for m in range(len(lams)) if m != k])
+                for k in range(len(lams))
+            ]
             return self.arch.with_supports(sum(w * s.u for w, s in zip(weights, history)), target)
         moved = self.arch.with_supports(last.u, target)
         stiffness = self.arch.stiffness(self.solver.state(last.u, last.u, last.forces.shear_force)[0])
@@ -192,11 +198,9 @@ class StaticLoading:
         shear = base.forces.shear_force
         carried = self.solver.descend(failure.u, base.u, shear, COLLAPSE_RUNAWAYS * self.runaway)
         end = carried if carried.verdict != Verdict.STABLE else failure
-        return self._state(Stage.COLLAPSE, lam, end, base.slip + end.joints.forces.plastic_slip,
-                           end.joints.forces)
+        return self._state(Stage.COLLAPSE, lam, end, base.slip + end.joints.forces.plastic_slip, end.joints.forces)
 
-    def _state(self, stage: str, lam: float, found: Equilibrium, slip: np.ndarray,
-               forces: JointForces) -> StaticState:
+    def _state(self, stage: str, lam: float, found: Equilibrium, slip: np.ndarray, forces: JointForces) -> StaticState:
         return StaticState(stage, lam, found.u, forces, slip, float("nan"), found.iterations, found.residual)
 
     def _stiffness_of(self, state: StaticState) -> np.ndarray:

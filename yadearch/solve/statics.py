@@ -92,8 +92,15 @@ class StaticArch:
         """The joints at `u`, having moved from `u_before` where their shear forces were `shear_before`."""
         pos, rot = self.poses(u)
         pos_before, rot_before = self.poses(u_before)
-        return joint_tangent(self.table, self.law, np.ascontiguousarray(pos), np.ascontiguousarray(rot),
-                             np.ascontiguousarray(pos_before), np.ascontiguousarray(rot_before), shear_before)
+        return joint_tangent(
+            self.table,
+            self.law,
+            np.ascontiguousarray(pos),
+            np.ascontiguousarray(rot),
+            np.ascontiguousarray(pos_before),
+            np.ascontiguousarray(rot_before),
+            shear_before,
+        )
 
     def generalised_forces(self, joints: JointTangent) -> np.ndarray:
         """The joints' forces on every block as a generalised vector (torques / `length`)."""
@@ -121,10 +128,14 @@ def static_arch(case: ArchCase) -> StaticArch:
     profiles = imperfections.profiles if imperfections is not None else None
     unit_weight = units.density(case.material.density_g_per_cm3) * case.loading.gravity_m_per_s2
     return StaticArch(
-        geometry=geometry, table=joint_table(geometry, centroid0, profiles),
+        geometry=geometry,
+        table=joint_table(geometry, centroid0, profiles),
         law=JointLaw(stiffness.kn, stiffness.ks, stiffness.tan_friction, geometry.depth),
         weight=np.array([unit_weight * block_volume(b) for b in geometry.blocks]),
-        centroid0=centroid0, movement=case_movement(case, geometry), imperfections=imperfections)
+        centroid0=centroid0,
+        movement=case_movement(case, geometry),
+        imperfections=imperfections,
+    )
 
 
 def compile_kernels() -> None:

@@ -31,9 +31,15 @@ def _worker() -> subprocess.Popen:
     except queue.Empty:
         pass
     env = dict(os.environ, OMP_NUM_THREADS="1")  # one BLAS thread a worker: the cores go to the workers
-    worker = subprocess.Popen([sys.executable, "-m", "yadearch.statics.pool"], stdin=subprocess.PIPE,
-                              stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, env=env,
-                              start_new_session=True)  # a terminal's Ctrl-C stops the caller, which stops it
+    worker = subprocess.Popen(
+        [sys.executable, "-m", "yadearch.statics.pool"],
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.DEVNULL,
+        text=True,
+        env=env,
+        start_new_session=True,
+    )  # a terminal's Ctrl-C stops the caller, which stops it
     with _lock:
         _all.add(worker)
     return worker
@@ -42,8 +48,7 @@ def _worker() -> subprocess.Popen:
 def _answer(worker: subprocess.Popen, timeout_s: float | None) -> str:
     """The worker's one-line answer, waited for at most `timeout_s` (TimeoutExpired)."""
     box: list[str] = []
-    reader = threading.Thread(target=lambda: box.append(worker.stdout.readline() if worker.stdout else ""),
-                              daemon=True)
+    reader = threading.Thread(target=lambda: box.append(worker.stdout.readline() if worker.stdout else ""), daemon=True)
     reader.start()
     reader.join(timeout_s)
     if reader.is_alive():

@@ -20,10 +20,25 @@ from yadearch.solve.statics import StaticArch
 
 # numerics of the DEM that a static run does not use: time stepping, damping, holds, the support's speed
 DEM_ONLY_NUMERICS = (
-    "support_rate_mm_per_s", "rate_reference_kn_N_per_mm3", "support_acceleration_mm_per_s2",
-    "support_horizontal_acceleration_mm_per_s2", "damping", "hold_damping", "timestep_safety", "threads",
-    "contact_model", "equilibrium_tolerance", "gravity_ramp_periods", "selfweight_max_s", "hold_max_s",
-    "hold_min_s", "still_speed_mm_per_s", "settle_speed_mm_per_s", "series_every_steps", "max_steps")
+    "support_rate_mm_per_s",
+    "rate_reference_kn_N_per_mm3",
+    "support_acceleration_mm_per_s2",
+    "support_horizontal_acceleration_mm_per_s2",
+    "damping",
+    "hold_damping",
+    "timestep_safety",
+    "threads",
+    "contact_model",
+    "equilibrium_tolerance",
+    "gravity_ramp_periods",
+    "selfweight_max_s",
+    "hold_max_s",
+    "hold_min_s",
+    "still_speed_mm_per_s",
+    "settle_speed_mm_per_s",
+    "series_every_steps",
+    "max_steps",
+)
 
 
 @dataclass
@@ -44,9 +59,19 @@ class StaticRecords:
         self.iterations += state.iterations
         pos, rot = self.arch.poses(state.u)
         f = state.forces
-        snap, hinges = joint_snapshot(self.arch.geometry, self.arch.centroid0, pos, rot, f.point,
-                                      f.normal_force, f.shear_force, state.slip, self.arch.law.tan_friction,
-                                      self.arch.imperfections, self.hinge_threshold)
+        snap, hinges = joint_snapshot(
+            self.arch.geometry,
+            self.arch.centroid0,
+            pos,
+            rot,
+            f.point,
+            f.normal_force,
+            f.shear_force,
+            state.slip,
+            self.arch.law.tan_friction,
+            self.arch.imperfections,
+            self.hinge_threshold,
+        )
         delta_mm = units.to_mm(state.lam)
         common = {"stage": state.stage, "step": self.iterations, "delta_mm": delta_mm}
         self.series.append({**common, **self._series_columns(state, pos)})
@@ -67,8 +92,16 @@ class StaticRecords:
         free[1:-1] = True
         weights = np.column_stack([np.zeros(free.sum()), -self.arch.weight[free]])
         unbalanced = unbalanced_force(state.forces, free, weights)
-        return {"left_Rx_N": -force[0, 0], "left_Ry_N": -force[0, 1], "right_Rx_N": -force[-1, 0],
-                "right_Ry_N": -force[-1, 1], "crown_dx_mm": units.to_mm(crown_disp[0]),
-                "crown_dy_mm": units.to_mm(crown_disp[1]), "kinetic_J": 0.0, "unbalanced": unbalanced,
-                "max_block_speed_mm_per_s": 0.0, "iterations": state.iterations,
-                STIFFNESS_COLUMN: state.min_stiffness}
+        return {
+            "left_Rx_N": -force[0, 0],
+            "left_Ry_N": -force[0, 1],
+            "right_Rx_N": -force[-1, 0],
+            "right_Ry_N": -force[-1, 1],
+            "crown_dx_mm": units.to_mm(crown_disp[0]),
+            "crown_dy_mm": units.to_mm(crown_disp[1]),
+            "kinetic_J": 0.0,
+            "unbalanced": unbalanced,
+            "max_block_speed_mm_per_s": 0.0,
+            "iterations": state.iterations,
+            STIFFNESS_COLUMN: state.min_stiffness,
+        }

@@ -29,15 +29,17 @@ INTERRUPTED_EXIT = 130
 def criterion_text(case: ArchCase) -> str:
     """The static loading protocol and collapse criterion with this case's numbers."""
     n = case.numerics
-    return (f"Loading by support increments (first {n.first_increment_mm} mm, growing x{n.increment_growth} "
-            f"up to {n.max_increment_mm} mm after each equilibrium), each solved as a static equilibrium by "
-            "Newton's method from a predictor (the secant of the last two states), or, where Newton fails, "
-            "by a descent at the fixed support position that releases energy as a damped hold would. "
-            "Equilibrium: residual forces at round-off and the free blocks' tangent stiffness positive "
-            f"definite, no block further than {n.runaway_mm} mm from the predicted state. No equilibrium: "
-            f"the descent moves a block {n.runaway_mm} mm. After a failed increment the increment halves "
-            "(bisection); du = midpoint of the bracket [last support displacement in equilibrium; first "
-            f"without], narrowed to < {n.du_tolerance_mm} mm.")
+    return (
+        f"Loading by support increments (first {n.first_increment_mm} mm, growing x{n.increment_growth} "
+        f"up to {n.max_increment_mm} mm after each equilibrium), each solved as a static equilibrium by "
+        "Newton's method from a predictor (the secant of the last two states), or, where Newton fails, "
+        "by a descent at the fixed support position that releases energy as a damped hold would. "
+        "Equilibrium: residual forces at round-off and the free blocks' tangent stiffness positive "
+        f"definite, no block further than {n.runaway_mm} mm from the predicted state. No equilibrium: "
+        f"the descent moves a block {n.runaway_mm} mm. After a failed increment the increment halves "
+        "(bisection); du = midpoint of the bracket [last support displacement in equilibrium; first "
+        f"without], narrowed to < {n.du_tolerance_mm} mm."
+    )
 
 
 def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = print) -> RunSummary:
@@ -50,16 +52,20 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
     loading = StaticLoading(arch, path_settings(num, end_mm), units.mm(num.runaway_mm))
     records = StaticRecords(arch, num.hinge_rotation_mrad * 1e-3)
     unused = {key: getattr(num, key) for key in DEM_ONLY_NUMERICS}
-    log(f"[{case.name}] static engine: kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
-        f"{arch.n_blocks} blocks; not used by this engine: {', '.join(unused)}")
+    log(
+        f"[{case.name}] static engine: kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
+        f"{arch.n_blocks} blocks; not used by this engine: {', '.join(unused)}"
+    )
     solver_start = time.time()
     selfweight = _selfweight(case, loading, records, log)
 
     def progress(step: PathStep) -> None:
         wall = time.time() - wall0
-        log(f"[{case.name}] increment {units.to_mm(step.start):7.3f} -> {units.to_mm(step.target):7.3f} mm: "
+        log(
+            f"[{case.name}] increment {units.to_mm(step.start):7.3f} -> {units.to_mm(step.target):7.3f} mm: "
             f"{step.verdict} (iterations {loading.iterations}, {loading.iterations / wall:6.0f} it/s, "
-            f"wall {wall:.1f} s)")
+            f"wall {wall:.1f} s)"
+        )
 
     path = loading.follow(on_step=progress)
     for state in loading.accepted[1:]:
@@ -67,32 +73,62 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
     hinges_last = last_hinges if len(loading.accepted) > 1 else []
     hinges = records.add(loading.collapse_state(path.upper), label=Stage.COLLAPSE) if path.collapsed else hinges_last
     summary = RunSummary(
-        name=case.name, started=started, engine=STATIC, kn_N_per_mm3=case.interface.kn_N_per_mm3,
-        ks_N_per_mm3=case.ks_N_per_mm3, kn_effective_N_per_mm3=arch.law.kn / units.N_PER_MM3,
-        contact_model="joint", loading=loading_info(case.loading, end_mm), collapse_criterion=criterion_text(case),
-        unused_parameters=unused, selfweight=selfweight,
+        name=case.name,
+        started=started,
+        engine=STATIC,
+        kn_N_per_mm3=case.interface.kn_N_per_mm3,
+        ks_N_per_mm3=case.ks_N_per_mm3,
+        kn_effective_N_per_mm3=arch.law.kn / units.N_PER_MM3,
+        contact_model="joint",
+        loading=loading_info(case.loading, end_mm),
+        collapse_criterion=criterion_text(case),
+        unused_parameters=unused,
+        selfweight=selfweight,
         imperfections=arch.imperfections.summary() if arch.imperfections is not None else None,
-        **collapse_fields(path, arch.movement), increments=len(path.steps), equilibria=len(path.equilibria),
-        hinges_last_equilibrium=[h.to_json() for h in hinges_last], friction=records.friction,
-        relaxations={"runaway_mm": num.runaway_mm, "delta_mm": [units.to_mm(s.lam) for s in loading.accepted[1:]],
-                     "increment_mm": _increments_mm(loading),
-                     "move_mm": [units.to_mm(s.move) for s in loading.accepted[1:]]},
-        snaps=loading.snaps, descents=loading.descents,
+        **collapse_fields(path, arch.movement),
+        increments=len(path.steps),
+        equilibria=len(path.equilibria),
+        hinges_last_equilibrium=[h.to_json() for h in hinges_last],
+        friction=records.friction,
+        relaxations={
+            "runaway_mm": num.runaway_mm,
+            "delta_mm": [units.to_mm(s.lam) for s in loading.accepted[1:]],
+            "increment_mm": _increments_mm(loading),
+            "move_mm": [units.to_mm(s.move) for s in loading.accepted[1:]],
+        },
+        snaps=loading.snaps,
+        descents=loading.descents,
         hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges) if path.collapsed else (),
-        hinges_detail=[h.to_json() for h in hinges], iterations=loading.iterations, steps=loading.iterations,
-        joint_evaluations=loading.solver.evaluations, solver_wall_s=time.time() - solver_start,
-        wall_s=time.time() - wall0, **provenance(None))
-    write_run(out, case.to_toml(), records.series, records.joints, records.snapshots, summary,
-              arch.imperfections.table() if arch.imperfections is not None else None, records.states)
+        hinges_detail=[h.to_json() for h in hinges],
+        iterations=loading.iterations,
+        steps=loading.iterations,
+        joint_evaluations=loading.solver.evaluations,
+        solver_wall_s=time.time() - solver_start,
+        wall_s=time.time() - wall0,
+        **provenance(None),
+    )
+    write_run(
+        out,
+        case.to_toml(),
+        records.series,
+        records.joints,
+        records.snapshots,
+        summary,
+        arch.imperfections.table() if arch.imperfections is not None else None,
+        records.states,
+    )
     du = summary.du_mm
-    log(f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} "
+    log(
+        f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} "
         f"hinges={summary.hinge_labels or '-'} iterations={loading.iterations} "
-        f"wall={summary.wall_s:.2f} s -> {final_folder(out)}")
+        f"wall={summary.wall_s:.2f} s -> {final_folder(out)}"
+    )
     return summary
 
 
-def _selfweight(case: ArchCase, loading: StaticLoading, records: StaticRecords,
-                log: Callable[[str], None]) -> dict[str, Any]:
+def _selfweight(
+    case: ArchCase, loading: StaticLoading, records: StaticRecords, log: Callable[[str], None]
+) -> dict[str, Any]:
     """The self-weight state, recorded, and summary.json's `selfweight` entry."""
     try:
         state = loading.selfweight()
@@ -101,12 +137,19 @@ def _selfweight(case: ArchCase, loading: StaticLoading, records: StaticRecords,
     records.add(state, label=Stage.SELFWEIGHT)
     row = records.series[-1]
     weight = float(loading.arch.weight[1:-1].sum())
-    info = {"steps": loading.iterations, "unbalanced": row["unbalanced"], "arch_weight_N": weight,
-            "vertical_reaction_sum_N": row["left_Ry_N"] + row["right_Ry_N"],
-            "horizontal_reaction_sum_N": row["left_Rx_N"] + row["right_Rx_N"], "thrust_N": abs(row["left_Rx_N"]),
-            "crown_settlement_mm": -row["crown_dy_mm"]}
-    log(f"[{case.name}] self-weight equilibrium after {loading.iterations} iterations: reactions "
-        f"{info['vertical_reaction_sum_N']:.3f} N for a weight of {weight:.3f} N, thrust {info['thrust_N']:.3f} N")
+    info = {
+        "steps": loading.iterations,
+        "unbalanced": row["unbalanced"],
+        "arch_weight_N": weight,
+        "vertical_reaction_sum_N": row["left_Ry_N"] + row["right_Ry_N"],
+        "horizontal_reaction_sum_N": row["left_Rx_N"] + row["right_Rx_N"],
+        "thrust_N": abs(row["left_Rx_N"]),
+        "crown_settlement_mm": -row["crown_dy_mm"],
+    }
+    log(
+        f"[{case.name}] self-weight equilibrium after {loading.iterations} iterations: reactions "
+        f"{info['vertical_reaction_sum_N']:.3f} N for a weight of {weight:.3f} N, thrust {info['thrust_N']:.3f} N"
+    )
     return info
 
 
@@ -123,11 +166,13 @@ def main(argv: list[str] | None = None) -> int:
     out = Path(argv[1])
     out.mkdir(parents=True, exist_ok=True)
     with (out / LOG_FILE).open("w") as log_file:
+
         def log(line: str) -> None:
             stamped = f"{time.strftime('%H:%M:%S')} {line}"
             print(stamped, flush=True)
             log_file.write(stamped + "\n")
             log_file.flush()
+
         try:
             simulate_static(load_case(argv[0]), out, log)
         except YadearchError as exc:

@@ -68,9 +68,15 @@ class Calibration:
         write_text_atomically(path, json.dumps(self.to_json(), indent=2) + "\n")
 
 
-def calibrate(evaluate: Evaluator, target_du_mm: float, tolerance_mm: float = 0.5,
-              kn_min: float = 0.1, kn_max: float = 100.0, max_runs: int = 12,
-              log: Callable[[str], None] = lambda line: None) -> Calibration:
+def calibrate(
+    evaluate: Evaluator,
+    target_du_mm: float,
+    tolerance_mm: float = 0.5,
+    kn_min: float = 0.1,
+    kn_max: float = 100.0,
+    max_runs: int = 12,
+    log: Callable[[str], None] = lambda line: None,
+) -> Calibration:
     """The kn in [kn_min, kn_max] whose du is within `tolerance_mm` of `target_du_mm`.
 
     Evaluates both bracket ends first (together, so they can run in parallel) and raises
@@ -89,36 +95,54 @@ def calibrate(evaluate: Evaluator, target_du_mm: float, tolerance_mm: float = 0.
         found = evaluate(kns)
         for e in found:
             history.append(e)
-            log(f"run {len(history)}: kn = {e.kn_N_per_mm3:.6g} N/mm3 -> du = {e.du_mm:.2f} mm "
+            log(
+                f"run {len(history)}: kn = {e.kn_N_per_mm3:.6g} N/mm3 -> du = {e.du_mm:.2f} mm "
                 f"(target {target_du_mm:g} +- {tolerance_mm:g}), hinges {e.hinges or '-'}, "
-                f"{e.wall_s:.0f} s{' (reused)' if e.cached else ''}")
+                f"{e.wall_s:.0f} s{' (reused)' if e.cached else ''}"
+            )
         return found
 
     def within(e: Evaluation) -> bool:
         return abs(e.du_mm - target_du_mm) <= tolerance_mm
 
     low, high = run([kn_min, kn_max])
-    if not (within(low) or within(high)) and \
-            (low.du_mm - target_du_mm) * (high.du_mm - target_du_mm) > 0:
+    if not (within(low) or within(high)) and (low.du_mm - target_du_mm) * (high.du_mm - target_du_mm) > 0:
         raise YadearchError(
             f"target du {target_du_mm:g} mm is outside what kn in [{kn_min:g}, {kn_max:g}] N/mm3 "
-            f"reaches (du {low.du_mm:.2f} to {high.du_mm:.2f} mm); widen --kn-min/--kn-max")
+            f"reaches (du {low.du_mm:.2f} to {high.du_mm:.2f} mm); widen --kn-min/--kn-max"
+        )
     if within(low) or within(high):
         converged = True
     else:
         converged = _brent(run, within, target_du_mm, low, high, max_runs - len(history))
     best = min(history, key=lambda e: abs(e.du_mm - target_du_mm))
-    return Calibration(target_du_mm, tolerance_mm, (kn_min, kn_max), converged,
-                       best.kn_N_per_mm3, best.du_mm, best.hinges, best.hinge_labels,
-                       len(history), sum(1 for e in history if not e.cached), history)
+    return Calibration(
+        target_du_mm,
+        tolerance_mm,
+        (kn_min, kn_max),
+        converged,
+        best.kn_N_per_mm3,
+        best.du_mm,
+        best.hinges,
+        best.hinge_labels,
+        len(history),
+        sum(1 for e in history if not e.cached),
+        history,
+    )
 
 
 class _Converged(Exception):
     """Raised inside brentq's objective to stop as soon as du is within the tolerance."""
 
 
-def _brent(run: Callable[[list[float]], list[Evaluation]], within: Callable[[Evaluation], bool],
-           target: float, low: Evaluation, high: Evaluation, budget: int) -> bool:
+def _brent(
+    run: Callable[[list[float]], list[Evaluation]],
+    within: Callable[[Evaluation], bool],
+    target: float,
+    low: Evaluation,
+    high: Evaluation,
+    budget: int,
+) -> bool:
     """Brent's method on g(log kn) = du - target inside [low, high] (both already run); True once a
     run lands within the tolerance, False if the budget runs out or the bracket shrinks to nothing
     (du jumps there). kn is rounded to 6 significant figures, which names the run folders."""
@@ -133,8 +157,15 @@ def _brent(run: Callable[[list[float]], list[Evaluation]], within: Callable[[Eva
         return known[x].du_mm - target
 
     try:
-        brentq(g, math.log(low.kn_N_per_mm3), math.log(high.kn_N_per_mm3), xtol=1e-5,
-               maxiter=max(budget, 1), full_output=True, disp=False)
+        brentq(
+            g,
+            math.log(low.kn_N_per_mm3),
+            math.log(high.kn_N_per_mm3),
+            xtol=1e-5,
+            maxiter=max(budget, 1),
+            full_output=True,
+            disp=False,
+        )
     except _Converged:
         return True
     return False
@@ -145,8 +176,7 @@ def function_evaluator(du_of_kn: Callable[[float], float]) -> Evaluator:
     return lambda kns: [Evaluation(kn, float(du_of_kn(kn))) for kn in kns]
 
 
-def campaign_evaluator(base: ArchCase, runs_dir: Path, pool: Pool,
-                       timeout_s: float | None = None) -> Evaluator:
+def campaign_evaluator(base: ArchCase, runs_dir: Path, pool: Pool, timeout_s: float | None = None) -> Evaluator:
     """An evaluator that runs `base` at each kn as a campaign in `runs_dir` (finished runs reused);
     a failed run or one without collapse ends the calibration with its reason."""
     rows: list[dict[str, Any]] = []
@@ -159,12 +189,17 @@ def campaign_evaluator(base: ArchCase, runs_dir: Path, pool: Pool,
         for kn in kns:
             row = table[table["kn_N_per_mm3"] == kn].iloc[0]
             if row["status"] != "done" or not row["collapsed"]:
-                raise YadearchError(f"calibration run kn = {kn:g} N/mm3: {row['status']}, "
-                                    f"{row['reason']}")
-            found.append(Evaluation(kn, float(row["du_mm"]), row["hinges"],
-                                    {k: _int_or_none(row[k]) for k in
-                                     ("hinge_A", "hinge_B", "hinge_C", "hinge_D")},
-                                    float(row["wall_s"]), cached[kn]))
+                raise YadearchError(f"calibration run kn = {kn:g} N/mm3: {row['status']}, {row['reason']}")
+            found.append(
+                Evaluation(
+                    kn,
+                    float(row["du_mm"]),
+                    row["hinges"],
+                    {k: _int_or_none(row[k]) for k in ("hinge_A", "hinge_B", "hinge_C", "hinge_D")},
+                    float(row["wall_s"]),
+                    cached[kn],
+                )
+            )
         return found
 
     return evaluate

@@ -40,6 +40,7 @@ RESULTS_FILE = "results.csv"
 
 # ---------------------------------------------------------------- runs
 
+
 @dataclass
 class RunSpec:
     """One run of a campaign: its name, overrides, folder and case."""
@@ -93,8 +94,7 @@ def _check_same_case(spec: RunSpec) -> None:
     a parameter the run predates counts as the value that keeps its old behaviour)."""
     differences = case_differences(spec.folder, spec.case)
     if differences:
-        raise YadearchError(f"run folder {spec.folder} holds a different case ({differences[0]}); "
-                            "use another --out")
+        raise YadearchError(f"run folder {spec.folder} holds a different case ({differences[0]}); use another --out")
 
 
 BATCH_KEYS = ("description", "preset", "out")  # yade-batch table columns that are not case parameters
@@ -106,8 +106,9 @@ def batch_run(params: dict[str, Any]) -> tuple[ArchCase, Path]:
     overrides = {k: v for k, v in params.items() if k not in BATCH_KEYS}
     for key in overrides:
         check_parameter(key)
-    spec = plan(preset(str(params.get("preset", "set2"))), [overrides],
-                Path(str(params.get("out", "runs/yade-batch"))))[0]
+    spec = plan(
+        preset(str(params.get("preset", "set2"))), [overrides], Path(str(params.get("out", "runs/yade-batch")))
+    )[0]
     return spec.case, spec.folder
 
 
@@ -126,8 +127,10 @@ def execute(case: ArchCase, folder: Path, timeout_s: float | None) -> dict[str, 
 
 def record_failure(folder: Path, name: str, reason: str, wall_s: float) -> None:
     """Write failed.json: why the run failed and how long it took."""
-    write_text_atomically(folder / FAILED_FILE, json.dumps(
-        {"name": name, "status": "failed", "reason": reason, "wall_s": wall_s}, indent=2) + "\n")
+    write_text_atomically(
+        folder / FAILED_FILE,
+        json.dumps({"name": name, "status": "failed", "reason": reason, "wall_s": wall_s}, indent=2) + "\n",
+    )
 
 
 Task = Callable[[ArchCase, Path, float | None], dict[str, Any]]
@@ -136,13 +139,21 @@ Task = Callable[[ArchCase, Path, float | None], dict[str, Any]]
 def expected_cost(case: ArchCase) -> float:
     """A run's CPU cost relative to other runs, to start the longest first: its loading takes
     max settlement / (support speed x time step) steps, and the time step falls as 1/sqrt(kn)."""
-    return math.sqrt(case.interface.kn_N_per_mm3) * case.loading.max_support_displacement_mm \
-        / case.support_speed_mm_per_s
+    return (
+        math.sqrt(case.interface.kn_N_per_mm3) * case.loading.max_support_displacement_mm / case.support_speed_mm_per_s
+    )
 
 
-def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Pool,
-                 timeout_s: float | None = None, progress: bool = True,
-                 task: Task = execute, retry_failed: bool = True) -> pd.DataFrame:
+def run_campaign(
+    base: ArchCase,
+    rows: list[dict[str, Any]],
+    out: Path,
+    pool: Pool,
+    timeout_s: float | None = None,
+    progress: bool = True,
+    task: Task = execute,
+    retry_failed: bool = True,
+) -> pd.DataFrame:
     """Run every unfinished run of the campaign on `pool`, then write and return the results table.
 
     Finished folders are skipped; interrupted and new runs are (re)done, failed ones too unless
@@ -155,15 +166,15 @@ def run_campaign(base: ArchCase, rows: list[dict[str, Any]], out: Path, pool: Po
         return _run_planned(specs, out, pool, timeout_s, progress, task, retry_failed)
 
 
-def _run_planned(specs: list[RunSpec], out: Path, pool: Pool, timeout_s: float | None, progress: bool,
-                 task: Task, retry_failed: bool) -> pd.DataFrame:
+def _run_planned(
+    specs: list[RunSpec], out: Path, pool: Pool, timeout_s: float | None, progress: bool, task: Task, retry_failed: bool
+) -> pd.DataFrame:
     """`run_campaign` once its runs are planned and it holds the campaign folder's lock."""
     out.mkdir(parents=True, exist_ok=True)
     remove_stale_temporaries(out)  # left by a campaign killed while it wrote its tables
     write_run_table(specs, out)
     complete = {s.name for s in specs if is_complete(s.folder)}  # run names are unique (`plan`)
-    todo = [s for s in specs if s.name not in complete
-            and (retry_failed or not (s.folder / FAILED_FILE).is_file())]
+    todo = [s for s in specs if s.name not in complete and (retry_failed or not (s.folder / FAILED_FILE).is_file())]
     # Longest first: the last runs to start are short, so no core idles while one long run ends
     # the campaign (the 13-point kn sweep's stiffest points take 10-40x its softest).
     todo.sort(key=lambda spec: expected_cost(spec.case), reverse=True)
@@ -171,8 +182,14 @@ def _run_planned(specs: list[RunSpec], out: Path, pool: Pool, timeout_s: float |
         (spec.folder / FAILED_FILE).unlink(missing_ok=True)
     if task is execute and any(s.case.numerics.engine != STATIC_ENGINE for s in todo):
         check_yade_installed()  # a campaign of static runs needs no YADE
-    bar = tqdm(total=len(specs), initial=len(specs) - len(todo), unit="run", disable=not progress,
-               desc=out.name, dynamic_ncols=True)
+    bar = tqdm(
+        total=len(specs),
+        initial=len(specs) - len(todo),
+        unit="run",
+        disable=not progress,
+        desc=out.name,
+        dynamic_ncols=True,
+    )
     counts = {"done": len(complete), "failed": len(specs) - len(todo) - len(complete), "interrupted": 0}
     futures: dict[Future, RunSpec] = {}
     started = time.time()
@@ -199,8 +216,7 @@ def _run_planned(specs: list[RunSpec], out: Path, pool: Pool, timeout_s: float |
 
 def write_run_table(specs: list[RunSpec], out: Path) -> None:
     """runs.csv: what the campaign runs (name, folder, overrides), written before anything runs."""
-    table = pd.DataFrame([{RUN_COLUMN: s.name, "folder": s.folder.name, **_columns(s.overrides)}
-                          for s in specs])
+    table = pd.DataFrame([{RUN_COLUMN: s.name, "folder": s.folder.name, **_columns(s.overrides)} for s in specs])
     write_atomically(out / RUNS_FILE, lambda tmp: table.to_csv(tmp, index=False))
 
 
@@ -217,6 +233,7 @@ def _columns(overrides: dict[str, Any]) -> dict[str, Any]:
 
 # ---------------------------------------------------------------- results
 
+
 def label_hinges(summary: RunSummary, n_voussoirs: int) -> dict[str, int | None]:
     """The interface of each of the paper's hinges A-D in a run's collapse mechanism (None where
     the mechanism has no such hinge)."""
@@ -230,32 +247,49 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
     row: dict[str, Any] = {RUN_COLUMN: spec.name, **_columns(spec.overrides)}
     row.setdefault("kn_N_per_mm3", case.interface.kn_N_per_mm3)
     row.setdefault("n_voussoirs", case.geometry.n_voussoirs)
-    empty = {"du_mm": math.nan, "collapsed": None, "hinges": "", "mechanism": "", "hinge_A": None,
-             "hinge_B": None, "hinge_C": None, "hinge_D": None, "steps": None, "wall_s": math.nan,
-             "max_slip_mm": math.nan, "max_friction_use": math.nan, "friction_interface": None,
-             "engine": case.numerics.engine}
+    empty = {
+        "du_mm": math.nan,
+        "collapsed": None,
+        "hinges": "",
+        "mechanism": "",
+        "hinge_A": None,
+        "hinge_B": None,
+        "hinge_C": None,
+        "hinge_D": None,
+        "steps": None,
+        "wall_s": math.nan,
+        "max_slip_mm": math.nan,
+        "max_friction_use": math.nan,
+        "friction_interface": None,
+        "engine": case.numerics.engine,
+    }
     summary = finished_summary(spec.folder)
     if summary is not None:
         du = summary.du_mm
         friction = summary.friction
-        row.update(max_slip_mm=friction.get("max_slip_mm", math.nan),
-                   max_friction_use=friction.get("max_friction_use", math.nan),
-                   friction_interface=friction.get("friction_interface"))
-        row.update(du_mm=math.nan if du is None else du, collapsed=summary.collapsed,
-                   hinges=summary.hinge_labels,
-                   mechanism="-".join(h.side for h in summary.hinges_at_collapse),
-                   **label_hinges(summary, case.geometry.n_voussoirs),
-                   steps=summary.steps, wall_s=summary.wall_s, engine=summary.engine,
-                   status="done",
-                   reason="" if summary.collapsed else f"no collapse up to {_path_end_mm(summary, case):g} mm")
+        row.update(
+            max_slip_mm=friction.get("max_slip_mm", math.nan),
+            max_friction_use=friction.get("max_friction_use", math.nan),
+            friction_interface=friction.get("friction_interface"),
+        )
+        row.update(
+            du_mm=math.nan if du is None else du,
+            collapsed=summary.collapsed,
+            hinges=summary.hinge_labels,
+            mechanism="-".join(h.side for h in summary.hinges_at_collapse),
+            **label_hinges(summary, case.geometry.n_voussoirs),
+            steps=summary.steps,
+            wall_s=summary.wall_s,
+            engine=summary.engine,
+            status="done",
+            reason="" if summary.collapsed else f"no collapse up to {_path_end_mm(summary, case):g} mm",
+        )
     elif (spec.folder / FAILED_FILE).is_file():
         failed = json.loads((spec.folder / FAILED_FILE).read_text())
-        row.update(empty, wall_s=failed.get("wall_s", math.nan), status="failed",
-                   reason=failed.get("reason", ""))
+        row.update(empty, wall_s=failed.get("wall_s", math.nan), status="failed", reason=failed.get("reason", ""))
     else:
         row.update(empty, status="pending", reason="not run yet (interrupted?)")
-    row["folder"] = str(spec.folder.relative_to(out)) if spec.folder.is_relative_to(out) \
-        else str(spec.folder)
+    row["folder"] = str(spec.folder.relative_to(out)) if spec.folder.is_relative_to(out) else str(spec.folder)
     return row
 
 
@@ -267,7 +301,6 @@ def _path_end_mm(summary: RunSummary, case: ArchCase) -> float:
 def results_table(specs: list[RunSpec], out: Path) -> pd.DataFrame:
     """The tidy results table of a campaign (one row per run), read from its run folders."""
     table = pd.DataFrame([run_row(s, out) for s in specs])
-    for column in ("n_voussoirs", "hinge_A", "hinge_B", "hinge_C", "hinge_D", "steps",
-                   "friction_interface"):
+    for column in ("n_voussoirs", "hinge_A", "hinge_B", "hinge_C", "hinge_D", "steps", "friction_interface"):
         table[column] = table[column].astype("Int64")
     return table

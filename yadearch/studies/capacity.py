@@ -27,9 +27,24 @@ def directions(step_deg: float = DIRECTION_STEP_DEG) -> tuple[float, ...]:
 
 DIRECTIONS_DEG = directions()
 DIRECTION_PARAMETER = "support_direction_deg"
-MAP_COLUMNS = ("set", "direction_deg", "du_mm", "du_x_mm", "du_y_mm", "hinges", "mechanism",
-               "du_rigid_mm", "rigid_hinges", "du_over_rigid", "du_rigid_other_mm", "rigid_other_hinges",
-               "steps", "wall_s", "status", "folder")
+MAP_COLUMNS = (
+    "set",
+    "direction_deg",
+    "du_mm",
+    "du_x_mm",
+    "du_y_mm",
+    "hinges",
+    "mechanism",
+    "du_rigid_mm",
+    "rigid_hinges",
+    "du_over_rigid",
+    "du_rigid_other_mm",
+    "rigid_other_hinges",
+    "steps",
+    "wall_s",
+    "status",
+    "folder",
+)
 
 
 @dataclass(frozen=True)
@@ -59,11 +74,21 @@ def map_table(name: str, results: pd.DataFrame, rigid: dict[float, RigidLimit]) 
         direction = float(getattr(run, DIRECTION_PARAMETER))
         du = float(run.du_mm) if run.status == "done" and pd.notna(run.du_mm) else math.nan
         du_x, du_y = du_components(du, direction)
-        rows.append({
-            "set": name, "direction_deg": direction, "du_mm": du, "du_x_mm": du_x, "du_y_mm": du_y,
-            "hinges": run.hinges if isinstance(run.hinges, str) else "",
-            "mechanism": run.mechanism if isinstance(run.mechanism, str) else "",
-            "steps": run.steps, "wall_s": run.wall_s, "status": run.status, "folder": run.folder})
+        rows.append(
+            {
+                "set": name,
+                "direction_deg": direction,
+                "du_mm": du,
+                "du_x_mm": du_x,
+                "du_y_mm": du_y,
+                "hinges": run.hinges if isinstance(run.hinges, str) else "",
+                "mechanism": run.mechanism if isinstance(run.mechanism, str) else "",
+                "steps": run.steps,
+                "wall_s": run.wall_s,
+                "status": run.status,
+                "folder": run.folder,
+            }
+        )
     return with_rigid(pd.DataFrame(rows), rigid)
 
 
@@ -75,7 +100,8 @@ def with_rigid(table: pd.DataFrame, rigid: dict[float, RigidLimit]) -> pd.DataFr
         du_rigid_mm=[math.nan if r.du_mm is None else r.du_mm for r in limits],
         rigid_hinges=[r.hinges for r in limits],
         du_rigid_other_mm=[math.nan if r.other_du_mm is None else r.other_du_mm for r in limits],
-        rigid_other_hinges=[r.other_hinges for r in limits])
+        rigid_other_hinges=[r.other_hinges for r in limits],
+    )
     table["du_over_rigid"] = table["du_mm"] / table["du_rigid_mm"]
     return table[list(MAP_COLUMNS)]
 
@@ -95,8 +121,10 @@ def map_markdown(table: pd.DataFrame) -> list[str]:
     """The capacity map as a Markdown table: one row a direction, one column group a set."""
     sets = list(dict.fromkeys(table["set"]))
     head = "| direction (deg) | " + " | ".join(f"{s} du (mm) | {s} (du_x, du_y) (mm) | {s} hinges" for s in sets)
-    lines = [head + " | rigid du (mm) | rigid hinges | rigid du, other branch (mm) | its hinges |",
-             "|---" * (1 + 3 * len(sets) + 4) + "|"]
+    lines = [
+        head + " | rigid du (mm) | rigid hinges | rigid du, other branch (mm) | its hinges |",
+        "|---" * (1 + 3 * len(sets) + 4) + "|",
+    ]
     for direction, rows in table.groupby("direction_deg", sort=False):
         cells = [f"{direction:g}"]
         for name in sets:
@@ -107,8 +135,12 @@ def map_markdown(table: pd.DataFrame) -> list[str]:
             r = row.iloc[0]
             cells += [f"{r.du_mm:.2f}", f"({r.du_x_mm:.1f}, {r.du_y_mm:.1f})", r.hinges or "-"]
         first = rows.iloc[0]
-        cells += [_mm(first.du_rigid_mm), first.rigid_hinges or "-",
-                  _mm(first.du_rigid_other_mm), first.rigid_other_hinges or "-"]
+        cells += [
+            _mm(first.du_rigid_mm),
+            first.rigid_hinges or "-",
+            _mm(first.du_rigid_other_mm),
+            first.rigid_other_hinges or "-",
+        ]
         lines.append("| " + " | ".join(cells) + " |")
     return lines
 

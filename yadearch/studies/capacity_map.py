@@ -34,19 +34,30 @@ def rigid_limits(case: ArchCase, direction_values: tuple[float, ...]) -> dict[fl
             result = limit_analysis(case.with_overrides({DIRECTION_PARAMETER: direction}))
         except YadearchError:
             continue
-        limits[direction] = RigidLimit(result.du_rigid_mm, " ".join(result.collapse_hinges), result.mirror_du_rigid_mm,
-                                       " ".join(result.mirror_collapse_hinges or ()))
+        limits[direction] = RigidLimit(
+            result.du_rigid_mm,
+            " ".join(result.collapse_hinges),
+            result.mirror_du_rigid_mm,
+            " ".join(result.mirror_collapse_hinges or ()),
+        )
     return limits
 
 
-def run_capacity(case: ArchCase, out: Path, pool: Pool, step_deg: float = 15.0,
-                 rigid: bool | dict[float, RigidLimit] = True, timeout_s: float | None = None) -> pd.DataFrame:
+def run_capacity(
+    case: ArchCase,
+    out: Path,
+    pool: Pool,
+    step_deg: float = 15.0,
+    rigid: bool | dict[float, RigidLimit] = True,
+    timeout_s: float | None = None,
+) -> pd.DataFrame:
     """du of `case` every `step_deg` from spreading to closing (a resumable campaign in OUT/runs), the
     rigid limit beside it (`rigid`: computed, False: none, or given by direction); writes
     OUT/capacity.csv, capacity.md and capacity_map.pdf/.png and returns the table."""
     values = directions(step_deg)
-    results = run_campaign(case, [{DIRECTION_PARAMETER: d} for d in values], Path(out) / RUNS, pool,
-                           timeout_s=timeout_s)
+    results = run_campaign(
+        case, [{DIRECTION_PARAMETER: d} for d in values], Path(out) / RUNS, pool, timeout_s=timeout_s
+    )
     limits = rigid if isinstance(rigid, dict) else rigid_limits(case, values) if rigid else {}
     table = map_table(case.name, results, limits)
     write_csv_atomically(Path(out) / TABLE, table)
@@ -58,11 +69,18 @@ def run_capacity(case: ArchCase, out: Path, pool: Pool, step_deg: float = 15.0,
 def capacity_markdown(case: ArchCase, table: pd.DataFrame, step_deg: float, figure: str) -> str:
     """capacity.md: the map of `case` (kn, engine) every `step_deg`, its table and figure."""
     failed = table[table["status"] != "done"]
-    lines = [f"# Capacity map of {case.name}", "",
-             f"du against the direction of the {case.loading.moving_support} support's movement every {step_deg:g}° "
-             f"(0 = spreading, -90 = settlement, -180 = closing), kn = {case.interface.kn_N_per_mm3:g} N/mm³, "
-             f"{case.numerics.engine} engine, beside the rigid-block limit of each direction (its other branch "
-             "where the keystone's two joints tie; docs/movements.md).", "",
-             *map_markdown(table), "", f"![capacity map]({figure}.png)", ""]
+    lines = [
+        f"# Capacity map of {case.name}",
+        "",
+        f"du against the direction of the {case.loading.moving_support} support's movement every {step_deg:g}° "
+        f"(0 = spreading, -90 = settlement, -180 = closing), kn = {case.interface.kn_N_per_mm3:g} N/mm³, "
+        f"{case.numerics.engine} engine, beside the rigid-block limit of each direction (its other branch "
+        "where the keystone's two joints tie; docs/movements.md).",
+        "",
+        *map_markdown(table),
+        "",
+        f"![capacity map]({figure}.png)",
+        "",
+    ]
     lines += [f"- {r.direction_deg:g}°: {r.status} (see runs/{r.folder})." for r in failed.itertuples(index=False)]
     return "\n".join(lines) + "\n"

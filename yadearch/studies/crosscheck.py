@@ -73,14 +73,19 @@ def run_pairs(pairs: list[Pair], out: Path, jobs: int) -> pd.DataFrame:
     with ProcessPoolExecutor(max_workers=jobs) as pool:
         statics = list(pool.map(_run_static, [p.case for p in pairs], folders))
         rows = [comparison_row(pair, static) for pair, static in zip(pairs, statics)]
-        differ = [k for k, row in enumerate(rows) if row["static_du_mm"] is not None and
-                  not (row["within_1pct"] and row["same_hinges"])]
+        differ = [
+            k
+            for k, row in enumerate(rows)
+            if row["static_du_mm"] is not None and not (row["within_1pct"] and row["same_hinges"])
+        ]
         cases = [pairs[k].case.with_overrides({"numerics.runaway_mm": SNAP_RUNAWAY_MM}) for k in differ]
         again = list(pool.map(_run_static, cases, [out / pairs[k].group / f"{pairs[k].name}_snaps" for k in differ]))
     for k, static in zip(differ, again):
         survived = static if isinstance(static, RunSummary) else None
-        rows[k].update(snaps_survived_du_mm=survived.du_mm if survived else None,
-                       snaps_survived_hinges=survived.hinge_labels if survived else "")
+        rows[k].update(
+            snaps_survived_du_mm=survived.du_mm if survived else None,
+            snaps_survived_hinges=survived.hinge_labels if survived else "",
+        )
     return pd.DataFrame(rows)
 
 
@@ -94,17 +99,28 @@ def comparison_row(pair: Pair, static_run: RunSummary | str) -> dict[str, Any]:
     both_failed = bool(dem_error) and bool(static_error)  # e.g. neither stands under its weight
     snaps = static.snaps or []
     return {
-        "group": pair.group, "run": pair.name, "kn_N_per_mm3": num.interface.kn_N_per_mm3,
-        "direction_deg": num.loading.support_direction_deg, "seed": num.imperfections.seed,
-        "dem_du_mm": dem_du, "static_du_mm": static_du, "difference_pct": diff,
+        "group": pair.group,
+        "run": pair.name,
+        "kn_N_per_mm3": num.interface.kn_N_per_mm3,
+        "direction_deg": num.loading.support_direction_deg,
+        "seed": num.imperfections.seed,
+        "dem_du_mm": dem_du,
+        "static_du_mm": static_du,
+        "difference_pct": diff,
         "within_1pct": bool(abs(diff) <= AGREEMENT_PCT) if math.isfinite(diff) else both_failed,
-        "dem_hinges": dem_hinges, "static_hinges": static_hinges,
+        "dem_hinges": dem_hinges,
+        "static_hinges": static_hinges,
         "same_hinges": same_hinge_set(dem_hinges, static_hinges) or both_failed,
-        "dem_verdict": dem.collapse_verdict, "static_verdict": static.collapse_verdict,
-        "static_snaps": len(snaps), "largest_snap_mm": max((s["move_mm"] for s in snaps), default=0.0),
-        "dem_wall_s": dem.wall_s, "static_wall_s": static.wall_s,
-        "dem_error": dem_error, "static_error": static_error,
-        "snaps_survived_du_mm": None, "snaps_survived_hinges": "",
+        "dem_verdict": dem.collapse_verdict,
+        "static_verdict": static.collapse_verdict,
+        "static_snaps": len(snaps),
+        "largest_snap_mm": max((s["move_mm"] for s in snaps), default=0.0),
+        "dem_wall_s": dem.wall_s,
+        "static_wall_s": static.wall_s,
+        "dem_error": dem_error,
+        "static_error": static_error,
+        "snaps_survived_du_mm": None,
+        "snaps_survived_hinges": "",
     }
 
 
@@ -117,49 +133,74 @@ def _split(run: RunSummary | str) -> tuple[RunSummary, str]:
 
 def dem_folders(root: Path, pattern: str) -> list[Path]:
     """Finished DEM run folders under `root` matching `pattern`, in name order."""
-    return sorted(f for f in root.glob(pattern) if f.is_dir() and (f / "case.toml").is_file()
-                  and (f / SUMMARY_FILE).is_file() and is_complete(f))
+    return sorted(
+        f
+        for f in root.glob(pattern)
+        if f.is_dir() and (f / "case.toml").is_file() and (f / SUMMARY_FILE).is_file() and is_complete(f)
+    )
 
 
 def crosscheck_markdown(table: pd.DataFrame, limits: pd.DataFrame, wall_s: float, jobs: int) -> str:
     """crosscheck.md: the agreement per group, every pair outside 1 % or with other hinges, and the
     stiff end against the limit analyses."""
-    lines = ["# Static engine against the DEM", "",
-             "Every committed DEM run solved again by the static engine (same case, `numerics.engine = "
-             "'static'`): du and the hinges at collapse. Regenerate with "
-             "`.venv/bin/python scripts/static_crosscheck.py` (table: `crosscheck.csv`).", "",
-             f"{len(table)} pairs; the static runs took {wall_s:.0f} s on {jobs} processes "
-             f"(the DEM runs {table['dem_wall_s'].sum() / 3600:.1f} h of one core).", "",
-             "| group | runs | within 1 % | same hinges (±1 interface) | largest |difference| (%) | "
-             "static wall (s, median) | DEM wall (s, median) |", "|---|---|---|---|---|---|---|"]
+    lines = [
+        "# Static engine against the DEM",
+        "",
+        "Every committed DEM run solved again by the static engine (same case, `numerics.engine = "
+        "'static'`): du and the hinges at collapse. Regenerate with "
+        "`.venv/bin/python scripts/static_crosscheck.py` (table: `crosscheck.csv`).",
+        "",
+        f"{len(table)} pairs; the static runs took {wall_s:.0f} s on {jobs} processes "
+        f"(the DEM runs {table['dem_wall_s'].sum() / 3600:.1f} h of one core).",
+        "",
+        "| group | runs | within 1 % | same hinges (±1 interface) | largest |difference| (%) | "
+        "static wall (s, median) | DEM wall (s, median) |",
+        "|---|---|---|---|---|---|---|",
+    ]
     for group, rows in table.groupby("group", sort=False):
-        lines.append(f"| {group} | {len(rows)} | {int(rows['within_1pct'].sum())} | {int(rows['same_hinges'].sum())} | "
-                     f"{rows['difference_pct'].abs().max():.2f} | {rows['static_wall_s'].median():.2f} | "
-                     f"{rows['dem_wall_s'].median():.0f} |")
+        lines.append(
+            f"| {group} | {len(rows)} | {int(rows['within_1pct'].sum())} | {int(rows['same_hinges'].sum())} | "
+            f"{rows['difference_pct'].abs().max():.2f} | {rows['static_wall_s'].median():.2f} | "
+            f"{rows['dem_wall_s'].median():.0f} |"
+        )
     outside = table[~table["within_1pct"] | ~table["same_hinges"]]
     lines += ["", "## Pairs outside 1 % or with other hinges", ""]
     if outside.empty:
         lines.append("None.")
     else:
-        lines += ["| group | run | kn (N/mm³) | DEM du (mm) | static du (mm) | difference (%) | DEM hinges | "
-                  "static hinges | static snaps (largest, mm) | static, snaps to 5 mm survived: du (mm), hinges |",
-                  "|---|---|---|---|---|---|---|---|---|---|"]
+        lines += [
+            "| group | run | kn (N/mm³) | DEM du (mm) | static du (mm) | difference (%) | DEM hinges | "
+            "static hinges | static snaps (largest, mm) | static, snaps to 5 mm survived: du (mm), hinges |",
+            "|---|---|---|---|---|---|---|---|---|---|",
+        ]
         for r in outside.itertuples():
-            lines.append(f"| {r.group} | {r.run} | {r.kn_N_per_mm3:g} | {_mm(r.dem_du_mm)} | {_mm(r.static_du_mm)} | "
-                         f"{r.difference_pct:+.2f} | {r.dem_hinges} | {r.static_hinges} | "
-                         f"{r.static_snaps} ({r.largest_snap_mm:.2f}) | {_mm(r.snaps_survived_du_mm)}, "
-                         f"{r.snaps_survived_hinges} |")
+            lines.append(
+                f"| {r.group} | {r.run} | {r.kn_N_per_mm3:g} | {_mm(r.dem_du_mm)} | {_mm(r.static_du_mm)} | "
+                f"{r.difference_pct:+.2f} | {r.dem_hinges} | {r.static_hinges} | "
+                f"{r.static_snaps} ({r.largest_snap_mm:.2f}) | {_mm(r.snaps_survived_du_mm)}, "
+                f"{r.snaps_survived_hinges} |"
+            )
     for r in table[table["dem_error"].astype(bool)].itertuples():
-        lines += ["", f"{r.run}: neither engine finds an equilibrium (counted as agreement). DEM: {r.dem_error}; "
-                  f"static: {r.static_error or 'ran'}"]
+        lines += [
+            "",
+            f"{r.run}: neither engine finds an equilibrium (counted as agreement). DEM: {r.dem_error}; "
+            f"static: {r.static_error or 'ran'}",
+        ]
     if not limits.empty:
-        lines += ["", "## Toward stiff joints: the compliant march and the rigid limit", "",
-                  "| run | kn (N/mm³) | static du (mm) | compliant march (mm) | difference (%) | rigid du (mm) | "
-                  "difference (%) |", "|---|---|---|---|---|---|---|"]
+        lines += [
+            "",
+            "## Toward stiff joints: the compliant march and the rigid limit",
+            "",
+            "| run | kn (N/mm³) | static du (mm) | compliant march (mm) | difference (%) | rigid du (mm) | "
+            "difference (%) |",
+            "|---|---|---|---|---|---|---|",
+        ]
         for r in limits.itertuples():
             rigid = r.rigid_du_mm if isinstance(r.rigid_du_mm, float) and math.isfinite(r.rigid_du_mm) else None
-            lines.append(f"| {r.run} | {r.kn_N_per_mm3:g} | {_mm(r.static_du_mm)} | {_mm(r.compliant_du_mm)} | "
-                         f"{_pct(r.static_du_mm, r.compliant_du_mm)} | {_mm(rigid)} | {_pct(r.static_du_mm, rigid)} |")
+            lines.append(
+                f"| {r.run} | {r.kn_N_per_mm3:g} | {_mm(r.static_du_mm)} | {_mm(r.compliant_du_mm)} | "
+                f"{_pct(r.static_du_mm, r.compliant_du_mm)} | {_mm(rigid)} | {_pct(r.static_du_mm, rigid)} |"
+            )
     return "\n".join(lines) + "\n"
 
 

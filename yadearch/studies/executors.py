@@ -46,8 +46,10 @@ def dask_pool(scheduler: str) -> Iterator[Pool]:
     try:
         from distributed import Client
     except ImportError:
-        raise YadearchError("--scheduler needs dask.distributed: install the 'cluster' extra "
-                            "(pip install 'yadearch[cluster]') or Debian's python3-distributed") from None
+        raise YadearchError(
+            "--scheduler needs dask.distributed: install the 'cluster' extra "
+            "(pip install 'yadearch[cluster]') or Debian's python3-distributed"
+        ) from None
     try:
         client = Client(scheduler, timeout="20s")
     except (OSError, TimeoutError) as exc:

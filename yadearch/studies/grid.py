@@ -31,8 +31,9 @@ def check_campaign_size(runs: int) -> None:
     """Refuse a campaign of more than MAX_RUNS runs (or the bound set in YADEARCH_MAX_RUNS)."""
     bound = int(os.environ.get(MAX_RUNS_VARIABLE, MAX_RUNS))
     if runs > bound:
-        raise CampaignError(f"campaign of {runs} runs exceeds the bound of {bound}; set {MAX_RUNS_VARIABLE} to "
-                            "raise it")
+        raise CampaignError(
+            f"campaign of {runs} runs exceeds the bound of {bound}; set {MAX_RUNS_VARIABLE} to raise it"
+        )
 
 
 def parse_scalar(text: str) -> Any:
@@ -60,8 +61,11 @@ def parse_values(spec: str) -> list[Any]:
     if len(parts) != 4 or parts[2] not in ("log", "lin"):
         raise YadearchError(f"range {spec!r} must read start:stop:log:n or start:stop:lin:n")
     start, stop, count = parse_scalar(parts[0]), parse_scalar(parts[1]), parse_scalar(parts[3])
-    if not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in (start, stop)) \
-            or not isinstance(count, int) or count < 1:
+    if (
+        not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in (start, stop))
+        or not isinstance(count, int)
+        or count < 1
+    ):
         raise YadearchError(f"range {spec!r}: start and stop must be finite numbers and n a positive integer")
     check_campaign_size(count)
     if parts[2] == "log":
@@ -110,8 +114,10 @@ def read_table(path: str | Path) -> list[dict[str, Any]]:
         for key in reader.fieldnames or []:
             if key != RUN_COLUMN:
                 check_parameter(key)
-        rows = [{k: (v if k == RUN_COLUMN else parse_scalar(v)) for k, v in row.items()
-                 if v is not None and v.strip()} for row in reader]
+        rows = [
+            {k: (v if k == RUN_COLUMN else parse_scalar(v)) for k, v in row.items() if v is not None and v.strip()}
+            for row in reader
+        ]
     if not rows:
         raise YadearchError(f"campaign table {str(path)!r} has no rows")
     return rows
@@ -142,4 +148,4 @@ def run_tag(overrides: dict[str, Any]) -> str:
     if safe == tag and len(tag) <= MAX_TAG:
         return tag
     digest = hashlib.sha1(json.dumps(overrides, sort_keys=True, default=str).encode()).hexdigest()[:8]
-    return f"{safe[:MAX_TAG - 9]}-{digest}"
+    return f"{safe[: MAX_TAG - 9]}-{digest}"

@@ -46,21 +46,57 @@ class Kind:
 # Amplitudes: from below what a careful maker achieves to beyond what the DEM study found for set 1
 # (docs/validation.md gives the measured sizes these are read against).
 KINDS = (
-    Kind("bump", "faces not flat (out-of-flatness, random per joint)", {"face_bump_sd_mm": 1.0},
-         (0.05, 0.1, 0.14, 0.18, 0.22, 0.26), "mm (sd)"),
-    Kind("edge", "worn edges (rounded, size varying between edges by a quarter)",
-         {"edge_radius_mm": 1.0, "edge_radius_sd_mm": 0.25}, (1.0, 2.0, 2.5, 3.0, 4.0), "mm (mean radius)"),
-    Kind("angle", "faces not parallel (random per joint)", {"face_angle_sd_mrad": 1.0},
-         (2.0, 4.0, 8.0, 16.0, 32.0), "mrad (sd)"),
-    Kind("offset", "voussoirs set off their neighbours (random per voussoir)", {"voussoir_offset_sd_mm": 1.0},
-         (0.25, 0.5, 1.0, 1.5, 2.0, 3.0), "mm (sd)"),
-    Kind("dimensions", "voussoirs longer or shorter and thicker or thinner (random per voussoir)",
-         {"voussoir_length_sd_mm": 1.0, "voussoir_thickness_sd_mm": 1.0}, (0.05, 0.1, 0.2, 0.3, 0.4), "mm (sd)"),
-    Kind("combined", "all of them at once: bumps 0.05, edges 0.75 (sd 0.19), angles 2 mrad, offsets, lengths "
-         "and thicknesses 0.15 mm at amplitude 1",
-         {"face_bump_sd_mm": 0.05, "edge_radius_mm": 0.75, "edge_radius_sd_mm": 0.1875, "face_angle_sd_mrad": 2.0,
-          "voussoir_offset_sd_mm": 0.15, "voussoir_length_sd_mm": 0.15, "voussoir_thickness_sd_mm": 0.15},
-         (0.5, 1.0, 1.5, 2.0, 3.0), "x the pattern"),
+    Kind(
+        "bump",
+        "faces not flat (out-of-flatness, random per joint)",
+        {"face_bump_sd_mm": 1.0},
+        (0.05, 0.1, 0.14, 0.18, 0.22, 0.26),
+        "mm (sd)",
+    ),
+    Kind(
+        "edge",
+        "worn edges (rounded, size varying between edges by a quarter)",
+        {"edge_radius_mm": 1.0, "edge_radius_sd_mm": 0.25},
+        (1.0, 2.0, 2.5, 3.0, 4.0),
+        "mm (mean radius)",
+    ),
+    Kind(
+        "angle",
+        "faces not parallel (random per joint)",
+        {"face_angle_sd_mrad": 1.0},
+        (2.0, 4.0, 8.0, 16.0, 32.0),
+        "mrad (sd)",
+    ),
+    Kind(
+        "offset",
+        "voussoirs set off their neighbours (random per voussoir)",
+        {"voussoir_offset_sd_mm": 1.0},
+        (0.25, 0.5, 1.0, 1.5, 2.0, 3.0),
+        "mm (sd)",
+    ),
+    Kind(
+        "dimensions",
+        "voussoirs longer or shorter and thicker or thinner (random per voussoir)",
+        {"voussoir_length_sd_mm": 1.0, "voussoir_thickness_sd_mm": 1.0},
+        (0.05, 0.1, 0.2, 0.3, 0.4),
+        "mm (sd)",
+    ),
+    Kind(
+        "combined",
+        "all of them at once: bumps 0.05, edges 0.75 (sd 0.19), angles 2 mrad, offsets, lengths "
+        "and thicknesses 0.15 mm at amplitude 1",
+        {
+            "face_bump_sd_mm": 0.05,
+            "edge_radius_mm": 0.75,
+            "edge_radius_sd_mm": 0.1875,
+            "face_angle_sd_mrad": 2.0,
+            "voussoir_offset_sd_mm": 0.15,
+            "voussoir_length_sd_mm": 0.15,
+            "voussoir_thickness_sd_mm": 0.15,
+        },
+        (0.5, 1.0, 1.5, 2.0, 3.0),
+        "x the pattern",
+    ),
 )
 
 
@@ -72,8 +108,11 @@ PLAUSIBLE = {
     "edge": ((0.5, 2.0), "the paper's 'less sharp corners'; 3 mm would round off a quarter of a 24 mm face"),
     "angle": ((1.0, 8.0), "manual milling to about +-0.1 mm across a 24 mm face is about 4 mrad"),
     "offset": ((0.1, 0.5), "voussoirs placed by hand against their neighbours"),
-    "dimensions": ((0.1, 0.5), "manual milling and the casting's shrinkage (above 0.45 mm the errors, summed "
-                   "along the arch, move a joint half-way to its neighbour: no arch)"),
+    "dimensions": (
+        (0.1, 0.5),
+        "manual milling and the casting's shrinkage (above 0.45 mm the errors, summed "
+        "along the arch, move a joint half-way to its neighbour: no arch)",
+    ),
     "combined": ((1.0, 2.5), "each part within its own plausible range from amplitude 1 to 2.5"),
 }
 
@@ -83,8 +122,9 @@ def kind_rows(kind: Kind, samples: int, levels: tuple[float, ...] | None = None)
     rows = []
     for level in levels or kind.levels:
         for i in range(samples):
-            rows.append({**kind.overrides(level), SEED_KEY: FIRST_SEED + i,
-                         RUN_COLUMN: f"a{level:g}_s{FIRST_SEED + i}"})
+            rows.append(
+                {**kind.overrides(level), SEED_KEY: FIRST_SEED + i, RUN_COLUMN: f"a{level:g}_s{FIRST_SEED + i}"}
+            )
     return rows
 
 
@@ -103,10 +143,19 @@ def level_summary(kind: Kind, table: pd.DataFrame) -> pd.DataFrame:
     rows = []
     for level, group in table.groupby(LEVEL, sort=True):
         stats = du_statistics(group["du_stat_mm"])
-        rows.append({"kind": kind.name, LEVEL: level, "samples": stats["n"],
-                     "cannot_stand": int((group["du_stat_mm"] == 0.0).sum()),
-                     "median_du_mm": stats["median"], "median_low_mm": stats["median_low"],
-                     "median_high_mm": stats["median_high"], "low_du_mm": stats["low"], "high_du_mm": stats["high"]})
+        rows.append(
+            {
+                "kind": kind.name,
+                LEVEL: level,
+                "samples": stats["n"],
+                "cannot_stand": int((group["du_stat_mm"] == 0.0).sum()),
+                "median_du_mm": stats["median"],
+                "median_low_mm": stats["median_low"],
+                "median_high_mm": stats["median_high"],
+                "low_du_mm": stats["low"],
+                "high_du_mm": stats["high"],
+            }
+        )
     return pd.DataFrame(rows)
 
 
@@ -123,8 +172,9 @@ class Match:
 def matching_amplitude(summary: pd.DataFrame, table: pd.DataFrame, target_du_mm: float, perfect_du_mm: float) -> Match:
     """Where the median du (linear between levels, from the perfect arch at amplitude 0) reaches
     `target_du_mm`, with the bootstrap interval of the seeds' paired medians."""
-    rows = [{"level": 0.0, "median_du_mm": perfect_du_mm}] + \
-        [{"level": r[LEVEL], "median_du_mm": r.median_du_mm} for _, r in summary.iterrows()]
+    rows = [{"level": 0.0, "median_du_mm": perfect_du_mm}] + [
+        {"level": r[LEVEL], "median_du_mm": r.median_du_mm} for _, r in summary.iterrows()
+    ]
     amplitude = amplitude_for(rows, target_du_mm)
     if math.isnan(amplitude):
         return Match(math.nan, math.nan, math.nan)
@@ -148,7 +198,12 @@ def hinge_table(table: pd.DataFrame, level: float, observed: dict[str, int]) -> 
     for label, interface in observed.items():
         found = frequencies[frequencies["hinge"] == label].sort_values("count", ascending=False)
         near = int(((group[f"hinge_{label}"].dropna() - interface).abs() <= 1).sum())
-        rows.append({"hinge": label, "experiment": interface,
-                     "within_one": near / len(group) if len(group) else math.nan,
-                     "most_frequent": ", ".join(f"{r.interface} ({r.share:.0%})" for r in found.head(3).itertuples())})
+        rows.append(
+            {
+                "hinge": label,
+                "experiment": interface,
+                "within_one": near / len(group) if len(group) else math.nan,
+                "most_frequent": ", ".join(f"{r.interface} ({r.share:.0%})" for r in found.head(3).itertuples()),
+            }
+        )
     return pd.DataFrame(rows)

@@ -63,8 +63,9 @@ def modal_hinges(table: pd.DataFrame) -> str:
     frequencies = hinge_frequencies(table)
     parts = []
     for label, rows in frequencies.groupby("hinge", sort=True):
-        listed = ", ".join(f"{r.interface} ({r.share:.0%})" for r in
-                           rows.sort_values("count", ascending=False).head(2).itertuples())
+        listed = ", ".join(
+            f"{r.interface} ({r.share:.0%})" for r in rows.sort_values("count", ascending=False).head(2).itertuples()
+        )
         parts.append(f"{label} {listed}")
     return "; ".join(parts) or "—"
 
@@ -76,10 +77,19 @@ def level_rows(study: Study, table: pd.DataFrame, sweep: pd.DataFrame) -> list[d
         group = table[np.isclose(table[study.parameter].astype(float), level)]
         done = group[group["status"] == "done"]
         stats = du_statistics(done["du_mm"])
-        rows.append({"study": study.name, "parameter": study.parameter, "level": level,
-                     "samples": stats["n"], "median_du_mm": stats["median"], "low_du_mm": stats["low"],
-                     "high_du_mm": stats["high"], "equivalent_kn_N_per_mm3": equivalent_kn(stats["median"], sweep),
-                     "hinges": modal_hinges(done)})
+        rows.append(
+            {
+                "study": study.name,
+                "parameter": study.parameter,
+                "level": level,
+                "samples": stats["n"],
+                "median_du_mm": stats["median"],
+                "low_du_mm": stats["low"],
+                "high_du_mm": stats["high"],
+                "equivalent_kn_N_per_mm3": equivalent_kn(stats["median"], sweep),
+                "hinges": modal_hinges(done),
+            }
+        )
     return rows
 
 
@@ -104,8 +114,7 @@ def paired_du(tables: list[pd.DataFrame], parameter: str) -> pd.DataFrame:
 
 def _level_medians(wide: pd.DataFrame) -> list[dict[str, Any]]:
     """Median du of each level (column) of a seed-by-level table, with the number of seeds."""
-    return [{"level": float(a), "samples": len(wide), "median_du_mm": float(wide[a].median())}
-            for a in wide.columns]
+    return [{"level": float(a), "samples": len(wide), "median_du_mm": float(wide[a].median())} for a in wide.columns]
 
 
 def paired_medians(tables: list[pd.DataFrame], parameter: str) -> list[dict[str, Any]]:
@@ -113,8 +122,9 @@ def paired_medians(tables: list[pd.DataFrame], parameter: str) -> list[dict[str,
     return _level_medians(paired_du(tables, parameter))
 
 
-def paired_amplitude_interval(tables: list[pd.DataFrame], parameter: str, target_du_mm: float,
-                              resamples: int = BOOTSTRAP_RESAMPLES, seed: int = 0) -> tuple[float, float]:
+def paired_amplitude_interval(
+    tables: list[pd.DataFrame], parameter: str, target_du_mm: float, resamples: int = BOOTSTRAP_RESAMPLES, seed: int = 0
+) -> tuple[float, float]:
     """A 95 % bootstrap interval (seeds resampled with replacement) of the amplitude at which the
     paired median du reaches `target_du_mm`; resamples that do not bracket it are left out."""
     wide = paired_du(tables, parameter)
@@ -131,12 +141,17 @@ def paired_amplitude_interval(tables: list[pd.DataFrame], parameter: str, target
 
 def table_markdown(rows: list[dict[str, Any]], unit: str) -> list[str]:
     """A study's levels as a Markdown table."""
-    lines = [f"| amplitude ({unit}) | samples | median du (mm) | 5-95 % (mm) | equivalent kn (N/mm³) "
-             "| hinges (interface, share) |", "|---|---|---|---|---|---|"]
+    lines = [
+        f"| amplitude ({unit}) | samples | median du (mm) | 5-95 % (mm) | equivalent kn (N/mm³) "
+        "| hinges (interface, share) |",
+        "|---|---|---|---|---|---|",
+    ]
     for r in rows:
         kn = r["equivalent_kn_N_per_mm3"]
-        lines.append(f"| {r['level']:g} | {r['samples']} | {r['median_du_mm']:.2f} | {r['low_du_mm']:.2f}-"
-                     f"{r['high_du_mm']:.2f} | {'—' if math.isnan(kn) else f'{kn:.3g}'} | {r['hinges']} |")
+        lines.append(
+            f"| {r['level']:g} | {r['samples']} | {r['median_du_mm']:.2f} | {r['low_du_mm']:.2f}-"
+            f"{r['high_du_mm']:.2f} | {'—' if math.isnan(kn) else f'{kn:.3g}'} | {r['hinges']} |"
+        )
     return lines
 
 
@@ -162,8 +177,7 @@ def hinge_shift(tracks: list[HingeTrack], label: str, n_interfaces: int) -> tupl
         return None
     formed, final = track.hinge_at(track.formed_record).interface, track.interface
     crown = (n_interfaces + 1) / 2
-    way = STAYED if formed == final else TOWARD_CROWN if abs(final - crown) < abs(formed - crown) \
-        else TOWARD_SPRINGING
+    way = STAYED if formed == final else TOWARD_CROWN if abs(final - crown) < abs(formed - crown) else TOWARD_SPRINGING
     return formed, final, way
 
 

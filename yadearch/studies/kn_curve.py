@@ -89,8 +89,7 @@ def hinge_moves(table: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def bisect_jumps(base: ArchCase, table: pd.DataFrame, out: Path, pool: Pool,
-                 log=print) -> pd.DataFrame:
+def bisect_jumps(base: ArchCase, table: pd.DataFrame, out: Path, pool: Pool, log=print) -> pd.DataFrame:
     """Bisect every jump of `table` until located to BRACKET_RATIO; returns `table` with every run
     added (one campaign a round, out/bisectN)."""
     for number in range(1, MAX_ROUNDS + 1):
@@ -115,16 +114,29 @@ def jumps_table(table: pd.DataFrame) -> pd.DataFrame:
         b, a = jump.below, jump.above
         standing = not _stands(b)
         moved = [f"{h[-1]} {_at(b[h])} -> {_at(a[h])}" for h in ("hinge_A", "hinge_B") if _differs(b[h], a[h])]
-        what = "the arch starts to stand under its own weight" if standing else ", ".join(moved) or \
-            (STEEP if a["du_mm"] > b["du_mm"] else DROP)
+        what = (
+            "the arch starts to stand under its own weight"
+            if standing
+            else ", ".join(moved) or (STEEP if a["du_mm"] > b["du_mm"] else DROP)
+        )
         last = rows[-1] if rows else None
         if what == STEEP and last is not None and last["what"] == STEEP and last["kn_above"] == b[KN]:
-            last.update(kn_above=a[KN], bracket_ratio=a[KN] / last["kn_below"], du_above_mm=a["du_mm"],
-                        hinges_above=a["hinges"])
+            last.update(
+                kn_above=a[KN], bracket_ratio=a[KN] / last["kn_below"], du_above_mm=a["du_mm"], hinges_above=a["hinges"]
+            )
             continue
-        rows.append({"kn_below": b[KN], "kn_above": a[KN], "bracket_ratio": jump.ratio,
-                     "du_below_mm": math.nan if standing else b["du_mm"], "du_above_mm": a["du_mm"],
-                     "hinges_below": "" if standing else b["hinges"], "hinges_above": a["hinges"], "what": what})
+        rows.append(
+            {
+                "kn_below": b[KN],
+                "kn_above": a[KN],
+                "bracket_ratio": jump.ratio,
+                "du_below_mm": math.nan if standing else b["du_mm"],
+                "du_above_mm": a["du_mm"],
+                "hinges_below": "" if standing else b["hinges"],
+                "hinges_above": a["hinges"],
+                "what": what,
+            }
+        )
     return pd.DataFrame(rows)
 
 

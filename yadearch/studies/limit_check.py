@@ -15,12 +15,14 @@ from yadearch.solve.limit_result import LimitResult
 from yadearch.studies.robustness import same_hinge_set
 
 HINGE_SHIFT = 1  # interfaces a DEM hinge may sit from the rigid one
-TABLE_HEADER = ("| run | direction (deg) or motion | kn (N/mm3) | rigid branch | du (mm) "
-                "| du_rigid, every snap survived (mm) "
-                "| du_rigid, a snap beyond the run's runaway distance collapses (mm) | du / du_rigid - 1 "
-                "| DEM mechanism at the last equilibrium | rigid mechanism at its limit | DEM hinges at collapse "
-                "| rigid collapse chain | du_compliant at the run's kn (mm) | du / du_compliant - 1 "
-                "| within tolerance |")
+TABLE_HEADER = (
+    "| run | direction (deg) or motion | kn (N/mm3) | rigid branch | du (mm) "
+    "| du_rigid, every snap survived (mm) "
+    "| du_rigid, a snap beyond the run's runaway distance collapses (mm) | du / du_rigid - 1 "
+    "| DEM mechanism at the last equilibrium | rigid mechanism at its limit | DEM hinges at collapse "
+    "| rigid collapse chain | du_compliant at the run's kn (mm) | du / du_compliant - 1 "
+    "| within tolerance |"
+)
 
 
 def check(folder: Path, tolerance: float) -> tuple[str, bool]:
@@ -31,17 +33,23 @@ def check(folder: Path, tolerance: float) -> tuple[str, bool]:
     case = load_case(folder / CASE_FILE)
     summary = read_summary(folder)
     mechanism = hinge_list(summary.hinges_last_equilibrium)
-    branches = [_branch(case, "direct"), _branch(case, "mirrored")] if has_other_branch(case) \
-        else [_branch(case, "-")]
+    branches = [_branch(case, "direct"), _branch(case, "mirrored")] if has_other_branch(case) else [_branch(case, "-")]
     survived, limit, rigid, chain, name = min(branches, key=lambda b: _distance(mechanism, b[2]))
-    compliant = limit_analysis(mirror_image(case) if name == "mirrored" else case,
-                               max_snap_mm=case.numerics.runaway_mm, mirror=False, compliant=True)
+    compliant = limit_analysis(
+        mirror_image(case) if name == "mirrored" else case,
+        max_snap_mm=case.numerics.runaway_mm,
+        mirror=False,
+        compliant=True,
+    )
     du, du_rigid = summary.du_mm, limit.du_rigid_mm
     loading = case.loading
-    movement = f"{loading.support_direction_deg:g}" if loading.support_motion == "translation" \
-        else loading.support_motion
-    head = (f"| {folder.name} | {movement} | {case.interface.kn_N_per_mm3:g} | {name} "
-            f"| {_mm(du)} | {_mm(survived.du_rigid_mm)} | {_mm(du_rigid)}")
+    movement = (
+        f"{loading.support_direction_deg:g}" if loading.support_motion == "translation" else loading.support_motion
+    )
+    head = (
+        f"| {folder.name} | {movement} | {case.interface.kn_N_per_mm3:g} | {name} "
+        f"| {_mm(du)} | {_mm(survived.du_rigid_mm)} | {_mm(du_rigid)}"
+    )
     hinges = f"{mechanism} | {rigid} | {summary.hinge_labels} | {chain}"
     if du is None or du_rigid is None:
         return f"{head} | - | {hinges} | {_mm(compliant.du_rigid_mm)} | - | no |", False
@@ -83,7 +91,6 @@ def _distance(a: str, b: str) -> float:
 
 def _mm(value: float | None) -> str:
     return "-" if value is None else f"{value:.2f}"
-
 
 
 def limit_check_table(runs: list[Path], tolerance: float) -> tuple[str, bool]:

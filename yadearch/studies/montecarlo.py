@@ -34,22 +34,27 @@ def sample_rows(samples: int, seed: int, axes: dict[str, list[Any]] | None = Non
         raise CampaignError(f"samples must be >= 1, got {samples}")
     check_campaign_size(samples * (len(grid(axes)) if axes else 1))
     rows = []
-    for level in (grid(axes) if axes else [{}]):
+    for level in grid(axes) if axes else [{}]:
         tag = run_tag(level) if level else ""
         for i in range(samples):
-            rows.append({**level, SEED_KEY: seed + i,
-                         RUN_COLUMN: f"{tag}_s{seed + i}" if tag else f"s{seed + i}"})
+            rows.append({**level, SEED_KEY: seed + i, RUN_COLUMN: f"{tag}_s{seed + i}" if tag else f"s{seed + i}"})
     return rows
 
 
-def run_montecarlo(base: ArchCase, out: Path, pool: Pool, samples: int, seed: int,
-                   axes: dict[str, list[Any]] | None = None, timeout_s: float | None = None,
-                   progress: bool = True) -> pd.DataFrame:
+def run_montecarlo(
+    base: ArchCase,
+    out: Path,
+    pool: Pool,
+    samples: int,
+    seed: int,
+    axes: dict[str, list[Any]] | None = None,
+    timeout_s: float | None = None,
+    progress: bool = True,
+) -> pd.DataFrame:
     """Run (or resume) the campaign into `out`, then write montecarlo.csv (results with each
     sample's imperfection summary) and montecarlo.md; returns the table."""
     out = Path(out)
-    results = run_campaign(base, sample_rows(samples, seed, axes), out, pool, timeout_s=timeout_s,
-                           progress=progress)
+    results = run_campaign(base, sample_rows(samples, seed, axes), out, pool, timeout_s=timeout_s, progress=progress)
     return write_montecarlo(results, out, axes)
 
 
@@ -79,20 +84,29 @@ def levels(table: pd.DataFrame, axes: dict[str, list[Any]] | None) -> list[str]:
 def summary_markdown(table: pd.DataFrame, level_columns: list[str]) -> str:
     """The campaign as Markdown: du's distribution (per amplitude level) and the hinge positions."""
     low, high = (f"{q:.0%}" for q in BAND)
-    lines = ["# Monte Carlo of imperfect arches", "",
-             f"{int((table['status'] == 'done').sum())} of {len(table)} samples done"
-             f" ({int((table['status'] == 'failed').sum())} failed).", "",
-             f"| {' | '.join(level_columns) + ' | ' if level_columns else ''}samples | median du (mm) "
-             f"| median's {MEDIAN_CONFIDENCE:.0%} interval (mm) | {low}-{high} band (mm) | mean (mm) |",
-             "|" + "---|" * (len(level_columns) + 5)]
-    keys = table[level_columns].drop_duplicates().sort_values(level_columns).itertuples(index=False) \
-        if level_columns else [()]
+    lines = [
+        "# Monte Carlo of imperfect arches",
+        "",
+        f"{int((table['status'] == 'done').sum())} of {len(table)} samples done"
+        f" ({int((table['status'] == 'failed').sum())} failed).",
+        "",
+        f"| {' | '.join(level_columns) + ' | ' if level_columns else ''}samples | median du (mm) "
+        f"| median's {MEDIAN_CONFIDENCE:.0%} interval (mm) | {low}-{high} band (mm) | mean (mm) |",
+        "|" + "---|" * (len(level_columns) + 5),
+    ]
+    keys = (
+        table[level_columns].drop_duplicates().sort_values(level_columns).itertuples(index=False)
+        if level_columns
+        else [()]
+    )
     for key in keys:
         group = table[(table[level_columns] == tuple(key)).all(axis=1)] if level_columns else table
         stats = du_statistics(group.loc[group["status"] == "done", "du_mm"])
         prefix = "".join(f"{value:g} | " for value in key)
-        lines.append(f"| {prefix}{stats['n']} | {stats['median']:.2f} | {stats['median_low']:.2f}-"
-                     f"{stats['median_high']:.2f} | {stats['low']:.2f}-{stats['high']:.2f} | {stats['mean']:.2f} |")
+        lines.append(
+            f"| {prefix}{stats['n']} | {stats['median']:.2f} | {stats['median_low']:.2f}-"
+            f"{stats['median_high']:.2f} | {stats['low']:.2f}-{stats['high']:.2f} | {stats['mean']:.2f} |"
+        )
     lines += ["", "Hinge positions (interface: share of the samples):", ""]
     frequencies = hinge_frequencies(table)
     for label in PAPER_LABELS:

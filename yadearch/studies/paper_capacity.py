@@ -50,22 +50,30 @@ def paper_rigid_limits() -> dict[float, RigidLimit]:
 def paper_capacity_report(table: pd.DataFrame) -> str:
     """The Markdown report of the paper's capacity map."""
     settlement = table[table["direction_deg"] == -90.0]
-    lines = ["# Capacity map: du against the direction of the support movement", "",
-             "The paper's arch (55 voussoirs) under a movement of its right support in a fixed direction "
-             "(degrees from +x: 0 = spreading, -90 = settlement, -180 = closing), for both voussoir sets "
-             "(their kn, `set1` and `set2` presets), beside the rigid-block limit analysis of each direction. "
-             "du is the displacement along the path; (du_x, du_y) are its components. Where the movement is "
-             "not its own mirror image (every direction but spreading and closing), the rigid arch of an odd "
-             "number of voussoirs has two branches: its keystone's two joints tie for the crown hinge, the "
-             "rigid march breaks the tie toward the left one, and the other branch is shown beside it "
-             "(docs/movements.md). Regenerate: `.venv/bin/python scripts/capacity_map.py` (the rigid columns "
-             "alone: `--rigid-only`).", "",
-             *map_markdown(table), "",
-             f"![capacity map]({POLAR_FIGURE}.png)", "",
-             "The force of the arch on the moving support along its path at the equilibrium states: "
-             "positive when the arch pushes the support along its movement (the support holds it back), "
-             "negative when the arch resists the movement (closing):", "",
-             f"![reactions]({REACTION_FIGURE}.png)", ""]
+    lines = [
+        "# Capacity map: du against the direction of the support movement",
+        "",
+        "The paper's arch (55 voussoirs) under a movement of its right support in a fixed direction "
+        "(degrees from +x: 0 = spreading, -90 = settlement, -180 = closing), for both voussoir sets "
+        "(their kn, `set1` and `set2` presets), beside the rigid-block limit analysis of each direction. "
+        "du is the displacement along the path; (du_x, du_y) are its components. Where the movement is "
+        "not its own mirror image (every direction but spreading and closing), the rigid arch of an odd "
+        "number of voussoirs has two branches: its keystone's two joints tie for the crown hinge, the "
+        "rigid march breaks the tie toward the left one, and the other branch is shown beside it "
+        "(docs/movements.md). Regenerate: `.venv/bin/python scripts/capacity_map.py` (the rigid columns "
+        "alone: `--rigid-only`).",
+        "",
+        *map_markdown(table),
+        "",
+        f"![capacity map]({POLAR_FIGURE}.png)",
+        "",
+        "The force of the arch on the moving support along its path at the equilibrium states: "
+        "positive when the arch pushes the support along its movement (the support holds it back), "
+        "negative when the arch resists the movement (closing):",
+        "",
+        f"![reactions]({REACTION_FIGURE}.png)",
+        "",
+    ]
     for row in settlement.itertuples(index=False):
         paper = reference.SETS[row.set]["numerical"]["du_mm"]
         lines.append(f"- {row.set} at -90° (the paper's settlement): du {row.du_mm:.2f} mm, paper FE {paper} mm.")
@@ -83,9 +91,16 @@ def paper_capacity_map(out: Path, results: pd.DataFrame | None, rigid: dict[floa
         table["hinges"] = table["hinges"].fillna("")
     else:
         table = pd.concat([map_table(name, _runs_of(results, name), rigid) for name in SETS], ignore_index=True)
-        curves = {name: {float(getattr(r, DIRECTION_PARAMETER)): reaction_curve(
-            pd.read_csv(out / RUNS / r.folder / SERIES_FILE), float(getattr(r, DIRECTION_PARAMETER)))
-            for r in _runs_of(results, name).itertuples(index=False) if r.status == "done"} for name in SETS}
+        curves = {
+            name: {
+                float(getattr(r, DIRECTION_PARAMETER)): reaction_curve(
+                    pd.read_csv(out / RUNS / r.folder / SERIES_FILE), float(getattr(r, DIRECTION_PARAMETER))
+                )
+                for r in _runs_of(results, name).itertuples(index=False)
+                if r.status == "done"
+            }
+            for name in SETS
+        }
         reaction_curves_figure(curves, out / REACTION_FIGURE)
     write_text_atomically(out / TABLE, table.to_csv(index=False))
     capacity_polar_figure(table, out / POLAR_FIGURE)

@@ -32,30 +32,42 @@ Variant = Callable[[ArchCase], dict[str, Any]]
 VARIANTS: dict[str, Variant] = {
     "base": lambda c: {},
     "timestep_x0.6": lambda c: {"timestep_safety": round(0.6 * c.numerics.timestep_safety, 6)},
-    "increment_x0.5": lambda c: {"first_increment_mm": 0.5 * c.numerics.first_increment_mm,
-                                 "max_increment_mm": 0.5 * c.numerics.max_increment_mm},
+    "increment_x0.5": lambda c: {
+        "first_increment_mm": 0.5 * c.numerics.first_increment_mm,
+        "max_increment_mm": 0.5 * c.numerics.max_increment_mm,
+    },
     "damping_0.1": lambda c: {"damping": 0.1, "hold_damping": 0.1},
     "damping_0.3": lambda c: {"damping": 0.3, "hold_damping": 0.3},
-    "ramp": lambda c: {"support_acceleration_mm_per_s2": 0.25 * c.numerics.support_acceleration_mm_per_s2,
-                       "first_increment_mm": 0.5 * c.numerics.first_increment_mm},
+    "ramp": lambda c: {
+        "support_acceleration_mm_per_s2": 0.25 * c.numerics.support_acceleration_mm_per_s2,
+        "first_increment_mm": 0.5 * c.numerics.first_increment_mm,
+    },
     "friction_60": lambda c: {"friction_deg": 60.0},
     "friction_80": lambda c: {"friction_deg": 80.0},
 }
 
 
-def study_rows(base: ArchCase, kn_values: tuple[float, ...] = KN_VALUES,
-               variants: tuple[str, ...] = tuple(VARIANTS)) -> list[dict[str, Any]]:
+def study_rows(
+    base: ArchCase, kn_values: tuple[float, ...] = KN_VALUES, variants: tuple[str, ...] = tuple(VARIANTS)
+) -> list[dict[str, Any]]:
     """The campaign rows: one run per kn and variant, named `kn<kn>_<variant>`."""
     unknown = sorted(set(variants) - set(VARIANTS))
     if unknown:
         raise ValueError(f"variant must be one of {', '.join(VARIANTS)}, got {', '.join(unknown)}")
-    return [{"run": f"kn{kn:g}_{name}", "kn_N_per_mm3": kn, **VARIANTS[name](base)}
-            for kn in kn_values for name in variants]
+    return [
+        {"run": f"kn{kn:g}_{name}", "kn_N_per_mm3": kn, **VARIANTS[name](base)} for kn in kn_values for name in variants
+    ]
 
 
-def run_study(base: ArchCase, out: Path, pool: Pool, kn_values: tuple[float, ...] = KN_VALUES,
-              variants: tuple[str, ...] = tuple(VARIANTS), timeout_s: float | None = None,
-              progress: bool = True) -> pd.DataFrame:
+def run_study(
+    base: ArchCase,
+    out: Path,
+    pool: Pool,
+    kn_values: tuple[float, ...] = KN_VALUES,
+    variants: tuple[str, ...] = tuple(VARIANTS),
+    timeout_s: float | None = None,
+    progress: bool = True,
+) -> pd.DataFrame:
     """Run (or resume) the study into `out`, then write robustness.csv and robustness.md there."""
     rows = study_rows(base, kn_values, variants)
     results = run_campaign(base, rows, out, pool, timeout_s=timeout_s, progress=progress)
@@ -74,15 +86,22 @@ def robustness_table(results: pd.DataFrame) -> pd.DataFrame:
         kn = row["kn_N_per_mm3"]
         ref = base.loc[kn] if kn in base.index else None
         du_base = ref["du_mm"] if ref is not None else math.nan
-        rows.append({
-            "kn_N_per_mm3": kn, "variant": row["variant"], "du_mm": row["du_mm"],
-            "hinges": row["hinges"], "max_slip_mm": row.get("max_slip_mm", math.nan),
-            "max_friction_use": row.get("max_friction_use", math.nan),
-            "friction_interface": row.get("friction_interface"),
-            "steps": row["steps"], "wall_s": row["wall_s"], "status": row["status"],
-            "du_rel_to_base": (row["du_mm"] - du_base) / du_base if du_base else math.nan,
-            "same_hinges": same_hinge_set(row["hinges"], ref["hinges"]) if ref is not None else None,
-        })
+        rows.append(
+            {
+                "kn_N_per_mm3": kn,
+                "variant": row["variant"],
+                "du_mm": row["du_mm"],
+                "hinges": row["hinges"],
+                "max_slip_mm": row.get("max_slip_mm", math.nan),
+                "max_friction_use": row.get("max_friction_use", math.nan),
+                "friction_interface": row.get("friction_interface"),
+                "steps": row["steps"],
+                "wall_s": row["wall_s"],
+                "status": row["status"],
+                "du_rel_to_base": (row["du_mm"] - du_base) / du_base if du_base else math.nan,
+                "same_hinges": same_hinge_set(row["hinges"], ref["hinges"]) if ref is not None else None,
+            }
+        )
     return pd.DataFrame(rows)
 
 
@@ -93,7 +112,8 @@ def same_hinge_set(a: str, b: str, shift: int = HINGE_SHIFT) -> bool:
         return False
     ha, hb = a.split(), b.split()
     return len(ha) == len(hb) and all(
-        x[-1] == y[-1] and abs(int(x[:-1]) - int(y[:-1])) <= shift for x, y in zip(ha, hb))
+        x[-1] == y[-1] and abs(int(x[:-1]) - int(y[:-1])) <= shift for x, y in zip(ha, hb)
+    )
 
 
 def verdicts(table: pd.DataFrame) -> pd.DataFrame:
@@ -110,34 +130,53 @@ def verdicts(table: pd.DataFrame) -> pd.DataFrame:
         slid = bool((base["max_slip_mm"] > SLIDING_MM).any())
         friction_move = float(friction["du_rel_to_base"].abs().max()) if len(friction) else math.nan
         friction_ok = slid or not friction_move > TOLERANCE
-        rows.append({"kn_N_per_mm3": kn, "base_du_mm": float(base["du_mm"].iloc[0]) if len(base) else math.nan,
-                     "base_hinges": base["hinges"].iloc[0] if len(base) else "",
-                     "numerics_spread": spread, "hinges_kept": hinges_kept,
-                     "friction_move": friction_move, "base_max_slip_mm": float(base["max_slip_mm"].max()),
-                     "verdict": "PASS" if done and spread <= TOLERANCE and hinges_kept and friction_ok
-                     else "FAIL"})
+        rows.append(
+            {
+                "kn_N_per_mm3": kn,
+                "base_du_mm": float(base["du_mm"].iloc[0]) if len(base) else math.nan,
+                "base_hinges": base["hinges"].iloc[0] if len(base) else "",
+                "numerics_spread": spread,
+                "hinges_kept": hinges_kept,
+                "friction_move": friction_move,
+                "base_max_slip_mm": float(base["max_slip_mm"].max()),
+                "verdict": "PASS" if done and spread <= TOLERANCE and hinges_kept and friction_ok else "FAIL",
+            }
+        )
     return pd.DataFrame(rows)
 
 
 def summary_markdown(table: pd.DataFrame) -> str:
     """The study as Markdown: the verdict per kn, then every run."""
-    lines = ["# Robustness of du to the numerics", "",
-             f"Target: every numerical variant within {TOLERANCE:.0%} of the base du with the same hinges "
-             f"(+-{HINGE_SHIFT} interface); friction may move du only where a joint slides "
-             f"(> {SLIDING_MM} mm accumulated slip). Regenerate: `yadearch robustness --out "
-             "reports/robustness`.", "",
-             "| kn (N/mm3) | base du (mm) | base hinges | numerics spread | hinges kept | friction moves du "
-             "| base max slip (mm) | verdict |", "|---|---|---|---|---|---|---|---|"]
+    lines = [
+        "# Robustness of du to the numerics",
+        "",
+        f"Target: every numerical variant within {TOLERANCE:.0%} of the base du with the same hinges "
+        f"(+-{HINGE_SHIFT} interface); friction may move du only where a joint slides "
+        f"(> {SLIDING_MM} mm accumulated slip). Regenerate: `yadearch robustness --out "
+        "reports/robustness`.",
+        "",
+        "| kn (N/mm3) | base du (mm) | base hinges | numerics spread | hinges kept | friction moves du "
+        "| base max slip (mm) | verdict |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
     for _, v in verdicts(table).iterrows():
-        lines.append(f"| {v.kn_N_per_mm3:g} | {v.base_du_mm:.2f} | {v.base_hinges} | {v.numerics_spread:.2%} "
-                     f"| {'yes' if v.hinges_kept else 'no'} | {v.friction_move:.2%} "
-                     f"| {v.base_max_slip_mm:.3g} | {v.verdict} |")
-    lines += ["", "| kn | variant | du (mm) | vs base | hinges | max slip (mm) | max T/(N tan phi) "
-              "(interface) | steps | wall (s) |", "|---|---|---|---|---|---|---|---|---|"]
+        lines.append(
+            f"| {v.kn_N_per_mm3:g} | {v.base_du_mm:.2f} | {v.base_hinges} | {v.numerics_spread:.2%} "
+            f"| {'yes' if v.hinges_kept else 'no'} | {v.friction_move:.2%} "
+            f"| {v.base_max_slip_mm:.3g} | {v.verdict} |"
+        )
+    lines += [
+        "",
+        "| kn | variant | du (mm) | vs base | hinges | max slip (mm) | max T/(N tan phi) "
+        "(interface) | steps | wall (s) |",
+        "|---|---|---|---|---|---|---|---|---|",
+    ]
     for _, r in table.iterrows():
-        lines.append(f"| {r.kn_N_per_mm3:g} | {r.variant} | {r.du_mm:.2f} | {r.du_rel_to_base:+.2%} | {r.hinges} "
-                     f"| {r.max_slip_mm:.3g} | {r.max_friction_use:.3f} ({r.friction_interface}) "
-                     f"| {r.steps} | {r.wall_s:.0f} |")
+        lines.append(
+            f"| {r.kn_N_per_mm3:g} | {r.variant} | {r.du_mm:.2f} | {r.du_rel_to_base:+.2%} | {r.hinges} "
+            f"| {r.max_slip_mm:.3g} | {r.max_friction_use:.3f} ({r.friction_interface}) "
+            f"| {r.steps} | {r.wall_s:.0f} |"
+        )
     return "\n".join(lines) + "\n"
 
 

@@ -50,8 +50,9 @@ class Factor:
     def value(self, u: float) -> float | int:
         """The factor's value at the fraction `u` (0-1) of its range."""
         if self.log:
-            return round_sig(math.exp(math.log(self.low) + u * (math.log(self.high) - math.log(self.low))),
-                             VALUE_DIGITS)
+            return round_sig(
+                math.exp(math.log(self.low) + u * (math.log(self.high) - math.log(self.low))), VALUE_DIGITS
+            )
         if self.integer:
             return int(min(self.high, math.floor(self.low + u * (self.high - self.low + 1))))
         return round_sig(self.low + u * (self.high - self.low), VALUE_DIGITS)
@@ -90,8 +91,9 @@ def parse_factor(text: str) -> Factor:
         raise CampaignError(f"factor {text!r}: LOW and HIGH must be numbers") from None
     key = qualified_name(name.strip())
     kind = parts[2] if len(parts) == 3 else ""
-    return Factor(key, key.split(".")[-1], low, high, log=kind == "log", integer=kind == "int",
-                  in_tornado=key != SEED_KEY)
+    return Factor(
+        key, key.split(".")[-1], low, high, log=kind == "log", integer=kind == "int", in_tornado=key != SEED_KEY
+    )
 
 
 def check_factors(base: ArchCase, factors: tuple[Factor, ...]) -> None:
@@ -101,8 +103,9 @@ def check_factors(base: ArchCase, factors: tuple[Factor, ...]) -> None:
         raise CampaignError("sensitivity factors: a parameter is listed twice")
     for factor in factors:
         if not factor.low < factor.high:
-            raise CampaignError(f"sensitivity factor {factor.key}: low {factor.low:g} must be below high "
-                                f"{factor.high:g}")
+            raise CampaignError(
+                f"sensitivity factor {factor.key}: low {factor.low:g} must be below high {factor.high:g}"
+            )
         if factor.log and factor.low <= 0:
             raise CampaignError(f"sensitivity factor {factor.key}: a log range needs low > 0, got {factor.low:g}")
         for end in (factor.low, factor.high):
@@ -120,8 +123,10 @@ def tornado_rows(base: ArchCase, factors: tuple[Factor, ...]) -> list[dict[str, 
     rows: list[dict[str, Any]] = [{RUN_COLUMN: "base"}]
     for factor in factors:
         if factor.in_tornado:
-            rows += [{factor.key: factor.value(0.0), RUN_COLUMN: f"{factor.name}_low"},
-                     {factor.key: factor.value(1.0), RUN_COLUMN: f"{factor.name}_high"}]
+            rows += [
+                {factor.key: factor.value(0.0), RUN_COLUMN: f"{factor.name}_low"},
+                {factor.key: factor.value(1.0), RUN_COLUMN: f"{factor.name}_high"},
+            ]
     return rows
 
 
@@ -132,9 +137,19 @@ def tornado_table(base: ArchCase, factors: tuple[Factor, ...], results: pd.DataF
     for factor in factors:
         if factor.in_tornado:
             low, high = du.get(f"{factor.name}_low", math.nan), du.get(f"{factor.name}_high", math.nan)
-            rows.append({"factor": factor.name, "label": factor.label, "base": base_value(base, factor),
-                         "low": factor.value(0.0), "high": factor.value(1.0), "du_low_mm": low, "du_high_mm": high,
-                         "du_base_mm": du.get("base", math.nan), "swing_mm": abs(high - low)})
+            rows.append(
+                {
+                    "factor": factor.name,
+                    "label": factor.label,
+                    "base": base_value(base, factor),
+                    "low": factor.value(0.0),
+                    "high": factor.value(1.0),
+                    "du_low_mm": low,
+                    "du_high_mm": high,
+                    "du_base_mm": du.get("base", math.nan),
+                    "swing_mm": abs(high - low),
+                }
+            )
     return pd.DataFrame(rows).sort_values("swing_mm", ascending=False, na_position="last").reset_index(drop=True)
 
 
@@ -156,8 +171,13 @@ def sobol_rows(factors: tuple[Factor, ...], base_points: int) -> list[dict[str, 
     check_base_points(base_points)
     unit = sobol_sample.sample(salib_problem(factors), base_points, calc_second_order=False, seed=SAMPLE_SEED)
     block = len(factors) + 2
-    return [{**{f.key: f.value(float(u)) for f, u in zip(factors, point)},
-             RUN_COLUMN: f"b{row // block:05d}_{row % block:02d}"} for row, point in enumerate(unit)]
+    return [
+        {
+            **{f.key: f.value(float(u)) for f, u in zip(factors, point)},
+            RUN_COLUMN: f"b{row // block:05d}_{row % block:02d}",
+        }
+        for row, point in enumerate(unit)
+    ]
 
 
 def sobol_indices(factors: tuple[Factor, ...], du_mm: np.ndarray, base_points: int) -> pd.DataFrame:
@@ -166,19 +186,36 @@ def sobol_indices(factors: tuple[Factor, ...], du_mm: np.ndarray, base_points: i
     from SALib.analyze import sobol as sobol_analyze
 
     block = len(factors) + 2
-    values = np.asarray(du_mm, dtype=float)[:base_points * block].reshape(-1, block)
+    values = np.asarray(du_mm, dtype=float)[: base_points * block].reshape(-1, block)
     complete = values[np.isfinite(values).all(axis=1)]
     if len(complete) < MIN_ESTIMATE_POINTS:
         raise CampaignError(f"only {len(complete)} of {len(values)} base points have every run done")
-    result = sobol_analyze.analyze(salib_problem(factors), complete.ravel(), calc_second_order=False,
-                                   num_resamples=BOOTSTRAP_RESAMPLES, conf_level=CONFIDENCE, seed=SAMPLE_SEED)
-    return pd.DataFrame({"base_points": base_points, "used_points": len(complete), "factor": [f.name for f in factors],
-                         "S1": result["S1"], "S1_conf": result["S1_conf"], "ST": result["ST"],
-                         "ST_conf": result["ST_conf"]})
+    result = sobol_analyze.analyze(
+        salib_problem(factors),
+        complete.ravel(),
+        calc_second_order=False,
+        num_resamples=BOOTSTRAP_RESAMPLES,
+        conf_level=CONFIDENCE,
+        seed=SAMPLE_SEED,
+    )
+    return pd.DataFrame(
+        {
+            "base_points": base_points,
+            "used_points": len(complete),
+            "factor": [f.name for f in factors],
+            "S1": result["S1"],
+            "S1_conf": result["S1_conf"],
+            "ST": result["ST"],
+            "ST_conf": result["ST_conf"],
+        }
+    )
 
 
 def index_shift(coarse: pd.DataFrame, fine: pd.DataFrame) -> float:
     """The largest change of any first-order or total index between two sample sizes."""
     joined = coarse.merge(fine, on="factor", suffixes=("_coarse", "_fine"))
-    return float(max((joined["S1_coarse"] - joined["S1_fine"]).abs().max(),
-                     (joined["ST_coarse"] - joined["ST_fine"]).abs().max()))
+    return float(
+        max(
+            (joined["S1_coarse"] - joined["S1_fine"]).abs().max(), (joined["ST_coarse"] - joined["ST_fine"]).abs().max()
+        )
+    )

@@ -55,24 +55,33 @@ class SensitivityResult:
         return self.shift <= STABLE_TO
 
 
-def run_sensitivity(base: ArchCase, out: Path, pool: Pool, base_points: int = DEFAULT_BASE_POINTS,
-                    factors: tuple[Factor, ...] = PAPER_FACTORS, timeout_s: float | None = None,
-                    progress: bool = True) -> SensitivityResult:
+def run_sensitivity(
+    base: ArchCase,
+    out: Path,
+    pool: Pool,
+    base_points: int = DEFAULT_BASE_POINTS,
+    factors: tuple[Factor, ...] = PAPER_FACTORS,
+    timeout_s: float | None = None,
+    progress: bool = True,
+) -> SensitivityResult:
     """Run (or resume) the one-at-a-time runs in OUT/tornado_runs and Saltelli's sample of
     `base_points` in OUT/runs; write the tables, figures and sensitivity.md; return the result."""
     check_base_points(base_points)
     check_factors(base, factors)
     out = Path(out)
     started = time.time()
-    tornado_results = run_campaign(base, tornado_rows(base, factors), out / TORNADO_RUNS, pool,
-                                   timeout_s=timeout_s, progress=progress)
-    samples = run_campaign(base, sobol_rows(factors, base_points), out / SOBOL_RUNS, pool, timeout_s=timeout_s,
-                           progress=progress)
+    tornado_results = run_campaign(
+        base, tornado_rows(base, factors), out / TORNADO_RUNS, pool, timeout_s=timeout_s, progress=progress
+    )
+    samples = run_campaign(
+        base, sobol_rows(factors, base_points), out / SOBOL_RUNS, pool, timeout_s=timeout_s, progress=progress
+    )
     tornado = tornado_table(base, factors, tornado_results)
     du = collapse_displacement(samples)
     indices = pd.concat([sobol_indices(factors, du, n) for n in (base_points // 2, base_points)], ignore_index=True)
-    shift = index_shift(indices[indices["base_points"] == base_points // 2],
-                        indices[indices["base_points"] == base_points])
+    shift = index_shift(
+        indices[indices["base_points"] == base_points // 2], indices[indices["base_points"] == base_points]
+    )
     result = SensitivityResult(tornado, indices, shift, samples)
     write_csv_atomically(out / TORNADO_TABLE, tornado)
     write_csv_atomically(out / INDICES_TABLE, indices)
@@ -83,8 +92,9 @@ def run_sensitivity(base: ArchCase, out: Path, pool: Pool, base_points: int = DE
     return result
 
 
-def sensitivity_markdown(base: ArchCase, factors: tuple[Factor, ...], result: SensitivityResult,
-                         wall_s: float, slots: int) -> str:
+def sensitivity_markdown(
+    base: ArchCase, factors: tuple[Factor, ...], result: SensitivityResult, wall_s: float, slots: int
+) -> str:
     """sensitivity.md: the factors and ranges, the tornado, the indices at both sample sizes, whether
     they are stable, and what the runs cost."""
     samples = result.samples
@@ -93,29 +103,53 @@ def sensitivity_markdown(base: ArchCase, factors: tuple[Factor, ...], result: Se
     largest = result.indices["base_points"].max()
     fine = result.indices[result.indices["base_points"] == largest].set_index("factor")
     coarse = result.indices[result.indices["base_points"] == largest // 2].set_index("factor")
-    lines = [f"# What du is sensitive to: {base.name}", "",
-             f"{base.numerics.engine} engine; base case du = {result.tornado['du_base_mm'].iloc[0]:.2f} mm. "
-             "Each factor is drawn over its plausible range (uniform; kn log-uniform; counts and seeds over "
-             "integers); the imperfection draw is the seed of the random defects.", "",
-             "## One at a time (tornado)", "",
-             "| factor | base | range | du at low (mm) | du at high (mm) | swing (mm) |", "|---|---|---|---|---|---|"]
-    lines += [f"| {r.label} | {r.base:g} | {r.low:g}-{r.high:g} | {r.du_low_mm:.2f} | {r.du_high_mm:.2f} "
-              f"| {r.swing_mm:.2f} |" for r in result.tornado.itertuples()]
-    lines += ["", f"![tornado]({TORNADO_FIGURE}.png)", "", "## Sobol indices (all factors at once)", "",
-              f"Saltelli's sample with SALib: {largest} base points x {len(factors) + 2} runs = {len(samples)} runs, "
-              f"{len(done)} done; {int(fine['used_points'].iloc[0])} base points with every run done enter the "
-              f"estimate. {fell} runs found an arch that cannot stand under its own weight (du = 0 in the "
-              f"estimate), {int((samples['status'] == 'failed').sum()) - fell} failed otherwise, "
-              f"{int((done['collapsed'] == False).sum())} stood to the end of the path (both left out).", "",  # noqa: E712
-              f"| factor | S1 | ST | S1 at {largest // 2} | ST at {largest // 2} |", "|---|---|---|---|---|"]
+    lines = [
+        f"# What du is sensitive to: {base.name}",
+        "",
+        f"{base.numerics.engine} engine; base case du = {result.tornado['du_base_mm'].iloc[0]:.2f} mm. "
+        "Each factor is drawn over its plausible range (uniform; kn log-uniform; counts and seeds over "
+        "integers); the imperfection draw is the seed of the random defects.",
+        "",
+        "## One at a time (tornado)",
+        "",
+        "| factor | base | range | du at low (mm) | du at high (mm) | swing (mm) |",
+        "|---|---|---|---|---|---|",
+    ]
+    lines += [
+        f"| {r.label} | {r.base:g} | {r.low:g}-{r.high:g} | {r.du_low_mm:.2f} | {r.du_high_mm:.2f} | {r.swing_mm:.2f} |"
+        for r in result.tornado.itertuples()
+    ]
+    lines += [
+        "",
+        f"![tornado]({TORNADO_FIGURE}.png)",
+        "",
+        "## Sobol indices (all factors at once)",
+        "",
+        f"Saltelli's sample with SALib: {largest} base points x {len(factors) + 2} runs = {len(samples)} runs, "
+        f"{len(done)} done; {int(fine['used_points'].iloc[0])} base points with every run done enter the "
+        f"estimate. {fell} runs found an arch that cannot stand under its own weight (du = 0 in the "
+        f"estimate), {int((samples['status'] == 'failed').sum()) - fell} failed otherwise, "
+        f"{int((~done['collapsed'].astype(bool)).sum())} stood to the end of the path (both left out).",
+        "",
+        f"| factor | S1 | ST | S1 at {largest // 2} | ST at {largest // 2} |",
+        "|---|---|---|---|---|",
+    ]
     for factor in sorted(factors, key=lambda f: -fine.loc[f.name, "ST"]):
         f, c = fine.loc[factor.name], coarse.loc[factor.name]
-        lines.append(f"| {factor.label} | {f.S1:.3f} ± {f.S1_conf:.3f} | {f.ST:.3f} ± {f.ST_conf:.3f} "
-                     f"| {c.S1:.3f} | {c.ST:.3f} |")
+        lines.append(
+            f"| {factor.label} | {f.S1:.3f} ± {f.S1_conf:.3f} | {f.ST:.3f} ± {f.ST_conf:.3f} "
+            f"| {c.S1:.3f} | {c.ST:.3f} |"
+        )
     verdict = "stable" if result.stable else "NOT stable"
-    lines += ["", f"Largest change of an index as the sample doubles: {result.shift:.3f} ({verdict}: "
-              f"target {STABLE_TO}). ± is SALib's bootstrap 95 % interval.", "",
-              f"![Sobol indices]({INDICES_FIGURE}.png)", "",
-              f"Cost: {done['wall_s'].sum():.0f} s of runs ({len(done)} runs, median {done['wall_s'].median():.2f} s); "
-              f"this invocation {wall_s:.0f} s on {slots} process(es) (runs already in the folder are reused).", ""]
+    lines += [
+        "",
+        f"Largest change of an index as the sample doubles: {result.shift:.3f} ({verdict}: "
+        f"target {STABLE_TO}). ± is SALib's bootstrap 95 % interval.",
+        "",
+        f"![Sobol indices]({INDICES_FIGURE}.png)",
+        "",
+        f"Cost: {done['wall_s'].sum():.0f} s of runs ({len(done)} runs, median {done['wall_s'].median():.2f} s); "
+        f"this invocation {wall_s:.0f} s on {slots} process(es) (runs already in the folder are reused).",
+        "",
+    ]
     return "\n".join(lines)

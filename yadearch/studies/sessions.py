@@ -20,10 +20,16 @@ def record_session(out: Path, started: float, pool: Pool, attempted: int, table:
     """Append this invocation's wall time to sessions.json, so that a resumed campaign's total wall
     time is the sum of its sessions."""
     sessions = _sessions(out) or []
-    sessions.append({"started": time.strftime("%Y-%m-%dT%H:%M:%S", time.localtime(started)),
-                     "wall_s": round(time.time() - started, 1), "where": pool.where,
-                     "slots": pool.slots, "runs_attempted": attempted,
-                     "status_after": table["status"].value_counts().to_dict()})
+    sessions.append(
+        {
+            "started": time.strftime("%Y-%m-%dT%H:%M:%S", time.localtime(started)),
+            "wall_s": round(time.time() - started, 1),
+            "where": pool.where,
+            "slots": pool.slots,
+            "runs_attempted": attempted,
+            "status_after": table["status"].value_counts().to_dict(),
+        }
+    )
     write_text_atomically(out / SESSIONS_FILE, json.dumps(sessions, indent=2) + "\n")
 
 

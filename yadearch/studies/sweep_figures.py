@@ -16,8 +16,9 @@ from yadearch.studies.grid import short_name
 KN_KEY = "kn_N_per_mm3"
 
 
-def sweep_figures(table: pd.DataFrame, rows: list[dict[str, Any]], folder: Path, base: ArchCase,
-                  note: Callable[[str], None]) -> list[Path]:
+def sweep_figures(
+    table: pd.DataFrame, rows: list[dict[str, Any]], folder: Path, base: ArchCase, note: Callable[[str], None]
+) -> list[Path]:
     """Draw the sweep's figures into `folder`; their paths (PDF and PNG), or none with a `note` saying
     why (no numeric parameter takes two values, too few runs done)."""
     from yadearch.plotting.sweep import kn_sweep_figure, parameter_sweep_figure, swept_columns

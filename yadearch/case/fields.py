@@ -1,0 +1,18 @@
+"""Field metadata of a case's parameters: the accepted range of a number and its one-line
+description, which `yadearch params` prints and validation reads."""
+
+from __future__ import annotations
+
+from typing import Any
+
+
+def number_meta(
+    low: float | None = None,
+    high: float | None = None,
+    *,
+    low_open: bool = False,
+    high_open: bool = False,
+    doc: str = "",
+) -> dict[str, Any]:
+    """Field metadata: the accepted range of a number and a one-line description."""
+    return {"low": low, "high": high, "low_open": low_open, "high_open": high_open, "doc": doc}

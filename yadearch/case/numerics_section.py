@@ -1,0 +1,217 @@
+"""The [numerics] section of a case: how either engine solves it, none of it physics."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from yadearch.case.fields import number_meta
+
+
+@dataclass
+class NumericsConfig:
+    """Numerical settings. None of them is physics: du must not depend on them (scripts/convergence.py)."""
+
+    engine: str = field(
+        default="dem",
+        metadata={
+            "choices": ("dem", "static"),
+            "predates": "dem",
+            "doc": "the solver: 'dem' = YADE's explicit dynamics with damping, relaxed to equilibrium after "
+            "each support increment (the reference, and the only one for dynamics); 'static' = Newton's "
+            "method on the same blocks and joint law, each increment solved as a static equilibrium "
+            "(docs/theory.md, 'The static engine')",
+        },
+    )
+    support_rate_mm_per_s: float = field(
+        default=80.0, metadata=number_meta(0, 1e4, low_open=True, doc="support speed during continuous loading (mm/s)")
+    )
+    rate_reference_kn_N_per_mm3: float = field(
+        default=0.0,
+        metadata={
+            **number_meta(
+                0,
+                1e5,
+                doc="joints stiffer than this (N/mm^3) load more slowly: the support speed is "
+                "support_rate x sqrt(this / kn); 0 = no scaling (the default: loading by equilibrium "
+                "increments makes du independent of the speed, docs/numerics.md)",
+            ),
+            "predates": 0.0,
+        },
+    )
+    support_acceleration_mm_per_s2: float = field(
+        default=640.0,
+        metadata={
+            **number_meta(
+                0,
+                1e5,
+                doc="acceleration and braking of the support at the start and end of each move (mm/s^2); "
+                "0 = instantaneous. The same at any kn: it sets the inertial load of the moving arch (640 = "
+                "0.065 g)",
+            ),
+            "predates": 0.0,
+        },
+    )
+    support_horizontal_acceleration_mm_per_s2: float = field(
+        default=40.0,
+        metadata={
+            **number_meta(
+                0,
+                1e5,
+                doc="largest horizontal component of the support's acceleration (mm/s^2; 40 = 0.004 g): "
+                "a horizontal jolt loads the arch like a ground acceleration, and at 640 mm/s^2 it throws a "
+                "spreading arch out of its hinge migrations early (docs/validation.md); 0 = no limit",
+            ),
+            "predates": 0.0,
+        },
+    )
+    damping: float = field(
+        default=0.2, metadata=number_meta(0, 1, high_open=True, doc="YADE local (non-viscous) damping coefficient")
+    )
+    hold_damping: float = field(
+        default=0.2,
+        metadata=number_meta(
+            0,
+            1,
+            high_open=True,
+            doc="YADE local damping during the equilibrium holds that decide du; "
+            "fixed apart from `damping`, because it decides how fast a creeping "
+            "near-critical arch moves and so the hold's verdict",
+        ),
+    )
+    timestep_safety: float = field(
+        default=0.6,
+        metadata=number_meta(0, 1, low_open=True, doc="time step as a fraction of the critical step of a joint"),
+    )
+    threads: int = field(
+        default=1,
+        metadata=number_meta(
+            1,
+            256,
+            doc="OpenMP threads of the YADE process "
+            "(they speed up CGAL contacts, x1.8 with 2, not joint elements, x0.15-0.93 "
+            "with 2; runs are bit-reproducible with 1 only)",
+        ),
+    )
+    contact_model: str = field(
+        default="joint",
+        metadata={
+            "choices": ("joint", "cgal"),
+            "predates": "cgal",
+            "doc": "how the dry joints are computed: 'joint' = zero-thickness joint elements integrated "
+            "exactly in numpy (33x the steps/s), 'cgal' = YADE's polyhedra intersection and volumetric "
+            "law; the same Winkler law either way",
+        },
+    )
+    equilibrium_tolerance: float = field(
+        default=1e-3,
+        metadata=number_meta(
+            0,
+            1,
+            low_open=True,
+            doc="YADE unbalanced force (mean resultant / mean contact force) below which the arch is in equilibrium",
+        ),
+    )
+    gravity_ramp_periods: float = field(
+        default=200.0,
+        metadata=number_meta(
+            0,
+            1e6,
+            doc="gravity grows from 0 to "
+            "full over this many periods of a voussoir vibrating on its "
+            "joints (pi x critical time step), equally gentle at any kn; a "
+            "sudden load overshoots",
+        ),
+    )
+    selfweight_max_s: float = field(
+        default=2.0,
+        metadata=number_meta(0, 100, low_open=True, doc="simulated time allowed for the self-weight stage (s)"),
+    )
+    hold_max_s: float = field(
+        default=2.0,
+        metadata=number_meta(
+            0,
+            100,
+            low_open=True,
+            doc="simulated time allowed to find equilibrium at a fixed support (s); "
+            "a near-critical arch can creep for longer than 0.5 s before it settles "
+            "(docs/numerics.md)",
+        ),
+    )
+    hold_min_s: float = field(
+        default=0.1,
+        metadata=number_meta(0, 10, doc="simulated time a hold lasts at least before it may end in equilibrium (s)"),
+    )
+    still_speed_mm_per_s: float = field(
+        default=0.5, metadata=number_meta(0, 1000, low_open=True, doc="blocks slower than this are at rest (mm/s)")
+    )
+    settle_speed_mm_per_s: float = field(
+        default=0.01,
+        metadata={
+            **number_meta(
+                0,
+                1000,
+                low_open=True,
+                doc="before du is bracketed, its lower state relaxes until every block is "
+                "slower than this (mm/s): a state accepted while still creeping fails every move near "
+                "collapse",
+            ),
+            "predates": 1e9,
+        },
+    )
+    runaway_mm: float = field(
+        default=1.0,
+        metadata=number_meta(
+            0, 1000, low_open=True, doc="block displacement at a fixed support that means no equilibrium (mm)"
+        ),
+    )
+    first_increment_mm: float = field(
+        default=1.0,
+        metadata={
+            **number_meta(
+                0,
+                1000,
+                low_open=True,
+                doc="support displacement of the first loading increment (mm); each "
+                "increment ends in a relaxation to equilibrium",
+            ),
+            "predates": 0.0,
+        },
+    )
+    max_increment_mm: float = field(
+        default=2.5,
+        metadata=number_meta(
+            0,
+            1000,
+            low_open=True,
+            doc="largest loading increment (mm), reached while the arch "
+            "follows the support; larger ones let a relaxation jump between two "
+            "positions of hinge A (docs/validation.md)",
+        ),
+    )
+    increment_growth: float = field(
+        default=1.5, metadata=number_meta(1, 10, doc="factor on the increment after one that ended in equilibrium")
+    )
+    du_tolerance_mm: float = field(
+        default=0.1, metadata=number_meta(0, 10, low_open=True, doc="width of the bracket that locates du (mm)")
+    )
+    hinge_rotation_mrad: float = field(
+        default=2.0,
+        metadata=number_meta(0, 100, low_open=True, doc="relative joint rotation that counts as a hinge (mrad)"),
+    )
+    series_every_steps: int = field(default=200, metadata=number_meta(1, 1e9, doc="steps between time-series rows"))
+    progress_every_s: float = field(
+        default=10.0, metadata=number_meta(0, 1e12, low_open=True, doc="wall seconds between progress lines")
+    )
+    max_steps: int = field(
+        default=100_000_000,
+        metadata={
+            **number_meta(
+                1,
+                1e12,
+                doc="step budget of a run: a case whose estimated worst case exceeds it is refused "
+                "before YADE starts, and a run that reaches it fails (docs/speed.md gives the steps the "
+                "paper's cases take)",
+            ),
+            "predates": 100_000_000,
+        },
+    )
