@@ -17,63 +17,18 @@ placed, which scripts/limit_check.py reads, and prints the progress.
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
-import time
 from pathlib import Path
 
 # YADE runs in this process: numpy's OpenBLAS must start with one thread, or its idle worker spins on
 # the second core (two such runs side by side: 300-500 steps/s each instead of 3 600-5 400)
 os.environ.setdefault("OMP_NUM_THREADS", "1")
 
-from yadearch.atomic import write_text_atomically  # noqa: E402
 from yadearch.cli.options import resolve_case  # noqa: E402
-from yadearch.engine.loading import EquilibriumPath  # noqa: E402
-from yadearch.engine.runner import Runner  # noqa: E402
-from yadearch.engine.scene_state import place_voussoirs  # noqa: E402
-from yadearch.model import units  # noqa: E402
-from yadearch.results.rundir import hinge_list, write_run  # noqa: E402
-from yadearch.results.summary import HingeRef, RunSummary, collapse_fields  # noqa: E402
-from yadearch.solve.pose import linkage_pose, rigid_pose  # noqa: E402
-from yadearch.solve.stages import Stage, Verdict  # noqa: E402
-
-COMMAND_FILE = "command.json"  # beside the run folder's files: how the state was placed
-PLACEMENT_TOLERANCE_MM = 1e-6  # the placed support must read the displacement asked for
-
-
-def hinge_text(runner: Runner) -> str:
-    """The hinges of the scene now, with their rotations."""
-    _, hinges = runner.recorder.joint_snapshot()
-    return " ".join(f"{h.interface}{h.side} ({abs(h.rotation) * 1e3:.1f} mrad)" for h in hinges)
-
-
-def load_on(runner: Runner, start_mm: float, out: Path | None, arguments: dict) -> None:
-    """Follow the equilibrium path from the placed state at `start_mm` to collapse and report it."""
-    loading = EquilibriumPath(runner)
-    path = loading.follow(start=units.mm(start_mm))
-    hinges = loading.collapse_state(path.upper) if path.collapsed else []
-    summary = RunSummary(
-        name=runner.case.name,
-        kn_N_per_mm3=runner.case.interface.kn_N_per_mm3,
-        **collapse_fields(path, runner.movement),
-        hinges_last_equilibrium=loading.last_equilibrium_hinges,
-        relaxations=loading.relaxations,
-        hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges),
-        hinges_detail=[h.to_json() for h in hinges],
-        steps=runner.total_steps,
-        wall_s=time.time() - runner.wall0,
-    )
-    if path.collapsed:
-        print(
-            f"du = {summary.du_mm:.2f} mm ({path.upper_verdict} at {units.to_mm(path.upper):.3f}); "
-            f"last equilibrium on {hinge_list(loading.last_equilibrium_hinges)}",
-            flush=True,
-        )
-    if out is not None:  # a run folder from the placed state on, with the command that placed it
-        records = runner.records
-        write_run(out, runner.case.to_toml(), records.series, records.joints, records.snapshots, summary)
-        write_text_atomically(out / COMMAND_FILE, json.dumps({**arguments, "start_mm": start_mm}, indent=1) + "\n")
+from yadearch.engine.rigid_state import check_rigid_state  # noqa: E402
+from yadearch.errors import YadearchError  # noqa: E402
+from yadearch.solve.stages import Verdict  # noqa: E402
 
 
 def main() -> int:
@@ -102,34 +57,20 @@ def main() -> int:
     )
     args = parser.parse_args()
     case = resolve_case(args.preset, None, args.kn, tuple(args.settings))
-    if args.hinges:
-        centroids, turns = linkage_pose(case, args.at_mm, tuple(args.hinges.split(",")))
-    else:
-        centroids, turns = rigid_pose(case, args.at_mm, args.branch == "mirrored", args.compliant)
-    runner = Runner(case, log=(lambda text: print(text, flush=True)) if args.load_on else (lambda _: None))
     try:
-        runner.selfweight()
-        place_voussoirs(runner.scene, centroids, turns, with_supports=True)
-        placed_mm = units.to_mm(runner.delta())
-        if abs(placed_mm - args.at_mm) > PLACEMENT_TOLERANCE_MM:
-            raise SystemExit(f"the placed support reads {placed_mm:.6f} mm, not --at-mm {args.at_mm:g}")
-        where = (
-            f"linkage {args.hinges}"
-            if args.hinges
-            else f"{args.branch} branch{', compliant hinges' if args.compliant else ''}"
+        verdict = check_rigid_state(
+            case,
+            args.at_mm,
+            mirrored=args.branch == "mirrored",
+            compliant=args.compliant,
+            hinges=tuple(args.hinges.split(",")) if args.hinges else None,
+            load_on=args.load_on,
+            out=args.out,
+            command=vars(args) | {"out": str(args.out)},
+            log=lambda text: print(text, flush=True),
         )
-        print(f"placed at {args.at_mm:g} mm ({where}): {hinge_text(runner)}", flush=True)
-        runner.stage = Stage.RELAX
-        verdict = runner.hold(max_s=case.numerics.hold_max_s)
-        print(
-            f"released: {verdict}, largest block motion {units.to_mm(runner.hold_move):.3f} mm; "
-            f"now on {hinge_text(runner)}",
-            flush=True,
-        )
-        if args.load_on and verdict == Verdict.STABLE:
-            load_on(runner, args.at_mm, args.out, vars(args) | {"out": str(args.out)})
-    finally:
-        runner.close()
+    except YadearchError as exc:
+        raise SystemExit(f"error: {exc}") from None
     return 1 if verdict == Verdict.RUNAWAY else 0
 
 

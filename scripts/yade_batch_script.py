@@ -23,7 +23,8 @@ from yade import utils  # noqa: E402  (the launcher provides YADE)
 from yadearch.engine.simulate import simulate  # noqa: E402
 from yadearch.errors import YadearchError  # noqa: E402
 from yadearch.results.rundir import is_complete  # noqa: E402
-from yadearch.studies.campaign import batch_run, record_failure  # noqa: E402
+from yadearch.studies.campaign import batch_run  # noqa: E402
+from yadearch.studies.failures import record_failure  # noqa: E402
 
 utils.readParamsFromTable(noTableOk=True, unknownOk=True, preset="set2", out="runs/yade-batch")
 from yade.params import table  # noqa: E402  (written by readParamsFromTable)
@@ -36,5 +37,5 @@ else:
     try:
         simulate(case, folder)
     except YadearchError as exc:
-        record_failure(folder, case.name, str(exc), time.time() - started)
+        record_failure(folder, case, str(exc), time.time() - started)
         sys.exit(f"error: {exc}")

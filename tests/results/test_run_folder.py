@@ -113,7 +113,8 @@ def test_run_reuses_the_same_case_and_refuses_another(tmp_path, monkeypatch):
 
 def test_an_interrupted_run_is_not_a_failure_and_stays_pending(tmp_path, monkeypatch, no_yade_check):
     from yadearch.errors import RunInterruptedError
-    from yadearch.studies.campaign import FAILED_FILE, execute
+    from yadearch.studies.campaign import execute
+    from yadearch.studies.failures import FAILED_FILE
 
     def interrupted_child(cmd, env, timeout_s, quiet):
         (Path(cmd[-1]) / LOG_FILE).write_text("INTERRUPTED: SIGTERM\n")
@@ -149,3 +150,32 @@ def test_a_table_cut_short_after_the_run_is_an_error_not_half_a_table(tmp_path):
     joints.write_text("".join(lines[: len(lines) // 2]))  # a copy that stopped half-way
     with pytest.raises(RunFolderError, match=r"joints.csv has \d+ rows where the run wrote \d+: it was cut short"):
         _ = ya.open_run(tmp_path / "run").joints
+
+
+def test_a_static_run_of_another_engine_revision_is_made_again_not_reused(tmp_path):
+    """The static engine's results change with its revision: a run or a failure it recorded under
+    another revision is made again by `run` and by campaigns; a current one is reused."""
+    from yadearch.results.rundir import is_current, outdated
+    from yadearch.studies.failures import FAILED_FILE, failure_stands, record_failure
+
+    case = preset("set1").replace(n_voussoirs=9, kn_N_per_mm3=1.0)
+    first = ya.run(case, engine="static", out=tmp_path / "run", quiet=True, figures=False)
+    assert is_current(first.path) and not outdated(first.path)
+    summary_path = first.path / SUMMARY_FILE
+    written = json.loads(summary_path.read_text())
+    written.pop("engine_revision")  # as the first revision wrote it
+    written["started"] = "2000-01-01T00:00:00"
+    summary_path.write_text(json.dumps(written))
+    assert outdated(first.path) and is_complete(first.path)
+    again = ya.run(case, engine="static", out=tmp_path / "run", quiet=True, figures=False)
+    assert not outdated(again.path) and again.summary.started != written["started"]
+    assert again.summary.du_mm == pytest.approx(written["du_mm"], rel=1e-9)  # the perfect arch: same du
+
+    static = case.replace(engine="static")
+    record_failure(tmp_path, static, "cannot stand", 1.0)
+    assert failure_stands(tmp_path, static)
+    record = json.loads((tmp_path / FAILED_FILE).read_text())
+    record.pop("engine_revision")
+    (tmp_path / FAILED_FILE).write_text(json.dumps(record))
+    assert not failure_stands(tmp_path, static)  # a static failure of another revision is tried again
+    assert failure_stands(tmp_path, case)  # a DEM run's failure stands

@@ -27,10 +27,10 @@ from yadearch.studies.campaign import (
     batch_run,
     label_hinges,
     plan,
-    record_failure,
     run_campaign,
 )
 from yadearch.studies.executors import local_pool
+from yadearch.studies.failures import record_failure
 from yadearch.studies.grid import grid, parse_values, read_table, run_tag
 from yadearch.studies.sessions import SESSIONS_FILE, campaign_wall_s
 
@@ -60,7 +60,7 @@ class FakeRuns:
         (folder / "case.toml").write_text(case.to_toml())
         kn = case.interface.kn_N_per_mm3
         if kn in self.fail:
-            record_failure(folder, case.name, f"run {case.name!r} timed out after 1 s", 1.0)
+            record_failure(folder, case, f"run {case.name!r} timed out after 1 s", 1.0)
             return {"status": "failed", "reason": "timed out"}
         (folder / "summary.json").write_text(
             json.dumps(

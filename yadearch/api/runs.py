@@ -11,7 +11,7 @@ from yadearch.api.results import RunResult, open_run
 from yadearch.case.config import ArchCase
 from yadearch.case.config import preset as _preset
 from yadearch.errors import RunFolderError
-from yadearch.results.rundir import case_differences, is_complete
+from yadearch.results.rundir import case_differences, is_current
 
 if TYPE_CHECKING:
     from yadearch.solve.limit_result import LimitResult
@@ -79,7 +79,7 @@ def run(
 
     case = with_engine(case, engine)
     folder = Path(out) if out is not None else DEFAULT_RUNS_DIR / case.name
-    if is_complete(folder) and not rerun:
+    if is_current(folder) and not rerun:
         differences = case_differences(folder, case)
         if not differences:
             return open_run(folder)

@@ -44,6 +44,24 @@ class JointTable:
     imperfect: np.ndarray  # (n_joints,) bool: the joints with a gap profile (the others take the
     # closed form of a perfect joint)
 
+    def kernel_geometry(self) -> tuple:
+        """The arrays the compiled kernels take first, in their order."""
+        return (
+            self.left,
+            self.right,
+            self.left_intrados,
+            self.right_intrados,
+            self.normal0,
+            self.along0,
+            self.length,
+            self.handedness,
+            self.n_blocks,
+        )
+
+    def kernel_gaps(self) -> tuple:
+        """The initial gap profiles, the compiled kernels' last arguments."""
+        return self.gap_fraction, self.gap, self.imperfect
+
 
 @dataclass(frozen=True)
 class JointLaw:
@@ -53,6 +71,10 @@ class JointLaw:
     ks: float
     tan_friction: float
     depth: float
+
+    def kernel_constants(self) -> tuple[float, float, float]:
+        """kn and ks per unit length of joint (N/m^2) and the friction coefficient, as the kernels take them."""
+        return self.kn * self.depth, self.ks * self.depth, self.tan_friction
 
 
 @dataclass(frozen=True)
@@ -125,27 +147,15 @@ def joint_forces(
     the start) moving at `vel` (n_blocks, 2) and `ang_vel` (rad/s); `shear` holds each joint's shear
     force from the previous step and `dt` is the step over which the slip rate acts."""
     outputs = _joint_kernel(
-        table.left,
-        table.right,
-        table.left_intrados,
-        table.right_intrados,
-        table.normal0,
-        table.along0,
-        table.length,
-        table.handedness,
-        table.n_blocks,
-        law.kn * law.depth,
-        law.ks * law.depth,
-        law.tan_friction,
+        *table.kernel_geometry(),
+        *law.kernel_constants(),
         pos,
         rot,
         vel,
         ang_vel,
         shear,
         dt,
-        table.gap_fraction,
-        table.gap,
-        table.imperfect,
+        *table.kernel_gaps(),
     )
     return JointForces(*outputs)
 

@@ -43,26 +43,14 @@ def joint_tangent(
     """Every joint for blocks at `pos` (n_blocks, 2), `rot` (rad), having moved from `pos_before`,
     `rot_before`, where the joints' shear forces were `shear_before`."""
     outputs = _tangent_kernel(
-        table.left,
-        table.right,
-        table.left_intrados,
-        table.right_intrados,
-        table.normal0,
-        table.along0,
-        table.length,
-        table.handedness,
-        table.n_blocks,
-        law.kn * law.depth,
-        law.ks * law.depth,
-        law.tan_friction,
+        *table.kernel_geometry(),
+        *law.kernel_constants(),
         pos,
         rot,
         pos_before,
         rot_before,
         shear_before,
-        table.gap_fraction,
-        table.gap,
-        table.imperfect,
+        *table.kernel_gaps(),
     )
     *forces, local = outputs
     return JointTangent(JointForces(*forces), local)

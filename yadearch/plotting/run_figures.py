@@ -22,6 +22,7 @@ from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
 from yadearch.atomic import write_atomically
 from yadearch.errors import RunFolderError
+from yadearch.plotting.hinge_marks import mark_hinge
 from yadearch.results.rundir import STIFFNESS_COLUMN, RunFolder
 from yadearch.solve.stages import Stage
 
@@ -158,23 +159,14 @@ def collapse_figure(
             Polygon(moved * 1e3, closed=True, fc="0.45" if support else "#EADDCA", ec="0.15", lw=0.3, zorder=2)
         )
     pivots = {side: joint_points(geometry, state, side) * 1e3 for side in ("I", "E")}
-    centre = np.array([0.0, 0.0])
     for k, track in enumerate(analysis.tracks):
-        colour = HINGE_COLOURS[k % len(HINGE_COLOURS)]
         point = pivots[track.side][track.interface - 1]
-        outward = (point - centre) / np.linalg.norm(point - centre)
-        direction = outward if track.side == "E" else -outward
-        ax.plot(*point, "o", ms=4, mfc=colour, mec="white", mew=0.5, zorder=4)
-        ax.annotate(
-            f"{track.paper_label} ({track.interface}{track.side})",
+        mark_hinge(
+            ax,
             point,
-            xytext=direction * 5,
-            textcoords="offset points",
-            ha="left" if direction[0] > 0 else "right",
-            va="bottom" if direction[1] > 0 else "top",
-            color=colour,
-            fontweight="bold",
-            zorder=5,
+            f"{track.paper_label} ({track.interface}{track.side})",
+            track.side,
+            HINGE_COLOURS[k % len(HINGE_COLOURS)],
         )
     ax.plot([], [], color="0.65", lw=0.6, ls="--", label="undeformed")
     ax.add_patch(

@@ -18,6 +18,7 @@ from matplotlib.patches import Polygon
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
 from yadearch.model.geometry import ArchGeometry
+from yadearch.plotting.hinge_marks import mark_hinge
 from yadearch.plotting.run_figures import (
     AXIS_MARGINS_CM,
     COLUMN_CM,
@@ -33,7 +34,6 @@ from yadearch.solve.rigid import rotate
 M_TO_MM = 1e3
 VOUSSOIR_COLOUR, SUPPORT_COLOUR, THRUST_COLOUR = "#EADDCA", "0.45", "#D55E00"
 UNDEFORMED_STYLE = {"fill": False, "ec": "0.65", "lw": 0.4, "ls": "--", "zorder": 1}
-LABEL_OFFSET_PT = 5
 
 
 def placed_outlines(result: LimitResult, geometry: ArchGeometry) -> list[np.ndarray]:
@@ -101,24 +101,9 @@ def _draw(ax: Axes, result: LimitResult, undeformed: list[np.ndarray], outlines:
         )
     thrust = np.array([f.thrust_mm for f in result.forces])
     ax.plot(thrust[:, 0], thrust[:, 1], color=THRUST_COLOUR, lw=0.9, marker="o", ms=1.2, zorder=3, label="thrust line")
-    centre = np.zeros(2)  # the intrados circle's centre: labels go radially out (E) or in (I)
     for k, (label, point) in enumerate(hinge_points(result).items()):
-        colour = HINGE_COLOURS[k % len(HINGE_COLOURS)]
-        outward = (point - centre) / np.linalg.norm(point - centre)
-        direction = outward if label.endswith("E") else -outward
         text = f"{label} (new)" if label in result.new_at_collapse else label
-        ax.plot(*point, "o", ms=4, mfc=colour, mec="white", mew=0.5, zorder=4)
-        ax.annotate(
-            text,
-            point,
-            xytext=direction * LABEL_OFFSET_PT,
-            textcoords="offset points",
-            ha="left" if direction[0] > 0 else "right",
-            va="bottom" if direction[1] > 0 else "top",
-            color=colour,
-            fontweight="bold",
-            zorder=5,
-        )
+        mark_hinge(ax, point, text, label[-1], HINGE_COLOURS[k % len(HINGE_COLOURS)])
     ax.plot([], [], color="0.65", lw=0.6, ls="--", label="undeformed")
     ax.add_patch(Polygon(np.zeros((3, 2)), fc=VOUSSOIR_COLOUR, ec="0.15", lw=0.3, label="at the limit"))
     ax.legend(loc="lower center", ncols=1, handlelength=1.5)

@@ -16,7 +16,7 @@ from yadearch.atomic import write_atomically, write_csv_atomically, write_text_a
 from yadearch.case.config import ArchCase, as_ran, with_current_names
 from yadearch.errors import RunFolderError
 from yadearch.results.states import STATES_FILE, RunStates, read_states, write_states
-from yadearch.results.summary import RunSummary
+from yadearch.results.summary import STATIC, STATIC_REVISION, RunSummary
 
 CASE_FILE = "case.toml"
 SERIES_FILE = "series.csv"
@@ -168,9 +168,21 @@ def case_differences(path: Path, case: ArchCase) -> list[str]:
     ]
 
 
+def outdated(path: Path) -> bool:
+    """True if the finished run in `path` was made by another revision of the static engine than
+    today's, whose results may differ: commands and campaigns make it again instead of reusing it."""
+    summary = finished_summary(path)
+    return summary is not None and summary.engine == STATIC and summary.engine_revision != STATIC_REVISION
+
+
+def is_current(path: Path) -> bool:
+    """True if the folder holds a finished run that today's engines would give alike (`outdated`)."""
+    return is_complete(path) and not outdated(path)
+
+
 def holds_case(path: Path, case: ArchCase) -> bool:
-    """True if the folder holds a finished run of `case`, which can be reused instead of run again."""
-    return is_complete(path) and not case_differences(path, case)
+    """True if the folder holds a finished, current run of `case`, which can be reused instead of run again."""
+    return is_current(path) and not case_differences(path, case)
 
 
 def read_run(path: str | Path) -> RunFolder:

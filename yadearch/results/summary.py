@@ -16,6 +16,10 @@ from yadearch.model.movement import Movement
 from yadearch.solve.path import PathResult
 
 DEM, STATIC = "dem", "static"  # the engines that write run folders
+# The static engine's revision, raised with every change of its results: a static run made by another
+# one is made again instead of reused (`rundir.outdated`). 2: the joints' shear is carried from one
+# self-weight load step to the next (1: each step counted the sliding from the blocks at rest).
+STATIC_REVISION = 2
 TRANSLATION = "translation"
 # written only when set: engine-specific figures and what older runs lack
 OPTIONAL_KEYS = frozenset(
@@ -37,6 +41,7 @@ OPTIONAL_KEYS = frozenset(
         "steps_per_s",
         "profile",
         "table_rows",
+        "engine_revision",
     }
 )
 RENAMED_KEYS = {"settlement_speed_mm_per_s": "support_speed_mm_per_s"}  # former key: today's, read alike
@@ -125,6 +130,7 @@ class RunSummary:
     yadearch_version: str | None = None
     git_revision: str | None = None
     table_rows: dict[str, int] | None = None
+    engine_revision: int | None = None  # the static engine's (solve.static_path.REVISION)
 
     def collapsed_du_mm(self) -> float:
         """du (mm) of a run that must have collapsed (a reference, a baseline); RunFolderError otherwise."""

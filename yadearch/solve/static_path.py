@@ -72,24 +72,27 @@ class StaticLoading:
     def selfweight(self) -> StaticState:
         """Gravity in GRAVITY_STEPS load steps from the blocks exactly touching: the first solved by the
         descent (the joints have no stiffness before they are pressed), the others by Newton from the
-        last (by the descent where Newton fails)."""
+        last (by the descent where Newton fails); the joints' shear is carried from step to step, as
+        the DEM carries it, so that a joint counts only the sliding it makes while it touches (a change of
+        the engine's results raises `results.summary.STATIC_REVISION`)."""
         u = self.arch.with_supports(self.arch.at_rest(), 0.0)
         shear = np.zeros(len(self.arch.table.left))
-        start = u.copy()
+        slip = np.zeros_like(shear)
         for k in range(1, GRAVITY_STEPS + 1):
-            pressed = self.solver.newton(u, start, shear, gravity=k / GRAVITY_STEPS) if k > 1 else None
+            pressed = self.solver.newton(u, u, shear, gravity=k / GRAVITY_STEPS) if k > 1 else None
             found = (
                 pressed
                 if pressed is not None and pressed.stable()
-                else self.solver.descend(u, start, shear, SELFWEIGHT_FALL, gravity=k / GRAVITY_STEPS)
+                else self.solver.descend(u, u, shear, SELFWEIGHT_FALL, gravity=k / GRAVITY_STEPS)
             )
             if found.verdict != Verdict.STABLE:
                 raise StaticEngineError(
                     f"{CANNOT_STAND} ({found.verdict} at {k}/{GRAVITY_STEPS} "
                     f"of gravity, a block moved {1e3 * found.moved:.1f} mm)"
                 )
-            u = found.u
-        state = self._state(Stage.SELFWEIGHT, 0.0, found, np.zeros_like(shear), found.joints.forces)
+            u, shear = found.u, found.joints.forces.shear_force
+            slip = slip + found.joints.forces.plastic_slip
+        state = self._state(Stage.SELFWEIGHT, 0.0, found, slip, found.joints.forces)
         self.accepted = [state]
         return state
 

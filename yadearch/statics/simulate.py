@@ -16,7 +16,7 @@ from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.results.provenance import provenance
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
-from yadearch.results.summary import STATIC, HingeRef, RunSummary, collapse_fields, loading_info
+from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSummary, collapse_fields, loading_info
 from yadearch.solve.path import PathStep, path_settings
 from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import StaticEngineError, StaticLoading
@@ -76,6 +76,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         name=case.name,
         started=started,
         engine=STATIC,
+        engine_revision=STATIC_REVISION,
         kn_N_per_mm3=case.interface.kn_N_per_mm3,
         ks_N_per_mm3=case.ks_N_per_mm3,
         kn_effective_N_per_mm3=arch.law.kn / units.N_PER_MM3,

@@ -20,20 +20,20 @@ from typing import Any
 import pandas as pd
 from tqdm import tqdm
 
-from yadearch.atomic import remove_stale_temporaries, write_atomically, write_csv_atomically, write_text_atomically
+from yadearch.atomic import remove_stale_temporaries, write_atomically, write_csv_atomically
 from yadearch.case.config import ArchCase, preset
 from yadearch.case.plan import plan_run
 from yadearch.engine.process import STATIC_ENGINE, check_yade_installed, run_case_process
 from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, YadearchError
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.results.lock import folder_lock
-from yadearch.results.rundir import case_differences, finished_summary, is_complete
+from yadearch.results.rundir import case_differences, finished_summary, is_complete, is_current
 from yadearch.results.summary import RunSummary
 from yadearch.studies.executors import Pool
+from yadearch.studies.failures import FAILED_FILE, failure_stands, record_failure
 from yadearch.studies.grid import RUN_COLUMN, check_campaign_size, check_parameter, run_tag
 from yadearch.studies.sessions import record_session
 
-FAILED_FILE = "failed.json"
 RUNS_FILE = "runs.csv"
 RESULTS_FILE = "results.csv"
 
@@ -120,17 +120,9 @@ def execute(case: ArchCase, folder: Path, timeout_s: float | None) -> dict[str, 
     except RunInterruptedError as exc:  # left pending: the next session runs it again
         return {"status": "interrupted", "reason": str(exc)}
     except RunFailedError as exc:
-        record_failure(folder, case.name, str(exc), time.time() - started)
+        record_failure(folder, case, str(exc), time.time() - started)
         return {"status": "failed", "reason": str(exc)}
     return {"status": "done", "reason": ""}
-
-
-def record_failure(folder: Path, name: str, reason: str, wall_s: float) -> None:
-    """Write failed.json: why the run failed and how long it took."""
-    write_text_atomically(
-        folder / FAILED_FILE,
-        json.dumps({"name": name, "status": "failed", "reason": reason, "wall_s": wall_s}, indent=2) + "\n",
-    )
 
 
 Task = Callable[[ArchCase, Path, float | None], dict[str, Any]]
@@ -173,8 +165,8 @@ def _run_planned(
     out.mkdir(parents=True, exist_ok=True)
     remove_stale_temporaries(out)  # left by a campaign killed while it wrote its tables
     write_run_table(specs, out)
-    complete = {s.name for s in specs if is_complete(s.folder)}  # run names are unique (`plan`)
-    todo = [s for s in specs if s.name not in complete and (retry_failed or not (s.folder / FAILED_FILE).is_file())]
+    complete = {s.name for s in specs if is_current(s.folder)}  # run names are unique (`plan`)
+    todo = [s for s in specs if s.name not in complete and (retry_failed or not failure_stands(s.folder, s.case))]
     # Longest first: the last runs to start are short, so no core idles while one long run ends
     # the campaign (the 13-point kn sweep's stiffest points take 10-40x its softest).
     todo.sort(key=lambda spec: expected_cost(spec.case), reverse=True)
