@@ -256,7 +256,8 @@ def load_case(path: str | Path) -> ArchCase:
 
 
 PRESETS: dict[str, dict[str, Any]] = {
-    # Paper §3: kn calibrated to each voussoir set; ks = 0.5 kn; all else shared.
+    # The reference paper (case/reference.py, PAPER and its source), §3: kn calibrated to each voussoir
+    # set; ks = 0.5 kn; all else shared.
     "set1": {"name": "set1", "interface": {"kn_N_per_mm3": 0.25}},
     "set2": {"name": "set2", "interface": {"kn_N_per_mm3": 5.2}},
 }

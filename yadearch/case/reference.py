@@ -1,7 +1,11 @@
 """The reference study's numbers, copied into the project so that it stands on its own.
 
 Source: "Effect of geometrical imperfections on the response of dry-joint masonry arches to support
-settlements" (1:10 segmental arch, 55 voussoirs; FE micro-model in DIANA), sections 2-4 and Table 1.
+settlements" (1:10 segmental arch, 55 voussoirs; FE micro-model in DIANA), sections 2-4 and Table 1;
+its authors, venue and DOI are not in the project's copy of it. The same group's journal paper on the
+1:10 arch with one voussoir set: C. Ferrero, M. Rossi, P. Roca, C. Calderini, "Experimental and
+numerical analysis of a scaled dry-joint arch on moving supports", International Journal of Masonry
+Research and Innovation 6(4) (2021) 405-421, doi:10.1504/IJMRI.2021.118818.
 Interfaces are numbered 1..56 from the left support; hinge lists hold every interface the paper names
 (a spread hinge such as "29-30-31-32" lists all four).
 """
