@@ -403,7 +403,7 @@ def test_descent_survives_a_kick_but_not_the_state_past_du(set2_path, block):
     assert found.verdict == Verdict.RUNAWAY and found.moved >= MM
 
 
-WEDGED_ARCH = REPO / "reports/imperfections/amplitudes/angle/dem/a8_s2"  # face angles s.d. 8 mrad, a DEM run
+WEDGED_ARCH = REPO / "tests/data/wedged_arch"  # face angles s.d. 8 mrad: the case and a DEM run's self-weight state
 
 
 def test_self_weight_of_a_wedged_arch_is_the_dems_equilibrium():
@@ -420,7 +420,7 @@ def test_self_weight_of_a_wedged_arch_is_the_dems_equilibrium():
     arch = static_arch(case)
     loading = StaticLoading(arch, path_settings(case.numerics, 150.0), units.mm(case.numerics.runaway_mm))
     state = loading.selfweight()
-    dem = json.loads((WEDGED_ARCH / "snapshots.json").read_text())["selfweight"]
+    dem = json.loads((WEDGED_ARCH / "selfweight.json").read_text())
     dem_u = np.column_stack([np.array(dem["pos_m"])[:, :2], np.array(dem["rot_rad"]) * arch.length]).ravel()
     assert largest_move(state.u, dem_u) < units.mm(0.25)
     weight = float(np.abs(arch.loads()).sum())
