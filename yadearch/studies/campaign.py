@@ -36,6 +36,7 @@ from yadearch.studies.sessions import record_session
 
 RUNS_FILE = "runs.csv"
 RESULTS_FILE = "results.csv"
+RESULTS_EVERY_S = 5.0  # results.csv is rewritten at most this often while runs finish (and at the end)
 
 
 # ---------------------------------------------------------------- runs
@@ -189,11 +190,16 @@ def _run_planned(
         futures = {pool.executor.submit(task, s.case, s.folder, timeout_s): s for s in todo}
         pending = set(futures)
         bar.set_postfix(counts, running=min(pool.slots, len(pending)))
+        rows = {s.name: run_row(s, out) for s in specs}
+        written = time.time()
         while pending:
             finished, pending = wait(pending, return_when=FIRST_COMPLETED)
             for future in finished:
                 counts[future.result()["status"]] += 1
-            write_results(specs, out)  # current after every finished run, whatever ends the campaign
+                rows[futures[future].name] = run_row(futures[future], out)
+            if time.time() - written >= RESULTS_EVERY_S or not pending:  # the run folders stay the truth
+                write_csv_atomically(out / RESULTS_FILE, tidy(pd.DataFrame(rows.values())))
+                written = time.time()
             bar.set_postfix(counts, running=min(pool.slots, len(pending)), refresh=False)
             bar.update(len(finished))
     finally:
@@ -292,7 +298,11 @@ def _path_end_mm(summary: RunSummary, case: ArchCase) -> float:
 
 def results_table(specs: list[RunSpec], out: Path) -> pd.DataFrame:
     """The tidy results table of a campaign (one row per run), read from its run folders."""
-    table = pd.DataFrame([run_row(s, out) for s in specs])
+    return tidy(pd.DataFrame([run_row(s, out) for s in specs]))
+
+
+def tidy(table: pd.DataFrame) -> pd.DataFrame:
+    """The results table with its integer columns as integers where a run has none (pending, failed)."""
     for column in ("n_voussoirs", "hinge_A", "hinge_B", "hinge_C", "hinge_D", "steps", "friction_interface"):
         table[column] = table[column].astype("Int64")
     return table
