@@ -172,12 +172,18 @@ def outdated(path: Path) -> bool:
     """True if the finished run in `path` was made by another revision of the static engine than
     today's, whose results may differ: commands and campaigns make it again instead of reusing it."""
     summary = finished_summary(path)
-    return summary is not None and summary.engine == STATIC and summary.engine_revision != STATIC_REVISION
+    return summary is not None and _other_static_revision(summary)
 
 
 def is_current(path: Path) -> bool:
-    """True if the folder holds a finished run that today's engines would give alike (`outdated`)."""
-    return is_complete(path) and not outdated(path)
+    """True if the folder holds a finished run that today's engines would give alike (`outdated`);
+    its summary.json is read once."""
+    summary = finished_summary(path)
+    return summary is not None and not _other_static_revision(summary)
+
+
+def _other_static_revision(summary: RunSummary) -> bool:
+    return summary.engine == STATIC and summary.engine_revision != STATIC_REVISION
 
 
 def holds_case(path: Path, case: ArchCase) -> bool:
