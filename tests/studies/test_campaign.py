@@ -25,10 +25,10 @@ from yadearch.studies.campaign import (
     FAILED_FILE,
     RESULTS_FILE,
     batch_run,
-    label_hinges,
     plan,
     run_campaign,
 )
+from yadearch.studies.campaign_table import label_hinges
 from yadearch.studies.executors import local_pool
 from yadearch.studies.failures import record_failure
 from yadearch.studies.grid import grid, parse_values, read_table, run_tag

@@ -153,30 +153,32 @@ def keystones(n_voussoirs: int) -> list[int]:
     return [middle] if n_voussoirs % 2 else [middle - 1, middle]
 
 
-def edge_gap(depth_into_edge: np.ndarray, size: float, shape: str) -> np.ndarray:
+def edge_gap(depth_into_edge: np.ndarray, size: float | np.ndarray, shape: str) -> np.ndarray:
     """How far a worn edge of `size` stands back from the face plane at a distance from the corner
-    (0 at and beyond `size`): a quarter circle of radius `size`, or a 45 deg chamfer."""
+    (0 at and beyond `size`; sizes broadcast against distances): a quarter circle of radius `size`,
+    or a 45 deg chamfer."""
     inside = np.clip(size - depth_into_edge, 0.0, None)
     if shape == CHAMFER:
         return inside
     return size - np.sqrt(np.clip(size**2 - inside**2, 0.0, None))
 
 
-def joint_gap(s: np.ndarray, length: float, defects: JointDefects, j: int) -> np.ndarray:
-    """The gap (m) of joint `j` at abscissae `s` (m from the intrados), before the shift that
-    makes its smallest value 0."""
+def joint_gaps(s: np.ndarray, lengths: np.ndarray, defects: JointDefects) -> np.ndarray:
+    """The gaps (m) of every joint (rows) at abscissae `s` (n_joints, nodes; m from the intrados),
+    before the shift that makes each row's smallest value 0."""
     shape = defects.edge_shape
+    length = lengths[:, None]
     gap = (
-        edge_gap(s, defects.left_intrados_edge[j], shape)
-        + edge_gap(s, defects.right_intrados_edge[j], shape)
-        + edge_gap(length - s, defects.left_extrados_edge[j], shape)
-        + edge_gap(length - s, defects.right_extrados_edge[j], shape)
+        edge_gap(s, defects.left_intrados_edge[:, None], shape)
+        + edge_gap(s, defects.right_intrados_edge[:, None], shape)
+        + edge_gap(length - s, defects.left_extrados_edge[:, None], shape)
+        + edge_gap(length - s, defects.right_extrados_edge[:, None], shape)
     )
-    angle = defects.face_angle[j]
-    gap = gap + (angle * s if angle >= 0 else -angle * (length - s))
-    bump = defects.face_bump[j]
+    angle = defects.face_angle[:, None]
+    gap = gap + np.where(angle >= 0, angle * s, -angle * (length - s))
+    bump = defects.face_bump[:, None]
     centred = (2.0 * s / length - 1.0) ** 2
-    return gap + (bump * centred if bump >= 0 else -bump * (1.0 - centred))
+    return gap + np.where(bump >= 0, bump * centred, -bump * (1.0 - centred))
 
 
 def wedge_openings(defects: JointDefects, lengths: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -188,31 +190,27 @@ def wedge_openings(defects: JointDefects, lengths: np.ndarray) -> tuple[np.ndarr
     return np.clip(-wedge, 0.0, None), np.clip(wedge, 0.0, None)
 
 
-def profile_fractions(length: float, intrados_edge: float, extrados_edge: float) -> np.ndarray:
-    """PROFILE_NODES fractions of a joint: EDGE_NODES across each worn edge, MIDDLE_NODES evenly
-    between."""
-    lo, hi = intrados_edge / length, 1.0 - extrados_edge / length
+def profile_fractions(lengths: np.ndarray, intrados_edges: np.ndarray, extrados_edges: np.ndarray) -> np.ndarray:
+    """PROFILE_NODES fractions of each joint (rows): EDGE_NODES across each worn edge, MIDDLE_NODES
+    evenly between."""
+    lo, hi = intrados_edges / lengths, 1.0 - extrados_edges / lengths
     # evenly spaced in the rounding's angle: a hinge turned by a touches a rounded edge where its
     # slope is a, and the chords then follow the quarter circle equally well at every rotation
     bend = 1.0 - np.sin(np.linspace(np.pi / 2, 0.0, EDGE_NODES))  # 0 (corner) -> 1 (edge's end)
-    inner = lo * bend
-    middle = np.linspace(lo, hi, MIDDLE_NODES + 2)[1:-1]
-    outer = 1.0 - (1.0 - hi) * bend[::-1]
-    return np.concatenate([inner, middle, outer])
+    inner = lo[:, None] * bend
+    middle = np.linspace(lo, hi, MIDDLE_NODES + 2, axis=1)[:, 1:-1]
+    outer = 1.0 - (1.0 - hi[:, None]) * bend[::-1]
+    return np.concatenate([inner, middle, outer], axis=1)
 
 
 def gap_profiles(defects: JointDefects, lengths: np.ndarray) -> GapProfiles:
     """The joints' gap profiles from their drawn defects."""
-    n = defects.n_joints
-    fraction = np.empty((n, PROFILE_NODES))
-    gap = np.empty((n, PROFILE_NODES))
-    for j in range(n):
-        length = float(lengths[j])
-        intrados = max(defects.left_intrados_edge[j], defects.right_intrados_edge[j])
-        extrados = max(defects.left_extrados_edge[j], defects.right_extrados_edge[j])
-        fraction[j] = profile_fractions(length, intrados, extrados)
-        raw = joint_gap(fraction[j] * length, length, defects, j)
-        gap[j] = raw - raw.min()
+    lengths = np.asarray(lengths, dtype=float)
+    intrados = np.maximum(defects.left_intrados_edge, defects.right_intrados_edge)
+    extrados = np.maximum(defects.left_extrados_edge, defects.right_extrados_edge)
+    fraction = profile_fractions(lengths, intrados, extrados)
+    raw = joint_gaps(fraction * lengths[:, None], lengths, defects)
+    gap = raw - raw.min(axis=1, keepdims=True)
     return GapProfiles(fraction, gap, gap.max(axis=1) > 0.0, defects.left_offset, defects.right_offset)
 
 

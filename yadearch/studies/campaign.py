@@ -8,12 +8,10 @@ campaign finds the finished folders and only redoes the others.
 from __future__ import annotations
 
 import hashlib
-import json
 import math
 import time
 from collections.abc import Callable
 from concurrent.futures import FIRST_COMPLETED, Future, wait
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -25,10 +23,15 @@ from yadearch.case.config import ArchCase, preset
 from yadearch.case.plan import plan_run
 from yadearch.engine.process import STATIC_ENGINE, check_yade_installed, run_case_process
 from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, YadearchError
-from yadearch.model.hinges import PAPER_LABELS
 from yadearch.results.lock import folder_lock
-from yadearch.results.rundir import case_differences, finished_summary, is_complete, is_current
-from yadearch.results.summary import RunSummary
+from yadearch.results.rundir import case_differences, is_complete, is_current
+from yadearch.studies.campaign_table import (
+    RunSpec,
+    override_columns,
+    results_table,
+    run_row,
+    tidy,
+)
 from yadearch.studies.executors import Pool
 from yadearch.studies.failures import FAILED_FILE, failure_stands, record_failure
 from yadearch.studies.grid import RUN_COLUMN, check_campaign_size, check_parameter, run_tag
@@ -36,20 +39,8 @@ from yadearch.studies.sessions import record_session
 
 RUNS_FILE = "runs.csv"
 RESULTS_FILE = "results.csv"
+SUBMITTED_PER_SLOT = 2  # runs handed to the executor ahead of time, per slot (a bounded window)
 RESULTS_EVERY_S = 5.0  # results.csv is rewritten at most this often while runs finish (and at the end)
-
-
-# ---------------------------------------------------------------- runs
-
-
-@dataclass
-class RunSpec:
-    """One run of a campaign: its name, overrides, folder and case."""
-
-    name: str
-    overrides: dict[str, Any]
-    folder: Path
-    case: ArchCase
 
 
 def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]:
@@ -184,23 +175,34 @@ def _run_planned(
         dynamic_ncols=True,
     )
     counts = {"done": len(complete), "failed": len(specs) - len(todo) - len(complete), "interrupted": 0}
+    queued = iter(todo)
     futures: dict[Future, RunSpec] = {}
+
+    def submit_next() -> None:
+        spec = next(queued, None)
+        if spec is not None:
+            futures[pool.executor.submit(task, spec.case, spec.folder, timeout_s)] = spec
+
     started = time.time()
     try:
-        futures = {pool.executor.submit(task, s.case, s.folder, timeout_s): s for s in todo}
-        pending = set(futures)
-        bar.set_postfix(counts, running=min(pool.slots, len(pending)))
+        # a bounded window of submitted runs, refilled as runs end: waiting on every run of a
+        # 14 000-run campaign at once cost the parent most of a core
+        for _ in range(SUBMITTED_PER_SLOT * pool.slots):
+            submit_next()
+        bar.set_postfix(counts, running=min(pool.slots, len(futures)))
         rows = {s.name: run_row(s, out) for s in specs}
         written = time.time()
-        while pending:
-            finished, pending = wait(pending, return_when=FIRST_COMPLETED)
+        while futures:
+            finished, _ = wait(futures, return_when=FIRST_COMPLETED)
             for future in finished:
+                spec = futures.pop(future)
                 counts[future.result()["status"]] += 1
-                rows[futures[future].name] = run_row(futures[future], out)
-            if time.time() - written >= RESULTS_EVERY_S or not pending:  # the run folders stay the truth
+                rows[spec.name] = run_row(spec, out)
+                submit_next()
+            if time.time() - written >= RESULTS_EVERY_S or not futures:  # the run folders stay the truth
                 write_csv_atomically(out / RESULTS_FILE, tidy(pd.DataFrame(rows.values())))
                 written = time.time()
-            bar.set_postfix(counts, running=min(pool.slots, len(pending)), refresh=False)
+            bar.set_postfix(counts, running=min(pool.slots, len(futures)), refresh=False)
             bar.update(len(finished))
     finally:
         for future in futures:
@@ -214,7 +216,9 @@ def _run_planned(
 
 def write_run_table(specs: list[RunSpec], out: Path) -> None:
     """runs.csv: what the campaign runs (name, folder, overrides), written before anything runs."""
-    table = pd.DataFrame([{RUN_COLUMN: s.name, "folder": s.folder.name, **_columns(s.overrides)} for s in specs])
+    table = pd.DataFrame(
+        [{RUN_COLUMN: s.name, "folder": s.folder.name, **override_columns(s.overrides)} for s in specs]
+    )
     write_atomically(out / RUNS_FILE, lambda tmp: table.to_csv(tmp, index=False))
 
 
@@ -222,87 +226,4 @@ def write_results(specs: list[RunSpec], out: Path) -> pd.DataFrame:
     """results.csv from the run folders as they are now, written atomically; returns the table."""
     table = results_table(specs, out)
     write_csv_atomically(out / RESULTS_FILE, table)
-    return table
-
-
-def _columns(overrides: dict[str, Any]) -> dict[str, Any]:
-    return {k.split(".")[-1]: v for k, v in overrides.items()}
-
-
-# ---------------------------------------------------------------- results
-
-
-def label_hinges(summary: RunSummary, n_voussoirs: int) -> dict[str, int | None]:
-    """The interface of each of the paper's hinges A-D in a run's collapse mechanism (None where
-    the mechanism has no such hinge)."""
-    by_label = {label: h.interface for h, label in summary.paper_labels(n_voussoirs + 1).items() if label}
-    return {f"hinge_{label}": by_label.get(label) for label in PAPER_LABELS}
-
-
-def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
-    """One results row: the run's parameters and what its folder says (done, failed or pending)."""
-    case = spec.case
-    row: dict[str, Any] = {RUN_COLUMN: spec.name, **_columns(spec.overrides)}
-    row.setdefault("kn_N_per_mm3", case.interface.kn_N_per_mm3)
-    row.setdefault("n_voussoirs", case.geometry.n_voussoirs)
-    empty = {
-        "du_mm": math.nan,
-        "collapsed": None,
-        "hinges": "",
-        "mechanism": "",
-        "hinge_A": None,
-        "hinge_B": None,
-        "hinge_C": None,
-        "hinge_D": None,
-        "steps": None,
-        "wall_s": math.nan,
-        "max_slip_mm": math.nan,
-        "max_friction_use": math.nan,
-        "friction_interface": None,
-        "engine": case.numerics.engine,
-    }
-    summary = finished_summary(spec.folder)
-    if summary is not None:
-        du = summary.du_mm
-        friction = summary.friction
-        row.update(
-            max_slip_mm=friction.get("max_slip_mm", math.nan),
-            max_friction_use=friction.get("max_friction_use", math.nan),
-            friction_interface=friction.get("friction_interface"),
-        )
-        row.update(
-            du_mm=math.nan if du is None else du,
-            collapsed=summary.collapsed,
-            hinges=summary.hinge_labels,
-            mechanism="-".join(h.side for h in summary.hinges_at_collapse),
-            **label_hinges(summary, case.geometry.n_voussoirs),
-            steps=summary.steps,
-            wall_s=summary.wall_s,
-            engine=summary.engine,
-            status="done",
-            reason="" if summary.collapsed else f"no collapse up to {_path_end_mm(summary, case):g} mm",
-        )
-    elif (spec.folder / FAILED_FILE).is_file():
-        failed = json.loads((spec.folder / FAILED_FILE).read_text())
-        row.update(empty, wall_s=failed.get("wall_s", math.nan), status="failed", reason=failed.get("reason", ""))
-    else:
-        row.update(empty, status="pending", reason="not run yet (interrupted?)")
-    row["folder"] = str(spec.folder.relative_to(out)) if spec.folder.is_relative_to(out) else str(spec.folder)
-    return row
-
-
-def _path_end_mm(summary: RunSummary, case: ArchCase) -> float:
-    """Where a run that did not collapse stopped: its path's end, or the case's largest displacement."""
-    return summary.loading.max_displacement_mm if summary.loading else case.loading.max_support_displacement_mm
-
-
-def results_table(specs: list[RunSpec], out: Path) -> pd.DataFrame:
-    """The tidy results table of a campaign (one row per run), read from its run folders."""
-    return tidy(pd.DataFrame([run_row(s, out) for s in specs]))
-
-
-def tidy(table: pd.DataFrame) -> pd.DataFrame:
-    """The results table with its integer columns as integers where a run has none (pending, failed)."""
-    for column in ("n_voussoirs", "hinge_A", "hinge_B", "hinge_C", "hinge_D", "steps", "friction_interface"):
-        table[column] = table[column].astype("Int64")
     return table

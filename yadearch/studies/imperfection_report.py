@@ -16,7 +16,7 @@ from yadearch.case.config import preset
 from yadearch.plotting.montecarlo import amplitude_panels_figure, campaign_figures
 from yadearch.results.rundir import read_summary
 from yadearch.results.summary import RunSummary
-from yadearch.studies.campaign import label_hinges
+from yadearch.studies.campaign_table import label_hinges
 from yadearch.studies.executors import open_pool
 from yadearch.studies.imperfection_matching import (
     STAYED,
