@@ -17,9 +17,12 @@ from yadearch.studies.sensitivity import (
     Factor,
     check_base_points,
     check_factors,
+    convergence,
     parse_factor,
+    sample_sizes,
     sobol_indices,
     sobol_rows,
+    stable_base_points,
 )
 
 ISHIGAMI = (
@@ -56,6 +59,22 @@ def test_sobol_indices_of_the_ishigami_function_match_its_analytic_values():
     indices = sobol_indices(ISHIGAMI, np.array([_ishigami(r) for r in rows]), 1024)
     assert indices["S1"].to_numpy() == pytest.approx(ISHIGAMI_S1, abs=0.03)
     assert indices["ST"].to_numpy() == pytest.approx(ISHIGAMI_ST, abs=0.03)
+
+
+def test_indices_converge_on_nested_samples_and_the_stable_sample_is_extrapolated():
+    """Ishigami's indices on samples of 32 to 1024 base points: each doubling changes them less, and a
+    change that falls as 1/sqrt(N) (0.04 at 1024) reaches 0.02 at four times the sample."""
+    assert sample_sizes(1024) == [32, 64, 128, 256, 512, 1024] and sample_sizes(8) == [4, 8]
+    rows = sobol_rows(ISHIGAMI, 1024)
+    du = np.array([_ishigami(r) for r in rows])
+    table = convergence(pd.concat([sobol_indices(ISHIGAMI, du, n) for n in sample_sizes(1024)]))
+    assert table["base_points"].tolist() == [64, 128, 256, 512, 1024]
+    assert table["largest_change"].iloc[-1] < table["largest_change"].iloc[0]
+    assert table["mean_half_width"].is_monotonic_decreasing
+    sizes = np.array([256, 512, 1024])
+    assert (
+        stable_base_points(pd.DataFrame({"base_points": sizes, "largest_change": 0.04 * np.sqrt(1024 / sizes)})) == 4096
+    )
 
 
 def test_blocks_with_a_failed_run_are_left_out_of_the_estimate():
@@ -95,5 +114,7 @@ def test_static_sensitivity_of_a_small_arch_puts_thickness_before_friction(tmp_p
     assert indices["ST"].idxmax() == "thickness_mm"
     assert (result.samples["status"] == "done").all()
     assert pd.read_csv(tmp_path / "indices.csv")["base_points"].tolist() == [4, 4, 8, 8]
-    assert (tmp_path / "tornado.png").stat().st_size > 0 and (tmp_path / "indices.png").stat().st_size > 0
+    for figure in ("tornado", "indices", "convergence"):
+        assert (tmp_path / f"{figure}.png").stat().st_size > 0
+    assert pd.read_csv(tmp_path / "convergence.csv")["base_points"].tolist() == [8]
     assert "## Sobol indices" in (tmp_path / "sensitivity.md").read_text()

@@ -64,8 +64,10 @@ def sensitivity(
     )
     top = result.indices[result.indices["base_points"] == base_points].sort_values("ST", ascending=False).iloc[0]
     folder = Path(out)
+    needed = result.stable_base_points
+    verdict = "stable" if result.stable else f"not stable to {STABLE_TO}; ~{needed} base points would be"
     click.echo(
         f"largest total index: {top.factor} (ST {top.ST:.2f}); indices move {result.shift:.3f} as the "
-        f"sample doubles ({'stable' if result.stable else 'not stable'} to {STABLE_TO}) -> "
+        f"sample doubles ({verdict}) -> "
         f"{folder / TORNADO_TABLE}, {folder / INDICES_TABLE}, {folder / REPORT}"
     )

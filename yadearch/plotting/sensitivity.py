@@ -1,5 +1,5 @@
-"""Figures of the sensitivity study: the tornado of one-at-a-time effects on du and the bar chart of
-Sobol's first-order and total indices with their bootstrap intervals."""
+"""Figures of the sensitivity study: the tornado of one-at-a-time effects on du, the bar chart of
+Sobol's first-order and total indices with their bootstrap intervals, and their convergence."""
 
 from __future__ import annotations
 
@@ -88,3 +88,22 @@ def _bar_axes(rows: int):
     size = (COLUMN_WIDTH_IN * WIDTH_COLUMNS, MARGIN_HEIGHT_IN + ROW_HEIGHT_IN * rows)
     fig = Figure(figsize=size, layout="constrained")
     return fig.subplots()
+
+
+def convergence_figure(table: pd.DataFrame, target: float, scale: float, stem: Path) -> tuple[Path, Path]:
+    """STEM.pdf/.png: the largest change of a Sobol index at each doubling of the sample and the
+    indices' mean bootstrap half-width against the sample size, with the stability target and the
+    fitted Monte Carlo rate `scale`/sqrt(N) carried on to where it meets the target."""
+    with matplotlib.rc_context(SWEEP_STYLE):
+        fig = Figure(figsize=(COLUMN_WIDTH_IN, COLUMN_WIDTH_IN * 0.8), layout="constrained")
+        ax = fig.subplots()
+        ax.loglog(table["base_points"], table["largest_change"], "o-", color="C0", label="largest change since N/2")
+        ax.loglog(table["base_points"], table["mean_half_width"], "s--", color="C1", label="mean 95 % half-width")
+        reach = np.geomspace(table["base_points"].iloc[0], max((scale / target) ** 2, table["base_points"].iloc[-1]))
+        ax.loglog(reach, scale / np.sqrt(reach), color="0.5", lw=0.8, label=r"fitted $c/\sqrt{N}$")
+        ax.axhline(target, color="k", lw=0.8, ls=":", label=f"target {target:g}")
+        ax.set_xscale("log", base=2)
+        ax.set_xlabel("base points N of the Sobol sample")
+        ax.set_ylabel("Sobol index")
+        ax.legend(loc="upper right")
+        return save_figure(fig, stem)

@@ -25,6 +25,8 @@ CONFIDENCE = 0.95
 STABLE_TO = 0.02  # indices stable when no index moves more than this as the sample doubles
 MIN_BASE_POINTS = 8  # the sample's size at least; its first half gives the coarse indices
 MIN_ESTIMATE_POINTS = 4  # complete base points an estimate needs at least
+CONVERGENCE_FROM = 32  # the smallest sample of the convergence table (base points), when N allows it
+FIT_FROM = 128  # the changes fitted to estimate the sample that stability needs start at this size
 VALUE_DIGITS = 6  # significant figures of a sampled factor value (run tables stay readable)
 SEED_KEY = "imperfections.seed"
 MAX_SEED = 100_000
@@ -219,3 +221,46 @@ def index_shift(coarse: pd.DataFrame, fine: pd.DataFrame) -> float:
             (joined["S1_coarse"] - joined["S1_fine"]).abs().max(), (joined["ST_coarse"] - joined["ST_fine"]).abs().max()
         )
     )
+
+
+def sample_sizes(base_points: int) -> list[int]:
+    """The nested samples the indices are estimated on: every power of two from CONVERGENCE_FROM
+    (or N/2 if smaller) up to N, each the first part of the next."""
+    size, sizes = base_points, list[int]()
+    while size >= min(CONVERGENCE_FROM, base_points // 2):
+        sizes.insert(0, size)
+        size //= 2
+    return sizes
+
+
+def convergence(indices: pd.DataFrame) -> pd.DataFrame:
+    """Per sample size after the first: the largest change of an index since the half-size sample and
+    the mean half-width of the indices' bootstrap intervals."""
+    sizes = sorted(indices["base_points"].unique())
+    rows = []
+    for coarse, fine in zip(sizes, sizes[1:]):
+        at = indices[indices["base_points"] == fine]
+        rows.append(
+            {
+                "base_points": fine,
+                "largest_change": index_shift(indices[indices["base_points"] == coarse], at),
+                "mean_half_width": float(np.mean([at["S1_conf"].mean(), at["ST_conf"].mean()])),
+            }
+        )
+    return pd.DataFrame(rows)
+
+
+def change_scale(table: pd.DataFrame) -> float:
+    """c in largest change = c / sqrt(N), the Monte Carlo rate, fitted (in logs) to the changes from
+    FIT_FROM base points up (the last one if the sample is smaller)."""
+    fitted = table[table["base_points"] >= FIT_FROM]
+    if fitted.empty:
+        fitted = table.tail(1)
+    return float(np.exp(np.mean(np.log(fitted["largest_change"] * np.sqrt(fitted["base_points"])))))
+
+
+def stable_base_points(table: pd.DataFrame) -> int:
+    """The sample (a power of two of base points) at which the largest change would fall to STABLE_TO
+    at the fitted Monte Carlo rate (`change_scale`)."""
+    needed = (change_scale(table) / STABLE_TO) ** 2
+    return int(2 ** math.ceil(math.log2(max(needed, 1.0))))

@@ -13,18 +13,22 @@ import pandas as pd
 from yadearch.analysis.samples import collapse_displacement
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.plotting.sensitivity import indices_figure, tornado_figure
+from yadearch.plotting.sensitivity import convergence_figure, indices_figure, tornado_figure
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool
 from yadearch.studies.sensitivity import (
+    FIT_FROM,
     PAPER_FACTORS,
     STABLE_TO,
     Factor,
+    change_scale,
     check_base_points,
     check_factors,
-    index_shift,
+    convergence,
+    sample_sizes,
     sobol_indices,
     sobol_rows,
+    stable_base_points,
     tornado_rows,
     tornado_table,
 )
@@ -33,26 +37,38 @@ TORNADO_RUNS = "tornado_runs"
 SOBOL_RUNS = "runs"
 TORNADO_TABLE = "tornado.csv"
 INDICES_TABLE = "indices.csv"
+CONVERGENCE_TABLE = "convergence.csv"
 SAMPLES_TABLE = "samples.csv"
 REPORT = "sensitivity.md"
 TORNADO_FIGURE = "tornado"
 INDICES_FIGURE = "indices"
+CONVERGENCE_FIGURE = "convergence"
 DEFAULT_BASE_POINTS = 256
 
 
 @dataclass(frozen=True)
 class SensitivityResult:
-    """The study as Python objects: the tornado table, the indices at N/2 and N base points, the
-    largest index change between them, and the Sobol sample's runs."""
+    """The study as Python objects: the tornado table, the indices on nested samples up to N base
+    points, their convergence (largest index change at each doubling), and the Sobol sample's runs."""
 
     tornado: pd.DataFrame
     indices: pd.DataFrame
-    shift: float
+    convergence: pd.DataFrame
     samples: pd.DataFrame
+
+    @property
+    def shift(self) -> float:
+        """The largest change of an index from N/2 to N base points."""
+        return float(self.convergence["largest_change"].iloc[-1])
 
     @property
     def stable(self) -> bool:
         return self.shift <= STABLE_TO
+
+    @property
+    def stable_base_points(self) -> int:
+        """The sample that would make the indices stable, extrapolated (`sensitivity.stable_base_points`)."""
+        return stable_base_points(self.convergence)
 
 
 def run_sensitivity(
@@ -78,16 +94,15 @@ def run_sensitivity(
     )
     tornado = tornado_table(base, factors, tornado_results)
     du = collapse_displacement(samples)
-    indices = pd.concat([sobol_indices(factors, du, n) for n in (base_points // 2, base_points)], ignore_index=True)
-    shift = index_shift(
-        indices[indices["base_points"] == base_points // 2], indices[indices["base_points"] == base_points]
-    )
-    result = SensitivityResult(tornado, indices, shift, samples)
+    indices = pd.concat([sobol_indices(factors, du, n) for n in sample_sizes(base_points)], ignore_index=True)
+    result = SensitivityResult(tornado, indices, convergence(indices), samples)
     write_csv_atomically(out / TORNADO_TABLE, tornado)
     write_csv_atomically(out / INDICES_TABLE, indices)
+    write_csv_atomically(out / CONVERGENCE_TABLE, result.convergence)
     write_csv_atomically(out / SAMPLES_TABLE, samples)
     tornado_figure(tornado, out / TORNADO_FIGURE)
     indices_figure(indices, {f.name: f.label for f in factors}, out / INDICES_FIGURE)
+    convergence_figure(result.convergence, STABLE_TO, change_scale(result.convergence), out / CONVERGENCE_FIGURE)
     write_text_atomically(out / REPORT, sensitivity_markdown(base, factors, result, time.time() - started, pool.slots))
     return result
 
@@ -141,12 +156,33 @@ def sensitivity_markdown(
             f"| {c.S1:.3f} | {c.ST:.3f} |"
         )
     verdict = "stable" if result.stable else "NOT stable"
+    needed = result.stable_base_points
     lines += [
         "",
         f"Largest change of an index as the sample doubles: {result.shift:.3f} ({verdict}: "
         f"target {STABLE_TO}). ± is SALib's bootstrap 95 % interval.",
         "",
         f"![Sobol indices]({INDICES_FIGURE}.png)",
+        "",
+        "## Convergence",
+        "",
+        "The indices on the nested samples (each the first half of the next): the largest change of any "
+        "index since the half-size sample, and the indices' mean bootstrap half-width.",
+        "",
+        "| base points | runs | largest change | mean ± |",
+        "|---|---|---|---|",
+    ]
+    lines += [
+        f"| {r.base_points} | {r.base_points * (len(factors) + 2)} | {r.largest_change:.3f} | {r.mean_half_width:.3f} |"
+        for r in result.convergence.itertuples()
+    ]
+    lines += [
+        "",
+        f"If the largest change falls as 1/sqrt(N), as a Monte Carlo error does (fitted from {FIT_FROM} base "
+        f"points up), the indices are stable to {STABLE_TO} at about {needed} base points "
+        f"({needed * (len(factors) + 2)} runs).",
+        "",
+        f"![convergence]({CONVERGENCE_FIGURE}.png)",
         "",
         f"Cost: {done['wall_s'].sum():.0f} s of runs ({len(done)} runs, median {done['wall_s'].median():.2f} s); "
         f"this invocation {wall_s:.0f} s on {slots} process(es) (runs already in the folder are reused).",
