@@ -113,6 +113,7 @@ def probes() -> list[list[str]]:
         ["sensitivity", "--preset", "set2", "--factor", "nothing=1:2", "--out", "OUT/s"],
         ["sensitivity", "--preset", "set2", "--factor", "friction_deg=40:95", "--out", "OUT/s"],
         ["sensitivity", "--preset", "set2", "--factor", "kn_N_per_mm3=0:5:log", "--out", "OUT/s"],
+        ["sensitivity", "--preset", "set2", "--check-runs", "-1", "--out", "OUT/s"],
         # views of a run: no run folder, an unknown format, no --vtk, a run from before states.npz
         ["animate", "OUT/not-a-run"],
         ["animate", f"{REPO}/reports/set1", "--format", "avi"],

@@ -24,6 +24,7 @@ from yadearch.studies.sensitivity import (
     sobol_rows,
     stable_base_points,
 )
+from yadearch.studies.sensitivity_check import check_rows, other_engine
 
 ISHIGAMI = (
     Factor("geometry.thickness_mm", "x1", -math.pi, math.pi),
@@ -77,6 +78,22 @@ def test_indices_converge_on_nested_samples_and_the_stable_sample_is_extrapolate
     )
 
 
+def test_the_checks_are_the_ends_of_the_ranges_that_move_du_most():
+    factors = (parse_factor("thickness_mm=22:26"), parse_factor("friction_deg=38:44"))
+    tornado = pd.DataFrame(
+        {
+            "factor": ["thickness_mm", "friction_deg"],
+            "du_base_mm": [100.0, 100.0],
+            "du_low_mm": [80.0, 100.5],
+            "du_high_mm": [109.0, math.nan],
+        }
+    )
+    rows = check_rows(tornado, factors, 3)
+    assert [row[RUN_COLUMN] for row in rows] == ["thickness_mm_low", "thickness_mm_high", "friction_deg_low"]
+    assert rows[0]["geometry.thickness_mm"] == 22.0 and rows[2]["material.friction_deg"] == 38.0
+    assert other_engine("static") == "dem" and other_engine("dem") == "static"
+
+
 def test_blocks_with_a_failed_run_are_left_out_of_the_estimate():
     rows = sobol_rows(ISHIGAMI, 64)
     du = np.array([_ishigami(r) for r in rows])
@@ -95,6 +112,8 @@ def test_bad_designs_are_refused_in_one_line_naming_the_value():
         check_factors(ya.preset("set2"), (parse_factor("friction_deg=3:2"),))
     with pytest.raises(CaseError, match="friction_deg"):
         check_factors(ya.preset("set2"), (parse_factor("friction_deg=30:95"),))
+    with pytest.raises(CampaignError, match="check runs must be between 0 and 50, got -1"):
+        ya.sensitivity("set2", "unused", check_runs=-1)
     assert parse_factor("kn_N_per_mm3=0.25:100:log") == Factor(
         "interface.kn_N_per_mm3", "kn_N_per_mm3", 0.25, 100.0, log=True
     )

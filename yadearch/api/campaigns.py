@@ -191,18 +191,23 @@ def sensitivity(
     jobs: int | None = None,
     scheduler: str | None = None,
     timeout_s: float | None = None,
+    check_runs: int = 0,
 ) -> SensitivityResult:
     """What du of `case` is sensitive to: each factor alone at the ends of its range (a tornado) and
     Sobol indices from Saltelli's sample of `base_points` (a power of two), both resumable campaigns in
     `out`; `factors` (`yadearch.studies.sensitivity.Factor`s) default to the paper arch's plausible
-    ranges. Writes the tables, figures and sensitivity.md; returns the `SensitivityResult`."""
+    ranges; the `check_runs` one-at-a-time runs that move du most are made again on the other engine
+    (the DEM for a static study). Writes the tables, figures and sensitivity.md; returns the
+    `SensitivityResult`."""
     from yadearch.studies.executors import open_pool
     from yadearch.studies.sensitivity import PAPER_FACTORS, check_base_points, check_factors
     from yadearch.studies.sensitivity_campaign import run_sensitivity
+    from yadearch.studies.sensitivity_check import check_count
 
     case = with_engine(case, engine)
     chosen = tuple(factors) if factors else PAPER_FACTORS
     check_base_points(base_points)  # refused before a pool starts
     check_factors(case, chosen)
+    check_count(check_runs)
     with open_pool(jobs, scheduler) as pool:
-        return run_sensitivity(case, Path(out), pool, base_points, chosen, timeout_s=timeout_s)
+        return run_sensitivity(case, Path(out), pool, base_points, chosen, timeout_s=timeout_s, check_runs=check_runs)

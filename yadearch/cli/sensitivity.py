@@ -20,7 +20,7 @@ from yadearch.studies.sensitivity_campaign import DEFAULT_BASE_POINTS, INDICES_T
     type=int,
     default=DEFAULT_BASE_POINTS,
     show_default=True,
-    help="Sobol base points N (a power of two): N x (factors + 2) runs; indices also at N/2",
+    help="Sobol base points N (a power of two): N x (factors + 2) runs; indices also on each halving (convergence)",
 )
 @click.option(
     "--factor",
@@ -31,10 +31,19 @@ from yadearch.studies.sensitivity_campaign import DEFAULT_BASE_POINTS, INDICES_T
     "paper arch's twelve factors)",
 )
 @click.option(
+    "--check-runs",
+    type=int,
+    default=0,
+    show_default=True,
+    help="make the N one-at-a-time runs that move du most again on the other engine (the DEM for a "
+    "static study) and report both answers",
+)
+@click.option(
     "--out",
     required=True,
     type=click.Path(file_okay=False),
-    help="folder: tornado_runs/, runs/, tornado.csv, indices.csv, samples.csv, figures, sensitivity.md",
+    help="folder: tornado_runs/, runs/, check_runs/, tornado.csv, indices.csv, convergence.csv, samples.csv, "
+    "checks.csv, figures, sensitivity.md",
 )
 @pool_options
 def sensitivity(
@@ -44,6 +53,7 @@ def sensitivity(
     settings: tuple[str, ...],
     base_points: int,
     factor_specs: tuple[str, ...],
+    check_runs: int,
     out: str,
     jobs: int | None,
     scheduler: str | None,
@@ -61,6 +71,7 @@ def sensitivity(
         jobs=jobs,
         scheduler=scheduler,
         timeout_s=timeout_s(timeout_min),
+        check_runs=check_runs,
     )
     top = result.indices[result.indices["base_points"] == base_points].sort_values("ST", ascending=False).iloc[0]
     folder = Path(out)

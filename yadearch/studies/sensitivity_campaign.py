@@ -32,12 +32,14 @@ from yadearch.studies.sensitivity import (
     tornado_rows,
     tornado_table,
 )
+from yadearch.studies.sensitivity_check import check_count, checks_markdown, run_checks
 
 TORNADO_RUNS = "tornado_runs"
 SOBOL_RUNS = "runs"
 TORNADO_TABLE = "tornado.csv"
 INDICES_TABLE = "indices.csv"
 CONVERGENCE_TABLE = "convergence.csv"
+CHECKS_TABLE = "checks.csv"
 SAMPLES_TABLE = "samples.csv"
 REPORT = "sensitivity.md"
 TORNADO_FIGURE = "tornado"
@@ -49,12 +51,14 @@ DEFAULT_BASE_POINTS = 256
 @dataclass(frozen=True)
 class SensitivityResult:
     """The study as Python objects: the tornado table, the indices on nested samples up to N base
-    points, their convergence (largest index change at each doubling), and the Sobol sample's runs."""
+    points, their convergence (largest index change at each doubling), the Sobol sample's runs, and
+    the checks by the other engine."""
 
     tornado: pd.DataFrame
     indices: pd.DataFrame
     convergence: pd.DataFrame
     samples: pd.DataFrame
+    checks: pd.DataFrame  # the one-at-a-time runs made again on the other engine (`sensitivity_check`)
 
     @property
     def shift(self) -> float:
@@ -79,11 +83,14 @@ def run_sensitivity(
     factors: tuple[Factor, ...] = PAPER_FACTORS,
     timeout_s: float | None = None,
     progress: bool = True,
+    check_runs: int = 0,
 ) -> SensitivityResult:
-    """Run (or resume) the one-at-a-time runs in OUT/tornado_runs and Saltelli's sample of
-    `base_points` in OUT/runs; write the tables, figures and sensitivity.md; return the result."""
+    """Run (or resume) the one-at-a-time runs in OUT/tornado_runs, Saltelli's sample of `base_points`
+    in OUT/runs and the `check_runs` one-at-a-time runs that move du most again on the other engine
+    in OUT/check_runs; write the tables, figures and sensitivity.md; return the result."""
     check_base_points(base_points)
     check_factors(base, factors)
+    check_count(check_runs)
     out = Path(out)
     started = time.time()
     tornado_results = run_campaign(
@@ -93,9 +100,12 @@ def run_sensitivity(
         base, sobol_rows(factors, base_points), out / SOBOL_RUNS, pool, timeout_s=timeout_s, progress=progress
     )
     tornado = tornado_table(base, factors, tornado_results)
+    checks = run_checks(base, tornado, tornado_results, factors, check_runs, out, pool, timeout_s, progress)
     du = collapse_displacement(samples)
     indices = pd.concat([sobol_indices(factors, du, n) for n in sample_sizes(base_points)], ignore_index=True)
-    result = SensitivityResult(tornado, indices, convergence(indices), samples)
+    result = SensitivityResult(tornado, indices, convergence(indices), samples, checks)
+    if not checks.empty:
+        write_csv_atomically(out / CHECKS_TABLE, checks)
     write_csv_atomically(out / TORNADO_TABLE, tornado)
     write_csv_atomically(out / INDICES_TABLE, indices)
     write_csv_atomically(out / CONVERGENCE_TABLE, result.convergence)
@@ -138,6 +148,7 @@ def sensitivity_markdown(
         "",
         f"![tornado]({TORNADO_FIGURE}.png)",
         "",
+        *checks_markdown(result.checks, base.numerics.engine),
         "## Sobol indices (all factors at once)",
         "",
         f"Saltelli's sample with SALib: {largest} base points x {len(factors) + 2} runs = {len(samples)} runs, "

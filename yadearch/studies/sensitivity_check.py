@@ -1,0 +1,119 @@
+"""The sensitivity study checked by the other engine: the one-at-a-time runs that move du most, run
+again on the DEM (or, for a study on the DEM, on the static engine), both answers side by side
+(docs/validation.md, "What du is sensitive to")."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+from yadearch.case.config import ArchCase
+from yadearch.engine.process import STATIC_ENGINE
+from yadearch.errors import CampaignError
+from yadearch.studies.campaign import run_campaign
+from yadearch.studies.executors import Pool
+from yadearch.studies.grid import RUN_COLUMN
+from yadearch.studies.sensitivity import Factor
+
+CHECK_RUNS = "check_runs"
+AGREEMENT = 0.01  # the two engines' du within this fraction (the cross-check's standard, docs/validation.md)
+MAX_CHECKS = 50  # more is a campaign of its own (`yadearch sweep --engine ...`)
+DEM_ENGINE = "dem"
+ENGINE_NAMES = {DEM_ENGINE: "the DEM", STATIC_ENGINE: "the static engine"}
+
+
+def other_engine(engine: str) -> str:
+    """The engine that checks a study made on `engine`."""
+    return DEM_ENGINE if engine == STATIC_ENGINE else STATIC_ENGINE
+
+
+def check_count(count: int) -> None:
+    """Refuse a number of checks outside 0..MAX_CHECKS in one line."""
+    if not 0 <= count <= MAX_CHECKS:
+        raise CampaignError(f"check runs must be between 0 and {MAX_CHECKS}, got {count}")
+
+
+def check_rows(tornado: pd.DataFrame, factors: tuple[Factor, ...], count: int) -> list[dict[str, Any]]:
+    """The `count` ends of the factors' ranges whose one-at-a-time du lies furthest from the base
+    case's, as campaign rows named as the tornado's runs."""
+    by_name = {f.name: f for f in factors}
+    ends = []
+    for row in tornado.itertuples():
+        factor = by_name[row.factor]
+        for side, fraction, du in (("low", 0.0, row.du_low_mm), ("high", 1.0, row.du_high_mm)):
+            if math.isfinite(du):
+                move = abs(du - row.du_base_mm)
+                ends.append((move, {factor.key: factor.value(fraction), RUN_COLUMN: f"{factor.name}_{side}"}))
+    ends.sort(key=lambda end: -end[0])
+    return [row for _, row in ends[:count]]
+
+
+def run_checks(
+    base: ArchCase,
+    tornado: pd.DataFrame,
+    study_runs: pd.DataFrame,
+    factors: tuple[Factor, ...],
+    count: int,
+    out: Path,
+    pool: Pool,
+    timeout_s: float | None = None,
+    progress: bool = True,
+) -> pd.DataFrame:
+    """Run (or resume) the checks in OUT/check_runs on the other engine and return both engines' du,
+    hinges and run times per check (empty if `count` is 0)."""
+    rows = check_rows(tornado, factors, count)
+    if not rows:
+        return pd.DataFrame()
+    study, check = base.numerics.engine, other_engine(base.numerics.engine)
+    checked = run_campaign(
+        base.with_overrides({"numerics.engine": check}),
+        rows,
+        Path(out) / CHECK_RUNS,
+        pool,
+        timeout_s=timeout_s,
+        progress=progress,
+    )
+    mine = study_runs.set_index(RUN_COLUMN)
+    table = []
+    for row in checked.itertuples():
+        own = mine.loc[row.run]
+        table.append(
+            {
+                RUN_COLUMN: row.run,
+                f"{study}_du_mm": own["du_mm"],
+                f"{check}_du_mm": row.du_mm,
+                "difference_pct": 100.0 * (own["du_mm"] - row.du_mm) / row.du_mm,
+                f"{study}_hinges": own["hinges"],
+                f"{check}_hinges": row.hinges,
+                f"{study}_wall_s": own["wall_s"],
+                f"{check}_wall_s": row.wall_s,
+            }
+        )
+    return pd.DataFrame(table)
+
+
+def checks_markdown(checks: pd.DataFrame, study: str) -> list[str]:
+    """The report's section on the checks: a table of both engines' answers and the agreement."""
+    if checks.empty:
+        return []
+    check = other_engine(study)
+    agree = int((checks["difference_pct"].abs() <= 100 * AGREEMENT).sum())
+    lines = [
+        f"## Checked by {ENGINE_NAMES[check]}",
+        "",
+        f"The one-at-a-time runs that move du most, made again by {ENGINE_NAMES[check]}: {agree} of "
+        f"{len(checks)} within {100 * AGREEMENT:g} % (difference: {study} against {check}).",
+        "",
+        f"| run | du, {study} (mm) | du, {check} (mm) | difference | hinges, {study} | hinges, {check} | "
+        f"wall, {study} (s) | wall, {check} (s) |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    lines += [
+        f"| {r[RUN_COLUMN]} | {r[f'{study}_du_mm']:.2f} | {r[f'{check}_du_mm']:.2f} | {r['difference_pct']:+.2f} % "
+        f"| {r[f'{study}_hinges']} | {r[f'{check}_hinges']} | {r[f'{study}_wall_s']:.1f} | {r[f'{check}_wall_s']:.1f} |"
+        for _, r in checks.iterrows()
+    ]
+    return [*lines, ""]
