@@ -13,6 +13,7 @@ import pandas as pd
 from yadearch.analysis.samples import collapse_displacement
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
+from yadearch.engine.process import STATIC_ENGINE
 from yadearch.plotting.sensitivity import convergence_figure, indices_figure, tornado_figure
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool
@@ -93,11 +94,25 @@ def run_sensitivity(
     check_count(check_runs)
     out = Path(out)
     started = time.time()
+    # a static run's failure (an arch that cannot stand) is deterministic: it is not made again
+    retry = base.numerics.engine != STATIC_ENGINE
     tornado_results = run_campaign(
-        base, tornado_rows(base, factors), out / TORNADO_RUNS, pool, timeout_s=timeout_s, progress=progress
+        base,
+        tornado_rows(base, factors),
+        out / TORNADO_RUNS,
+        pool,
+        timeout_s=timeout_s,
+        progress=progress,
+        retry_failed=retry,
     )
     samples = run_campaign(
-        base, sobol_rows(factors, base_points), out / SOBOL_RUNS, pool, timeout_s=timeout_s, progress=progress
+        base,
+        sobol_rows(factors, base_points),
+        out / SOBOL_RUNS,
+        pool,
+        timeout_s=timeout_s,
+        progress=progress,
+        retry_failed=retry,
     )
     tornado = tornado_table(base, factors, tornado_results)
     checks = run_checks(base, tornado, tornado_results, factors, check_runs, out, pool, timeout_s, progress)

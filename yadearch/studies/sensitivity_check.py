@@ -105,7 +105,7 @@ def checks_markdown(checks: pd.DataFrame, study: str) -> list[str]:
         f"## Checked by {ENGINE_NAMES[check]}",
         "",
         f"The one-at-a-time runs that move du most, made again by {ENGINE_NAMES[check]}: {agree} of "
-        f"{len(checks)} within {100 * AGREEMENT:g} % (difference: {study} against {check}).",
+        f"{len(checks)} within {100 * AGREEMENT:g} % (the difference is the {study} du against the {check} du).",
         "",
         f"| run | du, {study} (mm) | du, {check} (mm) | difference | hinges, {study} | hinges, {check} | "
         f"wall, {study} (s) | wall, {check} (s) |",
