@@ -10,7 +10,7 @@ import pytest
 from conftest import REPO
 
 PACKAGE = REPO / "yadearch"
-# top to bottom; the modules at the bottom (errors, atomic) and the version serve every layer
+# top to bottom; the modules at the bottom (errors, atomic, markdown) and the version serve every layer
 LAYERS = (
     "cli",
     "api",
@@ -26,6 +26,7 @@ LAYERS = (
     "model",
     "errors",
     "atomic",
+    "markdown",
 )
 ENTRY_POINTS = ("__init__", "__main__")  # the package's own surface: `import yadearch` reaches the API
 

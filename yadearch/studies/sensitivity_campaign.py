@@ -14,6 +14,7 @@ from yadearch.analysis.samples import collapse_displacement
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.engine.process import STATIC_ENGINE
+from yadearch.markdown import markdown_table
 from yadearch.plotting.sensitivity import convergence_figure, indices_figure, tornado_figure
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool
@@ -96,24 +97,12 @@ def run_sensitivity(
     started = time.time()
     # a static run's failure (an arch that cannot stand) is deterministic: it is not made again
     retry = base.numerics.engine != STATIC_ENGINE
-    tornado_results = run_campaign(
-        base,
-        tornado_rows(base, factors),
-        out / TORNADO_RUNS,
-        pool,
-        timeout_s=timeout_s,
-        progress=progress,
-        retry_failed=retry,
-    )
-    samples = run_campaign(
-        base,
-        sobol_rows(factors, base_points),
-        out / SOBOL_RUNS,
-        pool,
-        timeout_s=timeout_s,
-        progress=progress,
-        retry_failed=retry,
-    )
+
+    def campaign(rows: list[dict], folder: str) -> pd.DataFrame:
+        return run_campaign(base, rows, out / folder, pool, timeout_s=timeout_s, progress=progress, retry_failed=retry)
+
+    tornado_results = campaign(tornado_rows(base, factors), TORNADO_RUNS)
+    samples = campaign(sobol_rows(factors, base_points), SOBOL_RUNS)
     tornado = tornado_table(base, factors, tornado_results)
     checks = run_checks(base, tornado, tornado_results, factors, check_runs, out, pool, timeout_s, progress)
     du = collapse_displacement(samples)
@@ -152,12 +141,14 @@ def sensitivity_markdown(
         "",
         "## One at a time (tornado)",
         "",
-        "| factor | base | range | du at low (mm) | du at high (mm) | swing (mm) |",
-        "|---|---|---|---|---|---|",
-    ]
-    lines += [
-        f"| {r.label} | {r.base:g} | {r.low:g}-{r.high:g} | {r.du_low_mm:.2f} | {r.du_high_mm:.2f} | {r.swing_mm:.2f} |"
-        for r in result.tornado.itertuples()
+        *markdown_table(
+            ["factor", "base", "range", "du at low (mm)", "du at high (mm)", "swing (mm)"],
+            (
+                [r.label, f"{r.base:g}", f"{r.low:g}-{r.high:g}", f"{r.du_low_mm:.2f}", f"{r.du_high_mm:.2f}"]
+                + [f"{r.swing_mm:.2f}"]
+                for r in result.tornado.itertuples()
+            ),
+        ),
     ]
     lines += [
         "",
@@ -172,15 +163,17 @@ def sensitivity_markdown(
         f"estimate), {int((samples['status'] == 'failed').sum()) - fell} failed otherwise, "
         f"{int((~done['collapsed'].astype(bool)).sum())} stood to the end of the path (both left out).",
         "",
-        f"| factor | S1 | ST | S1 at {largest // 2} | ST at {largest // 2} |",
-        "|---|---|---|---|---|",
+        *markdown_table(
+            ["factor", "S1", "ST", f"S1 at {largest // 2}", f"ST at {largest // 2}"],
+            (
+                [label, f"{f.S1:.3f} ± {f.S1_conf:.3f}", f"{f.ST:.3f} ± {f.ST_conf:.3f}", f"{c.S1:.3f}", f"{c.ST:.3f}"]
+                for label, f, c in (
+                    (factor.label, fine.loc[factor.name], coarse.loc[factor.name])
+                    for factor in sorted(factors, key=lambda f: -fine.loc[f.name, "ST"])
+                )
+            ),
+        ),
     ]
-    for factor in sorted(factors, key=lambda f: -fine.loc[f.name, "ST"]):
-        f, c = fine.loc[factor.name], coarse.loc[factor.name]
-        lines.append(
-            f"| {factor.label} | {f.S1:.3f} ± {f.S1_conf:.3f} | {f.ST:.3f} ± {f.ST_conf:.3f} "
-            f"| {c.S1:.3f} | {c.ST:.3f} |"
-        )
     verdict = "stable" if result.stable else "NOT stable"
     needed = result.stable_base_points
     lines += [
@@ -195,14 +188,14 @@ def sensitivity_markdown(
         "The indices on the nested samples (each the first half of the next): the largest change of any "
         "index since the half-size sample, and the indices' mean bootstrap half-width.",
         "",
-        "| base points | runs | largest change | mean ± |",
-        "|---|---|---|---|",
-    ]
-    lines += [
-        f"| {r.base_points} | {r.base_points * (len(factors) + 2)} | {r.largest_change:.3f} | {r.mean_half_width:.3f} |"
-        for r in result.convergence.itertuples()
-    ]
-    lines += [
+        *markdown_table(
+            ["base points", "runs", "largest change", "mean ±"],
+            (
+                [f"{r.base_points}", f"{r.base_points * (len(factors) + 2)}", f"{r.largest_change:.3f}"]
+                + [f"{r.mean_half_width:.3f}"]
+                for r in result.convergence.itertuples()
+            ),
+        ),
         "",
         f"If the largest change falls as 1/sqrt(N), as a Monte Carlo error does (fitted from {FIT_FROM} base "
         f"points up), the indices are stable to {STABLE_TO} at about {needed} base points "

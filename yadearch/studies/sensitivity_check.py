@@ -13,6 +13,7 @@ import pandas as pd
 from yadearch.case.config import ArchCase
 from yadearch.engine.process import STATIC_ENGINE
 from yadearch.errors import CampaignError
+from yadearch.markdown import markdown_table
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool
 from yadearch.studies.grid import RUN_COLUMN
@@ -107,13 +108,12 @@ def checks_markdown(checks: pd.DataFrame, study: str) -> list[str]:
         f"The one-at-a-time runs that move du most, made again by {ENGINE_NAMES[check]}: {agree} of "
         f"{len(checks)} within {100 * AGREEMENT:g} % (the difference is the {study} du against the {check} du).",
         "",
-        f"| run | du, {study} (mm) | du, {check} (mm) | difference | hinges, {study} | hinges, {check} | "
-        f"wall, {study} (s) | wall, {check} (s) |",
-        "|---|---|---|---|---|---|---|---|",
     ]
-    lines += [
-        f"| {r[RUN_COLUMN]} | {r[f'{study}_du_mm']:.2f} | {r[f'{check}_du_mm']:.2f} | {r['difference_pct']:+.2f} % "
-        f"| {r[f'{study}_hinges']} | {r[f'{check}_hinges']} | {r[f'{study}_wall_s']:.1f} | {r[f'{check}_wall_s']:.1f} |"
+    columns = [f"du, {study} (mm)", f"du, {check} (mm)", "difference"]
+    columns += [f"hinges, {study}", f"hinges, {check}", f"wall, {study} (s)", f"wall, {check} (s)"]
+    rows = (
+        [r[RUN_COLUMN], f"{r[f'{study}_du_mm']:.2f}", f"{r[f'{check}_du_mm']:.2f}", f"{r['difference_pct']:+.2f} %"]
+        + [r[f"{study}_hinges"], r[f"{check}_hinges"], f"{r[f'{study}_wall_s']:.1f}", f"{r[f'{check}_wall_s']:.1f}"]
         for _, r in checks.iterrows()
-    ]
-    return [*lines, ""]
+    )
+    return [*lines, *markdown_table(["run", *columns], rows), ""]
