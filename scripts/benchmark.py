@@ -35,6 +35,7 @@ from yadearch.results.rundir import read_summary
 from yadearch.results.summary import RunSummary
 from yadearch.solve.stages import Stage
 
+RUN_KEYS = ("wall_s", "du_mm", "steps", "steps_per_s")  # of each benchmarked run, in benchmark.json
 TARGET_SET2_WALL_S = 10.0  # docs/speed.md: the second round's targets
 TARGET_STIFF_WALL_S = 60.0  # any kn from 0.1 to 100, measured at the stiffest
 TARGET_SWEEP_WALL_S = 10 * 60.0
@@ -505,8 +506,8 @@ def main() -> int:
     montecarlo_core_s = campaign_core_s(Path(args.montecarlo)) if args.montecarlo else None
     montecarlo = sweep_status(Path(args.montecarlo)) if args.montecarlo else None
     report = {
-        **{f"{n}_{k}": (results[n] or {}).get(k) for n in results for k in ("wall_s", "du_mm", "steps", "steps_per_s")},
-        "stiff_name": (results.get("stiff") or {}).get("name"),
+        **{f"{n}_{k}": getattr(results[n], k, None) for n in results for k in RUN_KEYS},
+        "stiff_name": stiff.name if stiff is not None else None,
         "set2_du_reference_mm": du_ref,
         "set2_du_rel_diff": rel,
         "set2_same_hinges": hinges_match,
