@@ -80,15 +80,13 @@ def test_indices_converge_on_nested_samples_and_the_stable_sample_is_extrapolate
 
 def test_the_checks_are_the_ends_of_the_ranges_that_move_du_most():
     factors = (parse_factor("thickness_mm=22:26"), parse_factor("friction_deg=38:44"))
-    tornado = pd.DataFrame(
+    study_runs = pd.DataFrame(
         {
-            "factor": ["thickness_mm", "friction_deg"],
-            "du_base_mm": [100.0, 100.0],
-            "du_low_mm": [80.0, 100.5],
-            "du_high_mm": [109.0, math.nan],
+            RUN_COLUMN: ["base", "thickness_mm_low", "thickness_mm_high", "friction_deg_low", "friction_deg_high"],
+            "du_mm": [100.0, 80.0, 109.0, 100.5, math.nan],
         }
     )
-    rows = check_rows(tornado, factors, 3)
+    rows = check_rows(ya.preset("set2"), factors, study_runs, 3)
     assert [row[RUN_COLUMN] for row in rows] == ["thickness_mm_low", "thickness_mm_high", "friction_deg_low"]
     assert rows[0]["geometry.thickness_mm"] == 22.0 and rows[2]["material.friction_deg"] == 38.0
     assert other_engine("static") == "dem" and other_engine("dem") == "static"

@@ -29,6 +29,7 @@ CONVERGENCE_FROM = 32  # the smallest sample of the convergence table (base poin
 FIT_FROM = 128  # the changes fitted to estimate the sample that stability needs start at this size
 VALUE_DIGITS = 6  # significant figures of a sampled factor value (run tables stay readable)
 SEED_KEY = "imperfections.seed"
+BASE_RUN = "base"  # the one-at-a-time study's run of the base case
 MAX_SEED = 100_000
 
 
@@ -122,7 +123,7 @@ def base_value(base: ArchCase, factor: Factor) -> Any:
 
 def tornado_rows(base: ArchCase, factors: tuple[Factor, ...]) -> list[dict[str, Any]]:
     """The one-at-a-time runs: the base case, then each factor at the low and the high end of its range."""
-    rows: list[dict[str, Any]] = [{RUN_COLUMN: "base"}]
+    rows: list[dict[str, Any]] = [{RUN_COLUMN: BASE_RUN}]
     for factor in factors:
         if factor.in_tornado:
             rows += [
@@ -148,7 +149,7 @@ def tornado_table(base: ArchCase, factors: tuple[Factor, ...], results: pd.DataF
                     "high": factor.value(1.0),
                     "du_low_mm": low,
                     "du_high_mm": high,
-                    "du_base_mm": du.get("base", math.nan),
+                    "du_base_mm": du.get(BASE_RUN, math.nan),
                     "swing_mm": abs(high - low),
                 }
             )

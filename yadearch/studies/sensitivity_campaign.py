@@ -104,7 +104,7 @@ def run_sensitivity(
     tornado_results = campaign(tornado_rows(base, factors), TORNADO_RUNS)
     samples = campaign(sobol_rows(factors, base_points), SOBOL_RUNS)
     tornado = tornado_table(base, factors, tornado_results)
-    checks = run_checks(base, tornado, tornado_results, factors, check_runs, out, pool, timeout_s, progress)
+    checks = run_checks(base, tornado_results, factors, check_runs, out, pool, timeout_s, progress)
     du = collapse_displacement(samples)
     indices = pd.concat([sobol_indices(factors, du, n) for n in sample_sizes(base_points)], ignore_index=True)
     result = SensitivityResult(tornado, indices, convergence(indices), samples, checks)

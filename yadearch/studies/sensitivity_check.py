@@ -17,7 +17,7 @@ from yadearch.markdown import markdown_table
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool
 from yadearch.studies.grid import RUN_COLUMN
-from yadearch.studies.sensitivity import Factor
+from yadearch.studies.sensitivity import BASE_RUN, Factor, tornado_rows
 
 CHECK_RUNS = "check_runs"
 AGREEMENT = 0.01  # the two engines' du within this fraction (the cross-check's standard, docs/validation.md)
@@ -37,24 +37,20 @@ def check_count(count: int) -> None:
         raise CampaignError(f"check runs must be between 0 and {MAX_CHECKS}, got {count}")
 
 
-def check_rows(tornado: pd.DataFrame, factors: tuple[Factor, ...], count: int) -> list[dict[str, Any]]:
-    """The `count` ends of the factors' ranges whose one-at-a-time du lies furthest from the base
-    case's, as campaign rows named as the tornado's runs."""
-    by_name = {f.name: f for f in factors}
-    ends = []
-    for row in tornado.itertuples():
-        factor = by_name[row.factor]
-        for side, fraction, du in (("low", 0.0, row.du_low_mm), ("high", 1.0, row.du_high_mm)):
-            if math.isfinite(du):
-                move = abs(du - row.du_base_mm)
-                ends.append((move, {factor.key: factor.value(fraction), RUN_COLUMN: f"{factor.name}_{side}"}))
-    ends.sort(key=lambda end: -end[0])
-    return [row for _, row in ends[:count]]
+def check_rows(
+    base: ArchCase, factors: tuple[Factor, ...], study_runs: pd.DataFrame, count: int
+) -> list[dict[str, Any]]:
+    """The `count` one-at-a-time runs (`tornado_rows`) whose du in `study_runs` lies furthest from the
+    base case's, as campaign rows."""
+    du = dict(zip(study_runs[RUN_COLUMN], study_runs["du_mm"]))
+    rows = [row for row in tornado_rows(base, factors) if row[RUN_COLUMN] != BASE_RUN]
+    finite = [row for row in rows if math.isfinite(du.get(row[RUN_COLUMN], math.nan))]
+    finite.sort(key=lambda row: -abs(du[row[RUN_COLUMN]] - du[BASE_RUN]))
+    return finite[:count]
 
 
 def run_checks(
     base: ArchCase,
-    tornado: pd.DataFrame,
     study_runs: pd.DataFrame,
     factors: tuple[Factor, ...],
     count: int,
@@ -63,9 +59,10 @@ def run_checks(
     timeout_s: float | None = None,
     progress: bool = True,
 ) -> pd.DataFrame:
-    """Run (or resume) the checks in OUT/check_runs on the other engine and return both engines' du,
-    hinges and run times per check (empty if `count` is 0)."""
-    rows = check_rows(tornado, factors, count)
+    """Run (or resume) in OUT/check_runs, on the other engine, the `count` one-at-a-time runs of
+    `study_runs` (the tornado campaign's results) that move du most; return both engines' du, hinges
+    and run times per check (empty if `count` is 0)."""
+    rows = check_rows(base, factors, study_runs, count)
     if not rows:
         return pd.DataFrame()
     study, check = base.numerics.engine, other_engine(base.numerics.engine)
