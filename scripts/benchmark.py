@@ -17,6 +17,8 @@ the sessions a campaign folder recorded.
 --threads-steps N times N steps of the set 2 scene with 1 and with 2 OpenMP threads.
 --static times the static engine on set 2, kn 100, a 100-point kn sweep and 200 Monte Carlo samples,
 and prints its ratios to this invocation's DEM runs.
+--run-files N measures only the CPU time and disk of N static samples with whole and summary-only
+run folders (numerics.run_files), e.g. --run-files 40 --out reports/benchmark_run_files.json.
 Prints a verdict line per target and writes everything to the JSON file.
 """
 
@@ -395,6 +397,67 @@ def static_measurement(runs: Path, dem_set2: RunSummary, dem_stiff: RunSummary |
     return result
 
 
+def run_files_measurement(samples: int, runs: Path) -> dict:
+    """CPU time and disk a static Monte Carlo sample of the final imperfection case costs with its run
+    folder kept whole and kept to its summary (numerics.run_files), the same samples solved in this
+    process, the two settings alternated so that a drift of the machine's speed falls on both."""
+    import shutil
+
+    from yadearch.case.config import preset
+    from yadearch.errors import YadearchError
+    from yadearch.statics.simulate import simulate_static
+
+    base = preset("set2").with_overrides({"numerics.engine": "static", "imperfections.face_bump_sd_mm": 0.18})
+    cases = [base.with_overrides({"imperfections.seed": seed}) for seed in range(samples)]
+    simulate_static(cases[0], runs / "warm", log=lambda _: None)  # numba's cache loaded outside the timing
+    cpu = {"full": 0.0, "summary": 0.0}
+    disk = dict(cpu)
+    du: dict[str, list] = {"full": [], "summary": []}
+    stood = 0
+    for index, case in enumerate(cases):
+        try:
+            for files in cpu:
+                folder = runs / files / str(index)
+                shutil.rmtree(folder, ignore_errors=True)
+                start = time.process_time()
+                summary = simulate_static(
+                    case.with_overrides({"numerics.run_files": files}), folder, log=lambda _: None
+                )
+                cpu[files] += time.process_time() - start
+                disk[files] += sum(f.stat().st_size for f in folder.iterdir())
+                du[files].append(summary.du_mm)
+            stood += 1
+        except YadearchError:  # an arch that does not stand under its own weight: no folder to weigh
+            continue
+    result: dict[str, Any] = {
+        f"run_files_{files}_{what}": value / stood
+        for what, table in (("cpu_s", cpu), ("bytes", disk))
+        for files, value in table.items()
+    }
+    result["run_files_same_du"] = du["full"] == du["summary"]
+    result["run_files_samples"] = stood
+    result["run_files_cpu_ratio"] = cpu["summary"] / cpu["full"]
+    result["run_files_disk_ratio"] = disk["summary"] / disk["full"]
+    print(
+        f"run folders of {stood} static samples (of {samples} drawn, the others do not stand): "
+        f"whole {result['run_files_full_cpu_s']:.3f} s CPU and "
+        f"{result['run_files_full_bytes'] / 1024:.0f} KiB a sample, summary only "
+        f"{result['run_files_summary_cpu_s']:.3f} s and {result['run_files_summary_bytes'] / 1024:.0f} KiB "
+        f"(CPU x{result['run_files_cpu_ratio']:.2f}, disk x{result['run_files_disk_ratio']:.3f}); "
+        f"du {'the same to the bit' if result['run_files_same_du'] else 'DIFFERS'}"
+    )
+    result["verdicts"] = [
+        (
+            "a summary-only folder: the same du, at most 1/10 of the disk, no more CPU",
+            result["run_files_same_du"]
+            and result["run_files_disk_ratio"] <= 0.1
+            and result["run_files_cpu_ratio"] <= 1.0,
+            f"disk x{result['run_files_disk_ratio']:.3f}, CPU x{result['run_files_cpu_ratio']:.2f}",
+        )
+    ]
+    return result
+
+
 def line(name: str, s: RunSummary) -> str:
     """One printed line per run."""
     profile = s.profile or {}
@@ -450,6 +513,13 @@ def main() -> int:
         default=3000,
         help="steps over which a step's time is split into its parts (0: skip)",
     )
+    parser.add_argument(
+        "--run-files",
+        type=int,
+        default=0,
+        help="only measure this many static samples with whole and summary-only run folders "
+        "(numerics.run_files) and write them to --out",
+    )
     parser.add_argument("--breakdown-child", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--scene-rate", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--scene-model", default="joint", help=argparse.SUPPRESS)
@@ -465,6 +535,12 @@ def main() -> int:
     from yadearch.studies.sessions import campaign_core_s, campaign_wall_s
 
     runs = Path(args.runs)
+    if args.run_files:
+        measured_files = run_files_measurement(args.run_files, runs / "run_files")
+        verdicts_files = measured_files.pop("verdicts")
+        write_json(Path(args.out), {**measured_files, "measured": time.strftime("%Y-%m-%dT%H:%M:%S")})
+        print_verdicts(verdicts_files)
+        return 0
     cases = {"set1": preset("set1"), "set2": preset("set2")}
     stiff_case = preset("set2").with_overrides({"kn_N_per_mm3": 100.0})
     stiff_case.name = "kn100"
@@ -544,8 +620,7 @@ def main() -> int:
     static = static_measurement(runs / "static", s2, stiff) if args.static else None
     if static is not None:
         report.update({k: v for k, v in static.items() if k != "verdicts"})
-    Path(args.out).parent.mkdir(parents=True, exist_ok=True)
-    Path(args.out).write_text(json.dumps(report, indent=2) + "\n")
+    write_json(Path(args.out), report)
     print(f"set 2: {speedup:.1f}x faster than the slow reference ({reference.wall_s:.0f} s)")
     if model_speedup:
         print(
@@ -632,9 +707,20 @@ def main() -> int:
         )
     )
     verdicts += static["verdicts"] if static is not None else []
+    print_verdicts(verdicts)
+    return 0
+
+
+def write_json(path: Path, report: dict) -> None:
+    """The benchmark's figures as JSON (a benchmark is rerun whole: no partial file to protect)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(report, indent=2) + "\n")
+
+
+def print_verdicts(verdicts: list) -> None:
+    """One PASS or FAIL line per target with its measured figures."""
     for label, ok, detail in verdicts:
         print(f"{'PASS' if ok else 'FAIL'}  {label}: {detail}")
-    return 0
 
 
 if __name__ == "__main__":

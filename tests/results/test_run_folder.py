@@ -13,8 +13,8 @@ import pytest
 import yadearch as ya
 from yadearch.case.config import preset
 from yadearch.engine import process
-from yadearch.errors import RunFailedError, RunFolderError
-from yadearch.results.rundir import LOG_FILE, SUMMARY_FILE, is_complete, read_run, write_run
+from yadearch.errors import CaseError, RunFailedError, RunFolderError
+from yadearch.results.rundir import LOG_FILE, SUMMARY_FILE, case_differences, is_complete, read_run, write_run
 from yadearch.results.summary import RunSummary
 
 
@@ -109,6 +109,18 @@ def test_run_reuses_the_same_case_and_refuses_another(tmp_path, monkeypatch):
     with pytest.raises(RunFolderError, match="another case .*kn_N_per_mm3"):
         ya.run(preset("set2").replace(kn_N_per_mm3=10.0), out=tmp_path / "run", figures=False)
     assert read_run(tmp_path / "run").summary.du_mm == 87.0
+
+
+def test_what_a_folder_keeps_is_not_part_of_its_case(tmp_path):
+    """A campaign resumes over folders that kept everything with runs that keep only their summary
+    (numerics.run_files is not compared); a single run refuses 'summary' in one line, its result and
+    figures being its tables."""
+    finished(tmp_path / "run")
+    lean = preset("set2").with_overrides({"numerics.run_files": "summary"})
+    assert case_differences(tmp_path / "run", lean) == []
+    with pytest.raises(CaseError, match="numerics.run_files = 'summary' keeps no tables"):
+        ya.run(lean, out=tmp_path / "other", figures=False)
+    assert not (tmp_path / "other").exists()
 
 
 def test_an_interrupted_run_is_not_a_failure_and_stays_pending(tmp_path, monkeypatch, no_yade_check):

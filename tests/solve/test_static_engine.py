@@ -14,12 +14,13 @@ from conftest import REPO, stacked_pairs
 from scipy.optimize import brentq
 
 from yadearch.case.config import preset
+from yadearch.errors import RunFolderError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, Joint, prism
 from yadearch.model.joint_law import JointLaw, joint_forces, joint_table
 from yadearch.model.joint_tangent import joint_tangent
 from yadearch.model.movement import Movement
-from yadearch.results.rundir import read_summary
+from yadearch.results.rundir import is_complete, read_run, read_summary
 from yadearch.results.summary import HingeRef
 from yadearch.solve.limit import limit_analysis
 from yadearch.solve.newton import Solver, SolverSettings, largest_move
@@ -356,6 +357,20 @@ def test_stiff_joints_approach_the_rigid_limit(coarse):
     for a, b in zip(ours, rigid.collapse_hinges):
         assert a[-1] == b[-1] and abs(int(a[:-1]) - int(b[:-1])) <= 1
     assert soft.du_mm < stiff.du_mm < rigid.du_rigid_mm
+
+
+def test_a_run_that_keeps_only_its_summary_computes_the_same(coarse, tmp_path):
+    """numerics.run_files = 'summary' changes what the folder keeps, not what the run computes: du and
+    the hinges of the full run to the bit, a complete folder of case.toml and summary.json only, whose
+    tables a reader is refused in one line."""
+    case = preset("set2").with_overrides({"geometry.n_voussoirs": 15, "numerics.run_files": "summary"})
+    lean = simulate_static(case.replace(kn_N_per_mm3=300), tmp_path / "lean", log=_quiet)
+    full = coarse[1][300]
+    assert lean.du_mm == full.du_mm and lean.hinges_at_collapse == full.hinges_at_collapse
+    assert sorted(p.name for p in (tmp_path / "lean").iterdir()) == ["case.toml", "summary.json"]
+    assert is_complete(tmp_path / "lean")
+    with pytest.raises(RunFolderError, match="kept only its summary"):
+        read_run(tmp_path / "lean")
 
 
 @pytest.fixture(scope="module")

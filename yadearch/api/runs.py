@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 from yadearch.api.results import RunResult, open_run
 from yadearch.case.config import ArchCase
 from yadearch.case.config import preset as _preset
-from yadearch.errors import RunFolderError
+from yadearch.errors import CaseError, RunFolderError
 from yadearch.results.rundir import case_differences, is_current
 
 if TYPE_CHECKING:
@@ -78,6 +78,11 @@ def run(
     from yadearch.engine.process import run_case_process
 
     case = with_engine(case, engine)
+    if not case.numerics.keeps_tables:
+        raise CaseError(
+            f"numerics.run_files = {case.numerics.run_files!r} keeps no tables for a single run's result "
+            "and figures; it is for campaigns (sweep, montecarlo, sensitivity, ...): use 'full' here"
+        )
     folder = Path(out) if out is not None else DEFAULT_RUNS_DIR / case.name
     if is_current(folder) and not rerun:
         differences = case_differences(folder, case)

@@ -6,6 +6,9 @@ from dataclasses import dataclass, field
 
 from yadearch.case.fields import number_meta
 
+FULL_RUN_FILES = "full"  # numerics.run_files: every table, state and snapshot of the run
+SUMMARY_RUN_FILES = "summary"  # numerics.run_files: case.toml, summary.json and run.log only
+
 
 @dataclass
 class NumericsConfig:
@@ -215,3 +218,18 @@ class NumericsConfig:
             "predates": 100_000_000,
         },
     )
+    run_files: str = field(
+        default=FULL_RUN_FILES,
+        metadata={
+            "choices": (FULL_RUN_FILES, SUMMARY_RUN_FILES),
+            "predates": FULL_RUN_FILES,
+            "doc": "what the run folder keeps: 'full' = its tables, states and snapshots (figures, "
+            "analysis, movies); 'summary' = case.toml, summary.json and run.log, for campaigns of "
+            "thousands of runs (a twentieth of the disk, docs/speed.md); changes no result",
+        },
+    )
+
+    @property
+    def keeps_tables(self) -> bool:
+        """True if the run folder keeps its tables, states and snapshots (run_files = 'full')."""
+        return self.run_files == FULL_RUN_FILES

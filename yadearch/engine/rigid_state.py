@@ -103,5 +103,13 @@ def _load_on(runner: Runner, start_mm: float, out: Path | None, command: dict, l
         )
     if out is not None:  # a run folder from the placed state on, with the command that placed it
         records = runner.records
-        write_run(out, runner.case.to_toml(), records.series, records.joints, records.snapshots, summary)
+        write_run(
+            out,
+            runner.case.to_toml(),
+            records.series,
+            records.joints,
+            records.snapshots,
+            summary,
+            tables=runner.case.numerics.keeps_tables,
+        )
         write_text_atomically(out / COMMAND_FILE, json.dumps({**command, "start_mm": start_mm}, indent=1) + "\n")

@@ -80,6 +80,7 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
         summary,
         imperfections.table() if imperfections else None,
         runner.records.states,
+        tables=case.numerics.keeps_tables,
     )
     du = summary.du_mm
     log(

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import tomllib
 from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
@@ -14,6 +15,7 @@ import pandas as pd
 
 from yadearch.atomic import write_atomically, write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase, as_ran, with_current_names
+from yadearch.case.numerics_section import FULL_RUN_FILES, SUMMARY_RUN_FILES
 from yadearch.errors import RunFolderError
 from yadearch.results.states import STATES_FILE, RunStates, read_states, write_states
 from yadearch.results.summary import STATIC, STATIC_REVISION, RunSummary
@@ -73,12 +75,17 @@ def write_run(
     summary: RunSummary,
     imperfections: dict[str, Any] | None = None,
     states: list[dict[str, Any]] | None = None,
+    tables: bool = True,
 ) -> None:
     """Write every file of a run folder, each atomically (imperfections.csv only for an imperfect
-    arch, states.npz when the run kept its states); summary.json last, with its schema version and a
-    completeness marker, so that a valid summary means a complete folder."""
+    arch, states.npz when the run kept its states; only case.toml and the summary without `tables`,
+    numerics.run_files = 'summary'); summary.json last, with its schema version and a completeness
+    marker, so that a valid summary means a complete folder."""
     out.mkdir(parents=True, exist_ok=True)
     write_text_atomically(out / CASE_FILE, case_toml)
+    if not tables:
+        _write_summary(out, dataclasses.replace(summary, table_rows={}))
+        return
     if imperfections is not None:
         write_csv_atomically(out / IMPERFECTIONS_FILE, pd.DataFrame(imperfections))
     for name, rows in ((SERIES_FILE, series), (JOINTS_FILE, joints)):
@@ -86,8 +93,12 @@ def write_run(
     write_text_atomically(out / SNAPSHOTS_FILE, json.dumps(snapshots, indent=1, default=_json_default))
     if states:
         write_states(out / STATES_FILE, states)
-    counted = dataclasses.replace(summary, table_rows={SERIES_FILE: len(series), JOINTS_FILE: len(joints)})
-    marked = {**counted.to_json(), "schema_version": SCHEMA_VERSION, "complete": True}
+    _write_summary(out, dataclasses.replace(summary, table_rows={SERIES_FILE: len(series), JOINTS_FILE: len(joints)}))
+
+
+def _write_summary(out: Path, summary: RunSummary) -> None:
+    """summary.json, marked complete with its schema version (written last: it vouches for the folder)."""
+    marked = {**summary.to_json(), "schema_version": SCHEMA_VERSION, "complete": True}
     write_text_atomically(out / SUMMARY_FILE, json.dumps(marked, indent=2, default=_json_default) + "\n")
 
 
@@ -151,8 +162,6 @@ def finished_summary(path: Path) -> RunSummary | None:
 def case_differences(path: Path, case: ArchCase) -> list[str]:
     """How the finished or started run in `path` differs from `case` ("section.key: ran X, wanted
     Y"), comparing what each runs with (`as_ran`; the name aside)."""
-    import tomllib
-
     ran = as_ran(tomllib.loads((Path(path) / CASE_FILE).read_text()))
     wanted = as_ran(case.to_dict())
 
@@ -192,15 +201,20 @@ def holds_case(path: Path, case: ArchCase) -> bool:
 
 
 def read_run(path: str | Path) -> RunFolder:
-    """Read a run folder written by `write_run`."""
-    import tomllib
-
+    """Read a run folder written by `write_run` (RunFolderError in one line for one that kept only
+    its summary: it has nothing to analyse or draw)."""
     path = Path(path)
     summary = read_summary(path)
     try:
+        case = with_current_names(tomllib.loads((path / CASE_FILE).read_text()))
+        if case.get("numerics", {}).get("run_files", FULL_RUN_FILES) == SUMMARY_RUN_FILES:
+            raise RunFolderError(
+                f"{path} kept only its summary (numerics.run_files = 'summary'): no tables, states or "
+                "snapshots to analyse or draw; run the case again with numerics.run_files = 'full'"
+            )
         folder = RunFolder(
             path=path,
-            case=with_current_names(tomllib.loads((path / CASE_FILE).read_text())),
+            case=case,
             series=pd.read_csv(path / SERIES_FILE),
             joints=pd.read_csv(path / JOINTS_FILE),
             snapshots=json.loads((path / SNAPSHOTS_FILE).read_text()),

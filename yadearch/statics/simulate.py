@@ -117,6 +117,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         summary,
         arch.imperfections.table() if arch.imperfections is not None else None,
         records.states,
+        tables=num.keeps_tables,
     )
     du = summary.du_mm
     log(

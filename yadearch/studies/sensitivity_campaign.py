@@ -13,6 +13,7 @@ import pandas as pd
 from yadearch.analysis.samples import collapse_displacement
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
+from yadearch.case.numerics_section import SUMMARY_RUN_FILES
 from yadearch.engine.process import STATIC_ENGINE
 from yadearch.markdown import markdown_table
 from yadearch.plotting.sensitivity import convergence_figure, indices_figure, tornado_figure
@@ -88,8 +89,9 @@ def run_sensitivity(
     check_runs: int = 0,
 ) -> SensitivityResult:
     """Run (or resume) the one-at-a-time runs in OUT/tornado_runs, Saltelli's sample of `base_points`
-    in OUT/runs and the `check_runs` one-at-a-time runs that move du most again on the other engine
-    in OUT/check_runs; write the tables, figures and sensitivity.md; return the result."""
+    in OUT/runs (its folders keep only their summaries, numerics.run_files) and the `check_runs`
+    one-at-a-time runs that move du most again on the other engine in OUT/check_runs; write the
+    tables, figures and sensitivity.md; return the result."""
     check_base_points(base_points)
     check_factors(base, factors)
     check_count(check_runs)
@@ -98,17 +100,21 @@ def run_sensitivity(
     # a static run's failure (an arch that cannot stand) is deterministic: it is not made again
     retry = base.numerics.engine != STATIC_ENGINE
 
-    def campaign(rows: list[dict], folder: str) -> pd.DataFrame:
-        return run_campaign(base, rows, out / folder, pool, timeout_s=timeout_s, progress=progress, retry_failed=retry)
+    def campaign(case: ArchCase, rows: list[dict], folder: str) -> pd.DataFrame:
+        return run_campaign(case, rows, out / folder, pool, timeout_s=timeout_s, progress=progress, retry_failed=retry)
 
-    tornado_results = campaign(tornado_rows(base, factors), TORNADO_RUNS)
-    samples = campaign(sobol_rows(factors, base_points), SOBOL_RUNS)
+    tornado_results = campaign(base, tornado_rows(base, factors), TORNADO_RUNS)
+    # thousands of runs of which only du is read: their folders keep only the summary
+    lean = base.with_overrides({"numerics.run_files": SUMMARY_RUN_FILES})
+    samples = campaign(lean, sobol_rows(factors, base_points), SOBOL_RUNS)
     tornado = tornado_table(base, factors, tornado_results)
     checks = run_checks(base, tornado_results, factors, check_runs, out, pool, timeout_s, progress)
     du = collapse_displacement(samples)
     indices = pd.concat([sobol_indices(factors, du, n) for n in sample_sizes(base_points)], ignore_index=True)
     result = SensitivityResult(tornado, indices, convergence(indices), samples, checks)
-    if not checks.empty:
+    if checks.empty:  # a table of checks is the last invocation's, like the report
+        (out / CHECKS_TABLE).unlink(missing_ok=True)
+    else:
         write_csv_atomically(out / CHECKS_TABLE, checks)
     write_csv_atomically(out / TORNADO_TABLE, tornado)
     write_csv_atomically(out / INDICES_TABLE, indices)
