@@ -138,6 +138,12 @@ def test_explicit_table(tmp_path):
         read_table(table)
 
 
+def test_a_table_naming_two_runs_alike_is_refused_naming_them(tmp_path):
+    rows = [{"run": "a", "kn_N_per_mm3": 1}, {"run": "b", "kn_N_per_mm3": 2}, {"run": "a", "kn_N_per_mm3": 3}]
+    with pytest.raises(YadearchError, match=r"duplicate runs \['a'\]"):
+        plan(BASE, rows, tmp_path / "c")
+
+
 def test_the_costliest_runs_start_first(tmp_path):
     """Stiff joints need the most steps (smaller time step, slower loading): they start first."""
     task = FakeRuns()

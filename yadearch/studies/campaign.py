@@ -10,6 +10,7 @@ from __future__ import annotations
 import hashlib
 import math
 import time
+from collections import Counter
 from collections.abc import Callable
 from concurrent.futures import FIRST_COMPLETED, Future, wait
 from pathlib import Path
@@ -66,8 +67,7 @@ def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]
     if invalid:
         more = f" (and {len(invalid) - 1} more of the {len(rows)} runs)" if len(invalid) > 1 else ""
         raise CaseError(f"{invalid[0]}{more}; nothing was run")
-    names = [s.name for s in specs]
-    duplicates = sorted({n for n in names if names.count(n) > 1})
+    duplicates = sorted(name for name, count in Counter(s.name for s in specs).items() if count > 1)
     if duplicates:
         raise YadearchError(f"campaign has duplicate runs {duplicates}")
     return specs
