@@ -23,9 +23,12 @@ from yadearch.plotting.sweep import kn_sweep_figure
 from yadearch.results.summary import RunSummary
 from yadearch.studies.campaign import (
     FAILED_FILE,
+    RESULTS_COST_SHARE,
+    RESULTS_EVERY_S,
     RESULTS_FILE,
     batch_run,
     plan,
+    results_interval,
     run_campaign,
 )
 from yadearch.studies.campaign_table import label_hinges
@@ -210,6 +213,11 @@ def test_empty_and_huge_grids_are_refused_in_one_line(params, message):
 def test_a_scalar_where_a_list_of_values_is_expected_is_a_type_error():
     with pytest.raises(TypeError, match="kn_N_per_mm3: give a list of values, got 5"):
         grid({"kn_N_per_mm3": 5})
+
+
+def test_a_large_results_table_is_rewritten_less_often_than_a_small_one():
+    assert results_interval(0.01) == RESULTS_EVERY_S
+    assert results_interval(1.7) == pytest.approx(1.7 / RESULTS_COST_SHARE)  # 57 000 runs: every 34 s
 
 
 def test_resume_redoes_only_unfinished_runs(tmp_path):
