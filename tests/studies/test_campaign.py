@@ -215,6 +215,19 @@ def test_a_scalar_where_a_list_of_values_is_expected_is_a_type_error():
         grid({"kn_N_per_mm3": 5})
 
 
+def test_a_resumed_campaign_plans_only_the_runs_it_has_to_make(tmp_path, monkeypatch):
+    """A finished run of the same case was checked when it ran: planning a grown campaign (the
+    sensitivity study's 57 000 runs, half of them done) checks only the new and the failed ones."""
+    from yadearch.studies import campaign as campaign_module
+
+    rows = grid({"kn_N_per_mm3": [0.1, 1.0, 10.0]})
+    campaign(tmp_path, FakeRuns(fail=(0.1,)), rows)
+    planned = []
+    monkeypatch.setattr(campaign_module, "plan_run", lambda case: planned.append(case.name))
+    specs = plan(BASE, grid({"kn_N_per_mm3": [0.1, 1.0, 10.0, 100.0]}), tmp_path)
+    assert len(specs) == 4 and sorted(planned) == ["kn0.1", "kn100"]
+
+
 def test_a_large_results_table_is_rewritten_less_often_than_a_small_one():
     assert results_interval(0.01) == RESULTS_EVERY_S
     assert results_interval(1.7) == pytest.approx(1.7 / RESULTS_COST_SHARE)  # 57 000 runs: every 34 s

@@ -46,8 +46,8 @@ RESULTS_COST_SHARE = 0.05  # ... and no more often than keeps its rewriting to t
 
 
 def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]:
-    """The runs of a campaign, every one checked before any runs: an invalid parameter value (or an
-    absurd combination, `plan_run`) refuses the campaign in one line naming the run; so does a
+    """The runs of a campaign, every one to run checked before any runs: an invalid parameter value
+    (or an absurd combination, `plan_run`) refuses the campaign in one line naming the run; so does a
     finished folder that holds a different case (resuming would mix campaigns)."""
     check_campaign_size(len(rows))
     specs: list[RunSpec] = []
@@ -57,13 +57,14 @@ def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]
         name = str(row.get(RUN_COLUMN) or (run_tag(overrides) if overrides else base.name))
         try:
             case = base.with_overrides({**overrides, "name": name})
-            plan_run(case)
+            spec = RunSpec(name, overrides, out / confined_folder_name(name), case)
+            if is_complete(spec.folder):
+                _check_same_case(spec)
+            if not is_current(spec.folder):  # a finished, current run of this case was planned to run
+                plan_run(case)
         except CaseError as exc:
             invalid.append(f"run {name}: {exc}")
             continue
-        spec = RunSpec(name, overrides, out / confined_folder_name(name), case)
-        if is_complete(spec.folder):
-            _check_same_case(spec)
         specs.append(spec)
     if invalid:
         more = f" (and {len(invalid) - 1} more of the {len(rows)} runs)" if len(invalid) > 1 else ""
