@@ -112,12 +112,16 @@ def test_run_reuses_the_same_case_and_refuses_another(tmp_path, monkeypatch):
 
 
 def test_what_a_folder_keeps_is_not_part_of_its_case(tmp_path):
-    """A campaign resumes over folders that kept everything with runs that keep only their summary
-    (numerics.run_files is not compared); a single run refuses 'summary' in one line, its result and
-    figures being its tables."""
+    """A campaign of runs that keep only their summary resumes over folders that kept everything, not
+    the reverse (a summary has no tables to give); a single run refuses 'summary' in one line, its
+    result and figures being its tables."""
     finished(tmp_path / "run")
     lean = preset("set2").with_overrides({"numerics.run_files": "summary"})
-    assert case_differences(tmp_path / "run", lean) == []
+    assert case_differences(tmp_path / "run", lean) == []  # a whole folder serves a summary
+    finished(tmp_path / "lean", lean)
+    assert case_differences(tmp_path / "lean", preset("set2")) == [
+        "numerics.run_files: ran 'summary' (no tables), wanted 'full'"
+    ]
     with pytest.raises(CaseError, match="numerics.run_files = 'summary' keeps no tables"):
         ya.run(lean, out=tmp_path / "other", figures=False)
     assert not (tmp_path / "other").exists()

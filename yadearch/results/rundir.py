@@ -161,20 +161,29 @@ def finished_summary(path: Path) -> RunSummary | None:
 
 def case_differences(path: Path, case: ArchCase) -> list[str]:
     """How the finished or started run in `path` differs from `case` ("section.key: ran X, wanted
-    Y"), comparing what each runs with (`as_ran`; the name aside)."""
-    ran = as_ran(tomllib.loads((Path(path) / CASE_FILE).read_text()))
-    wanted = as_ran(case.to_dict())
+    Y"), comparing what each runs with (`as_ran`; the name aside), and a folder that kept only its
+    summary where `case` keeps its tables."""
+    stored = tomllib.loads((Path(path) / CASE_FILE).read_text())
+    ran, wanted = as_ran(stored), as_ran(case.to_dict())
 
     def show(value: Any) -> str:
         return f"{value:.6g}" if isinstance(value, float) else repr(value)
 
-    return [
+    differences = [
         f"{section}.{key}: ran {show(value)}, wanted {show(wanted[section][key])}"
         for section, values in ran.items()
         if section != "name"
         for key, value in values.items()
         if value != wanted[section][key]
     ]
+    if kept_only_summary(with_current_names(stored)) and case.numerics.keeps_tables:  # the reverse serves
+        differences.append(f"numerics.run_files: ran {SUMMARY_RUN_FILES!r} (no tables), wanted {FULL_RUN_FILES!r}")
+    return differences
+
+
+def kept_only_summary(case: dict[str, Any]) -> bool:
+    """True if the run of this stored case (today's names) kept only its summary (numerics.run_files)."""
+    return case.get("numerics", {}).get("run_files", FULL_RUN_FILES) == SUMMARY_RUN_FILES
 
 
 def outdated(path: Path) -> bool:
@@ -207,7 +216,7 @@ def read_run(path: str | Path) -> RunFolder:
     summary = read_summary(path)
     try:
         case = with_current_names(tomllib.loads((path / CASE_FILE).read_text()))
-        if case.get("numerics", {}).get("run_files", FULL_RUN_FILES) == SUMMARY_RUN_FILES:
+        if kept_only_summary(case):
             raise RunFolderError(
                 f"{path} kept only its summary (numerics.run_files = 'summary'): no tables, states or "
                 "snapshots to analyse or draw; run the case again with numerics.run_files = 'full'"
