@@ -195,3 +195,24 @@ def test_a_static_run_of_another_engine_revision_is_made_again_not_reused(tmp_pa
     (tmp_path / FAILED_FILE).write_text(json.dumps(record))
     assert not failure_stands(tmp_path, static)  # a static failure of another revision is tried again
     assert failure_stands(tmp_path, case)  # a DEM run's failure stands
+
+
+def test_a_results_row_never_shows_an_outdated_run_as_today_s(tmp_path):
+    """A static run of another engine revision whose remake failed keeps its old folder (a failed
+    run never destroys a finished one): its results row is the failure, not the old du; without a
+    remake it is pending."""
+    from yadearch.studies.campaign_table import RunSpec, run_row
+    from yadearch.studies.failures import record_failure
+
+    case = preset("set1").replace(n_voussoirs=9, kn_N_per_mm3=1.0, engine="static")
+    ya.run(case, out=tmp_path / "run", quiet=True, figures=False)
+    summary_path = tmp_path / "run" / SUMMARY_FILE
+    written = json.loads(summary_path.read_text())
+    written.pop("engine_revision")  # as the first revision wrote it
+    summary_path.write_text(json.dumps(written))
+    spec = RunSpec("run", {}, tmp_path / "run", case)
+    assert run_row(spec, tmp_path)["status"] == "pending"
+    record_failure(tmp_path / "run", case, "the arch does not stand under its own weight", 0.1)
+    row = run_row(spec, tmp_path)
+    assert row["status"] == "failed" and row["reason"].startswith("the arch does not stand")
+    assert row["du_mm"] != row["du_mm"]  # NaN: no du from the outdated run

@@ -193,11 +193,17 @@ def outdated(path: Path) -> bool:
     return summary is not None and _other_static_revision(summary)
 
 
-def is_current(path: Path) -> bool:
-    """True if the folder holds a finished run that today's engines would give alike (`outdated`);
-    its summary.json is read once."""
+def current_summary(path: Path) -> RunSummary | None:
+    """The summary of the finished run in `path` if today's engines would give it alike; None for a
+    folder without one or with a run of another static engine revision (`outdated`), whose results
+    no table may show as today's."""
     summary = finished_summary(path)
-    return summary is not None and not _other_static_revision(summary)
+    return None if summary is None or _other_static_revision(summary) else summary
+
+
+def is_current(path: Path) -> bool:
+    """True if the folder holds a finished run that today's engines would give alike (`outdated`)."""
+    return current_summary(path) is not None
 
 
 def _other_static_revision(summary: RunSummary) -> bool:

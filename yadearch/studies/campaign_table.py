@@ -13,7 +13,7 @@ import pandas as pd
 
 from yadearch.case.config import ArchCase
 from yadearch.model.hinges import PAPER_LABELS
-from yadearch.results.rundir import finished_summary
+from yadearch.results.rundir import current_summary, outdated
 from yadearch.results.summary import RunSummary
 from yadearch.studies.failures import FAILED_FILE
 from yadearch.studies.grid import RUN_COLUMN
@@ -63,7 +63,7 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
         "friction_interface": None,
         "engine": case.numerics.engine,
     }
-    summary = finished_summary(spec.folder)
+    summary = current_summary(spec.folder)  # an outdated run's du is no result (its remake may have failed)
     if summary is not None:
         du = summary.du_mm
         friction = summary.friction
@@ -87,6 +87,8 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
     elif (spec.folder / FAILED_FILE).is_file():
         failed = json.loads((spec.folder / FAILED_FILE).read_text())
         row.update(empty, wall_s=failed.get("wall_s", math.nan), status="failed", reason=failed.get("reason", ""))
+    elif outdated(spec.folder):
+        row.update(empty, status="pending", reason="made by another revision of the static engine: to be run again")
     else:
         row.update(empty, status="pending", reason="not run yet (interrupted?)")
     row["folder"] = str(spec.folder.relative_to(out)) if spec.folder.is_relative_to(out) else str(spec.folder)

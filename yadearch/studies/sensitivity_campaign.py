@@ -203,9 +203,15 @@ def sensitivity_markdown(
             ),
         ),
         "",
-        f"If the largest change falls as 1/sqrt(N), as a Monte Carlo error does (fitted from {FIT_FROM} base "
-        f"points up), the indices are stable to {STABLE_TO} at about {needed} base points "
-        f"({needed * (len(factors) + 2)} runs).",
+        (
+            f"The last doubling moved no index by more than {STABLE_TO}. The changes are Monte Carlo errors "
+            f"and not monotone: fitted as 1/sqrt(N) from {FIT_FROM} base points up, they stay below "
+            f"{STABLE_TO} from about {needed} base points ({needed * (len(factors) + 2)} runs)."
+            if result.stable
+            else f"If the largest change falls as 1/sqrt(N), as a Monte Carlo error does (fitted from {FIT_FROM} "
+            f"base points up), the indices are stable to {STABLE_TO} at about {needed} base points "
+            f"({needed * (len(factors) + 2)} runs)."
+        ),
         "",
         f"![convergence]({CONVERGENCE_FIGURE}.png)",
         "",
