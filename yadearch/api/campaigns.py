@@ -185,7 +185,7 @@ def capacity(
 def sensitivity(
     case: ArchCase | str,
     out: str | Path,
-    base_points: int = 256,
+    base_points: int | None = None,
     factors: tuple | None = None,
     engine: str | None = None,
     jobs: int | None = None,
@@ -194,18 +194,20 @@ def sensitivity(
     check_runs: int = 0,
 ) -> SensitivityResult:
     """What du of `case` is sensitive to: each factor alone at the ends of its range (a tornado) and
-    Sobol indices from Saltelli's sample of `base_points` (a power of two), both resumable campaigns in
+    Sobol indices from Saltelli's sample of `base_points` (a power of two; default
+    `sensitivity_campaign.DEFAULT_BASE_POINTS`, 128), both resumable campaigns in
     `out`; `factors` (`yadearch.studies.sensitivity.Factor`s) default to the paper arch's plausible
     ranges; the `check_runs` one-at-a-time runs that move du most are made again on the other engine
     (the DEM for a static study). Writes the tables, figures and sensitivity.md; returns the
     `SensitivityResult`."""
     from yadearch.studies.executors import open_pool
     from yadearch.studies.sensitivity import PAPER_FACTORS, check_base_points, check_factors
-    from yadearch.studies.sensitivity_campaign import run_sensitivity
+    from yadearch.studies.sensitivity_campaign import DEFAULT_BASE_POINTS, run_sensitivity
     from yadearch.studies.sensitivity_check import check_count
 
     case = with_engine(case, engine)
     chosen = tuple(factors) if factors else PAPER_FACTORS
+    base_points = DEFAULT_BASE_POINTS if base_points is None else base_points
     check_base_points(base_points)  # refused before a pool starts
     check_factors(case, chosen)
     check_count(check_runs)

@@ -48,7 +48,9 @@ REPORT = "sensitivity.md"
 TORNADO_FIGURE = "tornado"
 INDICES_FIGURE = "indices"
 CONVERGENCE_FIGURE = "convergence"
-DEFAULT_BASE_POINTS = 256
+DEFAULT_BASE_POINTS = (
+    128  # a first look within 10 minutes on two cores (docs/validation.md); its report says what N would be stable
+)
 
 
 @dataclass(frozen=True)
