@@ -159,13 +159,15 @@ def _run_planned(
     out.mkdir(parents=True, exist_ok=True)
     remove_stale_temporaries(out)  # left by a campaign killed while it wrote its tables
     write_run_table(specs, out)
-    complete = {s.name for s in specs if is_current(s.folder)}  # run names are unique (`plan`)
+    rows = {s.name: run_row(s, out) for s in specs}  # run names are unique (`plan`)
+    complete = {name for name, row in rows.items() if row["status"] == "done"}  # current runs (`run_row`)
     todo = [s for s in specs if s.name not in complete and (retry_failed or not failure_stands(s.folder, s.case))]
     # Longest first: the last runs to start are short, so no core idles while one long run ends
     # the campaign (the 13-point kn sweep's stiffest points take 10-40x its softest).
     todo.sort(key=lambda spec: expected_cost(spec.case), reverse=True)
     for spec in todo:
         (spec.folder / FAILED_FILE).unlink(missing_ok=True)
+        rows[spec.name] = run_row(spec, out)  # pending until it ends
     if task is execute and any(s.case.numerics.engine != STATIC_ENGINE for s in todo):
         check_yade_installed()  # a campaign of static runs needs no YADE
     bar = tqdm(
@@ -192,7 +194,6 @@ def _run_planned(
         for _ in range(SUBMITTED_PER_SLOT * pool.slots):
             submit_next()
         bar.set_postfix(counts, running=min(pool.slots, len(futures)))
-        rows = {s.name: run_row(s, out) for s in specs}
         written, interval = time.time(), RESULTS_EVERY_S
         while futures:
             finished, _ = wait(futures, return_when=FIRST_COMPLETED)

@@ -48,9 +48,8 @@ REPORT = "sensitivity.md"
 TORNADO_FIGURE = "tornado"
 INDICES_FIGURE = "indices"
 CONVERGENCE_FIGURE = "convergence"
-DEFAULT_BASE_POINTS = (
-    128  # a first look within 10 minutes on two cores (docs/validation.md); its report says what N would be stable
-)
+# a first look within 10 minutes on two cores (docs/validation.md); its report says what N would be stable
+DEFAULT_BASE_POINTS = 128
 
 
 @dataclass(frozen=True)
@@ -184,6 +183,7 @@ def sensitivity_markdown(
     ]
     verdict = "stable" if result.stable else "NOT stable"
     needed = result.stable_base_points
+    needed_runs = f"{needed} base points ({needed * (len(factors) + 2)} runs)"
     lines += [
         "",
         f"Largest change of an index as the sample doubles: {result.shift:.3f} ({verdict}: "
@@ -208,11 +208,10 @@ def sensitivity_markdown(
         (
             f"The last doubling moved no index by more than {STABLE_TO}. The changes are Monte Carlo errors "
             f"and not monotone: fitted as 1/sqrt(N) from {FIT_FROM} base points up, they stay below "
-            f"{STABLE_TO} from about {needed} base points ({needed * (len(factors) + 2)} runs)."
+            f"{STABLE_TO} from about {needed_runs}."
             if result.stable
             else f"If the largest change falls as 1/sqrt(N), as a Monte Carlo error does (fitted from {FIT_FROM} "
-            f"base points up), the indices are stable to {STABLE_TO} at about {needed} base points "
-            f"({needed * (len(factors) + 2)} runs)."
+            f"base points up), the indices are stable to {STABLE_TO} at about {needed_runs}."
         ),
         "",
         f"![convergence]({CONVERGENCE_FIGURE}.png)",
