@@ -14,6 +14,7 @@ from conftest import REPO, stacked_pairs
 from scipy.optimize import brentq
 
 from yadearch.case.config import preset
+from yadearch.case.mechanics import runaway_length
 from yadearch.errors import RunFolderError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, Joint, prism
@@ -47,7 +48,7 @@ def _quiet(_line: str) -> None:
 def _loading(case) -> StaticLoading:
     arch = static_arch(case)
     return StaticLoading(
-        arch, path_settings(case.numerics, case.loading.max_support_displacement_mm), units.mm(case.numerics.runaway_mm)
+        arch, path_settings(case.numerics, case.loading.max_support_displacement_mm), runaway_length(case)
     )
 
 
@@ -433,7 +434,7 @@ def test_self_weight_of_a_wedged_arch_is_the_dems_equilibrium():
 
     case = load_case(WEDGED_ARCH / "case.toml")
     arch = static_arch(case)
-    loading = StaticLoading(arch, path_settings(case.numerics, 150.0), units.mm(case.numerics.runaway_mm))
+    loading = StaticLoading(arch, path_settings(case.numerics, 150.0), runaway_length(case))
     state = loading.selfweight()
     dem = json.loads((WEDGED_ARCH / "selfweight.json").read_text())
     dem_u = np.column_stack([np.array(dem["pos_m"])[:, :2], np.array(dem["rot_rad"]) * arch.length]).ravel()

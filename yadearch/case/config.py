@@ -18,6 +18,7 @@ import tomli_w
 
 from yadearch.case.sections import (
     RENAMED,
+    RETIRED,
     SECTIONS,
     GeometryConfig,
     ImperfectionsConfig,
@@ -103,14 +104,24 @@ def _resolve_key(key: str) -> tuple[str | None, str]:
     if "." in key:
         section, name = key.split(".", 1)
         name = RENAMED.get((section, name), name)
+        _refuse_retired(section, name)
         if section not in SECTIONS or name not in {f.name for f in fields(SECTIONS[section])}:
             raise CaseError(f"unknown parameter {key!r}")
         return section, name
     key = next((new for (_, old), new in RENAMED.items() if old == key), key)
+    for section, name in RETIRED:
+        if name == key:
+            _refuse_retired(section, name)
     owners = [s for s, cls in SECTIONS.items() if key in {f.name for f in fields(cls)}]
     if not owners:
         raise CaseError(f"unknown parameter {key!r}; see `yadearch params` for the list")
     return owners[0], key
+
+
+def _refuse_retired(section: str, name: str) -> None:
+    """A parameter of a former version set by a user: one line saying what replaced it."""
+    if (section, name) in RETIRED:
+        raise CaseError(f"{section}.{name} is no longer a parameter: {RETIRED[section, name]}")
 
 
 def _check_value(qualified: str, f: dataclasses.Field, value: Any) -> None:
@@ -196,7 +207,7 @@ def case_from_dict(data: dict[str, Any]) -> ArchCase:
 
 def current_names(section_name: str, values: Mapping[str, Any]) -> dict[str, Any]:
     """A section's parameters with former names (`RENAMED`) replaced by today's; both at once is an error."""
-    current = dict(values)
+    current = {key: value for key, value in values.items() if (section_name, key) not in RETIRED}
     for (section, old), new in RENAMED.items():
         if section == section_name and old in current:
             if new in current:

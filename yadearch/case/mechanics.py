@@ -111,3 +111,9 @@ def critical_timestep(case: ArchCase, geometry: ArchGeometry, stiffness: Contact
     k_rocking = 2.0 * stiffness.kn * d * length**3 / 12.0
     omega = math.sqrt(2.0) * max(math.sqrt(k_translation / mass), math.sqrt(k_rocking / inertia))
     return 2.0 / omega
+
+
+def runaway_length(case: ArchCase) -> float:
+    """The block displacement at a fixed support that means no equilibrium (m): the ring's thickness
+    times `numerics.runaway_thickness_ratio`, a bound of the arch's own geometry (docs/numerics.md)."""
+    return case.numerics.runaway_thickness_ratio * units.mm(case.geometry.thickness_mm)

@@ -8,6 +8,9 @@ from yadearch.case.fields import number_meta
 
 FULL_RUN_FILES = "full"  # numerics.run_files: every table, state and snapshot of the run
 SUMMARY_RUN_FILES = "summary"  # numerics.run_files: case.toml, summary.json and run.log only
+# a block moving half the ring's thickness at a fixed support has run away: far beyond any hinge snap
+# (a snap moves blocks by a few hundredths of the thickness), well short of a fallen arch
+RUNAWAY_THICKNESS_RATIO = 0.5
 
 
 @dataclass
@@ -161,11 +164,19 @@ class NumericsConfig:
             "predates": 1e9,
         },
     )
-    runaway_mm: float = field(
-        default=1.0,
-        metadata=number_meta(
-            0, 1000, low_open=True, doc="block displacement at a fixed support that means no equilibrium (mm)"
-        ),
+    runaway_thickness_ratio: float = field(
+        default=RUNAWAY_THICKNESS_RATIO,
+        metadata={
+            **number_meta(
+                0,
+                100,
+                low_open=True,
+                doc="a block moving this many ring thicknesses at a fixed support has run away (no "
+                "equilibrium); a snap that re-settles closer is survived however far it moves, so du does "
+                "not depend on it (docs/numerics.md)",
+            ),
+            "predates": None,
+        },
     )
     first_increment_mm: float = field(
         default=1.0,

@@ -209,6 +209,12 @@ SECTIONS: dict[str, type] = {
 }
 
 # Former parameter names still read from case files, overrides and stored runs: (section, old) -> new.
+# parameters of former versions that no longer exist: read from a stored case and dropped, refused
+# when a user sets them, with why
+RETIRED: dict[tuple[str, str], str] = {
+    ("numerics", "runaway_mm"): "the runaway bound is geometric now: numerics.runaway_thickness_ratio "
+    "(a block moving this many ring thicknesses), docs/numerics.md",
+}
 RENAMED: dict[tuple[str, str], str] = {
     ("loading", "settlement_direction_deg"): "support_direction_deg",
     ("loading", "max_settlement_mm"): "max_support_displacement_mm",

@@ -14,12 +14,15 @@ from yadearch.model import units
 from yadearch.model.hinges import paper_labels, same_hinges
 from yadearch.model.movement import Movement
 from yadearch.solve.path import PathResult
+from yadearch.solve.stages import Outcome
 
 DEM, STATIC = "dem", "static"  # the engines that write run folders
 # The static engine's revision, raised with every change of its results: a static run made by another
 # one is made again instead of reused (`rundir.outdated`). 2: the joints' shear is carried from one
 # self-weight load step to the next (1: each step counted the sliding from the blocks at rest).
-STATIC_REVISION = 2
+# 3: the runaway bound a multiple of the ring's thickness (was 1 mm), continuation checked against the
+# step, folds located, descents retried (a solver failure is `unresolved`, never collapse).
+STATIC_REVISION = 3
 TRANSLATION = "translation"
 # written only when set: engine-specific figures and what older runs lack
 OPTIONAL_KEYS = frozenset(
@@ -30,7 +33,13 @@ OPTIONAL_KEYS = frozenset(
         "relaxations",
         "snaps",
         "descents",
+        "descent_retries",
         "collapse_verdict",
+        "outcome",
+        "du_first_mm",
+        "du_first_bracket_mm",
+        "collapse_kind",
+        "collapse_mode_hinges",
         "du_components_mm",
         "du_rotation_mrad",
         "iterations",
@@ -109,10 +118,16 @@ class RunSummary:
     relaxations: dict[str, Any] | None = None
     snaps: list[Any] | None = None
     descents: int | None = None
+    descent_retries: int | None = None  # static: descents that found nothing and went on
     collapsed: bool = False
+    outcome: str | None = None  # Outcome: collapse, stands, unresolved (None: a run older than it)
     du_mm: float | None
     du_bracket_mm: tuple[float, float] | None = None
+    du_first_mm: float | None = None  # the first loss of stability on the path (a fold or a snap)
+    du_first_bracket_mm: tuple[float, float] | None = None
     collapse_verdict: str | None = None
+    collapse_kind: str | None = None  # analysis.collapse_kind: four-hinge mechanism, snap-through, sliding
+    collapse_mode_hinges: list[str] | None = None  # joints that turn in the fold's softest mode
     du_components_mm: tuple[float, float] | None = None
     du_rotation_mrad: float | None = None
     hinges_at_collapse: tuple[HingeRef, ...]
@@ -137,6 +152,13 @@ class RunSummary:
         if self.du_mm is None:
             raise RunFolderError(f"run {self.name or '(unnamed)'} did not collapse: it has no du")
         return float(self.du_mm)
+
+    @property
+    def path_outcome(self) -> str:
+        """How the path ended (Outcome), for runs older than the field too."""
+        if self.outcome is not None:
+            return self.outcome
+        return Outcome.COLLAPSE if self.collapsed else Outcome.STANDS
 
     @property
     def hinge_labels(self) -> str:
@@ -196,23 +218,36 @@ class RunSummary:
         values["hinges_at_collapse"] = tuple(HingeRef.of(h) for h in data.get("hinges_at_collapse") or [])
         if isinstance(data.get("loading"), dict):
             values["loading"] = LoadingInfo(**data["loading"])
-        for key in ("du_bracket_mm", "du_components_mm"):
+        for key in ("du_bracket_mm", "du_components_mm", "du_first_bracket_mm"):
             if data.get(key) is not None:
                 values[key] = tuple(data[key])
         return cls(**values)
 
 
-def collapse_fields(path: PathResult, movement: Movement) -> dict[str, Any]:
+def collapse_fields(
+    path: PathResult, movement: Movement, first_loss: tuple[float, float] | None = None
+) -> dict[str, Any]:
     """A followed path's outcome as RunSummary fields: du, its bracket and verdict, its components,
-    or only the last equilibrium if the arch stood to the end."""
+    the first loss of stability (`first_loss`, a bracket in m: the first fold or snap; du's own
+    bracket where the path lost stability only at its end), or only the last stable state if the arch
+    stood to the end or the solver did not resolve it."""
     lower = units.to_mm(path.lower)
+    fields: dict[str, Any] = {"outcome": path.outcome, "last_equilibrium_mm": lower}
+    if first_loss is not None:
+        fields["du_first_mm"] = units.to_mm(0.5 * (first_loss[0] + first_loss[1]))
+        fields["du_first_bracket_mm"] = (units.to_mm(first_loss[0]), units.to_mm(first_loss[1]))
+    if path.unresolved:
+        return {**fields, "collapsed": False, "du_mm": None, "collapse_verdict": path.upper_verdict}
     if not path.collapsed:
-        return {"collapsed": False, "du_mm": None, "last_equilibrium_mm": lower}
+        return {**fields, "collapsed": False, "du_mm": None}
+    if first_loss is None:
+        fields["du_first_mm"] = units.to_mm(path.du)
+        fields["du_first_bracket_mm"] = (lower, units.to_mm(path.upper))
     dx, dy = movement.components(path.du)
     return {
+        **fields,
         "collapsed": True,
         "du_mm": units.to_mm(path.du),
-        "last_equilibrium_mm": lower,
         "du_bracket_mm": (lower, units.to_mm(path.upper)),
         "collapse_verdict": path.upper_verdict,
         "du_components_mm": (units.to_mm(dx), units.to_mm(dy)),

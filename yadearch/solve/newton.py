@@ -159,13 +159,16 @@ class Solver:
         runaway: float,
         gravity: float = 1.0,
         iterations: int | None = None,
+        origin: np.ndarray | None = None,
     ) -> Equilibrium:
         """Damped Newton steps (K + mu I) d = R from `u0`, a step kept only where it releases energy
         (the work of the residual forces along it, by the trapezoidal rule, is positive; then mu
         falls, else it rises): the arch creeps downhill, as the DEM's hold lets it. Ends in a stable
-        equilibrium (Verdict.STABLE), or when a block has moved `runaway` (m) from `u0` (Verdict.RUNAWAY), or when the
-        budget is spent or no step releases energy (Verdict.TIMEOUT)."""
+        equilibrium (Verdict.STABLE), or when a block has moved `runaway` (m) from `origin` (default `u0`;
+        a descent that goes on from where another stopped counts from where that began)
+        (Verdict.RUNAWAY), or when the budget is spent or no step releases energy (Verdict.TIMEOUT)."""
         budget = iterations or self.settings.descent_iterations
+        origin = u0 if origin is None else origin
         u = u0.copy()
         joints, residual = self.state(u, u_before, shear_before, gravity)
         floor = self.initial_shift(joints)
@@ -174,7 +177,7 @@ class Solver:
             self.iterations += 1
             stiffness = self.free_stiffness(joints)
             if float(np.abs(residual).max()) <= self.converged:
-                found = self.result(u, joints, residual, iteration, u0)
+                found = self.result(u, joints, residual, iteration, origin)
                 if found.stable():
                     return found
                 u = self._kick(u, stiffness)  # a saddle: leave it along its softest mode
@@ -196,9 +199,9 @@ class Solver:
                 continue
             shift = max(shift * SHIFT_FALL, MIN_SHIFT_RATIO * floor)
             u, joints, residual = trial, trial_joints, trial_residual
-            if largest_move(u, u0) > runaway:
-                return self.result(u, joints, residual, iteration + 1, u0, Verdict.RUNAWAY)
-        return self.result(u, joints, residual, budget, u0, Verdict.TIMEOUT)
+            if largest_move(u, origin) > runaway:
+                return self.result(u, joints, residual, iteration + 1, origin, Verdict.RUNAWAY)
+        return self.result(u, joints, residual, budget, origin, Verdict.TIMEOUT)
 
     def initial_shift(self, joints: JointTangent) -> float:
         """The descent's first shift (N/m): the stiffest diagonal term, or a whole joint's normal

@@ -18,7 +18,7 @@ from typing import Protocol
 
 from yadearch.case.config import NumericsConfig
 from yadearch.model import units
-from yadearch.solve.stages import Verdict
+from yadearch.solve.stages import Outcome, Verdict
 
 
 class EquilibriumOracle(Protocol):
@@ -78,8 +78,27 @@ class PathResult:
     equilibria: list[float] = field(default_factory=list)  # accepted displacements, in order
 
     @property
-    def collapsed(self) -> bool:
+    def failed(self) -> bool:
+        """An increment failed at `upper`, whether by collapse or by a solver that did not converge."""
         return math.isfinite(self.upper)
+
+    @property
+    def collapsed(self) -> bool:
+        """The path ended in a runaway at `upper`: no equilibrium there (du)."""
+        return self.failed and self.upper_verdict == Verdict.RUNAWAY
+
+    @property
+    def unresolved(self) -> bool:
+        """The path ended where the solver found neither an equilibrium nor a runaway, after its
+        retries: a failure of the numerics, never a collapse (no du; `lower` is the last stable state)."""
+        return self.failed and self.upper_verdict == Verdict.TIMEOUT
+
+    @property
+    def outcome(self) -> str:
+        """How the path ended: Outcome.COLLAPSE, Outcome.UNRESOLVED or Outcome.STANDS."""
+        if self.collapsed:
+            return Outcome.COLLAPSE
+        return Outcome.UNRESOLVED if self.unresolved else Outcome.STANDS
 
     @property
     def du(self) -> float:
@@ -89,9 +108,9 @@ class PathResult:
     @property
     def upper_verdict(self) -> str | None:
         """How the arch failed at `upper`: Verdict.RUNAWAY (a block moved the runaway distance, or the state
-        ran away while settling) or Verdict.TIMEOUT (no equilibrium in the time allowed, nothing ran away);
-        None without collapse."""
-        if not self.collapsed:
+        ran away while settling) or Verdict.TIMEOUT (no equilibrium nor runaway after the solver's
+        retries); None if no increment failed."""
+        if not self.failed:
             return None
         failed = (s.verdict for s in reversed(self.steps) if s.target == self.upper and s.verdict != Verdict.STABLE)
         return next(failed, Verdict.RUNAWAY)
@@ -149,7 +168,7 @@ def follow_path(
             break
         if narrow:
             target = result.upper
-        elif result.collapsed:
+        elif result.failed:
             target = 0.5 * (result.lower + result.upper)
         else:
             target = min(result.lower + increment, settings.max_displacement)

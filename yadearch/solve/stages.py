@@ -23,8 +23,17 @@ class Verdict(StrEnum):
     """How a hold at a fixed support ended."""
 
     STABLE = "stable"  # an equilibrium
-    RUNAWAY = "runaway"  # a block moved more than runaway_mm
-    TIMEOUT = "timeout"  # neither, within the time allowed
+    RUNAWAY = "runaway"  # a block moved more than the runaway bound (a multiple of the ring's thickness)
+    TIMEOUT = "timeout"  # neither, within the time or iterations allowed (after the engine's retries)
+
+
+class Outcome(StrEnum):
+    """How a run's path ended, as summary.json's `outcome` writes it."""
+
+    COLLAPSE = "collapse"  # no equilibrium past du: a block ran away
+    STANDS = "stands"  # equilibrium up to the largest support displacement asked for
+    UNRESOLVED = "unresolved"  # the solver found neither equilibrium nor runaway: no du, never a collapse
+    CANNOT_STAND = "cannot stand"  # no equilibrium under the self-weight alone
 
 
 PATH_STAGES = (Stage.SELFWEIGHT, Stage.EQUILIBRIUM, Stage.COLLAPSE)  # the quasi-static path, in its order

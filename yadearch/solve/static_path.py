@@ -3,9 +3,12 @@ position solved by Newton's method from a predictor, a descent where Newton fail
 path logic as the DEM (`solve.path`) to bracket du (docs/theory.md, "The static engine").
 
 An increment is accepted when the arch is in a stable equilibrium (the free blocks' tangent
-stiffness positive definite) no block of which stands further than `runaway` from the predicted
-state; past a fold, the descent decides as the DEM's hold does: a stable state within `runaway` is
-a snap survived, a block moving `runaway` is collapse.
+stiffness positive definite) reached by continuation: Newton from the predicted state, no block
+further from it than the increment itself. Where continuation fails the fold is located by bisection
+(the first loss of stability, du_first) and the descent decides as the DEM's hold does: a stable
+state is a snap survived however far it moves, a block moving the runaway bound (a multiple of the
+ring's thickness) is collapse, and a descent that finds neither, after its retries, leaves the
+increment unresolved, never collapsed.
 """
 
 from __future__ import annotations
@@ -16,9 +19,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from yadearch.errors import CANNOT_STAND
+from yadearch.model import units
 from yadearch.model.joint_law import JointForces
 from yadearch.solve import banded
 from yadearch.solve.banded import smallest_eigenvalue
+from yadearch.solve.collapse_mode import FoldMode, fold_mode
 from yadearch.solve.newton import Equilibrium, Solver, SolverSettings
 from yadearch.solve.path import PathResult, PathSettings, PathStep, follow_path
 from yadearch.solve.stages import Stage, Verdict
@@ -26,10 +31,12 @@ from yadearch.solve.statics import StaticArch
 
 GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
 SELFWEIGHT_FALL = 0.05  # a block falling this far (m) under self-weight means the arch cannot stand
-SNAP_FRACTION = 0.1  # a descent that moves a block this x runaway to a stable state is a snap survived
 SUBSTEPS = 8  # an increment Newton cannot solve at once is marched in this many steps
 PREDICTOR_POINTS = 3  # accepted states the predictor extrapolates through (a parabola)
-COLLAPSE_RUNAWAYS = 10.0  # the mechanism at collapse is shown this many runaway distances on
+CONTINUATION_RATIO = 1.0  # Newton's state further from the prediction than this x the step is a jump
+SNAP_STEP_RATIO = 10.0  # a descent landing further than this x the fold's bracket from the prediction ...
+SNAP_THICKNESS_FRACTION = 0.01  # ... and than this x the ring's thickness is a snap: a new branch
+DESCENT_RETRIES = 2  # a descent that finds neither equilibrium nor runaway goes on this many times more
 
 
 class StaticEngineError(RuntimeError):
@@ -64,9 +71,13 @@ class StaticLoading:
         self.solver = Solver(self.arch, self.solver_settings)
         self.accepted: list[StaticState] = []
         self.failures: dict[float, Equilibrium] = {}
-        self.snaps: list[dict] = []  # increments the descent carried to a state SNAP_FRACTION x runaway away
-        self.descents = 0  # increments Newton did not solve
+        self.snaps: list[dict] = []  # snaps survived on the accepted path: where, how far the blocks moved
+        self.first_loss: tuple[float, float] | None = None  # the first snap's fold bracket on the path (m)
+        self.descents = 0  # descents made (Newton's continuation failed)
+        self.retries = 0  # descents that found neither equilibrium nor runaway and went on
+        self.snap_floor = SNAP_THICKNESS_FRACTION * self.arch.length
         self._trial: StaticState | None = None
+        self._trial_snaps: list[dict] = []
 
     # ---- self-weight ------------------------------------------------------------------------
     def selfweight(self) -> StaticState:
@@ -100,51 +111,95 @@ class StaticLoading:
     def try_increment(self, target: float) -> Verdict:
         """Solve the arch with the support at `target` from the last accepted state: Newton from the
         predicted state, or, where that fails, a march to `target` in SUBSTEPS steps (`_march`)."""
-        base = self.accepted[-1]
-        found = self._newton(self.accepted, target)
+        self._trial_snaps = []
+        history = self.accepted[-PREDICTOR_POINTS:]
+        found = self._continue(history, target)
         if found is None:
             return self._march(target)
-        self._trial = self._state(
-            Stage.EQUILIBRIUM, target, found, base.slip + found.joints.forces.plastic_slip, found.joints.forces
-        )
+        self._trial = self._advance(history, target, found)
         self._trial.move = found.moved
         return Verdict.STABLE
 
-    def _newton(self, history: list[StaticState], target: float) -> Equilibrium | None:
+    def _continue(self, history: list[StaticState], target: float) -> Equilibrium | None:
         """Newton from the state predicted at `target` through `history`; None unless it ends in a
-        stable equilibrium within `runaway` of the prediction."""
+        stable equilibrium on the same branch (no block further from the prediction than
+        CONTINUATION_RATIO x the step, or the snap floor)."""
         last = history[-1]
         found = self.solver.newton(self.predict(target, history), last.u, last.forces.shear_force)
-        if found is None or not found.stable() or found.moved > self.runaway:
+        jump = max(CONTINUATION_RATIO * abs(target - last.lam), self.snap_floor)
+        if found is None or not found.stable() or found.moved > jump:
             return None
         return found
 
     def _march(self, target: float) -> Verdict:
-        """From the last accepted state to `target` in SUBSTEPS equal steps, each solved by Newton or,
-        where Newton fails (the path folds: a hinge snaps), by the descent from the state predicted
-        there, as the DEM's arch snaps during its move, where the fold is, not at the move's end. A
-        descent that runs away is the increment's failure; one that settles is a snap survived."""
+        """From the last accepted state to `target` in SUBSTEPS steps by continuation; where it fails
+        (the path folds: a hinge snaps), the fold is located by bisection and the descent goes on from
+        the state predicted just past it, as the DEM's arch snaps during its move, where the fold is.
+        A descent that runs away (or finds nothing) is the increment's verdict; one that settles is a
+        snap survived."""
         history = list(self.accepted[-PREDICTOR_POINTS:])
-        start, slip, largest = history[-1].lam, history[-1].slip, 0.0
-        for k in range(1, SUBSTEPS + 1):
-            lam = start + (target - start) * k / SUBSTEPS
-            found = self._newton(history, lam)
-            jumped = found is None
-            if found is None:
-                last = history[-1]
-                found = self.solver.descend(self.predict(lam, history), last.u, last.forces.shear_force, self.runaway)
-                self.descents += 1
-                if found.verdict != Verdict.STABLE:
-                    self.failures[target] = found
-                    return found.verdict
-                if found.moved > SNAP_FRACTION * self.runaway:
-                    self.snaps.append({"delta_mm": 1e3 * lam, "move_mm": 1e3 * found.moved})
-            largest, slip = max(largest, found.moved), slip + found.joints.forces.plastic_slip
-            state = self._state(Stage.EQUILIBRIUM, lam, found, slip, found.joints.forces)
-            history = [state] if jumped else (history + [state])[-PREDICTOR_POINTS:]
-        self._trial = state
+        lam, largest, step = history[-1].lam, 0.0, (target - history[-1].lam) / SUBSTEPS
+        while lam < target:
+            ahead = target if target - lam <= 1.001 * step else lam + step
+            found = self._continue(history, ahead)
+            if found is not None:
+                history = (history + [self._advance(history, ahead, found)])[-PREDICTOR_POINTS:]
+                lam, largest = ahead, max(largest, found.moved)
+                continue
+            history, fold = self._locate_fold(history, ahead)
+            landed = self._descend(history, fold[1])
+            if landed.verdict != Verdict.STABLE:
+                self.failures[target] = landed
+                return landed.verdict
+            if landed.moved > max(SNAP_STEP_RATIO * (fold[1] - fold[0]), self.snap_floor):
+                self._trial_snaps.append({"fold_mm": [1e3 * fold[0], 1e3 * fold[1]], "move_mm": 1e3 * landed.moved})
+            history = [self._advance(history, fold[1], landed)]
+            lam, largest = fold[1], max(largest, landed.moved)
+        self._trial = history[-1]
         self._trial.move = largest
         return Verdict.STABLE
+
+    def _locate_fold(self, history: list[StaticState], ahead: float) -> tuple[list[StaticState], tuple[float, float]]:
+        """Bisect between the last state of `history` and `ahead` (where continuation failed) by
+        continuation until the bracket is narrower than the path's tolerance: the history extended to
+        the bracket's lower end, and the bracket (m)."""
+        low, high = history[-1].lam, ahead
+        while high - low > self.settings.tolerance:
+            middle = 0.5 * (low + high)
+            found = self._continue(history, middle)
+            if found is None:
+                high = middle
+            else:
+                history = (history + [self._advance(history, middle, found)])[-PREDICTOR_POINTS:]
+                low = middle
+        return history, (low, high)
+
+    def _descend(self, history: list[StaticState], lam: float) -> Equilibrium:
+        """The descent at support position `lam` from the state predicted there; where it finds neither
+        equilibrium nor runaway it goes on from where it stopped (DESCENT_RETRIES times), then starts
+        again from the last state with only the support moved: a solver's failure is retried before
+        it is reported (Verdict.TIMEOUT), never read as collapse."""
+        last = history[-1]
+        shear = last.forces.shear_force
+        start = self.predict(lam, history)
+        found = self.solver.descend(start, last.u, shear, self.runaway)
+        self.descents += 1
+        for _ in range(DESCENT_RETRIES):
+            if found.verdict != Verdict.TIMEOUT:
+                return found
+            self.retries += 1
+            found = self.solver.descend(found.u, last.u, shear, self.runaway, origin=start)
+        if found.verdict == Verdict.TIMEOUT:
+            self.retries += 1
+            found = self.solver.descend(self.arch.with_supports(last.u, lam), last.u, shear, self.runaway)
+        return found
+
+    def _advance(self, history: list[StaticState], lam: float, found: Equilibrium) -> StaticState:
+        """The equilibrium `found` at `lam` as the state after `history`'s last (its sliding added)."""
+        last = history[-1]
+        return self._state(
+            Stage.EQUILIBRIUM, lam, found, last.slip + found.joints.forces.plastic_slip, found.joints.forces
+        )
 
     @property
     def iterations(self) -> int:
@@ -156,6 +211,11 @@ class StaticLoading:
         self._trial.min_stiffness = smallest_eigenvalue(self._stiffness_of(self._trial))
         self.accepted.append(self._trial)
         self._trial = None
+        for snap in self._trial_snaps:
+            self.snaps.append(snap)
+            if self.first_loss is None:
+                self.first_loss = (units.mm(snap["fold_mm"][0]), units.mm(snap["fold_mm"][1]))
+        self._trial_snaps = []
 
     def settle(self) -> bool:
         """A static equilibrium is at rest already: nothing creeps."""
@@ -163,6 +223,17 @@ class StaticLoading:
 
     def discard(self) -> None:
         self.accepted.pop()
+        if self.first_loss is not None and self.first_loss[1] > self.accepted[-1].lam:
+            self.first_loss = None  # the snap was on the discarded state's way: no longer on the path
+            self.snaps = [s for s in self.snaps if units.mm(s["fold_mm"][1]) <= self.accepted[-1].lam]
+            if self.snaps:
+                fold = self.snaps[0]["fold_mm"]
+                self.first_loss = (units.mm(fold[0]), units.mm(fold[1]))
+
+    def fold_mode(self) -> FoldMode:
+        """The softest mode of the last accepted state: the collapse's hinges and kind."""
+        state = self.accepted[-1]
+        return fold_mode(self.arch, state.u, self._stiffness_of(state))
 
     def predict(self, target: float, history: list[StaticState]) -> np.ndarray:
         """Where the arch should be with the support at `target`: a parabola (or a line) through the
@@ -193,14 +264,11 @@ class StaticLoading:
         return follow_path(self, self.settings, on_step=on_step)
 
     def collapse_state(self, upper: float) -> StaticState:
-        """The mechanism at collapse: the failure at du's upper bracket end carried on until a block
-        has moved COLLAPSE_RUNAWAYS runaway distances."""
+        """The mechanism at collapse: the state of the failure at du's upper bracket end, where a
+        block has run away by the runaway bound."""
         lam = min(self.failures, key=lambda d: abs(d - upper))
-        failure = self.failures[lam]
+        end = self.failures[lam]
         base = self.accepted[-1]
-        shear = base.forces.shear_force
-        carried = self.solver.descend(failure.u, base.u, shear, COLLAPSE_RUNAWAYS * self.runaway)
-        end = carried if carried.verdict != Verdict.STABLE else failure
         return self._state(Stage.COLLAPSE, lam, end, base.slip + end.joints.forces.plastic_slip, end.joints.forces)
 
     def _state(self, stage: str, lam: float, found: Equilibrium, slip: np.ndarray, forces: JointForces) -> StaticState:

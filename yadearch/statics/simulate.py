@@ -10,7 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from yadearch.case.config import ArchCase, load_case
-from yadearch.case.mechanics import standing_parameters
+from yadearch.case.mechanics import runaway_length, standing_parameters
 from yadearch.case.support import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
@@ -29,16 +29,19 @@ INTERRUPTED_EXIT = 130
 def criterion_text(case: ArchCase) -> str:
     """The static loading protocol and collapse criterion with this case's numbers."""
     n = case.numerics
+    runaway_mm = units.to_mm(runaway_length(case))
     return (
         f"Loading by support increments (first {n.first_increment_mm} mm, growing x{n.increment_growth} "
         f"up to {n.max_increment_mm} mm after each equilibrium), each solved as a static equilibrium by "
-        "Newton's method from a predictor (the secant of the last two states), or, where Newton fails, "
-        "by a descent at the fixed support position that releases energy as a damped hold would. "
-        "Equilibrium: residual forces at round-off and the free blocks' tangent stiffness positive "
-        f"definite, no block further than {n.runaway_mm} mm from the predicted state. No equilibrium: "
-        f"the descent moves a block {n.runaway_mm} mm. After a failed increment the increment halves "
-        "(bisection); du = midpoint of the bracket [last support displacement in equilibrium; first "
-        f"without], narrowed to < {n.du_tolerance_mm} mm."
+        "Newton's method from a predictor through the last states (continuation), or, where that fails, "
+        "the fold located by bisection and a descent at the fixed support position that releases energy "
+        "as a damped hold would. Equilibrium: residual forces at round-off and the free blocks' tangent "
+        "stiffness positive definite. No equilibrium: the descent moves a block "
+        f"{n.runaway_thickness_ratio} ring thickness ({runaway_mm:g} mm); a descent that settles is a snap "
+        "survived, one that finds neither is retried, then unresolved (no du). After a failed increment "
+        "the increment halves (bisection); du = midpoint of the bracket [last support displacement in "
+        f"equilibrium; first without], narrowed to < {n.du_tolerance_mm} mm; du_first = the first fold "
+        "or snap on the path."
     )
 
 
@@ -49,7 +52,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
     num = case.numerics
     arch = static_arch(case)
     end_mm = path_end_mm(case, arch.movement)
-    loading = StaticLoading(arch, path_settings(num, end_mm), units.mm(num.runaway_mm))
+    loading = StaticLoading(arch, path_settings(num, end_mm), runaway_length(case))
     records = StaticRecords(arch, num.hinge_rotation_mrad * 1e-3)
     unused = {key: getattr(num, key) for key in DEM_ONLY_NUMERICS}
     log(
@@ -72,6 +75,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         last_hinges = records.add(state)
     hinges_last = last_hinges if len(loading.accepted) > 1 else []
     hinges = records.add(loading.collapse_state(path.upper), label=Stage.COLLAPSE) if path.collapsed else hinges_last
+    mode = loading.fold_mode() if path.collapsed else None
     summary = RunSummary(
         name=case.name,
         started=started,
@@ -86,19 +90,22 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         unused_parameters=unused,
         selfweight=selfweight,
         imperfections=arch.imperfections.summary() if arch.imperfections is not None else None,
-        **collapse_fields(path, arch.movement),
+        **collapse_fields(path, arch.movement, loading.first_loss),
+        collapse_kind=mode.kind if mode is not None else None,
+        collapse_mode_hinges=mode.labels if mode is not None else None,
         increments=len(path.steps),
         equilibria=len(path.equilibria),
         hinges_last_equilibrium=[h.to_json() for h in hinges_last],
         friction=records.friction,
         relaxations={
-            "runaway_mm": num.runaway_mm,
+            "runaway_mm": units.to_mm(loading.runaway),
             "delta_mm": [units.to_mm(s.lam) for s in loading.accepted[1:]],
             "increment_mm": _increments_mm(loading),
             "move_mm": [units.to_mm(s.move) for s in loading.accepted[1:]],
         },
         snaps=loading.snaps,
         descents=loading.descents,
+        descent_retries=loading.retries,
         hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges) if path.collapsed else (),
         hinges_detail=[h.to_json() for h in hinges],
         iterations=loading.iterations,
@@ -119,9 +126,10 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         records.states,
         tables=num.keeps_tables,
     )
-    du = summary.du_mm
+    du, first = summary.du_mm, summary.du_first_mm
     log(
-        f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} "
+        f"[{case.name}] done ({summary.outcome}): du={'none' if du is None else f'{du:.2f} mm'} "
+        f"du_first={'none' if first is None else f'{first:.2f} mm'} "
         f"hinges={summary.hinge_labels or '-'} iterations={loading.iterations} "
         f"wall={summary.wall_s:.2f} s -> {final_folder(out)}"
     )

@@ -12,9 +12,11 @@ from typing import Any
 import pandas as pd
 
 from yadearch.case.config import ArchCase
+from yadearch.errors import CANNOT_STAND
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.results.rundir import current_summary, outdated
 from yadearch.results.summary import RunSummary
+from yadearch.solve.stages import Outcome
 from yadearch.studies.failures import FAILED_FILE
 from yadearch.studies.grid import RUN_COLUMN
 
@@ -49,7 +51,10 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
     row.setdefault("n_voussoirs", case.geometry.n_voussoirs)
     empty = {
         "du_mm": math.nan,
+        "du_first_mm": math.nan,
         "collapsed": None,
+        "outcome": "",
+        "collapse_kind": "",
         "hinges": "",
         "mechanism": "",
         "hinge_A": None,
@@ -74,7 +79,10 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
         )
         row.update(
             du_mm=math.nan if du is None else du,
+            du_first_mm=math.nan if summary.du_first_mm is None else summary.du_first_mm,
             collapsed=summary.collapsed,
+            outcome=summary.path_outcome,
+            collapse_kind=summary.collapse_kind or "",
             hinges=summary.hinge_labels,
             mechanism="-".join(h.side for h in summary.hinges_at_collapse),
             **label_hinges(summary, case.geometry.n_voussoirs),
@@ -82,17 +90,29 @@ def run_row(spec: RunSpec, out: Path) -> dict[str, Any]:
             wall_s=summary.wall_s,
             engine=summary.engine,
             status="done",
-            reason="" if summary.collapsed else f"no collapse up to {_path_end_mm(summary, case):g} mm",
+            reason=_reason(summary, case),
         )
     elif (spec.folder / FAILED_FILE).is_file():
         failed = json.loads((spec.folder / FAILED_FILE).read_text())
-        row.update(empty, wall_s=failed.get("wall_s", math.nan), status="failed", reason=failed.get("reason", ""))
+        reason = failed.get("reason", "")
+        outcome = Outcome.CANNOT_STAND if CANNOT_STAND in reason else ""
+        row.update(empty, wall_s=failed.get("wall_s", math.nan), status="failed", reason=reason, outcome=outcome)
     elif outdated(spec.folder):
         row.update(empty, status="pending", reason="made by another revision of the static engine: to be run again")
     else:
         row.update(empty, status="pending", reason="not run yet (interrupted?)")
     row["folder"] = str(spec.folder.relative_to(out)) if spec.folder.is_relative_to(out) else str(spec.folder)
     return row
+
+
+def _reason(summary: RunSummary, case: ArchCase) -> str:
+    """Why a finished run has no du ("" when it collapsed)."""
+    if summary.path_outcome == Outcome.UNRESOLVED:
+        return (
+            f"unresolved: the solver found neither equilibrium nor collapse past {summary.last_equilibrium_mm:g} mm "
+            "(the last stable state)"
+        )
+    return "" if summary.collapsed else f"no collapse up to {_path_end_mm(summary, case):g} mm"
 
 
 def _path_end_mm(summary: RunSummary, case: ArchCase) -> float:

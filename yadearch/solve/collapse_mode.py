@@ -1,0 +1,97 @@
+"""The mechanism at a fold, read from the tangent (pure numpy): the joints that turn in the softest
+mode of the last stable state's stiffness are the hinges of the collapse, and how the mode moves them
+(turning or sliding, how many hinges) names the kind of collapse (docs/theory.md, "Collapse")."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import StrEnum
+
+import numpy as np
+
+from yadearch.model.hinges import Hinge, hinges_at
+from yadearch.model.joint_tangent import BLOCK_DOFS
+from yadearch.model.joints import joint_states
+from yadearch.solve import banded
+from yadearch.solve.statics import StaticArch
+
+MODE_PROBE = 1e-6  # the mode is applied at this largest block displacement (m): linear, clear of round-off
+MODE_HINGE_FRACTION = 0.1  # a joint turning at least this fraction of the mode's largest turn is a hinge
+MECHANISM_HINGES = 4  # a rigid arch becomes a mechanism with four hinges (or three and a sliding joint)
+OPEN_GAP_FRACTION = 1e-4  # a joint whose faces part by this x its length already pivots on its closed end
+
+
+class CollapseKind(StrEnum):
+    """What the softest mode at the fold does."""
+
+    MECHANISM = "four-hinge mechanism"  # four joints turn: the classical mechanism
+    SNAP_THROUGH = "snap-through"  # fewer joints turn: the ring's geometry folds (a shallow arch)
+    SLIDING = "sliding"  # joints slide more than they open
+
+
+@dataclass(frozen=True)
+class FoldMode:
+    """The softest mode of a stable state: its eigenvalue (N/m), hinges, kind."""
+
+    eigenvalue: float
+    hinges: tuple[Hinge, ...]
+    kind: CollapseKind
+
+    @property
+    def labels(self) -> list[str]:
+        """The mode's hinges as "12I"."""
+        return [f"{h.interface}{h.side}" for h in self.hinges]
+
+
+def fold_mode(arch: StaticArch, u: np.ndarray, stiffness: np.ndarray) -> FoldMode:
+    """The softest mode of `stiffness` (band storage, free dofs) at state `u`: which joints turn
+    (MODE_HINGE_FRACTION of the largest turn) and whether it slides rather than turns."""
+    mode = banded.softest_mode(stiffness)
+    if float(arch.loads()[arch.free_dofs] @ mode) < 0.0:
+        mode = -mode  # the way the weights go down
+    moved = u.copy()
+    translations = mode.reshape(-1, BLOCK_DOFS)[:, 0:2]
+    moved[arch.free_dofs] += MODE_PROBE / float(np.hypot(*translations.T).max() or 1.0) * mode
+    opening, slide, open_now = _joint_motion(arch, u, moved)
+    turn = opening / arch.table.length
+    # a joint already open pivots on the end still in contact, whichever way the mode turns it
+    parted = np.abs(open_now) > OPEN_GAP_FRACTION * arch.table.length
+    turn = np.where(parted, np.abs(turn) * np.sign(open_now), turn)
+    largest = float(np.abs(turn).max())
+    hinges = tuple(hinges_at(turn / largest, MODE_HINGE_FRACTION)) if largest > 0.0 else ()
+    if float(np.abs(slide).max()) > float(np.abs(opening).max()):
+        kind = CollapseKind.SLIDING
+    else:
+        kind = CollapseKind.MECHANISM if len(hinges) >= MECHANISM_HINGES else CollapseKind.SNAP_THROUGH
+    return FoldMode(banded.smallest_eigenvalue(stiffness), hinges, kind)
+
+
+def _joint_motion(arch: StaticArch, u: np.ndarray, moved: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Each joint's change of hinge opening (extrados minus intrados, m; > 0 pivots on the intrados)
+    and of sliding along it (m) from `u` to `moved`, and its hinge opening at `u`."""
+    rest = arch.centroid0
+    no_contact = np.full((len(arch.table.length), 2), np.nan)
+    states, slides = [], []
+    for state in (u, moved):
+        pos, rot = arch.poses(state)
+        joints = joint_states(arch.geometry, rest, pos, rot, no_contact)
+        states.append(joints.opening_extrados - joints.opening_intrados)
+        slides.append(_slide(arch, rest, pos, rot))
+    return states[1] - states[0], slides[1] - slides[0], states[0]
+
+
+def _slide(arch: StaticArch, rest: np.ndarray, pos: np.ndarray, rot: np.ndarray) -> np.ndarray:
+    """Each joint's relative displacement along its face at its intrados corner (m)."""
+    geometry = arch.geometry
+    left = np.array([j.left for j in geometry.joints])
+    right = np.array([j.right for j in geometry.joints])
+    corner = np.array([j.intrados[:2] for j in geometry.joints])
+    along = np.array([j.extrados[:2] for j in geometry.joints]) - corner
+    along /= np.linalg.norm(along, axis=1)[:, None]
+
+    def placed(blocks: np.ndarray) -> np.ndarray:
+        c, s = np.cos(rot[blocks]), np.sin(rot[blocks])
+        d = corner - rest[blocks]
+        return pos[blocks] + np.column_stack([c * d[:, 0] - s * d[:, 1], s * d[:, 0] + c * d[:, 1]])
+
+    return np.einsum("ij,ij->i", placed(right) - placed(left), along)
