@@ -102,13 +102,17 @@ def test_the_static_engine_runs_through_the_api_and_says_so(tmp_path):
             ValueError,
             r"run kn-1: kn_N_per_mm3 must be in \(0, 100000\], got -1.0; nothing was run",
         ),
-        (lambda out: ya.montecarlo("set2", out, samples=0), ValueError, "samples must be >= 1, got 0"),
+        (
+            lambda out: ya.montecarlo("set2", out, samples=0),
+            ValueError,
+            r"samples must be an integer in \[1, 100000\], got 0",
+        ),
         (
             lambda out: ya.montecarlo("set2", out, samples=3, face_bump_sd_mm=[-1.0]),
             ValueError,
             r"face_bump_sd_mm must be in \[0, 1000\], got -1.0",
         ),
-        (lambda out: ya.sensitivity("set2", out, base_points=12), ValueError, "base_points must be a power of two"),
+        (lambda out: ya.sensitivity("set2", out, base_points=12), ValueError, "base_points must be .*a power of two"),
         (lambda out: ya.capacity("set2", out, step_deg=7), ValueError, "step_deg must divide 180"),
     ],
 )

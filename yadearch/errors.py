@@ -29,3 +29,7 @@ class RunInterruptedError(RunFailedError):
 
 class RunFolderError(YadearchError):
     """A run folder that does not hold a complete, readable run."""
+
+
+class ArgumentTypeError(YadearchError, TypeError):
+    """An API argument of the wrong type (a str where a number is wanted): named, in one line."""

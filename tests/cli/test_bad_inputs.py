@@ -4,9 +4,12 @@ cases and TOML structures that give a valid case or one clean error, never a tra
 
 from __future__ import annotations
 
+import json
 import math
+import shutil
 import tomllib
 from dataclasses import fields
+from pathlib import Path
 
 import pytest
 from conftest import REPO
@@ -134,7 +137,150 @@ def probes() -> list[list[str]]:
     ]
     for command in ("run", "limit"):  # arches that cannot be built, refused before YADE or an LP
         lines += [[command, "--preset", "set2", *(a for s in settings for a in ("--set", s))] for settings in shapes]
+    return lines + names_and_folders() + bounds() + damaged_inputs()
+
+
+# the third round (issue 42): names and output folders, the bounds of every size and time, damaged inputs
+BAD_OUTS = ["", " ", ".", "..", "/", "//", "OUT/x/..", "OUT/x/.", "OUT/a\x01b", "OUT/.hidden", "OUT/" + "y" * 300]
+OUT_COMMANDS = [  # every command's output folder or file, with what else it needs to get that far
+    ["run", "--preset", "set2", "--engine", "static", "--out"],
+    ["reproduce", "--out"],
+    ["limit", "--preset", "set2", "--out"],
+    ["report", f"{REPO}/reports/set2", "--out"],
+    ["sweep", "--kn", "1,2", "--engine", "static", "--out"],
+    ["montecarlo", "--samples", "2", "--engine", "static", "--out"],
+    ["robustness", "--kn", "5.2", "--out"],
+    ["capacity", "--engine", "static", "--out"],
+    ["sensitivity", "--engine", "static", "--out"],
+    ["calibrate", "--target-du", "48", "--out"],
+    ["calibrate", "--target-du", "48", "--out", "OUT/c.json", "--runs-dir"],
+    ["animate", f"{REPO}/reports/set2", "--out"],
+    ["export", f"{REPO}/reports/set2", "--vtk", "--out"],
+]
+BAD_NAMES = ["", " ", ".", "..", "../../x", "a/b", "/abs", ".hidden", "a\tb", "a\nb", "z" * 300]
+OPTION_BOUNDS = {  # option: refused values, with the command that takes it
+    ("sweep", "--jobs"): ["0", "-1", "2.5", "abc", "1e3", "nan", "2000", "0_2"],
+    ("sweep", "--timeout-min"): ["nan", "inf", "-inf", "-1", "0", "0_5", "abc", "1e9"],
+    ("montecarlo", "--samples"): ["0", "-1", "1000000", "1.5", "10_0", "nan"],
+    ("montecarlo", "--seed"): ["-1", "4294967296", "x", "1.5"],
+    ("sensitivity", "--base-points"): ["0", "7", "100", "1073741824", "64.0", "-64"],
+    ("sensitivity", "--check-runs"): ["-1", "51", "x", "1.5"],
+    ("capacity", "--step-deg"): ["0", "-15", "1e-9", "7", "91", "nan", "inf", "0_5", "x"],
+    ("calibrate", "--target-du"): ["0", "-1", "nan", "inf", "1e5", "x", "4_8"],
+    ("calibrate", "--tolerance-mm"): ["0", "-1", "nan", "inf"],
+    ("calibrate", "--kn-min"): ["0", "-1", "nan", "1e6", "0_1"],
+    ("calibrate", "--kn-max"): ["0", "-1", "inf", "1e6"],
+    ("calibrate", "--max-runs"): ["2", "0", "101", "x", "5.5"],
+    ("limit", "--max-snap-mm"): ["0", "-1", "nan", "inf", "1e9"],
+    ("run", "--kn"): ["0_3", "1__2", "0x10", "5,2"],
+    ("reproduce", "--jobs"): ["0", "3.0", "-2"],
+}
+COMMAND_BASE = {
+    "sweep": ["sweep", "--kn", "1,2", "--engine", "static", "--out", "OUT/s"],
+    "montecarlo": ["montecarlo", "--samples", "2", "--engine", "static", "--out", "OUT/m"],
+    "sensitivity": ["sensitivity", "--engine", "static", "--out", "OUT/s"],
+    "capacity": ["capacity", "--engine", "static", "--out", "OUT/c"],
+    "calibrate": ["calibrate", "--target-du", "48", "--out", "OUT/c.json"],
+    "limit": ["limit", "--out", "OUT/l"],
+    "run": ["run", "--engine", "static"],
+    "reproduce": ["reproduce", "--out", "OUT/r"],
+}
+
+
+def names_and_folders() -> list[list[str]]:
+    """Every command's output path that is empty, special, hidden, too long or leaves --out; bad run names."""
+    lines = [[*command, out] for command in OUT_COMMANDS for out in BAD_OUTS]
+    lines += [["run", "--preset", "set2", "--engine", "static", "--name", name] for name in BAD_NAMES]
+    lines += [["run", "--preset", "set2", "--set", f"name={name!r}"] for name in ("..", "a/b", ".x", "")]
     return lines
+
+
+def bounds() -> list[list[str]]:
+    """Every size and time option past its bound (and numbers Python reads but a person does not write)."""
+    lines = [
+        [*COMMAND_BASE[command], option, value]
+        for (command, option), values in OPTION_BOUNDS.items()
+        for value in values
+    ]
+    lines += [
+        ["sweep", "--kn", "1", "--param", "kn_N_per_mm3=2", "--out", "OUT/s"],
+        ["sweep", "--param", "damping=0.1", "--param", "numerics.damping=0.2", "--out", "OUT/s"],
+        ["calibrate", "--target-du", "48", "--kn-min", "5", "--kn-max", "5", "--out", "OUT/c.json"],
+        ["sensitivity", "--base-points", "65536", "--out", "OUT/s"],  # 65536 x 14 runs: past the campaign bound
+        ["montecarlo", "--samples", "60000", "--param", "face_bump_mm=0.1,0.2", "--out", "OUT/m"],
+    ]
+    return lines
+
+
+def damaged_inputs() -> list[list[str]]:
+    """Tables and case files that are binary, repeat a column, have a longer row or nothing; damaged run folders."""
+    lines = [["sweep", "--table", f"IN/{name}", "--out", "OUT/s"] for name in TABLES]
+    lines += [["run", "--case", f"IN/{name}"] for name in CASES]
+    lines += [[command, f"RUNS/{name}", *extra] for name in DAMAGED for command, *extra in VIEWS]
+    return lines
+
+
+TABLES = {
+    "binary.csv": bytes(range(256)),
+    "latin1.csv": "kn_N_per_mm3,run\n1,caf\xe9\n".encode("latin-1"),
+    "twice.csv": b"kn_N_per_mm3,interface.kn_N_per_mm3\n1,2\n",
+    "bare_twice.csv": b"\xef\xbb\xbfdamping,damping\n0.1,0.2\n",
+    "long_row.csv": b"kn_N_per_mm3\n1,2\n",
+    "empty.csv": b"",
+    "header_only.csv": b"kn_N_per_mm3\n",
+    "nul.csv": b"kn_N_per_mm3\n1\x00\n",
+    "bom_unknown.csv": b"\xef\xbb\xbfnothing\n1\n",
+    "bad_name.csv": b"kn_N_per_mm3,run\n1,../../x\n",
+}
+CASES = {
+    "binary.toml": bytes(range(256)),
+    "bom_bad.toml": b"\xef\xbb\xbf[interface]\nkn_N_per_mm3 = -1\n",
+    "bom_unknown.toml": b"\xef\xbb\xbf[nothing]\n",
+    "name.toml": b'name = "../x"\n',
+    "name_control.toml": b'name = "a\\u0007b"\n',
+}
+DAMAGED = (
+    "states_cut",
+    "du_text",
+    "du_nan",
+    "du_negative",
+    "du_inf",
+    "outcome_unknown",
+    "hinges_bad",
+    "bracket_bad",
+    "steps_text",
+)
+VIEWS = [
+    ("report", "--out", "OUT/r"),
+    ("animate", "--format", "gif", "--out", "OUT/m.gif"),
+    ("export", "--vtk", "--out", "OUT/v"),
+]
+
+
+@pytest.fixture(scope="module")
+def damaged_runs(tmp_path_factory) -> Path:
+    """Copies of the committed set 2 run, each damaged in one way (the folders DAMAGED names)."""
+    root = tmp_path_factory.mktemp("damaged")
+    summary = json.loads((REPO / "reports/set2/summary.json").read_text())
+    changes = {
+        "du_text": {"du_mm": "48.9"},
+        "du_nan": {"du_mm": math.nan},
+        "du_negative": {"du_mm": -1.0},
+        "du_inf": {"du_mm": math.inf},
+        "outcome_unknown": {"outcome": "exploded"},
+        "hinges_bad": {"hinges_at_collapse": [{"interface": 0, "side": "X"}]},
+        "bracket_bad": {"du_bracket_mm": [90.0, 80.0]},
+        "steps_text": {"steps": "many"},
+    }
+    for name in DAMAGED:
+        folder = root / name
+        folder.mkdir()
+        for file in ("case.toml", "series.csv", "joints.csv", "snapshots.json", "states.npz", "run.log"):
+            shutil.copy(REPO / "reports/set2" / file, folder / file)
+        (folder / "summary.json").write_text(json.dumps({**summary, **changes.get(name, {})}))
+    data = (root / "states_cut" / "states.npz").read_bytes()
+    (root / "states_cut" / "states.npz").write_bytes(data[: len(data) // 2])
+    return root
 
 
 class SimulationStarted(Exception):
@@ -154,20 +300,29 @@ def no_simulation(monkeypatch):
 
 def test_there_are_over_a_hundred_probes():
     assert len(probes()) > 100
+    assert len(names_and_folders() + bounds() + damaged_inputs()) >= 150  # issue 42's third round
 
 
 @pytest.mark.parametrize("argv", probes(), ids=lambda a: " ".join(a)[:60])
-def test_a_bad_input_ends_in_one_line_and_exit_code_1(argv, tmp_path, capsys, monkeypatch):
+def test_a_bad_input_ends_in_one_line_and_exit_code_1(argv, tmp_path, capsys, monkeypatch, damaged_runs):
     monkeypatch.chdir(tmp_path)
-    argv = [a.replace("OUT", str(tmp_path / "out")) for a in argv]
-    if argv[0] == "run" and "--out" not in argv:
+    inputs = tmp_path / "in"
+    inputs.mkdir()
+    for name, data in {**TABLES, **CASES}.items():
+        (inputs / name).write_bytes(data)
+    before = {p: p.stat().st_mtime_ns for p in damaged_runs.rglob("*")}
+    argv = [a.replace("OUT", str(tmp_path / "out")).replace("IN/", f"{inputs}/") for a in argv]
+    argv = [a.replace("RUNS/", f"{damaged_runs}/") for a in argv]
+    if argv[0] == "run" and "--out" not in argv and "--name" not in argv:
         argv += ["--out", str(tmp_path / "out" / "run")]
     code = main(argv)
     err = capsys.readouterr().err.strip()
     assert code == 1, err
     assert err.startswith("error: ") and "\n" not in err and "Traceback" not in err
     assert not (tmp_path / "out" / "run" / "summary.json").exists()
-    assert {p.name for p in tmp_path.iterdir()} <= {"out"}  # nothing written outside --out
+    assert {p.name for p in tmp_path.iterdir()} <= {"out", "in"}  # nothing written outside --out
+    assert {p.name for p in inputs.iterdir()} == set(TABLES) | set(CASES)
+    assert {p: p.stat().st_mtime_ns for p in damaged_runs.rglob("*")} == before  # nor into the runs read
 
 
 def test_derived_quantities_are_named_in_the_refusal():

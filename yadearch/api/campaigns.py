@@ -11,9 +11,12 @@ from typing import TYPE_CHECKING, Any
 
 import pandas as pd
 
+from yadearch.api.arguments import check_arguments
 from yadearch.api.runs import as_case, with_engine
 from yadearch.case.config import ArchCase
-from yadearch.errors import CampaignError
+from yadearch.case.names import FILE, output_path
+from yadearch.errors import ArgumentTypeError, CampaignError
+from yadearch.studies.grid import check_campaign_size
 
 if TYPE_CHECKING:
     from yadearch.studies.calibration import Calibration
@@ -48,12 +51,14 @@ def sweep(
     from yadearch.studies.grid import grid, read_table
     from yadearch.studies.sweep_figures import sweep_figures
 
+    check_arguments(jobs=jobs, timeout_s=timeout_s, retry_failed=retry_failed, figures=figures)
+    folder = output_path(out, "out")
     if table is not None and values:
         raise CampaignError("give either a table of runs or grid values, not both")
     if table is None and not values:
         raise CampaignError("nothing to sweep: give grid values (e.g. kn_N_per_mm3=[...]) or a table of runs")
-    base, folder = with_engine(case, engine), Path(out)
-    rows = read_table(table) if table is not None else grid(values)
+    base = with_engine(case, engine)
+    rows = read_table(output_path(table, "table", FILE)) if table is not None else grid(values)
     with open_pool(jobs, scheduler) as pool:
         log(f"campaign {folder}: {len(rows)} runs on {pool.where}")
         results = run_campaign(base, rows, folder, pool, timeout_s=timeout_s, retry_failed=retry_failed)
@@ -85,13 +90,17 @@ def montecarlo(
     from yadearch.studies.montecarlo import levels as level_columns
     from yadearch.studies.montecarlo import run_montecarlo
 
-    folder = Path(out)
+    check_arguments(samples=samples, seed=seed, jobs=jobs, timeout_s=timeout_s, figures=figures)
+    folder = output_path(out, "out")
+    base = with_engine(case, engine)
+    for key, values in levels.items():
+        if isinstance(values, (str, bytes)) or not hasattr(values, "__len__"):
+            raise ArgumentTypeError(f"{key}: give a list of amplitude levels, got {values!r:.40}")
+    check_campaign_size(samples * math.prod(len(v) for v in levels.values()))
     with open_pool(jobs, scheduler) as pool:
         n_levels = math.prod(len(v) for v in levels.values())
         log(f"Monte Carlo {folder}: {samples} samples x {n_levels} level(s) on {pool.where}")
-        table = run_montecarlo(
-            with_engine(case, engine), folder, pool, samples, seed, levels or None, timeout_s=timeout_s
-        )
+        table = run_montecarlo(base, folder, pool, samples, seed, levels or None, timeout_s=timeout_s)
     if figures:
         from yadearch.plotting.montecarlo import campaign_figures
 
@@ -124,9 +133,21 @@ def calibrate(
     from yadearch.studies.calibration import campaign_evaluator
     from yadearch.studies.executors import open_pool
 
+    check_arguments(
+        target_du_mm=target_du_mm,
+        kn_min=kn_min,
+        kn_max=kn_max,
+        tolerance_mm=tolerance_mm,
+        max_runs=max_runs,
+        jobs=jobs,
+        timeout_s=timeout_s,
+    )
+    if kn_min >= kn_max:
+        raise CampaignError(f"kn_min must be below kn_max, got {kn_min:g} and {kn_max:g}")
+    folder, base = output_path(out, "out"), with_engine(case, engine)
     with open_pool(jobs, scheduler) as pool:
         return calibrate_kn(
-            campaign_evaluator(with_engine(case, engine), Path(out), pool, timeout_s),
+            campaign_evaluator(base, folder, pool, timeout_s),
             target_du_mm,
             tolerance_mm,
             kn_min,
@@ -151,10 +172,12 @@ def robustness(
     from yadearch.studies.executors import open_pool
     from yadearch.studies.robustness import KN_VALUES, VARIANTS, run_study, verdicts
 
+    check_arguments(jobs=jobs, timeout_s=timeout_s)
+    folder, base = output_path(out, "out"), as_case(case)
+    if isinstance(kn_values, (str, bytes)) or isinstance(variants, (str, bytes)):
+        raise ArgumentTypeError("kn_values and variants must be tuples of values, not a str")
     with open_pool(jobs, scheduler) as pool:
-        table = run_study(
-            as_case(case), Path(out), pool, kn_values or KN_VALUES, variants or tuple(VARIANTS), timeout_s=timeout_s
-        )
+        table = run_study(base, folder, pool, kn_values or KN_VALUES, variants or tuple(VARIANTS), timeout_s=timeout_s)
     return verdicts(table)
 
 
@@ -176,10 +199,11 @@ def capacity(
     from yadearch.studies.capacity_map import run_capacity
     from yadearch.studies.executors import open_pool
 
-    case = with_engine(case, engine)
-    directions(step_deg)  # refuses a bad step before anything starts
+    check_arguments(step_deg=step_deg, jobs=jobs, timeout_s=timeout_s, rigid=rigid)
+    folder, case = output_path(out, "out"), with_engine(case, engine)
+    directions(step_deg)  # refuses a step that does not divide 180 before anything starts
     with open_pool(jobs, scheduler) as pool:
-        return run_capacity(case, Path(out), pool, step_deg, rigid=rigid, timeout_s=timeout_s)
+        return run_capacity(case, folder, pool, step_deg, rigid=rigid, timeout_s=timeout_s)
 
 
 def sensitivity(
@@ -205,11 +229,13 @@ def sensitivity(
     from yadearch.studies.sensitivity_campaign import DEFAULT_BASE_POINTS, run_sensitivity
     from yadearch.studies.sensitivity_check import check_count
 
-    case = with_engine(case, engine)
+    check_arguments(base_points=base_points, check_runs=check_runs, jobs=jobs, timeout_s=timeout_s)
+    folder, case = output_path(out, "out"), with_engine(case, engine)
     chosen = tuple(factors) if factors else PAPER_FACTORS
     base_points = DEFAULT_BASE_POINTS if base_points is None else base_points
     check_base_points(base_points)  # refused before a pool starts
     check_factors(case, chosen)
+    check_campaign_size(base_points * (len(chosen) + 2))  # Saltelli's N x (factors + 2) runs
     check_count(check_runs)
     with open_pool(jobs, scheduler) as pool:
-        return run_sensitivity(case, Path(out), pool, base_points, chosen, timeout_s=timeout_s, check_runs=check_runs)
+        return run_sensitivity(case, folder, pool, base_points, chosen, timeout_s=timeout_s, check_runs=check_runs)

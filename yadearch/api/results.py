@@ -3,12 +3,15 @@ paper's letters, its tables and figures."""
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
 
 import pandas as pd
 
+from yadearch.case.names import FILE, output_path
+from yadearch.errors import ArgumentTypeError
 from yadearch.results.rundir import FIGURES_DIR, VTK_DIR, RunFolder, read_run
 from yadearch.results.states import RunStates
 from yadearch.results.summary import DEM, HingeRef, RunSummary
@@ -108,7 +111,7 @@ class RunResult:
         from yadearch.analysis import analyse_run
         from yadearch.plotting.animation import animate_run
 
-        path = Path(out) if out is not None else self.path / FIGURES_DIR / f"{self.path.name}.{fmt}"
+        path = output_path(out, "out", FILE) if out is not None else self.path / FIGURES_DIR / f"{self.path.name}.{fmt}"
         return animate_run(self.folder, analyse_run(self.folder), path, fmt)
 
     def export_vtk(self, out: str | Path | None = None) -> Path:
@@ -116,14 +119,14 @@ class RunResult:
         joints as points with their forces) in `out` (default: the run folder's vtk/); returns the .pvd."""
         from yadearch.reporting.paraview import export_run
 
-        return export_run(self.folder, Path(out) if out is not None else self.path / VTK_DIR)
+        return export_run(self.folder, output_path(out, "out") if out is not None else self.path / VTK_DIR)
 
     def write_figures(self, out: str | Path | None = None) -> dict[str, tuple[Path, Path]]:
         """Write the run's figures (PDF and PNG) into `out` (default: the run folder's `figures/`)."""
         from yadearch.analysis import analyse_run
         from yadearch.plotting.run_figures import write_figures
 
-        folder = Path(out) if out is not None else self.path / FIGURES_DIR
+        folder = output_path(out, "out") if out is not None else self.path / FIGURES_DIR
         return write_figures(self.folder, analyse_run(self.folder), folder)
 
     def __repr__(self) -> str:
@@ -132,5 +135,9 @@ class RunResult:
 
 
 def open_run(path: str | Path) -> RunResult:
-    """Read a finished run folder."""
+    """Read a finished run folder (RunFolderError in one line for one that is not complete or damaged)."""
+    if isinstance(path, bytes) or not isinstance(path, (str, os.PathLike)):
+        raise ArgumentTypeError(
+            f"path must be a run folder (str or pathlib.Path), got {type(path).__name__} {path!r:.40}"
+        )
     return RunResult(read_run(path))

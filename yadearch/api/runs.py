@@ -7,10 +7,12 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from yadearch.api.arguments import check_arguments
 from yadearch.api.results import RunResult, open_run
 from yadearch.case.config import ArchCase
 from yadearch.case.config import preset as _preset
-from yadearch.errors import CaseError, RunFolderError
+from yadearch.case.names import check_name, output_path
+from yadearch.errors import ArgumentTypeError, CaseError, RunFolderError
 from yadearch.results.rundir import case_differences, is_current
 
 if TYPE_CHECKING:
@@ -44,7 +46,7 @@ def as_case(case: ArchCase | str) -> ArchCase:
         return case
     if isinstance(case, str):
         return _preset(case)
-    raise TypeError(
+    raise ArgumentTypeError(
         f"case must be an ArchCase (ya.preset, ya.load_case) or a preset name ('set1', 'set2'), "
         f"got {type(case).__name__}"
     )
@@ -57,7 +59,7 @@ def with_engine(case: ArchCase | str, engine: str | None) -> ArchCase:
     if engine is None:
         return case
     if engine not in ENGINES:
-        raise ValueError(f"engine must be one of {', '.join(ENGINES)}, got {engine!r}")
+        raise CaseError(f"engine must be one of {', '.join(ENGINES)}, got {engine!r}")
     return case.with_overrides({"numerics.engine": engine})
 
 
@@ -77,13 +79,15 @@ def run(
     unless `overwrite`. The run's progress lines are printed unless `quiet` (run.log keeps them)."""
     from yadearch.engine.process import run_case_process
 
+    check_arguments(timeout_s=timeout_s, figures=figures, rerun=rerun, overwrite=overwrite, quiet=quiet)
     case = with_engine(case, engine)
+    check_name(case.name, "case.name")
+    folder = output_path(out, "out") if out is not None else DEFAULT_RUNS_DIR / case.name
     if not case.numerics.keeps_tables:
         raise CaseError(
             f"numerics.run_files = {case.numerics.run_files!r} keeps no tables for a single run's result "
             "and figures; it is for campaigns (sweep, montecarlo, sensitivity, ...): use 'full' here"
         )
-    folder = Path(out) if out is not None else DEFAULT_RUNS_DIR / case.name
     if is_current(folder) and not rerun:
         differences = case_differences(folder, case)
         if not differences:
@@ -112,7 +116,8 @@ def reproduce(
     from yadearch.engine.process import run_case_process
     from yadearch.results.rundir import holds_case
 
-    folders = [Path(out) / name for name in PAPER_SETS]
+    check_arguments(jobs=jobs, rerun=rerun)
+    folders = [output_path(out, "out") / name for name in PAPER_SETS]
     todo = [f for f in folders if rerun or not holds_case(f, _preset(f.name))]
     for folder in set(folders) - set(todo):
         if on_reuse is not None:
@@ -127,7 +132,9 @@ def report(runs: Sequence[str | Path], out: str | Path) -> Path:
     paper's case, hinges and how they formed, figures; returns its path."""
     from yadearch.reporting.report import write_report
 
-    return write_report(list(runs), out)
+    if isinstance(runs, (str, Path)):
+        raise ArgumentTypeError(f"runs must be a list of run folders, got {type(runs).__name__} {str(runs)!r:.40}")
+    return write_report(list(runs), output_path(out, "out"))
 
 
 def limit(
@@ -142,10 +149,13 @@ def limit(
     from yadearch.solve.limit import limit_analysis
     from yadearch.solve.limit_result import write_result_json
 
+    check_arguments(compliant=compliant, max_snap_mm=max_snap_mm)
     case = as_case(case)
+    check_name(case.name, "case.name")
+    folder = output_path(out, "out") if out is not None else None
     result = limit_analysis(case, max_snap_mm=max_snap_mm, compliant=compliant)
-    if out is not None:
-        json_path, figure_stem = limit_files(case, compliant, out)
+    if folder is not None:
+        json_path, figure_stem = limit_files(case, compliant, folder)
         write_result_json(result, case, json_path)
         save_thrust_line(result, case, figure_stem)
     return result

@@ -16,6 +16,7 @@ from typing import Any
 
 import tomli_w
 
+from yadearch.case.names import check_name
 from yadearch.case.sections import (
     RENAMED,
     RETIRED,
@@ -28,6 +29,8 @@ from yadearch.case.sections import (
     NumericsConfig,
 )
 from yadearch.errors import CaseError
+
+TEXT_ENCODING = "utf-8-sig"  # UTF-8, with or without the byte-order mark some editors (Excel, Notepad) write
 
 
 @dataclass
@@ -182,8 +185,9 @@ def case_from_dict(data: dict[str, Any]) -> ArchCase:
     if unknown:
         raise CaseError(f"unknown section(s) {sorted(unknown)}; accepted: {sorted(SECTIONS)}")
     name = data.get("name", "custom")
-    if not isinstance(name, str) or not name.strip() or name != Path(name).name or name in (".", ".."):
-        raise CaseError(f"name must be a plain folder name (no '/' or '..'), got {name!r}")
+    if not isinstance(name, str):
+        raise CaseError(f"name must be a plain folder name, got {type(name).__name__} {name!r:.40}")
+    check_name(name)
     kwargs: dict[str, Any] = {"name": name}
     for section_name, cls in SECTIONS.items():
         section = data.get(section_name, {})
@@ -258,7 +262,7 @@ def load_case(path: str | Path) -> ArchCase:
     """Read a case from a TOML file (missing keys take the defaults of the `set2` arch)."""
     path = Path(path)
     try:
-        data = tomllib.loads(path.read_text())
+        data = tomllib.loads(path.read_text(encoding=TEXT_ENCODING))
     except FileNotFoundError:
         raise CaseError(f"case file {str(path)!r} does not exist") from None
     except (OSError, UnicodeDecodeError) as exc:

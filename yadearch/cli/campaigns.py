@@ -11,10 +11,18 @@ import click
 from yadearch import api
 from yadearch.case import reference
 from yadearch.case.config import ArchCase
-from yadearch.cli.options import case_options, pool_options, resolve_case, timeout_s
+from yadearch.cli.options import (
+    OUT_FILE,
+    OUT_FOLDER,
+    argument_type,
+    case_options,
+    pool_options,
+    resolve_case,
+    timeout_s,
+)
 from yadearch.errors import YadearchError
 from yadearch.studies.campaign import RESULTS_FILE
-from yadearch.studies.grid import parse_values
+from yadearch.studies.grid import check_parameter, parse_values, qualified_name
 from yadearch.studies.robustness import KN_VALUES, VARIANTS
 from yadearch.studies.sweep_figures import KN_KEY
 
@@ -44,7 +52,7 @@ def _base_case(preset_name: str | None, case_file: str | None, settings: tuple[s
 @click.option(
     "--out",
     required=True,
-    type=click.Path(file_okay=False),
+    type=OUT_FOLDER,
     help="campaign folder: one run folder per run, runs.csv, results.csv",
 )
 @pool_options
@@ -84,7 +92,10 @@ def sweep(
         bad = [v for v in axes[KN_KEY] if isinstance(v, (bool, str))]
         if bad:
             raise click.UsageError(f"--kn values must be numbers, got {bad[0]!r}")
-    axes.update(parse_axes(param_specs))
+    params = parse_axes(param_specs)
+    if kn_spec and any(qualified_name(key) == qualified_name(KN_KEY) for key in params):
+        raise click.UsageError("--kn and --param kn_N_per_mm3 give kn twice; keep one")
+    axes.update(params)
     if not axes and not table_file:
         raise click.UsageError("nothing to sweep: give --kn, --param or --table")
     folder = Path(out)
@@ -121,6 +132,12 @@ def parse_axes(param_specs: tuple[str, ...]) -> dict[str, Any]:
         if "=" not in spec:
             raise click.UsageError(f"--param expects NAME=VALUES, got {spec!r}")
         name, values = spec.split("=", 1)
+        check_parameter(name.strip())
+        twice = [key for key in axes if qualified_name(key) == qualified_name(name.strip())]
+        if twice:
+            raise click.UsageError(
+                f"--param gives {qualified_name(twice[0])} twice ({twice[0]} and {name.strip()}); keep one"
+            )
         axes[name.strip()] = parse_values(values)
     return axes
 
@@ -128,36 +145,38 @@ def parse_axes(param_specs: tuple[str, ...]) -> dict[str, Any]:
 @click.command()
 @case_options(with_kn=False)
 @click.option(
-    "--target-du", "target_du", type=float, required=True, help="measured collapse displacement to match (mm)"
+    "--target-du",
+    "target_du",
+    type=argument_type("target_du_mm"),
+    required=True,
+    help="measured collapse displacement to match (mm)",
 )
 @click.option(
     "--tolerance-mm",
-    type=click.FloatRange(min=0, min_open=True),
+    type=argument_type("tolerance_mm"),
     default=0.5,
     show_default=True,
     help="accepted |du - target| (mm)",
 )
 @click.option(
     "--kn-min",
-    type=float,
+    type=argument_type("kn_min"),
     default=reference.KN_SENSITIVITY_RANGE_N_PER_MM3[0],
     show_default=True,
     help="lower end of the kn bracket (N/mm3)",
 )
 @click.option(
     "--kn-max",
-    type=float,
+    type=argument_type("kn_max"),
     default=reference.KN_SENSITIVITY_RANGE_N_PER_MM3[1],
     show_default=True,
     help="upper end of the kn bracket (N/mm3)",
 )
 @click.option(
-    "--max-runs", type=click.IntRange(min=3), default=12, show_default=True, help="give up after this many runs"
+    "--max-runs", type=argument_type("max_runs"), default=12, show_default=True, help="give up after this many runs"
 )
-@click.option(
-    "--out", required=True, type=click.Path(dir_okay=False), help="result JSON, e.g. reports/calibration/set1.json"
-)
-@click.option("--runs-dir", type=click.Path(file_okay=False), help="run folders [default: OUT without .json]")
+@click.option("--out", required=True, type=OUT_FILE, help="result JSON, e.g. reports/calibration/set1.json")
+@click.option("--runs-dir", type=OUT_FOLDER, help="run folders [default: OUT without .json]")
 @pool_options
 def calibrate(
     preset_name: str | None,
@@ -229,7 +248,7 @@ def calibrate(
     "--out",
     default="reports/robustness",
     show_default=True,
-    type=click.Path(file_okay=False),
+    type=OUT_FOLDER,
     help="study folder: run folders, robustness.csv, robustness.md",
 )
 @pool_options

@@ -8,7 +8,7 @@ from pathlib import Path
 import click
 
 from yadearch import api
-from yadearch.cli.options import case_options, pool_options, resolve_case, timeout_s
+from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, pool_options, resolve_case, timeout_s
 from yadearch.studies.capacity_map import FIGURE, REPORT, TABLE
 
 
@@ -16,7 +16,7 @@ from yadearch.studies.capacity_map import FIGURE, REPORT, TABLE
 @case_options(with_kn=True)
 @click.option(
     "--step-deg",
-    type=float,
+    type=argument_type("step_deg"),
     default=15.0,
     show_default=True,
     help="directions every STEP degrees from spreading (0) to closing (-180); must divide 180",
@@ -25,7 +25,7 @@ from yadearch.studies.capacity_map import FIGURE, REPORT, TABLE
 @click.option(
     "--out",
     required=True,
-    type=click.Path(file_okay=False),
+    type=OUT_FOLDER,
     help="folder: runs/ (the campaign), capacity.csv, capacity.md, capacity_map.pdf/.png",
 )
 @pool_options

@@ -12,10 +12,11 @@ from yadearch import api
 from yadearch.analysis.mechanism import run_warnings
 from yadearch.api.runs import limit_files
 from yadearch.case.config import parameter_docs
+from yadearch.case.names import check_name
 from yadearch.cli.campaigns import calibrate, robustness, sweep
 from yadearch.cli.capacity import capacity
 from yadearch.cli.montecarlo import montecarlo
-from yadearch.cli.options import case_options, resolve_case
+from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, resolve_case
 from yadearch.cli.sensitivity import sensitivity
 from yadearch.cli.views import animate, export
 from yadearch.errors import YadearchError
@@ -43,7 +44,7 @@ def cli() -> None:
 @cli.command()
 @case_options(with_kn=True)
 @click.option("--name", help="run name (default: the preset's or case's)")
-@click.option("--out", type=click.Path(file_okay=False), help="run folder (default runs/NAME)")
+@click.option("--out", type=OUT_FOLDER, help="run folder (default runs/NAME)")
 @click.option("--rerun", is_flag=True, help="run again even if OUT holds a finished run of this case")
 @click.option("--overwrite", is_flag=True, help="replace a finished run of another case in OUT")
 def run(
@@ -58,8 +59,8 @@ def run(
 ) -> None:
     """Run one case to collapse and write its run folder (a finished run of the same case is reused)."""
     case = resolve_case(preset_name, case_file, kn, settings)
-    if name:
-        case.name = name
+    if name is not None:
+        case = case.with_overrides({"name": check_name(name, "--name")})
     result = api.run(case, out=out, rerun=rerun, overwrite=overwrite)
     _report_summary(result.path)
     click.echo(f"figures -> {result.path / 'figures'}")
@@ -68,13 +69,13 @@ def run(
 @cli.command()
 @click.option(
     "--out",
-    type=click.Path(file_okay=False),
+    type=OUT_FOLDER,
     default="reports",
     show_default=True,
     help="folder that receives set1/ and set2/",
 )
 @click.option(
-    "--jobs", type=click.IntRange(1, 2), default=2, show_default=True, help="cases run at once (one core each)"
+    "--jobs", type=argument_type("jobs"), default=2, show_default=True, help="cases run at once (one core each)"
 )
 @click.option("--rerun", is_flag=True, help="run both cases again even if OUT holds finished runs of them")
 def reproduce(out: str, jobs: int, rerun: bool) -> None:
@@ -103,14 +104,14 @@ def params() -> None:
 @case_options(with_kn=True, with_engine=False)
 @click.option(
     "--out",
-    type=click.Path(file_okay=False),
+    type=OUT_FOLDER,
     default="reports/limit",
     show_default=True,
     help="folder that receives NAME.json, NAME.pdf and NAME.png",
 )
 @click.option(
     "--max-snap-mm",
-    type=click.FloatRange(min=0.0, min_open=True),
+    type=argument_type("max_snap_mm"),
     default=None,
     help="count a hinge snap that moves a block further than this (mm) as collapse, as a DEM "
     "run counts a block running away (default: every snap that ends in equilibrium is "
@@ -187,9 +188,7 @@ cli.add_command(export)
 
 @cli.command("report")
 @click.argument("runs", nargs=-1, required=True, type=click.Path())
-@click.option(
-    "--out", required=True, type=click.Path(file_okay=False), help="folder that receives report.md and the figures"
-)
+@click.option("--out", required=True, type=OUT_FOLDER, help="folder that receives report.md and the figures")
 def report(runs: tuple[str, ...], out: str) -> None:
     """Write OUT/report.md for the run folders RUNS: comparison with the paper, hinges, figures."""
     click.echo(f"report -> {api.report(runs, out)}")

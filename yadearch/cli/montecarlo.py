@@ -10,17 +10,17 @@ import click
 from yadearch import api
 from yadearch.analysis.samples import du_statistics
 from yadearch.cli.campaigns import note, parse_axes
-from yadearch.cli.options import case_options, pool_options, resolve_case, timeout_s
+from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, pool_options, resolve_case, timeout_s
 from yadearch.errors import YadearchError
 from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE
 
 
 @click.command()
 @case_options(with_kn=True)
-@click.option("--samples", type=click.IntRange(min=1), required=True, help="samples (seeds) per amplitude level")
+@click.option("--samples", type=argument_type("samples"), required=True, help="samples (seeds) per amplitude level")
 @click.option(
     "--seed",
-    type=click.IntRange(min=0, max=2**32 - 1),
+    type=argument_type("seed"),
     default=1,
     show_default=True,
     help="seed of the first sample; sample i uses seed + i",
@@ -35,7 +35,7 @@ from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE
 @click.option(
     "--out",
     required=True,
-    type=click.Path(file_okay=False),
+    type=OUT_FOLDER,
     help="campaign folder: run folders, results.csv, montecarlo.csv, montecarlo.md, figures",
 )
 @pool_options

@@ -2,13 +2,17 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from typing import Any
 
 import click
 
+from yadearch.api.arguments import ARGUMENTS, Argument
 from yadearch.case.config import ArchCase, load_case, preset
+from yadearch.case.names import FILE, FOLDER, output_path
 from yadearch.case.support import movement_overrides
+from yadearch.errors import CaseError
 from yadearch.studies.grid import parse_scalar
 
 PRESETS = ("set1", "set2")
@@ -69,7 +73,7 @@ def case_options(with_kn: bool, with_engine: bool = True) -> Callable[[Any], Any
         ),
     ]
     if with_kn:
-        options.insert(2, click.option("--kn", type=float, help="interface normal stiffness kn (N/mm3)"))
+        options.insert(2, click.option("--kn", type=NUMBER, help="interface normal stiffness kn (N/mm3)"))
     if with_engine:
         options.append(
             click.option(
@@ -92,15 +96,83 @@ def case_options(with_kn: bool, with_engine: bool = True) -> Callable[[Any], Any
 
 def pool_options(func: Any) -> Any:
     """--jobs/--scheduler/--timeout-min: where and how long runs may execute."""
-    func = click.option("--timeout-min", type=float, help="fail a run that takes longer than this (minutes)")(func)
+    func = click.option(
+        "--timeout-min", type=argument_type("timeout_s"), help="fail a run that takes longer than this (minutes)"
+    )(func)
     func = click.option(
         "--scheduler", metavar="ADDRESS", help="run on this dask.distributed scheduler (e.g. tcp://host:8786)"
     )(func)
     return click.option(
-        "--jobs", type=click.IntRange(min=1), help="runs at once on this machine [default: one per core]"
+        "--jobs", type=argument_type("jobs"), help="runs at once on this machine [default: one per core]"
     )(func)
 
 
 def timeout_s(timeout_min: float | None) -> float | None:
     """--timeout-min in seconds (None: no limit)."""
-    return None if timeout_min is None else 60.0 * timeout_min
+    return None if timeout_min is None else ARGUMENTS["timeout_s"].scale * timeout_min
+
+
+FLOAT_TEXT = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?|[+-]?(nan|inf|infinity)", re.IGNORECASE)
+INT_TEXT = re.compile(r"[+-]?\d+")
+
+
+class Number(click.ParamType):
+    """A number as a person writes it: digits, a point, an exponent (not Python's '0_3', which
+    float() reads as 3); its range is the case's or the API's to check."""
+
+    name = "number"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            return float(value)
+        if not FLOAT_TEXT.fullmatch(str(value).strip()):
+            self.fail(f"must be a number (e.g. 5.2 or 1e-3), got {value!r}", param, ctx)
+        return float(value)
+
+
+NUMBER = Number()
+
+
+class ArgumentType(click.ParamType):
+    """The option of an API argument (`api.arguments.ARGUMENTS`): read strictly and checked against
+    the same range in the option's unit, so that the command line and the API agree."""
+
+    def __init__(self, argument: Argument):
+        self.argument = argument
+        self.name = "integer" if argument.kind is int else "number"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        argument = self.argument
+        accepted = f"must be {argument.accepted(argument.scale, none=False)}, got {value!r}"
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            pattern = INT_TEXT if argument.kind is int else FLOAT_TEXT
+            if not pattern.fullmatch(str(value).strip()):
+                self.fail(accepted, param, ctx)
+            value = argument.kind(str(value).strip())
+        if argument.refusal(value if argument.scale == 1 else value * argument.scale) is not None:
+            self.fail(accepted, param, ctx)
+        return value
+
+
+def argument_type(name: str) -> ArgumentType:
+    """The click type of the option for the API argument `name`."""
+    return ArgumentType(ARGUMENTS[name])
+
+
+class OutputPath(click.ParamType):
+    """An output folder or file, checked where the API checks it (`case.names.output_path`)."""
+
+    def __init__(self, kind: str = FOLDER):
+        self.kind = kind
+        self.name = "path"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> str:
+        option = param.opts[0] if param is not None and param.opts else "--out"
+        try:
+            output_path(value, option, self.kind)
+        except CaseError as exc:
+            raise click.UsageError(str(exc), ctx) from None
+        return str(value)
+
+
+OUT_FOLDER, OUT_FILE = OutputPath(FOLDER), OutputPath(FILE)

@@ -8,7 +8,7 @@ from pathlib import Path
 import click
 
 from yadearch import api
-from yadearch.cli.options import case_options, pool_options, resolve_case, timeout_s
+from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, pool_options, resolve_case, timeout_s
 from yadearch.studies.sensitivity import STABLE_TO, parse_factor
 from yadearch.studies.sensitivity_campaign import DEFAULT_BASE_POINTS, INDICES_TABLE, REPORT, TORNADO_TABLE
 
@@ -17,7 +17,7 @@ from yadearch.studies.sensitivity_campaign import DEFAULT_BASE_POINTS, INDICES_T
 @case_options(with_kn=True)
 @click.option(
     "--base-points",
-    type=int,
+    type=argument_type("base_points"),
     default=DEFAULT_BASE_POINTS,
     show_default=True,
     help="Sobol base points N (a power of two): N x (factors + 2) runs; indices also on each halving (convergence)",
@@ -32,7 +32,7 @@ from yadearch.studies.sensitivity_campaign import DEFAULT_BASE_POINTS, INDICES_T
 )
 @click.option(
     "--check-runs",
-    type=int,
+    type=argument_type("check_runs"),
     default=0,
     show_default=True,
     help="make the N one-at-a-time runs that move du most again on the other engine (the DEM for a "
@@ -41,7 +41,7 @@ from yadearch.studies.sensitivity_campaign import DEFAULT_BASE_POINTS, INDICES_T
 @click.option(
     "--out",
     required=True,
-    type=click.Path(file_okay=False),
+    type=OUT_FOLDER,
     help="folder: tornado_runs/, runs/, check_runs/, tornado.csv, indices.csv, convergence.csv, samples.csv, "
     "checks.csv, figures, sensitivity.md",
 )

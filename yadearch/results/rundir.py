@@ -19,6 +19,7 @@ from yadearch.case.numerics_section import FULL_RUN_FILES, SUMMARY_RUN_FILES
 from yadearch.errors import RunFolderError
 from yadearch.results.states import STATES_FILE, RunStates, read_states, write_states
 from yadearch.results.summary import STATIC, STATIC_REVISION, RunSummary
+from yadearch.results.summary_checks import summary_values_problem
 
 CASE_FILE = "case.toml"
 SERIES_FILE = "series.csv"
@@ -129,6 +130,9 @@ def summary_problem(path: Path) -> str | None:
     missing = [key for key in REQUIRED_KEYS if key not in summary]
     if missing:
         return f"{SUMMARY_FILE} lacks {', '.join(missing)}"
+    bad_value = summary_values_problem(summary)
+    if bad_value:
+        return f"{SUMMARY_FILE}: {bad_value}"
     if not (path / CASE_FILE).is_file():
         return f"no {CASE_FILE}"
     return None

@@ -4,6 +4,8 @@ drawn, animated or exported after the run. The states are those of joints.csv, i
 
 from __future__ import annotations
 
+import zipfile
+import zlib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -86,5 +88,7 @@ def read_states(path: Path) -> RunStates | None:
     try:
         with np.load(file) as data:
             return RunStates(**{key: data[key] for key in ("stage", "step", "delta_mm", "pos_m", "rot_rad")})
-    except (OSError, ValueError, KeyError) as exc:
-        raise RunFolderError(f"{file} cannot be read ({exc}); run the case again") from None
+    except (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile, zlib.error) as exc:
+        raise RunFolderError(
+            f"{file} cannot be read ({exc or type(exc).__name__}): it was cut short or changed; run the case again"
+        ) from None

@@ -14,14 +14,15 @@ from yadearch.solve.stages import Stage
 
 DIRECTION_STEP_DEG = 15
 MAX_STEP_DEG = 90  # coarser than this a map would not show the half-plane
+MIN_STEP_DEG = 0.1  # finer is 1801+ directions a map, more than the figure can show
 
 
 def directions(step_deg: float = DIRECTION_STEP_DEG) -> tuple[float, ...]:
     """Directions every `step_deg` from spreading (0) through settlement (-90) to closing (-180);
-    ValueError naming the argument unless 0 < step_deg <= MAX_STEP_DEG and it divides 180."""
-    count = 180.0 / step_deg if step_deg > 0 else math.nan
-    if not (0 < step_deg <= MAX_STEP_DEG and abs(count - round(count)) < 1e-9):
-        raise ValueError(f"step_deg must divide 180 and lie in (0, {MAX_STEP_DEG}], got {step_deg!r}")
+    ValueError naming the argument unless MIN_STEP_DEG <= step_deg <= MAX_STEP_DEG and it divides 180."""
+    count = 180.0 / step_deg if MIN_STEP_DEG <= step_deg <= MAX_STEP_DEG else math.nan
+    if not (math.isfinite(count) and abs(count - round(count)) < 1e-9):
+        raise ValueError(f"step_deg must divide 180 and lie in [{MIN_STEP_DEG:g}, {MAX_STEP_DEG}], got {step_deg!r}")
     return tuple(round(-k * step_deg, 9) + 0.0 for k in range(int(round(count)) + 1))
 
 

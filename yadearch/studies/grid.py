@@ -11,14 +11,16 @@ import math
 import os
 import re
 import tomllib
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from yadearch.case.config import parameter_docs
-from yadearch.errors import CampaignError, CaseError, YadearchError
+from yadearch.errors import ArgumentTypeError, CampaignError, CaseError, YadearchError
 
+TEXT_ENCODING = "utf-8-sig"  # UTF-8, with or without the byte-order mark Excel's "CSV UTF-8" writes
 RUN_COLUMN = "run"  # optional column of an explicit table: the run's name
 MAX_TAG = 64
 MAX_RUNS = 100_000  # a larger campaign is refused (a typo in a grid), unless MAX_RUNS_VARIABLE raises it
@@ -95,7 +97,7 @@ def grid(params: dict[str, list[Any]]) -> list[dict[str, Any]]:
     for key, values in params.items():
         check_parameter(key)
         if isinstance(values, (str, bytes)) or not hasattr(values, "__len__"):
-            raise TypeError(f"{key}: give a list of values, got {values!r}")
+            raise ArgumentTypeError(f"{key}: give a list of values, got {values!r:.40}")
         if len(values) == 0:
             raise CampaignError(f"{key}: no values to run")
     check_campaign_size(math.prod(len(values) for values in params.values()))
@@ -105,22 +107,52 @@ def grid(params: dict[str, list[Any]]) -> list[dict[str, Any]]:
 
 def read_table(path: str | Path) -> list[dict[str, Any]]:
     """Rows of an explicit CSV campaign table: one column per parameter (an empty cell keeps the base
-    value), optionally a `run` column naming each run."""
+    value), optionally a `run` column naming each run. UTF-8 with or without a byte-order mark (Excel's
+    "CSV UTF-8"); anything else, a repeated column or a row longer than the header is one line."""
     path = Path(path)
     if not path.is_file():
-        raise YadearchError(f"campaign table {str(path)!r} does not exist")
-    with path.open(newline="") as f:
-        reader = csv.DictReader(f)
-        for key in reader.fieldnames or []:
-            if key != RUN_COLUMN:
-                check_parameter(key)
-        rows = [
-            {k: (v if k == RUN_COLUMN else parse_scalar(v)) for k, v in row.items() if v is not None and v.strip()}
-            for row in reader
-        ]
+        raise CampaignError(f"campaign table {str(path)!r} does not exist")
+    try:
+        with path.open(newline="", encoding=TEXT_ENCODING) as f:
+            reader = csv.DictReader(f)
+            header = reader.fieldnames or []
+            _check_header(path, header)
+            rows = []
+            for line, row in enumerate(reader, start=2):
+                if None in row:
+                    raise CampaignError(f"campaign table {str(path)!r}: row {line} has more cells than the header")
+                rows.append(
+                    {
+                        k: (v if k == RUN_COLUMN else parse_scalar(v))
+                        for k, v in row.items()
+                        if v is not None and v.strip()
+                    }
+                )
+    except UnicodeDecodeError as exc:
+        raise CampaignError(
+            f"campaign table {str(path)!r} is not UTF-8 text (byte {exc.start}); save it as CSV (UTF-8)"
+        ) from None
+    except csv.Error as exc:
+        raise CampaignError(f"campaign table {str(path)!r} is not a readable CSV table ({exc})") from None
     if not rows:
-        raise YadearchError(f"campaign table {str(path)!r} has no rows")
+        raise CampaignError(f"campaign table {str(path)!r} has no rows")
     return rows
+
+
+def _check_header(path: Path, header: Sequence[str]) -> None:
+    """Every column a case parameter (or `run`), each once (also under its bare and qualified names)."""
+    for key in header:
+        if key != RUN_COLUMN:
+            check_parameter(key)
+    seen: dict[str, str] = {}
+    for key in header:
+        qualified = qualified_name(key)
+        if qualified in seen:
+            raise CampaignError(
+                f"campaign table {str(path)!r} gives {qualified} twice (columns {seen[qualified]!r} and "
+                f"{key!r}); keep one"
+            )
+        seen[qualified] = key
 
 
 def short_name(key: str) -> str:
