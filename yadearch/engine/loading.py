@@ -7,7 +7,9 @@ from collections.abc import Callable
 from typing import Any, Protocol
 
 from yadearch.case.config import ArchCase, NumericsConfig
+from yadearch.case.mechanics import runaway_length
 from yadearch.case.support import path_end_mm
+from yadearch.errors import CANNOT_STAND, RunFailedError
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.model.movement import Movement
@@ -15,6 +17,10 @@ from yadearch.solve.path import PathResult, PathStep, follow_path, path_settings
 from yadearch.solve.stages import Stage, Verdict
 
 SETTLE_TOLERANCE_FACTOR = 0.01  # a settled state's unbalanced force, relative to equilibrium_tolerance
+HOLD_RETRIES = 1  # a hold that finds neither equilibrium nor runaway goes on this many times more
+STABILITY_HOLDS = 2  # an equilibrium whose static tangent is indefinite is held this many times more
+SNAP_THICKNESS_FRACTION = 0.01  # a relaxation moving a block this x the ring's thickness ...
+# ... and further than the support moved in its increment is a snap: a quasi-static step barely moves them
 
 
 class PathRecorder(Protocol):
@@ -44,6 +50,8 @@ class LiveArch(Protocol):
 
     @property
     def hold_move(self) -> float: ...  # the largest block displacement of the last hold (m)
+
+    def smallest_stiffness(self) -> float: ...  # the static tangent's smallest eigenvalue at the poses (N/m)
 
     @property
     def total_steps(self) -> int: ...
@@ -82,7 +90,16 @@ class EquilibriumPath:
         self._failures: dict[float, dict] = {}  # support displacement -> state a failure ended in
         self.last_equilibrium_hinges: list[dict] = []
         # how far the relaxation of each accepted increment moved the blocks (mm), for summary.json
-        self.relaxations: dict = {"runaway_mm": self.num.runaway_mm, "delta_mm": [], "increment_mm": [], "move_mm": []}
+        self.runaway = runaway_length(arch.case)
+        self.relaxations: dict = {
+            "runaway_mm": units.to_mm(self.runaway),
+            "delta_mm": [],
+            "increment_mm": [],
+            "move_mm": [],
+            "min_stiffness_N_per_m": [],
+        }
+        self.snaps: list[dict] = []  # relaxations that carried the arch to another branch
+        self.first_loss: tuple[float, float] | None = None  # the increment of the first snap (m)
         self._start = 0.0  # where the last increment started (m)
         self.settings = path_settings(self.num, path_end_mm(arch.case, arch.movement))
 
@@ -100,6 +117,11 @@ class EquilibriumPath:
         self.arch.move_support(target, min(1.0, fraction))
         self.arch.stage = Stage.RELAX
         verdict = self.arch.hold()
+        for _ in range(HOLD_RETRIES):
+            if verdict != Verdict.TIMEOUT:
+                break
+            verdict = self.arch.hold(from_rest=False)  # the hold goes on before it is called unresolved
+        verdict = stable_tangent(self.arch, verdict)
         self._at_accepted = False
         if verdict != Verdict.STABLE:
             self._failures[target] = self.arch.snapshot()
@@ -111,6 +133,18 @@ class EquilibriumPath:
         self.relaxations["delta_mm"].append(units.to_mm(self.arch.delta()))
         self.relaxations["increment_mm"].append(units.to_mm(self.arch.delta() - self._start))
         self.relaxations["move_mm"].append(units.to_mm(self.arch.hold_move))
+        self.relaxations["min_stiffness_N_per_m"].append(self.arch.smallest_stiffness())
+        increment = self.arch.delta() - self._start
+        floor = SNAP_THICKNESS_FRACTION * units.mm(self.arch.case.geometry.thickness_mm)
+        if self.arch.hold_move > max(floor, increment):
+            self.snaps.append(
+                {
+                    "fold_mm": [units.to_mm(self._start), units.to_mm(self.arch.delta())],
+                    "move_mm": units.to_mm(self.arch.hold_move),
+                }
+            )
+            if self.first_loss is None:
+                self.first_loss = (self._start, self.arch.delta())
         self._accepted.append(self.arch.snapshot())
         self._at_accepted = True
         self.arch.stage = Stage.EQUILIBRIUM
@@ -147,6 +181,17 @@ class EquilibriumPath:
         self._accepted.pop()
         self._at_accepted = False
         self.arch.recorder.discard_since(self._records.pop())
+        for key in ("delta_mm", "increment_mm", "move_mm", "min_stiffness_N_per_m"):
+            self.relaxations[key].pop()
+        start = units.to_mm(self._accepted_delta())
+        self.snaps = [s for s in self.snaps if s["fold_mm"][1] <= start]
+        self.first_loss = (
+            (units.mm(self.snaps[0]["fold_mm"][0]), units.mm(self.snaps[0]["fold_mm"][1])) if self.snaps else None
+        )
+
+    def _accepted_delta(self) -> float:
+        """The support displacement of the accepted state (m)."""
+        return self.relaxations["delta_mm"][-1] * 1e-3 if self.relaxations["delta_mm"] else 0.0
 
     def follow(self, start: float = 0.0) -> PathResult:
         """Load by increments relaxed to equilibrium until du is bracketed (`solve.path`), from the
@@ -162,12 +207,41 @@ class EquilibriumPath:
 
     def collapse_state(self, upper: float) -> list[Hinge]:
         """Show the mechanism: continue the failure at du's upper bracket end `upper` until the
-        arch has run away (10 runaway distances more, at most `hold_max_s` more), then read its
+        arch has run away (one runaway bound more, at most `hold_max_s` more), then read its
         hinges."""
         self.arch.stage = Stage.COLLAPSE
         self.arch.restore(self._failures[min(self._failures, key=lambda d: abs(d - upper))])
-        self.arch.hold(runaway=10.0 * units.mm(self.num.runaway_mm), from_rest=False)
+        self.arch.hold(runaway=self.runaway, from_rest=False)
         return self.arch.recorder.record_collapse()
+
+
+def stable_tangent(arch: LiveArch, verdict: Verdict) -> Verdict:
+    """A hold's verdict kept only where the static model agrees: an equilibrium whose tangent at the
+    blocks' poses is indefinite is held on (STABILITY_HOLDS times), then unresolved (Verdict.TIMEOUT)."""
+    for _ in range(STABILITY_HOLDS):
+        if verdict != Verdict.STABLE or arch.smallest_stiffness() > 0.0:
+            return verdict
+        verdict = arch.hold(from_rest=False)
+    return verdict if verdict != Verdict.STABLE or arch.smallest_stiffness() > 0.0 else Verdict.TIMEOUT
+
+
+def settle_selfweight(arch: LiveArch) -> None:
+    """Settle the self-weight state by the path's own test (`settle_speed_mm_per_s`, a hundredth of
+    the equilibrium tolerance) and until the static model calls it stable: a state still creeping or
+    indefinite is not the path's start (RunFailedError: it cannot stand, or it is unresolved)."""
+    num = arch.case.numerics
+    verdict = arch.hold(
+        from_rest=False,
+        still_speed=units.mm(num.settle_speed_mm_per_s),
+        tolerance=SETTLE_TOLERANCE_FACTOR * num.equilibrium_tolerance,
+    )
+    if verdict == Verdict.RUNAWAY:
+        raise RunFailedError(f"{CANNOT_STAND}: the self-weight state ran away while settling")
+    if stable_tangent(arch, verdict) != Verdict.STABLE:
+        raise RunFailedError(
+            f"unresolved: the self-weight state did not settle to a stable equilibrium within "
+            f"{STABILITY_HOLDS + 1} holds of {num.hold_max_s} s (numerics.hold_max_s)"
+        )
 
 
 def criterion_text(n: NumericsConfig) -> str:
@@ -178,8 +252,10 @@ def criterion_text(n: NumericsConfig) -> str:
         "shorter ones slower in proportion, so that every move lasts as long), then "
         "a relaxation with the support held and the blocks started from rest. Equilibrium: after "
         f"{n.hold_min_s} s, unbalanced force < {n.equilibrium_tolerance} and all blocks slower "
-        f"than {n.still_speed_mm_per_s} mm/s. No equilibrium: a block moves > {n.runaway_mm} mm, "
-        f"or {n.hold_max_s} s pass without equilibrium. Relaxations run at local damping "
+        f"than {n.still_speed_mm_per_s} mm/s, and the static tangent at the blocks' poses positive "
+        f"definite (else the hold goes on). No equilibrium: a block moves > {n.runaway_thickness_ratio} ring "
+        f"thickness. A hold that finds neither in {n.hold_max_s} s goes on once; then the increment is "
+        "unresolved (no du, never a collapse). Relaxations run at local damping "
         f"{n.hold_damping}. After a failed increment the increment halves (bisection); du = "
         "midpoint of the bracket [last support displacement in equilibrium; first without, "
         f"reached from that state], narrowed to < {n.du_tolerance_mm} mm."

@@ -16,10 +16,10 @@ from collections.abc import Callable
 import numpy as np
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import standing_parameters
+from yadearch.case.mechanics import runaway_length, standing_parameters
 from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.engine.driver import SupportDriver
-from yadearch.engine.loading import EquilibriumPath
+from yadearch.engine.loading import EquilibriumPath, settle_selfweight
 from yadearch.engine.recorder import Recorder, Records
 from yadearch.engine.scene import CALLBACK_NAME, body_states, build_scene, stop_voussoirs
 from yadearch.engine.scene_state import capture, put_back
@@ -185,6 +185,8 @@ class Runner:
                 f"(unbalanced force ratio {unbalanced:.3g} > "
                 f"{self.num.equilibrium_tolerance} or blocks still moving)"
             )
+        settle_selfweight(self)
+        unbalanced = self._unbalanced()
         self.driver.zero_here()
         self.recorder.series(force=True)
         self.recorder.joints(Stage.SELFWEIGHT)
@@ -195,6 +197,10 @@ class Runner:
             f"for a weight of {self.weight:.3f} N, thrust {info['thrust_N']:.3f} N"
         )
         return info
+
+    def smallest_stiffness(self) -> float:
+        """The smallest eigenvalue of the free blocks' tangent stiffness at the scene's poses (N/m)."""
+        return self.scene.contacts.smallest_stiffness()
 
     def hold(
         self,
@@ -209,14 +215,15 @@ class Runner:
         'stable': after `hold_min_s`, unbalanced force below `tolerance` (default
         `equilibrium_tolerance`) and every block slower than `still_speed` (m/s, default
         `still_speed_mm_per_s`; a mechanism past its limit point would be accelerating by then);
-        'runaway': a block moved `runaway_mm`; 'timeout': neither within `hold_max_s`."""
+        'runaway': a block moved `runaway` (default `mechanics.runaway_length`); 'timeout': neither
+        within `max_s` (default `hold_max_s`)."""
         from yade import O
 
         self.driver.target = self.delta()
         self._set_damping(self.num.hold_damping)
         if from_rest:
             stop_voussoirs(self.scene)
-        runaway = runaway if runaway is not None else units.mm(self.num.runaway_mm)
+        runaway = runaway if runaway is not None else runaway_length(self.case)
         max_steps = int((max_s if max_s is not None else self.num.hold_max_s) / O.dt)
         min_steps = int(self.num.hold_min_s / O.dt)
         still_speed = still_speed if still_speed is not None else units.mm(self.num.still_speed_mm_per_s)
@@ -271,13 +278,20 @@ class Runner:
         selfweight = self.selfweight()
         loading = EquilibriumPath(self)
         path = loading.follow()
-        outcome = collapse_fields(path, self.movement)
+        outcome = collapse_fields(path, self.movement, loading.first_loss)
         if path.collapsed:
             hinges = loading.collapse_state(path.upper)
             self.log(
                 f"[{self.case.name}] du = {outcome['du_mm']:.2f} mm (no equilibrium at "
                 f"{units.to_mm(path.upper):.2f}, equilibrium at {units.to_mm(path.lower):.2f})"
             )
+        elif path.unresolved:
+            self.log(
+                f"[{self.case.name}] unresolved: neither equilibrium nor runaway at {units.to_mm(path.upper):.2f} mm "
+                f"after the holds' retries (last stable state {units.to_mm(path.lower):.2f} mm); no du"
+            )
+            self.stage = Stage.END
+            hinges = self.recorder.joints(Stage.END)
         else:
             self.log(f"[{self.case.name}] no collapse up to {units.to_mm(loading.settings.max_displacement):g} mm")
             self.stage = Stage.END
@@ -292,6 +306,7 @@ class Runner:
             hinges_last_equilibrium=loading.last_equilibrium_hinges,
             friction=dict(self.recorder.friction),
             relaxations=loading.relaxations,
+            snaps=loading.snaps,
             hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges) if path.collapsed else (),
             hinges_detail=[h.to_json() for h in hinges],
             steps=self.total_steps,

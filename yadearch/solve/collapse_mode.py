@@ -43,10 +43,12 @@ class FoldMode:
         return [f"{h.interface}{h.side}" for h in self.hinges]
 
 
-def fold_mode(arch: StaticArch, u: np.ndarray, stiffness: np.ndarray) -> FoldMode:
-    """The softest mode of `stiffness` (band storage, free dofs) at state `u`: which joints turn
-    (MODE_HINGE_FRACTION of the largest turn) and whether it slides rather than turns."""
-    mode = banded.softest_mode(stiffness)
+def fold_mode(arch: StaticArch, u: np.ndarray, stiffness: np.ndarray, failed: np.ndarray | None = None) -> FoldMode:
+    """The collapse mode at the last stable state `u`: the softest mode of `stiffness` (band storage,
+    free dofs), or, given the state the collapse ran away to (`failed`), the motion towards it (the
+    same mode carried to a finite amplitude; a stiff arch's softest linear mode can be one joint's
+    own); which joints turn (MODE_HINGE_FRACTION of the largest turn) and whether it slides."""
+    mode = banded.softest_mode(stiffness) if failed is None else (failed - u)[arch.free_dofs]
     if float(arch.loads()[arch.free_dofs] @ mode) < 0.0:
         mode = -mode  # the way the weights go down
     moved = u.copy()

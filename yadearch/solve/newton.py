@@ -185,7 +185,12 @@ class Solver:
                 shift = floor
                 continue
             if shift > MAX_SHIFT_RATIO * floor:
-                break  # no step releases energy: stuck where no equilibrium is
+                if banded.positive_definite(stiffness):
+                    break  # no step releases energy in a stable well: stuck where no equilibrium is
+                u = self._kick(u, stiffness)  # at a saddle to round-off: leave it along its softest mode
+                joints, residual = self.state(u, u_before, shear_before, gravity)
+                shift = floor
+                continue
             try:
                 d = self._capped(banded.solve(stiffness, residual, shift))
             except (np.linalg.LinAlgError, ValueError):

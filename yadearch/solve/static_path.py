@@ -230,10 +230,12 @@ class StaticLoading:
                 fold = self.snaps[0]["fold_mm"]
                 self.first_loss = (units.mm(fold[0]), units.mm(fold[1]))
 
-    def fold_mode(self) -> FoldMode:
-        """The softest mode of the last accepted state: the collapse's hinges and kind."""
+    def fold_mode(self, upper: float) -> FoldMode:
+        """The collapse mode from the last accepted state towards the runaway at du's upper end
+        `upper`: the collapse's hinges and kind (`solve.collapse_mode`)."""
         state = self.accepted[-1]
-        return fold_mode(self.arch, state.u, self._stiffness_of(state))
+        failed = self.failures[min(self.failures, key=lambda d: abs(d - upper))]
+        return fold_mode(self.arch, state.u, self._stiffness_of(state), failed.u)
 
     def predict(self, target: float, history: list[StaticState]) -> np.ndarray:
         """Where the arch should be with the support at `target`: a parabola (or a line) through the

@@ -75,7 +75,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         last_hinges = records.add(state)
     hinges_last = last_hinges if len(loading.accepted) > 1 else []
     hinges = records.add(loading.collapse_state(path.upper), label=Stage.COLLAPSE) if path.collapsed else hinges_last
-    mode = loading.fold_mode() if path.collapsed else None
+    mode = loading.fold_mode(path.upper) if path.collapsed else None
     summary = RunSummary(
         name=case.name,
         started=started,
