@@ -40,6 +40,7 @@ from yadearch.studies.sessions import record_session
 
 RUNS_FILE = "runs.csv"
 RESULTS_FILE = "results.csv"
+SHOWN_DUPLICATES = 5  # a refusal names this many duplicate runs (a grid of rounded values can repeat thousands)
 SUBMITTED_PER_SLOT = 2  # runs handed to the executor ahead of time, per slot (a bounded window)
 RESULTS_EVERY_S = 5.0  # results.csv is rewritten at most this often while runs finish (and at the end)
 RESULTS_COST_SHARE = 0.05  # ... and no more often than keeps its rewriting to this share of the parent's time
@@ -71,7 +72,8 @@ def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]
         raise CaseError(f"{invalid[0]}{more}; nothing was run")
     duplicates = sorted(name for name, count in Counter(s.name for s in specs).items() if count > 1)
     if duplicates:
-        raise YadearchError(f"campaign has duplicate runs {duplicates}")
+        more = f" and {len(duplicates) - SHOWN_DUPLICATES} more" if len(duplicates) > SHOWN_DUPLICATES else ""
+        raise YadearchError(f"campaign has duplicate runs {duplicates[:SHOWN_DUPLICATES]}{more}")
     return specs
 
 
