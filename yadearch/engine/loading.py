@@ -206,12 +206,10 @@ class EquilibriumPath:
         )
 
     def collapse_state(self, upper: float) -> list[Hinge]:
-        """Show the mechanism: continue the failure at du's upper bracket end `upper` until the
-        arch has run away (one runaway bound more, at most `hold_max_s` more), then read its
-        hinges."""
+        """Show the mechanism: the state of the failure at du's upper bracket end `upper`, where a
+        block has run away by the runaway bound (as the static engine shows it), and its hinges."""
         self.arch.stage = Stage.COLLAPSE
         self.arch.restore(self._failures[min(self._failures, key=lambda d: abs(d - upper))])
-        self.arch.hold(runaway=self.runaway, from_rest=False)
         return self.arch.recorder.record_collapse()
 
 

@@ -26,7 +26,6 @@ from yadearch.studies.failures import FAILED_FILE
 from yadearch.studies.robustness import same_hinge_set
 
 AGREEMENT_PCT = 1.0  # the issue's target: static du within 1 % of the DEM's where the DEM is converged
-SNAP_RUNAWAY_MM = 5.0  # the second static run of a differing pair survives snaps up to this
 
 
 @dataclass(frozen=True)
@@ -65,28 +64,13 @@ def _run_static(case: ArchCase, folder: Path) -> RunSummary | str:
 
 
 def run_pairs(pairs: list[Pair], out: Path, jobs: int) -> pd.DataFrame:
-    """Every pair's static run (in `out`/GROUP/NAME, `jobs` processes) beside its DEM summary; where
-    they differ, the static run again with snaps up to SNAP_RUNAWAY_MM survived (out/GROUP/NAME_snaps),
-    which tells a snap the DEM survived during its move from a different path."""
+    """Every pair's static run (in `out`/GROUP/NAME, `jobs` processes) beside its DEM summary (both
+    survive every snap that re-settles: du_first and du side by side)."""
     os.environ.setdefault("OMP_NUM_THREADS", "1")
     folders = [out / pair.group / pair.name for pair in pairs]
     with ProcessPoolExecutor(max_workers=jobs) as pool:
         statics = list(pool.map(_run_static, [p.case for p in pairs], folders))
-        rows = [comparison_row(pair, static) for pair, static in zip(pairs, statics)]
-        differ = [
-            k
-            for k, row in enumerate(rows)
-            if row["static_du_mm"] is not None and not (row["within_1pct"] and row["same_hinges"])
-        ]
-        cases = [pairs[k].case.with_overrides({"numerics.runaway_mm": SNAP_RUNAWAY_MM}) for k in differ]
-        again = list(pool.map(_run_static, cases, [out / pairs[k].group / f"{pairs[k].name}_snaps" for k in differ]))
-    for k, static in zip(differ, again):
-        survived = static if isinstance(static, RunSummary) else None
-        rows[k].update(
-            snaps_survived_du_mm=survived.du_mm if survived else None,
-            snaps_survived_hinges=survived.hinge_labels if survived else "",
-        )
-    return pd.DataFrame(rows)
+    return pd.DataFrame([comparison_row(pair, static) for pair, static in zip(pairs, statics)])
 
 
 def comparison_row(pair: Pair, static_run: RunSummary | str) -> dict[str, Any]:
@@ -106,6 +90,9 @@ def comparison_row(pair: Pair, static_run: RunSummary | str) -> dict[str, Any]:
         "seed": num.imperfections.seed,
         "dem_du_mm": dem_du,
         "static_du_mm": static_du,
+        "dem_du_first_mm": dem.du_first_mm,
+        "static_du_first_mm": static.du_first_mm,
+        "static_outcome": static.path_outcome if not static_error else "failed",
         "difference_pct": diff,
         "within_1pct": bool(abs(diff) <= AGREEMENT_PCT) if math.isfinite(diff) else both_failed,
         "dem_hinges": dem_hinges,
@@ -119,8 +106,6 @@ def comparison_row(pair: Pair, static_run: RunSummary | str) -> dict[str, Any]:
         "static_wall_s": static.wall_s,
         "dem_error": dem_error,
         "static_error": static_error,
-        "snaps_survived_du_mm": None,
-        "snaps_survived_hinges": "",
     }
 
 
@@ -170,15 +155,15 @@ def crosscheck_markdown(table: pd.DataFrame, limits: pd.DataFrame, wall_s: float
     else:
         lines += [
             "| group | run | kn (N/mm³) | DEM du (mm) | static du (mm) | difference (%) | DEM hinges | "
-            "static hinges | static snaps (largest, mm) | static, snaps to 5 mm survived: du (mm), hinges |",
+            "static hinges | static snaps (largest, mm) | du_first DEM / static (mm) |",
             "|---|---|---|---|---|---|---|---|---|---|",
         ]
         for r in outside.itertuples():
             lines.append(
                 f"| {r.group} | {r.run} | {r.kn_N_per_mm3:g} | {_mm(r.dem_du_mm)} | {_mm(r.static_du_mm)} | "
                 f"{r.difference_pct:+.2f} | {r.dem_hinges} | {r.static_hinges} | "
-                f"{r.static_snaps} ({r.largest_snap_mm:.2f}) | {_mm(r.snaps_survived_du_mm)}, "
-                f"{r.snaps_survived_hinges} |"
+                f"{r.static_snaps} ({r.largest_snap_mm:.2f}) | {_mm(r.dem_du_first_mm)} / "
+                f"{_mm(r.static_du_first_mm)} |"
             )
     for r in table[table["dem_error"].astype(bool)].itertuples():
         lines += [

@@ -8,6 +8,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from yadearch.case.config import ArchCase, load_case
+from yadearch.case.mechanics import runaway_length
+from yadearch.model import units
 from yadearch.model.hinges import mirror_hinge_labels
 from yadearch.results.rundir import CASE_FILE, hinge_list, read_summary
 from yadearch.solve.limit import has_other_branch, limit_analysis, mirror_image
@@ -37,7 +39,7 @@ def check(folder: Path, tolerance: float) -> tuple[str, bool]:
     survived, limit, rigid, chain, name = min(branches, key=lambda b: _distance(mechanism, b[2]))
     compliant = limit_analysis(
         mirror_image(case) if name == "mirrored" else case,
-        max_snap_mm=case.numerics.runaway_mm,
+        max_snap_mm=units.to_mm(runaway_length(case)),
         mirror=False,
         compliant=True,
     )
@@ -68,7 +70,7 @@ def _branch(case: ArchCase, name: str) -> tuple[LimitResult, LimitResult, str, s
     mirrored = name == "mirrored"
     solved = mirror_image(case) if mirrored else case
     survived = limit_analysis(solved, mirror=False)
-    limit = limit_analysis(solved, max_snap_mm=case.numerics.runaway_mm, mirror=False)
+    limit = limit_analysis(solved, max_snap_mm=units.to_mm(runaway_length(case)), mirror=False)
     followed = [f"{h.interface}{h.side}" for h in limit.hinge_history if h.to_mm is None]
     chain = list(limit.collapse_hinges)
     if mirrored:
