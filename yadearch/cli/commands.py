@@ -153,6 +153,9 @@ def limit(
         f"{case.name}: du_rigid = {du}, {result.collapse_mode} on {' '.join(result.collapse_hinges)}"
         f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}"
     )
+    if result.du_first_mm is not None and result.snaps:
+        snaps = ", ".join(f"{s.at_mm:.2f} mm ({s.largest_move_mm:.2f} mm)" for s in result.snaps)
+        click.echo(f"du_first = {result.du_first_mm:.2f} mm; snaps survived at (largest block move): {snaps}")
     if result.mirror_collapse_mode is not None:
         mirrored = "no collapse" if result.mirror_du_rigid_mm is None else f"{result.mirror_du_rigid_mm:.2f} mm"
         hinges = " ".join(result.mirror_collapse_hinges or ())

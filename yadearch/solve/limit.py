@@ -1,12 +1,15 @@
 """Rigid-block limit analysis of the arch under a moving support: the kn -> infinity reference of the
 DEM (Gilbert's rigid-block LP as in LimitState RING; Portioli & Cascini 2017 for settlements).
 
-The march (`solve.march`) follows the three-hinge mechanism the support drives, snapping hinges that
-migrate, until no admissible equilibrium remains. A DEM run at kn 300 loaded gently passes snaps of
-1.1-1.3 mm (docs/validation.md), so every snap is survived by default. du_rigid is the last support
-displacement with an admissible equilibrium. Without the snaps the paper arch would "collapse" at
-8.4 mm, where its extrados hinge moves from 33E to 32E. With `kn_N_per_mm3` the joints beside the
-hinges fold at their finite-stiffness margin (`solve.compliant`): the DEM's du at that stiffness.
+The march (`solve.march`) follows the three-hinge mechanism the support drives; at each limit point
+(no admissible equilibrium further on) the hinges re-seat at the fixed support where an energy check
+finds a new equilibrium (`solve.reseat`), until none does. A DEM run at kn 300 loaded gently passes
+snaps of 1.1-1.3 mm (docs/validation.md), so every re-seating is survived, however far it moves,
+unless a block moves further than `runaway_thicknesses` ring thicknesses first (geometry, not a
+millimetre constant). du (du_mm, also du_rigid_mm) is the end of that quasi-static path, du_first_mm
+its first limit point. Without the snaps the paper arch would "collapse" at 8.4 mm, where its
+extrados hinge moves from 33E to 32E. With `kn_N_per_mm3` the joints beside the hinges fold at their
+finite-stiffness margin (`solve.compliant`): the DEM's du at that stiffness.
 """
 
 from __future__ import annotations
@@ -24,6 +27,7 @@ from yadearch.model.hinges import mirror_hinge_labels
 from yadearch.solve.limit_lp import solve_statics
 from yadearch.solve.limit_result import LimitResult, interface_forces
 from yadearch.solve.march import March
+from yadearch.solve.reseat import DEFAULT_RUNAWAY_THICKNESSES
 from yadearch.solve.rigid import LimitError, RigidArch, at_rest, rigid_arch
 
 DEFAULT_STEP_MM = 0.5  # support step between equilibrium checks
@@ -60,20 +64,24 @@ def limit_analysis(
     max_snap_mm: float | None = None,
     mirror: bool = True,
     compliant: bool = False,
+    runaway_thicknesses: float = DEFAULT_RUNAWAY_THICKNESSES,
 ) -> LimitResult:
     """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible
-    equilibrium, its hinge history and its last admissible state (see the module docstring). A hinge
-    snap that moves a block further than `max_snap_mm` is the collapse (default: every snap that
-    ends in equilibrium is survived; docs/validation.md). On an odd number of voussoirs a movement
+    equilibrium, its hinge history and its last admissible state (see the module docstring). A
+    re-seating that moves a block further than `runaway_thicknesses` ring thicknesses runs away (the
+    collapse). `max_snap_mm` is for comparing with a DEM run only: a snap moving a block further than
+    the run's runaway distance is then the collapse, as the run counts it (default: every snap that
+    re-seats is survived; docs/validation.md). On an odd number of voussoirs a movement
     whose mirror image differs (a support that turns or moves vertically) is solved mirrored too
     (`mirror_du_rigid_mm`; `mirror` false: not): the keystone's two joints tie, and each branch has
     its own limit. `compliant`: the joints beside the hinges fold at the margin the case's kn allows
     (`solve.compliant`), giving the du a DEM run of that stiffness should find instead of the rigid one."""
-    result, arch = _solve(case, step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant)
+    settings = (step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant, runaway_thicknesses)
+    result, arch = _solve(case, *settings)
     if not (mirror and has_other_branch(case)):
         return result
     try:
-        mirrored, _ = _solve(mirror_image(case), step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant)
+        mirrored, _ = _solve(mirror_image(case), *settings)
     except LimitError as exc:
         return replace(result, mirror_collapse_mode=f"failed: {exc}")
     return replace(
@@ -92,6 +100,7 @@ def _solve(
     max_displacement_mm: float | None,
     max_snap_mm: float | None,
     compliant: bool,
+    runaway_thicknesses: float,
 ) -> tuple[LimitResult, RigidArch]:
     """`limit_analysis` of `case` as it stands (the keystone's tie broken toward its left joint), and
     the rigid arch it solved."""
@@ -99,7 +108,10 @@ def _solve(
     arch = rigid_arch(case)
     snap_cap = math.inf if max_snap_mm is None else max_snap_mm
     kn = units.stiffness_per_volume(case.interface.kn_N_per_mm3) if compliant else None
-    march = March(arch, units.mm(step_mm), units.mm(tolerance_mm), snap_cap, kn)
+    if not runaway_thicknesses > 0.0:
+        raise ValueError(f"runaway_thicknesses must be positive, got {runaway_thicknesses}")
+    runaway = runaway_thicknesses * arch.geometry.thickness
+    march = March(arch, units.mm(step_mm), units.mm(tolerance_mm), runaway, kn, snap_cap)
     limit = min(units.mm(max_displacement_mm or case.loading.max_support_displacement_mm), arch.movement.length)
     last, read_at, mechanism, chain = march.run(limit)
     mode, hinges = "none", tuple(p.label for p in mechanism.pivots)
@@ -113,9 +125,12 @@ def _solve(
             mode = "sliding" if march.statics(read_at, friction=False).feasible else "hinging"
     forces, reactions = interface_forces(arch, march.statics(last, refine=True))
     use = np.array([f.friction_use for f in forces])
+    du = units.to_mm(last.delta) if mode != "none" else None
     return LimitResult(
         name=case.name,
-        du_rigid_mm=units.to_mm(last.delta) if mode != "none" else None,
+        du_mm=du,
+        du_first_mm=None if march.first_limit is None else units.to_mm(march.first_limit),
+        du_rigid_mm=du,
         collapse_mode=mode,
         hinge_history=tuple(march.history),
         collapse_hinges=hinges,
@@ -127,6 +142,8 @@ def _solve(
         rotation_rad=tuple(float(r) for r in last.rot),
         shift_mm=tuple((units.to_mm(float(x)), units.to_mm(float(y))) for x, y in last.shift),
         support_direction_deg=case.loading.support_direction_deg,
+        snaps=tuple(march.reseated),
+        runaway_thicknesses=runaway_thicknesses,
         max_snap_mm=None if math.isinf(snap_cap) else snap_cap,
         snap_collapse_mm=march.snap_collapse_mm,
         step_mm=step_mm,

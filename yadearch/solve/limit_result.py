@@ -35,6 +35,19 @@ class HingeRecord:
 
 
 @dataclass(frozen=True)
+class SnapRecord:
+    """A limit point the march survived: at support displacement `at_mm` the three-hinge path lost
+    its equilibrium and the hinges re-seated at the fixed support (the weights falling all the way)
+    into a new admissible equilibrium, moving no block further than `largest_move_mm`; the hinges
+    followed before (`hinges_before`) and after (`hinges_after`), e.g. "2I 41E 56E"."""
+
+    at_mm: float
+    largest_move_mm: float
+    hinges_before: str
+    hinges_after: str
+
+
+@dataclass(frozen=True)
 class InterfaceForce:
     """Contact forces on the right block of one interface (N): corner normal forces, shear along the
     joint (intrados -> extrados), where they act (mm), and the friction used |T| / (tan(phi) N)."""
@@ -55,7 +68,14 @@ class LimitResult:
     """The rigid-block limit of one case and its last admissible state (see `solve.limit`)."""
 
     name: str
-    du_rigid_mm: float | None  # None: the arch still stands at the largest displacement tried
+    # the end of the quasi-static path: the last support displacement from which the hinges, moving
+    # at the fixed support, re-seat into an admissible equilibrium (None: standing at the largest
+    # displacement tried); du_rigid_mm is the same number under its older name
+    du_mm: float | None
+    # the first limit point: where the three-hinge path first loses its equilibrium (a snap survived
+    # or the collapse; None: none met). du_first_mm <= du_mm; equal when the first is the collapse
+    du_first_mm: float | None
+    du_rigid_mm: float | None  # = du_mm
     collapse_mode: str  # "hinging", "snap" (a hinge snap beyond max_snap_mm), "sliding", or "none"
     hinge_history: tuple[HingeRecord, ...]
     collapse_hinges: tuple[str, ...]  # hinges of the collapse mechanism, left to right, e.g. "9I"
@@ -67,7 +87,11 @@ class LimitResult:
     rotation_rad: tuple[float, ...]  # per block (0 = left support) at the last admissible state
     shift_mm: tuple[tuple[float, float], ...]  # per block: X -> R(rotation) X + shift
     support_direction_deg: float
-    max_snap_mm: float | None  # a snap moving a block further is the collapse (None: all survived)
+    snaps: tuple[SnapRecord, ...]  # the limit points survived, in order
+    runaway_thicknesses: float  # a re-seating moving a block further than this many ring thicknesses runs away
+    # for comparing with a DEM run: a snap moving a block further (mm) is the collapse, as the run's
+    # runaway distance (None: every snap that re-seats within the runaway bound is survived)
+    max_snap_mm: float | None
     snap_collapse_mm: float | None  # the largest block movement of the snap that was the collapse
     step_mm: float
     tolerance_mm: float

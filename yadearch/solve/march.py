@@ -1,23 +1,28 @@
 """The incremental rigid-block march of `solve.limit`: follow the three-hinge mechanism that the
-support drives, locate where equilibrium is lost, snap the hinges that migrate, read the collapse.
+support drives, locate where equilibrium is lost, re-seat the hinges at the fixed support, read the
+collapse.
 
 Incremental, geometry updated. The kinematic LP gives the three-hinge mechanism that follows the
-support; the support moves in steps along it, each configuration reached exactly by closing the
-linkage (no drift), and the static LP checks that an admissible equilibrium remains with forces only
-at touching corners. A corner that closes on the way (a hinge turning back) ends the step there and
-the mechanism is solved again. When equilibrium is lost, bisection locates the limit, where the
-thrust line touches a fourth corner, and the mechanism at a fixed support just past it (a four-hinge
-chain that lowers the weights) is read. If it moves an open hinge to the next interface (it opens
-the neighbour and turns the open hinge back), the arch snaps along it at the fixed support until that
-hinge closes: a rigid hinge cannot migrate smoothly, since with both open the thrust line would have
-to pass four pivots. If equilibrium exists after the snap the march goes on (unless the snap moves a
-block further than `max_snap_mm`, then the collapse); any other chain, or no equilibrium after the
-snap, is collapse (a failure of the friction alone: sliding). With a joint stiffness `kn` the joints
-beside the hinges must also keep the thrust their fold margin from the edge (`solve.compliant`).
+support, and mechanisms tied with it to first order are told apart by the weights' energy a small
+step on (`reseat.follow_tie`); the support moves in steps along it, each configuration reached
+exactly by closing the linkage (no drift), and the static LP checks that an admissible equilibrium
+remains with forces only at touching corners. A corner that closes on the way (a hinge turning
+back) ends the step there and the mechanism is solved again. When equilibrium is lost (a limit
+point: the thrust line touches a fourth corner, located by bisection), the four-hinge chains that
+lower the weights at the fixed support are followed until one re-seats a hinge, i.e. closes one of
+its open hinges, the weights never rising on the way (`reseat`): the landing with an admissible
+equilibrium and the lowest weights is kept (ties broken by a stated tolerance toward the left), and
+the march goes on from it; a landing without one re-seats again. A chain that closes no hinge
+before a block has moved `runaway` (a multiple of the ring's thickness) is the collapse, as is no
+chain at all (a failure of the friction alone: sliding). `first_limit` is the first limit point,
+`snaps` the re-seatings survived. With a joint stiffness `kn` the joints beside the hinges must also
+keep the thrust their fold margin from the edge (`solve.compliant`): a folded joint's chain is
+followed as before (it may climb first and take a hinge up to MIGRATION_REACH joints).
 """
 
 from __future__ import annotations
 
+import math
 from typing import TypeGuard
 
 import numpy as np
@@ -25,40 +30,40 @@ import numpy as np
 from yadearch.model import units
 from yadearch.solve.compliant import MIGRATION_REACH, Margin, folds, joint_margins, opening_chain, potential
 from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
-from yadearch.solve.limit_result import HingeRecord
-from yadearch.solve.rigid import (
-    LimitError,
-    Pivot,
-    Placement,
-    RigidArch,
-    at_rest,
-    close_linkage,
-    contacts,
-    turn_four_bar,
-)
+from yadearch.solve.limit_result import HingeRecord, SnapRecord
+from yadearch.solve.reseat import closing_path, descending_chains, follow_tie, land, migrates
+from yadearch.solve.rigid import LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, contacts
 
-COLLAPSE_PROBE_MM = 0.05  # past a limit, where the four-hinge chain is read (clear of LP tolerances)
+COLLAPSE_PROBE_MM = 0.05  # past a limit, where the four-hinge chains are read (clear of LP tolerances)
 CLOSURE_BISECTIONS = 60  # halvings that put a closing corner on its contact to round-off
-SNAP_FIRST_RAD, SNAP_MAX_RAD = 1e-7, 0.5  # search range of the rotation that closes a snapping hinge
-SNAP_SAMPLES = 9  # points along a snap where the weights must keep descending
-MAX_SNAPS = 5  # successive snaps at one support displacement before giving up
 
 
 class March:
     """The incremental analysis of one arch; counts its LPs."""
 
     def __init__(
-        self, arch: RigidArch, step: float, tolerance: float, max_snap_mm: float, kn: float | None = None
+        self,
+        arch: RigidArch,
+        step: float,
+        tolerance: float,
+        runaway: float,
+        kn: float | None = None,
+        max_snap_mm: float = math.inf,
     ) -> None:
         self.arch, self.step, self.tolerance, self.n_lp = arch, step, tolerance, 0
+        self.runaway = runaway  # a re-seating chain moving a block further (m) runs away: the collapse
         self.kn = kn  # joint stiffness (N/m^3) whose fold margins the joints keep (None: rigid blocks)
         self.folding = False  # the chain followed now opens a joint that folded (it may climb first)
         self.armed: dict[Pivot, bool] = {}  # joints that can fold (`compliant.folds`)
         self.largest_margin = 0.0  # the largest fold margin met (m)
-        self.max_snap_mm = max_snap_mm  # a larger snap counts as collapse (inf: any snap is survived)
+        self.max_snap_mm = max_snap_mm  # a larger snap counts as collapse, as a DEM run's runaway (inf: none)
         self.snap_collapse_mm: float | None = None  # the snap that ended the march, if one did
+        self.first_limit: float | None = None  # the first limit point met (m of support path)
+        self.reseated: list[SnapRecord] = []  # the re-seatings survived
         self.history: list[HingeRecord] = []
         self.pivots: tuple[Pivot, ...] = ()  # the hinges of the mechanism followed now
+        # re-seatings one limit may chain (each lowers the weights, so they cannot cycle)
+        self.max_stages = 2 * arch.n_joints
 
     def statics(self, placement: Placement, friction: bool = True, refine: bool = False) -> Statics:
         self.n_lp += 1
@@ -94,7 +99,7 @@ class March:
         """Whether a folded joint's opening `chain` takes a hinge by a snap (it ends lower than it
         starts) or collapses the arch (it closes no hinge); otherwise it would climb to close one, and
         the two joints share that hinge until, further along the support's path, the chain descends."""
-        path = self.closing_path(placement, chain)
+        path = closing_path(self.arch, placement, chain, placement, self.runaway)
         return path is None or not _climbs([potential(self.arch, p) for p in path], past_fold=True)
 
     def valid(self, placement: Placement | None, base: Placement) -> bool:
@@ -146,43 +151,84 @@ class March:
                     f"at {units.to_mm(state.delta + offset):.3f} mm the last admissible "
                     "placement found by bisection can no longer be reached"
                 )
+            if self.first_limit is None:
+                self.first_limit = last.delta
             past = self.moved(state, mechanism, offset + self.tolerance)
             read_at = self.moved(last, mechanism, units.mm(COLLAPSE_PROBE_MM)) or past
-            chain = self.failure_chain(read_at, past)
-            if past is None or not _migrates(chain, mechanism.pivots, self.reach):
-                return last, read_at, mechanism, chain
-            snapped, jump, chain = self.snap(past, chain, mechanism.pivots)
+            if past is None:
+                return last, read_at, mechanism, self.kinematics(read_at, 0.0) if read_at is not None else None
+            chain = self.fold_chain(past)
+            if chain is not None:
+                snapped, jump, chain = self.snap(past, chain, mechanism.pivots)
+            else:
+                snapped, jump, chain = self.reseat(past, read_at or past)
             if snapped is not None and jump > self.max_snap_mm:
                 self.snap_collapse_mm = jump
             if snapped is None or self.snap_collapse_mm is not None:
+                if chain is None and read_at is not None:
+                    chain = self.kinematics(read_at, support_speed=0.0)
                 return last, read_at, mechanism, chain
+            before = " ".join(p.label for p in mechanism.pivots)
             state, mechanism = snapped, self.switch(snapped, mechanism, jump)
+            after = " ".join(p.label for p in mechanism.pivots)
+            self.reseated.append(SnapRecord(units.to_mm(last.delta), jump, before, after))
         return state, None, mechanism, None
 
-    def failure_chain(self, read_at: Placement | None, past: Placement | None) -> Mechanism | None:
-        """The four-hinge chain at a fixed support just past a limit (`read_at`): the rigid
-        kinematics' collapse or hinge-migrating chain (`past`: the placement the snap starts from)."""
+    def fold_chain(self, past: Placement) -> Mechanism | None:
+        """With `kn`, the chain that opens a joint folded at `past` and takes a hinge by a snap
+        (`compliant`; sets `folding`); None if none (the rigid re-seating then decides)."""
         self.folding = False
-        if self.kn is not None and past is not None:
-            statics = self.statics(past)
-            chains = (self.opening(past, f) for f in (self.folds(past, statics) if statics.feasible else []))
-            chain = next((c for c in chains if self.snaps(past, c)), None)
-            if chain is not None:  # the rigid arch stands, a folded compliant joint does not
-                self.folding = True
-                return chain
-        return self.kinematics(read_at, support_speed=0.0) if read_at is not None else None
+        if self.kn is None:
+            return None
+        statics = self.statics(past)
+        chains = (self.opening(past, f) for f in (self.folds(past, statics) if statics.feasible else []))
+        chain = next((c for c in chains if self.snaps(past, c)), None)
+        self.folding = chain is not None
+        return chain
+
+    def reseat(self, start: Placement, read_at: Placement) -> tuple[Placement | None, float, Mechanism | None]:
+        """Re-seat the hinges at the fixed support from `start`, just past a limit (`reseat`): follow
+        the steepest chain that lowers the weights (ties toward the left) until it closes a hinge, and
+        again from there while no admissible equilibrium holds: that placement, the largest block
+        movement from `start` (mm) and the last chain tried (at a collapse: the one that runs away);
+        None for the placement if a chain runs away or none descends (collapse). The first chains are
+        read at `read_at`, further past the limit, where the energy rates stand clear of round-off."""
+        state, probe, pivots = start, read_at, self.pivots
+        last: Mechanism | None = None  # the steepest chain last tried: at a collapse, the one it runs away on
+        for _ in range(self.max_stages):
+            chains = descending_chains(self.arch, probe, pivots)
+            last = chains[0] if chains else last
+            landings = []
+            for chain in [c for c in chains if migrates(c, pivots)] or chains[:1]:
+                landing = land(self.arch, state, chain, start, self.runaway)
+                if landing is None:
+                    continue
+                self.pivots = landing.pivots
+                if self.admissible(landing.placement):
+                    return landing.placement, units.to_mm(landing.move), last
+                landings.append(landing)
+            if not landings:
+                self.pivots = pivots
+                return None, 0.0, last
+            state = probe = landings[0].placement
+            pivots = self.pivots = landings[0].pivots
+        raise LimitError(
+            f"at {units.to_mm(start.delta):.3f} mm the hinges re-seat more than {self.max_stages} "
+            "times at the fixed support without finding an equilibrium"
+        )
 
     def snap(
         self, start: Placement, chain: Mechanism | None, pivots: tuple[Pivot, ...]
     ) -> tuple[Placement | None, float, Mechanism | None]:
-        """Follow hinge-migrating chains at a fixed support from `start` until the turned-back hinge
-        closes and equilibrium exists again: that placement, the largest block movement (mm) and the
-        last chain; None for the placement if the arch finds no equilibrium so (collapse)."""
+        """Follow a folded joint's hinge-migrating chains (compliant march) at a fixed support from
+        `start` until the turned-back hinge closes and equilibrium exists again: that placement, the
+        largest block movement (mm) and the last chain; None for the placement if the arch finds no
+        equilibrium so (collapse)."""
         state = start
-        for _ in range(MAX_SNAPS):
+        for _ in range(self.max_stages):
             if not _migrates(chain, pivots, self.reach):
                 return None, 0.0, chain
-            path = self.closing_path(state, chain)
+            path = closing_path(self.arch, state, chain, start, self.runaway)
             if path is None:
                 return None, 0.0, chain
             height = [potential(self.arch, p) for p in path]
@@ -201,33 +247,19 @@ class March:
             if self.admissible(state):
                 moved = np.linalg.norm(state.centroids(self.arch) - start.centroids(self.arch), axis=1)
                 return state, units.to_mm(float(moved.max())), chain
-            chain = self.failure_chain(state, state)
+            chain = self.fold_chain(state)
+            if chain is None:
+                return self.reseat(state, state)
         return None, 0.0, chain
-
-    def closing_path(self, state: Placement, chain: Mechanism) -> list[Placement] | None:
-        """SNAP_SAMPLES placements along `chain` at a fixed support from `state` until the hinge it
-        turns back closes (None: it never does, the chain runs away)."""
-        sign = np.sign(chain.rates[0])  # the first segment turns with its hinge's relative rate
-
-        def turned(angle: float) -> Placement | None:
-            placement = turn_four_bar(self.arch, state, chain.pivots, sign * angle)
-            return placement if self.valid(placement, state) else None
-
-        angle = SNAP_FIRST_RAD
-        while turned(angle) is not None and angle < SNAP_MAX_RAD:
-            angle *= 2.0
-        if angle >= SNAP_MAX_RAD:
-            return None
-        angle = _bisect(lambda a: turned(a) is not None, angle, angle / 2**CLOSURE_BISECTIONS)
-        return _reached([turned(a) for a in np.linspace(0.0, angle, SNAP_SAMPLES)], state)
 
     @property
     def reach(self) -> int:
-        """How many interfaces the chain followed now may move a hinge (`_migrates`)."""
+        """How many interfaces a folded joint's chain may move a hinge (`_migrates`)."""
         return MIGRATION_REACH if self.folding else 1
 
     def switch(self, state: Placement, mechanism: Mechanism | None, jump_mm: float) -> Mechanism:
-        """The three-hinge mechanism that follows the support from `state`, recorded in the history
+        """The three-hinge mechanism that follows the support from `state` (the LP's, or one tied with
+        it to first order that lowers the weights more: `reseat.follow_tie`), recorded in the history
         (hinges that stop, hinges that start)."""
         new = self.kinematics(state)
         if new is None or len(new.pivots) != 3:
@@ -236,6 +268,7 @@ class March:
                 f"at {units.to_mm(state.delta):.3f} mm the support is followed by no "
                 f"three-hinge mechanism (hinges: {found})"
             )
+        new = follow_tie(self.arch, state, new)
         old = set() if mechanism is None else set(mechanism.pivots)
         self.pivots = new.pivots
         d_mm = units.to_mm(state.delta)
@@ -268,17 +301,6 @@ def _migrates(chain: Mechanism | None, pivots: tuple[Pivot, ...], reach: int = 1
     new = [p for p in chain.pivots if p not in pivots]
     back = chain.closing[0]
     return len(new) == 1 and back in {p.joint for p in pivots} and 1 <= abs(new[0].joint - back) <= reach
-
-
-def _reached(path: list[Placement | None], start: Placement) -> list[Placement]:
-    """The placements along a snap, each of which must be reachable: the search only checked its end."""
-    reached = [p for p in path if p is not None]
-    if len(reached) != len(path):
-        raise LimitError(
-            f"at {units.to_mm(start.delta):.3f} mm the snapping chain cannot pass some of its "
-            "intermediate positions, which this analysis does not follow"
-        )
-    return reached
 
 
 def _bisect(ok, high: float, width: float) -> float:
