@@ -173,10 +173,11 @@ def closing_path(
         if mid in (low, high):
             break
         low, high = (mid, high) if turned(mid) is not None else (low, mid)
-    path = [turned(a) for a in np.linspace(0.0, low, SNAP_SAMPLES)]
-    if any(p is None for p in path) or far(path[-1]):
+    reached_path = [turned(a) for a in np.linspace(0.0, low, SNAP_SAMPLES)]
+    path = [p for p in reached_path if p is not None]
+    if len(path) < len(reached_path) or far(path[-1]):
         return None
-    return path  # type: ignore[return-value]
+    return path
 
 
 def land(arch: RigidArch, state: Placement, chain: Mechanism, origin: Placement, runaway: float) -> Landing | None:
