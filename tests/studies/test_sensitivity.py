@@ -110,7 +110,7 @@ def test_bad_designs_are_refused_in_one_line_naming_the_value():
         check_factors(ya.preset("set2"), (parse_factor("friction_deg=3:2"),))
     with pytest.raises(CaseError, match="friction_deg"):
         check_factors(ya.preset("set2"), (parse_factor("friction_deg=30:95"),))
-    with pytest.raises(CampaignError, match="check runs must be between 0 and 50, got -1"):
+    with pytest.raises(CampaignError, match=r"check_runs must be an integer in \[0, 50\], got -1"):
         ya.sensitivity("set2", "unused", check_runs=-1)
     assert parse_factor("kn_N_per_mm3=0.25:100:log") == Factor(
         "interface.kn_N_per_mm3", "kn_N_per_mm3", 0.25, 100.0, log=True
