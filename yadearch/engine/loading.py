@@ -13,7 +13,7 @@ from yadearch.errors import CANNOT_STAND, RunFailedError
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.model.movement import Movement
-from yadearch.solve.path import PathResult, PathStep, follow_path, path_settings
+from yadearch.solve.path import PathResult, PathStep, first_snap, follow_path, path_settings
 from yadearch.solve.stages import Stage, Verdict
 
 SETTLE_TOLERANCE_FACTOR = 0.01  # a settled state's unbalanced force, relative to equilibrium_tolerance
@@ -96,10 +96,8 @@ class EquilibriumPath:
             "delta_mm": [],
             "increment_mm": [],
             "move_mm": [],
-            "min_stiffness_N_per_m": [],
         }
         self.snaps: list[dict] = []  # relaxations that carried the arch to another branch
-        self.first_loss: tuple[float, float] | None = None  # the increment of the first snap (m)
         self._start = 0.0  # where the last increment started (m)
         self.settings = path_settings(self.num, path_end_mm(arch.case, arch.movement))
 
@@ -130,11 +128,10 @@ class EquilibriumPath:
     def accept(self) -> None:
         """The state the last increment relaxed to is the new equilibrium state: keep and record it,
         with how far its relaxation moved the blocks (a quasi-static step barely moves them)."""
-        self.relaxations["delta_mm"].append(units.to_mm(self.arch.delta()))
-        self.relaxations["increment_mm"].append(units.to_mm(self.arch.delta() - self._start))
-        self.relaxations["move_mm"].append(units.to_mm(self.arch.hold_move))
-        self.relaxations["min_stiffness_N_per_m"].append(self.arch.smallest_stiffness())
         increment = self.arch.delta() - self._start
+        self.relaxations["delta_mm"].append(units.to_mm(self.arch.delta()))
+        self.relaxations["increment_mm"].append(units.to_mm(increment))
+        self.relaxations["move_mm"].append(units.to_mm(self.arch.hold_move))
         floor = SNAP_THICKNESS_FRACTION * units.mm(self.arch.case.geometry.thickness_mm)
         if self.arch.hold_move > max(floor, increment):
             self.snaps.append(
@@ -143,8 +140,6 @@ class EquilibriumPath:
                     "move_mm": units.to_mm(self.arch.hold_move),
                 }
             )
-            if self.first_loss is None:
-                self.first_loss = (self._start, self.arch.delta())
         self._accepted.append(self.arch.snapshot())
         self._at_accepted = True
         self.arch.stage = Stage.EQUILIBRIUM
@@ -181,17 +176,15 @@ class EquilibriumPath:
         self._accepted.pop()
         self._at_accepted = False
         self.arch.recorder.discard_since(self._records.pop())
-        for key in ("delta_mm", "increment_mm", "move_mm", "min_stiffness_N_per_m"):
+        discarded = self.relaxations["delta_mm"][-1]
+        for key in ("delta_mm", "increment_mm", "move_mm"):
             self.relaxations[key].pop()
-        start = units.to_mm(self._accepted_delta())
-        self.snaps = [s for s in self.snaps if s["fold_mm"][1] <= start]
-        self.first_loss = (
-            (units.mm(self.snaps[0]["fold_mm"][0]), units.mm(self.snaps[0]["fold_mm"][1])) if self.snaps else None
-        )
+        self.snaps = [s for s in self.snaps if s["fold_mm"][1] < discarded]  # those on its way are off the path
 
-    def _accepted_delta(self) -> float:
-        """The support displacement of the accepted state (m)."""
-        return self.relaxations["delta_mm"][-1] * 1e-3 if self.relaxations["delta_mm"] else 0.0
+    @property
+    def first_loss(self) -> tuple[float, float] | None:
+        """The increment of the first snap on the accepted path (m), None without one."""
+        return first_snap(self.snaps)
 
     def follow(self, start: float = 0.0) -> PathResult:
         """Load by increments relaxed to equilibrium until du is bracketed (`solve.path`), from the
@@ -216,11 +209,13 @@ class EquilibriumPath:
 def stable_tangent(arch: LiveArch, verdict: Verdict) -> Verdict:
     """A hold's verdict kept only where the static model agrees: an equilibrium whose tangent at the
     blocks' poses is indefinite is held on (STABILITY_HOLDS times), then unresolved (Verdict.TIMEOUT)."""
-    for _ in range(STABILITY_HOLDS):
-        if verdict != Verdict.STABLE or arch.smallest_stiffness() > 0.0:
-            return verdict
+    holds = 0
+    while verdict == Verdict.STABLE and arch.smallest_stiffness() <= 0.0:
+        if holds == STABILITY_HOLDS:
+            return Verdict.TIMEOUT
         verdict = arch.hold(from_rest=False)
-    return verdict if verdict != Verdict.STABLE or arch.smallest_stiffness() > 0.0 else Verdict.TIMEOUT
+        holds += 1
+    return verdict
 
 
 def settle_selfweight(arch: LiveArch) -> None:

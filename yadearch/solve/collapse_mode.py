@@ -11,7 +11,7 @@ import numpy as np
 
 from yadearch.model.hinges import Hinge, hinges_at
 from yadearch.model.joint_tangent import BLOCK_DOFS
-from yadearch.model.joints import joint_states
+from yadearch.model.joints import joint_states, rotate
 from yadearch.solve import banded
 from yadearch.solve.statics import StaticArch
 
@@ -92,8 +92,6 @@ def _slide(arch: StaticArch, rest: np.ndarray, pos: np.ndarray, rot: np.ndarray)
     along /= np.linalg.norm(along, axis=1)[:, None]
 
     def placed(blocks: np.ndarray) -> np.ndarray:
-        c, s = np.cos(rot[blocks]), np.sin(rot[blocks])
-        d = corner - rest[blocks]
-        return pos[blocks] + np.column_stack([c * d[:, 0] - s * d[:, 1], s * d[:, 0] + c * d[:, 1]])
+        return pos[blocks] + rotate(corner - rest[blocks], rot[blocks])
 
     return np.einsum("ij,ij->i", placed(right) - placed(left), along)

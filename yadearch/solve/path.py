@@ -116,6 +116,15 @@ class PathResult:
         return next(failed, Verdict.RUNAWAY)
 
 
+def first_snap(snaps: list[dict]) -> tuple[float, float] | None:
+    """The bracket (m) of the first snap on a path, from the engines' `snaps` records (each with its
+    fold's bracket `fold_mm`, in path order): where the path first lost stability; None without one."""
+    if not snaps:
+        return None
+    low, high = snaps[0]["fold_mm"]
+    return units.mm(low), units.mm(high)
+
+
 def path_settings(numerics: NumericsConfig, max_displacement_mm: float) -> PathSettings:
     """The increments of a case's numerics (mm) as PathSettings in metres, the path ending at
     `max_displacement_mm`: one reading for the DEM and the static engine."""

@@ -25,7 +25,7 @@ from yadearch.solve import banded
 from yadearch.solve.banded import smallest_eigenvalue
 from yadearch.solve.collapse_mode import FoldMode, fold_mode
 from yadearch.solve.newton import Equilibrium, Solver, SolverSettings
-from yadearch.solve.path import PathResult, PathSettings, PathStep, follow_path
+from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, follow_path
 from yadearch.solve.stages import Stage, Verdict
 from yadearch.solve.statics import StaticArch
 
@@ -72,7 +72,6 @@ class StaticLoading:
         self.accepted: list[StaticState] = []
         self.failures: dict[float, Equilibrium] = {}
         self.snaps: list[dict] = []  # snaps survived on the accepted path: where, how far the blocks moved
-        self.first_loss: tuple[float, float] | None = None  # the first snap's fold bracket on the path (m)
         self.descents = 0  # descents made (Newton's continuation failed)
         self.retries = 0  # descents that found neither equilibrium nor runaway and went on
         self.snap_floor = SNAP_THICKNESS_FRACTION * self.arch.length
@@ -211,31 +210,27 @@ class StaticLoading:
         self._trial.min_stiffness = smallest_eigenvalue(self._stiffness_of(self._trial))
         self.accepted.append(self._trial)
         self._trial = None
-        for snap in self._trial_snaps:
-            self.snaps.append(snap)
-            if self.first_loss is None:
-                self.first_loss = (units.mm(snap["fold_mm"][0]), units.mm(snap["fold_mm"][1]))
+        self.snaps += self._trial_snaps
         self._trial_snaps = []
+
+    @property
+    def first_loss(self) -> tuple[float, float] | None:
+        """The first snap's fold bracket on the accepted path (m), None without one."""
+        return first_snap(self.snaps)
 
     def settle(self) -> bool:
         """A static equilibrium is at rest already: nothing creeps."""
         return True
 
     def discard(self) -> None:
-        self.accepted.pop()
-        if self.first_loss is not None and self.first_loss[1] > self.accepted[-1].lam:
-            self.first_loss = None  # the snap was on the discarded state's way: no longer on the path
-            self.snaps = [s for s in self.snaps if units.mm(s["fold_mm"][1]) <= self.accepted[-1].lam]
-            if self.snaps:
-                fold = self.snaps[0]["fold_mm"]
-                self.first_loss = (units.mm(fold[0]), units.mm(fold[1]))
+        self.accepted.pop()  # with the snaps made on its way: they are no longer on the path
+        self.snaps = [s for s in self.snaps if units.mm(s["fold_mm"][1]) <= self.accepted[-1].lam]
 
     def fold_mode(self, upper: float) -> FoldMode:
         """The collapse mode from the last accepted state towards the runaway at du's upper end
         `upper`: the collapse's hinges and kind (`solve.collapse_mode`)."""
         state = self.accepted[-1]
-        failed = self.failures[min(self.failures, key=lambda d: abs(d - upper))]
-        return fold_mode(self.arch, state.u, self._stiffness_of(state), failed.u)
+        return fold_mode(self.arch, state.u, self._stiffness_of(state), self.failures[self._failure_at(upper)].u)
 
     def predict(self, target: float, history: list[StaticState]) -> np.ndarray:
         """Where the arch should be with the support at `target`: a parabola (or a line) through the
@@ -268,10 +263,14 @@ class StaticLoading:
     def collapse_state(self, upper: float) -> StaticState:
         """The mechanism at collapse: the state of the failure at du's upper bracket end, where a
         block has run away by the runaway bound."""
-        lam = min(self.failures, key=lambda d: abs(d - upper))
+        lam = self._failure_at(upper)
         end = self.failures[lam]
         base = self.accepted[-1]
         return self._state(Stage.COLLAPSE, lam, end, base.slip + end.joints.forces.plastic_slip, end.joints.forces)
+
+    def _failure_at(self, upper: float) -> float:
+        """The support position of the failure nearest du's upper bracket end `upper` (m)."""
+        return min(self.failures, key=lambda d: abs(d - upper))
 
     def _state(self, stage: str, lam: float, found: Equilibrium, slip: np.ndarray, forces: JointForces) -> StaticState:
         return StaticState(stage, lam, found.u, forces, slip, float("nan"), found.iterations, found.residual)
