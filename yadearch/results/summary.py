@@ -22,7 +22,9 @@ DEM, STATIC = "dem", "static"  # the engines that write run folders
 # self-weight load step to the next (1: each step counted the sliding from the blocks at rest).
 # 3: the runaway bound a multiple of the ring's thickness (was 1 mm), continuation checked against the
 # step, folds located, descents retried (a solver failure is `unresolved`, never collapse).
-STATIC_REVISION = 3
+# 4: continuation and snaps judged against the ring's thickness alone (0.01 t), not the step or the
+# bracket: a snap hidden in a long step or a wide bracket no longer moves du_first.
+STATIC_REVISION = 4
 TRANSLATION = "translation"
 # written only when set: engine-specific figures and what older runs lack
 OPTIONAL_KEYS = frozenset(

@@ -33,9 +33,8 @@ GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
 SELFWEIGHT_FALL = 0.05  # a block falling this far (m) under self-weight means the arch cannot stand
 SUBSTEPS = 8  # an increment Newton cannot solve at once is marched in this many steps
 PREDICTOR_POINTS = 3  # accepted states the predictor extrapolates through (a parabola)
-CONTINUATION_RATIO = 1.0  # Newton's state further from the prediction than this x the step is a jump
-SNAP_STEP_RATIO = 10.0  # a descent landing further than this x the fold's bracket from the prediction ...
-SNAP_THICKNESS_FRACTION = 0.01  # ... and than this x the ring's thickness is a snap: a new branch
+SNAP_THICKNESS_FRACTION = 0.01  # a descent landing further than this x the ring's thickness from the
+# prediction at the fold is a snap, a new branch: a length of the arch, not of the bracket or the step
 DESCENT_RETRIES = 2  # a descent that finds neither equilibrium nor runaway goes on this many times more
 
 
@@ -121,12 +120,11 @@ class StaticLoading:
 
     def _continue(self, history: list[StaticState], target: float) -> Equilibrium | None:
         """Newton from the state predicted at `target` through `history`; None unless it ends in a
-        stable equilibrium on the same branch (no block further from the prediction than
-        CONTINUATION_RATIO x the step, or the snap floor)."""
+        stable equilibrium on the same branch: no block further from the prediction than the snap
+        floor, whatever the step (a jump hidden in a long step would hide a snap)."""
         last = history[-1]
         found = self.solver.newton(self.predict(target, history), last.u, last.forces.shear_force)
-        jump = max(CONTINUATION_RATIO * abs(target - last.lam), self.snap_floor)
-        if found is None or not found.stable() or found.moved > jump:
+        if found is None or not found.stable() or found.moved > self.snap_floor:
             return None
         return found
 
@@ -150,7 +148,7 @@ class StaticLoading:
             if landed.verdict != Verdict.STABLE:
                 self.failures[target] = landed
                 return landed.verdict
-            if landed.moved > max(SNAP_STEP_RATIO * (fold[1] - fold[0]), self.snap_floor):
+            if landed.moved > self.snap_floor:
                 self._trial_snaps.append({"fold_mm": [1e3 * fold[0], 1e3 * fold[1]], "move_mm": 1e3 * landed.moved})
             history = [self._advance(history, fold[1], landed)]
             lam, largest = fold[1], max(largest, landed.moved)

@@ -1,0 +1,88 @@
+"""du and du_first are facts of the arch, not of the numerics (docs/numerics.md, "Collapse"): every
+numerical setting of the static engine halved and doubled (the increments, the bracket, the solver's
+tolerance, its largest step and its iteration budgets) moves neither by more than 1 %, on an arch
+whose path snaps before it collapses (the spreading semicircle) and on the paper's set 2."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import pytest
+
+from yadearch.case.config import ArchCase, preset
+from yadearch.case.mechanics import runaway_length
+from yadearch.case.support import path_end_mm
+from yadearch.results.summary import collapse_fields
+from yadearch.solve.newton import SolverSettings
+from yadearch.solve.path import path_settings
+from yadearch.solve.static_path import StaticLoading
+from yadearch.solve.statics import static_arch
+from yadearch.solve.stages import Outcome
+
+SPREADING_SEMICIRCLE = {
+    "embrace_deg": 180.0,
+    "internal_radius_mm": 277.5,
+    "thickness_mm": 45.0,
+    "friction_deg": 60.0,
+    "support_direction_deg": 0.0,
+    "kn_N_per_mm3": 100.0,
+}
+INVARIANCE = 0.01  # the standard: a result that moves more than 1 % is not a result
+PATH_SETTINGS = ("first_increment_mm", "max_increment_mm", "du_tolerance_mm")
+DEFAULT_SOLVER = SolverSettings()
+
+
+def scaled_path(case: ArchCase, factor: float) -> ArchCase:
+    """`case` with every increment setting and the bracket width times `factor`."""
+    return case.with_overrides({k: getattr(case.numerics, k) * factor for k in PATH_SETTINGS})
+
+
+def scaled_solver(factor: float) -> SolverSettings:
+    """The solver's tolerance, largest step and iteration budgets times `factor`."""
+    return replace(
+        DEFAULT_SOLVER,
+        tolerance=DEFAULT_SOLVER.tolerance * factor,
+        max_step=DEFAULT_SOLVER.max_step * factor,
+        newton_iterations=round(DEFAULT_SOLVER.newton_iterations * factor),
+        descent_iterations=round(DEFAULT_SOLVER.descent_iterations * factor),
+    )
+
+
+def outcome(case: ArchCase, solver: SolverSettings = DEFAULT_SOLVER) -> dict:
+    """The static path of `case` with `solver`: its outcome, du and du_first (mm)."""
+    arch = static_arch(case)
+    end_mm = path_end_mm(case, arch.movement)
+    loading = StaticLoading(arch, path_settings(case.numerics, end_mm), runaway_length(case), solver)
+    loading.selfweight()
+    path = loading.follow()
+    return collapse_fields(path, arch.movement, loading.first_loss)
+
+
+CASES = {
+    "spreading semicircle, kn 100": preset("set2").with_overrides(SPREADING_SEMICIRCLE),
+    "set 2": preset("set2"),
+}
+
+
+@pytest.fixture(scope="module", params=list(CASES))
+def reference(request) -> tuple[ArchCase, dict]:
+    case = CASES[request.param]
+    return case, outcome(case)
+
+
+@pytest.mark.parametrize("factor", [0.5, 2.0])
+def test_increments_and_bracket_halved_and_doubled(reference, factor: float) -> None:
+    case, default = reference
+    varied = outcome(scaled_path(case, factor))
+    assert varied["outcome"] == default["outcome"] == Outcome.COLLAPSE
+    assert varied["du_mm"] == pytest.approx(default["du_mm"], rel=INVARIANCE)
+    assert varied["du_first_mm"] == pytest.approx(default["du_first_mm"], rel=INVARIANCE)
+
+
+@pytest.mark.parametrize("factor", [0.5, 2.0])
+def test_solver_tolerance_step_and_budgets_halved_and_doubled(reference, factor: float) -> None:
+    case, default = reference
+    varied = outcome(case, scaled_solver(factor))
+    assert varied["outcome"] == default["outcome"] == Outcome.COLLAPSE
+    assert varied["du_mm"] == pytest.approx(default["du_mm"], rel=INVARIANCE)
+    assert varied["du_first_mm"] == pytest.approx(default["du_first_mm"], rel=INVARIANCE)
