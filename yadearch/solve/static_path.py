@@ -55,6 +55,7 @@ class StaticState:
     iterations: int
     residual: float
     move: float = 0.0  # how far the blocks moved from the predicted state to reach it (m)
+    stiffness: np.ndarray | None = None  # the free blocks' tangent as the solver found it (band storage)
 
 
 @dataclass
@@ -205,7 +206,7 @@ class StaticLoading:
 
     def accept(self) -> None:
         assert self._trial is not None
-        self._trial.min_stiffness = smallest_eigenvalue(self._stiffness_of(self._trial))
+        self._trial.min_stiffness = smallest_eigenvalue(self._trial.stiffness)
         self.accepted.append(self._trial)
         self._trial = None
         self.snaps += self._trial_snaps
@@ -228,7 +229,7 @@ class StaticLoading:
         """The collapse mode from the last accepted state towards the runaway at du's upper end
         `upper`: the collapse's hinges and kind (`solve.collapse_mode`)."""
         state = self.accepted[-1]
-        return fold_mode(self.arch, state.u, self._stiffness_of(state), self.failures[self._failure_at(upper)].u)
+        return fold_mode(self.arch, state.u, state.stiffness, self.failures[self._failure_at(upper)].u)
 
     def predict(self, target: float, history: list[StaticState]) -> np.ndarray:
         """Where the arch should be with the support at `target`: a parabola (or a line) through the
@@ -271,9 +272,6 @@ class StaticLoading:
         return min(self.failures, key=lambda d: abs(d - upper))
 
     def _state(self, stage: str, lam: float, found: Equilibrium, slip: np.ndarray, forces: JointForces) -> StaticState:
-        return StaticState(stage, lam, found.u, forces, slip, float("nan"), found.iterations, found.residual)
-
-    def _stiffness_of(self, state: StaticState) -> np.ndarray:
-        base = self.accepted[-1]
-        joints, _ = self.solver.state(state.u, base.u, base.forces.shear_force)
-        return self.solver.free_stiffness(joints)
+        return StaticState(
+            stage, lam, found.u, forces, slip, float("nan"), found.iterations, found.residual, stiffness=found.stiffness
+        )
