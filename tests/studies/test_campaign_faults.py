@@ -137,3 +137,17 @@ def test_an_interrupted_local_pool_stops_its_running_simulations_at_once():
             raise KeyboardInterrupt
     assert time.monotonic() - started < 10.0
     assert [child.result()[0] for child in children] == [-signal.SIGTERM] * 2
+
+
+def test_the_results_table_exists_before_any_run_starts(tmp_path):
+    """A campaign killed (SIGKILL) in its first seconds still leaves results.csv: every run pending."""
+    out = tmp_path / "campaign"
+    seen: list[set] = []
+
+    def first_look(case, folder, timeout_s):
+        seen.append(set(pd.read_csv(out / RESULTS_FILE)["status"]))
+        return {"status": "failed", "reason": "stand-in"}
+
+    with local_pool(1) as pool:
+        run_campaign(preset("set1"), grid({"kn_N_per_mm3": [0.25, 0.5]}), out, pool, progress=False, task=first_look)
+    assert seen and seen[0] == {"pending"}

@@ -172,6 +172,8 @@ def _run_planned(
         rows[spec.name] = run_row(spec, out)  # pending until it ends
     if task is execute and any(s.case.numerics.engine != STATIC_ENGINE for s in todo):
         check_yade_installed()  # a campaign of static runs needs no YADE
+    # the table exists before any run starts: a campaign killed (SIGKILL) in its first seconds leaves it
+    write_csv_atomically(out / RESULTS_FILE, tidy(pd.DataFrame(rows.values())))
     bar = tqdm(
         total=len(specs),
         initial=len(specs) - len(todo),

@@ -31,6 +31,7 @@ DIRECTION_PARAMETER = "support_direction_deg"
 MAP_COLUMNS = (
     "set",
     "direction_deg",
+    "du_first_mm",
     "du_mm",
     "du_x_mm",
     "du_y_mm",
@@ -74,11 +75,13 @@ def map_table(name: str, results: pd.DataFrame, rigid: dict[float, RigidLimit]) 
     for run in results.sort_values(DIRECTION_PARAMETER, ascending=False).itertuples(index=False):
         direction = float(getattr(run, DIRECTION_PARAMETER))
         du = float(run.du_mm) if run.status == "done" and pd.notna(run.du_mm) else math.nan
+        first = getattr(run, "du_first_mm", math.nan)
         du_x, du_y = du_components(du, direction)
         rows.append(
             {
                 "set": name,
                 "direction_deg": direction,
+                "du_first_mm": float(first) if run.status == "done" and pd.notna(first) else math.nan,
                 "du_mm": du,
                 "du_x_mm": du_x,
                 "du_y_mm": du_y,
@@ -104,7 +107,7 @@ def with_rigid(table: pd.DataFrame, rigid: dict[float, RigidLimit]) -> pd.DataFr
         rigid_other_hinges=[r.other_hinges for r in limits],
     )
     table["du_over_rigid"] = table["du_mm"] / table["du_rigid_mm"]
-    return table[list(MAP_COLUMNS)]
+    return table.reindex(columns=list(MAP_COLUMNS))  # a table from before du_first: its column empty
 
 
 def reaction_curve(series: pd.DataFrame, direction_deg: float) -> pd.DataFrame:
