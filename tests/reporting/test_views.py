@@ -173,3 +173,19 @@ def test_the_commands_write_the_movie_and_the_series(run, tmp_path, capsys):
     assert main(["export", str(run.path), "--vtk", "--out", str(tmp_path / "v")]) == 0
     out = capsys.readouterr().out
     assert (tmp_path / "m.gif").is_file() and "movie -> " in out and (tmp_path / "v" / "coarse.pvd").is_file()
+
+
+@pytest.mark.parametrize(
+    "out, fmt, message",
+    [
+        ("movie.txt", "mp4", r"out must end in \.mp4 for a mp4 movie"),
+        ("movie.gif", "avi", "fmt must be one of mp4, gif, got 'avi'"),
+        ("/proc/movie.gif", "gif", "out: cannot write in the folder '/proc'"),
+    ],
+)
+def test_a_movie_that_cannot_be_written_is_refused_before_drawing(run, tmp_path, out, fmt, message):
+    """A wrong suffix or format, or a folder no file can be written in: one line, nothing drawn."""
+    target = out if out.startswith("/") else tmp_path / out
+    with pytest.raises(YadearchError, match=message) as error:
+        run.animate(target, fmt=fmt)
+    assert "\n" not in str(error.value)

@@ -10,11 +10,13 @@ from pathlib import Path
 
 import pandas as pd
 
-from yadearch.case.names import FILE, output_path
-from yadearch.errors import ArgumentTypeError
+from yadearch.case.names import FILE, output_path, writable_folder
+from yadearch.errors import ArgumentTypeError, CaseError
 from yadearch.results.rundir import FIGURES_DIR, VTK_DIR, RunFolder, read_run
 from yadearch.results.states import RunStates
 from yadearch.results.summary import DEM, HingeRef, RunSummary
+
+MOVIE_FORMATS = ("mp4", "gif")
 
 
 @dataclass(frozen=True)
@@ -111,7 +113,12 @@ class RunResult:
         from yadearch.analysis import analyse_run
         from yadearch.plotting.animation import animate_run
 
+        if fmt not in MOVIE_FORMATS:
+            raise CaseError(f"fmt must be one of {', '.join(MOVIE_FORMATS)}, got {fmt!r}")
         path = output_path(out, "out", FILE) if out is not None else self.path / FIGURES_DIR / f"{self.path.name}.{fmt}"
+        if path.suffix.lower() != f".{fmt}":
+            raise CaseError(f"out must end in .{fmt} for a {fmt} movie, got {str(path)!r}")
+        writable_folder(path.parent, "out")  # refused before minutes of drawing, not after
         return animate_run(self.folder, analyse_run(self.folder), path, fmt)
 
     def export_vtk(self, out: str | Path | None = None) -> Path:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import os
 import re
+import tempfile
 from pathlib import Path
 
 from yadearch.errors import ArgumentTypeError, CaseError
@@ -89,3 +90,18 @@ def _name_limit(path: Path) -> int:
     except (OSError, ValueError):
         limit = NAME_MAX_BYTES
     return limit - DERIVED_NAME_EXTRA
+
+
+def writable_folder(folder: Path, argument: str = "out") -> Path:
+    """`folder`, created if missing, once a file can be written in it; else CaseError in one line
+    naming `argument` (a read-only or pseudo file system refused before any work, not after it)."""
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise CaseError(f"{argument}: cannot create the folder {str(folder)!r} ({exc.strerror})") from None
+    try:  # a probe, not os.access: root passes that on read-only and pseudo file systems
+        with tempfile.TemporaryFile(dir=folder):
+            pass
+    except OSError as exc:
+        raise CaseError(f"{argument}: cannot write in the folder {str(folder)!r} ({exc.strerror})") from None
+    return folder
