@@ -1,0 +1,55 @@
+"""The atlas (reports/atlas/): five shapes x six support movements x three ring thicknesses x four
+joint stiffnesses in the static engine, the rigid march of every arch and movement, and 40 of them in
+the DEM; du_first and du side by side with the targets of docs/atlas.md checked.
+
+    .venv/bin/python scripts/atlas.py [--out reports/atlas] [--runs runs/atlas] [--jobs 2] [--no-dem]
+
+Each part resumes where it stopped (the campaigns' folders under RUNS, the rigid table in OUT), so a
+rerun only redoes what changed; --no-dem reuses the DEM runs already in RUNS/dem.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from yadearch.case.config import preset
+from yadearch.studies.atlas.grid import dem_rows, geometries, static_rows
+from yadearch.studies.atlas.report import write_atlas
+from yadearch.studies.atlas.rigid import rigid_table
+from yadearch.studies.campaign import run_campaign
+from yadearch.studies.executors import open_pool
+
+RUN_TIMEOUT_S = {"static": 600.0, "dem": 3600.0}
+
+
+def run_engine(engine: str, rows: list[dict], runs: Path, jobs: int):
+    """One engine's campaign of the atlas (summary-only run folders), resumed where it stopped."""
+    base = preset("set2").with_overrides({"numerics.engine": engine, "numerics.run_files": "summary"})
+    with open_pool(jobs) as pool:
+        return run_campaign(base, rows, runs / engine, pool, timeout_s=RUN_TIMEOUT_S[engine])
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--out", type=Path, default=Path("reports/atlas"))
+    parser.add_argument("--runs", type=Path, default=Path("runs/atlas"))
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--engine", choices=("all", "static", "rigid", "dem"), default="all",
+                        help="compute one part only (the report is written from what exists)")
+    parser.add_argument("--no-dem", action="store_true", help="do not run the DEM; use the runs in RUNS/dem")
+    args = parser.parse_args()
+    args.out.mkdir(parents=True, exist_ok=True)
+    parts = ("static", "rigid", "dem") if args.engine == "all" else (args.engine,)
+    static = run_engine("static", static_rows(), args.runs, args.jobs) if "static" in parts else None
+    rigid = rigid_table(preset("set2"), geometries(), args.out, args.jobs) if "rigid" in parts else None
+    dem = run_engine("dem", dem_rows(), args.runs, args.jobs) if "dem" in parts and not args.no_dem else None
+    if args.engine == "all":
+        write_atlas(args.out, args.runs, static, rigid, dem)
+        print(f"atlas -> {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

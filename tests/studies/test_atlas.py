@@ -1,0 +1,85 @@
+"""The atlas's grid, table and report without running it: every shape and movement builds a case,
+the three solvers' answers line up by run, and the targets are read on the right rows."""
+
+from __future__ import annotations
+
+import math
+
+import pandas as pd
+import pytest
+
+from yadearch.case.config import preset
+from yadearch.solve.limit import stands
+from yadearch.studies.atlas.grid import (
+    KNS_N_PER_MM3,
+    MOVEMENTS,
+    SHAPES,
+    THICKNESS_OVER_RADIUS,
+    dem_rows,
+    geometries,
+    static_rows,
+)
+from yadearch.studies.atlas.report import atlas_markdown, write_atlas
+from yadearch.studies.atlas.rigid import KEY, rigid_row
+from yadearch.studies.atlas.table import atlas_table, gap_pct, nearest_branch_mm, rising
+from yadearch.studies.grid import RUN_COLUMN
+
+
+def test_the_grid_is_five_shapes_six_movements_three_thicknesses_four_stiffnesses():
+    assert len(static_rows()) == len(SHAPES) * len(MOVEMENTS) * len(THICKNESS_OVER_RADIUS) * len(KNS_N_PER_MM3)
+    assert len({r[RUN_COLUMN] for r in static_rows()}) == len(static_rows())  # names are unique
+    assert len(dem_rows()) >= 40 and {r[RUN_COLUMN] for r in dem_rows()} <= {r[RUN_COLUMN] for r in static_rows()}
+
+
+@pytest.mark.parametrize("geometry", geometries()[:: len(THICKNESS_OVER_RADIUS)], ids=lambda g: g.name)
+def test_every_shape_and_movement_is_a_valid_case(geometry):
+    case = preset("set2").with_overrides(geometry.overrides())
+    assert case.geometry.thickness_mm == pytest.approx(geometry.thickness_mm)
+
+
+def test_a_semicircle_thinner_than_its_rigid_minimum_cannot_stand_in_the_rigid_march():
+    """t/R 0.08 is below the semicircle's rigid minimum (about 0.107, Heyman): the row says so."""
+    thin = next(g for g in geometries() if g.shape == "semicircular" and g.thickness_over_radius == 0.08)
+    assert not stands(preset("set2").with_overrides(thin.overrides()))
+    assert rigid_row(preset("set2"), thin)["rigid_outcome"] == "cannot stand"
+
+
+def test_the_nearest_rigid_branch_and_gaps():
+    assert nearest_branch_mm(40.0, 50.0, 41.0) == 41.0
+    assert nearest_branch_mm(40.0, 50.0, math.nan) == 50.0
+    assert math.isnan(nearest_branch_mm(40.0, math.nan, math.nan))
+    assert gap_pct(99.0, 100.0) == pytest.approx(-1.0)
+    assert math.isnan(gap_pct(math.nan, 100.0))
+
+
+def _synthetic() -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame]:
+    """Static results for every run (du rising to 0.99 x rigid), the rigid table, one DEM run."""
+    rigid = pd.DataFrame(
+        [{KEY: g.name, "rigid_outcome": "collapse", "rigid_du_mm": 50.0, "rigid_du_first_mm": 40.0,
+          "rigid_hinges": "9I 28E 46I 56E", "rigid_other_du_mm": math.nan} for g in geometries()]
+    )
+    rows = []
+    for g in geometries():
+        for k, kn in enumerate(KNS_N_PER_MM3):
+            rows.append({RUN_COLUMN: g.row(kn)[RUN_COLUMN], "status": "done", "outcome": "collapse",
+                         "du_first_mm": 30.0 + k, "du_mm": 49.5 - 3.0 * (len(KNS_N_PER_MM3) - 1 - k),
+                         "collapse_kind": "four-hinge mechanism", "hinges": "9I 28E 46I 56E", "reason": ""})
+    static = pd.DataFrame(rows)
+    first = dem_rows()[0][RUN_COLUMN]
+    dem = static[static[RUN_COLUMN] == first].assign(du_mm=lambda t: t["du_mm"] * 1.02)
+    return static, rigid, dem
+
+
+def test_the_table_lines_up_the_three_solvers_and_reads_the_targets(tmp_path):
+    static, rigid, dem = _synthetic()
+    table = atlas_table(static, rigid, dem)
+    assert len(table) == len(static_rows())
+    stiff = table[table["kn_N_per_mm3"] == max(KNS_N_PER_MM3)]
+    assert stiff["static_rigid_gap_pct"].to_numpy() == pytest.approx(-1.0)
+    assert table["dem_static_gap_pct"].dropna().to_numpy() == pytest.approx([2.0])
+    assert rising(table)["rises"].all()
+    text = atlas_markdown(table)
+    assert f"{len(geometries())} of {len(geometries())} arches where both collapse are within 2 %" in text
+    assert "du within 1 % in 0" in text  # the one DEM run is 2 % off: listed
+    write_atlas(tmp_path, tmp_path / "runs", static, rigid, dem)
+    assert (tmp_path / "atlas.csv").is_file() and (tmp_path / "atlas.pdf").is_file()

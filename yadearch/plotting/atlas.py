@@ -1,0 +1,81 @@
+"""The atlas's figure: du against kn for every shape (rows) and support movement (columns), one
+colour a ring thickness; the static engine's du (line) and du_first (open), the DEM's du (diamond)
+and the rigid march's du (the dotted level the curve should rise to)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+import numpy as np
+import pandas as pd
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+
+from yadearch.plotting.run_figures import save_figure
+from yadearch.plotting.sweep import SWEEP_STYLE
+
+PANEL_IN = (1.25, 1.05)  # width, height of one shape x movement panel
+KN_RANGE = (0.1, 3e4)  # N/mm3: the atlas's stiffnesses with a margin
+LEGEND_ROW = 0.18  # the key's row, relative to a panel's height
+THICKNESS_COLORS = ("#0072B2", "#D55E00", "#009E73")  # Okabe-Ito: told apart in print and by the colour-blind
+
+
+def atlas_figure(table: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
+    """STEM.pdf/.png: one panel per shape and movement of the atlas `table` (atlas.csv's columns)."""
+    shapes = list(dict.fromkeys(table["shape"]))
+    movements = list(dict.fromkeys(table["movement"]))
+    thicknesses = sorted(table["thickness_mm"].unique())
+    with matplotlib.rc_context(SWEEP_STYLE):
+        fig = Figure(figsize=(PANEL_IN[0] * len(movements) + 0.6, PANEL_IN[1] * len(shapes) + 0.7), layout="constrained")
+        grid = fig.add_gridspec(len(shapes) + 1, len(movements), height_ratios=[1.0] * len(shapes) + [LEGEND_ROW])
+        axes = np.array([[fig.add_subplot(grid[i, j]) for j in range(len(movements))] for i in range(len(shapes))])
+        for i, shape in enumerate(shapes):
+            for j, movement in enumerate(movements):
+                ax = axes[i, j]
+                panel = table[(table["shape"] == shape) & (table["movement"] == movement)]
+                for color, thickness in zip(THICKNESS_COLORS, thicknesses):
+                    _draw_thickness(ax, panel[panel["thickness_mm"] == thickness], color)
+                ax.set_xscale("log")
+                ax.set_xlim(KN_RANGE)
+                ax.set_ylim(bottom=0.0)
+                ax.tick_params(labelsize=6)
+                if i == 0:
+                    ax.set_title(movement.replace("_", " "), fontsize=7)
+                if j == 0:
+                    ax.set_ylabel(f"{shape.replace('_', '-')}\n$\\delta_u$ (mm)", fontsize=7)
+                if i == len(shapes) - 1:
+                    ax.set_xlabel("kn (N/mm$^3$)", fontsize=7)
+        key = fig.add_subplot(grid[len(shapes), :])
+        key.axis("off")
+        key.legend(handles=_legend(thicknesses), loc="center", ncol=len(thicknesses) + 5, fontsize=6.5, frameon=False)
+        return save_figure(fig, stem)
+
+
+def _draw_thickness(ax, runs: pd.DataFrame, color: str) -> None:
+    """One thickness in one panel: static du and du_first against kn, DEM du, the rigid level."""
+    runs = runs.sort_values("kn_N_per_mm3")
+    kn = runs["kn_N_per_mm3"].to_numpy(dtype=float)
+    ax.plot(kn, runs["static_du_mm"], color=color, marker="o", ms=2.5, lw=1.0)
+    ax.plot(kn, runs["static_du_first_mm"], color=color, marker="o", ms=3.5, mfc="none", ls="none", mew=0.6)
+    if "dem_du_mm" in runs:
+        ax.plot(kn, runs["dem_du_mm"], color=color, marker="D", ms=3.5, mfc="none", ls="none", mew=0.8)
+    rigid = runs["rigid_du_mm"].dropna()
+    if len(rigid):
+        ax.axhline(float(rigid.iloc[0]), color=color, ls=":", lw=0.9)
+    unresolved = runs[runs["static_outcome"].eq("unresolved")]
+    if len(unresolved):
+        ax.plot(unresolved["kn_N_per_mm3"], np.zeros(len(unresolved)), color=color, marker="x", ms=4, ls="none")
+
+
+def _legend(thicknesses: list[float]) -> list[Line2D]:
+    """Thickness colours, then what each mark means."""
+    handles = [Line2D([], [], color=c, lw=1.0, label=f"t = {t:g} mm") for c, t in zip(THICKNESS_COLORS, thicknesses)]
+    grey = "0.3"
+    return handles + [
+        Line2D([], [], color=grey, marker="o", ms=2.5, lw=1.0, label=r"static $\delta_u$"),
+        Line2D([], [], color=grey, marker="o", ms=3.5, mfc="none", ls="none", label=r"static $\delta_{first}$"),
+        Line2D([], [], color=grey, marker="D", ms=3.5, mfc="none", ls="none", label=r"DEM $\delta_u$"),
+        Line2D([], [], color=grey, ls=":", label=r"rigid march $\delta_u$"),
+        Line2D([], [], color=grey, marker="x", ls="none", label="static unresolved (at 0)"),
+    ]

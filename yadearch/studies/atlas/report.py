@@ -1,0 +1,217 @@
+"""The atlas's files: atlas.csv (every run), atlas.md (the targets, each exception, the du of every
+arch against kn beside the rigid march's) and atlas.pdf/.png, from the campaigns' results."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pandas as pd
+
+from yadearch.atomic import write_csv_atomically, write_text_atomically
+from yadearch.markdown import markdown_table
+from yadearch.plotting.atlas import atlas_figure
+from yadearch.studies.atlas.grid import DEM_KN_N_PER_MM3, KNS_N_PER_MM3, MOVEMENTS, SHAPES, THICKNESS_OVER_RADIUS
+from yadearch.studies.atlas.rigid import KEY
+from yadearch.studies.atlas.table import (
+    ENGINES_TARGET_PCT,
+    RISE_TOLERANCE_PCT,
+    STIFF_TARGET_PCT,
+    atlas_table,
+    engine_rows,
+    rising,
+    stiff_rows,
+)
+
+TABLE, REPORT, FIGURE = "atlas.csv", "atlas.md", "atlas"
+COMMAND = ".venv/bin/python scripts/atlas.py"
+OUTCOMES = ("collapse", "stands", "unresolved", "cannot stand", "failed")
+
+
+def write_atlas(out: Path, runs: Path, static: pd.DataFrame | None, rigid: pd.DataFrame | None, dem: pd.DataFrame | None) -> pd.DataFrame:
+    """OUT/atlas.csv, atlas.md and atlas.pdf/.png; parts not given are read from RUNS and OUT."""
+    static = static if static is not None else _results(runs / "static")
+    dem = dem if dem is not None else _results(runs / "dem")
+    rigid = rigid if rigid is not None else pd.read_csv(out / "rigid.csv")
+    table = atlas_table(static, rigid, dem)
+    write_csv_atomically(out / TABLE, table)
+    atlas_figure(table, out / FIGURE)
+    write_text_atomically(out / REPORT, atlas_markdown(table))
+    return table
+
+
+def _results(folder: Path) -> pd.DataFrame | None:
+    path = folder / "results.csv"
+    return pd.read_csv(path) if path.is_file() else None
+
+
+def _mm(value: float) -> str:
+    return "-" if value is None or (isinstance(value, float) and math.isnan(value)) else f"{value:.2f}"
+
+
+def _pct(value: float) -> str:
+    return "-" if math.isnan(value) else f"{value:+.1f} %"
+
+
+def _text(value: object) -> str:
+    return "" if value is None or (isinstance(value, float) and math.isnan(value)) else str(value)
+
+
+def atlas_markdown(table: pd.DataFrame) -> str:
+    """atlas.md: what was run, the outcome counts, each target with its exceptions, the du table."""
+    lines = [
+        "# Atlas: collapse of five arch shapes on six support movements, three solvers",
+        "",
+        f"Regenerate: `{COMMAND}` (resumes; docs/atlas.md says what it checks and why).",
+        "",
+        f"- Shapes: {', '.join(SHAPES)} (span 600 mm, or the paper's intrados radius 300 mm; 55 voussoirs).",
+        f"- Movements of the right support: {', '.join(MOVEMENTS)} (up to 150 mm).",
+        f"- Thickness t/R: {', '.join(f'{r:g}' for r in THICKNESS_OVER_RADIUS)} (R = 300 mm);"
+        f" kn: {', '.join(f'{k:g}' for k in KNS_N_PER_MM3)} N/mm3; the DEM at kn {DEM_KN_N_PER_MM3:g}.",
+        "- du_first: where the path first loses stability (a fold or a snap); du: the end of the path.",
+        "",
+        "![atlas](atlas.png)",
+        "",
+        "## Outcomes",
+        "",
+        *_outcome_counts(table),
+        "",
+        *_stiff_section(table),
+        "",
+        *_engines_section(table),
+        "",
+        *_rising_section(table),
+        "",
+        *_unresolved_section(table),
+        "",
+        "## du of every arch (static, mm) against kn, and the rigid march",
+        "",
+        *_du_table(table),
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def _outcome_counts(table: pd.DataFrame) -> list[str]:
+    rigid = table.drop_duplicates(KEY)
+    columns = ["solver", "runs", *OUTCOMES]
+    rows = []
+    for label, frame, column in (
+        ("static", table, "static_outcome"),
+        ("DEM", table[table["dem_outcome"].notna()], "dem_outcome"),
+        ("rigid march", rigid, "rigid_outcome"),
+    ):
+        counts = frame[column].fillna("not run").value_counts()
+        rows.append([label, str(int(frame[column].notna().sum())), *(str(int(counts.get(o, 0))) for o in OUTCOMES)])
+    return markdown_table(columns, rows)
+
+
+def _stiff_section(table: pd.DataFrame) -> list[str]:
+    stiff = stiff_rows(table)
+    outside = stiff[stiff["static_rigid_gap_pct"].abs() > STIFF_TARGET_PCT]
+    lines = [
+        f"## Static at kn {max(KNS_N_PER_MM3):g} against the rigid march (target {STIFF_TARGET_PCT:g} %)",
+        "",
+        f"{len(stiff) - len(outside)} of {len(stiff)} arches where both collapse are within {STIFF_TARGET_PCT:g} %"
+        " (the rigid branch of the keystone's tie nearest the static du). Outside:",
+        "",
+    ]
+    return lines + _gap_rows(outside, "static_rigid_gap_pct", ("rigid_branch_du_mm", "rigid_hinges"), "rigid")
+
+
+def _engines_section(table: pd.DataFrame) -> list[str]:
+    both = engine_rows(table)
+    du_out = both[both["dem_static_gap_pct"].abs() > ENGINES_TARGET_PCT]
+    first_out = both[both["dem_static_first_gap_pct"].abs() > ENGINES_TARGET_PCT]
+    lines = [
+        f"## Static against the DEM at kn {DEM_KN_N_PER_MM3:g} (target {ENGINES_TARGET_PCT:g} %)",
+        "",
+        f"Both collapse in {len(both)} of {int(table['dem_outcome'].notna().sum())} DEM runs; du within "
+        f"{ENGINES_TARGET_PCT:g} % in {len(both) - len(du_out)}, du_first in {len(both) - len(first_out)}."
+        " du outside:",
+        "",
+    ]
+    lines += _gap_rows(du_out, "dem_static_gap_pct", ("dem_du_mm", "dem_hinges"), "DEM")
+    disagree = table[table["dem_outcome"].notna() & table["dem_outcome"].ne(table["static_outcome"])]
+    if len(disagree):
+        lines += ["", "Outcomes that differ:", ""]
+        lines += markdown_table(
+            ["run", "static", "DEM"],
+            [
+                [r.run, f"{_text(r.static_outcome) or 'pending'} {_mm(r.static_du_mm)}",
+                 f"{r.dem_outcome} {_mm(r.dem_du_mm)} {_text(r.dem_reason)}"]
+                for r in disagree.itertuples()
+            ],
+        )
+    return lines
+
+
+def _gap_rows(rows: pd.DataFrame, gap: str, other: tuple[str, str], label: str) -> list[str]:
+    if rows.empty:
+        return ["(none)"]
+    return markdown_table(
+        ["run", "static du_first", "static du", "static hinges", f"{label} du", f"{label} hinges", "gap"],
+        [
+            [
+                r["run"],
+                _mm(r["static_du_first_mm"]),
+                _mm(r["static_du_mm"]),
+                _text(r["static_hinges"]),
+                _mm(r[other[0]]),
+                _text(r[other[1]]),
+                _pct(r[gap]),
+            ]
+            for _, r in rows.iterrows()
+        ],
+    )
+
+
+def _rising_section(table: pd.DataFrame) -> list[str]:
+    verdicts = rising(table)
+    falling = verdicts[~verdicts["rises"]]
+    lines = [
+        "## du rising toward the rigid march as kn grows",
+        "",
+        f"{int(verdicts['rises'].sum())} of {len(verdicts)} arches collapsing at every kn have a du that never"
+        f" falls more than {RISE_TOLERANCE_PCT:g} % toward a stiffer kn. Falling:",
+        "",
+    ]
+    if falling.empty:
+        return lines + ["(none)"]
+    return lines + markdown_table(
+        ["arch", "largest fall"], [[r.geometry, f"{r.largest_fall_pct:.1f} %"] for r in falling.itertuples()]
+    )
+
+
+def _unresolved_section(table: pd.DataFrame) -> list[str]:
+    rows = table[table["static_outcome"].isin(["unresolved", "failed"])]
+    lines = ["## Static runs without an answer", "", f"{len(rows)} runs (never counted as collapse):", ""]
+    if rows.empty:
+        return lines + ["(none)"]
+    return lines + markdown_table(
+        ["run", "outcome", "reason", "rigid du_first", "rigid du"],
+        [
+            [r.run, r.static_outcome, _text(r.static_reason), _mm(r.rigid_du_first_mm), _mm(r.rigid_du_mm)]
+            for r in rows.itertuples()
+        ],
+    )
+
+
+def _du_table(table: pd.DataFrame) -> list[str]:
+    columns = ["arch", *(f"kn {k:g}" for k in KNS_N_PER_MM3), "rigid", "rigid hinges"]
+    rows = []
+    for name, runs in table.groupby(KEY, sort=False):
+        by_kn = runs.set_index("kn_N_per_mm3")
+        cells = [_cell(by_kn.loc[k]) for k in KNS_N_PER_MM3]
+        first = runs.iloc[0]
+        rigid = _mm(first["rigid_du_mm"]) if first["rigid_outcome"] == "collapse" else _text(first["rigid_outcome"])
+        rows.append([name, *cells, rigid, _text(first.get("rigid_hinges"))])
+    return markdown_table(columns, rows)
+
+
+def _cell(row: pd.Series) -> str:
+    """A static run as du (du_first where it differs), or its outcome."""
+    if row["static_outcome"] != "collapse":
+        return _text(row["static_outcome"]) or "pending"
+    first, du = row["static_du_first_mm"], row["static_du_mm"]
+    return _mm(du) if abs(first - du) < 0.01 else f"{_mm(du)} ({_mm(first)})"
