@@ -358,3 +358,18 @@ def test_a_cluster_without_dask_installed_is_a_one_line_error(monkeypatch):
     with pytest.raises(YadearchError, match="needs dask.distributed: install the 'cluster' extra"):
         with open_pool(scheduler="tcp://127.0.0.1:1"):
             pass
+
+
+@pytest.mark.parametrize("engine, paper", [("static", False), ("DEM", True)])
+def test_the_kn_figure_names_its_engine_and_shows_the_paper_only_for_its_arch(tmp_path, engine, paper):
+    """A static sweep's curve says static; the paper's FE points are drawn for the paper's arch only."""
+    from matplotlib.figure import Figure
+
+    from yadearch.plotting.sweep import _du_panel
+
+    table = campaign(tmp_path, FakeRuns(), grid({"kn_N_per_mm3": [0.1, 1.0, 10.0]}))
+    ax = Figure().subplots()
+    _du_panel(ax, table[table["status"] == "done"], None, engine, paper)
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert f"yadearch ({engine})" in labels
+    assert any("paper FE" in label for label in labels) == paper

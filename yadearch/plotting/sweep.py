@@ -17,6 +17,7 @@ from yadearch.case import reference
 from yadearch.plotting.run_figures import save_figure
 
 COLUMN_WIDTH_IN = 3.5  # one journal column
+ENGINE_LABELS = {"dem": "DEM", "static": "static"}  # numerics.engine as a figure names it
 HINGE_STYLE = {
     "hinge_A": ("o", "A (intrados)"),
     "hinge_B": ("s", "B (extrados)"),
@@ -47,16 +48,19 @@ RESULT_COLUMNS = {
 }
 
 
-def kn_sweep_figure(table: pd.DataFrame, stem: Path, du_rigid_mm: float | None = None) -> list[Path]:
-    """Write STEM.pdf and STEM.png from the collapsed runs of a kn sweep, with the rigid-block limit
-    `du_rigid_mm` as the stiff asymptote when given; returns both paths."""
+def kn_sweep_figure(
+    table: pd.DataFrame, stem: Path, du_rigid_mm: float | None = None, engine: str = "DEM", paper: bool = False
+) -> list[Path]:
+    """Write STEM.pdf and STEM.png from the collapsed runs of a kn sweep by `engine`, with the
+    rigid-block limit `du_rigid_mm` as the stiff asymptote when given, and the paper's FE points and
+    hinge ranges only for the `paper`'s arch; returns both paths."""
     runs = _collapsed(table).sort_values("kn_N_per_mm3")
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(COLUMN_WIDTH_IN, 4.4), layout="constrained")
         ax_du, ax_h = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": [3, 2]})
-        _du_panel(ax_du, runs, du_rigid_mm)
+        _du_panel(ax_du, runs, du_rigid_mm, engine, paper)
         _failed_marks(ax_du, table[table["status"] == "failed"])
-        _hinge_panel(ax_h, runs)
+        _hinge_panel(ax_h, runs, paper)
         ax_h.set_xscale("log")
         ax_h.set_xlabel(r"joint normal stiffness $k_n$ (N/mm$^3$)")
         return list(save_figure(fig, stem))
@@ -70,10 +74,10 @@ def _collapsed(table: pd.DataFrame) -> pd.DataFrame:
     return runs
 
 
-def _du_panel(ax: Axes, runs: pd.DataFrame, du_rigid_mm: float | None) -> None:
-    ax.plot(runs["kn_N_per_mm3"], runs["du_mm"], "o-", color="C0", ms=3.5, lw=1, label="yadearch (DEM)")
+def _du_panel(ax: Axes, runs: pd.DataFrame, du_rigid_mm: float | None, engine: str, paper: bool) -> None:
+    ax.plot(runs["kn_N_per_mm3"], runs["du_mm"], "o-", color="C0", ms=3.5, lw=1, label=f"yadearch ({engine})")
     other = runs[runs["mechanism"] != PAPER_MECHANISM]
-    if not other.empty:
+    if paper and not other.empty:  # the paper's mechanism is a reference for the paper's arch only
         ax.plot(
             other["kn_N_per_mm3"],
             other["du_mm"],
@@ -95,9 +99,10 @@ def _du_panel(ax: Axes, runs: pd.DataFrame, du_rigid_mm: float | None) -> None:
             lw=0.8,
             label=f"stiffest run ({stiffest['kn_N_per_mm3']:g} N/mm$^3$): {stiffest['du_mm']:.1f} mm",
         )
-    kn = [s["kn_N_per_mm3"] for s in reference.SETS.values()]
-    du = [s["numerical"]["du_mm"] for s in reference.SETS.values()]
-    ax.plot(kn, du, "D", mfc="none", color="C3", ms=5, label="paper FE, calibrated (sets 1, 2)")
+    if paper:
+        kn = [s["kn_N_per_mm3"] for s in reference.SETS.values()]
+        du = [s["numerical"]["du_mm"] for s in reference.SETS.values()]
+        ax.plot(kn, du, "D", mfc="none", color="C3", ms=5, label="paper FE, calibrated (sets 1, 2)")
     ax.set_ylabel(r"collapse displacement $d_u$ (mm)")
     ax.legend(loc="lower right", frameon=False)
     ax.grid(True, which="major", lw=0.3, alpha=0.5)
@@ -120,13 +125,13 @@ def _failed_marks(ax: Axes, failed: pd.DataFrame) -> None:
     ax.legend(loc="lower right", frameon=False)
 
 
-def _hinge_panel(ax: Axes, runs: pd.DataFrame) -> None:
+def _hinge_panel(ax: Axes, runs: pd.DataFrame, paper: bool) -> None:
     """Hinge interfaces against kn; the paper's ranges as bars half an interface beyond each end,
     so that a single interface still shows."""
     for column, (marker, label) in HINGE_STYLE.items():
         present = runs[runs[column].notna()]
         ax.plot(present["kn_N_per_mm3"], present[column].astype(float), marker, ms=3.5, mfc="none", label=label)
-    if set(runs["n_voussoirs"]) == {reference.GEOMETRY["n_voussoirs"]}:
+    if paper and set(runs["n_voussoirs"]) == {reference.GEOMETRY["n_voussoirs"]}:
         for s in reference.SETS.values():
             for column in HINGE_STYLE:
                 interfaces = s["numerical"][column]

@@ -12,6 +12,7 @@ from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.errors import YadearchError
 from yadearch.plotting.capacity import capacity_polar_figure
+from yadearch.plotting.sweep import ENGINE_LABELS
 from yadearch.solve.limit import limit_analysis
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.capacity import DIRECTION_PARAMETER, RigidLimit, directions, map_markdown, map_table
@@ -21,7 +22,6 @@ RUNS = "runs"
 TABLE = "capacity.csv"
 REPORT = "capacity.md"
 FIGURE = "capacity_map"
-ENGINE_LABELS = {"dem": "DEM", "static": "static"}
 
 
 def rigid_limits(case: ArchCase, direction_values: tuple[float, ...]) -> dict[float, RigidLimit]:

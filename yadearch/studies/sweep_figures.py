@@ -9,7 +9,7 @@ from typing import Any
 
 import pandas as pd
 
-from yadearch.case.config import ArchCase
+from yadearch.case.config import ArchCase, is_paper_arch
 from yadearch.errors import YadearchError
 from yadearch.studies.grid import short_name
 
@@ -21,13 +21,21 @@ def sweep_figures(
 ) -> list[Path]:
     """Draw the sweep's figures into `folder`; their paths (PDF and PNG), or none with a `note` saying
     why (no numeric parameter takes two values, too few runs done)."""
-    from yadearch.plotting.sweep import kn_sweep_figure, parameter_sweep_figure, swept_columns
+    from yadearch.plotting.sweep import ENGINE_LABELS, kn_sweep_figure, parameter_sweep_figure, swept_columns
 
     swept = {short_name(k) for row in rows for k in row if k != "run"}
     columns = swept_columns(table)
     try:
         if swept == {short_name(KN_KEY)}:
-            return list(kn_sweep_figure(table, folder / "du_vs_kn", _rigid_limit_mm(base, note)))
+            return list(
+                kn_sweep_figure(
+                    table,
+                    folder / "du_vs_kn",
+                    _rigid_limit_mm(base, note),
+                    engine=ENGINE_LABELS[base.numerics.engine],
+                    paper=is_paper_arch(base),
+                )
+            )
         if columns:
             return [p for c in columns for p in parameter_sweep_figure(table, c, folder / f"du_vs_{c}")]
         note("no figure: no numeric parameter takes two values in this campaign")
