@@ -110,9 +110,10 @@ def _named(name: str, kn: float | None = None) -> RunSummary:
     return RunSummary(name=name, kn_N_per_mm3=kn, du_mm=None, hinges_at_collapse=(), steps=0, wall_s=0.0)
 
 
-def test_runs_of_the_paper_case_are_matched_by_name_or_kn():
+def test_runs_of_the_paper_case_are_matched_by_kn_not_by_name():
     case = {"geometry": {"n_voussoirs": 55}}
-    assert match_reference(case, _named("set1", 9.0)) == "set1"
+    assert match_reference(case, _named("set1", 0.5)) is None  # a set-1 name at another kn
+    assert match_reference(case, _named("set1", 0.25)) == "set1"
     assert match_reference(case, _named("mine", 5.2)) == "set2"
     assert match_reference(case, _named("mine", 0.25)) == "set1"
     assert match_reference(case, _named("mine", 1.0)) is None
@@ -123,7 +124,7 @@ def test_runs_of_the_paper_case_are_matched_by_name_or_kn():
         {"imperfections": {"edge_radius_mm": 1.0}},
     ):
         assert match_reference(other, _named("set2", 5.2)) is None
-    assert match_reference({"loading": {"max_support_displacement_mm": 120.0}}, _named("set2")) == "set2"
+    assert match_reference({"loading": {"max_support_displacement_mm": 120.0}}, _named("x", 5.2)) == "set2"
 
 
 def test_a_path_that_is_not_a_run_folder_is_a_one_line_error(tmp_path):

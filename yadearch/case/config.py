@@ -296,17 +296,3 @@ def parameter_docs() -> list[tuple[str, str, str]]:
             rows.append((f"{section_name}.{f.name}", repr(default), f.metadata.get("doc", "")))
     return rows
 
-
-def is_paper_arch(case: ArchCase) -> bool:
-    """Whether `case` is the paper's arch and test (its geometry, blocks, joints' ks/kn and friction,
-    settlement of the right support, no imperfections) at any kn: only then do the paper's numbers
-    belong beside its results (figures, reports)."""
-    paper = preset("set2")
-    same_joints = case.interface.ks_over_kn == paper.interface.ks_over_kn
-    return (
-        same_joints
-        and case.geometry == paper.geometry
-        and case.material == paper.material
-        and case.loading == paper.loading
-        and case.imperfections == paper.imperfections
-    )

@@ -8,32 +8,17 @@ from typing import Any
 
 from yadearch.analysis.tracking import format_interfaces
 from yadearch.case import reference
-from yadearch.case.config import as_ran, preset
+from yadearch.case.paper import paper_mismatch as case_mismatch
 from yadearch.results.summary import HingeRef, RunSummary
 
 KN_MATCH_RELATIVE = 1e-6  # a run's kn equals a set's within this relative difference
-PAPER_SECTIONS = ("geometry", "material", "loading", "imperfections")  # what makes a run the paper's case
-NOT_PHYSICAL = {"max_support_displacement_mm"}  # a run's stopping point, not part of the arch or its loading
-
-
-def case_mismatch(case: dict[str, Any]) -> str | None:
-    """How a run's case.toml differs from the paper's arch, material, loading and perfect joints
-    (the first difference, e.g. "geometry.n_voussoirs 10, paper 55"); None if it is the paper's case."""
-    ran, paper = as_ran(case), as_ran(preset(next(iter(reference.SETS))).to_dict())
-    for section in PAPER_SECTIONS:
-        for key, value in paper[section].items():
-            if key not in NOT_PHYSICAL and ran[section][key] != value:
-                return f"{section}.{key} {ran[section][key]!r}, paper {value!r}"
-    return None
 
 
 def match_reference(case: dict[str, Any], summary: RunSummary) -> str | None:
-    """The paper set a run reproduces: only a run of the paper's case (`case_mismatch`), then the set
-    by its name ("set1"/"set2"), else by its kn (N/mm3)."""
+    """The paper set a run reproduces: only a run of the paper's case (`case_mismatch`) at a set's kn
+    (N/mm3); its name plays no part (a run named set1 at kn 0.5 is not the paper's set 1)."""
     if case_mismatch(case) is not None:
         return None
-    if summary.name in reference.SETS:
-        return summary.name
     kn = summary.kn_N_per_mm3
     for name, ref in reference.SETS.items():
         if kn is not None and math.isclose(kn, ref["kn_N_per_mm3"], rel_tol=KN_MATCH_RELATIVE):

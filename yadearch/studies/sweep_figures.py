@@ -9,7 +9,8 @@ from typing import Any
 
 import pandas as pd
 
-from yadearch.case.config import ArchCase, is_paper_arch
+from yadearch.case.config import ArchCase
+from yadearch.case.paper import is_paper_arch
 from yadearch.errors import YadearchError
 from yadearch.studies.grid import short_name
 
