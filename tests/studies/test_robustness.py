@@ -62,3 +62,15 @@ def test_a_moved_hinge_fails_the_kn():
     table = robustness_table(results(du, {"timestep_x0.6": "1E 12I 29E 56E"}))
     assert not table.set_index("variant").loc["timestep_x0.6", "same_hinges"]
     assert verdicts(table)["verdict"].tolist() == ["FAIL"]
+
+
+def test_the_static_engine_takes_only_the_variants_that_can_move_its_answer():
+    """Time step and damping cannot move a static result: not run, so never reported as passing;
+    the ramp keeps its halved first increment, which the static engine does read."""
+    from yadearch.case.config import preset
+    from yadearch.studies.robustness import study_rows
+
+    static = {r["run"]: r for r in study_rows(preset("set2").with_overrides({"engine": "static"}), (5.2,))}
+    assert set(static) == {"kn5.2_base", "kn5.2_increment_x0.5", "kn5.2_ramp", "kn5.2_friction_60", "kn5.2_friction_80"}
+    assert "support_acceleration_mm_per_s2" not in static["kn5.2_ramp"]
+    assert len(study_rows(preset("set2"), (5.2,))) == 8  # the DEM takes all eight

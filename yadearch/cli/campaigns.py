@@ -246,7 +246,7 @@ def calibrate(
 )
 @click.option(
     "--out",
-    default="reports/robustness",
+    default="runs/robustness",
     show_default=True,
     type=OUT_FOLDER,
     help="study folder: run folders, robustness.csv, robustness.md",

@@ -105,7 +105,7 @@ def params() -> None:
 @click.option(
     "--out",
     type=OUT_FOLDER,
-    default="reports/limit",
+    default="runs/limit",
     show_default=True,
     help="folder that receives NAME.json, NAME.pdf and NAME.png",
 )

@@ -13,6 +13,8 @@ from yadearch.case.config import ArchCase, load_case, preset
 from yadearch.case.names import FILE, FOLDER, output_path
 from yadearch.case.support import movement_overrides
 from yadearch.errors import CaseError
+from yadearch.results.summary import STATIC
+from yadearch.statics.records import DEM_ONLY_NUMERICS
 from yadearch.studies.grid import parse_scalar
 
 PRESETS = ("set1", "set2")
@@ -43,7 +45,15 @@ def resolve_case(
     engine = context.meta.get(ENGINE_META) if context is not None else None
     if engine is not None:
         overrides["numerics.engine"] = engine
-    return case.with_overrides(overrides) if overrides else case
+    resolved = case.with_overrides(overrides) if overrides else case
+    if resolved.numerics.engine == STATIC:
+        ignored = [k for k in overrides if k.split(".")[-1] in DEM_ONLY_NUMERICS]
+        if ignored:
+            raise click.UsageError(
+                f"--set {ignored[0]} is not used by the static engine (it solves each state as a static "
+                "equilibrium: no time step, damping, rate or contact model); drop it or use --engine dem"
+            )
+    return resolved
 
 
 def _keep_engine(context: click.Context, _: click.Parameter, value: str | None) -> None:
