@@ -81,3 +81,13 @@ def test_the_typed_fields_answer_what_readers_asked_the_dict_for():
     assert "steps_by_stage" not in summary.to_json()  # the DEM's fields stay out of a static run's file
     with pytest.raises(RunFolderError, match="did not collapse"):
         RunSummary(du_mm=None, hinges_at_collapse=(), steps=0, wall_s=0.0).collapsed_du_mm()
+
+
+def test_the_paper_letters_follow_the_moving_support():
+    """C is the extrados hinge at the support that moves, D at the fixed one: the left support
+    moving mirrors the paper's letters (they were put at the paper's sides whatever moved)."""
+    from yadearch.model.hinges import paper_labels
+
+    hinges = [(1, "E", 5.0), (28, "E", 9.0), (48, "I", 12.0), (56, "E", 3.0)]
+    assert paper_labels(hinges, 56) == {(1, "E"): "D", (56, "E"): "C", (48, "I"): "A", (28, "E"): "B"}
+    assert paper_labels(hinges, 56, "left") == {(56, "E"): "D", (1, "E"): "C", (48, "I"): "A", (28, "E"): "B"}

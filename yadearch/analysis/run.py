@@ -75,10 +75,14 @@ def analyse_history(
     collapsed: bool,
     slip_mm: np.ndarray | None = None,
     thresholds: Thresholds = Thresholds(),
+    moving_support: str = "right",
 ) -> RunAnalysis:
-    """Analyse a joints.csv table; `slip_mm` (per interface, final state) confirms sliding if given."""
+    """Analyse a joints.csv table; `slip_mm` (per interface, final state) confirms sliding if given;
+    the hinges' letters put C at the `moving_support`."""
     history = joint_history(joints, joint_length_mm, du_mm if collapsed else None)
-    tracks = track_hinges(history, thresholds.rotation_mrad, thresholds.opening_mm, thresholds.max_jump)
+    tracks = track_hinges(
+        history, thresholds.rotation_mrad, thresholds.opening_mm, thresholds.max_jump, moving_support
+    )
     sliding = sliding_joints(
         history.normal_force_N[-1],
         history.shear_force_N[-1],
@@ -130,4 +134,5 @@ def analyse_run(run: RunFolder, thresholds: Thresholds | None = None) -> RunAnal
         run.summary.collapsed,
         _final_slip_mm(run),
         thresholds or default_thresholds(run.case),
+        run.case.get("loading", {}).get("moving_support", "right"),
     )

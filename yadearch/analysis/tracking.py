@@ -133,6 +133,7 @@ def track_hinges(
     rotation_threshold_mrad: float = ROTATION_THRESHOLD_MRAD,
     opening_threshold_mm: float = OPENING_THRESHOLD_MM,
     max_jump: int = MAX_JUMP_INTERFACES,
+    moving_support: str = "right",
 ) -> list[HingeTrack]:
     """The hinges of the final record, each followed back, dated, numbered in order of formation
     (hinges forming at the same record: left to right) and labelled A-D by position as the paper
@@ -155,7 +156,9 @@ def track_hinges(
             )
         )
     tracks.sort(key=lambda t: (t.formed_record, t.interface))
-    labels = paper_labels([(t.interface, t.side, t.final.rotation) for t in tracks], history.n_interfaces)
+    labels = paper_labels(
+        [(t.interface, t.side, t.final.rotation) for t in tracks], history.n_interfaces, moving_support
+    )
     for order, track in enumerate(tracks, start=1):
         track.order = order
         track.paper_label = labels.get((track.interface, track.side), "")

@@ -91,21 +91,25 @@ def mirror_hinge_labels(labels: list[str] | tuple[str, ...], last_interface: int
 PAPER_LABELS = ("A", "B", "C", "D")  # the paper's positional hinge labels, assigned by `paper_labels`
 
 
-def paper_labels(hinges: list[tuple[int, str, float]], last_interface: int) -> dict[tuple[int, str], str]:
+def paper_labels(
+    hinges: list[tuple[int, str, float]], last_interface: int, moving_support: str = "right"
+) -> dict[tuple[int, str], str]:
     """The paper's positional labels of a collapse mechanism's hinges, given as (interface, side,
-    rotation): D = the extrados hinge at interface 1 (the fixed support), C = the extrados hinge at
-    `last_interface` (the moving support), A = the intrados hinge, B = the remaining extrados hinge
-    (the most rotated where there are several); hinges left over get no label."""
+    rotation): D = the extrados hinge at the fixed support, C = the extrados hinge at the moving one
+    (interface 1 or `last_interface`: the paper moves the right one, `moving_support` says which),
+    A = the intrados hinge, B = the remaining extrados hinge (the most rotated where there are
+    several); hinges left over get no label."""
+    fixed, moving = (last_interface, 1) if moving_support == "left" else (1, last_interface)
 
     def most_rotated(candidates: list[tuple[int, str, float]]) -> tuple[int, str] | None:
         best = max(candidates, key=lambda h: abs(h[2]), default=None)
         return None if best is None else (best[0], best[1])
 
     labels: dict[tuple[int, str], str] = {}
-    if any(h[:2] == (1, "E") for h in hinges):
-        labels[(1, "E")] = "D"
-    if any(h[:2] == (last_interface, "E") for h in hinges):
-        labels[(last_interface, "E")] = "C"
+    if any(h[:2] == (fixed, "E") for h in hinges):
+        labels[(fixed, "E")] = "D"
+    if any(h[:2] == (moving, "E") for h in hinges):
+        labels[(moving, "E")] = "C"
     intrados = most_rotated([h for h in hinges if h[1] == "I"])
     if intrados:
         labels[intrados] = "A"

@@ -54,10 +54,19 @@ SETTLEMENT_DEG = -90.0  # a support moving straight down settles; any other dire
 
 
 def delta_label(case: dict) -> str:
-    """The x-axis label: "settlement" for a support moving straight down, else "displacement"."""
-    direction = case.get("loading", {}).get("support_direction_deg", SETTLEMENT_DEG)
+    """The x-axis label: "settlement" for a support moving straight down, else "displacement" in the
+    direction the moving support itself takes (the left one mirrors the right one's), or along its
+    path for a turning support or a prescribed path."""
+    loading = case.get("loading", {})
+    side = loading.get("moving_support", "right")
+    who = "supports" if side == "both" else f"{side} support"
+    if loading.get("support_motion", "translation") != "translation":
+        return rf"{who} displacement along its path $\delta$ (mm)"
+    direction = float(loading.get("support_direction_deg", SETTLEMENT_DEG))
+    if side == "left":
+        direction = 180.0 - direction - (360.0 if direction < 0.0 else 0.0)  # the mirror image, in (-180, 180]
     movement = "settlement" if direction == SETTLEMENT_DEG else f"displacement (at {direction:g}°)"
-    return rf"support {movement} $\delta$ (mm)"
+    return rf"{who} {movement} $\delta$ (mm)"
 
 
 def new_figure(height_cm: float, width_cm: float = COLUMN_CM) -> Figure:

@@ -42,7 +42,8 @@ class StateView:
     thrust: np.ndarray
     delta_mm: float
     stage: str
-    reaction_N: tuple[float, float] | None
+    reaction_N: tuple[float, float] | None  # of the moving support on the arch
+    moving_support: str = "right"  # which support the reaction is of ('both': the right one)
 
 
 def run_states(run: RunFolder) -> RunStates:
@@ -72,11 +73,14 @@ def state_view(run: RunFolder, geometry: ArchGeometry, analysis: RunAnalysis, in
     where = rows["force_position"].to_numpy()[:, None]
     thrust = (ends["I"] + where * (ends["E"] - ends["I"]))[loaded]
     same_step = run.series[run.series["step"] == states.step[index]]
+    side = "left" if run.case.get("loading", {}).get("moving_support") == "left" else "right"
     reaction = (
-        None if same_step.empty else (float(same_step["right_Rx_N"].iloc[-1]), float(same_step["right_Ry_N"].iloc[-1]))
+        None if same_step.empty else (float(same_step[f"{side}_Rx_N"].iloc[-1]), float(same_step[f"{side}_Ry_N"].iloc[-1]))
     )
     outlines = [o * MM_PER_M for o in snapshot_outlines(geometry, snapshot)]
-    return StateView(outlines, hinges, thrust, float(states.delta_mm[index]), str(states.stage[index]), reaction)
+    return StateView(
+        outlines, hinges, thrust, float(states.delta_mm[index]), str(states.stage[index]), reaction, side
+    )
 
 
 def drawing_limits(geometry: ArchGeometry) -> tuple[tuple[float, float], tuple[float, float]]:
@@ -128,7 +132,10 @@ def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple,
     if corner:
         text = f"δ = {view.delta_mm:.2f} mm ({view.stage})"
         if view.reaction_N is not None:
-            text += f"\nright support on the arch: Rx = {view.reaction_N[0]:.2f} N, Ry = {view.reaction_N[1]:.2f} N"
+            text += (
+                f"\n{view.moving_support} (moving) support on the arch: "
+                f"Rx = {view.reaction_N[0]:.2f} N, Ry = {view.reaction_N[1]:.2f} N"
+            )
         ax.text(0.01, 0.02, text, transform=ax.transAxes, va="bottom", ha="left", fontsize=6)
     ax.set_aspect("equal")
     ax.set_xlim(*limits[0])

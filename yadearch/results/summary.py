@@ -176,8 +176,9 @@ class RunSummary:
         """Each hinge at collapse with the paper's positional letter (A-D; None for a hinge left
         over), `model.hinges.paper_labels` deciding which is which."""
         rotation = self.hinge_rotations_mrad
+        moving = self.loading.moving_support if self.loading is not None else "right"
         labels = paper_labels(
-            [(h.interface, h.side, rotation.get(h) or 0.0) for h in self.hinges_at_collapse], n_interfaces
+            [(h.interface, h.side, rotation.get(h) or 0.0) for h in self.hinges_at_collapse], n_interfaces, moving
         )
         return {h: labels.get((h.interface, h.side)) for h in self.hinges_at_collapse}
 
