@@ -34,7 +34,7 @@ from yadearch.studies.campaign import (
 from yadearch.studies.campaign_table import label_hinges
 from yadearch.studies.executors import local_pool
 from yadearch.studies.failures import record_failure
-from yadearch.studies.grid import grid, parse_values, read_table, run_tag
+from yadearch.studies.grid import RUN_COLUMN, grid, parse_values, read_table, run_tag
 from yadearch.studies.sessions import SESSIONS_FILE, campaign_wall_s
 
 BASE = preset("set1").with_overrides({"n_voussoirs": 15})
@@ -373,3 +373,18 @@ def test_the_kn_figure_names_its_engine_and_shows_the_paper_only_for_its_arch(tm
     labels = [t.get_text() for t in ax.get_legend().get_texts()]
     assert f"yadearch ({engine})" in labels
     assert any("paper FE" in label for label in labels) == paper
+
+
+@pytest.mark.parametrize("column", ["run", "name", "description"])
+def test_a_table_names_its_runs_by_run_name_or_description(tmp_path, column):
+    """yade-batch's tables call the run's name `description`; any one of the three names the runs."""
+    table = tmp_path / "t.csv"
+    table.write_text(f"{column},kn_N_per_mm3\nsoft,0.25\nstiff,100\n")
+    assert [r[RUN_COLUMN] for r in read_table(table)] == ["soft", "stiff"]
+
+
+def test_a_table_naming_its_runs_twice_is_refused(tmp_path):
+    table = tmp_path / "t.csv"
+    table.write_text("name,description,kn_N_per_mm3\na,b,1\n")
+    with pytest.raises(CampaignError, match="names its runs twice"):
+        read_table(table)

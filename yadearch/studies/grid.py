@@ -22,6 +22,7 @@ from yadearch.errors import ArgumentTypeError, CampaignError, CaseError, Yadearc
 
 TEXT_ENCODING = "utf-8-sig"  # UTF-8, with or without the byte-order mark Excel's "CSV UTF-8" writes
 RUN_COLUMN = "run"  # optional column of an explicit table: the run's name
+NAME_COLUMNS = (RUN_COLUMN, "name", "description")  # each names the runs (yade-batch's is description)
 MAX_TAG = 64
 MAX_RUNS = 100_000  # a larger campaign is refused (a typo in a grid), unless MAX_RUNS_VARIABLE raises it
 MAX_RUNS_VARIABLE = "YADEARCH_MAX_RUNS"
@@ -107,7 +108,7 @@ def grid(params: dict[str, list[Any]]) -> list[dict[str, Any]]:
 
 def read_table(path: str | Path) -> list[dict[str, Any]]:
     """Rows of an explicit CSV campaign table: one column per parameter (an empty cell keeps the base
-    value), optionally a `run` column naming each run. UTF-8 with or without a byte-order mark (Excel's
+    value), optionally one column naming each run (`run`, `name` or yade-batch's `description`). UTF-8 with or without a byte-order mark (Excel's
     "CSV UTF-8"); anything else, a repeated column or a row longer than the header is one line."""
     path = Path(path)
     if not path.is_file():
@@ -123,7 +124,7 @@ def read_table(path: str | Path) -> list[dict[str, Any]]:
                     raise CampaignError(f"campaign table {str(path)!r}: row {line} has more cells than the header")
                 rows.append(
                     {
-                        k: (v if k == RUN_COLUMN else parse_scalar(v))
+                        (RUN_COLUMN if k in NAME_COLUMNS else k): (v if k in NAME_COLUMNS else parse_scalar(v))
                         for k, v in row.items()
                         if v is not None and v.strip()
                     }
@@ -140,9 +141,15 @@ def read_table(path: str | Path) -> list[dict[str, Any]]:
 
 
 def _check_header(path: Path, header: Sequence[str]) -> None:
-    """Every column a case parameter (or `run`), each once (also under its bare and qualified names)."""
+    """Every column a case parameter (or one naming the runs), each once (also under its bare and
+    qualified names)."""
+    naming = [key for key in header if key in NAME_COLUMNS]
+    if len(naming) > 1:
+        raise CampaignError(
+            f"campaign table {str(path)!r} names its runs twice (columns {', '.join(map(repr, naming))}); keep one"
+        )
     for key in header:
-        if key != RUN_COLUMN:
+        if key not in NAME_COLUMNS:
             check_parameter(key)
     seen: dict[str, str] = {}
     for key in header:
