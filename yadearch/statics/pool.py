@@ -109,7 +109,11 @@ def serve() -> None:
         case_file, staging = json.loads(line)
         errors = io.StringIO()
         with contextlib.redirect_stderr(errors), contextlib.redirect_stdout(io.StringIO()):
-            code = main([case_file, staging])
+            try:
+                code = main([case_file, staging])
+            except OSError as exc:  # a full disk or a vanished folder: said, and the worker serves on
+                code = 1
+                print(f"error: cannot write the run folder {exc.filename or staging}: {exc.strerror}", file=sys.stderr)
         sys.stdout.write(json.dumps([code, errors.getvalue()]) + "\n")
         sys.stdout.flush()
 
