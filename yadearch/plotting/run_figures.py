@@ -22,6 +22,7 @@ from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
 from yadearch.atomic import write_atomically
 from yadearch.errors import RunFolderError
+from yadearch.model.hinges import PAPER_LABELS
 from yadearch.plotting.hinge_marks import mark_hinge
 from yadearch.results.rundir import STIFFNESS_COLUMN, RunFolder
 from yadearch.solve.stages import Stage
@@ -46,11 +47,20 @@ STYLE = {
     "savefig.dpi": PNG_DPI,
 }
 HINGE_COLOURS = ["#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9"]  # Okabe-Ito
+THRUST_COLOUR = "#B2182B"  # the thrust line: a red no hinge letter takes
 LEFT_COLOUR, RIGHT_COLOUR = "#0072B2", "#D55E00"
 PAST_DU_ALPHA = 0.35
 LABEL_ROOM = 0.15  # fraction of the arch's width left free on each side for hinge labels at the supports
 AXIS_MARGINS_CM = (1.3, 1.1)  # room the axis labels and ticks take across and down an equal-aspect plot
 SETTLEMENT_DEG = -90.0  # a support moving straight down settles; any other direction is a displacement
+
+
+def hinge_colour(letter: str, extra: int = 0) -> str:
+    """The colour of a hinge in every figure and movie: one per paper letter A-D, the next colours
+    for hinges without a letter (the `extra`-th of them)."""
+    if letter in PAPER_LABELS:
+        return HINGE_COLOURS[PAPER_LABELS.index(letter)]
+    return HINGE_COLOURS[len(PAPER_LABELS) + extra % (len(HINGE_COLOURS) - len(PAPER_LABELS))]
 
 
 def delta_label(case: dict) -> str:
@@ -175,7 +185,7 @@ def collapse_figure(
             point,
             f"{track.paper_label} ({track.interface}{track.side})",
             track.side,
-            HINGE_COLOURS[k % len(HINGE_COLOURS)],
+            hinge_colour(track.paper_label, k),
         )
     ax.plot([], [], color="0.65", lw=0.6, ls="--", label="undeformed")
     ax.add_patch(
@@ -228,7 +238,7 @@ def plot_hinge_openings(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tu
     fig = new_figure(height_cm=9.0)
     top, bottom = fig.subplots(2, 1, sharex=True)
     for k, track in enumerate(analysis.tracks):
-        colour = HINGE_COLOURS[k % len(HINGE_COLOURS)]
+        colour = hinge_colour(track.paper_label, k)
         label = f"{track.paper_label}: {track.interface}{track.side}"
         r = track.formed_record
         top.plot(delta, track.opening_mm, color=colour, label=label)

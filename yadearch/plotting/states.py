@@ -19,13 +19,13 @@ from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outli
 from yadearch.analysis.run import default_thresholds
 from yadearch.errors import RunFolderError
 from yadearch.model.geometry import ArchGeometry
-from yadearch.model.hinges import PAPER_LABELS, Hinge, hinge_rotation, hinges_at
-from yadearch.plotting.run_figures import HINGE_COLOURS, house_style, new_figure, save_figure
+from yadearch.model.hinges import Hinge, hinge_rotation, hinges_at
+from yadearch.plotting.run_figures import THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
 from yadearch.results.rundir import RunFolder
 from yadearch.results.states import RunStates
 
 MM_PER_M = 1e3
-BLOCK_COLOUR, SUPPORT_COLOUR, THRUST_COLOUR = "#EADDCA", "0.45", "#B2182B"
+BLOCK_COLOUR, SUPPORT_COLOUR = "#EADDCA", "0.45"
 UNLABELLED_COLOUR = "0.3"  # a hinge that is not one of the collapse mechanism's A-D
 MARGIN = 0.06  # of the arch's span, around the drawing
 STRIP_FRACTIONS = (0.0, 1 / 3, 2 / 3, 1.0)  # of du: the strip's four states
@@ -117,7 +117,7 @@ def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple,
     if len(view.thrust):
         ax.plot(view.thrust[:, 0], view.thrust[:, 1], "-", color=THRUST_COLOUR, lw=0.8, zorder=3)
     for interface, side, point, letter in view.hinges:
-        colour = HINGE_COLOURS[PAPER_LABELS.index(letter)] if letter else UNLABELLED_COLOUR
+        colour = hinge_colour(letter) if letter else UNLABELLED_COLOUR
         ax.plot(*point, "o", ms=4, mfc=colour, mec="white", mew=0.5, zorder=4)
         ax.annotate(
             f"{letter} {interface}{side}".strip(),

@@ -18,13 +18,15 @@ from matplotlib.patches import Polygon
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
 from yadearch.model.geometry import ArchGeometry
+from yadearch.model.hinges import paper_labels
 from yadearch.plotting.hinge_marks import mark_hinge
 from yadearch.plotting.run_figures import (
     AXIS_MARGINS_CM,
     COLUMN_CM,
-    HINGE_COLOURS,
     LABEL_ROOM,
     STYLE,
+    THRUST_COLOUR,
+    hinge_colour,
     new_figure,
     save_figure,
 )
@@ -32,7 +34,7 @@ from yadearch.solve.limit_result import LimitResult
 from yadearch.solve.rigid import rotate
 
 M_TO_MM = 1e3
-VOUSSOIR_COLOUR, SUPPORT_COLOUR, THRUST_COLOUR = "#EADDCA", "0.45", "#D55E00"
+VOUSSOIR_COLOUR, SUPPORT_COLOUR = "#EADDCA", "0.45"
 UNDEFORMED_STYLE = {"fill": False, "ec": "0.65", "lw": 0.4, "ls": "--", "zorder": 1}
 
 
@@ -101,9 +103,11 @@ def _draw(ax: Axes, result: LimitResult, undeformed: list[np.ndarray], outlines:
         )
     thrust = np.array([f.thrust_mm for f in result.forces])
     ax.plot(thrust[:, 0], thrust[:, 1], color=THRUST_COLOUR, lw=0.9, marker="o", ms=1.2, zorder=3, label="thrust line")
-    for k, (label, point) in enumerate(hinge_points(result).items()):
+    points = hinge_points(result)
+    letters = paper_labels([(int(h[:-1]), h[-1], 0.0) for h in points], len(result.forces))
+    for k, (label, point) in enumerate(points.items()):
         text = f"{label} (new)" if label in result.new_at_collapse else label
-        mark_hinge(ax, point, text, label[-1], HINGE_COLOURS[k % len(HINGE_COLOURS)])
+        mark_hinge(ax, point, text, label[-1], hinge_colour(letters.get((int(label[:-1]), label[-1]), ""), k))
     ax.plot([], [], color="0.65", lw=0.6, ls="--", label="undeformed")
     ax.add_patch(Polygon(np.zeros((3, 2)), fc=VOUSSOIR_COLOUR, ec="0.15", lw=0.3, label="at the limit"))
     ax.legend(loc="lower center", ncols=1, handlelength=1.5)
