@@ -21,6 +21,7 @@ from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.engine.driver import SupportDriver
 from yadearch.engine.loading import EquilibriumPath, settle_selfweight
 from yadearch.engine.recorder import Recorder, Records
+from yadearch.solve.limit import why_not_standing
 from yadearch.engine.scene import CALLBACK_NAME, body_states, build_scene, stop_voussoirs
 from yadearch.engine.scene_state import capture, put_back
 from yadearch.engine.stepping import SteppingGate
@@ -169,7 +170,8 @@ class Runner:
             sag = float(np.max(np.abs(body_states(self.scene)[0] - self.scene.pos0)))
             if sag > units.mm(SELFWEIGHT_COLLAPSE_MM):
                 raise RunFailedError(
-                    f"{CANNOT_STAND}: a block fell {units.to_mm(sag):.0f} mm ({standing_parameters(self.case)})"
+                    f"{CANNOT_STAND}: a block fell {units.to_mm(sag):.0f} mm ({standing_parameters(self.case)}); "
+                    + why_not_standing(self.case)
                 )
             if (
                 fraction >= 1.0

@@ -22,6 +22,7 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes
+from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.model.hinges import mirror_hinge_labels
 from yadearch.solve.limit_lp import solve_statics
@@ -54,6 +55,22 @@ def stands(case: ArchCase) -> bool:
     """Whether the undeformed arch admits an equilibrium (thrust line inside, friction enough)."""
     arch = rigid_arch(case)
     return solve_statics(arch, at_rest(arch)).feasible
+
+
+def why_not_standing(case: ArchCase) -> str:
+    """For the message of an arch that does not stand under its own weight: whether rigid blocks of
+    the same shape would (then its joints are too soft for it: the compliance folds the ring) or not
+    (then the ring is too thin or the friction too low for its shape, whatever the joints)."""
+    try:
+        rigid = stands(case)
+    except (LimitError, YadearchError):
+        return ""
+    if rigid:
+        return (
+            f"rigid blocks of this shape stand: its joints at kn {case.interface.kn_N_per_mm3:g} N/mm3 are too "
+            "soft for it (their compliance folds the ring); a stiffer kn or a thicker ring stands"
+        )
+    return "rigid blocks of this shape do not stand either: the ring is too thin or the friction too low for it"
 
 
 def limit_analysis(

@@ -17,6 +17,7 @@ from yadearch.model import units
 from yadearch.results.provenance import provenance
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSummary, collapse_fields, loading_info
+from yadearch.solve.limit import why_not_standing
 from yadearch.solve.path import PathStep, path_settings
 from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import StaticEngineError, StaticLoading
@@ -143,7 +144,7 @@ def _selfweight(
     try:
         state = loading.selfweight()
     except StaticEngineError as exc:
-        raise YadearchError(f"{exc} ({standing_parameters(case)})") from None
+        raise YadearchError(f"{exc} ({standing_parameters(case)}); {why_not_standing(case)}") from None
     records.add(state, label=Stage.SELFWEIGHT)
     row = records.series[-1]
     weight = float(loading.arch.weight[1:-1].sum())
