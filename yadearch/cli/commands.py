@@ -47,6 +47,12 @@ def cli() -> None:
 @click.option("--out", type=OUT_FOLDER, help="run folder (default runs/NAME)")
 @click.option("--rerun", is_flag=True, help="run again even if OUT holds a finished run of this case")
 @click.option("--overwrite", is_flag=True, help="replace a finished run of another case in OUT")
+@click.option(
+    "--figures/--no-figures",
+    default=True,
+    show_default=True,
+    help="draw the run's figures (a static run's solver takes a fraction of their seconds)",
+)
 def run(
     preset_name: str | None,
     case_file: str | None,
@@ -56,14 +62,16 @@ def run(
     out: str | None,
     rerun: bool,
     overwrite: bool,
+    figures: bool,
 ) -> None:
     """Run one case to collapse and write its run folder (a finished run of the same case is reused)."""
     case = resolve_case(preset_name, case_file, kn, settings)
     if name is not None:
         case = case.with_overrides({"name": check_name(name, "--name")})
-    result = api.run(case, out=out, rerun=rerun, overwrite=overwrite)
+    result = api.run(case, out=out, rerun=rerun, overwrite=overwrite, figures=figures)
     _report_summary(result.path)
-    click.echo(f"figures -> {result.path / 'figures'}")
+    if figures:
+        click.echo(f"figures -> {result.path / 'figures'}")
 
 
 @cli.command()
