@@ -24,7 +24,9 @@ DEM, STATIC = "dem", "static"  # the engines that write run folders
 # step, folds located, descents retried (a solver failure is `unresolved`, never collapse).
 # 4: continuation and snaps judged against the ring's thickness alone (0.01 t), not the step or the
 # bracket: a snap hidden in a long step or a wide bracket no longer moves du_first.
-STATIC_REVISION = 4
+# 5: a descent kicked off a saddle that comes back to it twice has found a well (sliding joints make
+# the tangent's symmetric part indefinite at stable states), and one still falling goes on.
+STATIC_REVISION = 5
 TRANSLATION = "translation"
 # written only when set: engine-specific figures and what older runs lack
 OPTIONAL_KEYS = frozenset(

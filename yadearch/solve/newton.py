@@ -11,7 +11,7 @@ timeout.
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import scipy.linalg
@@ -28,6 +28,8 @@ SHIFT_FALL = 0.3  # ... and falls by this after one that releases energy
 ROUNDOFF = 1e-14  # relative round-off of a position, about 50 machine epsilons
 MAX_SHIFT_RATIO = 1e12  # a shift this many times its start means no step releases energy any more
 MIN_SHIFT_RATIO = 1e-12  # the shift falls no lower (Newton's own steps)
+RETURN_FRACTION = 0.01  # a descent ending this x max_step from the saddle it was kicked off came back
+RETURNS_TO_STAND = 2  # ... and one that comes back this many times sits in a well
 KICK_FRACTION = 0.02  # an unstable equilibrium is left along its softest mode by this x max_step
 
 
@@ -164,7 +166,9 @@ class Solver:
         """Damped Newton steps (K + mu I) d = R from `u0`, a step kept only where it releases energy
         (the work of the residual forces along it, by the trapezoidal rule, is positive; then mu
         falls, else it rises): the arch creeps downhill, as the DEM's hold lets it. Ends in a stable
-        equilibrium (Verdict.STABLE), or when a block has moved `runaway` (m) from `origin` (default `u0`;
+        equilibrium (Verdict.STABLE; also a saddle of the tangent's symmetric part that the descent,
+        kicked off along its softest mode, comes back to twice: sliding joints make that part
+        indefinite at states the incremental law holds), or when a block has moved `runaway` (m) from `origin` (default `u0`;
         a descent that goes on from where another stopped counts from where that began)
         (Verdict.RUNAWAY), or when the budget is spent or no step releases energy (Verdict.TIMEOUT)."""
         budget = iterations or self.settings.descent_iterations
@@ -173,6 +177,7 @@ class Solver:
         joints, residual = self.state(u, u_before, shear_before, gravity)
         floor = self.initial_shift(joints)
         shift = floor
+        saddle, returns = None, 0
         for iteration in range(budget):
             self.iterations += 1
             stiffness = self.free_stiffness(joints)
@@ -180,6 +185,12 @@ class Solver:
                 found = self.result(u, joints, residual, iteration, origin)
                 if found.stable():
                     return found
+                if saddle is not None and largest_move(u, saddle) <= RETURN_FRACTION * self.settings.max_step:
+                    returns += 1
+                    if returns >= RETURNS_TO_STAND:  # kicked along its softest mode, it comes back:
+                        return replace(found, verdict=Verdict.STABLE)  # a well, for the dynamics too
+                else:
+                    saddle, returns = u.copy(), 0
                 u = self._kick(u, stiffness)  # a saddle: leave it along its softest mode
                 joints, residual = self.state(u, u_before, shear_before, gravity)
                 shift = floor

@@ -24,7 +24,7 @@ from yadearch.model.joint_law import JointForces
 from yadearch.solve import banded
 from yadearch.solve.banded import smallest_eigenvalue
 from yadearch.solve.collapse_mode import FoldMode, fold_mode
-from yadearch.solve.newton import Equilibrium, Solver, SolverSettings
+from yadearch.solve.newton import Equilibrium, Solver, SolverSettings, largest_move
 from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, follow_path
 from yadearch.solve.stages import Stage, Verdict
 from yadearch.solve.statics import StaticArch
@@ -35,7 +35,9 @@ SUBSTEPS = 8  # an increment Newton cannot solve at once is marched in this many
 PREDICTOR_POINTS = 3  # accepted states the predictor extrapolates through (a parabola)
 SNAP_THICKNESS_FRACTION = 0.01  # a descent landing further than this x the ring's thickness from the
 # prediction at the fold is a snap, a new branch: a length of the arch, not of the bracket or the step
-DESCENT_RETRIES = 2  # a descent that finds neither equilibrium nor runaway goes on this many times more
+DESCENT_RETRIES = 2  # a descent that finds neither equilibrium nor runaway goes on this many times more,
+FALLING_FRACTION = 0.02  # ... and on while each go moves a block this x the runaway bound (still falling),
+MAX_DESCENT_GOES = 40  # ... up to this many goes of the solver's descent_iterations
 
 
 class StaticEngineError(RuntimeError):
@@ -182,10 +184,13 @@ class StaticLoading:
         start = self.predict(lam, history)
         found = self.solver.descend(start, last.u, shear, self.runaway)
         self.descents += 1
-        for _ in range(DESCENT_RETRIES):
-            if found.verdict != Verdict.TIMEOUT:
-                return found
+        before, goes = start, 1
+        while found.verdict == Verdict.TIMEOUT and goes < MAX_DESCENT_GOES:
+            falling = largest_move(found.u, before) >= FALLING_FRACTION * self.runaway
+            if goes > DESCENT_RETRIES and not falling:
+                break
             self.retries += 1
+            before, goes = found.u, goes + 1
             found = self.solver.descend(found.u, last.u, shear, self.runaway, origin=start)
         if found.verdict == Verdict.TIMEOUT:
             self.retries += 1
