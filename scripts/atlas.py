@@ -36,8 +36,12 @@ def main() -> int:
     parser.add_argument("--out", type=Path, default=Path("reports/atlas"))
     parser.add_argument("--runs", type=Path, default=Path("runs/atlas"))
     parser.add_argument("--jobs", type=int, default=2)
-    parser.add_argument("--engine", choices=("all", "static", "rigid", "dem"), default="all",
-                        help="compute one part only (the report is written from what exists)")
+    parser.add_argument(
+        "--engine",
+        choices=("all", "static", "rigid", "dem"),
+        default="all",
+        help="compute one part only (the report is written from what exists)",
+    )
     parser.add_argument("--no-dem", action="store_true", help="do not run the DEM; use the runs in RUNS/dem")
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)

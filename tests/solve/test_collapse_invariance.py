@@ -15,9 +15,9 @@ from yadearch.case.support import path_end_mm
 from yadearch.results.summary import collapse_fields
 from yadearch.solve.newton import SolverSettings
 from yadearch.solve.path import path_settings
+from yadearch.solve.stages import Outcome
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.statics import static_arch
-from yadearch.solve.stages import Outcome
 
 SPREADING_SEMICIRCLE = {
     "embrace_deg": 180.0,

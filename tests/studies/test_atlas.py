@@ -55,15 +55,33 @@ def test_the_nearest_rigid_branch_and_gaps():
 def _synthetic() -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame]:
     """Static results for every run (du rising to 0.99 x rigid), the rigid table, one DEM run."""
     rigid = pd.DataFrame(
-        [{KEY: g.name, "rigid_outcome": "collapse", "rigid_du_mm": 50.0, "rigid_du_first_mm": 40.0,
-          "rigid_hinges": "9I 28E 46I 56E", "rigid_other_du_mm": math.nan} for g in geometries()]
+        [
+            {
+                KEY: g.name,
+                "rigid_outcome": "collapse",
+                "rigid_du_mm": 50.0,
+                "rigid_du_first_mm": 40.0,
+                "rigid_hinges": "9I 28E 46I 56E",
+                "rigid_other_du_mm": math.nan,
+            }
+            for g in geometries()
+        ]
     )
     rows = []
     for g in geometries():
         for k, kn in enumerate(KNS_N_PER_MM3):
-            rows.append({RUN_COLUMN: g.row(kn)[RUN_COLUMN], "status": "done", "outcome": "collapse",
-                         "du_first_mm": 30.0 + k, "du_mm": 49.5 - 3.0 * (len(KNS_N_PER_MM3) - 1 - k),
-                         "collapse_kind": "four-hinge mechanism", "hinges": "9I 28E 46I 56E", "reason": ""})
+            rows.append(
+                {
+                    RUN_COLUMN: g.row(kn)[RUN_COLUMN],
+                    "status": "done",
+                    "outcome": "collapse",
+                    "du_first_mm": 30.0 + k,
+                    "du_mm": 49.5 - 3.0 * (len(KNS_N_PER_MM3) - 1 - k),
+                    "collapse_kind": "four-hinge mechanism",
+                    "hinges": "9I 28E 46I 56E",
+                    "reason": "",
+                }
+            )
     static = pd.DataFrame(rows)
     first = dem_rows()[0][RUN_COLUMN]
     dem = static[static[RUN_COLUMN] == first].assign(du_mm=lambda t: t["du_mm"] * 1.02)

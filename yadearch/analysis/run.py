@@ -80,9 +80,7 @@ def analyse_history(
     """Analyse a joints.csv table; `slip_mm` (per interface, final state) confirms sliding if given;
     the hinges' letters put C at the `moving_support`."""
     history = joint_history(joints, joint_length_mm, du_mm if collapsed else None)
-    tracks = track_hinges(
-        history, thresholds.rotation_mrad, thresholds.opening_mm, thresholds.max_jump, moving_support
-    )
+    tracks = track_hinges(history, thresholds.rotation_mrad, thresholds.opening_mm, thresholds.max_jump, moving_support)
     sliding = sliding_joints(
         history.normal_force_N[-1],
         history.shear_force_N[-1],

@@ -295,4 +295,3 @@ def parameter_docs() -> list[tuple[str, str, str]]:
             default = f.default_factory() if f.default_factory is not dataclasses.MISSING else f.default
             rows.append((f"{section_name}.{f.name}", repr(default), f.metadata.get("doc", "")))
     return rows
-

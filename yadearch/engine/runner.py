@@ -21,7 +21,6 @@ from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.engine.driver import SupportDriver
 from yadearch.engine.loading import EquilibriumPath, settle_selfweight
 from yadearch.engine.recorder import Recorder, Records
-from yadearch.solve.limit import why_not_standing
 from yadearch.engine.scene import CALLBACK_NAME, body_states, build_scene, stop_voussoirs
 from yadearch.engine.scene_state import capture, put_back
 from yadearch.engine.stepping import SteppingGate
@@ -29,6 +28,7 @@ from yadearch.engine.timing import EngineClock
 from yadearch.errors import CANNOT_STAND, RunFailedError
 from yadearch.model import units
 from yadearch.results.summary import HingeRef, RunSummary, collapse_fields
+from yadearch.solve.limit import why_not_standing
 from yadearch.solve.stages import Stage, Verdict
 
 SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand

@@ -27,7 +27,9 @@ def atlas_figure(table: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
     movements = list(dict.fromkeys(table["movement"]))
     thicknesses = sorted(table["thickness_mm"].unique())
     with matplotlib.rc_context(SWEEP_STYLE):
-        fig = Figure(figsize=(PANEL_IN[0] * len(movements) + 0.6, PANEL_IN[1] * len(shapes) + 0.7), layout="constrained")
+        fig = Figure(
+            figsize=(PANEL_IN[0] * len(movements) + 0.6, PANEL_IN[1] * len(shapes) + 0.7), layout="constrained"
+        )
         grid = fig.add_gridspec(len(shapes) + 1, len(movements), height_ratios=[1.0] * len(shapes) + [LEGEND_ROW])
         axes = np.array([[fig.add_subplot(grid[i, j]) for j in range(len(movements))] for i in range(len(shapes))])
         for i, shape in enumerate(shapes):

@@ -75,12 +75,12 @@ def state_view(run: RunFolder, geometry: ArchGeometry, analysis: RunAnalysis, in
     same_step = run.series[run.series["step"] == states.step[index]]
     side = "left" if run.case.get("loading", {}).get("moving_support") == "left" else "right"
     reaction = (
-        None if same_step.empty else (float(same_step[f"{side}_Rx_N"].iloc[-1]), float(same_step[f"{side}_Ry_N"].iloc[-1]))
+        None
+        if same_step.empty
+        else (float(same_step[f"{side}_Rx_N"].iloc[-1]), float(same_step[f"{side}_Ry_N"].iloc[-1]))
     )
     outlines = [o * MM_PER_M for o in snapshot_outlines(geometry, snapshot)]
-    return StateView(
-        outlines, hinges, thrust, float(states.delta_mm[index]), str(states.stage[index]), reaction, side
-    )
+    return StateView(outlines, hinges, thrust, float(states.delta_mm[index]), str(states.stage[index]), reaction, side)
 
 
 def drawing_limits(geometry: ArchGeometry) -> tuple[tuple[float, float], tuple[float, float]]:

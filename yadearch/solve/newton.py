@@ -168,9 +168,9 @@ class Solver:
         falls, else it rises): the arch creeps downhill, as the DEM's hold lets it. Ends in a stable
         equilibrium (Verdict.STABLE; also a saddle of the tangent's symmetric part that the descent,
         kicked off along its softest mode, comes back to twice: sliding joints make that part
-        indefinite at states the incremental law holds), or when a block has moved `runaway` (m) from `origin` (default `u0`;
-        a descent that goes on from where another stopped counts from where that began)
-        (Verdict.RUNAWAY), or when the budget is spent or no step releases energy (Verdict.TIMEOUT)."""
+        indefinite at states the incremental law holds), or when a block has moved `runaway` (m) from
+        `origin` (default `u0`; a descent that goes on from where another stopped counts from where that
+        began) (Verdict.RUNAWAY), or when the budget is spent or no step releases energy (Verdict.TIMEOUT)."""
         budget = iterations or self.settings.descent_iterations
         origin = u0 if origin is None else origin
         u = u0.copy()

@@ -210,7 +210,7 @@ class StaticLoading:
         return self.solver.iterations
 
     def accept(self) -> None:
-        assert self._trial is not None
+        assert self._trial is not None and self._trial.stiffness is not None
         self._trial.min_stiffness = smallest_eigenvalue(self._trial.stiffness)
         self.accepted.append(self._trial)
         self._trial = None
@@ -234,6 +234,7 @@ class StaticLoading:
         """The collapse mode from the last accepted state towards the runaway at du's upper end
         `upper`: the collapse's hinges and kind (`solve.collapse_mode`)."""
         state = self.accepted[-1]
+        assert state.stiffness is not None  # every state is made from the solver's equilibrium
         return fold_mode(self.arch, state.u, state.stiffness, self.failures[self._failure_at(upper)].u)
 
     def predict(self, target: float, history: list[StaticState]) -> np.ndarray:

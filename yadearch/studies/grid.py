@@ -108,8 +108,9 @@ def grid(params: dict[str, list[Any]]) -> list[dict[str, Any]]:
 
 def read_table(path: str | Path) -> list[dict[str, Any]]:
     """Rows of an explicit CSV campaign table: one column per parameter (an empty cell keeps the base
-    value), optionally one column naming each run (`run`, `name` or yade-batch's `description`). UTF-8 with or without a byte-order mark (Excel's
-    "CSV UTF-8"); anything else, a repeated column or a row longer than the header is one line."""
+    value), optionally one column naming each run (`run`, `name` or yade-batch's `description`).
+    UTF-8 with or without a byte-order mark (Excel's "CSV UTF-8"); anything else, a repeated column
+    or a row longer than the header is one line."""
     path = Path(path)
     if not path.is_file():
         raise CampaignError(f"campaign table {str(path)!r} does not exist")

@@ -28,7 +28,9 @@ COMMAND = ".venv/bin/python scripts/atlas.py"
 OUTCOMES = ("collapse", "stands", "unresolved", "cannot stand", "failed")
 
 
-def write_atlas(out: Path, runs: Path, static: pd.DataFrame | None, rigid: pd.DataFrame | None, dem: pd.DataFrame | None) -> pd.DataFrame:
+def write_atlas(
+    out: Path, runs: Path, static: pd.DataFrame | None, rigid: pd.DataFrame | None, dem: pd.DataFrame | None
+) -> pd.DataFrame:
     """OUT/atlas.csv, atlas.md and atlas.pdf/.png; parts not given are read from RUNS and OUT."""
     static = static if static is not None else _results(runs / "static")
     dem = dem if dem is not None else _results(runs / "dem")
@@ -138,8 +140,11 @@ def _engines_section(table: pd.DataFrame) -> list[str]:
         lines += markdown_table(
             ["run", "static", "DEM"],
             [
-                [r.run, f"{_text(r.static_outcome) or 'pending'} {_mm(r.static_du_mm)}",
-                 f"{r.dem_outcome} {_mm(r.dem_du_mm)} {_text(r.dem_reason)}"]
+                [
+                    r.run,
+                    f"{_text(r.static_outcome) or 'pending'} {_mm(r.static_du_mm)}",
+                    f"{r.dem_outcome} {_mm(r.dem_du_mm)} {_text(r.dem_reason)}",
+                ]
                 for r in disagree.itertuples()
             ],
         )

@@ -101,5 +101,7 @@ def rising(table: pd.DataFrame) -> pd.DataFrame:
             continue
         du = runs["static_du_mm"].to_numpy(dtype=float)
         falls = 100.0 * (du[:-1] - du[1:]) / du[:-1]
-        rows.append({KEY: name, "largest_fall_pct": float(falls.max()), "rises": bool(falls.max() <= RISE_TOLERANCE_PCT)})
+        rows.append(
+            {KEY: name, "largest_fall_pct": float(falls.max()), "rises": bool(falls.max() <= RISE_TOLERANCE_PCT)}
+        )
     return pd.DataFrame(rows, columns=[KEY, "largest_fall_pct", "rises"])
