@@ -15,9 +15,9 @@ import sys
 from pathlib import Path
 
 from yadearch.case.config import preset
-from yadearch.studies.atlas.grid import dem_rows, geometries, static_rows
+from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, geometries, static_rows
 from yadearch.studies.atlas.report import write_atlas
-from yadearch.studies.atlas.rigid import rigid_table
+from yadearch.studies.atlas.rigid import compliant_table, rigid_table
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import open_pool
 
@@ -48,6 +48,8 @@ def main() -> int:
     parts = ("static", "rigid", "dem") if args.engine == "all" else (args.engine,)
     static = run_engine("static", static_rows(), args.runs, args.jobs) if "static" in parts else None
     rigid = rigid_table(preset("set2"), geometries(), args.out, args.jobs) if "rigid" in parts else None
+    if "rigid" in parts:  # what the joints' compliance alone leaves of the rigid du at the stiffest kn
+        compliant_table(preset("set2"), geometries(), max(KNS_N_PER_MM3), args.out, args.jobs)
     dem = run_engine("dem", dem_rows(), args.runs, args.jobs) if "dem" in parts and not args.no_dem else None
     if args.engine == "all":
         write_atlas(args.out, args.runs, static, rigid, dem)

@@ -17,6 +17,7 @@ from yadearch.solve.limit import limit_analysis, stands
 from yadearch.studies.atlas.grid import Geometry
 
 TABLE = "rigid.csv"
+COMPLIANT_TABLE = "compliant.csv"
 KEY = "geometry"
 
 
@@ -55,6 +56,42 @@ def rigid_table(base: ArchCase, geometries: list[Geometry], out: Path, jobs: int
     if missing:
         with ProcessPoolExecutor(max_workers=jobs) as pool:
             rows = list(pool.map(rigid_row, [base] * len(missing), missing))
+        kept = pd.concat([kept, pd.DataFrame(rows)], ignore_index=True) if len(kept) else pd.DataFrame(rows)
+        write_csv_atomically(path, kept)
+    return kept[kept[KEY].isin({g.name for g in geometries})].reset_index(drop=True)
+
+
+def compliant_row(base: ArchCase, geometry: Geometry, kn_N_per_mm3: float) -> dict[str, Any]:
+    """The compliant march of one atlas arch at `kn_N_per_mm3` (the joints beside the hinges folding at
+    that stiffness's margin, `solve.compliant`): the du a deformable arch of that kn should reach,
+    on both branches of the keystone's tie as the rigid row keeps them."""
+    row: dict[str, Any] = {KEY: geometry.name, "compliant_du_mm": math.nan, "compliant_other_du_mm": math.nan}
+    try:
+        case = base.with_overrides({**geometry.overrides(), "kn_N_per_mm3": kn_N_per_mm3})
+        if not stands(case):
+            return row
+        result = limit_analysis(case, compliant=True)
+    except YadearchError:
+        return row
+    return {
+        **row,
+        "compliant_du_mm": _mm(result.du_mm),
+        "compliant_hinges": " ".join(result.collapse_hinges),
+        "compliant_other_du_mm": _mm(result.mirror_du_rigid_mm),
+    }
+
+
+def compliant_table(
+    base: ArchCase, geometries: list[Geometry], kn_N_per_mm3: float, out: Path, jobs: int = 1
+) -> pd.DataFrame:
+    """OUT/compliant.csv: the compliant march of every geometry at `kn_N_per_mm3`, reused as
+    `rigid_table` reuses its rows."""
+    path = Path(out) / COMPLIANT_TABLE
+    kept = pd.read_csv(path) if path.is_file() else pd.DataFrame(columns=[KEY])
+    missing = [g for g in geometries if g.name not in set(kept[KEY])]
+    if missing:
+        with ProcessPoolExecutor(max_workers=jobs) as pool:
+            rows = list(pool.map(compliant_row, [base] * len(missing), missing, [kn_N_per_mm3] * len(missing)))
         kept = pd.concat([kept, pd.DataFrame(rows)], ignore_index=True) if len(kept) else pd.DataFrame(rows)
         write_csv_atomically(path, kept)
     return kept[kept[KEY].isin({g.name for g in geometries})].reset_index(drop=True)

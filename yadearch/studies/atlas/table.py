@@ -46,8 +46,12 @@ def nearest_branch_mm(du_mm: float, rigid: float, other: float) -> float:
     return min(branches, key=lambda b: abs(b - du_mm)) if np.isfinite(du_mm) else branches[0]
 
 
-def atlas_table(static: pd.DataFrame | None, rigid: pd.DataFrame, dem: pd.DataFrame | None) -> pd.DataFrame:
-    """Every atlas run's row: its arch, the three solvers' answers and the gaps between them."""
+def atlas_table(
+    static: pd.DataFrame | None, rigid: pd.DataFrame, dem: pd.DataFrame | None, compliant: pd.DataFrame | None = None
+) -> pd.DataFrame:
+    """Every atlas run's row: its arch, the three solvers' answers and the gaps between them, and the
+    compliant march at the stiffest kn where given (what the joints' compliance alone leaves of the
+    rigid du)."""
     keys: list[dict[str, Any]] = []
     for geometry in geometries():
         for kn in KNS_N_PER_MM3:
@@ -56,6 +60,20 @@ def atlas_table(static: pd.DataFrame | None, rigid: pd.DataFrame, dem: pd.DataFr
     table = table.merge(_engine_part(static, "static"), on=RUN_COLUMN, how="left")
     table = table.merge(_engine_part(dem, "dem"), on=RUN_COLUMN, how="left")
     table = table.merge(rigid, on=KEY, how="left")
+    if compliant is not None:
+        table = table.merge(compliant, on=KEY, how="left")
+        table["compliant_branch_du_mm"] = [
+            nearest_branch_mm(s, c, o) if k == max(KNS_N_PER_MM3) else math.nan
+            for s, c, o, k in zip(
+                table["static_du_mm"],
+                table["compliant_du_mm"],
+                table.get("compliant_other_du_mm", np.nan),
+                table["kn_N_per_mm3"],
+            )
+        ]
+        table["static_compliant_gap_pct"] = [
+            gap_pct(s, c) for s, c in zip(table["static_du_mm"], table["compliant_branch_du_mm"])
+        ]
     table["rigid_branch_du_mm"] = [
         nearest_branch_mm(s, r, o)
         for s, r, o in zip(table["static_du_mm"], table["rigid_du_mm"], table.get("rigid_other_du_mm", np.nan))
