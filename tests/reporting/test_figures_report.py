@@ -151,3 +151,10 @@ def test_a_figure_saved_twice_gives_the_same_bytes(tmp_path):
         written.append(figures.save_figure(fig, tmp_path / name))
     (pdf1, png1), (pdf2, png2) = written
     assert pdf1.read_bytes() == pdf2.read_bytes() and png1.read_bytes() == png2.read_bytes()
+
+
+def test_two_runs_of_one_name_get_headings_a_reader_can_tell_apart(tmp_path):
+    make_run(tmp_path / "a", name="mine")
+    make_run(tmp_path / "b", name="mine")
+    markdown = write_report([tmp_path / "a", tmp_path / "b"], tmp_path / "out").read_text()
+    assert "## mine (a)" in markdown and "## mine (b)" in markdown

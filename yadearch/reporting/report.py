@@ -63,6 +63,7 @@ class ReportedRun:
     reference_name: str | None
     folder: str
     figures: list[str]
+    title: str = ""  # its heading: the run's name, with its folder where two runs share the name
 
 
 # What each `numerics.contact_model` is, for the report (runs from before the option used CGAL).
@@ -147,7 +148,7 @@ def run_section(reported: ReportedRun) -> list[str]:
     du = summary.du_mm
     hinges = summary.hinge_labels or "—"
     lines = [
-        f"## {summary.name or run.path.name}",
+        f"## {reported.title or summary.name or run.path.name}",
         "",
         f"- run folder: `{run.path}`",
         f"- kn = {summary.kn_N_per_mm3} N/mm3, ks = {summary.ks_N_per_mm3} N/mm3, "
@@ -275,6 +276,9 @@ def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
         figures = write_figures(run, analysis, out / folder / FIGURES_DIR)
         write_csv_atomically(out / folder / "hinges.csv", analysis.hinges)
         reported.append(ReportedRun(run, analysis, match_reference(run.case, run.summary), folder, list(figures)))
+    names = [r.run.summary.name for r in reported]
+    for r in reported:  # two runs of one name get two headings a reader can tell apart
+        r.title = f"{r.run.summary.name} ({r.folder})" if names.count(r.run.summary.name) > 1 else ""
     lines = ["# yadearch report", "", f"Reference: *{reference.PAPER}*.", ""] + overview(reported) + [""]
     for r in reported:
         lines += run_section(r)
