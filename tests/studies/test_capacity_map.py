@@ -32,3 +32,25 @@ def test_a_static_capacity_map_writes_its_files_and_settlement_is_the_strongest_
     assert pd.read_csv(tmp_path / "capacity.csv")["du_mm"].tolist() == pytest.approx(du.tolist())
     assert (tmp_path / "capacity_map.png").stat().st_size > 0
     assert "static engine" in (tmp_path / "capacity.md").read_text()
+
+
+def test_the_rigid_limits_are_solved_once_per_arch_and_direction(tmp_path, monkeypatch):
+    """A rerun reads the rigid limits back (no analysis runs); another arch in the same cache is
+    solved for itself."""
+    import yadearch.studies.capacity_map as capacity_map
+    from yadearch.case.config import preset
+
+    cache, values = tmp_path / "rigid_limits.csv", (0.0, -90.0)
+    case = preset("set2").with_overrides({"n_voussoirs": 15})
+    first = capacity_map.rigid_limits(case, values, cache, progress=False)
+    assert set(first) == set(values) and first[0.0].du_mm is not None
+
+    def no_analysis(*args, **kwargs):
+        raise AssertionError("solved again")
+
+    monkeypatch.setattr(capacity_map, "limit_analysis", no_analysis)
+    again = capacity_map.rigid_limits(case.with_overrides({"kn_N_per_mm3": 100}), values, cache, progress=False)
+    assert {d: r.hinges for d, r in again.items()} == {d: r.hinges for d, r in first.items()}
+    assert [again[d].du_mm for d in values] == pytest.approx([first[d].du_mm for d in values], rel=1e-5)
+    with pytest.raises(AssertionError, match="solved again"):
+        capacity_map.rigid_limits(case.with_overrides({"thickness_mm": 30}), values, cache, progress=False)
