@@ -7,6 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from matplotlib.animation import FFMpegWriter, FuncAnimation, PillowWriter, writers
+from tqdm import tqdm
 
 from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry
@@ -35,16 +36,21 @@ def check_format(fmt: str) -> None:
 
 
 @house_style
-def animate_run(run: RunFolder, analysis: RunAnalysis, out: Path, fmt: str = "mp4", fps: int = FRAMES_PER_S) -> Path:
+def animate_run(
+    run: RunFolder, analysis: RunAnalysis, out: Path, fmt: str = "mp4", fps: int = FRAMES_PER_S, progress: bool = True
+) -> Path:
     """Write the run's movie to `out` (atomically): every state of the loading path, self-weight to
-    collapse, then the collapse held for HOLD_COLLAPSE_S; returns `out`."""
+    collapse, then the collapse held for HOLD_COLLAPSE_S; returns `out`. `progress`: bars over the
+    states read and the frames drawn (a long run's movie takes a minute)."""
     check_format(fmt)
     states = run_states(run)
     geometry = case_geometry(run.case)
     limits = drawing_limits(geometry)
     path = list(states.path())
     frames = path + [path[-1]] * int(HOLD_COLLAPSE_S * fps)
-    views = {i: state_view(run, geometry, analysis, i) for i in path}
+    views = {
+        i: state_view(run, geometry, analysis, i) for i in tqdm(path, desc="states", unit="state", disable=not progress)
+    }
     fig = new_figure(height_cm=FRAME_CM[1], width_cm=FRAME_CM[0])
     ax = fig.add_subplot()
     title = f"{run.summary.name or run.path.name}: {run.summary.engine} engine" + (
@@ -62,10 +68,11 @@ def animate_run(run: RunFolder, analysis: RunAnalysis, out: Path, fmt: str = "mp
 
     def save(temporary: Path) -> None:
         named = temporary.with_name(f"{temporary.stem}.{fmt}")  # the writers pick the container by suffix
-        try:
-            movie.save(str(named), writer=writer, dpi=FRAME_DPI)
-            named.replace(temporary)
-        finally:
-            named.unlink(missing_ok=True)
+        with tqdm(total=len(frames), desc="frames", unit="frame", disable=not progress) as bar:
+            try:
+                movie.save(str(named), writer=writer, dpi=FRAME_DPI, progress_callback=lambda i, n: bar.update(1))
+                named.replace(temporary)
+            finally:
+                named.unlink(missing_ok=True)
 
     return write_atomically(Path(out), save)
