@@ -28,7 +28,7 @@ def run_engine(engine: str, rows: list[dict], runs: Path, jobs: int):
     """One engine's campaign of the atlas (summary-only run folders), resumed where it stopped."""
     base = preset("set2").with_overrides({"numerics.engine": engine, "numerics.run_files": "summary"})
     with open_pool(jobs) as pool:
-        return run_campaign(base, rows, runs / engine, pool, timeout_s=RUN_TIMEOUT_S[engine])
+        return run_campaign(base, rows, runs / engine, pool, timeout_s=RUN_TIMEOUT_S[engine], retry_failed=False)
 
 
 def main() -> int:
