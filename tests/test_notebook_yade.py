@@ -10,12 +10,6 @@ from notebook_check import assert_same_meaning, execute
 pytestmark = [needs_yade, pytest.mark.yade]
 
 
-@pytest.mark.xfail(
-    reason="the DEM now shows the collapse where the failing hold stopped (one runaway bound, 12 mm) instead of "
-    "10 mm further: the committed quickstart's hinge rotations (186/533/270/90 mrad) are 210/562/282/84 now; "
-    "the notebook is to be re-executed (scripts/run_notebooks.py examples/quickstart.ipynb)",
-    strict=False,
-)
 def test_the_quickstart_notebook_runs_and_says_what_it_committed(tmp_path):
     committed, executed = execute("quickstart.ipynb", tmp_path)
     assert_same_meaning(committed, executed)
