@@ -68,8 +68,8 @@ def relaxation_jump(summary: RunSummary, fraction: float = JUMP_FRACTION, near_l
     move, delta, step = max(jumps)
     return (
         f"the relaxation after the {step:.2f} mm increment to {delta:.2f} mm moved a block {move:.2f} mm "
-        f"({len(jumps)} such before {near_limit:g} du): the arch jumped rather than followed its path, so "
-        "du may depend on numerics.runaway_mm and the increments"
+        f"({len(jumps)} such before {near_limit:g} du): the arch snapped rather than followed its path there "
+        "(survived: du_first_mm and summary.json's snaps mark the snaps, du is where the path ends)"
     )
 
 
