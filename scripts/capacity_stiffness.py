@@ -5,7 +5,7 @@ neither may move du), beside the rigid march and the DEM's map: reports/movement
 
     .venv/bin/python scripts/capacity_stiffness.py [--out reports/movements/capacity/stiffness] [--jobs 2]
 
-The rigid limits are kept in OUT/rigid.csv and reused (they take minutes; kn plays no part in them).
+The rigid limits are kept in OUT/rigid_limits.csv and reused (they take minutes; kn plays no part in them).
 """
 
 from __future__ import annotations
@@ -20,9 +20,9 @@ from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import preset
 from yadearch.plotting.capacity import stiffness_figure
-from yadearch.studies.capacity import RigidLimit, directions
+from yadearch.studies.capacity import directions
 from yadearch.studies.capacity_explained import stiffness_markdown
-from yadearch.studies.capacity_map import rigid_limits, run_capacity
+from yadearch.studies.capacity_map import RIGID_CACHE, rigid_limits, run_capacity
 from yadearch.studies.executors import open_pool
 from yadearch.studies.sessions import campaign_wall_s
 
@@ -33,40 +33,6 @@ DEM_MAP = Path("reports/movements/capacity/capacity.csv")
 FIGURE = "capacity_stiffness"
 
 
-def cached_rigid(path: Path) -> dict[float, RigidLimit]:
-    """The rigid limit of every direction, from `path` if it holds them all, else computed and kept."""
-    values = directions(STEP_DEG)
-    if path.is_file():
-        table = pd.read_csv(path).fillna({"hinges": "", "other_hinges": ""})
-        if set(values) <= set(table["direction_deg"]):
-            return {
-                r.direction_deg: RigidLimit(
-                    None if pd.isna(r.du_mm) else r.du_mm,
-                    r.hinges,
-                    None if pd.isna(r.other_du_mm) else r.other_du_mm,
-                    r.other_hinges,
-                )
-                for r in table.itertuples()
-            }
-    limits = rigid_limits(preset("set2"), values)
-    write_text_atomically(
-        path,
-        pd.DataFrame(
-            [
-                {
-                    "direction_deg": d,
-                    "du_mm": r.du_mm,
-                    "hinges": r.hinges,
-                    "other_du_mm": r.other_du_mm,
-                    "other_hinges": r.other_hinges,
-                }
-                for d, r in limits.items()
-            ]
-        ).to_csv(index=False),
-    )
-    return limits
-
-
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", type=Path, default=Path("reports/movements/capacity/stiffness"))
@@ -74,7 +40,7 @@ def main() -> int:
     parser.add_argument("--jobs", type=int, default=2)
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
-    rigid = cached_rigid(args.out / "rigid.csv")
+    rigid = rigid_limits(preset("set2"), directions(STEP_DEG), cache=args.out / RIGID_CACHE)
     tables = []
     with open_pool(args.jobs) as pool:
         for kn in KNS:

@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 import pytest
+from test_collapse_mechanics import SPREADING_SEMICIRCLE
 
 from yadearch.case.config import ArchCase, preset
 from yadearch.case.mechanics import runaway_length
@@ -19,14 +20,6 @@ from yadearch.solve.stages import Outcome
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.statics import static_arch
 
-SPREADING_SEMICIRCLE = {
-    "embrace_deg": 180.0,
-    "internal_radius_mm": 277.5,
-    "thickness_mm": 45.0,
-    "friction_deg": 60.0,
-    "support_direction_deg": 0.0,
-    "kn_N_per_mm3": 100.0,
-}
 INVARIANCE = 0.01  # the standard: a result that moves more than 1 % is not a result
 PATH_SETTINGS = ("first_increment_mm", "max_increment_mm", "du_tolerance_mm")
 DEFAULT_SOLVER = SolverSettings()

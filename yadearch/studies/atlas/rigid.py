@@ -4,7 +4,9 @@ keystone's tie where the movement has a mirror image, kept in a table that a rer
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -48,14 +50,20 @@ def _mm(value: float | None) -> float:
 
 
 def rigid_table(base: ArchCase, geometries: list[Geometry], out: Path, jobs: int = 1) -> pd.DataFrame:
-    """OUT/rigid.csv: the rigid march of every geometry, computed on `jobs` processes for those the
-    table does not hold yet (a rerun reuses what an earlier one computed)."""
-    path = Path(out) / TABLE
+    """OUT/rigid.csv: the rigid march of every geometry (`_kept_rows`)."""
+    return _kept_rows(Path(out) / TABLE, geometries, partial(rigid_row, base), jobs)
+
+
+def _kept_rows(
+    path: Path, geometries: list[Geometry], row: Callable[[Geometry], dict[str, Any]], jobs: int
+) -> pd.DataFrame:
+    """The rows of `geometries` in the table at `path`: those it does not hold yet computed by `row`
+    on `jobs` processes and added to it, so that a rerun reuses what an earlier one computed."""
     kept = pd.read_csv(path) if path.is_file() else pd.DataFrame(columns=[KEY])
     missing = [g for g in geometries if g.name not in set(kept[KEY])]
     if missing:
         with ProcessPoolExecutor(max_workers=jobs) as pool:
-            rows = list(pool.map(rigid_row, [base] * len(missing), missing))
+            rows = list(pool.map(row, missing))
         kept = pd.concat([kept, pd.DataFrame(rows)], ignore_index=True) if len(kept) else pd.DataFrame(rows)
         write_csv_atomically(path, kept)
     return kept[kept[KEY].isin({g.name for g in geometries})].reset_index(drop=True)
@@ -84,14 +92,7 @@ def compliant_row(base: ArchCase, geometry: Geometry, kn_N_per_mm3: float) -> di
 def compliant_table(
     base: ArchCase, geometries: list[Geometry], kn_N_per_mm3: float, out: Path, jobs: int = 1
 ) -> pd.DataFrame:
-    """OUT/compliant.csv: the compliant march of every geometry at `kn_N_per_mm3`, reused as
-    `rigid_table` reuses its rows."""
-    path = Path(out) / COMPLIANT_TABLE
-    kept = pd.read_csv(path) if path.is_file() else pd.DataFrame(columns=[KEY])
-    missing = [g for g in geometries if g.name not in set(kept[KEY])]
-    if missing:
-        with ProcessPoolExecutor(max_workers=jobs) as pool:
-            rows = list(pool.map(compliant_row, [base] * len(missing), missing, [kn_N_per_mm3] * len(missing)))
-        kept = pd.concat([kept, pd.DataFrame(rows)], ignore_index=True) if len(kept) else pd.DataFrame(rows)
-        write_csv_atomically(path, kept)
-    return kept[kept[KEY].isin({g.name for g in geometries})].reset_index(drop=True)
+    """OUT/compliant.csv: the compliant march of every geometry at `kn_N_per_mm3` (`_kept_rows`)."""
+    return _kept_rows(
+        Path(out) / COMPLIANT_TABLE, geometries, partial(compliant_row, base, kn_N_per_mm3=kn_N_per_mm3), jobs
+    )
