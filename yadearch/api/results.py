@@ -94,10 +94,10 @@ class RunResult:
     @property
     def references(self) -> list[str]:
         """What this result stands on: the DEM engine (for a DEM run) and, for the paper's case, the paper."""
+        from yadearch.case.paper import paper_mismatch
         from yadearch.case.reference import references_for
-        from yadearch.reporting.paper_match import case_mismatch
 
-        return references_for(dem=self.engine == DEM, paper_case=case_mismatch(self.folder.case) is None)
+        return references_for(dem=self.engine == DEM, paper_case=paper_mismatch(self.folder.case) is None)
 
     @property
     def states(self) -> RunStates:

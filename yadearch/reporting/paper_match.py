@@ -8,16 +8,16 @@ from typing import Any
 
 from yadearch.analysis.tracking import format_interfaces
 from yadearch.case import reference
-from yadearch.case.paper import paper_mismatch as case_mismatch
+from yadearch.case.paper import paper_mismatch
 from yadearch.results.summary import HingeRef, RunSummary
 
 KN_MATCH_RELATIVE = 1e-6  # a run's kn equals a set's within this relative difference
 
 
 def match_reference(case: dict[str, Any], summary: RunSummary) -> str | None:
-    """The paper set a run reproduces: only a run of the paper's case (`case_mismatch`) at a set's kn
+    """The paper set a run reproduces: only a run of the paper's case (`paper_mismatch`) at a set's kn
     (N/mm3); its name plays no part (a run named set1 at kn 0.5 is not the paper's set 1)."""
-    if case_mismatch(case) is not None:
+    if paper_mismatch(case) is not None:
         return None
     kn = summary.kn_N_per_mm3
     for name, ref in reference.SETS.items():

@@ -16,9 +16,9 @@ from yadearch.analysis.mechanism import run_warnings
 from yadearch.analysis.tracking import format_interfaces
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
+from yadearch.case.paper import paper_mismatch
 from yadearch.plotting.run_figures import write_figures
 from yadearch.reporting.paper_match import (
-    case_mismatch,
     hinge_text,
     interface_difference,
     match_hinges,
@@ -201,7 +201,7 @@ def run_section(reported: ReportedRun) -> list[str]:
             + ["", f"Paper, sequence at collapse: {ref['sequence_at_collapse']}.", ""]
         )
     else:
-        mismatch = case_mismatch(run.case)
+        mismatch = paper_mismatch(run.case)
         why = f"its case is not the paper's ({mismatch})" if mismatch else "its name and kn are neither set's"
         lines += [f"No reference: {why}; no comparison with the paper.", ""]
     th = analysis.thresholds

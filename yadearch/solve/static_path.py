@@ -176,7 +176,8 @@ class StaticLoading:
 
     def _descend(self, history: list[StaticState], lam: float) -> Equilibrium:
         """The descent at support position `lam` from the state predicted there; where it finds neither
-        equilibrium nor runaway it goes on from where it stopped (DESCENT_RETRIES times), then starts
+        equilibrium nor runaway it goes on from where it stopped (DESCENT_RETRIES times, and on while
+        each go moves a block FALLING_FRACTION of the runaway bound, up to MAX_DESCENT_GOES), then starts
         again from the last state with only the support moved: a solver's failure is retried before
         it is reported (Verdict.TIMEOUT), never read as collapse."""
         last = history[-1]
