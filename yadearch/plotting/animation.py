@@ -13,7 +13,7 @@ from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry
 from yadearch.atomic import write_atomically
 from yadearch.errors import CaseError, YadearchError
-from yadearch.plotting.run_figures import house_style, new_figure
+from yadearch.plotting.house import house_style, new_figure
 from yadearch.plotting.states import draw_state, drawing_limits, run_states, state_view
 from yadearch.results.rundir import RunFolder
 

@@ -12,7 +12,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
-from yadearch.plotting.run_figures import save_figure
+from yadearch.plotting.house import save_figure
 from yadearch.plotting.sweep import SWEEP_STYLE
 
 PANEL_IN = (1.25, 1.05)  # width, height of one shape x movement panel

@@ -12,7 +12,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
-from yadearch.plotting.run_figures import save_figure
+from yadearch.plotting.house import save_figure
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 
 RADIAL_TICKS = 4  # du rings of the polar plot

@@ -11,7 +11,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 
 from yadearch.case import reference
-from yadearch.plotting.run_figures import save_figure
+from yadearch.plotting.house import save_figure
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 
 FIGURE_HEIGHT_IN = 4.6

@@ -14,7 +14,7 @@ from matplotlib.figure import Figure
 
 from yadearch.analysis.samples import BAND, du_statistics, hinge_frequencies
 from yadearch.model.hinges import PAPER_LABELS
-from yadearch.plotting.run_figures import save_figure
+from yadearch.plotting.house import save_figure
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 
 HINGE_SIDES = {"A": "intrados", "B": "extrados", "C": "extrados, moving support", "D": "extrados, fixed support"}

@@ -1,11 +1,7 @@
 """Figures of a run for a paper: the arch at collapse with its hinges, support reactions, hinge
 openings and crown displacement against the support displacement delta ("settlement" when it moves
 straight down).
-
-One style for all: 8 pt text, sized for a journal column (8.5 cm; `width_cm` for wider), constrained
-layout so no label is clipped, written as vector PDF and 300 dpi PNG. Uses matplotlib's Figure
-directly (no pyplot), so it never touches an interactive backend.
-"""
+(in the house style, `plotting.house`)."""
 
 from __future__ import annotations
 
@@ -20,47 +16,24 @@ from matplotlib.patches import Polygon
 
 from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
-from yadearch.atomic import write_atomically
 from yadearch.errors import RunFolderError
-from yadearch.model.hinges import PAPER_LABELS
 from yadearch.plotting.hinge_marks import mark_hinge
+from yadearch.plotting.house import (
+    AXIS_MARGINS_CM,
+    COLUMN_CM,
+    LABEL_ROOM,
+    hinge_colour,
+    house_style,
+    new_figure,
+    save_figure,
+)
+from yadearch.plotting.states import plot_strip
 from yadearch.results.rundir import STIFFNESS_COLUMN, RunFolder
 from yadearch.solve.stages import Stage
 
-CM = 1 / 2.54  # inches
-COLUMN_CM = 8.5
-PNG_DPI = 300
-STYLE = {
-    "font.size": 8,
-    "axes.labelsize": 8,
-    "axes.titlesize": 8,
-    "legend.fontsize": 7,
-    "xtick.labelsize": 7,
-    "ytick.labelsize": 7,
-    "lines.linewidth": 1.0,
-    "axes.linewidth": 0.6,
-    "xtick.major.width": 0.6,
-    "ytick.major.width": 0.6,
-    "legend.frameon": False,
-    "pdf.fonttype": 42,
-    "ps.fonttype": 42,
-    "savefig.dpi": PNG_DPI,
-}
-HINGE_COLOURS = ["#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9"]  # Okabe-Ito
-THRUST_COLOUR = "#B2182B"  # the thrust line: a red no hinge letter takes
 LEFT_COLOUR, RIGHT_COLOUR = "#0072B2", "#D55E00"
 PAST_DU_ALPHA = 0.35
-LABEL_ROOM = 0.15  # fraction of the arch's width left free on each side for hinge labels at the supports
-AXIS_MARGINS_CM = (1.3, 1.1)  # room the axis labels and ticks take across and down an equal-aspect plot
 SETTLEMENT_DEG = -90.0  # a support moving straight down settles; any other direction is a displacement
-
-
-def hinge_colour(letter: str, extra: int = 0) -> str:
-    """The colour of a hinge in every figure and movie: one per paper letter A-D, the next colours
-    for hinges without a letter (the `extra`-th of them)."""
-    if letter in PAPER_LABELS:
-        return HINGE_COLOURS[PAPER_LABELS.index(letter)]
-    return HINGE_COLOURS[len(PAPER_LABELS) + extra % (len(HINGE_COLOURS) - len(PAPER_LABELS))]
 
 
 def delta_label(case: dict) -> str:
@@ -77,35 +50,6 @@ def delta_label(case: dict) -> str:
         direction = 180.0 - direction - (360.0 if direction < 0.0 else 0.0)  # the mirror image, in (-180, 180]
     movement = "settlement" if direction == SETTLEMENT_DEG else f"displacement (at {direction:g}°)"
     return rf"{who} {movement} $\delta$ (mm)"
-
-
-def new_figure(height_cm: float, width_cm: float = COLUMN_CM) -> Figure:
-    """A figure in the house style at its print size."""
-    fig = Figure(figsize=(width_cm * CM, height_cm * CM), layout="constrained")
-    fig.get_layout_engine().set(w_pad=0.02, h_pad=0.02)
-    return fig
-
-
-def save_figure(fig: Figure, stem: Path) -> tuple[Path, Path]:
-    """Write `stem`.pdf (vector, without a creation date, so that regenerated evidence differs only
-    where its content does) and `stem`.png (300 dpi); returns both paths."""
-    stem.parent.mkdir(parents=True, exist_ok=True)
-    pdf, png = stem.with_suffix(".pdf"), stem.with_suffix(".png")
-    write_atomically(pdf, lambda tmp: fig.savefig(tmp, format="pdf", metadata={"CreationDate": None}))
-    write_atomically(png, lambda tmp: fig.savefig(tmp, format="png", dpi=PNG_DPI))
-    return pdf, png
-
-
-def house_style(draw):
-    """Run a figure builder under the house rcParams."""
-    import matplotlib
-
-    def wrapper(*args, **kwargs):
-        with matplotlib.rc_context(STYLE):
-            return draw(*args, **kwargs)
-
-    wrapper.__name__, wrapper.__doc__ = draw.__name__, draw.__doc__
-    return wrapper
 
 
 def loading_path(series: pd.DataFrame) -> pd.DataFrame:
@@ -303,7 +247,5 @@ def write_figures(run: RunFolder, analysis: RunAnalysis, out: Path) -> dict[str,
     if run.snapshots.get("collapse") or run.snapshots.get("end"):
         figures = {"collapse": plot_collapse(run, analysis, out / "collapse"), **figures}
     if run.states is not None:  # runs written before states.npz have no strip
-        from yadearch.plotting.states import plot_strip  # it draws with this module's helpers
-
         figures["strip"] = plot_strip(run, analysis, out / "strip")
     return figures

@@ -20,7 +20,7 @@ from yadearch.analysis.run import default_thresholds
 from yadearch.errors import RunFolderError
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.hinges import Hinge, hinge_rotation, hinges_at
-from yadearch.plotting.run_figures import THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
+from yadearch.plotting.house import THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
 from yadearch.results.rundir import RunFolder
 from yadearch.results.states import RunStates
 

@@ -14,7 +14,7 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
 from yadearch.case import reference
-from yadearch.plotting.run_figures import save_figure
+from yadearch.plotting.house import save_figure
 
 COLUMN_WIDTH_IN = 3.5  # one journal column
 ENGINE_LABELS = {"dem": "DEM", "static": "static"}  # numerics.engine as a figure names it

@@ -20,7 +20,7 @@ from yadearch.case.mechanics import arch_geometry
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.hinges import paper_labels
 from yadearch.plotting.hinge_marks import mark_hinge
-from yadearch.plotting.run_figures import (
+from yadearch.plotting.house import (
     AXIS_MARGINS_CM,
     COLUMN_CM,
     LABEL_ROOM,
