@@ -12,9 +12,11 @@ def test_rows_cover_every_kn_and_variant_and_name_them():
     rows = study_rows(preset("set2"), (0.1, 100.0))
     assert len(rows) == 2 * len(VARIANTS)
     names = {r["run"] for r in rows}
-    assert {"kn0.1_base", "kn100_timestep_x0.6", "kn100_friction_80"} <= names
-    small = next(r for r in rows if r["run"] == "kn0.1_timestep_x0.6")
-    assert small["timestep_safety"] == 0.6 * preset("set2").numerics.timestep_safety
+    assert {"kn0.1_base", "kn100_timestep_x0.5", "kn100_rate_x2", "kn100_friction_80"} <= names
+    small = next(r for r in rows if r["run"] == "kn0.1_timestep_x0.5")
+    assert small["timestep_safety"] == 0.5 * preset("set2").numerics.timestep_safety
+    slow = next(r for r in rows if r["run"] == "kn0.1_rate_x0.5")
+    assert slow["support_rate_mm_per_s"] == 0.5 * preset("set2").numerics.support_rate_mm_per_s
 
 
 def test_hinges_may_move_one_interface_not_two_nor_change_side():
@@ -47,8 +49,17 @@ def results(du: dict[str, float], hinges: dict[str, str], slip: float = 0.0) -> 
 def test_a_numerical_variant_beyond_one_percent_fails_the_kn():
     du = {v: 88.0 for v in VARIANTS}
     assert verdicts(robustness_table(results(du, {})))["verdict"].tolist() == ["PASS"]
-    du["damping_0.3"] = 89.0  # +1.1 %
+    du["damping_x2"] = 89.0  # +1.1 %
     assert verdicts(robustness_table(results(du, {})))["verdict"].tolist() == ["FAIL"]
+
+
+def test_a_numerical_variant_that_moves_the_first_loss_of_stability_fails_the_kn():
+    table = results({v: 88.0 for v in VARIANTS}, {}).assign(du_first_mm=60.0)
+    assert verdicts(robustness_table(table))["verdict"].tolist() == ["PASS"]
+    table.loc[table["run"] == "kn5.2_rate_x0.5", "du_first_mm"] = 61.0  # +1.7 %
+    verdict = verdicts(robustness_table(table))
+    assert verdict["verdict"].tolist() == ["FAIL"]
+    assert verdict["du_first_spread"].iloc[0] > 0.01
 
 
 def test_friction_may_move_du_only_where_a_joint_slides():
@@ -59,18 +70,23 @@ def test_friction_may_move_du_only_where_a_joint_slides():
 
 def test_a_moved_hinge_fails_the_kn():
     du = {v: 88.0 for v in VARIANTS}
-    table = robustness_table(results(du, {"timestep_x0.6": "1E 12I 29E 56E"}))
-    assert not table.set_index("variant").loc["timestep_x0.6", "same_hinges"]
+    table = robustness_table(results(du, {"timestep_x0.5": "1E 12I 29E 56E"}))
+    assert not table.set_index("variant").loc["timestep_x0.5", "same_hinges"]
     assert verdicts(table)["verdict"].tolist() == ["FAIL"]
 
 
 def test_the_static_engine_takes_only_the_variants_that_can_move_its_answer():
-    """Time step and damping cannot move a static result: not run, so never reported as passing;
-    the ramp keeps its halved first increment, which the static engine does read."""
+    """Time step, damping, rate and the DEM's equilibrium tolerance cannot move a static result: not
+    run, so never reported as passing; the ramp keeps its halved first increment, which the static
+    engine does read."""
     from yadearch.case.config import preset
     from yadearch.studies.robustness import study_rows
 
     static = {r["run"]: r for r in study_rows(preset("set2").with_overrides({"engine": "static"}), (5.2,))}
-    assert set(static) == {"kn5.2_base", "kn5.2_increment_x0.5", "kn5.2_ramp", "kn5.2_friction_60", "kn5.2_friction_80"}
+    assert set(static) == {
+        f"kn5.2_{v}"
+        for v in ("base", "increment_x0.5", "increment_x2", "runaway_x0.5", "runaway_x2", "ramp")
+        + ("friction_60", "friction_80")
+    }
     assert "support_acceleration_mm_per_s2" not in static["kn5.2_ramp"]
-    assert len(study_rows(preset("set2"), (5.2,))) == 8  # the DEM takes all eight
+    assert len(study_rows(preset("set2"), (5.2,))) == len(VARIANTS)  # the DEM takes them all
