@@ -11,6 +11,13 @@ from yadearch.case.config import ArchCase, as_ran, preset
 
 PAPER_SECTIONS = ("geometry", "material", "loading", "imperfections")  # what makes a run the paper's case
 NOT_PHYSICAL = {"max_support_displacement_mm"}  # a run's stopping point, not part of the arch or its loading
+# the material and joint values a case takes from the paper's 1:10 model when it does not give its own
+MODEL_VALUES = (
+    ("material", "density_g_per_cm3"),
+    ("material", "friction_deg"),
+    ("interface", "kn_N_per_mm3"),
+    ("interface", "ks_over_kn"),
+)
 
 
 def paper_mismatch(case: dict[str, Any]) -> str | None:
@@ -28,3 +35,27 @@ def paper_mismatch(case: dict[str, Any]) -> str | None:
 def is_paper_arch(case: ArchCase) -> bool:
     """Whether `case` is the paper's case at any kn (`paper_mismatch`)."""
     return paper_mismatch(case.to_dict()) is None
+
+
+def paper_model_values(case: ArchCase) -> dict[str, Any] | None:
+    """On an arch whose geometry is not the paper's, the material and joint parameters still at the
+    paper's 1:10 model's values (the defaults), by qualified name: a new arch must not take them
+    unawares. None for the paper's geometry, or when the case gives every one of them."""
+    ran, model = case.to_dict(), ArchCase().to_dict()
+    if ran["geometry"] == model["geometry"]:
+        return None
+    taken = {
+        f"{section}.{key}": ran[section][key]
+        for section, key in MODEL_VALUES
+        if ran[section][key] == model[section][key]
+    }
+    return taken or None
+
+
+def model_values_text(taken: dict[str, Any]) -> str:
+    """The warning for `paper_model_values`' answer, one line."""
+    values = ", ".join(f"{name} {value:g}" for name, value in taken.items())
+    return (
+        f"this arch is not the paper's but takes the paper's 1:10 model's values (the defaults): {values}; "
+        "give your arch's own in the case file ([material], [interface]) or with --set"
+    )

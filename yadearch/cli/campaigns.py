@@ -275,7 +275,8 @@ def robustness(
     ).iterrows():
         click.echo(
             f"kn {row.kn_N_per_mm3:g}: base du {row.base_du_mm:.2f} mm ({row.base_hinges}), numerics "
-            f"spread {row.numerics_spread:.2%} (du_first {row.du_first_spread:.2%}), hinges {'kept' if row.hinges_kept else 'moved'}, "
+            f"spread {row.numerics_spread:.2%} (du_first {row.du_first_spread:.2%}), "
+            f"hinges {'kept' if row.hinges_kept else 'moved'}, "
             f"friction moves du {row.friction_move:.2%}: {row.verdict}"
         )
     click.echo(f"-> {folder / 'robustness.csv'}, {folder / 'robustness.md'}")

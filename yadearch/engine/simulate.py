@@ -14,6 +14,7 @@ import time
 from pathlib import Path
 
 from yadearch.case.config import ArchCase, load_case
+from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
@@ -50,6 +51,9 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
         f"support speed={case.support_speed_mm_per_s:.4g} mm/s, damping={case.numerics.damping}, "
         f"contacts={case.numerics.contact_model}"
     )
+    taken = paper_model_values(case)
+    if taken:
+        log(f"[{case.name}] warning: {model_values_text(taken)}")
     origin = provenance(str(yade.config.version))  # now: the code that runs was imported at start
     runner = Runner(case, log=log)
     log(f"[{case.name}] dt={runner.scene.dt:.3e} s, {len(runner.scene.body_ids)} bodies")
@@ -69,6 +73,7 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
         loading=loading_info(case.loading, path_end_mm(case, runner.movement)),
         collapse_criterion=criterion_text(case.numerics),
         imperfections=imperfections.summary() if imperfections is not None else None,
+        paper_model_values=taken,
         **origin,
     )
     write_run(

@@ -34,6 +34,7 @@ OPTIONAL_KEYS = frozenset(
         "support_speed_mm_per_s",
         "imperfections",
         "unused_parameters",
+        "paper_model_values",
         "relaxations",
         "snaps",
         "descents",
@@ -112,6 +113,7 @@ class RunSummary:
     loading: LoadingInfo | None = None
     collapse_criterion: str = ""
     unused_parameters: dict[str, Any] | None = None
+    paper_model_values: dict[str, Any] | None = None  # case.paper: the 1:10 model's values a new arch took
     selfweight: dict[str, Any] = field(default_factory=dict)
     imperfections: dict[str, Any] | None = None
     increments: int = 0

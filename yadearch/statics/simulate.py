@@ -11,6 +11,7 @@ from typing import Any
 
 from yadearch.case.config import ArchCase, load_case
 from yadearch.case.mechanics import runaway_length, standing_parameters
+from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
@@ -60,6 +61,9 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         f"[{case.name}] static engine: kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
         f"{arch.n_blocks} blocks; not used by this engine: {', '.join(unused)}"
     )
+    taken = paper_model_values(case)
+    if taken:
+        log(f"[{case.name}] warning: {model_values_text(taken)}")
     solver_start = time.time()
     selfweight = _selfweight(case, loading, records, log)
 
@@ -89,6 +93,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         loading=loading_info(case.loading, end_mm),
         collapse_criterion=criterion_text(case),
         unused_parameters=unused,
+        paper_model_values=taken,
         selfweight=selfweight,
         imperfections=arch.imperfections.summary() if arch.imperfections is not None else None,
         **collapse_fields(path, arch.movement, loading.first_loss),
