@@ -213,6 +213,109 @@ def _tangent_kernel(
     return normal_force, shear_force, point, compressed, plastic_slip, block_force, block_torque, local
 
 
+def free_state(
+    table: JointTable,
+    law: JointLaw,
+    u: np.ndarray,
+    u_before: np.ndarray,
+    shear_before: np.ndarray,
+    weight: np.ndarray,
+    gravity: float,
+    length: float,
+    band: int,
+) -> tuple[JointTangent, np.ndarray, np.ndarray]:
+    """In one compiled call: the joints at generalised coordinates `u` (x, y, rotation x `length`
+    per block) having moved from `u_before`, the residual R = joint forces + `gravity` x the weights
+    on the free blocks (all but the first and last) and their tangent K in band storage."""
+    *forces, local, residual, stiffness = _free_state_kernel(
+        *table.kernel_geometry(),
+        *law.kernel_constants(),
+        u,
+        u_before,
+        shear_before,
+        *table.kernel_gaps(),
+        weight,
+        gravity,
+        length,
+        band,
+    )
+    return JointTangent(JointForces(*forces), local), residual, stiffness
+
+
+@njit(cache=True)
+def _free_state_kernel(
+    left,
+    right,
+    left_intrados,
+    right_intrados,
+    normal0,
+    along0,
+    length,
+    handedness,
+    n_blocks,
+    kn_depth,
+    ks_depth,
+    tan_friction,
+    u,
+    u_before,
+    shear_before,
+    gap_fraction,
+    gap,
+    imperfect,
+    weight,
+    gravity,
+    lever,
+    band,
+):
+    """`_tangent_kernel` at the poses of `u`, then the free blocks' residual and band tangent."""
+    placed, before = u.reshape(-1, BLOCK_DOFS), u_before.reshape(-1, BLOCK_DOFS)
+    pos, pos_before = np.ascontiguousarray(placed[:, 0:2]), np.ascontiguousarray(before[:, 0:2])
+    rot, rot_before = placed[:, 2] / lever, before[:, 2] / lever
+    outputs = _tangent_kernel(
+        left,
+        right,
+        left_intrados,
+        right_intrados,
+        normal0,
+        along0,
+        length,
+        handedness,
+        n_blocks,
+        kn_depth,
+        ks_depth,
+        tan_friction,
+        pos,
+        rot,
+        pos_before,
+        rot_before,
+        shear_before,
+        gap_fraction,
+        gap,
+        imperfect,
+    )
+    block_force, block_torque, local = outputs[5], outputs[6], outputs[7]
+    residual = np.empty(BLOCK_DOFS * (n_blocks - 2))
+    for b in range(1, n_blocks - 1):  # joint forces + weights, as generalised forces (torque / lever)
+        k = BLOCK_DOFS * (b - 1)
+        residual[k] = block_force[b, 0] + 0.0
+        residual[k + 1] = block_force[b, 1] + -gravity * weight[b]
+        residual[k + 2] = block_torque[b] / lever + 0.0
+    whole = assemble_band(local, left, right, n_blocks, lever, band)
+    stiffness = np.ascontiguousarray(whole[:, BLOCK_DOFS : BLOCK_DOFS * (n_blocks - 1)])
+    return (
+        outputs[0],
+        outputs[1],
+        outputs[2],
+        outputs[3],
+        outputs[4],
+        block_force,
+        block_torque,
+        local,
+        residual,
+        stiffness,
+    )
+
+
 @njit(cache=True)
 def assemble_band(local, left, right, n_blocks, length, band):
     """The blocks' tangent K = -dF/du (N/m) from the joints' local tangents, each block's degrees of

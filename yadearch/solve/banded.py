@@ -1,13 +1,16 @@
-"""Linear algebra on the arch's block-tridiagonal tangent (pure scipy): a block couples only with its
-two neighbours, so with three degrees of freedom a block K is banded, five diagonals either side, and
-is kept in LAPACK's general band storage (ab[BAND + i - j, j] = K[i, j]; a principal block of K is a
-slice of its columns). Banded solves, the stability test by a banded Cholesky factorisation and the
-softest mode by a banded eigensolver cost a few per cent of their dense counterparts."""
+"""Linear algebra on the arch's block-tridiagonal tangent (numba and scipy): a block couples only with
+its two neighbours, so with three degrees of freedom a block K is banded, five diagonals either side,
+and is kept in LAPACK's general band storage (ab[BAND + i - j, j] = K[i, j]; a principal block of K
+is a slice of its columns). Solves are LAPACK's banded LU with partial pivoting (dgbtf2, dgbtrs)
+compiled with numba, called thousands of times a run without scipy's checks and copies; the stability
+test by a banded Cholesky factorisation and the softest mode by a banded eigensolver (scipy) run once
+an accepted state."""
 
 from __future__ import annotations
 
 import numpy as np
 import scipy.linalg
+from numba import njit
 
 BAND = 5  # diagonals either side of the main one: 3 degrees of freedom a block, neighbours only
 
@@ -42,9 +45,62 @@ def symmetric_upper(ab: np.ndarray) -> np.ndarray:
 
 def solve(ab: np.ndarray, b: np.ndarray, shift: float = 0.0) -> np.ndarray:
     """x with (K + shift I) x = b, K in general band storage; LinAlgError if singular."""
-    shifted = ab.copy()
-    shifted[BAND] += shift
-    return scipy.linalg.solve_banded((BAND, BAND), shifted, b, check_finite=False)
+    x, singular = band_solve(ab, b, shift)
+    if singular:
+        raise np.linalg.LinAlgError("singular tangent (an exactly zero pivot)")
+    return x
+
+
+@njit(cache=True)
+def band_solve(ab, b, shift):
+    """(x, singular) with (K + shift I) x = b, K (n x n) in general band storage with BAND diagonals
+    either side: LU with partial pivoting in LAPACK's layout (its dgbtf2 then dgbtrs), the upper factor
+    widened by BAND rows for the fill-in of row exchanges."""
+    n = ab.shape[1]
+    kl, ku = BAND, BAND
+    kv = kl + ku
+    lu = np.zeros((2 * kl + ku + 1, n))
+    lu[kl:, :] = ab
+    for j in range(n):
+        lu[kv, j] += shift
+    x = b.copy()
+    pivots = np.zeros(n, np.int64)
+    last = 0  # the last column the row exchanges so far reach
+    for j in range(n):
+        below = min(kl, n - 1 - j)
+        best, pivot = abs(lu[kv, j]), 0
+        for r in range(1, below + 1):
+            if abs(lu[kv + r, j]) > best:
+                best, pivot = abs(lu[kv + r, j]), r
+        pivots[j] = j + pivot
+        if lu[kv + pivot, j] == 0.0:
+            return x, True
+        last = max(last, min(j + ku + pivot, n - 1))
+        if pivot != 0:
+            for c in range(j, last + 1):
+                a, z = kv + j - c, kv + j + pivot - c
+                lu[a, c], lu[z, c] = lu[z, c], lu[a, c]
+        if below > 0:
+            inverse = 1.0 / lu[kv, j]
+            for r in range(1, below + 1):
+                lu[kv + r, j] *= inverse
+            for c in range(j + 1, last + 1):
+                factor = lu[kv + j - c, c]
+                if factor != 0.0:
+                    for r in range(1, below + 1):
+                        lu[kv + j + r - c, c] -= lu[kv + r, j] * factor
+    for j in range(n - 1):  # L: the exchanges and multipliers in order
+        below = min(kl, n - 1 - j)
+        p = pivots[j]
+        if p != j:
+            x[p], x[j] = x[j], x[p]
+        for r in range(1, below + 1):
+            x[j + r] -= lu[kv + r, j] * x[j]
+    for j in range(n - 1, -1, -1):  # U: upper triangular with kv diagonals above the main one
+        x[j] /= lu[kv, j]
+        for i in range(max(0, j - kv), j):
+            x[i] -= lu[kv + i - j, j] * x[j]
+    return x, False
 
 
 def positive_definite(ab: np.ndarray) -> bool:

@@ -87,23 +87,22 @@ class Solver:
 
     def state(
         self, u: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray, gravity: float = 1.0
-    ) -> tuple[JointTangent, np.ndarray]:
-        """Joints at `u` and the free blocks' residual R = joint forces + weights (generalised)."""
-        joints = self.arch.evaluate(u, u_before, shear_before)
+    ) -> tuple[JointTangent, np.ndarray, np.ndarray]:
+        """Joints at `u`, the free blocks' residual R = joint forces + weights (generalised) and their
+        tangent K in band storage (`solve.banded`), in one compiled call."""
         self.evaluations += 1
-        residual = (self.arch.generalised_forces(joints) + self.arch.loads(gravity))[self.free]
-        return joints, residual
+        return self.arch.free_state(u, u_before, shear_before, gravity)
 
     def result(
         self,
         u: np.ndarray,
         joints: JointTangent,
         residual: np.ndarray,
+        stiffness: np.ndarray,
         iterations: int,
         start: np.ndarray,
         verdict: Verdict = Verdict.STABLE,
     ) -> Equilibrium:
-        stiffness = self.free_stiffness(joints)
         return Equilibrium(
             u,
             joints,
@@ -113,11 +112,6 @@ class Solver:
             verdict,
             largest_move(u, start),
         )
-
-    def free_stiffness(self, joints: JointTangent) -> np.ndarray:
-        """K on the free degrees of freedom (the voussoirs': a contiguous block of the whole K), in
-        band storage (`solve.banded`)."""
-        return self.arch.band_stiffness(joints, banded.BAND)[:, self.free[0] : self.free[-1] + 1]
 
     def _capped(self, d: np.ndarray) -> np.ndarray:
         """`d` (free dofs) shortened so that no block moves more than `max_step` in one iteration."""
@@ -129,13 +123,12 @@ class Solver:
     ) -> Equilibrium | None:
         """Newton from `u0` (supports already placed); None if it does not converge."""
         u = u0.copy()
-        joints, residual = self.state(u, u_before, shear_before, gravity)
+        joints, residual, stiffness = self.state(u, u_before, shear_before, gravity)
         for iteration in range(self.settings.newton_iterations):
             self.iterations += 1
             norm = float(np.abs(residual).max())
             if norm <= self.converged:
-                return self.result(u, joints, residual, iteration, u0)
-            stiffness = self.free_stiffness(joints)
+                return self.result(u, joints, residual, stiffness, iteration, u0)
             try:
                 d = self._capped(banded.solve(stiffness, residual))
             except (np.linalg.LinAlgError, ValueError):
@@ -144,13 +137,13 @@ class Solver:
             for _ in range(BACKTRACKS):
                 trial = u.copy()
                 trial[self.free] += alpha * d
-                trial_joints, trial_residual = self.state(trial, u_before, shear_before, gravity)
+                trial_joints, trial_residual, trial_stiffness = self.state(trial, u_before, shear_before, gravity)
                 if float(trial_residual @ trial_residual) <= (1.0 - SUFFICIENT_DECREASE * alpha) * merit:
                     break
                 alpha *= 0.5
             else:
                 return None
-            u, joints, residual = trial, trial_joints, trial_residual
+            u, joints, residual, stiffness = trial, trial_joints, trial_residual, trial_stiffness
         return None
 
     def descend(
@@ -174,15 +167,14 @@ class Solver:
         budget = iterations or self.settings.descent_iterations
         origin = u0 if origin is None else origin
         u = u0.copy()
-        joints, residual = self.state(u, u_before, shear_before, gravity)
-        floor = self.initial_shift(joints)
+        joints, residual, stiffness = self.state(u, u_before, shear_before, gravity)
+        floor = self.initial_shift(stiffness)
         shift = floor
         saddle, returns = None, 0
         for iteration in range(budget):
             self.iterations += 1
-            stiffness = self.free_stiffness(joints)
             if float(np.abs(residual).max()) <= self.converged:
-                found = self.result(u, joints, residual, iteration, origin)
+                found = self.result(u, joints, residual, stiffness, iteration, origin)
                 if found.stable():
                     return found
                 if saddle is not None and largest_move(u, saddle) <= RETURN_FRACTION * self.settings.max_step:
@@ -192,14 +184,14 @@ class Solver:
                 else:
                     saddle, returns = u.copy(), 0
                 u = self._kick(u, stiffness)  # a saddle: leave it along its softest mode
-                joints, residual = self.state(u, u_before, shear_before, gravity)
+                joints, residual, stiffness = self.state(u, u_before, shear_before, gravity)
                 shift = floor
                 continue
             if shift > MAX_SHIFT_RATIO * floor:
                 if banded.positive_definite(stiffness):
                     break  # no step releases energy in a stable well: stuck where no equilibrium is
                 u = self._kick(u, stiffness)  # at a saddle to round-off: leave it along its softest mode
-                joints, residual = self.state(u, u_before, shear_before, gravity)
+                joints, residual, stiffness = self.state(u, u_before, shear_before, gravity)
                 shift = floor
                 continue
             try:
@@ -209,20 +201,21 @@ class Solver:
                 continue
             trial = u.copy()
             trial[self.free] += d
-            trial_joints, trial_residual = self.state(trial, u_before, shear_before, gravity)
+            trial_joints, trial_residual, trial_stiffness = self.state(trial, u_before, shear_before, gravity)
             if not float((residual + trial_residual) @ d) > 0.0:
                 shift *= SHIFT_GROWTH
                 continue
             shift = max(shift * SHIFT_FALL, MIN_SHIFT_RATIO * floor)
-            u, joints, residual = trial, trial_joints, trial_residual
+            u, joints, residual, stiffness = trial, trial_joints, trial_residual, trial_stiffness
             if largest_move(u, origin) > runaway:
-                return self.result(u, joints, residual, iteration + 1, origin, Verdict.RUNAWAY)
-        return self.result(u, joints, residual, budget, origin, Verdict.TIMEOUT)
+                return self.result(u, joints, residual, stiffness, iteration + 1, origin, Verdict.RUNAWAY)
+        return self.result(u, joints, residual, stiffness, budget, origin, Verdict.TIMEOUT)
 
-    def initial_shift(self, joints: JointTangent) -> float:
-        """The descent's first shift (N/m): the stiffest diagonal term, or a whole joint's normal
-        stiffness where nothing touches yet (the pseudo-time of one step is then a joint's own)."""
-        diagonal = np.abs(self.free_stiffness(joints)[banded.BAND])
+    def initial_shift(self, stiffness: np.ndarray) -> float:
+        """The descent's first shift (N/m): the stiffest diagonal term of the free blocks' tangent, or a
+        whole joint's normal stiffness where nothing touches yet (the pseudo-time of one step is then
+        a joint's own)."""
+        diagonal = np.abs(stiffness[banded.BAND])
         law, table = self.arch.law, self.arch.table
         return max(float(diagonal.max()), law.kn * law.depth * float(table.length.max()))
 

@@ -19,7 +19,7 @@ from yadearch.case.support import case_movement
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, block_volume
 from yadearch.model.joint_law import JointLaw, JointTable, joint_table
-from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, assemble_band, joint_tangent
+from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, assemble_band, free_state, joint_tangent
 from yadearch.model.movement import Movement
 from yadearch.solve import banded
 from yadearch.solve.rigid import polygon_centroid, rotate
@@ -102,6 +102,16 @@ class StaticArch:
             shear_before,
         )
 
+    def free_state(
+        self, u: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray, gravity: float = 1.0
+    ) -> tuple[JointTangent, np.ndarray, np.ndarray]:
+        """The joints at `u` (moved from `u_before`, where their shear forces were `shear_before`), the
+        free blocks' residual R = joint forces + `gravity` x the weights (generalised) and their
+        tangent K in band storage (`solve.banded`), in one compiled call."""
+        return free_state(
+            self.table, self.law, u, u_before, shear_before, self.weight, gravity, self.length, banded.BAND
+        )
+
     def generalised_forces(self, joints: JointTangent) -> np.ndarray:
         """The joints' forces on every block as a generalised vector (torques / `length`)."""
         f = joints.forces
@@ -147,3 +157,5 @@ def compile_kernels() -> None:
     u = arch.at_rest()
     joints = arch.evaluate(u, u, np.zeros(len(arch.table.left)))
     arch.band_stiffness(joints, banded.BAND)
+    _, residual, stiffness = arch.free_state(u, u, np.zeros(len(arch.table.left)))
+    banded.band_solve(stiffness, residual, 0.0)  # compiled whether or not blocks at rest give a singular K
