@@ -227,7 +227,7 @@ def free_state(
     """In one compiled call: the joints at generalised coordinates `u` (x, y, rotation x `length`
     per block) having moved from `u_before`, the residual R = joint forces + `gravity` x the weights
     on the free blocks (all but the first and last) and their tangent K in band storage."""
-    *forces, local, residual, stiffness = _free_state_kernel(
+    *forces, local, residual, stiffness = free_state_kernel(
         *table.kernel_geometry(),
         *law.kernel_constants(),
         u,
@@ -243,7 +243,7 @@ def free_state(
 
 
 @njit(cache=True)
-def _free_state_kernel(
+def free_state_kernel(
     left,
     right,
     left_intrados,

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import subprocess
 from pathlib import Path
 from typing import Any
@@ -9,8 +10,10 @@ from typing import Any
 from yadearch import __version__
 
 
+@functools.lru_cache(maxsize=1)
 def git_revision() -> str | None:
-    """The git commit of the yadearch source tree (with '+dirty' if modified), or None."""
+    """The git commit of the yadearch source tree (with '+dirty' if modified), or None: asked once a
+    process, as the code a process runs is the code it imported (a static worker serves a campaign)."""
     root = Path(__file__).resolve().parent.parent
     try:
         rev = subprocess.run(

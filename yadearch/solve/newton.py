@@ -16,8 +16,10 @@ from dataclasses import dataclass, replace
 import numpy as np
 import scipy.linalg
 
+from yadearch.model.joint_law import JointForces
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent
 from yadearch.solve import banded
+from yadearch.solve.newton_kernel import CONVERGED, RUNAWAY, STUCK, TIMEOUT, descent_kernel, newton_kernel
 from yadearch.solve.stages import Verdict
 from yadearch.solve.statics import StaticArch
 
@@ -121,30 +123,33 @@ class Solver:
     def newton(
         self, u0: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray, gravity: float = 1.0
     ) -> Equilibrium | None:
-        """Newton from `u0` (supports already placed); None if it does not converge."""
-        u = u0.copy()
-        joints, residual, stiffness = self.state(u, u_before, shear_before, gravity)
-        for iteration in range(self.settings.newton_iterations):
-            self.iterations += 1
-            norm = float(np.abs(residual).max())
-            if norm <= self.converged:
-                return self.result(u, joints, residual, stiffness, iteration, u0)
-            try:
-                d = self._capped(banded.solve(stiffness, residual))
-            except (np.linalg.LinAlgError, ValueError):
-                return None
-            merit, alpha = float(residual @ residual), 1.0
-            for _ in range(BACKTRACKS):
-                trial = u.copy()
-                trial[self.free] += alpha * d
-                trial_joints, trial_residual, trial_stiffness = self.state(trial, u_before, shear_before, gravity)
-                if float(trial_residual @ trial_residual) <= (1.0 - SUFFICIENT_DECREASE * alpha) * merit:
-                    break
-                alpha *= 0.5
-            else:
-                return None
-            u, joints, residual, stiffness = trial, trial_joints, trial_residual, trial_stiffness
-        return None
+        """Newton from `u0` (supports already placed); None if it does not converge. The iterations
+        run compiled (`solve.newton_kernel`): Newton's step capped at `max_step`, halved up to
+        BACKTRACKS times until |R|^2 falls by SUFFICIENT_DECREASE x the step's fraction."""
+        arch = self.arch
+        u, loops, evaluations, success, state = newton_kernel(
+            *arch.table.kernel_geometry(),
+            *arch.law.kernel_constants(),
+            *arch.table.kernel_gaps(),
+            u0,
+            u_before,
+            shear_before,
+            arch.weight,
+            gravity,
+            arch.length,
+            banded.BAND,
+            self.converged,
+            self.settings.max_step,
+            self.settings.newton_iterations,
+            BACKTRACKS,
+            SUFFICIENT_DECREASE,
+        )
+        self.iterations += loops
+        self.evaluations += evaluations
+        if not success:
+            return None
+        *forces, local, residual, stiffness = state
+        return self.result(u, JointTangent(JointForces(*forces), local), residual, stiffness, loops - 1, u0)
 
     def descend(
         self,
@@ -166,14 +171,22 @@ class Solver:
         began) (Verdict.RUNAWAY), or when the budget is spent or no step releases energy (Verdict.TIMEOUT)."""
         budget = iterations or self.settings.descent_iterations
         origin = u0 if origin is None else origin
-        u = u0.copy()
-        joints, residual, stiffness = self.state(u, u_before, shear_before, gravity)
-        floor = self.initial_shift(stiffness)
-        shift = floor
+        u, iteration, floor, shift = u0.copy(), 0, 0.0, 0.0
         saddle, returns = None, 0
-        for iteration in range(budget):
-            self.iterations += 1
-            if float(np.abs(residual).max()) <= self.converged:
+        while True:
+            u, reached, evaluations, event, floor, shift, state = self._descent_run(
+                u, u_before, shear_before, gravity, floor, shift, origin, runaway, iteration, budget
+            )
+            self.iterations += reached - iteration + (event in (CONVERGED, STUCK))
+            self.evaluations += evaluations
+            iteration = reached
+            *forces, local, residual, stiffness = state
+            joints = JointTangent(JointForces(*forces), local)
+            if event == RUNAWAY:
+                return self.result(u, joints, residual, stiffness, iteration, origin, Verdict.RUNAWAY)
+            if event == TIMEOUT:
+                return self.result(u, joints, residual, stiffness, budget, origin, Verdict.TIMEOUT)
+            if event == CONVERGED:
                 found = self.result(u, joints, residual, stiffness, iteration, origin)
                 if found.stable():
                     return found
@@ -183,41 +196,55 @@ class Solver:
                         return replace(found, verdict=Verdict.STABLE)  # a well, for the dynamics too
                 else:
                     saddle, returns = u.copy(), 0
-                u = self._kick(u, stiffness)  # a saddle: leave it along its softest mode
+            elif banded.positive_definite(stiffness):  # no step releases energy in a stable well:
+                return self.result(u, joints, residual, stiffness, budget, origin, Verdict.TIMEOUT)  # stuck
+            u = self._kick(u, stiffness)  # a saddle (to round-off): leave it along its softest mode
+            shift = floor
+            iteration += 1
+            if iteration >= budget:
                 joints, residual, stiffness = self.state(u, u_before, shear_before, gravity)
-                shift = floor
-                continue
-            if shift > MAX_SHIFT_RATIO * floor:
-                if banded.positive_definite(stiffness):
-                    break  # no step releases energy in a stable well: stuck where no equilibrium is
-                u = self._kick(u, stiffness)  # at a saddle to round-off: leave it along its softest mode
-                joints, residual, stiffness = self.state(u, u_before, shear_before, gravity)
-                shift = floor
-                continue
-            try:
-                d = self._capped(banded.solve(stiffness, residual, shift))
-            except (np.linalg.LinAlgError, ValueError):
-                shift *= SHIFT_GROWTH
-                continue
-            trial = u.copy()
-            trial[self.free] += d
-            trial_joints, trial_residual, trial_stiffness = self.state(trial, u_before, shear_before, gravity)
-            if not float((residual + trial_residual) @ d) > 0.0:
-                shift *= SHIFT_GROWTH
-                continue
-            shift = max(shift * SHIFT_FALL, MIN_SHIFT_RATIO * floor)
-            u, joints, residual, stiffness = trial, trial_joints, trial_residual, trial_stiffness
-            if largest_move(u, origin) > runaway:
-                return self.result(u, joints, residual, stiffness, iteration + 1, origin, Verdict.RUNAWAY)
-        return self.result(u, joints, residual, stiffness, budget, origin, Verdict.TIMEOUT)
+                return self.result(u, joints, residual, stiffness, budget, origin, Verdict.TIMEOUT)
 
-    def initial_shift(self, stiffness: np.ndarray) -> float:
-        """The descent's first shift (N/m): the stiffest diagonal term of the free blocks' tangent, or a
-        whole joint's normal stiffness where nothing touches yet (the pseudo-time of one step is then
-        a joint's own)."""
-        diagonal = np.abs(stiffness[banded.BAND])
-        law, table = self.arch.law, self.arch.table
-        return max(float(diagonal.max()), law.kn * law.depth * float(table.length.max()))
+    def _descent_run(
+        self,
+        u: np.ndarray,
+        u_before: np.ndarray,
+        shear_before: np.ndarray,
+        gravity: float,
+        floor: float,
+        shift: float,
+        origin: np.ndarray,
+        runaway: float,
+        start: int,
+        budget: int,
+    ) -> tuple:
+        """The descent's iterations `start` to `budget` compiled (`solve.newton_kernel.descent_kernel`),
+        to the first event the interpreter decides on (an equilibrium, a stuck shift) or an end."""
+        arch = self.arch
+        return descent_kernel(
+            *arch.table.kernel_geometry(),
+            *arch.law.kernel_constants(),
+            *arch.table.kernel_gaps(),
+            u,
+            u_before,
+            shear_before,
+            arch.weight,
+            gravity,
+            arch.length,
+            banded.BAND,
+            self.converged,
+            self.settings.max_step,
+            floor,
+            shift,
+            origin,
+            runaway,
+            start,
+            budget,
+            SHIFT_GROWTH,
+            SHIFT_FALL,
+            MAX_SHIFT_RATIO,
+            MIN_SHIFT_RATIO,
+        )
 
     def _kick(self, u: np.ndarray, stiffness: np.ndarray) -> np.ndarray:
         """`u` moved along the softest mode of `stiffness`, the way the weights go down."""

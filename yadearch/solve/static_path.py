@@ -13,6 +13,7 @@ increment unresolved, never collapsed.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -53,11 +54,16 @@ class StaticState:
     u: np.ndarray
     forces: JointForces
     slip: np.ndarray  # each joint's accumulated sliding beyond its Coulomb cap (m)
-    min_stiffness: float
     iterations: int
     residual: float
     move: float = 0.0  # how far the blocks moved from the predicted state to reach it (m)
     stiffness: np.ndarray | None = None  # the free blocks' tangent as the solver found it (band storage)
+
+    @functools.cached_property
+    def min_stiffness(self) -> float:
+        """The smallest eigenvalue of the free blocks' tangent (N/m; NaN without one), computed when a
+        record asks for it (series.csv), not for every accepted state of a campaign's lean run."""
+        return smallest_eigenvalue(self.stiffness) if self.stiffness is not None else float("nan")
 
 
 @dataclass
@@ -212,7 +218,6 @@ class StaticLoading:
 
     def accept(self) -> None:
         assert self._trial is not None and self._trial.stiffness is not None
-        self._trial.min_stiffness = smallest_eigenvalue(self._trial.stiffness)
         self.accepted.append(self._trial)
         self._trial = None
         self.snaps += self._trial_snaps
@@ -280,5 +285,5 @@ class StaticLoading:
 
     def _state(self, stage: str, lam: float, found: Equilibrium, slip: np.ndarray, forces: JointForces) -> StaticState:
         return StaticState(
-            stage, lam, found.u, forces, slip, float("nan"), found.iterations, found.residual, stiffness=found.stiffness
+            stage, lam, found.u, forces, slip, found.iterations, found.residual, stiffness=found.stiffness
         )

@@ -43,10 +43,12 @@ DEM_ONLY_NUMERICS = (
 
 @dataclass
 class StaticRecords:
-    """Rows and snapshots of one static run, added state by state."""
+    """Rows and snapshots of one static run, added state by state (a lean run keeps only what its
+    summary reads: hinges, friction, the snapshots' labels)."""
 
     arch: StaticArch
     hinge_threshold: float  # rad
+    keep_tables: bool = True  # rows of series.csv and joints.csv, the states and their stiffness
     series: list[dict[str, Any]] = field(default_factory=list)
     joints: list[dict[str, Any]] = field(default_factory=list)
     snapshots: dict[str, dict[str, Any]] = field(default_factory=dict)
@@ -73,18 +75,21 @@ class StaticRecords:
             self.hinge_threshold,
         )
         delta_mm = units.to_mm(state.lam)
-        common = {"stage": state.stage, "step": self.iterations, "delta_mm": delta_mm}
-        self.series.append({**common, **self._series_columns(state, pos)})
-        self.joints.extend(joint_rows(snap, common))
-        self.states.append(state_entry(state.stage, self.iterations, delta_mm, pos, rot))
+        if self.keep_tables:
+            common = {"stage": state.stage, "step": self.iterations, "delta_mm": delta_mm}
+            self.series.append({**common, **self.series_columns(state)})
+            self.joints.extend(joint_rows(snap, common))
+            self.states.append(state_entry(state.stage, self.iterations, delta_mm, pos, rot))
         if label:
             self.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, self.iterations)
         if state.stage == Stage.EQUILIBRIUM:
             friction_extremes(self.friction, snap, delta_mm)
         return hinges
 
-    def _series_columns(self, state: StaticState, pos: np.ndarray) -> dict[str, Any]:
-        """Reactions (the supports' forces on the arch), the crown's displacement, the residual."""
+    def series_columns(self, state: StaticState) -> dict[str, Any]:
+        """series.csv's columns of `state`: reactions (the supports' forces on the arch), the crown's
+        displacement, the residual, the tangent's smallest eigenvalue."""
+        pos, _ = self.arch.poses(state.u)
         force = state.forces.block_force
         crown = self.arch.geometry.crown_voussoir
         crown_disp = pos[crown] - self.arch.centroid0[crown]

@@ -55,7 +55,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
     arch = static_arch(case)
     end_mm = path_end_mm(case, arch.movement)
     loading = StaticLoading(arch, path_settings(num, end_mm), runaway_length(case))
-    records = StaticRecords(arch, num.hinge_rotation_mrad * 1e-3)
+    records = StaticRecords(arch, num.hinge_rotation_mrad * 1e-3, keep_tables=num.keeps_tables)
     unused = {key: getattr(num, key) for key in DEM_ONLY_NUMERICS}
     log(
         f"[{case.name}] static engine: kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
@@ -151,7 +151,7 @@ def _selfweight(
     except StaticEngineError as exc:
         raise YadearchError(f"{exc} ({standing_parameters(case)}); {why_not_standing(case)}") from None
     records.add(state, label=Stage.SELFWEIGHT)
-    row = records.series[-1]
+    row = records.series_columns(state)
     weight = float(loading.arch.weight[1:-1].sum())
     info = {
         "steps": loading.iterations,

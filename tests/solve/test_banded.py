@@ -1,0 +1,47 @@
+"""The compiled banded LU (solve.banded.band_solve) against LAPACK's through scipy: the same solution
+(to the last bit where the pivots are the same), pivoting where the diagonal is small, singular
+matrices told, and the shift added to the diagonal."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import scipy.linalg
+
+from yadearch.solve import banded
+
+
+def random_band(n: int, rng: np.random.Generator) -> np.ndarray:
+    dense = np.zeros((n, n))
+    for i in range(n):
+        for j in range(max(0, i - banded.BAND), min(n, i + banded.BAND + 1)):
+            dense[i, j] = rng.normal()
+    return dense
+
+
+@pytest.mark.parametrize("n", [3, 4, 11, 16, 159])
+def test_the_solution_is_lapacks(n):
+    rng = np.random.default_rng(n)
+    for _ in range(10):
+        dense, b, shift = random_band(n, rng), rng.normal(size=n), float(rng.normal())
+        ab = banded.from_dense(dense)
+        x = banded.solve(ab, b, shift)
+        shifted = ab.copy()
+        shifted[banded.BAND] += shift
+        reference = scipy.linalg.solve_banded((banded.BAND, banded.BAND), shifted, b)
+        np.testing.assert_array_equal(x, reference)
+        np.testing.assert_allclose((dense + shift * np.eye(n)) @ x, b, atol=1e-9 * np.abs(b).max() * n)
+
+
+def test_a_zero_diagonal_is_pivoted_around():
+    dense = np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 2.0], [0.0, 3.0, 1.0]])
+    x = banded.solve(banded.from_dense(dense), np.array([1.0, 2.0, 3.0]))
+    np.testing.assert_allclose(dense @ x, [1.0, 2.0, 3.0])
+
+
+def test_a_singular_tangent_is_told():
+    dense = np.array([[1.0, 2.0, 0.0], [2.0, 4.0, 0.0], [0.0, 0.0, 1.0]])
+    with pytest.raises(np.linalg.LinAlgError):
+        banded.solve(banded.from_dense(dense), np.ones(3))
+    _, singular = banded.band_solve(banded.from_dense(dense), np.ones(3), 0.0)
+    assert singular

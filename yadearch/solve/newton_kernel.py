@@ -1,0 +1,183 @@
+"""Newton's iterations at one support position compiled whole (numba): each iteration evaluates the
+joints, residual and band tangent in one kernel (`model.joint_tangent.free_state_kernel`), solves by
+the banded LU (`solve.banded.band_solve`), caps the step and backtracks on |R|^2, the same arithmetic
+in the same order as the Python loop it replaces, without an interpreter round trip an iteration."""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from yadearch.model.joint_tangent import BLOCK_DOFS, free_state_kernel
+from yadearch.solve.banded import band_solve
+
+
+@njit(cache=True)
+def newton_kernel(
+    left,
+    right,
+    left_intrados,
+    right_intrados,
+    normal0,
+    along0,
+    length,
+    handedness,
+    n_blocks,
+    kn_depth,
+    ks_depth,
+    tan_friction,
+    gap_fraction,
+    gap,
+    imperfect,
+    u0,
+    u_before,
+    shear_before,
+    weight,
+    gravity,
+    lever,
+    band,
+    converged,
+    max_step,
+    iterations,
+    backtracks,
+    sufficient_decrease,
+):
+    """Newton from `u0` with a backtracking line search: (u, loops, evaluations, success, state), the
+    state being `free_state_kernel`'s outputs at u; loops counts the iterations begun, as the
+    interpreted loop counts them."""
+    u = u0.copy()
+    state = free_state_kernel(
+        left, right, left_intrados, right_intrados, normal0, along0, length, handedness, n_blocks,
+        kn_depth, ks_depth, tan_friction, u, u_before, shear_before, gap_fraction, gap, imperfect,
+        weight, gravity, lever, band,
+    )  # fmt: skip
+    evaluations = 1
+    first = BLOCK_DOFS
+    for iteration in range(iterations):
+        residual, stiffness = state[8], state[9]
+        if np.abs(residual).max() <= converged:
+            return u, iteration + 1, evaluations, True, state
+        d, singular = band_solve(stiffness, residual, 0.0)
+        if singular:
+            return u, iteration + 1, evaluations, False, state
+        largest = np.abs(d).max()
+        if largest > 0.0:
+            d = d * min(1.0, max_step / largest)
+        merit, alpha = residual @ residual, 1.0
+        accepted = False
+        trial = u.copy()
+        for _ in range(backtracks):
+            trial = u.copy()
+            trial[first : first + d.shape[0]] += alpha * d
+            trial_state = free_state_kernel(
+                left, right, left_intrados, right_intrados, normal0, along0, length, handedness, n_blocks,
+                kn_depth, ks_depth, tan_friction, trial, u_before, shear_before, gap_fraction, gap, imperfect,
+                weight, gravity, lever, band,
+            )  # fmt: skip
+            evaluations += 1
+            trial_residual = trial_state[8]
+            if trial_residual @ trial_residual <= (1.0 - sufficient_decrease * alpha) * merit:
+                accepted = True
+                break
+            alpha *= 0.5
+        if not accepted:
+            return u, iteration + 1, evaluations, False, state
+        u, state = trial, trial_state
+    return u, iterations, evaluations, False, state
+
+
+CONVERGED, STUCK, RUNAWAY, TIMEOUT = 0, 1, 2, 3  # why `descent_kernel` hands back
+
+
+@njit(cache=True)
+def descent_kernel(
+    left,
+    right,
+    left_intrados,
+    right_intrados,
+    normal0,
+    along0,
+    length,
+    handedness,
+    n_blocks,
+    kn_depth,
+    ks_depth,
+    tan_friction,
+    gap_fraction,
+    gap,
+    imperfect,
+    u0,
+    u_before,
+    shear_before,
+    weight,
+    gravity,
+    lever,
+    band,
+    converged,
+    max_step,
+    floor,
+    shift,
+    origin,
+    runaway,
+    start,
+    budget,
+    shift_growth,
+    shift_fall,
+    max_shift_ratio,
+    min_shift_ratio,
+):
+    """The descent's damped Newton steps (K + shift I) d = R from `u0`, iterations `start` to
+    `budget`, until an equilibrium (CONVERGED), a shift past `max_shift_ratio` x `floor` (STUCK), a
+    block `runaway` from `origin` (RUNAWAY) or the budget's end (TIMEOUT): (u, iteration, evaluations,
+    event, floor, shift, state). A `floor` <= 0 is set from the first state: its stiffest diagonal
+    term, or a whole joint's normal stiffness where nothing touches yet."""
+    u = u0.copy()
+    state = free_state_kernel(
+        left, right, left_intrados, right_intrados, normal0, along0, length, handedness, n_blocks,
+        kn_depth, ks_depth, tan_friction, u, u_before, shear_before, gap_fraction, gap, imperfect,
+        weight, gravity, lever, band,
+    )  # fmt: skip
+    evaluations = 1
+    if floor <= 0.0:
+        floor = max(np.abs(state[9][band]).max(), kn_depth * length.max())
+        shift = floor
+    first = BLOCK_DOFS
+    for iteration in range(start, budget):
+        residual, stiffness = state[8], state[9]
+        if np.abs(residual).max() <= converged:
+            return u, iteration, evaluations, CONVERGED, floor, shift, state
+        if shift > max_shift_ratio * floor:
+            return u, iteration, evaluations, STUCK, floor, shift, state
+        d, singular = band_solve(stiffness, residual, shift)
+        if singular:
+            shift *= shift_growth
+            continue
+        largest = np.abs(d).max()
+        if largest > 0.0:
+            d = d * min(1.0, max_step / largest)
+        trial = u.copy()
+        trial[first : first + d.shape[0]] += d
+        trial_state = free_state_kernel(
+            left, right, left_intrados, right_intrados, normal0, along0, length, handedness, n_blocks,
+            kn_depth, ks_depth, tan_friction, trial, u_before, shear_before, gap_fraction, gap, imperfect,
+            weight, gravity, lever, band,
+        )  # fmt: skip
+        evaluations += 1
+        if not (residual + trial_state[8]) @ d > 0.0:
+            shift *= shift_growth
+            continue
+        shift = max(shift * shift_fall, min_shift_ratio * floor)
+        u, state = trial, trial_state
+        if _largest_move(u, origin) > runaway:
+            return u, iteration + 1, evaluations, RUNAWAY, floor, shift, state
+    return u, budget, evaluations, TIMEOUT, floor, shift, state
+
+
+@njit(cache=True)
+def _largest_move(u, start):
+    """`solve.newton.largest_move`: the largest translation of a block between two states (m)."""
+    largest = 0.0
+    for b in range(u.shape[0] // BLOCK_DOFS):
+        dx, dy = u[BLOCK_DOFS * b] - start[BLOCK_DOFS * b], u[BLOCK_DOFS * b + 1] - start[BLOCK_DOFS * b + 1]
+        largest = max(largest, np.hypot(dx, dy))
+    return largest
