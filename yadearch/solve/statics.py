@@ -22,6 +22,7 @@ from yadearch.model.joint_law import JointLaw, JointTable, joint_table
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, assemble_band, free_state, joint_tangent
 from yadearch.model.movement import Movement
 from yadearch.solve import banded
+from yadearch.solve.newton_kernel import descent_kernel, newton_kernel
 from yadearch.solve.rigid import polygon_centroid, rotate
 
 WARM_UP_VOUSSOIRS = 3  # the smallest arch that compiles every kernel
@@ -149,13 +150,15 @@ def static_arch(case: ArchCase) -> StaticArch:
 
 
 def compile_kernels() -> None:
-    """Compile the static engine's joint kernel once and leave it in numba's cache (scripts/setup.sh
-    calls this, so that the first run of a fresh install is not the one that waits ~10 s for it)."""
+    """Compile the static engine's kernels once and leave them in numba's cache (scripts/setup.sh calls
+    this, so that the first run of a fresh install is not the one that waits ~10 s for them)."""
     from yadearch.case.config import preset
 
     arch = static_arch(preset("set2").with_overrides({"geometry.n_voussoirs": WARM_UP_VOUSSOIRS}))
-    u = arch.at_rest()
-    joints = arch.evaluate(u, u, np.zeros(len(arch.table.left)))
+    u, shear = arch.at_rest(), np.zeros(len(arch.table.left))
+    joints = arch.evaluate(u, u, shear)
     arch.band_stiffness(joints, banded.BAND)
-    _, residual, stiffness = arch.free_state(u, u, np.zeros(len(arch.table.left)))
-    banded.band_solve(stiffness, residual, 0.0)  # compiled whether or not blocks at rest give a singular K
+    kernel_arrays = (*arch.table.kernel_geometry(), *arch.law.kernel_constants(), *arch.table.kernel_gaps())
+    common = (arch.weight, 1.0, arch.length, banded.BAND, 1e-9, 1e-4)
+    newton_kernel(*kernel_arrays, u, u, shear, *common, 2, 2, 1e-4)
+    descent_kernel(*kernel_arrays, u, u, shear, *common, 0.0, 0.0, u, 1e-3, 0, 2, 10.0, 0.3, 1e12, 1e-12)
