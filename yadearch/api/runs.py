@@ -98,7 +98,7 @@ def run(
                 f"{', ...' if len(differences) > 1 else ''}); choose another output "
                 "folder or overwrite it"
             )
-    run_case_process(case, folder, timeout_s=timeout_s, quiet=quiet)
+    run_case_process(case, folder, timeout_s=timeout_s, quiet=quiet, single=True)
     result = open_run(folder)
     if figures:
         result.write_figures()

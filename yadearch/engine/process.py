@@ -3,6 +3,8 @@ engine's (`yadearch.statics`) for a case whose numerics.engine is 'static'."""
 
 from __future__ import annotations
 
+import contextlib
+import io
 import os
 import shutil
 import signal
@@ -87,11 +89,14 @@ def exit_reason(returncode: int) -> str:
     return f"exit code {returncode}"
 
 
-def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None, quiet: bool = False) -> Path:
+def run_case_process(
+    case: ArchCase, out: Path, timeout_s: float | None = None, quiet: bool = False, single: bool = False
+) -> Path:
     """Run `case` in a child process and make `out` its run folder; raise RunFailedError with the
     reason if it fails. The child writes a staging folder beside `out`, swapped into place only
     when complete: a run that does not finish never destroys the finished run `out` may hold (its
-    log then stays in the staging folder, which the error names)."""
+    log then stays in the staging folder, which the error names). A `single` static run without a
+    timeout is solved in this process instead (no worker to start and import: about a second)."""
     plan_run(case)  # refuse, before any process starts, a case that cannot run or would not end
     static = case.numerics.engine == STATIC_ENGINE
     if not static:
@@ -99,7 +104,7 @@ def run_case_process(case: ArchCase, out: Path, timeout_s: float | None = None, 
     out = Path(out)
     check_name_length(out)
     with folder_lock(out):
-        return _run_locked(case, out, static, timeout_s, quiet)
+        return _run_locked(case, out, static, timeout_s, quiet, single and timeout_s is None)
 
 
 def check_name_length(out: Path) -> None:
@@ -114,8 +119,10 @@ def check_name_length(out: Path) -> None:
         )
 
 
-def _run_locked(case: ArchCase, out: Path, static: bool, timeout_s: float | None, quiet: bool) -> Path:
-    """`run_case_process` once it holds the folder's lock."""
+def _run_locked(
+    case: ArchCase, out: Path, static: bool, timeout_s: float | None, quiet: bool, here: bool = False
+) -> Path:
+    """`run_case_process` once it holds the folder's lock (`here`: a static run in this process)."""
     staging = staging_folder(out)
     shutil.rmtree(staging, ignore_errors=True)
     staging.mkdir(parents=True)
@@ -125,9 +132,12 @@ def _run_locked(case: ArchCase, out: Path, static: bool, timeout_s: float | None
     cmd = [sys.executable, "-m", "yadearch.engine.simulate", str(case_file), str(staging)]
     try:
         try:
-            returncode, stderr = (
-                run_static(case_file, staging, timeout_s) if static else _run_child(cmd, env, timeout_s, quiet)
-            )
+            if static:
+                returncode, stderr = (
+                    _run_static_here(case_file, staging, quiet) if here else run_static(case_file, staging, timeout_s)
+                )
+            else:
+                returncode, stderr = _run_child(cmd, env, timeout_s, quiet)
         finally:
             _remove_scratch(staging)
     except subprocess.TimeoutExpired:
@@ -148,6 +158,18 @@ def _run_locked(case: ArchCase, out: Path, static: bool, timeout_s: float | None
         raise RunFailedError(f"run {case.name!r} failed: {reason} (see {where / LOG_FILE})")
     _swap_into_place(staging, out)
     return out
+
+
+def _run_static_here(case_file: Path, staging: Path, quiet: bool) -> tuple[int, str]:
+    """`yadearch.statics.simulate` on the case file in this process: its exit code and standard error
+    (its progress printed unless `quiet`; run.log keeps it either way)."""
+    from yadearch.statics.simulate import main
+
+    errors = io.StringIO()
+    shown = contextlib.nullcontext() if not quiet else contextlib.redirect_stdout(io.StringIO())
+    with contextlib.redirect_stderr(errors), shown:
+        code = main([str(case_file), str(staging)])
+    return code, errors.getvalue()
 
 
 def _remove_scratch(staging: Path) -> None:

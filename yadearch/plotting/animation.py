@@ -14,7 +14,7 @@ from yadearch.analysis.blocks import case_geometry
 from yadearch.atomic import write_atomically
 from yadearch.errors import CaseError, YadearchError
 from yadearch.plotting.house import house_style, new_figure
-from yadearch.plotting.states import draw_state, drawing_limits, run_states, state_view
+from yadearch.plotting.states import draw_state, drawing_limits, place_texts, run_states, state_view
 from yadearch.results.rundir import RunFolder
 
 FORMATS = ("mp4", "gif")
@@ -61,6 +61,7 @@ def animate_run(
         ax.clear()
         draw_state(ax, views[index], geometry, limits)
         ax.set_title(title)
+        place_texts(fig)
         return []
 
     movie = FuncAnimation(fig, draw, frames=frames, blit=False)

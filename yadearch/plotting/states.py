@@ -13,6 +13,7 @@ import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
+from matplotlib.text import Annotation
 
 from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
@@ -21,13 +22,17 @@ from yadearch.errors import RunFolderError
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.hinges import Hinge, hinge_rotation, hinges_at
 from yadearch.plotting.house import THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
+from yadearch.plotting.labels import layout, place_corner, place_label
 from yadearch.results.rundir import RunFolder
 from yadearch.results.states import RunStates
 
 MM_PER_M = 1e3
 BLOCK_COLOUR, SUPPORT_COLOUR = "#EADDCA", "0.45"
 UNLABELLED_COLOUR = "0.3"  # a hinge that is not one of the collapse mechanism's A-D
-MARGIN = 0.06  # of the arch's span, around the drawing
+MARGIN = 0.1  # of the arch's span, above the drawing
+SIDE_MARGIN = 0.15  # of the arch's span, either side: room for the labels of hinges at the springings
+TEXT_PT = 7  # labels and the corner text: the smallest size a journal prints
+LABEL_OFFSET_PT = 5  # a hinge label's distance from its pivot, away from the ring
 STRIP_FRACTIONS = (0.0, 1 / 3, 2 / 3, 1.0)  # of du: the strip's four states
 STRIP_CM = (17.0, 9.0)  # two columns wide
 
@@ -35,10 +40,11 @@ STRIP_CM = (17.0, 9.0)  # two columns wide
 @dataclass(frozen=True)
 class StateView:
     """What one drawn state shows, in mm: block outlines, open hinges (interface, side, pivot point,
-    paper letter), the thrust line's points, the support displacement and reaction."""
+    paper letter, the joint's unit direction from intrados to extrados), the thrust line's points,
+    the support displacement and reaction."""
 
     outlines: list[np.ndarray]
-    hinges: list[tuple[int, str, np.ndarray, str]]
+    hinges: list[tuple[int, str, np.ndarray, str, np.ndarray]]
     thrust: np.ndarray
     delta_mm: float
     stage: str
@@ -65,8 +71,16 @@ def state_view(run: RunFolder, geometry: ArchGeometry, analysis: RunAnalysis, in
     rows = state_joints(run, geometry, index)
     ends = {side: joint_points(geometry, snapshot, side) * MM_PER_M for side in ("I", "E")}
     letters = {(k, t.side): t.paper_label for t in analysis.tracks for k in t.final.interfaces}
+    across = ends["E"] - ends["I"]
+    across = across / np.linalg.norm(across, axis=1)[:, None]
     hinges = [
-        (h.interface, h.side, ends[h.side][h.interface - 1], letters.get((h.interface, h.side), ""))
+        (
+            h.interface,
+            h.side,
+            ends[h.side][h.interface - 1],
+            letters.get((h.interface, h.side), ""),
+            across[h.interface - 1],
+        )
         for h in state_hinges(run, geometry, rows)
     ]
     loaded = (rows["normal_force_N"].to_numpy() > 0) & np.isfinite(rows["force_position"].to_numpy())
@@ -88,7 +102,7 @@ def drawing_limits(geometry: ArchGeometry) -> tuple[tuple[float, float], tuple[f
     xy = np.vstack([b[: len(b) // 2, :2] for b in geometry.blocks]) * MM_PER_M
     span = float(np.ptp(xy[:, 0]))
     return (
-        (xy[:, 0].min() - MARGIN * span, xy[:, 0].max() + MARGIN * span),
+        (xy[:, 0].min() - SIDE_MARGIN * span, xy[:, 0].max() + SIDE_MARGIN * span),
         (xy[:, 1].min() - 3 * MARGIN * span, xy[:, 1].max() + MARGIN * span),
     )
 
@@ -116,32 +130,40 @@ def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple,
         )
     if len(view.thrust):
         ax.plot(view.thrust[:, 0], view.thrust[:, 1], "-", color=THRUST_COLOUR, lw=0.8, zorder=3)
-    for interface, side, point, letter in view.hinges:
+    for interface, side, point, letter, across in view.hinges:
         colour = hinge_colour(letter) if letter else UNLABELLED_COLOUR
         ax.plot(*point, "o", ms=4, mfc=colour, mec="white", mew=0.5, zorder=4)
-        ax.annotate(
-            f"{letter} {interface}{side}".strip(),
-            point,
-            xytext=(0, 6 if side == "E" else -9),
-            textcoords="offset points",
-            ha="center",
-            fontsize=6,
-            color=colour,
-            zorder=5,
+        label = ax.annotate(
+            f"{letter} {interface}{side}".strip(), point, xytext=(0, 0), textcoords="offset points", color=colour
         )
+        label.set_fontsize(TEXT_PT)
+        label.away = across if side == "E" else -across  # off the ring: out at the extrados, in at the intrados
     if corner:
         text = f"δ = {view.delta_mm:.2f} mm ({view.stage})"
         if view.reaction_N is not None:
             text += (
-                f"\n{view.moving_support} (moving) support on the arch: "
-                f"Rx = {view.reaction_N[0]:.2f} N, Ry = {view.reaction_N[1]:.2f} N"
+                f"\n{view.moving_support} support (moving) on the arch:"
+                f"\nRx {view.reaction_N[0]:.2f} N, Ry {view.reaction_N[1]:.2f} N"
             )
-        ax.text(0.01, 0.02, text, transform=ax.transAxes, va="bottom", ha="left", fontsize=6)
+        ax.text(0.01, 0.02, text, transform=ax.transAxes, va="bottom", ha="left", fontsize=TEXT_PT)
     ax.set_aspect("equal")
     ax.set_xlim(*limits[0])
     ax.set_ylim(*limits[1])
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
+
+
+def place_texts(fig: Figure) -> None:
+    """Once every panel of `fig` is drawn: each axes' corner text into a corner the blocks leave
+    free, then each hinge label round its pivot where it clears the blocks and the other texts."""
+    layout(fig)
+    for ax in fig.axes:
+        for text in ax.texts:
+            if not isinstance(text, Annotation):
+                place_corner(ax, text)
+        for text in ax.texts:
+            if isinstance(text, Annotation):
+                place_label(ax, text, text.away, LABEL_OFFSET_PT)
 
 
 def strip_indices(states: RunStates, du_mm: float | None) -> list[int]:
@@ -165,6 +187,7 @@ def strip_figure(run: RunFolder, analysis: RunAnalysis) -> Figure:
         ax.set_xlabel("")
     for ax in axes[1::2]:
         ax.set_ylabel("")
+    place_texts(fig)
     return fig
 
 

@@ -1,0 +1,66 @@
+"""Labels a journal prints: in the strip of four states and in a movie frame of the committed paper
+runs, every text is at least 7 pt and clears the blocks, the other texts and its axes' edge
+(plotting.labels.label_clashes), and the clash finder does find a label put on a block."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+import pytest
+
+matplotlib.use("Agg")
+
+from yadearch.analysis.blocks import case_geometry  # noqa: E402
+from yadearch.analysis.run import analyse_run  # noqa: E402
+from yadearch.plotting.animation import FRAME_CM  # noqa: E402
+from yadearch.plotting.house import new_figure  # noqa: E402
+from yadearch.plotting.labels import label_clashes  # noqa: E402
+from yadearch.plotting.states import (  # noqa: E402
+    TEXT_PT,
+    draw_state,
+    drawing_limits,
+    place_texts,
+    run_states,
+    state_view,
+    strip_figure,
+)
+from yadearch.results.rundir import read_run  # noqa: E402
+
+REPORTS = Path(__file__).resolve().parents[2] / "reports"
+RUNS = ("set1", "set2")
+
+
+def texts(fig):
+    return [t for ax in fig.axes for t in ax.texts if t.get_text().strip()]
+
+
+@pytest.mark.parametrize("name", RUNS)
+def test_the_strips_labels_are_readable_and_clear(name):
+    run = read_run(REPORTS / name)
+    fig = strip_figure(run, analyse_run(run))
+    assert all(t.get_fontsize() >= TEXT_PT for t in texts(fig))
+    assert label_clashes(fig) == []
+
+
+@pytest.mark.parametrize("name", RUNS)
+def test_a_movie_frame_at_collapse_has_its_labels_clear(name):
+    run = read_run(REPORTS / name)
+    analysis, geometry = analyse_run(run), case_geometry(run.case)
+    fig = new_figure(height_cm=FRAME_CM[1], width_cm=FRAME_CM[0])
+    ax = fig.add_subplot()
+    last = int(run_states(run).path()[-1])
+    draw_state(ax, state_view(run, geometry, analysis, last), geometry, drawing_limits(geometry))
+    place_texts(fig)
+    assert len(texts(fig)) >= 4  # the four hinges at collapse and the corner text
+    assert label_clashes(fig) == []
+
+
+def test_a_label_on_a_block_is_found():
+    run = read_run(REPORTS / "set2")
+    fig = strip_figure(run, analyse_run(run))
+    ax = fig.axes[0]
+    blocks = [p for p in ax.patches if p.get_fill()]  # the deformed arch's blocks (the outline is dashed)
+    block = blocks[len(blocks) // 2].get_xy()
+    ax.annotate("on a block", block.mean(axis=0), fontsize=TEXT_PT)
+    assert any("on a block" in clash for clash in label_clashes(fig))
