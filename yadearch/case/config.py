@@ -25,6 +25,7 @@ from yadearch.case.sections import (
     ImperfectionsConfig,
     InterfaceConfig,
     LoadingConfig,
+    LoadsConfig,
     MaterialConfig,
     NumericsConfig,
 )
@@ -44,6 +45,7 @@ class ArchCase:
     loading: LoadingConfig = field(default_factory=LoadingConfig)
     numerics: NumericsConfig = field(default_factory=NumericsConfig)
     imperfections: ImperfectionsConfig = field(default_factory=ImperfectionsConfig)
+    loads: LoadsConfig = field(default_factory=LoadsConfig)
 
     @property
     def ks_N_per_mm3(self) -> float:

@@ -17,6 +17,7 @@ from yadearch.case.imperfect import amplitudes, imperfect_geometry
 from yadearch.case.shape import build_arch
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
+from yadearch.model.loads import LiveLoad
 
 
 @dataclass(frozen=True)
@@ -117,3 +118,15 @@ def runaway_length(case: ArchCase) -> float:
     """The block displacement at a fixed support that means no equilibrium (m): the ring's thickness
     times `numerics.runaway_thickness_ratio`, a bound of the arch's own geometry (docs/numerics.md)."""
     return case.numerics.runaway_thickness_ratio * units.mm(case.geometry.thickness_mm)
+
+
+def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:
+    """The case's live load in SI (model.loads): its centre's position from the left springing is the
+    case's fraction of the intrados span."""
+    loads = case.loads
+    return LiveLoad(
+        loads.live_load,
+        position=loads.load_position_over_span * geometry.span,
+        width=units.mm(loads.load_width_mm),
+        toward_right=loads.acceleration_toward == "right",
+    )

@@ -9,7 +9,7 @@ from typing import Any
 from yadearch.case import reference
 from yadearch.case.config import ArchCase, as_ran, preset
 
-PAPER_SECTIONS = ("geometry", "material", "loading", "imperfections")  # what makes a run the paper's case
+PAPER_SECTIONS = ("geometry", "material", "loading", "imperfections", "loads")  # what makes a run the paper's case
 NOT_PHYSICAL = {"max_support_displacement_mm"}  # a run's stopping point, not part of the arch or its loading
 # the material and joint values a case takes from the paper's 1:10 model when it does not give its own
 MODEL_VALUES = (

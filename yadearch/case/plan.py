@@ -17,6 +17,7 @@ from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.imperfections import MAX_EDGE_FRACTION
+from yadearch.model.loads import NONE
 
 SETTLE_HOLDS = 10  # settling holds a run may need (one per bracket end retried), for the worst case
 BISECTIONS_MARGIN = 10  # increments beyond the bisection count, for retries after discarded states
@@ -42,6 +43,11 @@ def plan_run(case: ArchCase) -> RunPlan:
             f"numerics.du_tolerance_mm = {num.du_tolerance_mm:g}, first_increment_mm = "
             f"{num.first_increment_mm:g} and max_increment_mm = {num.max_increment_mm:g} must "
             "grow in that order (the tolerance below the first increment, that at most the largest)"
+        )
+    if case.loads.live_load != NONE:
+        raise CaseError(
+            f"loads.live_load = {case.loads.live_load!r}: the DEM and static engines do not apply live "
+            "loads yet; the rigid-block limit analysis gives their capacity (yadearch loads)"
         )
     geometry = arch_geometry(case)  # refuses an arch that cannot be built (case/shape.py)
     _check_imperfections(case, geometry)

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 from yadearch.case.fields import number_meta
 from yadearch.case.imperfections_section import ImperfectionsConfig
 from yadearch.case.numerics_section import NumericsConfig
+from yadearch.model.loads import LIVE_LOADS
 
 
 @dataclass
@@ -199,6 +200,52 @@ class LoadingConfig:
     )
 
 
+@dataclass
+class LoadsConfig:
+    """A live load besides the self-weight, grown to collapse by the rigid-block limit analysis
+    (`yadearch loads`, docs/theory.md "Loads"): a vertical load on the extrados, concentrated or spread,
+    or a horizontal acceleration of every voussoir."""
+
+    live_load: str = field(
+        default="none",
+        metadata={
+            "choices": LIVE_LOADS,
+            "predates": "none",
+            "doc": "'vertical' (a load on the extrados at load_position_over_span, spread over "
+            "load_width_mm; its capacity in N) or 'horizontal_acceleration' (each voussoir pushed by "
+            "its weight x the multiplier toward acceleration_toward; its capacity in g); 'none'",
+        },
+    )
+    load_position_over_span: float = field(
+        default=0.25,
+        metadata={
+            **number_meta(
+                0,
+                1,
+                doc="where the vertical load's centre stands: its horizontal distance from the left "
+                "springing's intrados point over the intrados span (0.25: the quarter span)",
+            ),
+            "predates": 0.25,
+        },
+    )
+    load_width_mm: float = field(
+        default=0.0,
+        metadata={
+            **number_meta(
+                0,
+                1e5,
+                doc="horizontal width the vertical load spreads over, uniformly (mm; 0: concentrated; "
+                "the span: a uniform load)",
+            ),
+            "predates": 0.0,
+        },
+    )
+    acceleration_toward: str = field(
+        default="right",
+        metadata={"choices": ("right", "left"), "predates": "right", "doc": "the horizontal acceleration's direction"},
+    )
+
+
 SECTIONS: dict[str, type] = {
     "geometry": GeometryConfig,
     "material": MaterialConfig,
@@ -206,6 +253,7 @@ SECTIONS: dict[str, type] = {
     "loading": LoadingConfig,
     "numerics": NumericsConfig,
     "imperfections": ImperfectionsConfig,
+    "loads": LoadsConfig,
 }
 
 # Former parameter names still read from case files, overrides and stored runs: (section, old) -> new.

@@ -15,6 +15,7 @@ from yadearch.case.config import parameter_docs
 from yadearch.case.names import check_name
 from yadearch.cli.campaigns import calibrate, robustness, sweep
 from yadearch.cli.capacity import capacity
+from yadearch.cli.loads import loads
 from yadearch.cli.montecarlo import montecarlo
 from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, resolve_case
 from yadearch.cli.sensitivity import sensitivity
@@ -192,6 +193,7 @@ cli.add_command(calibrate)
 cli.add_command(robustness)
 cli.add_command(montecarlo)
 cli.add_command(capacity)
+cli.add_command(loads)
 cli.add_command(sensitivity)
 cli.add_command(animate)
 cli.add_command(export)

@@ -1,0 +1,105 @@
+"""Live loads by rigid-block limit analysis (solve.load_lp): the linear programme's multiplier is the
+least over the four-hinge mechanisms found by virtual work (solve.mechanisms, independent of it), the
+reactions balance the loads at collapse, a symmetric arch gives mirrored answers, Milankovitch's
+semicircle at its minimum thickness carries no acceleration, and bad loads are refused in one line."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from yadearch.case.config import ArchCase, preset
+from yadearch.case.mechanics import live_load
+from yadearch.case.plan import plan_run
+from yadearch.errors import CaseError
+from yadearch.model.loads import generalised, live_load_points
+from yadearch.solve.limit_lp import weight_load
+from yadearch.solve.load_lp import load_analysis, load_capacity, residual_capacity
+from yadearch.solve.mechanisms import mechanism_multiplier
+from yadearch.solve.rigid import at_rest, rigid_arch
+
+HIGH_FRICTION = {"friction_deg": 80.0}  # the mechanism method knows no sliding
+
+
+def small(overrides: dict, **loads) -> ArchCase:
+    return ArchCase(name="small").with_overrides({**HIGH_FRICTION, **overrides, **loads})
+
+
+CASES = [
+    small({"embrace_deg": 180.0, "n_voussoirs": 13, "thickness_mm": 40.0}, live_load="horizontal_acceleration"),
+    small({"embrace_deg": 180.0, "n_voussoirs": 13, "thickness_mm": 80.0}, live_load="horizontal_acceleration"),
+    small({"n_voussoirs": 15}, live_load="vertical", load_position_over_span=0.25),
+    small({"n_voussoirs": 15}, live_load="vertical", load_position_over_span=0.4, load_width_mm=50.0),
+]
+
+
+@pytest.mark.parametrize("case", CASES, ids=["semicircle-t40-acc", "semicircle-t80-acc", "point-0.25", "spread"])
+def test_the_lp_multiplier_is_the_least_mechanism_multiplier(case):
+    arch = rigid_arch(case)
+    live = generalised(
+        live_load_points(arch.geometry, arch.centroid0, arch.weight, live_load(case, arch.geometry)), arch.n_blocks
+    )
+    dead = -weight_load(arch, at_rest(arch)).reshape(-1, 3)
+    lp = load_capacity(arch, live)
+    kinematic, pivots = mechanism_multiplier(arch, dead, live)
+    assert lp.multiplier == pytest.approx(kinematic, rel=1e-9)
+    assert lp.hinge_labels == " ".join(p.label for p in pivots)
+
+
+def test_the_supports_carry_the_weight_and_the_load_at_collapse():
+    case = small({"n_voussoirs": 15}, live_load="vertical", load_position_over_span=0.3)
+    found = load_analysis(case)
+    arch = rigid_arch(case)
+    first, last = 0, arch.n_joints - 1  # the springing joints: their forces are the reactions
+    vertical = sum(
+        float(found.normal[j].sum() * arch.normal0[j, 1] + found.shear[j] * arch.normal0[j, 0]) * sign
+        for j, sign in ((first, 1.0), (last, -1.0))
+    )
+    assert vertical == pytest.approx(arch.weight[1:-1].sum() + found.multiplier, rel=1e-6)
+
+
+def test_a_symmetric_arch_mirrors_its_capacity():
+    left = load_analysis(preset("set2").with_overrides({"live_load": "vertical", "load_position_over_span": 0.25}))
+    right = load_analysis(preset("set2").with_overrides({"live_load": "vertical", "load_position_over_span": 0.75}))
+    assert left.multiplier == pytest.approx(right.multiplier, rel=1e-9)
+    n = rigid_arch(preset("set2")).n_joints
+    assert {(n - 1 - p.joint, p.side) for p in left.pivots} == {(p.joint, p.side) for p in right.pivots}
+
+
+def test_a_spread_load_is_carried_better_than_the_same_load_concentrated():
+    point = load_analysis(preset("set2").with_overrides({"live_load": "vertical"}))
+    spread = load_analysis(preset("set2").with_overrides({"live_load": "vertical", "load_width_mm": 200.0}))
+    assert spread.multiplier > point.multiplier
+
+
+def test_milankovitchs_semicircle_stands_on_its_minimum_and_carries_no_acceleration():
+    # t / R >= 0.1075 for a semicircular arch under self-weight (R the centre-line radius)
+    def semicircle(t_over_r: float) -> ArchCase:
+        radius = 300.0
+        thickness = 2.0 * radius * t_over_r / (2.0 - t_over_r)  # t / (radius + t/2) = t_over_r
+        return small(
+            {"embrace_deg": 180.0, "n_voussoirs": 101, "thickness_mm": thickness, "internal_radius_mm": radius},
+            live_load="horizontal_acceleration",
+        )
+
+    assert 0.0 < load_analysis(semicircle(1.03 * 0.1075)).multiplier < 0.02
+    assert math.isnan(load_analysis(semicircle(0.97 * 0.1075)).multiplier)
+
+
+def test_a_settled_rigid_arch_is_a_three_hinge_arch_with_little_capacity_left():
+    case = preset("set2").with_overrides({"live_load": "vertical"})
+    at_rest_capacity = load_analysis(case).multiplier
+    settled = residual_capacity(case, 20.0)
+    assert settled.multiplier < 0.2 * at_rest_capacity
+    assert np.isfinite(settled.multiplier) and settled.multiplier > 0.0
+
+
+def test_bad_loads_are_refused_in_one_line():
+    with pytest.raises(CaseError, match="live_load"):
+        load_analysis(preset("set2"))
+    with pytest.raises(CaseError, match="load_position_over_span must be in"):
+        preset("set2").with_overrides({"load_position_over_span": -0.1})
+    with pytest.raises(CaseError, match="do not apply live loads"):
+        plan_run(preset("set2").with_overrides({"live_load": "vertical"}))

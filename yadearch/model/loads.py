@@ -1,0 +1,104 @@
+"""Live loads on the arch (pure numpy, SI): what grows until the arch collapses, the self-weight held.
+
+A vertical load of 1 N stands on the extrados, centred at a horizontal position measured from the
+left springing's intrados point, spread uniformly over a width (0: concentrated; a width covering
+the span: a uniform load); each voussoir takes the part of it above its own extrados, at that part's
+centre. A horizontal acceleration of 1 g pushes each voussoir by its weight at its centroid (the
+quasi-static seismic check, the tilting table). Each is a set of point forces on the blocks, and the
+generalised forces it puts on every block (force x, force y, moment about the origin) are the form the
+limit analysis balances, so its multiplier at collapse is the collapse load in N or the collapse
+acceleration in g.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from yadearch.model.geometry import ArchGeometry
+
+NONE, VERTICAL, ACCELERATION = "none", "vertical", "horizontal_acceleration"
+LIVE_LOADS = (NONE, VERTICAL, ACCELERATION)
+UNITS = {VERTICAL: "N", ACCELERATION: "g"}  # the multiplier's unit: the load is 1 N, or 1 g
+
+
+@dataclass(frozen=True)
+class LiveLoad:
+    """The live load of a case: its kind, and for a vertical load its position from the left
+    springing and the width it spreads over (m); an acceleration pushes toward +x or -x."""
+
+    kind: str
+    position: float = 0.0
+    width: float = 0.0
+    toward_right: bool = True
+
+
+def extrados_reach(geometry: ArchGeometry) -> tuple[float, float]:
+    """Horizontal positions (m, from the left springing's intrados point) between which the voussoirs'
+    extrados can carry a vertical load."""
+    origin = geometry.joints[0].intrados[0]
+    xs = [j.extrados[0] - origin for j in geometry.joints]
+    return min(xs), max(xs)
+
+
+@dataclass(frozen=True)
+class LoadPoints:
+    """A live load as point forces: the block each acts on, its point (k, 2) and force (k, 2) in SI,
+    in the undeformed arch (a load moves with the block it stands on)."""
+
+    block: np.ndarray
+    point: np.ndarray
+    force: np.ndarray
+
+
+def live_load_points(geometry: ArchGeometry, centroids: np.ndarray, weight: np.ndarray, load: LiveLoad) -> LoadPoints:
+    """The unit live `load` as point forces on the voussoirs (none for `none`)."""
+    if load.kind == ACCELERATION:
+        push = weight[1:-1] * (1.0 if load.toward_right else -1.0)
+        force = np.column_stack([push, np.zeros_like(push)])
+        return LoadPoints(np.arange(1, len(weight) - 1), centroids[1:-1, :2].copy(), force)
+    if load.kind == VERTICAL:
+        shares = _extrados_shares(geometry, load.position, load.width)
+        if shares:
+            blocks, newtons, points = zip(*shares)
+            force = np.column_stack([np.zeros(len(newtons)), -np.array(newtons)])
+            return LoadPoints(np.array(blocks), np.array(points), force)
+    return LoadPoints(np.zeros(0, int), np.zeros((0, 2)), np.zeros((0, 2)))
+
+
+def generalised(points: LoadPoints, n_blocks: int, placed: np.ndarray | None = None) -> np.ndarray:
+    """(n_blocks, 3) force x, force y and moment about the origin of the point forces on each block,
+    at the points `placed` (k, 2; default: where the undeformed arch has them)."""
+    where = points.point if placed is None else placed
+    forces = np.zeros((n_blocks, 3))
+    np.add.at(forces[:, 0], points.block, points.force[:, 0])
+    np.add.at(forces[:, 1], points.block, points.force[:, 1])
+    np.add.at(forces[:, 2], points.block, where[:, 0] * points.force[:, 1] - where[:, 1] * points.force[:, 0])
+    return forces
+
+
+def _extrados_shares(geometry: ArchGeometry, position: float, width: float) -> list[tuple[int, float, np.ndarray]]:
+    """(block, newtons, point) of a 1 N vertical load centred `position` m from the left springing and
+    spread over `width` m: each voussoir's part, at that part's centre on the block's extrados."""
+    origin = geometry.joints[0].intrados[0]
+    low, high = origin + position - width / 2.0, origin + position + width / 2.0
+    shares = []
+    for block in range(1, len(geometry.blocks) - 1):
+        a, b = geometry.joints[block - 1].extrados[:2], geometry.joints[block].extrados[:2]
+        left, right = (a, b) if a[0] <= b[0] else (b, a)
+        if width == 0.0:
+            if left[0] <= low <= right[0]:
+                return [(block, 1.0, _on_segment(left, right, low))]
+            continue
+        start, end = max(low, left[0]), min(high, right[0])
+        if end > start:
+            shares.append((block, (end - start) / width, _on_segment(left, right, 0.5 * (start + end))))
+    return shares
+
+
+def _on_segment(left: np.ndarray, right: np.ndarray, x: float) -> np.ndarray:
+    """The point of the segment left-right at abscissa `x`."""
+    run = right[0] - left[0]
+    t = (x - left[0]) / run if run > 0.0 else 0.5
+    return left + t * (right - left)

@@ -1,0 +1,38 @@
+"""The live-load figure (reports/loads): a point load's capacity along the paper's arch (its influence
+line), the collapse acceleration of semicircles against t/R, and the residual capacity after a
+settlement, each from the rigid-block load multiplier."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pandas as pd
+
+from yadearch.plotting.house import COLUMN_CM, house_style, new_figure, save_figure
+
+HEIGHT_CM = 15.0
+
+
+@house_style
+def plot_loads(
+    influence: pd.DataFrame, accelerations: pd.DataFrame, residual: pd.DataFrame, arch_weight_N: float, stem: Path
+) -> tuple[Path, Path]:
+    """STEM.pdf and .png: three panels, one column wide."""
+    fig = new_figure(height_cm=HEIGHT_CM, width_cm=COLUMN_CM)
+    top, middle, bottom = fig.subplots(3, 1)
+    top.plot(influence["position_over_span"], influence["collapse_load_N"], "o-", ms=2.5, color="C0")
+    top.set_xlabel("point load's position / span (from the left springing)")
+    top.set_ylabel("collapse load (N)")
+    top.set_ylim(bottom=0.0)
+    twin = top.secondary_yaxis("right", functions=(lambda n: n / arch_weight_N, lambda r: r * arch_weight_N))
+    twin.set_ylabel("/ arch weight")
+    middle.plot(accelerations["t_over_R"], accelerations["collapse_acceleration_g"], "s-", ms=2.5, color="C1")
+    middle.set_xlabel("t/R of a semicircle (55 voussoirs)")
+    middle.set_ylabel("collapse acceleration (g)")
+    middle.set_ylim(bottom=0.0)
+    bottom.plot(residual["settlement_mm"], residual["capacity"], "^", ms=4.0, color="C2")  # no line: the
+    # rigid capacity drops at once when the hinges open, not along a slope
+    bottom.set_xlabel("settlement of the right support before loading (mm)")
+    bottom.set_ylabel("quarter-span load capacity (N)")
+    bottom.set_yscale("log")
+    return save_figure(fig, stem)

@@ -1,0 +1,138 @@
+"""The load multiplier of rigid-block limit analysis (scipy's HiGHS): the largest factor on a live
+load that the arch, its self-weight held, carries in an admissible equilibrium (no tension: corner
+forces N >= 0; Coulomb friction |T| <= tan(phi) (N_I + N_E)), with the collapse mechanism from the
+programme's dual (the blocks' virtual velocities), as Livesley and Gilbert formulate it for RING.
+
+The equilibrium matrix is the support-movement analysis's (`solve.limit_lp`); the arch stands at rest.
+With enough friction this lower bound equals the least multiplier over the arch's four-hinge
+mechanisms (`solve.mechanisms`, the independent check)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+from scipy.optimize import linprog
+
+from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import live_load
+from yadearch.errors import CaseError
+from yadearch.model import units
+from yadearch.model.loads import NONE, UNITS, generalised, live_load_points
+from yadearch.solve.limit_lp import (
+    LP_METHOD,
+    LP_OPTIONS,
+    STATUS_INFEASIBLE,
+    STATUS_UNBOUNDED,
+    equilibrium_matrix,
+    weight_load,
+)
+from yadearch.solve.rigid import LimitError, Pivot, Placement, RigidArch, at_rest, contacts, rigid_arch
+
+HINGE_RATE_FRACTION = 1e-6  # relative rotation rates below this fraction of the largest are no hinge
+
+
+@dataclass(frozen=True)
+class LoadCapacity:
+    """The live load's multiplier at collapse (inf: no collapse however large; NaN: the arch does not
+    stand under its self-weight), the mechanism's hinges (left to right) and the corner normal forces
+    (joint, intrados/extrados) and shears (N) at collapse."""
+
+    multiplier: float
+    pivots: tuple[Pivot, ...]
+    normal: np.ndarray
+    shear: np.ndarray
+    unit: str = "N"  # of the multiplier: the live load is 1 N, or 1 g
+    arch_weight_N: float = math.nan  # the voussoirs' weight, to read a load against
+
+    @property
+    def hinge_labels(self) -> str:
+        return " ".join(p.label for p in self.pivots)
+
+
+def load_analysis(case: ArchCase, placement: Placement | None = None) -> LoadCapacity:
+    """The capacity of `case`'s arch to its live load (`case.loads`), its self-weight held, at rest or
+    in `placement` (a state of the support movement's rigid march: the residual capacity)."""
+    arch = rigid_arch(case)
+    load = live_load(case, arch.geometry)
+    if load.kind == NONE:
+        raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
+    placement = placement or at_rest(arch)
+    points = live_load_points(arch.geometry, arch.centroid0, arch.weight, load)
+    live = generalised(points, arch.n_blocks, placement.place(points.point, points.block))
+    found = load_capacity(arch, live, placement)
+    return replace(found, unit=UNITS[load.kind], arch_weight_N=float(arch.weight[1:-1].sum()))
+
+
+def load_capacity(
+    arch: RigidArch, live: np.ndarray, placement: Placement | None = None, friction: bool = True
+) -> LoadCapacity:
+    """The largest multiplier of the live load `live` ((n_blocks, 3) generalised forces, as
+    `model.loads.generalised` gives them) that the arch carries under its self-weight in
+    `placement` (default: at rest)."""
+    placement = placement or at_rest(arch)
+    c = contacts(arch, placement)
+    m = arch.n_joints
+    voussoirs = slice(3, 3 * (arch.n_blocks - 1))
+    a_v = equilibrium_matrix(arch, c)[voussoirs]
+    dead = weight_load(arch, placement)[voussoirs]  # what the contacts supply against the weights
+    scale = arch.weight[1:-1].sum()
+    rows = np.tile([1.0, 1.0, 1.0 / arch.geometry.thickness], len(dead) // 3)
+    a_eq = np.column_stack([a_v, np.ravel(live)[voussoirs]]) * rows[:, None]  # ... and the live load
+    objective = np.zeros(3 * m + 1)
+    objective[-1] = -1.0
+    bounds = [(0.0, None if t else 0.0) for t in c.touching.T.ravel()] + [(None, None)] * m + [(0.0, None)]
+    a_ub = b_ub = None
+    if friction:
+        mu = arch.tan_phi * np.eye(m)
+        a_ub = np.block([[-mu, -mu, np.eye(m)], [-mu, -mu, -np.eye(m)]])
+        a_ub = np.column_stack([a_ub, np.zeros(2 * m)])
+        b_ub = np.zeros(2 * m)
+    result = linprog(
+        objective,
+        A_ub=a_ub,
+        b_ub=b_ub,
+        A_eq=a_eq,
+        b_eq=dead * rows / scale,
+        bounds=bounds,
+        method=LP_METHOD,
+        options=LP_OPTIONS,
+    )
+    if result.status == STATUS_UNBOUNDED:
+        return LoadCapacity(math.inf, (), np.zeros((m, 2)), np.zeros(m))
+    if result.status == STATUS_INFEASIBLE:
+        return LoadCapacity(math.nan, (), np.zeros((m, 2)), np.zeros(m))
+    if result.status != 0:
+        raise LimitError(f"load multiplier LP failed: {result.message}")
+    x = result.x[:-1] * scale
+    velocity = result.eqlin.marginals * rows  # the dual: the voussoirs' virtual velocities
+    pivots = _hinges(arch, a_v, velocity, c.touching)
+    return LoadCapacity(float(result.x[-1] * scale), pivots, np.column_stack([x[:m], x[m : 2 * m]]), x[2 * m :])
+
+
+def _hinges(arch: RigidArch, a_v: np.ndarray, velocity: np.ndarray, touching: np.ndarray) -> tuple[Pivot, ...]:
+    """The joints the mechanism turns, each about the corner that stays closed."""
+    m = arch.n_joints
+    omega = np.concatenate([[0.0], velocity[2::3], [0.0]])
+    relative = omega[arch.right] - omega[arch.left]
+    largest = float(np.abs(relative).max())
+    if largest == 0.0:
+        return ()
+    rates = a_v.T @ velocity
+    gaps = np.abs(np.column_stack([rates[:m], rates[m : 2 * m]]))
+    gaps = np.where(touching, gaps, np.inf)
+    turning = np.flatnonzero(np.abs(relative) > HINGE_RATE_FRACTION * largest)
+    return tuple(Pivot(int(k), int(np.argmin(gaps[k]))) for k in turning)
+
+
+def residual_capacity(case: ArchCase, at_mm: float) -> LoadCapacity:
+    """The live load's capacity after the case's support movement to `at_mm` (along its path), in the
+    state the rigid march has the arch there (its hinges open): the residual capacity of a settled arch."""
+    from yadearch.solve.limit import limit_analysis
+
+    march = limit_analysis(case, max_displacement_mm=at_mm, mirror=False)
+    if march.du_rigid_mm is not None and march.du_rigid_mm <= at_mm:
+        raise LimitError(f"the rigid arch collapses at {march.du_rigid_mm:.2f} mm, before {at_mm:g} mm of movement")
+    placement = Placement(units.mm(at_mm), np.array(march.rotation_rad), units.mm(np.array(march.shift_mm)))
+    return load_analysis(case, placement)
