@@ -213,9 +213,14 @@ def _tangent_kernel(
     return normal_force, shear_force, point, compressed, plastic_slip, block_force, block_torque, local
 
 
+def kernel_table(table: JointTable, law: JointLaw) -> tuple:
+    """The joint table's arrays and the law's constants as one tuple, as the compiled kernels of the
+    static engine take them (a flat tuple of arrays costs numba about 10 us to dispatch)."""
+    return (*table.kernel_geometry(), *law.kernel_constants(), *table.kernel_gaps())
+
+
 def free_state(
-    table: JointTable,
-    law: JointLaw,
+    kernel: tuple,
     u: np.ndarray,
     u_before: np.ndarray,
     shear_before: np.ndarray,
@@ -226,73 +231,29 @@ def free_state(
 ) -> tuple[JointTangent, np.ndarray, np.ndarray]:
     """In one compiled call: the joints at generalised coordinates `u` (x, y, rotation x `length`
     per block) having moved from `u_before`, the residual R = joint forces + `gravity` x the weights
-    on the free blocks (all but the first and last) and their tangent K in band storage."""
-    *forces, local, residual, stiffness = free_state_kernel(
-        *table.kernel_geometry(),
-        *law.kernel_constants(),
-        u,
-        u_before,
-        shear_before,
-        *table.kernel_gaps(),
-        weight,
-        gravity,
-        length,
-        band,
-    )
+    on the free blocks (all but the first and last) and their tangent K in band storage; `kernel` is
+    `kernel_table`'s tuple."""
+    return as_joints(free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, length, band))
+
+
+def as_joints(state: tuple) -> tuple[JointTangent, np.ndarray, np.ndarray]:
+    """`free_state_kernel`'s outputs as (joints, residual, free blocks' band tangent)."""
+    *forces, local, residual, stiffness = state
     return JointTangent(JointForces(*forces), local), residual, stiffness
 
 
 @njit(cache=True)
-def free_state_kernel(
-    left,
-    right,
-    left_intrados,
-    right_intrados,
-    normal0,
-    along0,
-    length,
-    handedness,
-    n_blocks,
-    kn_depth,
-    ks_depth,
-    tan_friction,
-    u,
-    u_before,
-    shear_before,
-    gap_fraction,
-    gap,
-    imperfect,
-    weight,
-    gravity,
-    lever,
-    band,
-):
+def free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, lever, band):
     """`_tangent_kernel` at the poses of `u`, then the free blocks' residual and band tangent."""
+    (left, right, left_intrados, right_intrados, normal0, along0, length, handedness, n_blocks,
+     kn_depth, ks_depth, tan_friction, gap_fraction, gap, imperfect) = kernel  # fmt: skip
     placed, before = u.reshape(-1, BLOCK_DOFS), u_before.reshape(-1, BLOCK_DOFS)
     pos, pos_before = np.ascontiguousarray(placed[:, 0:2]), np.ascontiguousarray(before[:, 0:2])
     rot, rot_before = placed[:, 2] / lever, before[:, 2] / lever
     outputs = _tangent_kernel(
-        left,
-        right,
-        left_intrados,
-        right_intrados,
-        normal0,
-        along0,
-        length,
-        handedness,
-        n_blocks,
-        kn_depth,
-        ks_depth,
-        tan_friction,
-        pos,
-        rot,
-        pos_before,
-        rot_before,
-        shear_before,
-        gap_fraction,
-        gap,
-        imperfect,
-    )
+        left, right, left_intrados, right_intrados, normal0, along0, length, handedness, n_blocks,
+        kn_depth, ks_depth, tan_friction, pos, rot, pos_before, rot_before, shear_before, gap_fraction, gap, imperfect,
+    )  # fmt: skip
     block_force, block_torque, local = outputs[5], outputs[6], outputs[7]
     residual = np.empty(BLOCK_DOFS * (n_blocks - 2))
     for b in range(1, n_blocks - 1):  # joint forces + weights, as generalised forces (torque / lever)

@@ -16,8 +16,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import scipy.linalg
 
-from yadearch.model.joint_law import JointForces
-from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent
+from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, as_joints
 from yadearch.solve import banded
 from yadearch.solve.newton_kernel import CONVERGED, RUNAWAY, STUCK, TIMEOUT, descent_kernel, newton_kernel
 from yadearch.solve.stages import Verdict
@@ -25,11 +24,7 @@ from yadearch.solve.statics import StaticArch
 
 BACKTRACKS = 12  # halvings of a Newton step before it counts as failed
 SUFFICIENT_DECREASE = 1e-4  # Armijo constant of the line search on |R|^2
-SHIFT_GROWTH = 10.0  # the descent's shift grows by this after a step that would take energy in
-SHIFT_FALL = 0.3  # ... and falls by this after one that releases energy
 ROUNDOFF = 1e-14  # relative round-off of a position, about 50 machine epsilons
-MAX_SHIFT_RATIO = 1e12  # a shift this many times its start means no step releases energy any more
-MIN_SHIFT_RATIO = 1e-12  # the shift falls no lower (Newton's own steps)
 RETURN_FRACTION = 0.01  # a descent ending this x max_step from the saddle it was kicked off came back
 RETURNS_TO_STAND = 2  # ... and one that comes back this many times sits in a well
 KICK_FRACTION = 0.02  # an unstable equilibrium is left along its softest mode by this x max_step
@@ -126,20 +121,9 @@ class Solver:
         """Newton from `u0` (supports already placed); None if it does not converge. The iterations
         run compiled (`solve.newton_kernel`): Newton's step capped at `max_step`, halved up to
         BACKTRACKS times until |R|^2 falls by SUFFICIENT_DECREASE x the step's fraction."""
-        arch = self.arch
         u, loops, evaluations, success, state = newton_kernel(
-            *arch.table.kernel_geometry(),
-            *arch.law.kernel_constants(),
-            *arch.table.kernel_gaps(),
+            self._problem(u_before, shear_before, gravity),
             u0,
-            u_before,
-            shear_before,
-            arch.weight,
-            gravity,
-            arch.length,
-            banded.BAND,
-            self.converged,
-            self.settings.max_step,
             self.settings.newton_iterations,
             BACKTRACKS,
             SUFFICIENT_DECREASE,
@@ -148,8 +132,8 @@ class Solver:
         self.evaluations += evaluations
         if not success:
             return None
-        *forces, local, residual, stiffness = state
-        return self.result(u, JointTangent(JointForces(*forces), local), residual, stiffness, loops - 1, u0)
+        joints, residual, stiffness = as_joints(state)
+        return self.result(u, joints, residual, stiffness, loops - 1, u0)
 
     def descend(
         self,
@@ -180,8 +164,7 @@ class Solver:
             self.iterations += reached - iteration + (event in (CONVERGED, STUCK))
             self.evaluations += evaluations
             iteration = reached
-            *forces, local, residual, stiffness = state
-            joints = JointTangent(JointForces(*forces), local)
+            joints, residual, stiffness = as_joints(state)
             if event == RUNAWAY:
                 return self.result(u, joints, residual, stiffness, iteration, origin, Verdict.RUNAWAY)
             if event == TIMEOUT:
@@ -205,6 +188,22 @@ class Solver:
                 joints, residual, stiffness = self.state(u, u_before, shear_before, gravity)
                 return self.result(u, joints, residual, stiffness, budget, origin, Verdict.TIMEOUT)
 
+    def _problem(self, u_before: np.ndarray, shear_before: np.ndarray, gravity: float) -> tuple:
+        """One support position's equilibrium problem as the compiled kernels take it
+        (`solve.newton_kernel._evaluate`)."""
+        arch = self.arch
+        return (
+            arch.kernel,
+            u_before,
+            shear_before,
+            arch.weight,
+            gravity,
+            arch.length,
+            banded.BAND,
+            self.converged,
+            self.settings.max_step,
+        )
+
     def _descent_run(
         self,
         u: np.ndarray,
@@ -220,31 +219,8 @@ class Solver:
     ) -> tuple:
         """The descent's iterations `start` to `budget` compiled (`solve.newton_kernel.descent_kernel`),
         to the first event the interpreter decides on (an equilibrium, a stuck shift) or an end."""
-        arch = self.arch
-        return descent_kernel(
-            *arch.table.kernel_geometry(),
-            *arch.law.kernel_constants(),
-            *arch.table.kernel_gaps(),
-            u,
-            u_before,
-            shear_before,
-            arch.weight,
-            gravity,
-            arch.length,
-            banded.BAND,
-            self.converged,
-            self.settings.max_step,
-            floor,
-            shift,
-            origin,
-            runaway,
-            start,
-            budget,
-            SHIFT_GROWTH,
-            SHIFT_FALL,
-            MAX_SHIFT_RATIO,
-            MIN_SHIFT_RATIO,
-        )
+        problem = self._problem(u_before, shear_before, gravity)
+        return descent_kernel(problem, u, floor, shift, origin, runaway, start, budget)
 
     def _kick(self, u: np.ndarray, stiffness: np.ndarray) -> np.ndarray:
         """`u` moved along the softest mode of `stiffness`, the way the weights go down."""

@@ -13,44 +13,13 @@ from yadearch.solve.banded import band_solve
 
 
 @njit(cache=True)
-def newton_kernel(
-    left,
-    right,
-    left_intrados,
-    right_intrados,
-    normal0,
-    along0,
-    length,
-    handedness,
-    n_blocks,
-    kn_depth,
-    ks_depth,
-    tan_friction,
-    gap_fraction,
-    gap,
-    imperfect,
-    u0,
-    u_before,
-    shear_before,
-    weight,
-    gravity,
-    lever,
-    band,
-    converged,
-    max_step,
-    iterations,
-    backtracks,
-    sufficient_decrease,
-):
-    """Newton from `u0` with a backtracking line search: (u, loops, evaluations, success, state), the
-    state being `free_state_kernel`'s outputs at u; loops counts the iterations begun, as the
-    interpreted loop counts them."""
+def newton_kernel(problem, u0, iterations, backtracks, sufficient_decrease):
+    """Newton from `u0` with a backtracking line search on `problem` (`_evaluate`): (u, loops,
+    evaluations, success, state), the state being `free_state_kernel`'s outputs at u; loops counts
+    the iterations begun, as the interpreted loop counts them."""
     u = u0.copy()
-    state = free_state_kernel(
-        left, right, left_intrados, right_intrados, normal0, along0, length, handedness, n_blocks,
-        kn_depth, ks_depth, tan_friction, u, u_before, shear_before, gap_fraction, gap, imperfect,
-        weight, gravity, lever, band,
-    )  # fmt: skip
+    state = _evaluate(problem, u)
+    converged, max_step = problem[7], problem[8]
     evaluations = 1
     first = BLOCK_DOFS
     for iteration in range(iterations):
@@ -69,11 +38,7 @@ def newton_kernel(
         for _ in range(backtracks):
             trial = u.copy()
             trial[first : first + d.shape[0]] += alpha * d
-            trial_state = free_state_kernel(
-                left, right, left_intrados, right_intrados, normal0, along0, length, handedness, n_blocks,
-                kn_depth, ks_depth, tan_friction, trial, u_before, shear_before, gap_fraction, gap, imperfect,
-                weight, gravity, lever, band,
-            )  # fmt: skip
+            trial_state = _evaluate(problem, trial)
             evaluations += 1
             trial_residual = trial_state[8]
             if trial_residual @ trial_residual <= (1.0 - sufficient_decrease * alpha) * merit:
@@ -87,58 +52,34 @@ def newton_kernel(
 
 
 CONVERGED, STUCK, RUNAWAY, TIMEOUT = 0, 1, 2, 3  # why `descent_kernel` hands back
+SHIFT_GROWTH = 10.0  # the descent's shift grows by this after a step that would take energy in
+SHIFT_FALL = 0.3  # ... and falls by this after one that releases energy
+MAX_SHIFT_RATIO = 1e12  # a shift this many times its start means no step releases energy any more
+MIN_SHIFT_RATIO = 1e-12  # the shift falls no lower (Newton's own steps)
 
 
 @njit(cache=True)
 def descent_kernel(
-    left,
-    right,
-    left_intrados,
-    right_intrados,
-    normal0,
-    along0,
-    length,
-    handedness,
-    n_blocks,
-    kn_depth,
-    ks_depth,
-    tan_friction,
-    gap_fraction,
-    gap,
-    imperfect,
+    problem,
     u0,
-    u_before,
-    shear_before,
-    weight,
-    gravity,
-    lever,
-    band,
-    converged,
-    max_step,
     floor,
     shift,
     origin,
     runaway,
     start,
     budget,
-    shift_growth,
-    shift_fall,
-    max_shift_ratio,
-    min_shift_ratio,
 ):
     """The descent's damped Newton steps (K + shift I) d = R from `u0`, iterations `start` to
-    `budget`, until an equilibrium (CONVERGED), a shift past `max_shift_ratio` x `floor` (STUCK), a
+    `budget`, until an equilibrium (CONVERGED), a shift past `MAX_SHIFT_RATIO` x `floor` (STUCK), a
     block `runaway` from `origin` (RUNAWAY) or the budget's end (TIMEOUT): (u, iteration, evaluations,
     event, floor, shift, state). A `floor` <= 0 is set from the first state: its stiffest diagonal
     term, or a whole joint's normal stiffness where nothing touches yet."""
     u = u0.copy()
-    state = free_state_kernel(
-        left, right, left_intrados, right_intrados, normal0, along0, length, handedness, n_blocks,
-        kn_depth, ks_depth, tan_friction, u, u_before, shear_before, gap_fraction, gap, imperfect,
-        weight, gravity, lever, band,
-    )  # fmt: skip
+    state = _evaluate(problem, u)
+    converged, max_step = problem[7], problem[8]
     evaluations = 1
     if floor <= 0.0:
+        kn_depth, length, band = problem[0][9], problem[0][6], problem[6]
         floor = max(np.abs(state[9][band]).max(), kn_depth * length.max())
         shift = floor
     first = BLOCK_DOFS
@@ -146,31 +87,35 @@ def descent_kernel(
         residual, stiffness = state[8], state[9]
         if np.abs(residual).max() <= converged:
             return u, iteration, evaluations, CONVERGED, floor, shift, state
-        if shift > max_shift_ratio * floor:
+        if shift > MAX_SHIFT_RATIO * floor:
             return u, iteration, evaluations, STUCK, floor, shift, state
         d, singular = band_solve(stiffness, residual, shift)
         if singular:
-            shift *= shift_growth
+            shift *= SHIFT_GROWTH
             continue
         largest = np.abs(d).max()
         if largest > 0.0:
             d = d * min(1.0, max_step / largest)
         trial = u.copy()
         trial[first : first + d.shape[0]] += d
-        trial_state = free_state_kernel(
-            left, right, left_intrados, right_intrados, normal0, along0, length, handedness, n_blocks,
-            kn_depth, ks_depth, tan_friction, trial, u_before, shear_before, gap_fraction, gap, imperfect,
-            weight, gravity, lever, band,
-        )  # fmt: skip
+        trial_state = _evaluate(problem, trial)
         evaluations += 1
         if not (residual + trial_state[8]) @ d > 0.0:
-            shift *= shift_growth
+            shift *= SHIFT_GROWTH
             continue
-        shift = max(shift * shift_fall, min_shift_ratio * floor)
+        shift = max(shift * SHIFT_FALL, MIN_SHIFT_RATIO * floor)
         u, state = trial, trial_state
         if _largest_move(u, origin) > runaway:
             return u, iteration + 1, evaluations, RUNAWAY, floor, shift, state
     return u, budget, evaluations, TIMEOUT, floor, shift, state
+
+
+@njit(cache=True)
+def _evaluate(problem, u):
+    """`free_state_kernel` at `u` for a `problem`: (kernel table, u_before, shear_before, weights,
+    gravity, lever, band, converged residual, largest step), as `solve.newton.Solver` packs it."""
+    kernel, u_before, shear_before, weight, gravity, lever, band = problem[:7]
+    return free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, lever, band)
 
 
 @njit(cache=True)

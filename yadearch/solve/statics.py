@@ -8,6 +8,7 @@ stiffness K = -dF/du is in N/m throughout, as `model.stability` records it for t
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -19,7 +20,14 @@ from yadearch.case.support import case_movement
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, block_volume
 from yadearch.model.joint_law import JointLaw, JointTable, joint_table
-from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, assemble_band, free_state, joint_tangent
+from yadearch.model.joint_tangent import (
+    BLOCK_DOFS,
+    JointTangent,
+    assemble_band,
+    free_state,
+    joint_tangent,
+    kernel_table,
+)
 from yadearch.model.movement import Movement
 from yadearch.solve import banded
 from yadearch.solve.newton_kernel import descent_kernel, newton_kernel
@@ -109,9 +117,12 @@ class StaticArch:
         """The joints at `u` (moved from `u_before`, where their shear forces were `shear_before`), the
         free blocks' residual R = joint forces + `gravity` x the weights (generalised) and their
         tangent K in band storage (`solve.banded`), in one compiled call."""
-        return free_state(
-            self.table, self.law, u, u_before, shear_before, self.weight, gravity, self.length, banded.BAND
-        )
+        return free_state(self.kernel, u, u_before, shear_before, self.weight, gravity, self.length, banded.BAND)
+
+    @functools.cached_property
+    def kernel(self) -> tuple:
+        """The joint table and law as the compiled kernels take them (`model.joint_tangent.kernel_table`)."""
+        return kernel_table(self.table, self.law)
 
     def generalised_forces(self, joints: JointTangent) -> np.ndarray:
         """The joints' forces on every block as a generalised vector (torques / `length`)."""
@@ -158,7 +169,6 @@ def compile_kernels() -> None:
     u, shear = arch.at_rest(), np.zeros(len(arch.table.left))
     joints = arch.evaluate(u, u, shear)
     arch.band_stiffness(joints, banded.BAND)
-    kernel_arrays = (*arch.table.kernel_geometry(), *arch.law.kernel_constants(), *arch.table.kernel_gaps())
-    common = (arch.weight, 1.0, arch.length, banded.BAND, 1e-9, 1e-4)
-    newton_kernel(*kernel_arrays, u, u, shear, *common, 2, 2, 1e-4)
-    descent_kernel(*kernel_arrays, u, u, shear, *common, 0.0, 0.0, u, 1e-3, 0, 2, 10.0, 0.3, 1e12, 1e-12)
+    problem = (arch.kernel, u, shear, arch.weight, 1.0, arch.length, banded.BAND, 1e-9, 1e-4)
+    newton_kernel(problem, u, 2, 2, 1e-4)
+    descent_kernel(problem, u, 0.0, 0.0, u, 1e-3, 0, 2)
