@@ -1,7 +1,7 @@
 """yadearch: masonry arches on moving supports, simulated with YADE's polyhedral discrete elements.
 
 The public API (`yadearch.api`): `preset`, `movement`, `run`, `reproduce`, `report`, `open_run`, `sweep`,
-`montecarlo`, `calibrate`, `robustness`, `capacity`, `sensitivity`, `limit`, imported on first use so that
+`montecarlo`, `calibrate`, `robustness`, `capacity`, `sensitivity`, `limit`, `loads`, imported on first use so that
 `import yadearch` stays light (no pandas, no YADE); type checkers and IDEs see them through the
 TYPE_CHECKING import below."""
 
@@ -16,6 +16,7 @@ if TYPE_CHECKING:
         calibrate,
         capacity,
         limit,
+        loads,
         montecarlo,
         movement,
         open_run,
@@ -43,6 +44,7 @@ __all__ = [
     "capacity",
     "sensitivity",
     "limit",
+    "loads",
     "RunResult",
     "HingeAtCollapse",
 ]

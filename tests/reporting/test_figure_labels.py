@@ -64,3 +64,17 @@ def test_a_label_on_a_block_is_found():
     block = blocks[len(blocks) // 2].get_xy()
     ax.annotate("on a block", block.mean(axis=0), fontsize=TEXT_PT)
     assert any("on a block" in clash for clash in label_clashes(fig))
+
+
+def test_the_load_collapse_figure_labels_its_hinges_clear_of_the_blocks(tmp_path, monkeypatch):
+    import yadearch as ya
+    from yadearch.plotting import load_figure
+
+    drawn = []
+    monkeypatch.setattr(load_figure, "save_figure", lambda fig, stem: drawn.append(fig) or (stem, stem))
+    result = ya.loads(ya.preset("set2").replace(live_load="vertical"), out=tmp_path)
+    (fig,) = drawn
+    hinge_labels = {t.get_text() for t in fig.axes[0].texts}
+    assert {p.label for p in result.pivots} <= hinge_labels
+    assert label_clashes(fig) == []
+    assert (tmp_path / "set2_loads.json").is_file()

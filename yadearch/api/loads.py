@@ -11,20 +11,25 @@ from typing import Any
 from yadearch.api.runs import as_case
 from yadearch.atomic import write_text_atomically
 from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import arch_geometry
 from yadearch.case.names import check_name, output_path
+from yadearch.plotting.load_figure import plot_load_collapse
 from yadearch.solve.load_lp import LoadCapacity, load_analysis
 
 
 def loads(case: ArchCase | str, out: str | Path | None = None) -> LoadCapacity:
     """The live load (`case.loads`) the arch carries at collapse, its self-weight held: the multiplier
     in N (a vertical load) or g (a horizontal acceleration), the mechanism's hinges; no YADE, under a
-    second. With `out`, writes OUT/NAME_loads.json (the result and the case)."""
+    second. With `out`, writes OUT/NAME_loads.json (the result and the case) and the collapse's
+    figure OUT/NAME_loads.pdf/.png (`plotting.load_figure`)."""
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
     result = load_analysis(case)
     if folder is not None:
         write_text_atomically(loads_file(case, folder), json.dumps(load_json(result, case), indent=1) + "\n")
+        if math.isfinite(result.multiplier):
+            plot_load_collapse(case, arch_geometry(case), result, folder / f"{case.name}_loads")
     return result
 
 

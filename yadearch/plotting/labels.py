@@ -15,6 +15,7 @@ from matplotlib.transforms import Bbox
 
 TURNS_DEG = (0.0, 45.0, -45.0, 90.0, -90.0, 135.0, -135.0, 180.0)  # tried in turn from the preferred side
 PAD_PX = 1.0  # a label this close to something touches it
+FARTHER = 2.5  # where no direction is clear at the label's distance, they are tried this much farther
 CORNERS = (  # axes positions and alignments of a corner text, in the order tried
     ((0.01, 0.02), ("left", "bottom")),
     ((0.01, 0.98), ("left", "top")),
@@ -27,12 +28,13 @@ def place_label(ax: Axes, label: Annotation, preferred: np.ndarray, offset_pt: f
     """Move `label` (offset from its point in points) to the first direction, turning away from
     `preferred` (a unit vector), where it clears the blocks, the labels already placed and the edge."""
     renderer = _renderer(ax.figure)
-    for turn in np.radians(TURNS_DEG):
-        c, s = np.cos(turn), np.sin(turn)
-        direction = np.array([c * preferred[0] - s * preferred[1], s * preferred[0] + c * preferred[1]])
-        _aim(label, direction, offset_pt)
-        if not _clashes(ax, label, renderer):
-            return
+    for distance in (offset_pt, FARTHER * offset_pt):
+        for turn in np.radians(TURNS_DEG):
+            c, s = np.cos(turn), np.sin(turn)
+            direction = np.array([c * preferred[0] - s * preferred[1], s * preferred[0] + c * preferred[1]])
+            _aim(label, direction, distance)
+            if not _clashes(ax, label, renderer):
+                return
     _aim(label, preferred, offset_pt)  # nowhere clear: the preferred side, and the tests will say so
 
 

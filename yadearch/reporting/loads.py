@@ -10,7 +10,9 @@ import pandas as pd
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import arch_geometry
 from yadearch.markdown import markdown_table
+from yadearch.plotting.load_figure import plot_load_collapse
 from yadearch.plotting.loads import plot_loads
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.rigid import rigid_arch
@@ -45,6 +47,8 @@ def write_loads_report(out: Path) -> Path:
         write_csv_atomically(out / f"{name}.csv", table)
     weight = float(rigid_arch(paper).weight[1:-1].sum())
     plot_loads(influence, accelerations, residual, weight, out / "loads")
+    quarter = paper.with_overrides({"live_load": "vertical", "load_position_over_span": QUARTERS[0]})
+    plot_load_collapse(quarter, arch_geometry(quarter), load_analysis(quarter), out / "quarter_span_collapse")
     path = out / "loads.md"
     write_text_atomically(path, _markdown(paper, checks, influence, accelerations, residual, weight))
     return path
@@ -118,6 +122,8 @@ def _markdown(
         )
         + f". A load spread uniformly over the span ({span_mm:.0f} mm): {_capacity_text(uniform.multiplier, 'N')}. "
         f"A horizontal acceleration: {acceleration.multiplier:.3f} g ({acceleration.hinge_labels}).",
+        "",
+        "![a point load at the quarter span at collapse](quarter_span_collapse.png)",
         "",
         "![live loads](loads.png)",
         "",

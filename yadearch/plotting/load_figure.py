@@ -1,0 +1,107 @@
+"""The figure of a live load's collapse (`yadearch loads`): the arch at rest, the line of the contact
+resultants at the collapse load through every joint, the mechanism's hinges, and the load (an arrow at
+its position, or the acceleration's direction)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+from matplotlib.patches import FancyArrow, Polygon
+
+from yadearch.case.config import ArchCase
+from yadearch.model.geometry import ArchGeometry
+from yadearch.model.loads import VERTICAL
+from yadearch.plotting.house import COLUMN_CM, THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
+from yadearch.plotting.labels import layout, place_label
+from yadearch.solve.load_lp import LoadCapacity
+
+MM = 1e3
+BLOCK_COLOUR, SUPPORT_COLOUR = "#EADDCA", "0.45"
+LABEL_PT, OFFSET_PT = 7, 5
+HEIGHT_CM = 6.5
+GAP = 0.01  # of the span: between the load's arrow and the extrados
+
+
+def thrust_points(geometry: ArchGeometry, result: LoadCapacity) -> np.ndarray:
+    """(joints, 2) where the resultant of each joint's corner forces crosses it (mm; NaN where none)."""
+    intrados = np.array([j.intrados[:2] for j in geometry.joints])
+    extrados = np.array([j.extrados[:2] for j in geometry.joints])
+    total = result.normal.sum(axis=1)
+    share = np.divide(result.normal[:, 1], total, out=np.full(len(total), np.nan), where=total > 0)
+    return (intrados + share[:, None] * (extrados - intrados)) * MM
+
+
+@house_style
+def plot_load_collapse(case: ArchCase, geometry: ArchGeometry, result: LoadCapacity, stem: Path) -> tuple[Path, Path]:
+    """STEM.pdf and .png: the arch, the thrust line at collapse, the hinges and the load."""
+    fig = new_figure(height_cm=HEIGHT_CM, width_cm=COLUMN_CM)
+    ax = fig.add_subplot()
+    last = len(geometry.blocks) - 1
+    for b, vertices in enumerate(geometry.blocks):
+        colour = SUPPORT_COLOUR if b in (0, last) else BLOCK_COLOUR
+        ax.add_patch(Polygon(vertices[: len(vertices) // 2, :2] * MM, closed=True, fc=colour, ec="0.2", lw=0.3))
+    points = thrust_points(geometry, result)
+    ax.plot(points[:, 0], points[:, 1], "-", color=THRUST_COLOUR, lw=0.9, label="thrust line at collapse")
+    labels = []
+    for k, pivot in enumerate(result.pivots):
+        joint = geometry.joints[pivot.joint]
+        corner = (joint.intrados if pivot.side == 0 else joint.extrados)[:2] * MM
+        across = (joint.extrados - joint.intrados)[:2]
+        across = across / np.linalg.norm(across)
+        ax.plot(*corner, "o", ms=4, mfc=hinge_colour("", k), mec="white", mew=0.5, zorder=4)
+        label = ax.annotate(pivot.label, corner, xytext=(0, 0), textcoords="offset points", color=hinge_colour("", k))
+        label.set_fontsize(LABEL_PT)
+        labels.append((label, across if pivot.side == 1 else -across))
+    _draw_load(ax, case, geometry)
+    ax.set_aspect("equal")
+    ax.margins(0.12)
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+    ax.set_title(f"{case.name}: collapse at {result.multiplier:.4g} {result.unit}", fontsize=LABEL_PT + 1)
+    layout(fig)
+    for label, away in labels:
+        place_label(ax, label, away, OFFSET_PT)
+    return save_figure(fig, stem)
+
+
+def _extrados_height(geometry: ArchGeometry, x: float) -> float:
+    """The highest extrados point (mm) of the voussoirs over abscissa `x` (mm)."""
+    heights = [
+        float(np.interp(x, *zip(*sorted((a[0] * MM, a[1] * MM) for a in (j0.extrados, j1.extrados)))))
+        for j0, j1 in zip(geometry.joints, geometry.joints[1:])
+        if min(j0.extrados[0], j1.extrados[0]) * MM <= x <= max(j0.extrados[0], j1.extrados[0]) * MM
+    ]
+    return max(heights, default=max(float(b[:, 1].max()) for b in geometry.blocks) * MM)
+
+
+def _draw_load(ax, case: ArchCase, geometry: ArchGeometry) -> None:
+    """An arrow down onto the extrados at the vertical load's centre (its spread as a bar), or one
+    sideways above the crown for an acceleration."""
+    span = geometry.span * MM
+    top = max(float(b[:, 1].max()) for b in geometry.blocks) * MM
+    length = 0.15 * span
+    if case.loads.live_load == VERTICAL:
+        x = (geometry.joints[0].intrados[0] * MM) + case.loads.load_position_over_span * span
+        half = case.loads.load_width_mm / 2.0
+        if half > 0.0:
+            ax.plot([x - half, x + half], [top + 0.02 * span] * 2, "-", color="k", lw=1.5)
+        ax.add_patch(
+            FancyArrow(x, top + length, 0.0, -length * 0.9, width=0.004 * span, color="k", length_includes_head=True)
+        )
+    else:
+        sign = 1.0 if case.loads.acceleration_toward == "right" else -1.0
+        ax.add_patch(
+            FancyArrow(
+                -sign * length / 2,
+                top + 0.1 * span,
+                sign * length,
+                0.0,
+                width=0.004 * span,
+                color="k",
+                length_includes_head=True,
+            )
+        )
+        ax.annotate(
+            "a", (0.0, top + 0.1 * span), xytext=(0, 4), textcoords="offset points", ha="center", fontsize=LABEL_PT
+        )
