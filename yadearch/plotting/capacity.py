@@ -16,6 +16,8 @@ from yadearch.plotting.house import save_figure
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 
 RADIAL_TICKS = 4  # du rings of the polar plot
+# 13 directions told apart: the Okabe-Ito colours, solid on the opening side (0 to -90 deg), dashed beyond
+DIRECTION_COLOURS = ("#000000", "#E69F00", "#56B4E9", "#009E73", "#0072B2", "#D55E00", "#CC79A7")
 RIGID_COLOR = "0.35"
 RIGID_STYLE = {"color": RIGID_COLOR, "ls": "--", "marker": "x", "ms": 3, "lw": 0.8}
 OTHER_BRANCH_STYLE = {"color": RIGID_COLOR, "ls": ":", "marker": "+", "ms": 3, "lw": 0.8}
@@ -65,8 +67,12 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") 
                 **OTHER_BRANCH_STYLE,
             )
         _half_plane(polar, legend_columns=3)
+        for side, marker in SIDE_MARKERS.items():  # the marker legend: which corner a hinge turns about
+            name = "intrados" if side == "I" else "extrados"
+            hinges.plot([], [], marker, ms=3, color="0.3", mfc="none" if side == "E" else "0.3", label=f"{name} hinge")
+        hinges.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, frameon=False)
         hinges.set_xlabel("direction of the support movement (deg from +x)")
-        hinges.set_ylabel("hinge interface (o intrados, s extrados)")
+        hinges.set_ylabel("interface of each hinge at collapse")
         hinges.set_xticks(np.arange(-180, 1, 30))
         hinges.grid(alpha=0.3, lw=0.5)
         return list(save_figure(fig, stem))
@@ -112,22 +118,26 @@ def reaction_curves_figure(curves: dict[str, dict[float, pd.DataFrame]], stem: P
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(2 * COLUMN_WIDTH_IN, 2.8), layout="constrained")
         axes = fig.subplots(1, len(curves), sharey=True, squeeze=False)[0]
-        colormap = matplotlib.colormaps["viridis"]
         for ax, (name, by_direction) in zip(axes, curves.items()):
-            for direction, curve in sorted(by_direction.items()):
+            for direction, curve in sorted(by_direction.items(), reverse=True):
                 ax.plot(
-                    curve["delta_mm"],
-                    curve["force_N"],
-                    lw=0.9,
-                    color=colormap((direction + 180.0) / 180.0),
-                    label=f"{direction:g}°",
+                    curve["delta_mm"], curve["force_N"], lw=0.9, label=f"{direction:g}°", **_direction_style(direction)
                 )
             ax.set_title(name)
             ax.set_xlabel("support displacement along its path (mm)")
             ax.axhline(0.0, color="0.6", lw=0.5)
         axes[0].set_ylabel("force of the arch on the moving\nsupport along its path (N)")
-        axes[-1].legend(title="direction", ncol=2, loc="upper right")
+        axes[-1].legend(title="direction", ncol=1, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False)
         return list(save_figure(fig, stem))
+
+
+def _direction_style(direction_deg: float) -> dict[str, str]:
+    """The colour and line style of one direction's curve: every 15 deg a colour, solid from spreading
+    to settlement, dashed beyond it toward closing."""
+    step = int(round(abs(direction_deg) / 15.0))
+    opening = direction_deg >= -90.0
+    colour = DIRECTION_COLOURS[step % len(DIRECTION_COLOURS)] if opening else DIRECTION_COLOURS[(step - 7) % 7]
+    return {"color": colour, "ls": "-" if opening else "--"}
 
 
 def stiffness_figure(table: pd.DataFrame, dem: pd.DataFrame, stem: Path) -> list[Path]:

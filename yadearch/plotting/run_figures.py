@@ -33,6 +33,7 @@ from yadearch.solve.stages import Stage
 
 LEFT_COLOUR, RIGHT_COLOUR = "#0072B2", "#D55E00"
 PAST_DU_ALPHA = 0.35
+PATH_HEADROOM = 1.15  # the hinge figure's scale: the largest value on the path, with this room
 SETTLEMENT_DEG = -90.0  # a support moving straight down settles; any other direction is a displacement
 
 
@@ -177,22 +178,25 @@ def plot_reactions(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[P
 
 @house_style
 def plot_hinge_openings(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[Path, Path]:
-    """Opening and rotation of every hinge against the settlement, its formation marked."""
+    """Opening and rotation of every hinge against the settlement, its formation marked; scaled to the
+    equilibrium path, the runaway past du fading off the top."""
     delta = analysis.history.delta_mm
     fig = new_figure(height_cm=9.0)
     top, bottom = fig.subplots(2, 1, sharex=True)
+    on_path = delta <= analysis.du_mm if analysis.du_mm is not None else np.ones(len(delta), bool)
+    highest = {top: 0.0, bottom: 0.0}
     for k, track in enumerate(analysis.tracks):
         colour = hinge_colour(track.paper_label, k)
         label = f"{track.paper_label}: {track.interface}{track.side}"
         r = track.formed_record
-        top.plot(delta, track.opening_mm, color=colour, label=label)
-        top.plot(delta[r], track.opening_mm[r], "o", ms=3.5, color=colour)
-        rotation = track.rotation_mrad
-        bottom.plot(delta, rotation, color=colour)
-        bottom.plot(delta[r], rotation[r], "o", ms=3.5, color=colour)
+        for ax, values, name in ((top, track.opening_mm, label), (bottom, track.rotation_mrad, None)):
+            _plot_until_du(ax, delta, values, analysis.du_mm, color=colour, label=name)
+            ax.plot(delta[r], values[r], "o", ms=3.5, color=colour)
+            highest[ax] = max(highest[ax], float(np.nanmax(values[on_path], initial=0.0)))
     for ax in (top, bottom):
         _mark_du(ax, analysis.du_mm, legend=ax is top)
-        ax.set_ylim(bottom=0)
+        # the runaway past du would dwarf the path: the scale is the path's, the collapse runs off it
+        ax.set_ylim(0, PATH_HEADROOM * highest[ax] if highest[ax] > 0 else None)
     top.plot([], [], "o", ms=3.5, color="0.3", label="hinge formed")
     top.legend(loc="upper left", ncols=1)
     top.set_ylabel("hinge opening (mm)")
