@@ -68,13 +68,23 @@ def test_cli_reports_a_missing_case_file(capsys, tmp_path):
 
 
 def test_cli_says_in_one_line_when_yade_is_missing(capsys, monkeypatch, tmp_path):
-    import yadearch.engine.process
+    import yadearch.engine.yade_env
 
-    monkeypatch.setattr(yadearch.engine.process, "YADE_PY_DIRS", (str(tmp_path / "nowhere"),))
+    monkeypatch.setattr(yadearch.engine.yade_env, "YADE_PY_DIRS", (str(tmp_path / "nowhere"),))
     code = main(["run", "--preset", "set1", "--out", str(tmp_path / "run")])
     err = capsys.readouterr().err.strip()
     assert code == 1
     assert err.startswith("error: YADE is not installed") and "\n" not in err
+
+
+def test_cli_says_in_one_line_when_this_python_cannot_load_debians_yade(capsys, monkeypatch, tmp_path):
+    import numpy
+
+    monkeypatch.setattr(numpy, "__version__", "2.4.6")  # a pip install's numpy, not Debian's 1.24
+    code = main(["run", "--preset", "set1", "--out", str(tmp_path / "run")])
+    err = capsys.readouterr().err.strip()
+    assert code == 1
+    assert "numpy 2.4.6" in err and "scripts/setup.sh" in err and "\n" not in err
 
 
 def test_support_speed_falls_as_one_over_sqrt_kn_above_the_reference_stiffness():

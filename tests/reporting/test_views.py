@@ -97,7 +97,17 @@ def _cell_array(grid, name):
     return vtk_to_numpy(grid.GetCellData().GetArray(name))
 
 
+def test_the_paraview_export_without_vtk_is_a_one_line_error(run, tmp_path, monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "vtkmodules.vtkCommonDataModel", None)  # as on a pip install without VTK
+    with pytest.raises(YadearchError, match="needs VTK") as error:
+        run.export_vtk(tmp_path / "vtk")
+    assert "\n" not in str(error.value)
+
+
 def test_the_paraview_series_reads_back_with_vtk(run, tmp_path):
+    pytest.importorskip("vtkmodules")
     """Every path state at its delta, both parts; the blocks' volumes are the prisms' (rigid motion,
     positive: well-ordered hexahedra); the moving support's displacement is the settlement; four
     joints flagged as hinges at collapse."""
@@ -156,6 +166,7 @@ writer.Write()
 def test_a_state_renders_off_screen(run, tmp_path):
     """ParaView's engine draws the exported blocks: the picture is not blank (X-less machines render
     through Xvfb, as ParaView's batch tools do)."""
+    pytest.importorskip("vtkmodules")
     pvd = run.export_vtk(tmp_path / "vtk")
     blocks = tmp_path / "vtk" / ElementTree.parse(pvd).getroot().find("Collection").find("DataSet").get("file")
     command = [sys.executable, "-c", RENDER, str(blocks), str(tmp_path / "state.png")]
@@ -169,6 +180,7 @@ def test_a_state_renders_off_screen(run, tmp_path):
 
 
 def test_the_commands_write_the_movie_and_the_series(run, tmp_path, capsys):
+    pytest.importorskip("vtkmodules")
     assert main(["animate", str(run.path), "--format", "gif", "--out", str(tmp_path / "m.gif")]) == 0
     assert main(["export", str(run.path), "--vtk", "--out", str(tmp_path / "v")]) == 0
     out = capsys.readouterr().out

@@ -16,7 +16,7 @@ from pathlib import Path
 from yadearch.case.config import ArchCase
 from yadearch.case.plan import plan_run
 from yadearch.engine.simulate import SCRATCH_RECORD
-from yadearch.engine.yade_env import YADE_PY_DIRS
+from yadearch.engine.yade_env import yade_problem
 from yadearch.errors import RunFailedError, RunInterruptedError, YadearchError, YadeMissingError
 from yadearch.results.lock import LOCK_SUFFIX, folder_lock
 from yadearch.results.rundir import CASE_FILE, LOG_FILE, STAGING_PREFIX, STAGING_SUFFIX, is_complete, staging_folder
@@ -70,13 +70,10 @@ def _run_child(cmd: list[str], env: dict[str, str], timeout_s: float | None, qui
 
 
 def check_yade_installed() -> None:
-    """Fail early, in one line, when Debian's YADE is not installed."""
-    if not any(Path(d, "yade", "__init__.py").is_file() for d in YADE_PY_DIRS):
-        raise YadeMissingError(
-            "YADE is not installed (no yade package under "
-            f"{' or '.join(YADE_PY_DIRS)}); run `sudo apt-get install -y yade` "
-            "or `bash scripts/setup.sh`"
-        )
+    """Fail early, in one line, when this interpreter cannot run Debian's YADE (`yade_env.yade_problem`)."""
+    problem = yade_problem()
+    if problem is not None:
+        raise YadeMissingError(problem)
 
 
 def exit_reason(returncode: int) -> str:

@@ -15,6 +15,26 @@ from types import ModuleType
 from yadearch.errors import YadeMissingError
 
 YADE_PY_DIRS = ("/usr/lib/x86_64-linux-gnu/yade-double/py", "/usr/lib/x86_64-linux-gnu/yade/py")
+DEBIAN_NUMPY_MAJOR = 1  # Debian 12's YADE is built against its numpy 1.24: an interpreter on numpy 2 cannot load it
+
+
+def yade_problem() -> str | None:
+    """Why this interpreter cannot run Debian's YADE, in one line; None if it can (its package is
+    installed and this Python's numpy is the 1.x it was built against)."""
+    if not any(Path(d, "yade", "__init__.py").is_file() for d in YADE_PY_DIRS):
+        return (
+            f"YADE is not installed (no yade package under {' or '.join(YADE_PY_DIRS)}); run "
+            "`sudo apt-get install -y yade` or `bash scripts/setup.sh`"
+        )
+    import numpy
+
+    if int(numpy.__version__.split(".")[0]) != DEBIAN_NUMPY_MAJOR:
+        return (
+            f"this Python ({sys.executable}) has numpy {numpy.__version__}; Debian's YADE needs Debian's numpy "
+            "1.24: run DEM cases from the venv `bash scripts/setup.sh` makes (the static engine and the limit "
+            "analysis run here)"
+        )
+    return None
 
 
 def import_yade(threads: int = 1) -> ModuleType:

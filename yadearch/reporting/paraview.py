@@ -14,6 +14,7 @@ import numpy as np
 
 from yadearch.analysis.blocks import block_centroids, case_geometry, joint_points
 from yadearch.atomic import write_atomically
+from yadearch.errors import YadearchError
 from yadearch.model.geometry import ArchGeometry
 from yadearch.plotting.states import run_states, state_hinges, state_joints
 from yadearch.results.rundir import RunFolder
@@ -83,9 +84,13 @@ def _write(grid: Any, path: Path) -> Path:
 def export_run(run: RunFolder, out: Path) -> Path:
     """Write every state of the run's loading path into `out` (one .vtu per part and state) and
     `out`/RUN.pvd (RUN: the run folder's name) that lists them by time; returns the .pvd's path."""
-    from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_VERTEX
-
     states = run_states(run)
+    try:
+        from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_VERTEX
+    except ImportError:
+        raise YadearchError(
+            "the ParaView export needs VTK: Debian's python3-vtk9 (scripts/setup.sh) or `pip install vtk`"
+        ) from None
     geometry = case_geometry(run.case)
     n_blocks, n_joints = len(geometry.blocks), len(geometry.joints)
     depth_mid = float(np.mean([prism[:, 2].mean() for prism in geometry.blocks]))
