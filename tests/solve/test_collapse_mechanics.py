@@ -87,6 +87,19 @@ def test_the_paper_arch_collapses_by_a_four_hinge_mechanism(tmp_path: Path) -> N
     assert summary.collapse_mode_hinges[-1] == "56E"
 
 
+def test_the_shallow_arch_collapses_by_four_hinges_after_a_snap(tmp_path: Path) -> None:
+    """Embrace 75 deg (the issue's two-hinge 'mechanism', 5I 51E): a four-hinge mechanism whose mode
+    turns the joints the collapse names, past a snap (du_first < du) that the path survives."""
+    summary = static_run(tmp_path, "shallow", {"embrace_deg": 75.0})
+    assert summary.collapse_kind == "four-hinge mechanism"
+    assert summary.du_first_mm is not None and summary.du_mm is not None
+    assert summary.du_first_mm < summary.du_mm
+    named = summary.hinge_labels.split()
+    mode = summary.collapse_mode_hinges or []
+    assert len(named) == len(mode) == 4
+    assert all(a[-1] == b[-1] and abs(int(a[:-1]) - int(b[:-1])) <= 1 for a, b in zip(named, mode))
+
+
 def test_a_timeout_at_the_bracket_is_unresolved_never_collapse() -> None:
     """A path whose last failure is a solver's timeout has no du: its outcome is unresolved."""
     path = PathResult(lower=0.01, upper=0.0101, steps=[PathStep(0.01, 0.0101, Verdict.TIMEOUT)])
