@@ -8,7 +8,7 @@ import math
 import click
 
 from yadearch import api
-from yadearch.api.loads import loads_file
+from yadearch.api.live_loads import loads_file
 from yadearch.cli.options import OUT_FOLDER, case_options, resolve_case
 
 

@@ -67,11 +67,13 @@ def plot_load_collapse(case: ArchCase, geometry: ArchGeometry, result: LoadCapac
 
 def _extrados_height(geometry: ArchGeometry, x: float) -> float:
     """The highest extrados point (mm) of the voussoirs over abscissa `x` (mm)."""
-    heights = [
-        float(np.interp(x, *zip(*sorted((a[0] * MM, a[1] * MM) for a in (j0.extrados, j1.extrados)))))
-        for j0, j1 in zip(geometry.joints, geometry.joints[1:])
-        if min(j0.extrados[0], j1.extrados[0]) * MM <= x <= max(j0.extrados[0], j1.extrados[0]) * MM
-    ]
+    heights = []
+    for j0, j1 in zip(geometry.joints, geometry.joints[1:]):
+        (xa, ya), (xb, yb) = sorted(
+            ((j0.extrados[0] * MM, j0.extrados[1] * MM), (j1.extrados[0] * MM, j1.extrados[1] * MM))
+        )
+        if xa <= x <= xb:
+            heights.append(ya + (yb - ya) * ((x - xa) / (xb - xa) if xb > xa else 0.5))
     return max(heights, default=max(float(b[:, 1].max()) for b in geometry.blocks) * MM)
 
 
