@@ -19,6 +19,8 @@ the sessions a campaign folder recorded.
 and prints its ratios to this invocation's DEM runs.
 --run-files N measures only the CPU time and disk of N static samples with whole and summary-only
 run folders (numerics.run_files), e.g. --run-files 40 --out reports/benchmark_run_files.json.
+--static-floor measures only the static solver's CPU against its compiled floor (statics.cost), e.g.
+--static-floor --out reports/benchmark_static_floor.json.
 Prints a verdict line per target and writes everything to the JSON file.
 """
 
@@ -397,6 +399,38 @@ def static_measurement(runs: Path, dem_set2: RunSummary, dem_stiff: RunSummary |
     return result
 
 
+def static_floor_measurement() -> dict:
+    """The static solver's CPU on set 2 and on an imperfect sample against its compiled floor (the same
+    evaluations and solves in a compiled loop, `statics.cost`), in this one process."""
+    from yadearch.case.config import preset
+    from yadearch.statics.cost import TARGET_FLOOR_RATIO, solver_cost
+
+    base = preset("set2").with_overrides({"engine": "static"})
+    cases = {"set2": base, "imperfect": base.with_overrides(IMPERFECT_SAMPLE)}
+    result: dict[str, Any] = {"verdicts": []}
+    for name, case in cases.items():
+        cost = solver_cost(case)
+        print(
+            f"static solver, {name}: {cost.solver_cpu_s * 1e3:.1f} ms CPU for {cost.evaluations} joint evaluations "
+            f"and {cost.iterations} iterations; floor {cost.evaluation_s * 1e6:.1f} us an evaluation, "
+            f"{cost.solve_s * 1e6:.1f} us a solve, {cost.floor_cpu_s * 1e3:.1f} ms in all; ratio {cost.ratio:.2f}"
+        )
+        result[f"static_floor_{name}"] = {
+            "solver_cpu_s": cost.solver_cpu_s,
+            "evaluations": cost.evaluations,
+            "iterations": cost.iterations,
+            "evaluation_s": cost.evaluation_s,
+            "solve_s": cost.solve_s,
+            "ratio": cost.ratio,
+        }
+        target = f"static solver of {name} <= {TARGET_FLOOR_RATIO:g} x its compiled floor"
+        result["verdicts"].append((target, cost.ratio <= TARGET_FLOOR_RATIO, f"{cost.ratio:.2f}"))
+    return result
+
+
+IMPERFECT_SAMPLE = {"imperfections.face_bump_sd_mm": 0.18, "imperfections.seed": 3}  # a Monte Carlo sample
+
+
 def run_files_measurement(samples: int, runs: Path) -> dict:
     """CPU time and disk a static Monte Carlo sample of the final imperfection case costs with its run
     folder kept whole and kept to its summary (numerics.run_files), the same samples solved in this
@@ -520,6 +554,12 @@ def main() -> int:
         help="only measure this many static samples with whole and summary-only run folders "
         "(numerics.run_files) and write them to --out",
     )
+    parser.add_argument(
+        "--static-floor",
+        action="store_true",
+        help="only measure the static solver's CPU against its compiled floor (set 2 and an imperfect "
+        "sample; statics.cost) and write it to --out",
+    )
     parser.add_argument("--breakdown-child", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--scene-rate", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--scene-model", default="joint", help=argparse.SUPPRESS)
@@ -535,6 +575,12 @@ def main() -> int:
     from yadearch.studies.sessions import campaign_core_s, campaign_wall_s
 
     runs = Path(args.runs)
+    if args.static_floor:
+        measured_floor = static_floor_measurement()
+        verdicts_floor = measured_floor.pop("verdicts")
+        write_json(Path(args.out), {**measured_floor, "measured": time.strftime("%Y-%m-%dT%H:%M:%S")})
+        print_verdicts(verdicts_floor)
+        return 0
     if args.run_files:
         measured_files = run_files_measurement(args.run_files, runs / "run_files")
         verdicts_files = measured_files.pop("verdicts")

@@ -37,7 +37,7 @@ from yadearch.studies.montecarlo import MONTECARLO_FILE, run_montecarlo
 BASE_PRESET = "set2"  # accurate voussoirs: the CNC set's kn
 SEED = 1
 STIFF_KN_N_PER_MM3 = 100.0
-STIFF_PERFECT_DU_MM = 109.09  # reports/robustness/kn100_base: the perfect arch at kn 100
+STIFF_PERFECT_DU_MM = 109.09  # reports/stiff/kn100: the perfect arch at kn 100
 FINAL = Study(
     "final", "faces not flat, at the level that matches set 1 (the final campaign)", "face_bump_sd_mm", (0.18,), 200
 )

@@ -1,0 +1,88 @@
+"""What the static engine's solver costs against its floor (issue 45; `scripts/benchmark.py
+--static-floor`): the solver's CPU time on a case's whole path beside the time of the same number of
+joint evaluations and banded solves in one compiled loop, with nothing else, measured in the same
+process; their ratio says how far the solver is from the cost of its arithmetic."""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+
+from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import runaway_length
+from yadearch.case.support import path_end_mm
+from yadearch.model.joint_tangent import free_state_kernel
+from yadearch.solve import banded
+from yadearch.solve.banded import band_solve
+from yadearch.solve.path import path_settings
+from yadearch.solve.static_path import StaticLoading
+from yadearch.solve.statics import compile_kernels, static_arch
+
+FLOOR_REPEATS = 20  # each accepted state evaluated and solved this many times for the floor
+TARGET_FLOOR_RATIO = 1.5  # issue 45: the solver at most this many times its floor
+
+
+@dataclass(frozen=True)
+class SolverCost:
+    """A case's solver CPU time (s), joint evaluations and iterations on its path, and the floor: the
+    CPU time of an evaluation and of a banded solve in a compiled loop."""
+
+    name: str
+    solver_cpu_s: float
+    evaluations: int
+    iterations: int
+    evaluation_s: float  # one joint evaluation (joints, residual, band tangent) in the compiled loop
+    solve_s: float  # one banded LU solve in it
+
+    @property
+    def floor_cpu_s(self) -> float:
+        """The path's arithmetic alone: its evaluations and one solve an iteration."""
+        return self.evaluations * self.evaluation_s + self.iterations * self.solve_s
+
+    @property
+    def ratio(self) -> float:
+        return self.solver_cpu_s / self.floor_cpu_s
+
+
+def solver_cost(case: ArchCase, repeats: int = FLOOR_REPEATS) -> SolverCost:
+    """Solve `case`'s path by the static engine (self-weight and loading) timing its CPU, then time
+    `repeats` evaluations and solves of each accepted state in the compiled floor loop."""
+    compile_kernels()
+    arch = static_arch(case)
+    loading = StaticLoading(arch, path_settings(case.numerics, path_end_mm(case, arch.movement)), runaway_length(case))
+    start = time.process_time()
+    loading.selfweight()
+    loading.follow()
+    solver_cpu = time.process_time() - start
+    states = np.array([s.u for s in loading.accepted])
+    shears = np.array([s.forces.shear_force for s in loading.accepted])
+    args = (arch.kernel, states, shears, arch.weight, arch.length, banded.BAND)
+    per_state: list[float] = []
+    for solve in (False, True):
+        _floor_loop(*args, 1, solve)  # compiled before it is timed
+        start = time.process_time()
+        _floor_loop(*args, repeats, solve)
+        per_state.append((time.process_time() - start) / (repeats * len(states)))
+    evaluation, both = per_state
+    solver = loading.solver
+    return SolverCost(
+        case.name, solver_cpu, solver.evaluations, solver.iterations, evaluation, max(both - evaluation, 0.0)
+    )
+
+
+@njit(cache=True)
+def _floor_loop(kernel, states, shears, weight, lever, band, repeats, solve):
+    """Evaluate the joints at every state (and solve the tangent, with `solve`), `repeats` times (a
+    checksum returned so that nothing is optimised away)."""
+    total = 0.0
+    for _ in range(repeats):
+        for k in range(states.shape[0]):
+            state = free_state_kernel(kernel, states[k], states[k], shears[k], weight, 1.0, lever, band)
+            total += state[8][0]
+            if solve:
+                d, _singular = band_solve(state[9], state[8], 0.0)
+                total += d[0]
+    return total
