@@ -1,7 +1,8 @@
 """yadearch: masonry arches on moving supports, simulated with YADE's polyhedral discrete elements.
 
 The public API (`yadearch.api`): `preset`, `movement`, `run`, `reproduce`, `report`, `open_run`, `sweep`,
-`montecarlo`, `calibrate`, `robustness`, `capacity`, `sensitivity`, `limit`, `loads`, imported on first use so that
+`montecarlo`, `calibrate`, `robustness`, `capacity`, `sensitivity`, `limit`, `loads`, `load_influence`,
+imported on first use so that
 `import yadearch` stays light (no pandas, no YADE); type checkers and IDEs see them through the
 TYPE_CHECKING import below."""
 
@@ -16,6 +17,7 @@ if TYPE_CHECKING:
         calibrate,
         capacity,
         limit,
+        load_influence,
         loads,
         montecarlo,
         movement,
@@ -45,6 +47,7 @@ __all__ = [
     "sensitivity",
     "limit",
     "loads",
+    "load_influence",
     "RunResult",
     "HingeAtCollapse",
 ]

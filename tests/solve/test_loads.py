@@ -103,3 +103,15 @@ def test_bad_loads_are_refused_in_one_line():
         preset("set2").with_overrides({"load_position_over_span": -0.1})
     with pytest.raises(CaseError, match="do not apply live loads"):
         plan_run(preset("set2").with_overrides({"live_load": "vertical"}))
+
+
+def test_the_influence_line_is_symmetric_and_written(tmp_path):
+    import yadearch as ya
+
+    table = ya.load_influence(preset("set2"), 5, out=tmp_path)
+    assert table["position_over_span"].tolist() == pytest.approx([k / 6 for k in range(1, 6)])
+    loads = table["collapse_load_N"].to_numpy()
+    assert loads == pytest.approx(loads[::-1], rel=1e-9)  # a symmetric arch
+    assert (tmp_path / "set2_influence.csv").is_file() and (tmp_path / "set2_influence.png").is_file()
+    with pytest.raises(CaseError, match=r"positions must be an integer in \[2, 200\], got 1"):
+        ya.load_influence(preset("set2"), 1)

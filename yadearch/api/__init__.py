@@ -8,7 +8,7 @@ typed results, for notebooks and scripts; every command of the command line is a
 """
 
 from yadearch.api.campaigns import calibrate, capacity, montecarlo, robustness, sensitivity, sweep
-from yadearch.api.live_loads import loads
+from yadearch.api.live_loads import load_influence, loads
 from yadearch.api.results import HingeAtCollapse, RunResult, open_run
 from yadearch.api.runs import as_case, limit, movement, preset, report, reproduce, run, with_engine
 
@@ -23,6 +23,7 @@ __all__ = [
     "open_run",
     "limit",
     "loads",
+    "load_influence",
     "sweep",
     "montecarlo",
     "calibrate",

@@ -11,6 +11,7 @@ import pandas as pd
 from yadearch.plotting.house import COLUMN_CM, house_style, new_figure, save_figure
 
 HEIGHT_CM = 15.0
+INFLUENCE_HEIGHT_CM = 6.0
 
 
 @house_style
@@ -20,12 +21,7 @@ def plot_loads(
     """STEM.pdf and .png: three panels, one column wide."""
     fig = new_figure(height_cm=HEIGHT_CM, width_cm=COLUMN_CM)
     top, middle, bottom = fig.subplots(3, 1)
-    top.plot(influence["position_over_span"], influence["collapse_load_N"], "o-", ms=2.5, color="C0")
-    top.set_xlabel("point load's position / span (from the left springing)")
-    top.set_ylabel("collapse load (N)")
-    top.set_ylim(bottom=0.0)
-    twin = top.secondary_yaxis("right", functions=(lambda n: n / arch_weight_N, lambda r: r * arch_weight_N))
-    twin.set_ylabel("/ arch weight")
+    _draw_influence(top, influence, arch_weight_N)
     middle.plot(accelerations["t_over_R"], accelerations["collapse_acceleration_g"], "s-", ms=2.5, color="C1")
     middle.set_xlabel("t/R of a semicircle (55 voussoirs)")
     middle.set_ylabel("collapse acceleration (g)")
@@ -36,3 +32,21 @@ def plot_loads(
     bottom.set_ylabel("quarter-span load capacity (N)")
     bottom.set_yscale("log")
     return save_figure(fig, stem)
+
+
+@house_style
+def plot_influence(influence: pd.DataFrame, arch_weight_N: float, stem: Path) -> tuple[Path, Path]:
+    """STEM.pdf and .png: a concentrated load's capacity against its position (one column wide)."""
+    fig = new_figure(height_cm=INFLUENCE_HEIGHT_CM, width_cm=COLUMN_CM)
+    _draw_influence(fig.add_subplot(), influence, arch_weight_N)
+    return save_figure(fig, stem)
+
+
+def _draw_influence(ax, influence: pd.DataFrame, arch_weight_N: float) -> None:
+    """The influence line of the capacity, in N and (right axis) in arch weights."""
+    ax.plot(influence["position_over_span"], influence["collapse_load_N"], "o-", ms=2.5, color="C0")
+    ax.set_xlabel("point load's position / span (from the left springing)")
+    ax.set_ylabel("collapse load (N)")
+    ax.set_ylim(bottom=0.0)
+    twin = ax.secondary_yaxis("right", functions=(lambda n: n / arch_weight_N, lambda r: r * arch_weight_N))
+    twin.set_ylabel("/ arch weight")
