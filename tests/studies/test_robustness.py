@@ -90,3 +90,16 @@ def test_the_static_engine_takes_only_the_variants_that_can_move_its_answer():
     }
     assert "support_acceleration_mm_per_s2" not in static["kn5.2_ramp"]
     assert len(study_rows(preset("set2"), (5.2,))) == len(VARIANTS)  # the DEM takes them all
+
+
+def test_the_mechanism_is_compared_by_its_hinges_a_to_d_not_every_joint_open_at_runaway():
+    """A longer runaway bound reads the collapse further past the fold, where more joints are open:
+    the same mechanism (A-D within an interface) passes, hinge A two joints away does not."""
+    du = {v: 88.0 for v in VARIANTS}
+    table = results(du, {"runaway_x2": "1E 9I 23E 28E 39I 56E"})
+    letters = {"hinge_A": 9, "hinge_B": 29, "hinge_C": 56, "hinge_D": 1}
+    table = table.assign(**letters)
+    table.loc[table["run"] == "kn5.2_runaway_x2", "hinge_B"] = 28
+    assert verdicts(robustness_table(table))["verdict"].tolist() == ["PASS"]
+    table.loc[table["run"] == "kn5.2_damping_x2", "hinge_A"] = 11
+    assert verdicts(robustness_table(table))["verdict"].tolist() == ["FAIL"]
