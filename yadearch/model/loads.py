@@ -34,14 +34,6 @@ class LiveLoad:
     toward_right: bool = True
 
 
-def extrados_reach(geometry: ArchGeometry) -> tuple[float, float]:
-    """Horizontal positions (m, from the left springing's intrados point) between which the voussoirs'
-    extrados can carry a vertical load."""
-    origin = geometry.joints[0].intrados[0]
-    xs = [j.extrados[0] - origin for j in geometry.joints]
-    return min(xs), max(xs)
-
-
 @dataclass(frozen=True)
 class LoadPoints:
     """A live load as point forces: the block each acts on, its point (k, 2) and force (k, 2) in SI,

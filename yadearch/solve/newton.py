@@ -110,11 +110,6 @@ class Solver:
             largest_move(u, start),
         )
 
-    def _capped(self, d: np.ndarray) -> np.ndarray:
-        """`d` (free dofs) shortened so that no block moves more than `max_step` in one iteration."""
-        largest = float(np.abs(d).max())
-        return d * min(1.0, self.settings.max_step / largest) if largest > 0.0 else d
-
     def newton(
         self, u0: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray, gravity: float = 1.0
     ) -> Equilibrium | None:
