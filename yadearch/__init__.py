@@ -1,7 +1,7 @@
 """yadearch: masonry arches on moving supports, simulated with YADE's polyhedral discrete elements.
 
 The public API (`yadearch.api`): `preset`, `movement`, `run`, `reproduce`, `report`, `open_run`, `sweep`,
-`montecarlo`, `calibrate`, `robustness`, `capacity`, `sensitivity`, `limit`, `loads`, `load_influence`,
+`montecarlo`, `calibrate`, `robustness`, `capacity`, `sensitivity`, `limit`, `loads`, `load_influence`, `load_path`,
 imported on first use so that
 `import yadearch` stays light (no pandas, no YADE); type checkers and IDEs see them through the
 TYPE_CHECKING import below."""
@@ -18,6 +18,7 @@ if TYPE_CHECKING:
         capacity,
         limit,
         load_influence,
+        load_path,
         loads,
         montecarlo,
         movement,
@@ -48,6 +49,7 @@ __all__ = [
     "limit",
     "loads",
     "load_influence",
+    "load_path",
     "RunResult",
     "HingeAtCollapse",
 ]

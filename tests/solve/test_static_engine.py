@@ -241,6 +241,7 @@ def _inclines(alpha: float) -> StaticArch:
         centroids,
         Movement(left=None, right=None),
         None,
+        np.zeros((len(weight), 4)),  # no live load
     )
 
 

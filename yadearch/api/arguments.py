@@ -106,6 +106,7 @@ ARGUMENTS = {
         Argument("kn_max", float, _KN["low"], _KN["high"], low_open=_KN["low_open"], option="--kn-max"),
         Argument("max_runs", int, 3, MAX_CALIBRATION_RUNS, option="--max-runs"),
         Argument("max_snap_mm", float, 0, MAX_TARGET_DU_MM, low_open=True, optional=True, option="--max-snap-mm"),
+        Argument("after_mm", float, 0, MAX_TARGET_DU_MM, option="--after-mm"),
         Argument("compliant", bool),
         Argument("rerun", bool),
         Argument("overwrite", bool),

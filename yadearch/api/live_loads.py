@@ -10,33 +10,86 @@ from typing import Any
 
 import pandas as pd
 
+from yadearch.api.arguments import check_arguments
 from yadearch.api.runs import as_case
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import arch_geometry
+from yadearch.case.mechanics import arch_geometry, standing_parameters
 from yadearch.case.names import check_name, output_path
 from yadearch.errors import CaseError
 from yadearch.plotting.load_figure import plot_load_collapse
-from yadearch.plotting.loads import plot_influence
-from yadearch.solve.load_lp import LoadCapacity, load_analysis
+from yadearch.plotting.loads import plot_influence, plot_load_path
+from yadearch.solve.limit import why_not_standing
+from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
+from yadearch.solve.load_path import StaticLoadPath, static_load_path
 from yadearch.solve.rigid import rigid_arch
+from yadearch.solve.static_state import StaticEngineError
 from yadearch.studies.loads import influence_line
 
 
-def loads(case: ArchCase | str, out: str | Path | None = None) -> LoadCapacity:
-    """The live load (`case.loads`) the arch carries at collapse, its self-weight held: the multiplier
-    in N (a vertical load) or g (a horizontal acceleration), the mechanism's hinges; no YADE, under a
-    second. With `out`, writes OUT/NAME_loads.json (the result and the case) and the collapse's
-    figure OUT/NAME_loads.pdf/.png (`plotting.load_figure`)."""
+def loads(case: ArchCase | str, out: str | Path | None = None, after_mm: float = 0.0) -> LoadCapacity:
+    """The live load (`case.loads`) the rigid arch carries at collapse, its self-weight held: the
+    multiplier in N (a vertical load) or g (a horizontal acceleration), the mechanism's hinges; no
+    YADE, under a second. With `after_mm`, in the rigid march's state after the case's support
+    movement to that point (the load that first moves the settled arch). With `out`, writes
+    OUT/NAME_loads.json (the result and the case) and the collapse's figure OUT/NAME_loads.pdf/.png."""
+    check_arguments(after_mm=after_mm)
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
-    result = load_analysis(case)
+    result = residual_capacity(case, after_mm) if after_mm > 0.0 else load_analysis(case)
     if folder is not None:
-        write_text_atomically(loads_file(case, folder), json.dumps(load_json(result, case), indent=1) + "\n")
-        if math.isfinite(result.multiplier):
+        data = {**load_json(result, case), "after_mm": after_mm}
+        write_text_atomically(loads_file(case, folder), json.dumps(data, indent=1) + "\n")
+        if math.isfinite(result.multiplier) and after_mm == 0.0:
             plot_load_collapse(case, arch_geometry(case), result, folder / f"{case.name}_loads")
     return result
+
+
+def load_path(case: ArchCase | str, out: str | Path | None = None, after_mm: float = 0.0) -> StaticLoadPath:
+    """The live load grown to collapse by the static engine (the same blocks and joints as the DEM,
+    seconds, no YADE), after the case's support movement to `after_mm`: its first loss of stability,
+    capacity and mechanism, its load-displacement curve, and the rigid capacity of the same state.
+    With `out`, writes OUT/NAME_load_path.json, .csv (the curve) and its figure .pdf/.png."""
+    check_arguments(after_mm=after_mm)
+    case = as_case(case)
+    check_name(case.name, "case.name")
+    folder = output_path(out, "out") if out is not None else None
+    try:
+        result = static_load_path(case, after_mm)
+    except StaticEngineError as exc:
+        raise CaseError(f"{exc} ({standing_parameters(case)}); {why_not_standing(case)}") from None
+    if folder is not None:
+        stem = folder / f"{case.name}_load_path"
+        write_csv_atomically(stem.with_suffix(".csv"), result.curve)
+        write_text_atomically(stem.with_suffix(".json"), json.dumps(load_path_json(result, case), indent=1) + "\n")
+        plot_load_path(result.curve, result.capacity, result.first_loss, result.rigid, result.unit, stem)
+    return result
+
+
+def load_path_json(result: StaticLoadPath, case: ArchCase) -> dict[str, Any]:
+    """The static engine's load path as summary.json-like fields, with the case that gave it."""
+
+    def number(value: float) -> float | None:
+        return value if math.isfinite(value) else None
+
+    return {
+        "name": case.name,
+        "engine": "static",
+        "live_load": case.loads.live_load,
+        "after_mm": result.after_mm,
+        "unit": result.unit,
+        "outcome": result.outcome,
+        "collapse_multiplier": number(result.capacity),
+        "first_loss_multiplier": number(result.first_loss),
+        "largest_multiplier_tried": result.reach,
+        "hinges_at_collapse": list(result.hinges),
+        "collapse_kind": result.kind,
+        "rigid_multiplier": number(result.rigid),
+        "rigid_hinges": result.rigid_hinges.split(),
+        "iterations": result.iterations,
+        "case": case.to_dict(),
+    }
 
 
 def loads_file(case: ArchCase, out: str | Path) -> Path:

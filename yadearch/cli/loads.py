@@ -9,13 +9,36 @@ import click
 
 from yadearch import api
 from yadearch.api.live_loads import loads_file
-from yadearch.cli.options import OUT_FOLDER, case_options, resolve_case
+from yadearch.case.config import ArchCase
+from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, resolve_case
+from yadearch.solve.load_lp import LoadCapacity
+from yadearch.solve.stages import Outcome
+
+RIGID, STATIC = "rigid", "static"
+LOAD_ENGINES = (RIGID, STATIC)
 
 
 @click.command()
 @case_options(with_kn=False, with_engine=False)
 @click.option(
     "--out", type=OUT_FOLDER, default="runs/loads", show_default=True, help="folder that receives NAME_loads.json"
+)
+@click.option(
+    "--engine",
+    "load_engine",
+    type=click.Choice(LOAD_ENGINES),
+    default=RIGID,
+    show_default=True,
+    help="rigid: rigid-block limit analysis (under a second); static: the load grown to collapse on the "
+    "static engine's path (the DEM's blocks and joints, seconds): first loss of stability, collapse, the "
+    "load-displacement curve (NAME_load_path.csv/.json and figure), beside the rigid answer",
+)
+@click.option(
+    "--after-mm",
+    type=argument_type("after_mm"),
+    default=0.0,
+    show_default=True,
+    help="apply the load after the case's support movement to this displacement (mm): the residual capacity",
 )
 @click.option(
     "--positions",
@@ -25,10 +48,17 @@ from yadearch.cli.options import OUT_FOLDER, case_options, resolve_case
     "(2-200), written as NAME_influence.csv and its figure",
 )
 def loads(
-    preset_name: str | None, case_file: str | None, settings: tuple[str, ...], out: str, positions: int | None
+    preset_name: str | None,
+    case_file: str | None,
+    settings: tuple[str, ...],
+    out: str,
+    load_engine: str,
+    after_mm: float,
+    positions: int | None,
 ) -> None:
-    """Rigid-block limit analysis of a live load, no YADE: the load (N) or acceleration (g) at
-    collapse with the self-weight held, and its mechanism ([loads] of the case, or --set live_load=...)."""
+    """A live load's capacity, no YADE: the load (N) or acceleration (g) at collapse with the self-weight
+    held, and its mechanism ([loads] of the case, or --set live_load=...), by rigid-block limit analysis
+    or on the static engine's path; --after-mm first moves the support."""
     case = resolve_case(preset_name, case_file, None, settings)
     if positions is not None:
         table = api.load_influence(case, positions, out=out)
@@ -39,13 +69,47 @@ def loads(
         )
         if case.loads.live_load == "none":
             return
-    result = api.loads(case, out=out)
+    what = _what(case) + (f" after {after_mm:g} mm of support movement" if after_mm else "")
+    if load_engine == STATIC:
+        _static(case, out, after_mm, what)
+        return
+    result = api.loads(case, out=out, after_mm=after_mm)
+    outcome = _rigid_outcome(result)
+    if after_mm and math.isfinite(result.multiplier):  # the settled rigid arch's open hinges are pins
+        outcome += " (the load that first moves the settled arch; --engine static follows it further)"
+    click.echo(f"{case.name}: {what}: {outcome} -> {loads_file(case, out)}")
+
+
+def _static(case: ArchCase, out: str, after_mm: float, what: str) -> None:
+    """The static engine's load path, said in one line beside the rigid answer."""
+    path = api.load_path(case, out=out, after_mm=after_mm)
+    unit = path.unit
+    if path.outcome == Outcome.COLLAPSE:
+        first = f", first loss of stability at {path.first_loss:.4g} {unit}" if path.first_loss < path.capacity else ""
+        outcome = f"collapse at {path.capacity:.4g} {unit} on {' '.join(path.hinges)} ({path.kind}){first}"
+    elif path.outcome == Outcome.UNRESOLVED:
+        outcome = f"unresolved: the solver found no equilibrium nor runaway past {path.reach:.4g} {unit} (no capacity)"
+    else:
+        outcome = f"no collapse up to {path.reach:.4g} {unit}"
+    rigid = f"{path.rigid:.4g} {unit} on {path.rigid_hinges}" if math.isfinite(path.rigid) else "none"
+    click.echo(
+        f"{case.name}: {what}: static engine: {outcome}; rigid blocks: {rigid} -> {out}/{case.name}_load_path.json"
+    )
+
+
+def _what(case: ArchCase) -> str:
+    """The live load in words."""
     what = case.loads.live_load.replace("_", " ")
     if case.loads.live_load == "vertical":
         width = f", spread over {case.loads.load_width_mm:g} mm" if case.loads.load_width_mm else ""
         what += f" load at {case.loads.load_position_over_span:g} of the span{width}"
     else:
         what += f" toward the {case.loads.acceleration_toward}"
+    return what
+
+
+def _rigid_outcome(result: LoadCapacity) -> str:
+    """The rigid analysis's answer in words."""
     if math.isnan(result.multiplier):
         outcome = "the arch does not stand under its own weight"
     elif math.isinf(result.multiplier):
@@ -53,4 +117,4 @@ def loads(
     else:
         share = f" ({result.multiplier / result.arch_weight_N:.3f} of the arch's weight)" if result.unit == "N" else ""
         outcome = f"collapse at {result.multiplier:.4g} {result.unit}{share} on {result.hinge_labels}"
-    click.echo(f"{case.name}: {what}: {outcome} -> {loads_file(case, out)}")
+    return outcome

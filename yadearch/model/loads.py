@@ -70,6 +70,19 @@ def generalised(points: LoadPoints, n_blocks: int, placed: np.ndarray | None = N
     return forces
 
 
+def block_loads(points: LoadPoints, centroids: np.ndarray, n_blocks: int) -> np.ndarray:
+    """(n_blocks, 4) the point forces on each block as the static engine takes them: force x, force y,
+    and the moment m0 and dot product d0 of each force with its arm from the block's centroid in the
+    undeformed arch (the arm turns with the block: moment = cos(t) m0 - sin(t) d0)."""
+    loads = np.zeros((n_blocks, 4))
+    arm = points.point - centroids[points.block, :2]
+    np.add.at(loads[:, 0], points.block, points.force[:, 0])
+    np.add.at(loads[:, 1], points.block, points.force[:, 1])
+    np.add.at(loads[:, 2], points.block, arm[:, 0] * points.force[:, 1] - arm[:, 1] * points.force[:, 0])
+    np.add.at(loads[:, 3], points.block, arm[:, 0] * points.force[:, 0] + arm[:, 1] * points.force[:, 1])
+    return loads
+
+
 def _extrados_shares(geometry: ArchGeometry, position: float, width: float) -> list[tuple[int, float, np.ndarray]]:
     """(block, newtons, point) of a 1 N vertical load centred `position` m from the left springing and
     spread over `width` m: each voussoir's part, at that part's centre on the block's extrados."""

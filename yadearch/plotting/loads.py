@@ -4,6 +4,7 @@ settlement, each from the rigid-block load multiplier."""
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import pandas as pd
@@ -50,3 +51,26 @@ def _draw_influence(ax, influence: pd.DataFrame, arch_weight_N: float) -> None:
     ax.set_ylim(bottom=0.0)
     twin = ax.secondary_yaxis("right", functions=(lambda n: n / arch_weight_N, lambda r: r * arch_weight_N))
     twin.set_ylabel("/ arch weight")
+
+
+@house_style
+def plot_load_path(
+    curve: pd.DataFrame, capacity: float, first_loss: float, rigid: float, unit: str, stem: Path
+) -> tuple[Path, Path]:
+    """STEM.pdf and .png: the static engine's load-displacement curve up to its limit point, its
+    first loss of stability and capacity, and the rigid-block capacity of the same state for scale."""
+    fig = new_figure(height_cm=INFLUENCE_HEIGHT_CM, width_cm=COLUMN_CM)
+    ax = fig.add_subplot()
+    ax.plot(curve["load_displacement_mm"], curve["multiplier"], "o-", ms=2.0, color="C0", label="static engine")
+    if math.isfinite(rigid):
+        ax.axhline(rigid, color="0.4", lw=0.8, ls="--", label=f"rigid blocks ({rigid:.3g} {unit})")
+    if math.isfinite(capacity):
+        ax.axhline(capacity, color="C0", lw=0.6, ls=":", label=f"collapse ({capacity:.3g} {unit})")
+    if math.isfinite(first_loss) and first_loss < capacity:
+        ax.axhline(first_loss, color="C1", lw=0.6, ls=":", label=f"first loss of stability ({first_loss:.3g} {unit})")
+    ax.set_xlabel("displacement of the load along its direction (mm)")
+    ax.set_ylabel(f"live load ({unit})")
+    ax.set_xlim(left=0.0)
+    ax.set_ylim(bottom=0.0)
+    ax.legend(loc="upper left", frameon=False)
+    return save_figure(fig, stem)

@@ -83,12 +83,17 @@ class Solver:
         return max(self.settings.tolerance * self.scale, self.resolution)
 
     def state(
-        self, u: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray, gravity: float = 1.0
+        self,
+        u: np.ndarray,
+        u_before: np.ndarray,
+        shear_before: np.ndarray,
+        gravity: float = 1.0,
+        multiplier: float = 0.0,
     ) -> tuple[JointTangent, np.ndarray, np.ndarray]:
-        """Joints at `u`, the free blocks' residual R = joint forces + weights (generalised) and their
-        tangent K in band storage (`solve.banded`), in one compiled call."""
+        """Joints at `u`, the free blocks' residual R = joint forces + weights + `multiplier` x the live
+        load (generalised) and their tangent K in band storage (`solve.banded`), in one compiled call."""
         self.evaluations += 1
-        return self.arch.free_state(u, u_before, shear_before, gravity)
+        return self.arch.free_state(u, u_before, shear_before, gravity, multiplier)
 
     def result(
         self,
@@ -111,13 +116,18 @@ class Solver:
         )
 
     def newton(
-        self, u0: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray, gravity: float = 1.0
+        self,
+        u0: np.ndarray,
+        u_before: np.ndarray,
+        shear_before: np.ndarray,
+        gravity: float = 1.0,
+        multiplier: float = 0.0,
     ) -> Equilibrium | None:
         """Newton from `u0` (supports already placed); None if it does not converge. The iterations
         run compiled (`solve.newton_kernel`): Newton's step capped at `max_step`, halved up to
         BACKTRACKS times until |R|^2 falls by SUFFICIENT_DECREASE x the step's fraction."""
         u, loops, evaluations, success, state = newton_kernel(
-            self._problem(u_before, shear_before, gravity),
+            self._problem(u_before, shear_before, gravity, multiplier),
             u0,
             self.settings.newton_iterations,
             BACKTRACKS,
@@ -139,6 +149,7 @@ class Solver:
         gravity: float = 1.0,
         iterations: int | None = None,
         origin: np.ndarray | None = None,
+        multiplier: float = 0.0,
     ) -> Equilibrium:
         """Damped Newton steps (K + mu I) d = R from `u0`, a step kept only where it releases energy
         (the work of the residual forces along it, by the trapezoidal rule, is positive; then mu
@@ -154,7 +165,7 @@ class Solver:
         saddle, returns = None, 0
         while True:
             u, reached, evaluations, event, floor, shift, state = self._descent_run(
-                u, u_before, shear_before, gravity, floor, shift, origin, runaway, iteration, budget
+                u, u_before, shear_before, (gravity, multiplier), floor, shift, origin, runaway, iteration, budget
             )
             self.iterations += reached - iteration + (event in (CONVERGED, STUCK))
             self.evaluations += evaluations
@@ -180,11 +191,11 @@ class Solver:
             shift = floor
             iteration += 1
             if iteration >= budget:
-                joints, residual, stiffness = self.state(u, u_before, shear_before, gravity)
+                joints, residual, stiffness = self.state(u, u_before, shear_before, gravity, multiplier)
                 return self.result(u, joints, residual, stiffness, budget, origin, Verdict.TIMEOUT)
 
-    def _problem(self, u_before: np.ndarray, shear_before: np.ndarray, gravity: float) -> tuple:
-        """One support position's equilibrium problem as the compiled kernels take it
+    def _problem(self, u_before: np.ndarray, shear_before: np.ndarray, gravity: float, multiplier: float) -> tuple:
+        """One support position's and load's equilibrium problem as the compiled kernels take it
         (`solve.newton_kernel._evaluate`)."""
         arch = self.arch
         return (
@@ -197,6 +208,8 @@ class Solver:
             banded.BAND,
             self.converged,
             self.settings.max_step,
+            arch.live,
+            multiplier,
         )
 
     def _descent_run(
@@ -204,7 +217,7 @@ class Solver:
         u: np.ndarray,
         u_before: np.ndarray,
         shear_before: np.ndarray,
-        gravity: float,
+        loads: tuple[float, float],
         floor: float,
         shift: float,
         origin: np.ndarray,
@@ -214,7 +227,7 @@ class Solver:
     ) -> tuple:
         """The descent's iterations `start` to `budget` compiled (`solve.newton_kernel.descent_kernel`),
         to the first event the interpreter decides on (an equilibrium, a stuck shift) or an end."""
-        problem = self._problem(u_before, shear_before, gravity)
+        problem = self._problem(u_before, shear_before, *loads)
         return descent_kernel(problem, u, floor, shift, origin, runaway, start, budget)
 
     def _kick(self, u: np.ndarray, stiffness: np.ndarray) -> np.ndarray:

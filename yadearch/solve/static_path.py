@@ -13,9 +13,8 @@ increment unresolved, never collapsed.
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -23,11 +22,11 @@ from yadearch.errors import CANNOT_STAND
 from yadearch.model import units
 from yadearch.model.joint_law import JointForces
 from yadearch.solve import banded
-from yadearch.solve.banded import smallest_eigenvalue
 from yadearch.solve.collapse_mode import FoldMode, fold_mode
 from yadearch.solve.newton import Equilibrium, Solver, SolverSettings, largest_move
 from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, follow_path
 from yadearch.solve.stages import Stage, Verdict
+from yadearch.solve.static_state import PathParameter, StaticEngineError, StaticState
 from yadearch.solve.statics import StaticArch
 
 GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
@@ -41,31 +40,6 @@ FALLING_FRACTION = 0.02  # ... and on while each go moves a block this x the run
 MAX_DESCENT_GOES = 40  # ... up to this many goes of the solver's descent_iterations
 
 
-class StaticEngineError(RuntimeError):
-    """The static engine cannot go on (no self-weight equilibrium)."""
-
-
-@dataclass
-class StaticState:
-    """An equilibrium (or the collapse) state: where the support was, the blocks, the joints."""
-
-    stage: str
-    lam: float
-    u: np.ndarray
-    forces: JointForces
-    slip: np.ndarray  # each joint's accumulated sliding beyond its Coulomb cap (m)
-    iterations: int
-    residual: float
-    move: float = 0.0  # how far the blocks moved from the predicted state to reach it (m)
-    stiffness: np.ndarray | None = None  # the free blocks' tangent as the solver found it (band storage)
-
-    @functools.cached_property
-    def min_stiffness(self) -> float:
-        """The smallest eigenvalue of the free blocks' tangent (N/m; NaN without one), computed when a
-        record asks for it (series.csv), not for every accepted state of a campaign's lean run."""
-        return smallest_eigenvalue(self.stiffness) if self.stiffness is not None else float("nan")
-
-
 @dataclass
 class StaticLoading:
     """The path of one arch: its accepted states, the failures, and the solver's counts."""
@@ -74,6 +48,7 @@ class StaticLoading:
     settings: PathSettings
     runaway: float
     solver_settings: SolverSettings = field(default_factory=SolverSettings)
+    parameter: PathParameter = field(default_factory=PathParameter)
 
     def __post_init__(self) -> None:
         self.solver = Solver(self.arch, self.solver_settings)
@@ -132,7 +107,9 @@ class StaticLoading:
         stable equilibrium on the same branch: no block further from the prediction than the snap
         floor, whatever the step (a jump hidden in a long step would hide a snap)."""
         last = history[-1]
-        found = self.solver.newton(self.predict(target, history), last.u, last.forces.shear_force)
+        found = self.solver.newton(
+            self.predict(target, history), last.u, last.forces.shear_force, multiplier=self.parameter.multiplier(target)
+        )
         if found is None or not found.stable() or found.moved > self.snap_floor:
             return None
         return found
@@ -189,7 +166,8 @@ class StaticLoading:
         last = history[-1]
         shear = last.forces.shear_force
         start = self.predict(lam, history)
-        found = self.solver.descend(start, last.u, shear, self.runaway)
+        multiplier = self.parameter.multiplier(lam)
+        found = self.solver.descend(start, last.u, shear, self.runaway, multiplier=multiplier)
         self.descents += 1
         before, goes = start, 1
         while found.verdict == Verdict.TIMEOUT and goes < MAX_DESCENT_GOES:
@@ -198,10 +176,10 @@ class StaticLoading:
                 break
             self.retries += 1
             before, goes = found.u, goes + 1
-            found = self.solver.descend(found.u, last.u, shear, self.runaway, origin=start)
+            found = self.solver.descend(found.u, last.u, shear, self.runaway, origin=start, multiplier=multiplier)
         if found.verdict == Verdict.TIMEOUT:
             self.retries += 1
-            found = self.solver.descend(self.arch.with_supports(last.u, lam), last.u, shear, self.runaway)
+            found = self.solver.descend(self.place(last.u, lam), last.u, shear, self.runaway, multiplier=multiplier)
         return found
 
     def _advance(self, history: list[StaticState], lam: float, found: Equilibrium) -> StaticState:
@@ -254,17 +232,33 @@ class StaticLoading:
                 np.prod([(target - lams[m]) / (lams[k] - lams[m]) for m in range(len(lams)) if m != k])
                 for k in range(len(lams))
             ]
-            return self.arch.with_supports(sum(w * s.u for w, s in zip(weights, history)), target)
-        moved = self.arch.with_supports(last.u, target)
+            return self.place(sum(w * s.u for w, s in zip(weights, history)), target)
+        moved = self.place(last.u, target)
         stiffness = self.arch.stiffness(self.solver.state(last.u, last.u, last.forces.shear_force)[0])
         free = self.arch.free_dofs
         driven = np.setdiff1d(np.arange(len(moved)), free)
         load = -stiffness[np.ix_(free, driven)] @ (moved - last.u)[driven]
+        more = self.parameter.multiplier(target) - self.parameter.multiplier(last.lam)
+        if more:
+            load = load + more * self.arch.live_forces(last.u)
         try:
             moved[free] += banded.solve(banded.from_dense(stiffness[np.ix_(free, free)]), load)
         except (np.linalg.LinAlgError, ValueError):
             pass  # a singular tangent: the descent starts from the state with only the support moved
         return moved
+
+    def place(self, u: np.ndarray, lam: float) -> np.ndarray:
+        """`u` with the supports where the path's parameter `lam` puts them."""
+        return self.arch.with_supports(u, self.parameter.support(lam))
+
+    def load_the_live_load(self, settings: PathSettings) -> None:
+        """From the last accepted state on, the path's parameter is the live load's multiplier (from 0,
+        in `settings`' units), the supports held where they are: movement, then load."""
+        last = self.accepted[-1]
+        self.parameter = PathParameter(live=True, support_at=self.parameter.support(last.lam))
+        self.settings = settings
+        self.accepted = [replace(last, lam=0.0)]
+        self.failures, self.snaps = {}, []
 
     # ---- the whole path ---------------------------------------------------------------------------
     def follow(self, on_step: Callable[[PathStep], None] | None = None) -> PathResult:

@@ -15,7 +15,7 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import ArchImperfections, arch_imperfections
-from yadearch.case.mechanics import arch_geometry, contact_stiffness
+from yadearch.case.mechanics import arch_geometry, contact_stiffness, live_load
 from yadearch.case.support import case_movement
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, block_volume
@@ -28,6 +28,7 @@ from yadearch.model.joint_tangent import (
     joint_tangent,
     kernel_table,
 )
+from yadearch.model.loads import block_loads, live_load_points
 from yadearch.model.movement import Movement
 from yadearch.solve import banded
 from yadearch.solve.newton_kernel import descent_kernel, newton_kernel
@@ -48,6 +49,7 @@ class StaticArch:
     centroid0: np.ndarray
     movement: Movement
     imperfections: ArchImperfections | None
+    live: np.ndarray  # the live load of 1 N (or 1 g) on each block (`model.loads.block_loads`)
 
     @property
     def n_blocks(self) -> int:
@@ -88,6 +90,14 @@ class StaticArch:
         placed[[0, -1], 2] = turns * self.length
         return placed.ravel()
 
+    def live_forces(self, u: np.ndarray) -> np.ndarray:
+        """The live load of multiplier 1 on the free blocks as generalised forces at `u` (its moment
+        with the arm turned by each block's rotation, / `length`)."""
+        turn = self.poses(u)[1][1:-1]
+        live = self.live[1:-1]
+        moment = np.cos(turn) * live[:, 2] - np.sin(turn) * live[:, 3]
+        return np.column_stack([live[:, 0], live[:, 1], moment / self.length]).ravel()
+
     def at_rest(self) -> np.ndarray:
         """The undeformed generalised coordinates: blocks exactly touching, nothing turned."""
         return np.column_stack([self.centroid0, np.zeros(self.n_blocks)]).ravel()
@@ -112,12 +122,28 @@ class StaticArch:
         )
 
     def free_state(
-        self, u: np.ndarray, u_before: np.ndarray, shear_before: np.ndarray, gravity: float = 1.0
+        self,
+        u: np.ndarray,
+        u_before: np.ndarray,
+        shear_before: np.ndarray,
+        gravity: float = 1.0,
+        multiplier: float = 0.0,
     ) -> tuple[JointTangent, np.ndarray, np.ndarray]:
         """The joints at `u` (moved from `u_before`, where their shear forces were `shear_before`), the
-        free blocks' residual R = joint forces + `gravity` x the weights (generalised) and their
-        tangent K in band storage (`solve.banded`), in one compiled call."""
-        return free_state(self.kernel, u, u_before, shear_before, self.weight, gravity, self.length, banded.BAND)
+        free blocks' residual R = joint forces + `gravity` x the weights + `multiplier` x the live load
+        (generalised) and their tangent K in band storage (`solve.banded`), in one compiled call."""
+        return free_state(
+            self.kernel,
+            u,
+            u_before,
+            shear_before,
+            self.weight,
+            gravity,
+            self.length,
+            banded.BAND,
+            self.live,
+            multiplier,
+        )
 
     @functools.cached_property
     def kernel(self) -> tuple:
@@ -149,14 +175,17 @@ def static_arch(case: ArchCase) -> StaticArch:
     centroid0 = np.array([polygon_centroid(b[: len(b) // 2, :2]) for b in geometry.blocks])
     profiles = imperfections.profiles if imperfections is not None else None
     unit_weight = units.density(case.material.density_g_per_cm3) * case.loading.gravity_m_per_s2
+    weight = np.array([unit_weight * block_volume(b) for b in geometry.blocks])
+    points = live_load_points(geometry, centroid0, weight, live_load(case, geometry))
     return StaticArch(
         geometry=geometry,
         table=joint_table(geometry, centroid0, profiles),
         law=JointLaw(stiffness.kn, stiffness.ks, stiffness.tan_friction, geometry.depth),
-        weight=np.array([unit_weight * block_volume(b) for b in geometry.blocks]),
+        weight=weight,
         centroid0=centroid0,
         movement=case_movement(case, geometry),
         imperfections=imperfections,
+        live=block_loads(points, centroid0, len(weight)),
     )
 
 
@@ -169,6 +198,6 @@ def compile_kernels() -> None:
     u, shear = arch.at_rest(), np.zeros(len(arch.table.left))
     joints = arch.evaluate(u, u, shear)
     arch.band_stiffness(joints, banded.BAND)
-    problem = (arch.kernel, u, shear, arch.weight, 1.0, arch.length, banded.BAND, 1e-9, 1e-4)
+    problem = (arch.kernel, u, shear, arch.weight, 1.0, arch.length, banded.BAND, 1e-9, 1e-4, arch.live, 0.0)
     newton_kernel(problem, u, 2, 2, 1e-4)
     descent_kernel(problem, u, 0.0, 0.0, u, 1e-3, 0, 2)

@@ -59,7 +59,7 @@ def solver_cost(case: ArchCase, repeats: int = FLOOR_REPEATS) -> SolverCost:
     solver_cpu = time.process_time() - start
     states = np.array([s.u for s in loading.accepted])
     shears = np.array([s.forces.shear_force for s in loading.accepted])
-    args = (arch.kernel, states, shears, arch.weight, arch.length, banded.BAND)
+    args = (arch.kernel, states, shears, arch.weight, arch.length, banded.BAND, arch.live)
     per_state: list[float] = []
     for solve in (False, True):
         _floor_loop(*args, 1, solve)  # compiled before it is timed
@@ -74,13 +74,13 @@ def solver_cost(case: ArchCase, repeats: int = FLOOR_REPEATS) -> SolverCost:
 
 
 @njit(cache=True)
-def _floor_loop(kernel, states, shears, weight, lever, band, repeats, solve):
+def _floor_loop(kernel, states, shears, weight, lever, band, live, repeats, solve):
     """Evaluate the joints at every state (and solve the tangent, with `solve`), `repeats` times (a
     checksum returned so that nothing is optimised away)."""
     total = 0.0
     for _ in range(repeats):
         for k in range(states.shape[0]):
-            state = free_state_kernel(kernel, states[k], states[k], shears[k], weight, 1.0, lever, band)
+            state = free_state_kernel(kernel, states[k], states[k], shears[k], weight, 1.0, lever, band, live, 0.0)
             total += state[8][0]
             if solve:
                 d, _singular = band_solve(state[9], state[8], 0.0)

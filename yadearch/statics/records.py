@@ -15,7 +15,7 @@ from yadearch.results.joint_rows import friction_extremes, joint_rows, joint_sna
 from yadearch.results.rundir import STIFFNESS_COLUMN
 from yadearch.results.states import state_entry
 from yadearch.solve.stages import Stage
-from yadearch.solve.static_path import StaticState
+from yadearch.solve.static_state import StaticState
 from yadearch.solve.statics import StaticArch
 
 # numerics of the DEM that a static run does not use: time stepping, damping, holds, the support's speed

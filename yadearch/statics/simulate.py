@@ -21,7 +21,8 @@ from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSumma
 from yadearch.solve.limit import why_not_standing
 from yadearch.solve.path import PathStep, path_settings
 from yadearch.solve.stages import Stage
-from yadearch.solve.static_path import StaticEngineError, StaticLoading
+from yadearch.solve.static_path import StaticLoading
+from yadearch.solve.static_state import StaticEngineError
 from yadearch.solve.statics import static_arch
 from yadearch.statics.records import DEM_ONLY_NUMERICS, StaticRecords
 

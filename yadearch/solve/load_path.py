@@ -1,0 +1,169 @@
+"""A live load's capacity by the static engine (pure numpy, no YADE): the self-weight, optionally a
+support movement, then the live load's multiplier as the path's parameter, followed by the same
+continuation, fold bracketing and descent as a support movement (`solve.static_path`): its first loss
+of stability, the end of its path (collapse, unresolved, or none up to the largest load tried), the
+mechanism from the fold's softest mode, and the load-displacement curve (docs/loads.md).
+
+Load control: the path stops at the limit point (its descending branch is not traced)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import runaway_length
+from yadearch.case.support import path_end_mm
+from yadearch.errors import CaseError
+from yadearch.model import units
+from yadearch.model.loads import NONE, UNITS, VERTICAL
+from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
+from yadearch.solve.path import PathResult, PathSettings, first_snap, follow_path, path_settings
+from yadearch.solve.rigid import LimitError
+from yadearch.solve.stages import Outcome
+from yadearch.solve.static_path import StaticLoading
+from yadearch.solve.static_state import StaticState
+from yadearch.solve.statics import StaticArch, static_arch
+
+FIRST_FRACTION = 0.05  # the load's first increment: this x the load scale (the rigid capacity)
+LARGEST_FRACTION = 0.1  # ... its largest increment
+TOLERANCE_FRACTION = 1e-3  # ... the bracket that ends the search (0.1 % of the capacity)
+REACH = 4.0  # ... and the path stops, the arch standing, at this many times the scale
+
+
+@dataclass(frozen=True)
+class StaticLoadPath:
+    """The static engine's answer for a live load: the multiplier at the end of the path (`capacity`,
+    NaN unless it collapsed) and at its first loss of stability, in `unit`; the outcome; the collapse
+    mode's hinges and kind; the load-displacement curve; after a support movement of `after_mm`."""
+
+    capacity: float
+    first_loss: float
+    outcome: str
+    unit: str
+    hinges: tuple[str, ...]
+    kind: str | None
+    curve: pd.DataFrame
+    after_mm: float
+    reach: float  # the largest multiplier the path tried (the arch stands at least to it without collapse)
+    iterations: int
+    rigid: float  # the rigid-block capacity of the same state (`solve.load_lp`; NaN where the rigid arch fell)
+    rigid_hinges: str
+
+
+def load_settings(scale: float, growth: float) -> PathSettings:
+    """The load path's increments for a capacity near `scale` (N or g)."""
+    return PathSettings(
+        first_increment=FIRST_FRACTION * scale,
+        max_increment=LARGEST_FRACTION * scale,
+        growth=growth,
+        tolerance=TOLERANCE_FRACTION * scale,
+        max_displacement=REACH * scale,
+    )
+
+
+def static_load_path(case: ArchCase, after_mm: float = 0.0, scale: float | None = None) -> StaticLoadPath:
+    """The live load of `case` grown to collapse on the static engine's path, the self-weight held,
+    after the case's support movement to `after_mm` (0: at rest); `scale` (N or g; default
+    `load_scale`) sets the increments. CaseError for an arch without a live load, or one that
+    collapses or stops before `after_mm`; StaticEngineError for one that does not stand."""
+    if case.loads.live_load == NONE:
+        raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
+    at_rest = load_analysis(case)
+    scale = load_scale(at_rest) if scale is None else scale
+    if not (math.isfinite(scale) and scale > 0.0):
+        raise ValueError(f"the load scale must be a positive number, got {scale}")
+    arch = static_arch(case)
+    num = case.numerics
+    loading = StaticLoading(arch, path_settings(num, path_end_mm(case, arch.movement)), runaway_length(case))
+    loading.selfweight()
+    if after_mm > 0.0:
+        _move_supports(loading, case, after_mm)
+    loading.load_the_live_load(load_settings(scale, num.increment_growth))
+    start = loading.accepted[0]
+    path = follow_path(loading, loading.settings)
+    mode = loading.fold_mode(path.upper) if path.collapsed else None
+    first = first_snap(loading.snaps)
+    return StaticLoadPath(
+        capacity=path.du if path.collapsed else math.nan,
+        first_loss=_first_loss(path, first),
+        outcome=path.outcome,
+        unit=UNITS[case.loads.live_load],
+        hinges=tuple(mode.labels) if mode is not None else (),
+        kind=str(mode.kind) if mode is not None else None,
+        curve=load_curve(arch, start, loading.accepted),
+        after_mm=after_mm,
+        reach=path.lower,
+        iterations=loading.iterations,
+        **_rigid(case, after_mm, at_rest),
+    )
+
+
+def _rigid(case: ArchCase, after_mm: float, at_rest: LoadCapacity) -> dict:
+    """The rigid-block capacity of the same state: at rest, or in the rigid march's state after the
+    movement (NaN where the rigid arch collapses before it)."""
+    try:
+        rigid = residual_capacity(case, after_mm) if after_mm > 0.0 else at_rest
+    except LimitError:
+        return {"rigid": math.nan, "rigid_hinges": ""}
+    return {"rigid": rigid.multiplier, "rigid_hinges": rigid.hinge_labels}
+
+
+def load_scale(rigid: LoadCapacity) -> float:
+    """The size of the load the path's increments are made for: the rigid arch's capacity at rest
+    `rigid` (a settled arch carries less), or, where rigid blocks carry any load, the arch's weight
+    (N) or 1 g."""
+    if math.isfinite(rigid.multiplier) and rigid.multiplier > 0.0:
+        return rigid.multiplier
+    return rigid.arch_weight_N if rigid.unit == UNITS[VERTICAL] else 1.0
+
+
+def _move_supports(loading: StaticLoading, case: ArchCase, after_mm: float) -> None:
+    """The support movement to `after_mm` along its path, which the arch must carry in equilibrium."""
+    loading.settings = path_settings(case.numerics, after_mm)
+    moved = loading.follow()
+    if moved.outcome != Outcome.STANDS or moved.lower < units.mm(after_mm):
+        where = f"{units.to_mm(moved.du):.2f} mm" if moved.collapsed else f"{units.to_mm(moved.lower):.2f} mm"
+        raise CaseError(
+            f"after_mm: the arch does not carry its support movement to {after_mm:g} mm ({moved.outcome} at {where})"
+        )
+
+
+def _first_loss(path: PathResult, first: tuple[float, float] | None) -> float:
+    """The first loss of stability's multiplier: the first snap's fold, or the collapse's own fold."""
+    if first is not None:
+        return 0.5 * (first[0] + first[1])
+    return path.du if path.collapsed else math.nan
+
+
+def load_curve(arch: StaticArch, start: StaticState, states: list[StaticState]) -> pd.DataFrame:
+    """The load-displacement curve: each accepted state's multiplier, the live load's displacement
+    along its own direction (mm; weighted by its forces, the work it does per unit multiplier), and the
+    tangent's smallest eigenvalue (N/m, zero at the limit point)."""
+    rows = [
+        {
+            "multiplier": s.lam,
+            "load_displacement_mm": units.to_mm(live_work(arch, start.u, s.u)),
+            "min_stiffness_N_per_m": s.min_stiffness,
+        }
+        for s in states
+    ]
+    return pd.DataFrame(rows)
+
+
+def live_work(arch: StaticArch, u0: np.ndarray, u: np.ndarray) -> float:
+    """The work of the live load of multiplier 1 from `u0` to `u` over the sum of its forces'
+    magnitudes: the mean displacement of its points along their forces (m)."""
+    live = arch.live
+    magnitude = float(np.hypot(live[:, 0], live[:, 1]).sum())
+    if magnitude == 0.0:
+        return 0.0
+    pos0, turn0 = arch.poses(u0)
+    pos, turn = arch.poses(u)
+    # the moment c m0 - s d0 integrated over the turn: m0 (sin t - sin t0) + d0 (cos t - cos t0)
+    work = (pos - pos0) * live[:, 0:2]
+    turning = live[:, 2] * (np.sin(turn) - np.sin(turn0)) + live[:, 3] * (np.cos(turn) - np.cos(turn0))
+    return float((work.sum() + turning.sum()) / magnitude)
