@@ -1,6 +1,6 @@
-"""The live-load figure (reports/loads): a point load's capacity along the paper's arch (its influence
-line), the collapse acceleration of semicircles against t/R, and the residual capacity after a
-settlement, each from the rigid-block load multiplier."""
+"""The live-load figures: a point load's capacity along the paper's arch (its influence line), the
+collapse acceleration of semicircles against t/R, the residual capacity after a settlement (static
+path and rigid blocks), and the static engine's load-displacement curve."""
 
 from __future__ import annotations
 
@@ -13,6 +13,7 @@ from yadearch.plotting.house import COLUMN_CM, house_style, new_figure, save_fig
 
 HEIGHT_CM = 15.0
 INFLUENCE_HEIGHT_CM = 6.0
+RESIDUAL_TOP_OVER_LARGEST = 4.0  # the residual panel's top over its largest point: the legend's room
 
 
 @house_style
@@ -27,11 +28,18 @@ def plot_loads(
     middle.set_xlabel("t/R of a semicircle (55 voussoirs)")
     middle.set_ylabel("collapse acceleration (g)")
     middle.set_ylim(bottom=0.0)
-    bottom.plot(residual["settlement_mm"], residual["capacity"], "^", ms=4.0, color="C2")  # no line: the
-    # rigid capacity drops at once when the hinges open, not along a slope
+    settled = residual["settlement_mm"]
+    bottom.plot(settled, residual["static_capacity"], "o-", ms=3.0, color="C0", label="collapse (static engine)")
+    bottom.plot(
+        settled, residual["static_first_loss"], "o", ms=3.0, mfc="none", color="C0", label="first loss (static)"
+    )
+    bottom.plot(settled, residual["rigid_capacity"], "^", ms=4.0, color="C2", label="rigid blocks: first motion")
+    # no line through the rigid points: their value drops at once when the hinges open, not along a slope
     bottom.set_xlabel("settlement of the right support before loading (mm)")
-    bottom.set_ylabel("quarter-span load capacity (N)")
+    bottom.set_ylabel("quarter-span load (N)")
     bottom.set_yscale("log")
+    bottom.set_ylim(top=RESIDUAL_TOP_OVER_LARGEST * residual[["static_capacity", "rigid_capacity"]].max().max())
+    bottom.legend(loc="upper right", frameon=False)  # above the points: room made by the axis' top
     return save_figure(fig, stem)
 
 

@@ -5,25 +5,29 @@ collapse acceleration against t/R, the residual capacity after a settlement."""
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterable
 
 import pandas as pd
 
 from yadearch.case.config import ArchCase, preset
-from yadearch.case.mechanics import live_load
+from yadearch.case.mechanics import live_load, runaway_length
+from yadearch.case.support import path_end_mm
+from yadearch.model import units
 from yadearch.model.loads import generalised, live_load_points
-from yadearch.solve.limit import limit_analysis
 from yadearch.solve.limit_lp import weight_load
 from yadearch.solve.load_lp import load_analysis, load_capacity, residual_capacity
 from yadearch.solve.mechanisms import mechanism_multiplier
+from yadearch.solve.path import path_settings
 from yadearch.solve.rigid import at_rest, rigid_arch
+from yadearch.solve.static_path import StaticLoading
+from yadearch.solve.statics import static_arch
+from yadearch.studies.load_paths import static_row
 
 CHECK_FRICTION_DEG = 80.0  # the mechanism method knows no sliding: friction high enough not to slide
 SEMICIRCLE_RADIUS_MM = 300.0  # intrados radius of the semicircles (as the paper's model)
 POSITIONS = tuple(round(0.05 * k, 2) for k in range(1, 20))  # of the span: the influence line
 T_OVER_R = (0.11, 0.12, 0.14, 0.16, 0.18, 0.2, 0.22, 0.25, 0.3)
-SETTLEMENT_FRACTIONS = (0.0, 0.25, 0.5, 0.75)  # of the rigid du: the residual capacity
+SETTLEMENT_FRACTIONS = (0.0, 0.25, 0.5, 0.75)  # of the static du: the residual capacity
 
 
 def check_cases() -> list[ArchCase]:
@@ -100,19 +104,32 @@ def semicircle_accelerations(ratios: Iterable[float] = T_OVER_R, n_voussoirs: in
 
 
 def residual_capacities(base: ArchCase, fractions: Iterable[float] = SETTLEMENT_FRACTIONS) -> pd.DataFrame:
-    """The live load's capacity after the base case's support movement to fractions of the rigid du."""
-    du = limit_analysis(base, mirror=False).du_rigid_mm
+    """The live load after the base case's support movement to fractions of its static du (the end
+    of its path at its own kn): on the static path (first loss, collapse) and by rigid blocks in the
+    rigid march's state there (the load that first moves them: their open hinges are pins)."""
+    du = static_du_mm(base)
     rows = []
     for fraction in fractions:
-        at_mm = fraction * du if du is not None else math.nan
-        found = residual_capacity(base, at_mm) if fraction > 0.0 else load_analysis(base)
+        at_mm = fraction * du
+        rigid = residual_capacity(base, at_mm) if fraction > 0.0 else load_analysis(base)
+        static = static_row(base, at_mm)
         rows.append(
-            {"settlement_over_du_rigid": fraction, "settlement_mm": at_mm, "capacity": found.multiplier,
-             "unit": found.unit, "hinges": found.hinge_labels}
+            {"settlement_over_du": fraction, "settlement_mm": at_mm, "rigid_capacity": rigid.multiplier,
+             "rigid_hinges": rigid.hinge_labels, "static_first_loss": static["static_first_loss"],
+             "static_capacity": static["static_capacity"], "static_hinges": static["static_hinges"],
+             "unit": rigid.unit}
         )  # fmt: skip
     return pd.DataFrame(rows)
 
 
+def static_du_mm(case: ArchCase) -> float:
+    """The end of the case's support-movement path on the static engine (mm; inf if it stands)."""
+    arch = static_arch(case)
+    loading = StaticLoading(arch, path_settings(case.numerics, path_end_mm(case, arch.movement)), runaway_length(case))
+    loading.selfweight()
+    return units.to_mm(loading.follow().du)
+
+
 def paper_arch() -> ArchCase:
-    """The paper's arch and material (set 2's preset; kn plays no part in a rigid analysis)."""
+    """The paper's arch and material (set 2's preset, kn 5.2 N/mm3 on the static path)."""
     return preset("set2")

@@ -1,0 +1,66 @@
+"""The static engine's live-load paths in the validation study (reports/loads): stiff joints against the
+rigid-block capacity, the paper's arch at its own stiffness, and the residual capacity after a
+settlement, each beside the rigid answer of the same state (solve.load_path, solve.load_lp)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+import pandas as pd
+
+from yadearch.case.config import ArchCase
+from yadearch.solve.load_path import static_load_path
+
+STIFF_KNS = (10_000.0, 100_000.0)  # N/mm3: stiff joints, the stiffest a case accepts standing for rigid blocks
+PAPER_LOADS: dict[str, dict[str, object]] = {
+    "point load at 0.25 of the span": {"live_load": "vertical", "load_position_over_span": 0.25},
+    "point load at mid-span": {"live_load": "vertical", "load_position_over_span": 0.5},
+    "horizontal acceleration": {"live_load": "horizontal_acceleration"},
+}
+
+
+def static_row(case: ArchCase, after_mm: float = 0.0) -> dict:
+    """One static load path as a table row, with the rigid answer of the same state."""
+    path = static_load_path(case, after_mm)
+    return {
+        "case": case.name,
+        "kn_N_per_mm3": case.interface.kn_N_per_mm3,
+        "after_mm": after_mm,
+        "unit": path.unit,
+        "outcome": path.outcome,
+        "static_first_loss": path.first_loss,
+        "static_capacity": path.capacity,
+        "static_hinges": " ".join(path.hinges),
+        "collapse_kind": path.kind,
+        "rigid_capacity": path.rigid,
+        "rigid_hinges": path.rigid_hinges,
+        "static_over_rigid": path.capacity / path.rigid - 1.0,
+        "iterations": path.iterations,
+    }
+
+
+def stiff_check(cases: Iterable[ArchCase]) -> pd.DataFrame:
+    """Each case with joints of each of STIFF_KNS on the static path beside its rigid-block capacity."""
+    return pd.DataFrame(
+        [static_row(case.with_overrides({"interface.kn_N_per_mm3": kn})) for case in cases for kn in STIFF_KNS]
+    )
+
+
+def paper_cases(paper: ArchCase) -> list[ArchCase]:
+    """The paper's arch under each of PAPER_LOADS, named for its load."""
+    return [paper.with_overrides({**o, "name": f"{paper.name} {what}"}) for what, o in PAPER_LOADS.items()]
+
+
+def paper_loads(paper: ArchCase, stiffnesses: Iterable[float]) -> pd.DataFrame:
+    """The paper's arch under each of PAPER_LOADS at each stiffness (N/mm3)."""
+    rows = []
+    for kn in stiffnesses:
+        for what, overrides in PAPER_LOADS.items():
+            case = paper.with_overrides({**overrides, "interface.kn_N_per_mm3": kn})
+            rows.append({"load": what, **static_row(case)})
+    return pd.DataFrame(rows)
+
+
+def residual_paths(base: ArchCase, settlements_mm: Iterable[float]) -> pd.DataFrame:
+    """The live load of `base` after its support movement to each settlement (mm), on the static path."""
+    return pd.DataFrame([static_row(base, at) for at in settlements_mm])
