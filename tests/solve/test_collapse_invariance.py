@@ -11,14 +11,10 @@ import pytest
 from test_collapse_mechanics import SPREADING_SEMICIRCLE
 
 from yadearch.case.config import ArchCase, preset
-from yadearch.case.mechanics import runaway_length
-from yadearch.case.support import path_end_mm
 from yadearch.results.summary import collapse_fields
 from yadearch.solve.newton import SolverSettings
-from yadearch.solve.path import path_settings
 from yadearch.solve.stages import Outcome
 from yadearch.solve.static_path import StaticLoading
-from yadearch.solve.statics import static_arch
 
 INVARIANCE = 0.01  # the standard: a result that moves more than 1 % is not a result
 PATH_SETTINGS = ("first_increment_mm", "max_increment_mm", "du_tolerance_mm")
@@ -43,12 +39,10 @@ def scaled_solver(factor: float) -> SolverSettings:
 
 def outcome(case: ArchCase, solver: SolverSettings = DEFAULT_SOLVER) -> dict:
     """The static path of `case` with `solver`: its outcome, du and du_first (mm)."""
-    arch = static_arch(case)
-    end_mm = path_end_mm(case, arch.movement)
-    loading = StaticLoading(arch, path_settings(case.numerics, end_mm), runaway_length(case), solver)
+    loading = StaticLoading.of(case, solver)
     loading.selfweight()
     path = loading.follow()
-    return collapse_fields(path, arch.movement, loading.first_loss)
+    return collapse_fields(path, loading.arch.movement, loading.first_loss)
 
 
 CASES = {

@@ -102,15 +102,8 @@ def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True, 
     c = contacts(arch, placement)
     m = arch.n_joints
     a_v, load, support = _split(arch, equilibrium_matrix(arch, c), weight_load(arch, placement), placement)
-    scale = arch.weight[1:-1].sum()  # forces in units of the arch's weight, moments of it x a joint
-    rows = np.tile([1.0, 1.0, 1.0 / arch.geometry.thickness], len(load) // 3)
+    scale, rows, bounds, a_ub, b_ub = static_constraints(arch, c, friction)
     objective = support
-    bounds = [(0.0, None if t else 0.0) for t in c.touching.T.ravel()] + [(None, None)] * m
-    a_ub = b_ub = None
-    if friction:
-        mu = arch.tan_phi * np.eye(m)
-        a_ub = np.block([[-mu, -mu, np.eye(m)], [-mu, -mu, -np.eye(m)]])
-        b_ub = np.zeros(2 * m)
     problem = {
         "A_ub": a_ub,
         "b_ub": b_ub,
@@ -132,6 +125,36 @@ def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True, 
         free = np.array([hi is None for _, hi in bounds])
         x[free] += np.linalg.lstsq(a_v[:, free], load - a_v @ x, rcond=None)[0]
     return Statics(True, np.column_stack([x[:m], x[m : 2 * m]]), x[2 * m :], c)
+
+
+def static_constraints(
+    arch: RigidArch, c: Contacts, friction: bool
+) -> tuple[float, np.ndarray, list[tuple[float | None, float | None]], np.ndarray | None, np.ndarray | None]:
+    """What the static programmes share: the force scale (the arch's weight; moments in it x the ring's
+    thickness), the voussoirs' row scaling, the bounds of N_I, N_E (>= 0 where the corner touches, else
+    0) and T (free), and Coulomb's rows |T| <= tan(phi) (N_I + N_E) as A_ub x <= b_ub (None without
+    `friction`)."""
+    m = arch.n_joints
+    scale = float(arch.weight[1:-1].sum())
+    rows = np.tile([1.0, 1.0, 1.0 / arch.geometry.thickness], arch.n_blocks - 2)
+    bounds: list[tuple[float | None, float | None]] = [(0.0, None if t else 0.0) for t in c.touching.T.ravel()]
+    bounds += [(None, None)] * m
+    if not friction:
+        return scale, rows, bounds, None, None
+    mu = arch.tan_phi * np.eye(m)
+    return scale, rows, bounds, np.block([[-mu, -mu, np.eye(m)], [-mu, -mu, -np.eye(m)]]), np.zeros(2 * m)
+
+
+def mechanism_pivots(
+    arch: RigidArch, omega: np.ndarray, gaps: np.ndarray, touching: np.ndarray
+) -> tuple[np.ndarray, tuple[Pivot, ...], np.ndarray]:
+    """The hinges of a velocity field: the interfaces whose blocks' rotation rates `omega` (every block)
+    differ by more than HINGE_RATE_FRACTION of the largest difference, each about the touching corner
+    whose gap rate (`gaps`, joint x side) is least; (their indices, pivots, every relative rate)."""
+    relative = omega[arch.right] - omega[arch.left]
+    hinged = np.flatnonzero(np.abs(relative) > HINGE_RATE_FRACTION * max(np.abs(relative).max(), 1e-300))
+    closed_rates = np.where(touching, gaps, np.inf)  # an open corner is no pivot
+    return hinged, tuple(Pivot(int(k), int(np.argmin(closed_rates[k]))) for k in hinged), relative
 
 
 def _support_turn_rate(arch: RigidArch, side: str, placement: Placement, support_speed: float) -> float:
@@ -178,10 +201,7 @@ def solve_kinematics(arch: RigidArch, placement: Placement, support_speed: float
             [_support_turn_rate(arch, "right", placement, support_speed)],
         ]
     )
-    relative = omega[arch.right] - omega[arch.left]
-    hinged = np.flatnonzero(np.abs(relative) > HINGE_RATE_FRACTION * max(np.abs(relative).max(), 1e-300))
-    closed_rates = np.where(c.touching, gaps, np.inf)  # an open corner is no pivot
-    pivots = tuple(Pivot(int(k), int(np.argmin(closed_rates[k]))) for k in hinged)
+    hinged, pivots, relative = mechanism_pivots(arch, omega, gaps, c.touching)
     closing = ~c.touching & (gaps < -CLOSING_RATE_FRACTION * np.abs(gaps).max())
     return Mechanism(
         pivots,

@@ -26,11 +26,11 @@ from yadearch.solve.limit_lp import (
     STATUS_INFEASIBLE,
     STATUS_UNBOUNDED,
     equilibrium_matrix,
+    mechanism_pivots,
+    static_constraints,
     weight_load,
 )
 from yadearch.solve.rigid import LimitError, Pivot, Placement, RigidArch, at_rest, contacts, rigid_arch
-
-HINGE_RATE_FRACTION = 1e-6  # relative rotation rates below this fraction of the largest are no hinge
 
 
 @dataclass(frozen=True)
@@ -77,18 +77,13 @@ def load_capacity(
     voussoirs = slice(3, 3 * (arch.n_blocks - 1))
     a_v = equilibrium_matrix(arch, c)[voussoirs]
     dead = weight_load(arch, placement)[voussoirs]  # what the contacts supply against the weights
-    scale = arch.weight[1:-1].sum()
-    rows = np.tile([1.0, 1.0, 1.0 / arch.geometry.thickness], len(dead) // 3)
+    scale, rows, bounds, a_ub, b_ub = static_constraints(arch, c, friction)
     a_eq = np.column_stack([a_v, np.ravel(live)[voussoirs]]) * rows[:, None]  # ... and the live load
     objective = np.zeros(3 * m + 1)
     objective[-1] = -1.0
-    bounds = [(0.0, None if t else 0.0) for t in c.touching.T.ravel()] + [(None, None)] * m + [(0.0, None)]
-    a_ub = b_ub = None
-    if friction:
-        mu = arch.tan_phi * np.eye(m)
-        a_ub = np.block([[-mu, -mu, np.eye(m)], [-mu, -mu, -np.eye(m)]])
+    bounds = bounds + [(0.0, None)]  # the multiplier
+    if a_ub is not None:
         a_ub = np.column_stack([a_ub, np.zeros(2 * m)])
-        b_ub = np.zeros(2 * m)
     result = linprog(
         objective,
         A_ub=a_ub,
@@ -115,15 +110,9 @@ def _hinges(arch: RigidArch, a_v: np.ndarray, velocity: np.ndarray, touching: np
     """The joints the mechanism turns, each about the corner that stays closed."""
     m = arch.n_joints
     omega = np.concatenate([[0.0], velocity[2::3], [0.0]])
-    relative = omega[arch.right] - omega[arch.left]
-    largest = float(np.abs(relative).max())
-    if largest == 0.0:
-        return ()
     rates = a_v.T @ velocity
-    gaps = np.abs(np.column_stack([rates[:m], rates[m : 2 * m]]))
-    gaps = np.where(touching, gaps, np.inf)
-    turning = np.flatnonzero(np.abs(relative) > HINGE_RATE_FRACTION * largest)
-    return tuple(Pivot(int(k), int(np.argmin(gaps[k]))) for k in turning)
+    gaps = np.abs(np.column_stack([rates[:m], rates[m : 2 * m]]))  # the dual's sign is the programme's
+    return mechanism_pivots(arch, omega, gaps, touching)[1]
 
 
 def residual_capacity(case: ArchCase, at_mm: float) -> LoadCapacity:

@@ -15,8 +15,6 @@ import numpy as np
 import pandas as pd
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import runaway_length
-from yadearch.case.support import path_end_mm
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.loads import NONE, UNITS, VERTICAL
@@ -26,7 +24,7 @@ from yadearch.solve.rigid import LimitError
 from yadearch.solve.stages import Outcome
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.static_state import StaticState
-from yadearch.solve.statics import StaticArch, static_arch
+from yadearch.solve.statics import StaticArch
 
 FIRST_FRACTION = 0.05  # the load's first increment: this x the load scale (the rigid capacity)
 LARGEST_FRACTION = 0.1  # ... its largest increment
@@ -76,9 +74,9 @@ def static_load_path(case: ArchCase, after_mm: float = 0.0, scale: float | None 
     scale = load_scale(at_rest) if scale is None else scale
     if not (math.isfinite(scale) and scale > 0.0):
         raise ValueError(f"the load scale must be a positive number, got {scale}")
-    arch = static_arch(case)
     num = case.numerics
-    loading = StaticLoading(arch, path_settings(num, path_end_mm(case, arch.movement)), runaway_length(case))
+    loading = StaticLoading.of(case)
+    arch = loading.arch
     loading.selfweight()
     if after_mm > 0.0:
         _move_supports(loading, case, after_mm)

@@ -18,16 +18,19 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import runaway_length
+from yadearch.case.support import path_end_mm
 from yadearch.errors import CANNOT_STAND
 from yadearch.model import units
 from yadearch.model.joint_law import JointForces
 from yadearch.solve import banded
 from yadearch.solve.collapse_mode import FoldMode, fold_mode
 from yadearch.solve.newton import Equilibrium, Solver, SolverSettings, largest_move
-from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, follow_path
+from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, follow_path, path_settings
 from yadearch.solve.stages import Stage, Verdict
 from yadearch.solve.static_state import PathParameter, StaticEngineError, StaticState
-from yadearch.solve.statics import StaticArch
+from yadearch.solve.statics import StaticArch, static_arch
 
 GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
 SELFWEIGHT_FALL = 0.05  # a block falling this far (m) under self-weight means the arch cannot stand
@@ -49,6 +52,13 @@ class StaticLoading:
     runaway: float
     solver_settings: SolverSettings = field(default_factory=SolverSettings)
     parameter: PathParameter = field(default_factory=PathParameter)
+
+    @classmethod
+    def of(cls, case: ArchCase, solver_settings: SolverSettings | None = None) -> StaticLoading:
+        """The path of `case`'s arch along its support movement, to its end, runaway bound from the case."""
+        arch = static_arch(case)
+        settings = path_settings(case.numerics, path_end_mm(case, arch.movement))
+        return cls(arch, settings, runaway_length(case), solver_settings or SolverSettings())
 
     def __post_init__(self) -> None:
         self.solver = Solver(self.arch, self.solver_settings)

@@ -12,14 +12,11 @@ import numpy as np
 from numba import njit
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import runaway_length
-from yadearch.case.support import path_end_mm
 from yadearch.model.joint_tangent import free_state_kernel
 from yadearch.solve import banded
 from yadearch.solve.banded import band_solve
-from yadearch.solve.path import path_settings
 from yadearch.solve.static_path import StaticLoading
-from yadearch.solve.statics import compile_kernels, static_arch
+from yadearch.solve.statics import compile_kernels
 
 FLOOR_REPEATS = 20  # each accepted state evaluated and solved this many times for the floor
 TARGET_FLOOR_RATIO = 1.5  # issue 45: the solver at most this many times its floor
@@ -51,8 +48,8 @@ def solver_cost(case: ArchCase, repeats: int = FLOOR_REPEATS) -> SolverCost:
     """Solve `case`'s path by the static engine (self-weight and loading) timing its CPU, then time
     `repeats` evaluations and solves of each accepted state in the compiled floor loop."""
     compile_kernels()
-    arch = static_arch(case)
-    loading = StaticLoading(arch, path_settings(case.numerics, path_end_mm(case, arch.movement)), runaway_length(case))
+    loading = StaticLoading.of(case)
+    arch = loading.arch
     start = time.process_time()
     loading.selfweight()
     loading.follow()

@@ -19,11 +19,10 @@ from yadearch.results.provenance import provenance
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSummary, collapse_fields, loading_info
 from yadearch.solve.limit import why_not_standing
-from yadearch.solve.path import PathStep, path_settings
+from yadearch.solve.path import PathStep
 from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.static_state import StaticEngineError
-from yadearch.solve.statics import static_arch
 from yadearch.statics.records import DEM_ONLY_NUMERICS, StaticRecords
 
 INTERRUPTED_EXIT = 130
@@ -53,9 +52,9 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
     wall0 = time.time()
     started = time.strftime("%Y-%m-%dT%H:%M:%S")
     num = case.numerics
-    arch = static_arch(case)
+    loading = StaticLoading.of(case)
+    arch = loading.arch
     end_mm = path_end_mm(case, arch.movement)
-    loading = StaticLoading(arch, path_settings(num, end_mm), runaway_length(case))
     records = StaticRecords(arch, num.hinge_rotation_mrad * 1e-3, keep_tables=num.keeps_tables)
     unused = {key: getattr(num, key) for key in DEM_ONLY_NUMERICS}
     log(

@@ -10,17 +10,14 @@ from collections.abc import Iterable
 import pandas as pd
 
 from yadearch.case.config import ArchCase, preset
-from yadearch.case.mechanics import live_load, runaway_length
-from yadearch.case.support import path_end_mm
+from yadearch.case.mechanics import live_load
 from yadearch.model import units
 from yadearch.model.loads import generalised, live_load_points
 from yadearch.solve.limit_lp import weight_load
 from yadearch.solve.load_lp import load_analysis, load_capacity, residual_capacity
 from yadearch.solve.mechanisms import mechanism_multiplier
-from yadearch.solve.path import path_settings
 from yadearch.solve.rigid import at_rest, rigid_arch
 from yadearch.solve.static_path import StaticLoading
-from yadearch.solve.statics import static_arch
 from yadearch.studies.load_paths import static_row
 
 CHECK_FRICTION_DEG = 80.0  # the mechanism method knows no sliding: friction high enough not to slide
@@ -124,8 +121,7 @@ def residual_capacities(base: ArchCase, fractions: Iterable[float] = SETTLEMENT_
 
 def static_du_mm(case: ArchCase) -> float:
     """The end of the case's support-movement path on the static engine (mm; inf if it stands)."""
-    arch = static_arch(case)
-    loading = StaticLoading(arch, path_settings(case.numerics, path_end_mm(case, arch.movement)), runaway_length(case))
+    loading = StaticLoading.of(case)
     loading.selfweight()
     return units.to_mm(loading.follow().du)
 
