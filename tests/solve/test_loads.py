@@ -11,12 +11,10 @@ import numpy as np
 import pytest
 
 from yadearch.case.config import ArchCase, preset
-from yadearch.case.mechanics import live_load
 from yadearch.case.plan import plan_run
 from yadearch.errors import CaseError
-from yadearch.model.loads import generalised, live_load_points
 from yadearch.solve.limit_lp import weight_load
-from yadearch.solve.load_lp import load_analysis, load_capacity, residual_capacity
+from yadearch.solve.load_lp import live_forces, load_analysis, load_capacity, residual_capacity
 from yadearch.solve.mechanisms import mechanism_multiplier
 from yadearch.solve.rigid import at_rest, rigid_arch
 
@@ -38,9 +36,7 @@ CASES = [
 @pytest.mark.parametrize("case", CASES, ids=["semicircle-t40-acc", "semicircle-t80-acc", "point-0.25", "spread"])
 def test_the_lp_multiplier_is_the_least_mechanism_multiplier(case):
     arch = rigid_arch(case)
-    live = generalised(
-        live_load_points(arch.geometry, arch.centroid0, arch.weight, live_load(case, arch.geometry)), arch.n_blocks
-    )
+    live = live_forces(case, arch)
     dead = -weight_load(arch, at_rest(arch)).reshape(-1, 3)
     lp = load_capacity(arch, live)
     kinematic, pivots = mechanism_multiplier(arch, dead, live)

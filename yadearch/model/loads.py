@@ -89,20 +89,27 @@ def _extrados_shares(geometry: ArchGeometry, position: float, width: float) -> l
     origin = geometry.joints[0].intrados[0]
     low, high = origin + position - width / 2.0, origin + position + width / 2.0
     shares = []
-    for block in range(1, len(geometry.blocks) - 1):
-        a, b = geometry.joints[block - 1].extrados[:2], geometry.joints[block].extrados[:2]
-        left, right = (a, b) if a[0] <= b[0] else (b, a)
+    for block, left, right in extrados_segments(geometry):
         if width == 0.0:
             if left[0] <= low <= right[0]:
-                return [(block, 1.0, _on_segment(left, right, low))]
+                return [(block, 1.0, on_segment(left, right, low))]
             continue
         start, end = max(low, left[0]), min(high, right[0])
         if end > start:
-            shares.append((block, (end - start) / width, _on_segment(left, right, 0.5 * (start + end))))
+            shares.append((block, (end - start) / width, on_segment(left, right, 0.5 * (start + end))))
     return shares
 
 
-def _on_segment(left: np.ndarray, right: np.ndarray, x: float) -> np.ndarray:
+def extrados_segments(geometry: ArchGeometry) -> list[tuple[int, np.ndarray, np.ndarray]]:
+    """Each voussoir's extrados as a segment: (block, its left end, its right end), in m."""
+    segments = []
+    for block in range(1, len(geometry.blocks) - 1):
+        a, b = geometry.joints[block - 1].extrados[:2], geometry.joints[block].extrados[:2]
+        segments.append((block, *((a, b) if a[0] <= b[0] else (b, a))))
+    return segments
+
+
+def on_segment(left: np.ndarray, right: np.ndarray, x: float) -> np.ndarray:
     """The point of the segment left-right at abscissa `x`."""
     run = right[0] - left[0]
     t = (x - left[0]) / run if run > 0.0 else 0.5

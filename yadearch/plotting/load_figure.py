@@ -11,7 +11,7 @@ from matplotlib.patches import FancyArrow, Polygon
 
 from yadearch.case.config import ArchCase
 from yadearch.model.geometry import ArchGeometry
-from yadearch.model.loads import VERTICAL
+from yadearch.model.loads import VERTICAL, extrados_segments, on_segment
 from yadearch.plotting.house import COLUMN_CM, THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
 from yadearch.plotting.labels import layout, place_label
 from yadearch.solve.load_lp import LoadCapacity
@@ -67,13 +67,11 @@ def plot_load_collapse(case: ArchCase, geometry: ArchGeometry, result: LoadCapac
 
 def _extrados_height(geometry: ArchGeometry, x: float) -> float:
     """The highest extrados point (mm) of the voussoirs over abscissa `x` (mm)."""
-    heights = []
-    for j0, j1 in zip(geometry.joints, geometry.joints[1:]):
-        (xa, ya), (xb, yb) = sorted(
-            ((j0.extrados[0] * MM, j0.extrados[1] * MM), (j1.extrados[0] * MM, j1.extrados[1] * MM))
-        )
-        if xa <= x <= xb:
-            heights.append(ya + (yb - ya) * ((x - xa) / (xb - xa) if xb > xa else 0.5))
+    heights = [
+        float(on_segment(left, right, x / MM)[1]) * MM
+        for _, left, right in extrados_segments(geometry)
+        if left[0] * MM <= x <= right[0] * MM
+    ]
     return max(heights, default=max(float(b[:, 1].max()) for b in geometry.blocks) * MM)
 
 

@@ -18,7 +18,6 @@ from scipy.optimize import linprog
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import live_load
 from yadearch.errors import CaseError
-from yadearch.model import units
 from yadearch.model.loads import NONE, UNITS, generalised, live_load_points
 from yadearch.solve.limit_lp import (
     LP_METHOD,
@@ -30,6 +29,7 @@ from yadearch.solve.limit_lp import (
     static_constraints,
     weight_load,
 )
+from yadearch.solve.pose import march_placement
 from yadearch.solve.rigid import LimitError, Pivot, Placement, RigidArch, at_rest, contacts, rigid_arch
 
 
@@ -59,10 +59,15 @@ def load_analysis(case: ArchCase, placement: Placement | None = None) -> LoadCap
     if load.kind == NONE:
         raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
     placement = placement or at_rest(arch)
-    points = live_load_points(arch.geometry, arch.centroid0, arch.weight, load)
-    live = generalised(points, arch.n_blocks, placement.place(points.point, points.block))
-    found = load_capacity(arch, live, placement)
+    found = load_capacity(arch, live_forces(case, arch, placement), placement)
     return replace(found, unit=UNITS[load.kind], arch_weight_N=float(arch.weight[1:-1].sum()))
+
+
+def live_forces(case: ArchCase, arch: RigidArch, placement: Placement | None = None) -> np.ndarray:
+    """The case's unit live load on `arch` as (n_blocks, 3) generalised forces, each point force where
+    `placement` puts its block (default: the undeformed arch)."""
+    points = live_load_points(arch.geometry, arch.centroid0, arch.weight, live_load(case, arch.geometry))
+    return generalised(points, arch.n_blocks, placement.place(points.point, points.block) if placement else None)
 
 
 def load_capacity(
@@ -118,10 +123,7 @@ def _hinges(arch: RigidArch, a_v: np.ndarray, velocity: np.ndarray, touching: np
 def residual_capacity(case: ArchCase, at_mm: float) -> LoadCapacity:
     """The live load's capacity after the case's support movement to `at_mm` (along its path), in the
     state the rigid march has the arch there (its hinges open): the residual capacity of a settled arch."""
-    from yadearch.solve.limit import limit_analysis
-
-    march = limit_analysis(case, max_displacement_mm=at_mm, mirror=False)
+    placement, march = march_placement(case, at_mm)
     if march.du_rigid_mm is not None and march.du_rigid_mm <= at_mm:
         raise LimitError(f"the rigid arch collapses at {march.du_rigid_mm:.2f} mm, before {at_mm:g} mm of movement")
-    placement = Placement(units.mm(at_mm), np.array(march.rotation_rad), units.mm(np.array(march.shift_mm)))
     return load_analysis(case, placement)

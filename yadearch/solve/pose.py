@@ -8,6 +8,7 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.model import units
 from yadearch.solve.limit import limit_analysis, mirror_image
+from yadearch.solve.limit_result import LimitResult
 from yadearch.solve.rigid import SIDES, LimitError, Pivot, Placement, at_rest, close_linkage, rigid_arch
 
 FLIP_X = np.array([-1.0, 1.0])
@@ -40,10 +41,16 @@ def rigid_pose(
     other support moving the mirrored way) and reflected back; `compliant`: in the compliant-hinge
     march at the case's kn (where the DEM should be)."""
     solved = mirror_image(case) if mirrored else case
-    result = limit_analysis(solved, max_displacement_mm=at_mm, mirror=False, compliant=compliant)
-    turns = np.array(result.rotation_rad)
-    placement = Placement(units.mm(at_mm), turns, units.mm(np.array(result.shift_mm)))
+    placement, _ = march_placement(solved, at_mm, compliant)
+    turns = placement.rot
     centroids = placement.centroids(rigid_arch(solved))
     if mirrored:  # block k of the mirror image is block n + 1 - k here
         return centroids[::-1] * FLIP_X, -turns[::-1]
     return centroids, turns
+
+
+def march_placement(case: ArchCase, at_mm: float, compliant: bool = False) -> tuple[Placement, LimitResult]:
+    """Where the rigid march of `case` (the compliant-hinge march with `compliant`) has the blocks at
+    `at_mm` of path, and the march's result (its du_rigid says whether it got there)."""
+    result = limit_analysis(case, max_displacement_mm=at_mm, mirror=False, compliant=compliant)
+    return Placement(units.mm(at_mm), np.array(result.rotation_rad), units.mm(np.array(result.shift_mm))), result

@@ -10,11 +10,9 @@ from collections.abc import Iterable
 import pandas as pd
 
 from yadearch.case.config import ArchCase, preset
-from yadearch.case.mechanics import live_load
 from yadearch.model import units
-from yadearch.model.loads import generalised, live_load_points
 from yadearch.solve.limit_lp import weight_load
-from yadearch.solve.load_lp import load_analysis, load_capacity, residual_capacity
+from yadearch.solve.load_lp import live_forces, load_analysis, load_capacity, residual_capacity
 from yadearch.solve.mechanisms import mechanism_multiplier
 from yadearch.solve.rigid import at_rest, rigid_arch
 from yadearch.solve.static_path import StaticLoading
@@ -56,8 +54,7 @@ def mechanism_check(cases: Iterable[ArchCase]) -> pd.DataFrame:
     rows = []
     for case in cases:
         arch = rigid_arch(case)
-        points = live_load_points(arch.geometry, arch.centroid0, arch.weight, live_load(case, arch.geometry))
-        live = generalised(points, arch.n_blocks)
+        live = live_forces(case, arch)
         lp = load_capacity(arch, live)
         kinematic, pivots = mechanism_multiplier(arch, -weight_load(arch, at_rest(arch)).reshape(-1, 3), live)
         rows.append(
