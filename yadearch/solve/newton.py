@@ -16,7 +16,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 import scipy.linalg
 
-from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, as_joints
+from yadearch.model.block_state import as_joints
+from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent
 from yadearch.solve import banded
 from yadearch.solve.newton_kernel import CONVERGED, RUNAWAY, STUCK, TIMEOUT, descent_kernel, newton_kernel
 from yadearch.solve.stages import Verdict

@@ -1,5 +1,5 @@
 """Newton's iterations at one support position compiled whole (numba): each iteration evaluates the
-joints, residual and band tangent in one kernel (`model.joint_tangent.free_state_kernel`), solves by
+joints, residual and band tangent in one kernel (`model.block_state.free_state_kernel`), solves by
 the banded LU (`solve.banded.band_solve`), caps the step and backtracks on |R|^2, the same arithmetic
 in the same order as the Python loop it replaces, without an interpreter round trip an iteration."""
 
@@ -8,7 +8,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from yadearch.model.joint_tangent import BLOCK_DOFS, free_state_kernel
+from yadearch.model.block_state import free_state_kernel
+from yadearch.model.joint_tangent import BLOCK_DOFS
 from yadearch.solve.banded import band_solve
 
 

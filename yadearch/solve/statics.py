@@ -18,16 +18,10 @@ from yadearch.case.imperfect import ArchImperfections, arch_imperfections
 from yadearch.case.mechanics import arch_geometry, contact_stiffness, live_load
 from yadearch.case.support import case_movement
 from yadearch.model import units
+from yadearch.model.block_state import assemble_band, free_state, kernel_table
 from yadearch.model.geometry import ArchGeometry, block_volume
 from yadearch.model.joint_law import JointLaw, JointTable, joint_table
-from yadearch.model.joint_tangent import (
-    BLOCK_DOFS,
-    JointTangent,
-    assemble_band,
-    free_state,
-    joint_tangent,
-    kernel_table,
-)
+from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, joint_tangent
 from yadearch.model.loads import block_loads, live_load_points
 from yadearch.model.movement import Movement
 from yadearch.solve import banded
@@ -147,7 +141,7 @@ class StaticArch:
 
     @functools.cached_property
     def kernel(self) -> tuple:
-        """The joint table and law as the compiled kernels take them (`model.joint_tangent.kernel_table`)."""
+        """The joint table and law as the compiled kernels take them (`model.block_state.kernel_table`)."""
         return kernel_table(self.table, self.law)
 
     def generalised_forces(self, joints: JointTangent) -> np.ndarray:

@@ -12,7 +12,7 @@ import numpy as np
 from numba import njit
 
 from yadearch.case.config import ArchCase
-from yadearch.model.joint_tangent import free_state_kernel
+from yadearch.model.block_state import free_state_kernel
 from yadearch.solve import banded
 from yadearch.solve.banded import band_solve
 from yadearch.solve.static_path import StaticLoading
