@@ -16,6 +16,8 @@ class FakeArch:
     `creep_reach` is accepted still creeping, and every move from it fails until it is settled; a
     relaxation judges states up to `du + false_margin` stable, but those beyond du never settle."""
 
+    at_rest_when_accepted = False  # its states may creep: a failure is tried again once settled
+
     def __init__(
         self,
         du: float,

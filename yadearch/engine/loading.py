@@ -81,6 +81,8 @@ class EquilibriumPath:
     """The equilibrium states of the loading (snapshots) and the states failures ended in, kept for
     the bracket of du and for the collapse mechanism."""
 
+    at_rest_when_accepted = False  # a DEM state is accepted still moving slowly: settled before du is bracketed
+
     def __init__(self, arch: LiveArch):
         self.arch = arch
         self.num = arch.case.numerics

@@ -24,6 +24,9 @@ from yadearch.solve.stages import Outcome, Verdict
 class EquilibriumOracle(Protocol):
     """Moves the support from the last accepted equilibrium state and relaxes the arch there."""
 
+    at_rest_when_accepted: bool  # an accepted state is at rest already (a static equilibrium): settling
+    # it changes nothing, and a failure tried from it stands without trying again
+
     def try_increment(self, target: float) -> Verdict:
         """Restore the last accepted state, move the support to `target`, relax: a Verdict."""
 
@@ -152,7 +155,8 @@ def follow_path(
     completely: a failure reached by a longer move, or from a state that was still creeping, is tried
     again from the settled state (near collapse, a state accepted while creeping by a few hundredths
     of a millimetre fails every move, where the same state at rest holds further); if the arch then
-    holds, the path goes on. A lower state that runs away while settling is discarded."""
+    holds, the path goes on. An oracle whose accepted states are at rest (`at_rest_when_accepted`)
+    would only repeat the same failure: it is not tried again. A lower state that runs away while settling is discarded."""
     result = PathResult(lower=start)
     increment = settings.first_increment
     settled = False  # the accepted state has been settled completely
@@ -164,7 +168,7 @@ def follow_path(
                 break
             settled = True
             if oracle.settle():
-                if result.upper < firm_upper:
+                if result.upper < firm_upper and not oracle.at_rest_when_accepted:
                     result.upper_from = -math.inf  # try the failure again from the settled state
                 continue
             oracle.discard()  # not an equilibrium: an upper bound, whatever the path

@@ -216,6 +216,8 @@ class StaticLoading:
         """The first snap's fold bracket on the accepted path (m), None without one."""
         return first_snap(self.snaps)
 
+    at_rest_when_accepted = True  # a static equilibrium: nothing creeps, a failure from it stands
+
     def settle(self) -> bool:
         """A static equilibrium is at rest already: nothing creeps."""
         return True
