@@ -86,8 +86,11 @@ def test_stiff_joints_carry_the_rigid_blocks_capacity(overrides):
     assert -RIGID_TOLERANCE < path.capacity / rigid.multiplier - 1.0 < 0.0
     assert path.rigid == rigid.multiplier
     assert len(path.hinges) == len(rigid.pivots)
-    for static, rigid_hinge in zip(path.hinges, rigid.hinge_labels.split()):
-        assert abs(int(static[:-1]) - int(rigid_hinge[:-1])) <= 1, (path.hinges, rigid.hinge_labels)
+    for static, rigid_hinge in zip(path.hinges, rigid.hinge_labels.split()):  # within a joint, on the same face
+        assert abs(int(static[:-1]) - int(rigid_hinge[:-1])) <= 1 and static[-1] == rigid_hinge[-1], (
+            path.hinges,
+            rigid.hinge_labels,
+        )
 
 
 def test_the_capacity_does_not_move_with_the_path_increments():

@@ -242,6 +242,7 @@ def _inclines(alpha: float) -> StaticArch:
         Movement(left=None, right=None),
         None,
         np.zeros((len(weight), 4)),  # no live load
+        np.zeros((len(weight), 4)),  # no backfill
     )
 
 

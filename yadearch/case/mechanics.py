@@ -16,6 +16,7 @@ from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes, imperfect_geometry
 from yadearch.case.shape import build_arch
 from yadearch.model import units
+from yadearch.model.backfill import Backfill
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.loads import LiveLoad
 
@@ -129,4 +130,16 @@ def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:
         position=loads.load_position_over_span * geometry.span,
         width=units.mm(loads.load_width_mm),
         toward_right=loads.acceleration_toward == "right",
+        shape=loads.load_shape,
+    )
+
+
+def backfill(case: ArchCase) -> Backfill:
+    """The case's backfill in SI (model.backfill): its depth over the crown's extrados, unit weight
+    (density x g) and lateral pressure coefficient."""
+    loads = case.loads
+    return Backfill(
+        depth=units.mm(loads.fill_depth_mm),
+        unit_weight=units.density(loads.fill_density_g_per_cm3) * case.loading.gravity_m_per_s2,
+        lateral_coefficient=loads.fill_lateral_coefficient,
     )

@@ -46,8 +46,13 @@ def plan_run(case: ArchCase) -> RunPlan:
         )
     if case.loads.live_load != NONE:
         raise CaseError(
-            f"loads.live_load = {case.loads.live_load!r}: the DEM and static engines do not apply live "
-            "loads yet; the rigid-block limit analysis gives their capacity (yadearch loads)"
+            f"loads.live_load = {case.loads.live_load!r}: a run follows a support movement; a live load's "
+            "capacity is `yadearch loads` (rigid blocks, or --engine static on the static engine's path)"
+        )
+    if case.loads.fill_depth_mm > 0.0 and num.engine != "static":
+        raise CaseError(
+            f"loads.fill_depth_mm = {case.loads.fill_depth_mm:g}: the DEM does not apply backfill yet; "
+            "the static engine does (numerics.engine = 'static', or --engine static)"
         )
     geometry = arch_geometry(case)  # refuses an arch that cannot be built (case/shape.py)
     _check_imperfections(case, geometry)

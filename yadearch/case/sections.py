@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 from yadearch.case.fields import number_meta
 from yadearch.case.imperfections_section import ImperfectionsConfig
 from yadearch.case.numerics_section import NumericsConfig
-from yadearch.model.loads import LIVE_LOADS
+from yadearch.model.loads import LIVE_LOADS, LOAD_SHAPES
 
 
 @dataclass
@@ -243,6 +243,43 @@ class LoadsConfig:
     acceleration_toward: str = field(
         default="right",
         metadata={"choices": ("right", "left"), "predates": "right", "doc": "the horizontal acceleration's direction"},
+    )
+    load_shape: str = field(
+        default="uniform",
+        metadata={
+            "choices": LOAD_SHAPES,
+            "predates": "uniform",
+            "doc": "how a spread vertical load is distributed over load_width_mm: 'uniform', 'rising' "
+            "(a triangle from zero at its left edge) or 'falling' (from its peak at the left edge to zero)",
+        },
+    )
+    fill_depth_mm: float = field(
+        default=0.0,
+        metadata={
+            **number_meta(
+                0,
+                1e5,
+                doc="backfill: depth of the level fill above the extrados' highest point (mm; 0: no fill); "
+                "its weight and lateral pressure are dead loads on the voussoirs (docs/loads.md)",
+            ),
+            "predates": 0.0,
+        },
+    )
+    fill_density_g_per_cm3: float = field(
+        default=2.0,
+        metadata={**number_meta(0, 10, low_open=True, doc="the backfill's density (g/cm3)"), "predates": 2.0},
+    )
+    fill_lateral_coefficient: float = field(
+        default=0.0,
+        metadata={
+            **number_meta(
+                0,
+                10,
+                doc="the backfill's lateral pressure coefficient K (horizontal pressure K x its unit weight "
+                "x depth below its surface on the extrados; e.g. 1 - sin(phi) at rest; 0: none)",
+            ),
+            "predates": 0.0,
+        },
     )
 
 

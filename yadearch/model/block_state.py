@@ -1,7 +1,7 @@
 """The free blocks' state for the static engine (compiled with numba, no YADE): the joints' tangent
-(`model.joint_tangent`) assembled over the blocks into the residual R = joint forces + weights + a live
-load and the band tangent K = -dR/du of the free blocks, each block's degrees of freedom x, y and its
-rotation times a lever (so that every entry of K is N/m), in one compiled call."""
+(`model.joint_tangent`) assembled over the blocks into the residual R = joint forces + weights + point
+loads (a live load, backfill) and the band tangent K = -dR/du of the free blocks, each block's degrees
+of freedom x, y and its rotation times a lever (so that every entry of K is N/m), in one compiled call."""
 
 from __future__ import annotations
 
@@ -27,16 +27,14 @@ def free_state(
     gravity: float,
     length: float,
     band: int,
-    live: np.ndarray,
-    multiplier: float = 0.0,
+    loads: np.ndarray,
+    factor: float = 0.0,
 ) -> tuple[JointTangent, np.ndarray, np.ndarray]:
     """In one compiled call: the joints at generalised coordinates `u` (x, y, rotation x `length`
     per block) having moved from `u_before`, the residual R = joint forces + `gravity` x the weights
-    + `multiplier` x the live load `live` (`model.loads.block_loads`) on the free blocks (all but the
+    + `factor` x the point loads `loads` (`model.loads.block_loads`) on the free blocks (all but the
     first and last) and their tangent K in band storage; `kernel` is `kernel_table`'s tuple."""
-    return as_joints(
-        free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, length, band, live, multiplier)
-    )
+    return as_joints(free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, length, band, loads, factor))
 
 
 def as_joints(state: tuple) -> tuple[JointTangent, np.ndarray, np.ndarray]:
@@ -46,10 +44,10 @@ def as_joints(state: tuple) -> tuple[JointTangent, np.ndarray, np.ndarray]:
 
 
 @njit(cache=True)
-def free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, lever, band, live, multiplier):
+def free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, lever, band, loads, factor):
     """`tangent_kernel` at the poses of `u`, then the free blocks' residual and band tangent, with
-    `multiplier` x the live load `live` (per block: force x, y, and the moment m0 and dot product d0
-    of its arm from the centroid with it, unturned; the arm turns with the block)."""
+    `factor` x the point loads `loads` (per block: force x, y, and the moment m0 and dot product d0
+    of their arms from the centroid with them, unturned; the arms turn with the block)."""
     (left, right, left_intrados, right_intrados, normal0, along0, length, handedness, n_blocks,
      kn_depth, ks_depth, tan_friction, gap_fraction, gap, imperfect) = kernel  # fmt: skip
     placed, before = u.reshape(-1, BLOCK_DOFS), u_before.reshape(-1, BLOCK_DOFS)
@@ -68,8 +66,8 @@ def free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, lever,
         residual[k + 2] = block_torque[b] / lever + 0.0
     whole = assemble_band(local, left, right, n_blocks, lever, band)
     stiffness = np.ascontiguousarray(whole[:, BLOCK_DOFS : BLOCK_DOFS * (n_blocks - 1)])
-    if multiplier != 0.0:
-        _add_live_load(residual, stiffness, live, multiplier, rot, lever, band)
+    if factor != 0.0:
+        _add_point_loads(residual, stiffness, loads, factor, rot, lever, band)
     return (
         outputs[0],
         outputs[1],
@@ -104,15 +102,15 @@ def assemble_band(local, left, right, n_blocks, length, band):
 
 
 @njit(cache=True)
-def _add_live_load(residual, stiffness, live, multiplier, rot, lever, band):
-    """The live load on the free blocks: its forces, and its moment about the centroid with the arm
-    turned by the block's rotation, c m0 - s d0, whose change with the rotation is the load's own
+def _add_point_loads(residual, stiffness, loads, factor, rot, lever, band):
+    """Point loads on the free blocks: their forces, and their moment about the centroid with the arms
+    turned by the block's rotation, c m0 - s d0, whose change with the rotation is the loads' own
     stiffness (a load above the centroid softens the block: K += P (s m0 + c d0) / lever^2)."""
-    for b in range(1, live.shape[0] - 1):
+    for b in range(1, loads.shape[0] - 1):
         k = BLOCK_DOFS * (b - 1)
         c, s = np.cos(rot[b]), np.sin(rot[b])
-        m0, d0 = live[b, 2], live[b, 3]
-        residual[k] += multiplier * live[b, 0]
-        residual[k + 1] += multiplier * live[b, 1]
-        residual[k + 2] += multiplier * (c * m0 - s * d0) / lever
-        stiffness[band, k + 2] += multiplier * (s * m0 + c * d0) / lever**2
+        m0, d0 = loads[b, 2], loads[b, 3]
+        residual[k] += factor * loads[b, 0]
+        residual[k + 1] += factor * loads[b, 1]
+        residual[k + 2] += factor * (c * m0 - s * d0) / lever
+        stiffness[band, k + 2] += factor * (s * m0 + c * d0) / lever**2

@@ -21,6 +21,8 @@ from yadearch.model.geometry import ArchGeometry
 NONE, VERTICAL, ACCELERATION = "none", "vertical", "horizontal_acceleration"
 LIVE_LOADS = (NONE, VERTICAL, ACCELERATION)
 UNITS = {VERTICAL: "N", ACCELERATION: "g"}  # the multiplier's unit: the load is 1 N, or 1 g
+UNIFORM, RISING, FALLING = "uniform", "rising", "falling"
+LOAD_SHAPES = (UNIFORM, RISING, FALLING)  # a spread load's intensity across its width
 
 
 @dataclass(frozen=True)
@@ -32,6 +34,7 @@ class LiveLoad:
     position: float = 0.0
     width: float = 0.0
     toward_right: bool = True
+    shape: str = UNIFORM
 
 
 @dataclass(frozen=True)
@@ -51,7 +54,7 @@ def live_load_points(geometry: ArchGeometry, centroids: np.ndarray, weight: np.n
         force = np.column_stack([push, np.zeros_like(push)])
         return LoadPoints(np.arange(1, len(weight) - 1), centroids[1:-1, :2].copy(), force)
     if load.kind == VERTICAL:
-        shares = _extrados_shares(geometry, load.position, load.width)
+        shares = _extrados_shares(geometry, load.position, load.width, load.shape)
         if shares:
             blocks, newtons, points = zip(*shares)
             force = np.column_stack([np.zeros(len(newtons)), -np.array(newtons)])
@@ -83,9 +86,12 @@ def block_loads(points: LoadPoints, centroids: np.ndarray, n_blocks: int) -> np.
     return loads
 
 
-def _extrados_shares(geometry: ArchGeometry, position: float, width: float) -> list[tuple[int, float, np.ndarray]]:
+def _extrados_shares(
+    geometry: ArchGeometry, position: float, width: float, shape: str = UNIFORM
+) -> list[tuple[int, float, np.ndarray]]:
     """(block, newtons, point) of a 1 N vertical load centred `position` m from the left springing and
-    spread over `width` m: each voussoir's part, at that part's centre on the block's extrados."""
+    spread over `width` m with the intensity `shape`: each voussoir's part, at that part's centre of
+    load on the block's extrados."""
     origin = geometry.joints[0].intrados[0]
     low, high = origin + position - width / 2.0, origin + position + width / 2.0
     shares = []
@@ -96,8 +102,24 @@ def _extrados_shares(geometry: ArchGeometry, position: float, width: float) -> l
             continue
         start, end = max(low, left[0]), min(high, right[0])
         if end > start:
-            shares.append((block, (end - start) / width, on_segment(left, right, 0.5 * (start + end))))
+            share, centre = _part(low, width, start, end, shape)
+            shares.append((block, share, on_segment(left, right, centre)))
     return shares
+
+
+def _part(low: float, width: float, start: float, end: float, shape: str) -> tuple[float, float]:
+    """The share of a unit load spread over [low, low + width] with intensity `shape` that lies in
+    [start, end], and the abscissa of that part's resultant."""
+    if shape == UNIFORM:
+        return (end - start) / width, 0.5 * (start + end)
+    s, e = (start - low) / width, (end - low) / width  # on the load's own width, 0 to 1
+    if shape == FALLING:  # the mirror image of a rising load
+        s, e = 1.0 - e, 1.0 - s
+    share = e * e - s * s  # a rising intensity 2 t: its integral from s to e
+    centre = (2.0 / 3.0) * (e**3 - s**3) / share
+    if shape == FALLING:
+        centre = 1.0 - centre
+    return share, low + centre * width
 
 
 def extrados_segments(geometry: ArchGeometry) -> list[tuple[int, np.ndarray, np.ndarray]]:

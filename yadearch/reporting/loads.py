@@ -16,7 +16,7 @@ from yadearch.plotting.load_figure import plot_load_collapse
 from yadearch.plotting.loads import plot_loads
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.rigid import rigid_arch
-from yadearch.studies.load_paths import STIFF_KNS, paper_cases, paper_loads, stiff_check
+from yadearch.studies.load_paths import STIFF_KNS, backfill_capacities, paper_cases, paper_loads, stiff_check
 from yadearch.studies.loads import (
     check_cases,
     influence_line,
@@ -30,6 +30,8 @@ CHECK_TOLERANCE = 1e-9  # relative: the LP and the mechanism method are one answ
 QUARTERS = (0.25, 0.5, 0.75)
 PAPER_STIFFNESSES = (0.25, 5.2)  # N/mm3: the paper's voussoir sets 1 and 2
 STIFF_TOLERANCE = 0.02  # stiff static within 2 % of rigid blocks (issue 44)
+FILL_DEPTHS_MM = (0.0, 20.0, 50.0, 100.0)  # backfill over the crown's extrados
+FILL_COEFFICIENTS = (0.0, 0.3)  # its lateral pressure coefficient: none, and about 1 - sin(45 deg)
 
 
 def write_loads_report(out: Path) -> Path:
@@ -43,6 +45,7 @@ def write_loads_report(out: Path) -> Path:
     residual = residual_capacities(quarter)
     stiff = stiff_check([*check_cases(), *paper_cases(paper)])
     at_paper_kn = paper_loads(paper, PAPER_STIFFNESSES)
+    filled = backfill_capacities(paper, FILL_DEPTHS_MM, FILL_COEFFICIENTS, (PAPER_STIFFNESSES[-1], STIFF_KNS[-1]))
     tables = {
         "mechanism_check": checks,
         "influence_line": influence,
@@ -50,6 +53,7 @@ def write_loads_report(out: Path) -> Path:
         "residual_capacity": residual,
         "static_stiff_check": stiff,
         "static_paper_arch": at_paper_kn,
+        "backfill": filled,
     }
     for name, table in tables.items():
         write_csv_atomically(out / f"{name}.csv", table)
@@ -57,7 +61,11 @@ def write_loads_report(out: Path) -> Path:
     plot_loads(influence, accelerations, residual, weight, out / "loads")
     plot_load_collapse(quarter, arch_geometry(quarter), load_analysis(quarter), out / "quarter_span_collapse")
     path = out / "loads.md"
-    text = _markdown(paper, checks, influence, accelerations, residual, weight) + static_markdown(stiff, at_paper_kn)
+    text = (
+        _markdown(paper, checks, influence, accelerations, residual, weight)
+        + static_markdown(stiff, at_paper_kn)
+        + backfill_markdown(filled)
+    )
     write_text_atomically(path, text)
     return path
 
@@ -233,6 +241,42 @@ def static_markdown(stiff: pd.DataFrame, at_paper_kn: pd.DataFrame) -> str:
         "",
         "Not yet: the DEM's load ramp, so static against DEM on loads is not measured; the descending "
         "branch past the limit point (arc length).",
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def backfill_markdown(filled: pd.DataFrame) -> str:
+    """The backfill section: a quarter-span point load's capacity under fills of growing depth."""
+    rows = [
+        [f"{r.fill_depth_mm:g}", f"{r.fill_lateral_coefficient:g}", f"{r.kn_N_per_mm3:g}", f"{r.static_capacity:.4g}",
+         r.static_hinges, f"{r.rigid_capacity:.4g}", r.rigid_hinges, f"{r.static_over_rigid:+.1%}"]
+        for r in filled.itertuples()
+    ]  # fmt: skip
+    stiff = filled[filled["kn_N_per_mm3"] == STIFF_KNS[-1]]
+    within = int((stiff["static_over_rigid"].abs() <= STIFF_TOLERANCE).sum())
+    lines = [
+        "## Backfill",
+        "",
+        "The paper's arch under a level fill (density 2 g/cm3) of growing depth over the crown's extrados, "
+        "its weight on each voussoir's extrados and, with K 0.3, its lateral pressure (docs/loads.md, "
+        '"Backfill"); a point load at the quarter span. The fill\'s weight pre-compresses the ring and '
+        f"its capacity grows several times; stiff joints within {STIFF_TOLERANCE:.0%} of rigid blocks in "
+        f"{within} of {len(stiff)}.",
+        "",
+        *markdown_table(
+            [
+                "fill (mm)",
+                "K",
+                "kn (N/mm3)",
+                "static (N)",
+                "static hinges",
+                "rigid (N)",
+                "rigid hinges",
+                "static / rigid - 1",
+            ],
+            rows,
+        ),  # fmt: skip
         "",
     ]
     return "\n".join(lines)

@@ -48,9 +48,12 @@ def fold_mode(arch: StaticArch, u: np.ndarray, stiffness: np.ndarray, failed: np
     free dofs), or, given the state the collapse ran away to (`failed`), the motion towards it (the
     same mode carried to a finite amplitude; a stiff arch's softest linear mode can be one joint's
     own); which joints turn (MODE_HINGE_FRACTION of the largest turn) and whether it slides."""
-    mode = banded.softest_mode(stiffness) if failed is None else (failed - u)[arch.free_dofs]
-    if float(arch.loads()[arch.free_dofs] @ mode) < 0.0:
-        mode = -mode  # the way the weights go down
+    if failed is not None:
+        mode = (failed - u)[arch.free_dofs]  # the way the arch ran away: the loads' work released
+    else:
+        mode = banded.softest_mode(stiffness)
+        if float(arch.loads()[arch.free_dofs] @ mode) < 0.0:
+            mode = -mode  # an eigenvector's sign: the way the weights go down
     moved = u.copy()
     translations = mode.reshape(-1, BLOCK_DOFS)[:, 0:2]
     moved[arch.free_dofs] += MODE_PROBE / float(np.hypot(*translations.T).max() or 1.0) * mode

@@ -16,9 +16,10 @@ import numpy as np
 from scipy.optimize import linprog
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import live_load
+from yadearch.case.mechanics import backfill, live_load
 from yadearch.errors import CaseError
-from yadearch.model.loads import NONE, UNITS, generalised, live_load_points
+from yadearch.model.backfill import backfill_points
+from yadearch.model.loads import NONE, UNITS, LoadPoints, generalised, live_load_points
 from yadearch.solve.limit_lp import (
     LP_METHOD,
     LP_OPTIONS,
@@ -59,7 +60,7 @@ def load_analysis(case: ArchCase, placement: Placement | None = None) -> LoadCap
     if load.kind == NONE:
         raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
     placement = placement or at_rest(arch)
-    found = load_capacity(arch, live_forces(case, arch, placement), placement)
+    found = load_capacity(arch, live_forces(case, arch, placement), placement, dead=dead_forces(case, arch, placement))
     return replace(found, unit=UNITS[load.kind], arch_weight_N=float(arch.weight[1:-1].sum()))
 
 
@@ -67,21 +68,36 @@ def live_forces(case: ArchCase, arch: RigidArch, placement: Placement | None = N
     """The case's unit live load on `arch` as (n_blocks, 3) generalised forces, each point force where
     `placement` puts its block (default: the undeformed arch)."""
     points = live_load_points(arch.geometry, arch.centroid0, arch.weight, live_load(case, arch.geometry))
+    return _placed(points, arch, placement)
+
+
+def dead_forces(case: ArchCase, arch: RigidArch, placement: Placement | None = None) -> np.ndarray:
+    """The case's dead loads besides the weights (its backfill, `model.backfill`) in the same form."""
+    return _placed(backfill_points(arch.geometry, arch.centroid0, backfill(case)), arch, placement)
+
+
+def _placed(points: LoadPoints, arch: RigidArch, placement: Placement | None) -> np.ndarray:
+    """Point forces as (n_blocks, 3) generalised forces at the points `placement` moves them to."""
     return generalised(points, arch.n_blocks, placement.place(points.point, points.block) if placement else None)
 
 
 def load_capacity(
-    arch: RigidArch, live: np.ndarray, placement: Placement | None = None, friction: bool = True
+    arch: RigidArch,
+    live: np.ndarray,
+    placement: Placement | None = None,
+    friction: bool = True,
+    dead: np.ndarray | None = None,
 ) -> LoadCapacity:
     """The largest multiplier of the live load `live` ((n_blocks, 3) generalised forces, as
-    `model.loads.generalised` gives them) that the arch carries under its self-weight in
-    `placement` (default: at rest)."""
+    `model.loads.generalised` gives them) that the arch carries under its self-weight and the dead
+    loads `dead` (the same form; default none) in `placement` (default: at rest)."""
     placement = placement or at_rest(arch)
     c = contacts(arch, placement)
     m = arch.n_joints
     voussoirs = slice(3, 3 * (arch.n_blocks - 1))
     a_v = equilibrium_matrix(arch, c)[voussoirs]
-    dead = weight_load(arch, placement)[voussoirs]  # what the contacts supply against the weights
+    held = weight_load(arch, placement) - (0.0 if dead is None else np.ravel(dead))
+    held = held[voussoirs]  # what the contacts supply against the weights and the dead loads
     scale, rows, bounds, a_ub, b_ub = static_constraints(arch, c, friction)
     a_eq = np.column_stack([a_v, np.ravel(live)[voussoirs]]) * rows[:, None]  # ... and the live load
     objective = np.zeros(3 * m + 1)
@@ -94,7 +110,7 @@ def load_capacity(
         A_ub=a_ub,
         b_ub=b_ub,
         A_eq=a_eq,
-        b_eq=dead * rows / scale,
+        b_eq=held * rows / scale,
         bounds=bounds,
         method=LP_METHOD,
         options=LP_OPTIONS,

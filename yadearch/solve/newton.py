@@ -209,8 +209,7 @@ class Solver:
             banded.BAND,
             self.converged,
             self.settings.max_step,
-            arch.live,
-            multiplier,
+            *arch.external(gravity, multiplier),
         )
 
     def _descent_run(

@@ -156,7 +156,8 @@ def follow_path(
     again from the settled state (near collapse, a state accepted while creeping by a few hundredths
     of a millimetre fails every move, where the same state at rest holds further); if the arch then
     holds, the path goes on. An oracle whose accepted states are at rest (`at_rest_when_accepted`)
-    would only repeat the same failure: it is not tried again. A lower state that runs away while settling is discarded."""
+    would only repeat the same failure: it is not tried again. A lower state that runs away while
+    settling is discarded."""
     result = PathResult(lower=start)
     increment = settings.first_increment
     settled = False  # the accepted state has been settled completely

@@ -15,9 +15,10 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import ArchImperfections, arch_imperfections
-from yadearch.case.mechanics import arch_geometry, contact_stiffness, live_load
+from yadearch.case.mechanics import arch_geometry, backfill, contact_stiffness, live_load
 from yadearch.case.support import case_movement
 from yadearch.model import units
+from yadearch.model.backfill import backfill_points
 from yadearch.model.block_state import assemble_band, free_state, kernel_table
 from yadearch.model.geometry import ArchGeometry, block_volume
 from yadearch.model.joint_law import JointLaw, JointTable, joint_table
@@ -44,6 +45,7 @@ class StaticArch:
     movement: Movement
     imperfections: ArchImperfections | None
     live: np.ndarray  # the live load of 1 N (or 1 g) on each block (`model.loads.block_loads`)
+    dead: np.ndarray  # the dead loads besides the weights (the backfill), in the same form, x gravity
 
     @property
     def n_blocks(self) -> int:
@@ -124,20 +126,19 @@ class StaticArch:
         multiplier: float = 0.0,
     ) -> tuple[JointTangent, np.ndarray, np.ndarray]:
         """The joints at `u` (moved from `u_before`, where their shear forces were `shear_before`), the
-        free blocks' residual R = joint forces + `gravity` x the weights + `multiplier` x the live load
-        (generalised) and their tangent K in band storage (`solve.banded`), in one compiled call."""
+        free blocks' residual R = joint forces + `gravity` x (the weights and the dead loads) +
+        `multiplier` x the live load (generalised) and their tangent K in band storage
+        (`solve.banded`), in one compiled call."""
         return free_state(
-            self.kernel,
-            u,
-            u_before,
-            shear_before,
-            self.weight,
-            gravity,
-            self.length,
-            banded.BAND,
-            self.live,
-            multiplier,
-        )
+            self.kernel, u, u_before, shear_before, self.weight, gravity, self.length, banded.BAND,
+            *self.external(gravity, multiplier),
+        )  # fmt: skip
+
+    def external(self, gravity: float, multiplier: float) -> tuple[np.ndarray, float]:
+        """The loads besides the weights as the kernels take them: `gravity` x the dead loads +
+        `multiplier` x the live load, and the factor on them (0 where there are none: skipped)."""
+        loads = gravity * self.dead + multiplier * self.live
+        return loads, (1.0 if loads.any() else 0.0)
 
     @functools.cached_property
     def kernel(self) -> tuple:
@@ -180,6 +181,7 @@ def static_arch(case: ArchCase) -> StaticArch:
         movement=case_movement(case, geometry),
         imperfections=imperfections,
         live=block_loads(points, centroid0, len(weight)),
+        dead=block_loads(backfill_points(geometry, centroid0, backfill(case)), centroid0, len(weight)),
     )
 
 
@@ -192,6 +194,6 @@ def compile_kernels() -> None:
     u, shear = arch.at_rest(), np.zeros(len(arch.table.left))
     joints = arch.evaluate(u, u, shear)
     arch.band_stiffness(joints, banded.BAND)
-    problem = (arch.kernel, u, shear, arch.weight, 1.0, arch.length, banded.BAND, 1e-9, 1e-4, arch.live, 0.0)
+    problem = (arch.kernel, u, shear, arch.weight, 1.0, arch.length, banded.BAND, 1e-9, 1e-4, *arch.external(1.0, 0.0))
     newton_kernel(problem, u, 2, 2, 1e-4)
     descent_kernel(problem, u, 0.0, 0.0, u, 1e-3, 0, 2)

@@ -153,6 +153,7 @@ def _selfweight(
     records.add(state, label=Stage.SELFWEIGHT)
     row = records.series_columns(state)
     weight = float(loading.arch.weight[1:-1].sum())
+    fill = -float(loading.arch.dead[:, 1].sum())  # the backfill's weight on the voussoirs
     info = {
         "steps": loading.iterations,
         "unbalanced": row["unbalanced"],
@@ -161,10 +162,13 @@ def _selfweight(
         "horizontal_reaction_sum_N": row["left_Rx_N"] + row["right_Rx_N"],
         "thrust_N": abs(row["left_Rx_N"]),
         "crown_settlement_mm": -row["crown_dy_mm"],
+        **({"fill_weight_N": fill} if fill else {}),
     }
     log(
         f"[{case.name}] self-weight equilibrium after {loading.iterations} iterations: reactions "
-        f"{info['vertical_reaction_sum_N']:.3f} N for a weight of {weight:.3f} N, thrust {info['thrust_N']:.3f} N"
+        f"{info['vertical_reaction_sum_N']:.3f} N for a weight of {weight:.3f} N"
+        + (f" and {fill:.3f} N of backfill" if fill else "")
+        + f", thrust {info['thrust_N']:.3f} N"
     )
     return info
 

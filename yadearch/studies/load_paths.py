@@ -12,8 +12,9 @@ from yadearch.case.config import ArchCase
 from yadearch.solve.load_path import static_load_path
 
 STIFF_KNS = (10_000.0, 100_000.0)  # N/mm3: stiff joints, the stiffest a case accepts standing for rigid blocks
+QUARTER_SPAN = "point load at 0.25 of the span"
 PAPER_LOADS: dict[str, dict[str, object]] = {
-    "point load at 0.25 of the span": {"live_load": "vertical", "load_position_over_span": 0.25},
+    QUARTER_SPAN: {"live_load": "vertical", "load_position_over_span": 0.25},
     "point load at mid-span": {"live_load": "vertical", "load_position_over_span": 0.5},
     "horizontal acceleration": {"live_load": "horizontal_acceleration"},
 }
@@ -64,3 +65,20 @@ def paper_loads(paper: ArchCase, stiffnesses: Iterable[float]) -> pd.DataFrame:
 def residual_paths(base: ArchCase, settlements_mm: Iterable[float]) -> pd.DataFrame:
     """The live load of `base` after its support movement to each settlement (mm), on the static path."""
     return pd.DataFrame([static_row(base, at) for at in settlements_mm])
+
+
+def backfill_capacities(
+    paper: ArchCase, depths_mm: Iterable[float], coefficients: Iterable[float], stiffnesses: Iterable[float]
+) -> pd.DataFrame:
+    """A point load at the quarter span of the paper's arch under each backfill (depth over the crown,
+    lateral coefficient), on the static path at each stiffness beside the rigid capacity."""
+    rows = []
+    for depth in depths_mm:
+        for coefficient in coefficients:
+            for kn in stiffnesses:
+                case = paper.with_overrides(
+                    {**PAPER_LOADS[QUARTER_SPAN], "fill_depth_mm": depth, "fill_lateral_coefficient": coefficient,
+                     "interface.kn_N_per_mm3": kn}
+                )  # fmt: skip
+                rows.append({"fill_depth_mm": depth, "fill_lateral_coefficient": coefficient, **static_row(case)})
+    return pd.DataFrame(rows)

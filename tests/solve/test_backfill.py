@@ -1,0 +1,100 @@
+"""Backfill as dead loads (model/backfill.py) and spread loads' shapes (model/loads.py): the fill's
+weight is the fill's volume above the extrados, its lateral thrust Rankine's K gamma H^2 / 2 on each
+side; the rigid LP and the static engine carry it (supports balance weights, fill and load; stiff
+joints within 2 % of rigid blocks); engines and analyses that do not take it refuse it in one line."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from yadearch.case.config import preset
+from yadearch.case.mechanics import arch_geometry, backfill
+from yadearch.case.plan import plan_run
+from yadearch.errors import CaseError
+from yadearch.model.backfill import backfill_points, fill_surface
+from yadearch.model.loads import FALLING, RISING, UNIFORM, _extrados_shares, extrados_segments
+from yadearch.solve.limit import limit_analysis
+from yadearch.solve.load_lp import load_analysis
+from yadearch.solve.load_path import static_load_path
+from yadearch.solve.rigid import LimitError
+from yadearch.solve.static_path import StaticLoading
+from yadearch.solve.statics import static_arch
+
+FILL = {"fill_depth_mm": 50.0, "fill_lateral_coefficient": 0.3}
+QUARTER = {"live_load": "vertical", "load_position_over_span": 0.25}
+
+
+def _filled(**overrides):
+    return preset("set2").with_overrides({**FILL, **overrides})
+
+
+def test_the_fills_weight_is_its_volume_above_the_extrados_and_its_thrust_rankines():
+    case = _filled()
+    geometry = arch_geometry(case)
+    fill = backfill(case)
+    centroids = static_arch(case).centroid0
+    points = backfill_points(geometry, centroids, fill)
+    surface = fill_surface(geometry, fill)
+    # the region between the level surface and the extrados polyline, by the shoelace formula
+    extrados = np.array([j.extrados[:2] for j in geometry.joints[:-1]] + [geometry.joints[-1].extrados[:2]])
+    polygon = np.vstack([extrados, [extrados[-1, 0], surface], [extrados[0, 0], surface]])
+    x, y = polygon[:, 0], polygon[:, 1]
+    area = 0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+    assert -points.force[:, 1].sum() == pytest.approx(fill.unit_weight * geometry.depth * area, rel=1e-12)
+    # horizontal pressure K gamma z on each side's vertical projection: K gamma d (H^2 - h_crown^2) / 2
+    springing = surface - float(geometry.joints[0].extrados[1])
+    crown = surface - max(float(j.extrados[1]) for j in geometry.joints)  # the fill's depth
+    side = fill.lateral_coefficient * fill.unit_weight * geometry.depth * (springing**2 - crown**2) / 2.0
+    left = points.force[points.point[:, 0] < 0.0, 0]
+    right = points.force[points.point[:, 0] > 0.0, 0]
+    assert (left >= 0.0).all() and (right <= 0.0).all()  # toward the arch from both sides
+    assert left.sum() == pytest.approx(side, rel=1e-9) and -right.sum() == pytest.approx(side, rel=1e-9)
+
+
+@pytest.mark.parametrize(("shape", "centre"), [(UNIFORM, 0.5), (RISING, 2.0 / 3.0), (FALLING, 1.0 / 3.0)])
+def test_a_spread_load_keeps_its_size_and_puts_its_resultant_at_its_shapes_centroid(shape, centre):
+    geometry = arch_geometry(preset("set2"))
+    width, position = 0.2, 0.3
+    shares = _extrados_shares(geometry, position, width, shape)
+    total = sum(share for _, share, _ in shares)
+    resultant = sum(share * point[0] for _, share, point in shares) / total
+    origin = geometry.joints[0].intrados[0]
+    assert total == pytest.approx(1.0, rel=1e-12)
+    assert resultant == pytest.approx(origin + position - width / 2 + centre * width, abs=1e-12)
+    assert len(shares) == sum(1 for _, a, b in extrados_segments(geometry) if b[0] > origin + 0.2 and a[0] < origin + 0.4)
+
+
+def test_a_deeper_fill_carries_more_and_the_supports_carry_weight_fill_and_load():
+    capacities = [load_analysis(_filled(**QUARTER, fill_depth_mm=d)).multiplier for d in (0.0, 20.0, 50.0, 100.0)]
+    assert capacities == sorted(capacities) and capacities[-1] > 5.0 * capacities[0]
+    loading = StaticLoading.of(_filled())
+    loading.selfweight()
+    state = loading.accepted[0]
+    arch = loading.arch
+    pressing = -state.forces.block_force[[0, -1]].sum(axis=0)
+    assert pressing[1] == pytest.approx(arch.weight[1:-1].sum() - arch.dead[:, 1].sum(), rel=1e-9)
+    assert abs(pressing[0]) < 1e-9 * pressing[1]  # the two sides' fill pressures balance
+
+
+def test_stiff_joints_carry_the_rigid_capacity_of_a_filled_arch():
+    """kn 100 000 N/mm3, fill 50 mm, K 0.3: the static path within 2 % of the rigid multiplier (the
+    fill multiplies the quarter-span capacity by about five: 9.92 -> 49.0 N)."""
+    case = _filled(**QUARTER, **{"interface.kn_N_per_mm3": 100_000.0})
+    rigid = load_analysis(case).multiplier
+    static = static_load_path(case)
+    assert static.outcome == "collapse"
+    assert -0.02 < static.capacity / rigid - 1.0 < 0.0
+    assert math.isclose(static.rigid, rigid)
+
+
+def test_who_does_not_take_backfill_says_so_in_one_line():
+    with pytest.raises(CaseError, match="fill_depth_mm = 50: the DEM does not apply backfill yet"):
+        plan_run(_filled())
+    with pytest.raises(LimitError, match="does not take backfill yet"):
+        limit_analysis(_filled())
+    with pytest.raises(CaseError, match="fill_depth_mm must be"):
+        _filled(fill_depth_mm=-1.0)
+    plan_run(_filled(**{"numerics.engine": "static"}))  # the static engine takes it
