@@ -64,7 +64,9 @@ def test_a_spread_load_keeps_its_size_and_puts_its_resultant_at_its_shapes_centr
     origin = geometry.joints[0].intrados[0]
     assert total == pytest.approx(1.0, rel=1e-12)
     assert resultant == pytest.approx(origin + position - width / 2 + centre * width, abs=1e-12)
-    assert len(shares) == sum(1 for _, a, b in extrados_segments(geometry) if b[0] > origin + 0.2 and a[0] < origin + 0.4)
+    assert len(shares) == sum(
+        1 for _, a, b in extrados_segments(geometry) if b[0] > origin + 0.2 and a[0] < origin + 0.4
+    )
 
 
 def test_a_deeper_fill_carries_more_and_the_supports_carry_weight_fill_and_load():
