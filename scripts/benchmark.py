@@ -19,7 +19,7 @@ the sessions a campaign folder recorded.
 and prints its ratios to this invocation's DEM runs.
 --run-files N measures only the CPU time and disk of N static samples with whole and summary-only
 run folders (numerics.run_files), e.g. --run-files 40 --out reports/benchmark_run_files.json.
---static-floor measures only the static solver's CPU against its compiled floor (statics.cost), e.g.
+--static-floor measures only the static solver's CPU against its compiled floor (static.cost), e.g.
 --static-floor --out reports/benchmark_static_floor.json.
 Prints a verdict line per target and writes everything to the JSON file.
 """
@@ -54,7 +54,7 @@ TARGET_STEP_US = 20.0  # a step's aim: the distance to YADE's bare explicit step
 
 def timed_run(case, folder: Path) -> RunSummary:
     """Run a case in its own process (reusing a complete folder of the same case); its summary."""
-    from yadearch.engine.process import run_case_process
+    from yadearch.launch.process import run_case_process
     from yadearch.results.rundir import is_complete
 
     if not (is_complete(folder) and (folder / "case.toml").read_text() == case.to_toml()):
@@ -105,10 +105,10 @@ def loading_measurement(settle_mm: float, set2_steps: int, contact_model: str) -
     import os
 
     from yadearch.case.config import preset
-    from yadearch.engine.driver import DRIVER_LABEL
-    from yadearch.engine.runner import Runner
-    from yadearch.engine.scene import CALLBACK_NAME
-    from yadearch.engine.yade_env import import_yade
+    from yadearch.dem.driver import DRIVER_LABEL
+    from yadearch.dem.runner import Runner
+    from yadearch.dem.scene import CALLBACK_NAME
+    from yadearch.dem.yade_env import import_yade
     from yadearch.model import units
     from yadearch.model.movement import SupportMotion
 
@@ -171,8 +171,8 @@ def scene_rate(steps: int, contact_model: str) -> float:
     """Steps per second of a bare `O.run` of the set 2 scene with `contact_model` under self-weight
     (this process's OpenMP threads)."""
     from yadearch.case.config import preset
-    from yadearch.engine.scene import build_scene
-    from yadearch.engine.yade_env import import_yade
+    from yadearch.dem.scene import build_scene
+    from yadearch.dem.yade_env import import_yade
 
     import_yade()
     from yade import O
@@ -206,9 +206,9 @@ def step_breakdown(steps: int) -> dict:
 
 def _breakdown_child(steps: int) -> dict:
     from yadearch.case.config import preset
-    from yadearch.engine.joint_elements import JointElementContacts
-    from yadearch.engine.scene import build_scene
-    from yadearch.engine.yade_env import import_yade
+    from yadearch.dem.joint_elements import JointElementContacts
+    from yadearch.dem.scene import build_scene
+    from yadearch.dem.yade_env import import_yade
 
     import_yade()
     from yade import O
@@ -401,9 +401,9 @@ def static_measurement(runs: Path, dem_set2: RunSummary, dem_stiff: RunSummary |
 
 def static_floor_measurement() -> dict:
     """The static solver's CPU on set 2 and on an imperfect sample against its compiled floor (the same
-    evaluations and solves in a compiled loop, `statics.cost`), in this one process."""
+    evaluations and solves in a compiled loop, `static.cost`), in this one process."""
     from yadearch.case.config import preset
-    from yadearch.statics.cost import TARGET_FLOOR_RATIO, solver_cost
+    from yadearch.static.cost import TARGET_FLOOR_RATIO, solver_cost
 
     base = preset("set2").with_overrides({"engine": "static"})
     cases = {"set2": base, "imperfect": base.with_overrides(IMPERFECT_SAMPLE)}
@@ -439,7 +439,7 @@ def run_files_measurement(samples: int, runs: Path) -> dict:
 
     from yadearch.case.config import preset
     from yadearch.errors import YadearchError
-    from yadearch.statics.simulate import simulate_static
+    from yadearch.static.simulate import simulate_static
 
     base = preset("set2").with_overrides({"numerics.engine": "static", "imperfections.face_bump_sd_mm": 0.18})
     cases = [base.with_overrides({"imperfections.seed": seed}) for seed in range(samples)]
@@ -558,7 +558,7 @@ def main() -> int:
         "--static-floor",
         action="store_true",
         help="only measure the static solver's CPU against its compiled floor (set 2 and an imperfect "
-        "sample; statics.cost) and write it to --out",
+        "sample; static.cost) and write it to --out",
     )
     parser.add_argument("--breakdown-child", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--scene-rate", type=int, default=0, help=argparse.SUPPRESS)

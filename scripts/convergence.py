@@ -18,7 +18,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from yadearch.case.config import preset
-from yadearch.engine.process import run_case_process
+from yadearch.launch.process import run_case_process
 from yadearch.results.rundir import holds_case, read_summary
 from yadearch.results.summary import RunSummary
 

@@ -24,7 +24,7 @@ from yadearch.case import reference
 from yadearch.case.config import preset
 from yadearch.plotting.montecarlo import amplitude_panels_figure
 from yadearch.reporting.imperfection_amplitudes import amplitudes_markdown
-from yadearch.statics.simulate import simulate_static
+from yadearch.static.simulate import simulate_static
 from yadearch.studies.campaign import RESULTS_FILE, run_campaign
 from yadearch.studies.executors import open_pool
 from yadearch.studies.imperfection_amplitudes import (

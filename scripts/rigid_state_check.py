@@ -26,7 +26,7 @@ from pathlib import Path
 os.environ.setdefault("OMP_NUM_THREADS", "1")
 
 from yadearch.cli.options import resolve_case  # noqa: E402
-from yadearch.engine.rigid_state import check_rigid_state  # noqa: E402
+from yadearch.dem.rigid_state import check_rigid_state  # noqa: E402
 from yadearch.errors import YadearchError  # noqa: E402
 from yadearch.solve.stages import Verdict  # noqa: E402
 

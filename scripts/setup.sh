@@ -35,7 +35,7 @@ fi
 .venv/bin/python -m pip install -q "ruff==0.17.6" "mypy==2.4.1" 2>/dev/null || echo "setup: ruff or mypy unavailable, their tests will be skipped"
 .venv/bin/python - <<'PY'
 import numpy, pandas, matplotlib, click, tomli_w, dask, distributed, numba, SALib, vtkmodules  # noqa: F401  the whole stack imports
-from yadearch.engine.yade_env import import_yade
+from yadearch.dem.yade_env import import_yade
 import_yade()
 import yade.config
 from yadearch.solve.statics import compile_kernels

@@ -20,7 +20,7 @@ sys.path.insert(0, str(Path(sys.argv[0]).resolve().parents[1]))  # this checkout
 
 from yade import utils  # noqa: E402  (the launcher provides YADE)
 
-from yadearch.engine.simulate import simulate  # noqa: E402
+from yadearch.dem.simulate import simulate  # noqa: E402
 from yadearch.errors import YadearchError  # noqa: E402
 from yadearch.results.rundir import is_complete  # noqa: E402
 from yadearch.studies.campaign import batch_run  # noqa: E402

@@ -13,7 +13,7 @@ from pathlib import Path  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from yadearch.engine.yade_env import yade_problem  # noqa: E402
+from yadearch.dem.yade_env import yade_problem  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]  # the project's root, for tests in any sub-folder
 DATA = Path(__file__).resolve().with_name("data")  # reference arrays written by earlier code

@@ -1,5 +1,6 @@
 """The packages form layers and imports only go down them (docs/install.md, "Development: the
-layers"): a package never imports one above it, and only `engine/` imports YADE."""
+layers"): a package never imports one above it, only `dem/` imports YADE, and neither engine imports the
+other (`launch/` above them picks one)."""
 
 from __future__ import annotations
 
@@ -18,8 +19,9 @@ LAYERS = (
     "studies",
     "plotting",
     "analysis",
-    "engine",
-    "statics",
+    "launch",
+    "dem",
+    "static",
     "results",
     "solve",
     "case",
@@ -63,5 +65,16 @@ def test_imports_only_go_down(path):
     own = LAYERS.index(_layer(path))
     upward = {name for name in _imports(path) & set(LAYERS) if LAYERS.index(name) < own}
     assert not upward, f"{path.relative_to(REPO)} imports the layer(s) above it: {sorted(upward)}"
-    if _layer(path) != "engine":
-        assert "yade" not in _imports(path), f"{path.relative_to(REPO)} imports YADE outside engine/"
+    if _layer(path) != "dem":
+        assert "yade" not in _imports(path), f"{path.relative_to(REPO)} imports YADE outside dem/"
+
+
+ENGINES = ("dem", "static")
+
+
+@pytest.mark.parametrize(
+    "path", [p for p in SOURCES if _layer(p) in ENGINES], ids=lambda p: str(p.relative_to(PACKAGE))
+)
+def test_neither_engine_imports_the_other(path):
+    other = next(e for e in ENGINES if e != _layer(path))
+    assert other not in _imports(path), f"{path.relative_to(REPO)} imports the other engine, {other}/"

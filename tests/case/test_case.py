@@ -68,9 +68,9 @@ def test_cli_reports_a_missing_case_file(capsys, tmp_path):
 
 
 def test_cli_says_in_one_line_when_yade_is_missing(capsys, monkeypatch, tmp_path):
-    import yadearch.engine.yade_env
+    import yadearch.dem.yade_env
 
-    monkeypatch.setattr(yadearch.engine.yade_env, "YADE_PY_DIRS", (str(tmp_path / "nowhere"),))
+    monkeypatch.setattr(yadearch.dem.yade_env, "YADE_PY_DIRS", (str(tmp_path / "nowhere"),))
     code = main(["run", "--preset", "set1", "--out", str(tmp_path / "run")])
     err = capsys.readouterr().err.strip()
     assert code == 1

@@ -7,8 +7,8 @@ import pytest
 
 from yadearch.case.config import case_from_dict
 from yadearch.case.names import DERIVED_NAME_EXTRA, FILE, check_name, name_problem, output_path
-from yadearch.engine.process import REPLACED_SUFFIX
 from yadearch.errors import ArgumentTypeError, CaseError
+from yadearch.launch.process import REPLACED_SUFFIX
 from yadearch.results.lock import LOCK_SUFFIX
 from yadearch.results.rundir import STAGING_PREFIX, STAGING_SUFFIX
 

@@ -50,7 +50,7 @@ def test_the_warning_names_each_value_and_where_to_give_it():
 
 
 def test_a_static_run_of_another_arch_records_and_logs_what_it_took(tmp_path):
-    from yadearch.statics.simulate import simulate_static
+    from yadearch.static.simulate import simulate_static
 
     lines: list[str] = []
     case = ArchCase(name="semi").with_overrides(

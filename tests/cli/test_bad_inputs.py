@@ -290,7 +290,7 @@ class SimulationStarted(Exception):
 @pytest.fixture(autouse=True)
 def no_simulation(monkeypatch):
     """Every probe must be refused before a YADE process starts; one that is not fails the test."""
-    from yadearch.engine import process
+    from yadearch.launch import process
 
     def refuse(*args, **kwargs):
         raise SimulationStarted(f"a simulation was started: {args[0] if args else kwargs}")

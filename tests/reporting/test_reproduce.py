@@ -10,7 +10,7 @@ from click.testing import CliRunner
 from yadearch.api import runs as api_runs
 from yadearch.case.config import preset
 from yadearch.cli import commands as cli
-from yadearch.engine import process
+from yadearch.launch import process
 from yadearch.results.rundir import CASE_FILE, holds_case, write_run
 from yadearch.results.summary import RunSummary
 

@@ -12,8 +12,8 @@ import pytest
 
 import yadearch as ya
 from yadearch.case.config import preset
-from yadearch.engine import process
 from yadearch.errors import CaseError, RunFailedError, RunFolderError
+from yadearch.launch import process
 from yadearch.results.rundir import LOG_FILE, SUMMARY_FILE, case_differences, is_complete, read_run, write_run
 from yadearch.results.summary import RunSummary
 
@@ -66,7 +66,7 @@ def test_a_complete_folder_reads_back_with_its_schema_marker(tmp_path):
 
 
 class FakeChild:
-    """Stands in for `python -m yadearch.engine.simulate`: writes a log, and a finished run if `ok`."""
+    """Stands in for `python -m yadearch.dem.simulate`: writes a log, and a finished run if `ok`."""
 
     def __init__(self, ok: bool):
         self.ok = ok

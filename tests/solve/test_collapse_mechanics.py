@@ -13,7 +13,7 @@ from yadearch.errors import CaseError
 from yadearch.results.summary import RunSummary
 from yadearch.solve.path import PathResult, PathStep
 from yadearch.solve.stages import Outcome, Verdict
-from yadearch.statics.simulate import simulate_static
+from yadearch.static.simulate import simulate_static
 
 # a semicircle whose spreading support makes a hinge snap by 1.2-1.3 mm at 20.5 mm (docs/numerics.md)
 SPREADING_SEMICIRCLE = {

@@ -62,7 +62,7 @@ def test_stiff_joints_collapse_at_the_compliant_limit_not_at_the_rigid_one(tmp_p
     settles to the compliant march's du, short of rigid blocks, on the rigid mechanism. Measured: static
     104.95 mm, the DEM 104.71 (when this test ran it on YADE), compliant march 105.12, rigid 106.82, all
     on 3I 9E 16E."""
-    from yadearch.statics.simulate import simulate_static
+    from yadearch.static.simulate import simulate_static
 
     case = preset("set2").with_overrides({"n_voussoirs": 15, "kn_N_per_mm3": 300.0, "numerics.engine": "static"})
     compliant = limit_analysis(case, mirror=False, compliant=True).du_rigid_mm

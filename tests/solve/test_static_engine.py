@@ -29,7 +29,7 @@ from yadearch.solve.path import path_settings
 from yadearch.solve.stages import Verdict
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.statics import StaticArch, static_arch
-from yadearch.statics.simulate import simulate_static
+from yadearch.static.simulate import simulate_static
 
 IMPERFECT = {
     "imperfections.face_bump_mm": 0.05,

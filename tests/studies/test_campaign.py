@@ -17,8 +17,8 @@ from conftest import REPO
 
 from yadearch.case.config import preset
 from yadearch.cli.campaigns import sweep
-from yadearch.engine.process import exit_reason
 from yadearch.errors import CampaignError, CaseError, YadearchError
+from yadearch.launch.process import exit_reason
 from yadearch.plotting.sweep import kn_sweep_figure
 from yadearch.results.summary import RunSummary
 from yadearch.studies.campaign import (

@@ -30,7 +30,7 @@ CAMPAIGN = f"""
 import math, random, shutil, sys, time
 from pathlib import Path
 from yadearch.case.config import preset
-from yadearch.engine.process import _swap_into_place
+from yadearch.launch.process import _swap_into_place
 from yadearch.results.rundir import staging_folder, write_run
 from yadearch.results.summary import RunSummary
 from yadearch.studies.campaign import run_campaign
@@ -125,7 +125,7 @@ def test_a_resume_in_process_trusts_only_complete_folders(tmp_path):
 def test_an_interrupted_local_pool_stops_its_running_simulations_at_once():
     """Ctrl-C or SIGTERM in a campaign: the simulations it waits on get SIGTERM instead of being
     waited for (each run is then recorded as interrupted and resumed by the next campaign)."""
-    from yadearch.engine.process import _run_child
+    from yadearch.launch.process import _run_child
 
     started = time.monotonic()
     with pytest.raises(KeyboardInterrupt):

@@ -141,7 +141,7 @@ def test_short_real_calibration(local_sweep, tmp_path):
 def test_yade_reads_the_batch_table(tmp_path):
     """yade's own TableParamReader parses scripts/yade_batch_table.txt; every line maps to a run."""
     code = (
-        "import json, sys; from yadearch.engine.yade_env import import_yade; import_yade(); "
+        "import json, sys; from yadearch.dem.yade_env import import_yade; import_yade(); "
         "from yade.utils import TableParamReader; "
         "print(json.dumps(TableParamReader(sys.argv[1]).paramDict()))"
     )
@@ -224,7 +224,7 @@ def test_ctrl_c_at_a_terminal_interrupts_a_run_instead_of_failing_it(tmp_path):
     import signal
     import time
 
-    from yadearch.engine.simulate import SCRATCH_RECORD
+    from yadearch.dem.simulate import SCRATCH_RECORD
 
     out = tmp_path / "run"
     argv = [sys.executable, "-m", "yadearch.cli", "run", *COARSE, "--kn", "0.1", "--out", str(out)]

@@ -40,7 +40,7 @@ def perfect(tmp_path_factory) -> pd.DataFrame:
 @pytest.fixture(scope="module")
 def worn(tmp_path_factory) -> Path:
     """The worn campaign on the static engine (the same blocks and joints, seconds instead of minutes;
-    the engines agree within 0.07 % on this arch, tests/engine/test_static_vs_dem_yade.py)."""
+    the engines agree within 0.07 % on this arch, tests/dem/test_static_vs_dem_yade.py)."""
     out = tmp_path_factory.mktemp("worn") / "campaign"
     result = CliRunner().invoke(
         montecarlo,

@@ -77,7 +77,7 @@ def run(
     writing the run folder `out` (default runs/NAME) and its figures; returns the result read back.
     A finished run of the same case in `out` is reused (unless `rerun`); one of another case is kept
     unless `overwrite`. The run's progress lines are printed unless `quiet` (run.log keeps them)."""
-    from yadearch.engine.process import run_case_process
+    from yadearch.launch.process import run_case_process
 
     check_arguments(timeout_s=timeout_s, figures=figures, rerun=rerun, overwrite=overwrite, quiet=quiet)
     case = with_engine(case, engine)
@@ -113,7 +113,7 @@ def reproduce(
     Returns both results and the report's path."""
     from concurrent.futures import ThreadPoolExecutor
 
-    from yadearch.engine.process import run_case_process
+    from yadearch.launch.process import run_case_process
     from yadearch.results.rundir import holds_case
 
     check_arguments(jobs=jobs, rerun=rerun)

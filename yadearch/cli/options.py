@@ -14,7 +14,7 @@ from yadearch.case.names import FILE, FOLDER, output_path
 from yadearch.case.support import movement_overrides
 from yadearch.errors import CaseError
 from yadearch.results.summary import STATIC
-from yadearch.statics.records import DEM_ONLY_NUMERICS
+from yadearch.static.records import DEM_ONLY_NUMERICS
 from yadearch.studies.grid import parse_scalar
 
 PRESETS = ("set1", "set2")

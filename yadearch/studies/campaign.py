@@ -22,8 +22,8 @@ from tqdm import tqdm
 from yadearch.atomic import remove_stale_temporaries, write_atomically, write_csv_atomically
 from yadearch.case.config import ArchCase, preset
 from yadearch.case.plan import plan_run
-from yadearch.engine.process import STATIC_ENGINE, check_yade_installed, run_case_process
 from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, YadearchError
+from yadearch.launch.process import STATIC_ENGINE, check_yade_installed, run_case_process
 from yadearch.results.lock import folder_lock
 from yadearch.results.rundir import case_differences, is_complete, is_current
 from yadearch.studies.campaign_table import (

@@ -53,7 +53,7 @@ def pair_from_folder(group: str, folder: Path) -> Pair:
 def _run_static(case: ArchCase, folder: Path) -> RunSummary | str:
     """Solve `case` statically into `folder` (reused when it holds this case); its summary, or why
     it failed."""
-    from yadearch.statics.simulate import simulate_static
+    from yadearch.static.simulate import simulate_static
 
     if holds_case(folder, case):
         return read_summary(folder)

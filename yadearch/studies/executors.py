@@ -9,8 +9,8 @@ from concurrent.futures import Executor, ThreadPoolExecutor
 from contextlib import contextmanager
 from dataclasses import dataclass
 
-from yadearch.engine.process import stop_children
 from yadearch.errors import YadearchError
+from yadearch.launch.process import stop_children
 
 
 @dataclass

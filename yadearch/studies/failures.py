@@ -8,7 +8,7 @@ from pathlib import Path
 
 from yadearch.atomic import write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.engine.process import STATIC_ENGINE
+from yadearch.launch.process import STATIC_ENGINE
 from yadearch.results.summary import STATIC_REVISION
 
 FAILED_FILE = "failed.json"

@@ -20,7 +20,7 @@ import pandas as pd
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.results.summary import STATIC
-from yadearch.statics.records import DEM_ONLY_NUMERICS
+from yadearch.static.records import DEM_ONLY_NUMERICS
 from yadearch.studies.campaign import RESULTS_FILE, run_campaign
 from yadearch.studies.executors import Pool
 

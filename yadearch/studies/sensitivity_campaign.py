@@ -14,7 +14,7 @@ from yadearch.analysis.samples import collapse_displacement
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.case.numerics_section import SUMMARY_RUN_FILES
-from yadearch.engine.process import STATIC_ENGINE
+from yadearch.launch.process import STATIC_ENGINE
 from yadearch.markdown import markdown_table
 from yadearch.plotting.sensitivity import convergence_figure, indices_figure, tornado_figure
 from yadearch.studies.campaign import run_campaign

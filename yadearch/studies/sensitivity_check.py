@@ -11,8 +11,8 @@ from typing import Any
 import pandas as pd
 
 from yadearch.case.config import ArchCase
-from yadearch.engine.process import STATIC_ENGINE
 from yadearch.errors import CampaignError
+from yadearch.launch.process import STATIC_ENGINE
 from yadearch.markdown import markdown_table
 from yadearch.studies.campaign import run_campaign
 from yadearch.studies.executors import Pool

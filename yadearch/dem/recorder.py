@@ -8,8 +8,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from yadearch.case.config import NumericsConfig
-from yadearch.engine.driver import SupportDriver
-from yadearch.engine.scene import ArchScene, body_states
+from yadearch.dem.driver import SupportDriver
+from yadearch.dem.scene import ArchScene, body_states
 from yadearch.errors import RunFailedError
 from yadearch.model import units
 from yadearch.model.hinges import Hinge

@@ -14,9 +14,9 @@ from typing import Any
 
 from yadearch.atomic import write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.engine.loading import EquilibriumPath
-from yadearch.engine.runner import Runner
-from yadearch.engine.scene_state import place_voussoirs
+from yadearch.dem.loading import EquilibriumPath
+from yadearch.dem.runner import Runner
+from yadearch.dem.scene_state import place_voussoirs
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.results.rundir import hinge_list, write_run

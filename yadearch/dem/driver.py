@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 
-from yadearch.engine.scene import CALLBACK_NAME, ArchScene
+from yadearch.dem.scene import CALLBACK_NAME, ArchScene
 from yadearch.model.movement import Motion, Movement
 
 ARRIVED_M = 1e-12  # the support is on target within this distance (m)

@@ -8,7 +8,7 @@ Python engine), the driver's callbacks inside the engine loop (the support drive
 
 from __future__ import annotations
 
-from yadearch.engine.stepping import GATE_LABEL
+from yadearch.dem.stepping import GATE_LABEL
 
 PYTHON_ENGINES = ("PyRunner",)
 

@@ -1,10 +1,10 @@
-"""The solver's cost against its floor (statics.cost): the floor loop is cheaper than the solver and
+"""The solver's cost against its floor (static.cost): the floor loop is cheaper than the solver and
 the solver is within a small multiple of it on a small arch."""
 
 from __future__ import annotations
 
 from yadearch.case.config import preset
-from yadearch.statics.cost import solver_cost
+from yadearch.static.cost import solver_cost
 
 
 def test_the_solver_costs_a_small_multiple_of_its_compiled_floor():

@@ -10,7 +10,7 @@ import pytest
 from conftest import HAS_YADE, needs_yade, stacked_pairs
 
 from yadearch.case.mechanics import ContactStiffness
-from yadearch.engine.yade_env import import_yade
+from yadearch.dem.yade_env import import_yade
 
 pytestmark = [needs_yade, pytest.mark.yade]
 if HAS_YADE:
@@ -31,7 +31,7 @@ def _scene(model, geometry, fixed, gravity=(0.0, 0.0, 0.0), damping=0.0, dt=1e-6
     """A scene of `geometry` whose top blocks (odd indices) are pushed `overlap` into their bases."""
     from yade import O
 
-    from yadearch.engine.scene import build_block_scene
+    from yadearch.dem.scene import build_block_scene
 
     scene = build_block_scene(
         geometry,
@@ -148,7 +148,7 @@ def test_joint_elements_and_cgal_collapse_a_coarse_arch_alike():
     the last equilibrium (measured: 105.57 and 105.88 mm). kn 0.3, not lower: this soft coarse arch
     snaps through three-hinge states at kn 0.15-0.2 (docs/validation.md)."""
     from yadearch.case.config import preset
-    from yadearch.engine.runner import Runner
+    from yadearch.dem.runner import Runner
     from yadearch.model.hinges import same_hinges
 
     coarse = {"n_voussoirs": 9, "kn_N_per_mm3": 0.3, "support_rate_mm_per_s": 30.0, "progress_every_s": 1e9}

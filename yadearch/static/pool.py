@@ -1,4 +1,4 @@
-"""Where static runs execute: long-lived worker processes (`python -m yadearch.statics.pool`), up to one
+"""Where static runs execute: long-lived worker processes (`python -m yadearch.static.pool`), up to one
 per core, each importing numpy, numba's cached kernels and yadearch once and then solving one case
 after another. A static run lasts about a second; a fresh interpreter per run would cost as much
 again (a DEM run keeps its own process: YADE has one global scene per interpreter). Workers are plain
@@ -32,7 +32,7 @@ def _worker() -> subprocess.Popen:
         pass
     env = dict(os.environ, OMP_NUM_THREADS="1")  # one BLAS thread a worker: the cores go to the workers
     worker = subprocess.Popen(
-        [sys.executable, "-m", "yadearch.statics.pool"],
+        [sys.executable, "-m", "yadearch.static.pool"],
         stdin=subprocess.PIPE,
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
@@ -58,7 +58,7 @@ def _answer(worker: subprocess.Popen, timeout_s: float | None) -> str:
 
 def run_static(case_file: Path, staging: Path, timeout_s: float | None) -> tuple[int, str]:
     """Solve the case file into the staging folder in a worker; the exit code and standard error of
-    `yadearch.statics.simulate` (subprocess.TimeoutExpired after `timeout_s`, the worker stopped)."""
+    `yadearch.static.simulate` (subprocess.TimeoutExpired after `timeout_s`, the worker stopped)."""
     worker = _worker()
     try:
         assert worker.stdin is not None
@@ -103,7 +103,7 @@ def stop_workers() -> None:
 
 def serve() -> None:
     """The worker's loop: one JSON line [case_file, staging] in, one [exit code, stderr] out."""
-    from yadearch.statics.simulate import main
+    from yadearch.static.simulate import main
 
     for line in sys.stdin:
         case_file, staging = json.loads(line)

@@ -20,7 +20,7 @@ OVERLAP_TOLERANCE = 1.5  # no joint closes more than this times the perfect arch
 
 def _settled(overrides: dict) -> tuple[dict, dict, np.ndarray]:
     """Self-weight info, joint snapshot and each joint's largest overlap (mm) of a coarse set 1 arch."""
-    from yadearch.engine.runner import Runner
+    from yadearch.dem.runner import Runner
 
     runner = Runner(preset("set1").with_overrides({**COARSE, **overrides}), log=lambda line: None)
     try:

@@ -14,8 +14,8 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     import numpy as np
 
-    from yadearch.engine.driver import SupportDriver
-    from yadearch.engine.scene import ArchScene, ContactModel
+    from yadearch.dem.driver import SupportDriver
+    from yadearch.dem.scene import ArchScene, ContactModel
 
 
 def capture(contacts: ContactModel, driver: SupportDriver) -> dict:

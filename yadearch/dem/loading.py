@@ -25,7 +25,7 @@ SNAP_THICKNESS_FRACTION = 0.01  # a relaxation moving a block this x the ring's 
 
 
 class PathRecorder(Protocol):
-    """What the path records through (engine.recorder.Recorder)."""
+    """What the path records through (dem.recorder.Recorder)."""
 
     def record_equilibrium(self) -> tuple[tuple[int, int, int], list[Hinge]]: ...
 
@@ -35,7 +35,7 @@ class PathRecorder(Protocol):
 
 
 class LiveArch(Protocol):
-    """What the path needs of a live DEM scene (engine.runner.Runner): move the support, hold it,
+    """What the path needs of a live DEM scene (dem.runner.Runner): move the support, hold it,
     go back to a kept state, record; `stage` labels the records."""
 
     stage: Stage

@@ -21,7 +21,7 @@ QUIET = {"progress_every_s": 1e9, "numerics.engine": "dem"}
 
 
 def test_the_dem_does_not_accept_a_creeping_self_weight_state():
-    from yadearch.engine.runner import Runner
+    from yadearch.dem.runner import Runner
 
     runner = Runner(load_case(CASE).with_overrides(QUIET), log=lambda line: None)
     try:

@@ -1,4 +1,4 @@
-"""One simulation in this process: `python -m yadearch.engine.simulate CASE.toml OUT_DIR`.
+"""One simulation in this process: `python -m yadearch.dem.simulate CASE.toml OUT_DIR`.
 
 Each run gets its own process (YADE keeps one global scene per interpreter; a crash must not take a
 campaign down). Exit code 0: run folder complete; 1: the run failed (reason in run.log and stderr).
@@ -30,9 +30,9 @@ INTERRUPTED_EXIT = 130  # the shell's code for a run stopped by a signal, not by
 
 def simulate(case: ArchCase, out: Path) -> RunSummary:
     """Run `case` to collapse and write its run folder to `out`; returns the summary."""
-    from yadearch.engine.loading import criterion_text
-    from yadearch.engine.runner import Runner
-    from yadearch.engine.yade_env import import_yade, scratch_folder
+    from yadearch.dem.loading import criterion_text
+    from yadearch.dem.runner import Runner
+    from yadearch.dem.yade_env import import_yade, scratch_folder
 
     out.mkdir(parents=True, exist_ok=True)
     log_file = (out / LOG_FILE).open("w")
@@ -118,7 +118,7 @@ def _interrupt(signum: int, frame: object) -> None:
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 2:
-        print("usage: python -m yadearch.engine.simulate CASE.toml OUT_DIR", file=sys.stderr)
+        print("usage: python -m yadearch.dem.simulate CASE.toml OUT_DIR", file=sys.stderr)
         return 2
     signal.signal(signal.SIGTERM, _interrupt)
     die_with_parent()
@@ -144,7 +144,7 @@ def _exit_now(code: int) -> None:
     sys.stdout.flush()
     sys.stderr.flush()
     if "yade" in sys.modules:
-        from yadearch.engine.yade_env import scratch_folder
+        from yadearch.dem.yade_env import scratch_folder
 
         shutil.rmtree(scratch_folder(), ignore_errors=True)
     os._exit(code)

@@ -10,7 +10,7 @@ from conftest import HAS_YADE, needs_yade
 
 from yadearch.case.config import preset
 from yadearch.case.support import movement_overrides
-from yadearch.engine.yade_env import import_yade
+from yadearch.dem.yade_env import import_yade
 from yadearch.model import units
 from yadearch.model.joints import rotate
 
@@ -39,7 +39,7 @@ def support_placement(state, pos0: np.ndarray, ori0) -> tuple[float, np.ndarray]
 def test_moving_supports_follow_the_path_the_case_describes(movement):
     from yade import O
 
-    from yadearch.engine.runner import Runner
+    from yadearch.dem.runner import Runner
 
     runner = Runner(preset("set1").with_overrides({**COARSE, **movement_overrides(movement)}), log=lambda line: None)
     try:
@@ -70,7 +70,7 @@ def test_a_support_on_a_prescribed_path_turns_its_corners_where_the_table_puts_t
     where the table says, and the driver reads the path length back from its placement."""
     from yade import O
 
-    from yadearch.engine.runner import Runner
+    from yadearch.dem.runner import Runner
 
     rows = [[0.0, -1.0, 0.0], [1.5, -1.0, 3.0]]
     case = preset("set1").with_overrides({**COARSE, "loading.support_motion": "path", "loading.path_mm_mrad": rows})
@@ -99,8 +99,8 @@ def test_the_rigid_analysis_state_is_an_equilibrium_of_stiff_joints(mirrored):
     """Put where the rigid analysis has it 6 mm down and out at 45 deg, on either branch of the
     keystone's tie, an arch of stiff joints stays there: released from rest it moves by far less
     than a millimetre and turns on the rigid hinges (docs/validation.md)."""
-    from yadearch.engine.runner import Runner
-    from yadearch.engine.scene_state import place_voussoirs
+    from yadearch.dem.runner import Runner
+    from yadearch.dem.scene_state import place_voussoirs
     from yadearch.solve.pose import rigid_pose
     from yadearch.solve.stages import Verdict
 

@@ -1,4 +1,4 @@
-"""One run with the static engine: `python -m yadearch.statics.simulate CASE.toml OUT_DIR`, the run
+"""One run with the static engine: `python -m yadearch.static.simulate CASE.toml OUT_DIR`, the run
 folder written exactly as a DEM run writes it (no YADE). Exit code 0: complete; 1: failed."""
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ from yadearch.solve.path import PathStep
 from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.static_state import StaticEngineError
-from yadearch.statics.records import DEM_ONLY_NUMERICS, StaticRecords
+from yadearch.static.records import DEM_ONLY_NUMERICS, StaticRecords
 
 INTERRUPTED_EXIT = 130
 
@@ -181,7 +181,7 @@ def _increments_mm(loading: StaticLoading) -> list[float]:
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 2:
-        print("usage: python -m yadearch.statics.simulate CASE.toml OUT_DIR", file=sys.stderr)
+        print("usage: python -m yadearch.static.simulate CASE.toml OUT_DIR", file=sys.stderr)
         return 2
     out = Path(argv[1])
     out.mkdir(parents=True, exist_ok=True)

@@ -7,7 +7,7 @@ import pytest
 from conftest import HAS_YADE, needs_yade
 
 from yadearch.case.config import preset
-from yadearch.engine.yade_env import import_yade
+from yadearch.dem.yade_env import import_yade
 from yadearch.model import units
 
 pytestmark = [needs_yade, pytest.mark.yade]
@@ -22,7 +22,7 @@ COARSE = {"n_voussoirs": 15, "kn_N_per_mm3": 0.25, "equilibrium_tolerance": 1e-4
 @pytest.fixture(scope="module", params=["joint", "cgal"])
 def settled(request):
     """A 15-voussoir version of the paper's arch after the self-weight stage."""
-    from yadearch.engine.runner import Runner
+    from yadearch.dem.runner import Runner
 
     case = preset("set1").with_overrides({**COARSE, "contact_model": request.param})
     runner = Runner(case, log=lambda line: None)
@@ -57,7 +57,7 @@ def test_settlement_opens_three_hinges_where_the_mechanism_puts_them(settled):
 def test_collider_pairs_only_blocks_that_share_a_joint():
     from yade import O
 
-    from yadearch.engine.scene import build_scene
+    from yadearch.dem.scene import build_scene
 
     scene = build_scene(preset("set1").with_overrides({**COARSE, "contact_model": "cgal"}))
     O.run(200, True)  # the arch settles onto its joints

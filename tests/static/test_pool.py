@@ -6,7 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from yadearch.case.config import preset
-from yadearch.statics.pool import run_static, stop_workers
+from yadearch.static.pool import run_static, stop_workers
 
 
 def test_a_folder_that_cannot_be_written_is_a_failure_with_its_reason(tmp_path: Path) -> None:

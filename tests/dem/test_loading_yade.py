@@ -20,7 +20,7 @@ DU_TOLERANCE = 0.01  # du may move by 1 % at most when only the numerics change
 
 
 def run(overrides: dict) -> tuple[RunSummary, pd.DataFrame]:
-    from yadearch.engine.runner import Runner
+    from yadearch.dem.runner import Runner
 
     runner = Runner(preset("set1").with_overrides({**QUIET, **overrides}), log=lambda line: None)
     summary = runner.run()

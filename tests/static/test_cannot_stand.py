@@ -9,7 +9,7 @@ import pytest
 
 from yadearch.case.config import preset
 from yadearch.errors import YadearchError
-from yadearch.statics.simulate import simulate_static
+from yadearch.static.simulate import simulate_static
 
 SEMICIRCLE = {"embrace_deg": 180.0, "engine": "static", "run_files": "summary"}
 

@@ -17,10 +17,10 @@ import __main__
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import ArchImperfections, arch_imperfections, check_contact_model
 from yadearch.case.mechanics import ContactStiffness, arch_geometry, contact_stiffness, critical_timestep
-from yadearch.engine.cgal_contacts import CgalContacts
-from yadearch.engine.joint_elements import JointElementContacts
-from yadearch.engine.stepping import close_active
-from yadearch.engine.yade_env import import_yade
+from yadearch.dem.cgal_contacts import CgalContacts
+from yadearch.dem.joint_elements import JointElementContacts
+from yadearch.dem.stepping import close_active
+from yadearch.dem.yade_env import import_yade
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.joints import z_rotation

@@ -1,5 +1,5 @@
 """Launch one simulation in its own Python process and report its outcome: YADE's, or the static
-engine's (`yadearch.statics`) for a case whose numerics.engine is 'static'."""
+engine's (`yadearch.static`) for a case whose numerics.engine is 'static'."""
 
 from __future__ import annotations
 
@@ -15,12 +15,12 @@ from pathlib import Path
 
 from yadearch.case.config import ArchCase
 from yadearch.case.plan import plan_run
-from yadearch.engine.simulate import SCRATCH_RECORD
-from yadearch.engine.yade_env import yade_problem
+from yadearch.dem.simulate import SCRATCH_RECORD
+from yadearch.dem.yade_env import yade_problem
 from yadearch.errors import RunFailedError, RunInterruptedError, YadearchError, YadeMissingError
 from yadearch.results.lock import LOCK_SUFFIX, folder_lock
 from yadearch.results.rundir import CASE_FILE, LOG_FILE, STAGING_PREFIX, STAGING_SUFFIX, is_complete, staging_folder
-from yadearch.statics.pool import run_static, stop_workers
+from yadearch.static.pool import run_static, stop_workers
 
 STATIC_ENGINE = "static"  # numerics.engine of a run solved by the static engine (no YADE)
 REPLACED_SUFFIX = ".replaced"  # the previous folder NAME, for the moment of the swap
@@ -126,7 +126,7 @@ def _run_locked(
     case_file = staging / CASE_FILE
     case_file.write_text(case.to_toml())
     env = dict(os.environ, OMP_NUM_THREADS=str(case.numerics.threads))
-    cmd = [sys.executable, "-m", "yadearch.engine.simulate", str(case_file), str(staging)]
+    cmd = [sys.executable, "-m", "yadearch.dem.simulate", str(case_file), str(staging)]
     try:
         try:
             if static:
@@ -158,9 +158,9 @@ def _run_locked(
 
 
 def _run_static_here(case_file: Path, staging: Path, quiet: bool) -> tuple[int, str]:
-    """`yadearch.statics.simulate` on the case file in this process: its exit code and standard error
+    """`yadearch.static.simulate` on the case file in this process: its exit code and standard error
     (its progress printed unless `quiet`; run.log keeps it either way)."""
-    from yadearch.statics.simulate import main
+    from yadearch.static.simulate import main
 
     errors = io.StringIO()
     shown = contextlib.nullcontext() if not quiet else contextlib.redirect_stdout(io.StringIO())

@@ -18,13 +18,13 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import runaway_length, standing_parameters
 from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
-from yadearch.engine.driver import SupportDriver
-from yadearch.engine.loading import EquilibriumPath, settle_selfweight
-from yadearch.engine.recorder import Recorder, Records
-from yadearch.engine.scene import CALLBACK_NAME, body_states, build_scene, stop_voussoirs
-from yadearch.engine.scene_state import capture, put_back
-from yadearch.engine.stepping import SteppingGate
-from yadearch.engine.timing import EngineClock
+from yadearch.dem.driver import SupportDriver
+from yadearch.dem.loading import EquilibriumPath, settle_selfweight
+from yadearch.dem.recorder import Recorder, Records
+from yadearch.dem.scene import CALLBACK_NAME, body_states, build_scene, stop_voussoirs
+from yadearch.dem.scene_state import capture, put_back
+from yadearch.dem.stepping import SteppingGate
+from yadearch.dem.timing import EngineClock
 from yadearch.errors import CANNOT_STAND, RunFailedError
 from yadearch.model import units
 from yadearch.results.summary import HingeRef, RunSummary, collapse_fields
@@ -87,7 +87,7 @@ class Runner:
         self.driver.bind()
 
     def snapshot(self) -> dict:
-        """Snapshot, in memory, of everything that evolves (`engine.scene_state`)."""
+        """Snapshot, in memory, of everything that evolves (`dem.scene_state`)."""
         return capture(self.scene.contacts, self.driver)
 
     def restore(self, snapshot: dict) -> None:

@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from yadearch.case.mechanics import ContactStiffness
-from yadearch.engine.shear import PerContactShear
+from yadearch.dem.shear import PerContactShear
 from yadearch.model.geometry import ArchGeometry
 
 # Joint j sets bit j % JOINT_MASK_BITS of the collision masks of its two blocks, so the collider only

@@ -1,1 +1,0 @@
-"""The only layer that imports YADE: the scene, the contact models, stepping and the loading protocol."""
