@@ -18,8 +18,8 @@ from yadearch.case.config import preset
 from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, geometries, static_rows
 from yadearch.studies.atlas.report import write_atlas
 from yadearch.studies.atlas.rigid import compliant_table, rigid_table
-from yadearch.studies.campaign import run_campaign
-from yadearch.studies.executors import open_pool
+from yadearch.studies.campaigns.executors import open_pool
+from yadearch.studies.campaigns.runner import run_campaign
 
 RUN_TIMEOUT_S = {"static": 600.0, "dem": 3600.0}
 

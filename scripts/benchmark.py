@@ -85,7 +85,7 @@ def sweep_status(folder: Path) -> dict:
     """Done and failed runs of a campaign and the sum of its runs' wall times (results.csv)."""
     import pandas as pd
 
-    from yadearch.studies.campaign import RESULTS_FILE
+    from yadearch.studies.campaigns.runner import RESULTS_FILE
 
     table = pd.read_csv(folder / RESULTS_FILE)
     return {
@@ -572,7 +572,7 @@ def main() -> int:
         return 0
 
     from yadearch.case.config import preset
-    from yadearch.studies.sessions import campaign_core_s, campaign_wall_s
+    from yadearch.studies.campaigns.sessions import campaign_core_s, campaign_wall_s
 
     runs = Path(args.runs)
     if args.static_floor:

@@ -19,8 +19,8 @@ from pathlib import Path
 
 import pandas as pd
 
-from yadearch.studies.campaign import RESULTS_FILE
-from yadearch.studies.paper_capacity import RUNS, paper_capacity_map, paper_rigid_limits, run_paper_directions
+from yadearch.studies.campaigns.runner import RESULTS_FILE
+from yadearch.studies.capacity.paper import RUNS, paper_capacity_map, paper_rigid_limits, run_paper_directions
 
 
 def main() -> int:

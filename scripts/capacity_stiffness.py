@@ -20,11 +20,11 @@ from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import preset
 from yadearch.plotting.capacity import stiffness_figure
-from yadearch.studies.capacity import directions
-from yadearch.studies.capacity_explained import stiffness_markdown
-from yadearch.studies.capacity_map import RIGID_CACHE, rigid_limits, run_capacity
-from yadearch.studies.executors import open_pool
-from yadearch.studies.sessions import campaign_wall_s
+from yadearch.studies.campaigns.executors import open_pool
+from yadearch.studies.campaigns.sessions import campaign_wall_s
+from yadearch.studies.capacity.campaign import RIGID_CACHE, rigid_limits, run_capacity
+from yadearch.studies.capacity.directions import directions
+from yadearch.studies.capacity.explained import stiffness_markdown
 
 STEP_DEG = 5.0
 KNS = (0.25, 5.2, 100.0)

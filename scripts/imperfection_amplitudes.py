@@ -25,9 +25,10 @@ from yadearch.case.config import preset
 from yadearch.plotting.montecarlo import amplitude_panels_figure
 from yadearch.reporting.imperfection_amplitudes import amplitudes_markdown
 from yadearch.static.simulate import simulate_static
-from yadearch.studies.campaign import RESULTS_FILE, run_campaign
-from yadearch.studies.executors import open_pool
-from yadearch.studies.imperfection_amplitudes import (
+from yadearch.studies.campaigns.executors import open_pool
+from yadearch.studies.campaigns.runner import RESULTS_FILE, run_campaign
+from yadearch.studies.campaigns.sessions import campaign_wall_s
+from yadearch.studies.imperfections.amplitudes import (
     KINDS,
     LEVEL,
     Kind,
@@ -38,7 +39,6 @@ from yadearch.studies.imperfection_amplitudes import (
     nearest_level,
     with_levels,
 )
-from yadearch.studies.sessions import campaign_wall_s
 
 BASE_PRESET = "set2"  # the accurate (CNC) voussoirs' kn: the defects alone must bring du down
 SAMPLES = 200  # seeds a level, every kind: the median's 95 % interval within a few percent

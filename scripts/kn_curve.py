@@ -19,10 +19,10 @@ from yadearch.case.config import preset
 from yadearch.plotting.kn_curve import kn_curve_figure
 from yadearch.reporting.kn_curve import kn_curve_markdown
 from yadearch.solve.limit import limit_analysis
-from yadearch.studies.campaign import run_campaign
-from yadearch.studies.executors import open_pool
+from yadearch.studies.campaigns.executors import open_pool
+from yadearch.studies.campaigns.runner import run_campaign
+from yadearch.studies.campaigns.sessions import campaign_wall_s
 from yadearch.studies.kn_curve import KN, bisect_jumps, grid_values, hinge_moves, jumps_table
-from yadearch.studies.sessions import campaign_wall_s
 
 DEM_SWEEP = Path("reports/kn-sweep")
 COMPLIANT_KN = (16.3, 30.0, 100.0, 300.0, 1000.0, 3000.0, 10000.0)  # the march is valid from kn ~16 up

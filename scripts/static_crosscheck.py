@@ -20,7 +20,7 @@ from yadearch.case import reference
 from yadearch.case.config import preset
 from yadearch.results.summary import HingeRef, RunSummary
 from yadearch.solve.limit import limit_analysis
-from yadearch.studies.capacity import DIRECTION_PARAMETER
+from yadearch.studies.capacity.directions import DIRECTION_PARAMETER
 from yadearch.studies.crosscheck import Pair, crosscheck_markdown, dem_folders, pair_from_folder, run_pairs
 
 REPORTS = Path("reports")

@@ -23,8 +23,8 @@ from yade import utils  # noqa: E402  (the launcher provides YADE)
 from yadearch.dem.simulate import simulate  # noqa: E402
 from yadearch.errors import YadearchError  # noqa: E402
 from yadearch.results.rundir import is_complete  # noqa: E402
-from yadearch.studies.campaign import batch_run  # noqa: E402
-from yadearch.studies.failures import record_failure  # noqa: E402
+from yadearch.studies.campaigns.failures import record_failure  # noqa: E402
+from yadearch.studies.campaigns.runner import batch_run  # noqa: E402
 
 utils.readParamsFromTable(noTableOk=True, unknownOk=True, preset="set2", out="runs/yade-batch")
 from yade.params import table  # noqa: E402  (written by readParamsFromTable)

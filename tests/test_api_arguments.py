@@ -107,7 +107,7 @@ def _calls():
 def test_every_api_function_refuses_a_bad_argument_naming_it_before_anything_starts(
     function, name, value, tmp_path, monkeypatch
 ):
-    from yadearch.studies import executors
+    from yadearch.studies.campaigns import executors
 
     def no_pool(*args, **kwargs):
         raise AssertionError("a pool was opened")

@@ -56,8 +56,8 @@ def test_the_lock_goes_with_its_holder_however_it_ends(holder, tmp_path):
 
 def test_a_campaign_folder_is_locked_too(tmp_path):
     from yadearch.case.config import preset
-    from yadearch.studies.campaign import run_campaign
-    from yadearch.studies.executors import local_pool
+    from yadearch.studies.campaigns.executors import local_pool
+    from yadearch.studies.campaigns.runner import run_campaign
 
     started = time.time()
     with folder_lock(tmp_path / "campaign", "campaign"):

@@ -129,8 +129,8 @@ def test_what_a_folder_keeps_is_not_part_of_its_case(tmp_path):
 
 def test_an_interrupted_run_is_not_a_failure_and_stays_pending(tmp_path, monkeypatch, no_yade_check):
     from yadearch.errors import RunInterruptedError
-    from yadearch.studies.campaign import execute
-    from yadearch.studies.failures import FAILED_FILE
+    from yadearch.studies.campaigns.failures import FAILED_FILE
+    from yadearch.studies.campaigns.runner import execute
 
     def interrupted_child(cmd, env, timeout_s, quiet):
         (Path(cmd[-1]) / LOG_FILE).write_text("INTERRUPTED: SIGTERM\n")
@@ -172,7 +172,7 @@ def test_a_static_run_of_another_engine_revision_is_made_again_not_reused(tmp_pa
     """The static engine's results change with its revision: a run or a failure it recorded under
     another revision is made again by `run` and by campaigns; a current one is reused."""
     from yadearch.results.rundir import is_current, outdated
-    from yadearch.studies.failures import FAILED_FILE, failure_stands, record_failure
+    from yadearch.studies.campaigns.failures import FAILED_FILE, failure_stands, record_failure
 
     case = preset("set1").replace(n_voussoirs=9, kn_N_per_mm3=1.0)
     first = ya.run(case, engine="static", out=tmp_path / "run", quiet=True, figures=False)
@@ -201,8 +201,8 @@ def test_a_results_row_never_shows_an_outdated_run_as_today_s(tmp_path):
     """A static run of another engine revision whose remake failed keeps its old folder (a failed
     run never destroys a finished one): its results row is the failure, not the old du; without a
     remake it is pending."""
-    from yadearch.studies.campaign_table import RunSpec, run_row
-    from yadearch.studies.failures import record_failure
+    from yadearch.studies.campaigns.failures import record_failure
+    from yadearch.studies.campaigns.table import RunSpec, run_row
 
     case = preset("set1").replace(n_voussoirs=9, kn_N_per_mm3=1.0, engine="static")
     ya.run(case, out=tmp_path / "run", quiet=True, figures=False)

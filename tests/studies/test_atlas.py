@@ -22,7 +22,7 @@ from yadearch.studies.atlas.grid import (
 from yadearch.studies.atlas.report import atlas_markdown, write_atlas
 from yadearch.studies.atlas.rigid import KEY, rigid_row
 from yadearch.studies.atlas.table import atlas_table, gap_pct, nearest_branch_mm, rising
-from yadearch.studies.grid import RUN_COLUMN
+from yadearch.studies.campaigns.grid import RUN_COLUMN
 
 
 def test_the_grid_is_five_shapes_six_movements_three_thicknesses_four_stiffnesses():

@@ -21,7 +21,10 @@ from yadearch.errors import CampaignError, CaseError, YadearchError
 from yadearch.launch.process import exit_reason
 from yadearch.plotting.sweep import kn_sweep_figure
 from yadearch.results.summary import RunSummary
-from yadearch.studies.campaign import (
+from yadearch.studies.campaigns.executors import local_pool
+from yadearch.studies.campaigns.failures import record_failure
+from yadearch.studies.campaigns.grid import RUN_COLUMN, grid, parse_values, read_table, run_tag
+from yadearch.studies.campaigns.runner import (
     FAILED_FILE,
     RESULTS_COST_SHARE,
     RESULTS_EVERY_S,
@@ -31,11 +34,8 @@ from yadearch.studies.campaign import (
     results_interval,
     run_campaign,
 )
-from yadearch.studies.campaign_table import label_hinges
-from yadearch.studies.executors import local_pool
-from yadearch.studies.failures import record_failure
-from yadearch.studies.grid import RUN_COLUMN, grid, parse_values, read_table, run_tag
-from yadearch.studies.sessions import SESSIONS_FILE, campaign_wall_s
+from yadearch.studies.campaigns.sessions import SESSIONS_FILE, campaign_wall_s
+from yadearch.studies.campaigns.table import label_hinges
 
 BASE = preset("set1").with_overrides({"n_voussoirs": 15})
 HINGES = [
@@ -218,7 +218,7 @@ def test_a_scalar_where_a_list_of_values_is_expected_is_a_type_error():
 def test_a_resumed_campaign_plans_only_the_runs_it_has_to_make(tmp_path, monkeypatch):
     """A finished run of the same case was checked when it ran: planning a grown campaign (the
     sensitivity study's 57 000 runs, half of them done) checks only the new and the failed ones."""
-    from yadearch.studies import campaign as campaign_module
+    from yadearch.studies.campaigns import runner as campaign_module
 
     rows = grid({"kn_N_per_mm3": [0.1, 1.0, 10.0]})
     campaign(tmp_path, FakeRuns(fail=(0.1,)), rows)
@@ -352,7 +352,7 @@ def test_exit_reason_names_the_signal_that_ended_a_run():
 
 
 def test_a_cluster_without_dask_installed_is_a_one_line_error(monkeypatch):
-    from yadearch.studies.executors import open_pool
+    from yadearch.studies.campaigns.executors import open_pool
 
     monkeypatch.setitem(sys.modules, "distributed", None)  # as if the 'cluster' extra were not installed
     with pytest.raises(YadearchError, match="needs dask.distributed: install the 'cluster' extra"):

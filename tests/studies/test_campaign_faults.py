@@ -19,9 +19,9 @@ import pytest
 from conftest import REPO
 
 from yadearch.case.config import preset
-from yadearch.studies.campaign import RESULTS_FILE, run_campaign
-from yadearch.studies.executors import local_pool
-from yadearch.studies.grid import grid
+from yadearch.studies.campaigns.executors import local_pool
+from yadearch.studies.campaigns.grid import grid
+from yadearch.studies.campaigns.runner import RESULTS_FILE, run_campaign
 
 KN_VALUES = [0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 2.0, 3.0, 5.0, 7.0, 10.0, 20.0]
 KILLS = 6
@@ -33,9 +33,9 @@ from yadearch.case.config import preset
 from yadearch.launch.process import _swap_into_place
 from yadearch.results.rundir import staging_folder, write_run
 from yadearch.results.summary import RunSummary
-from yadearch.studies.campaign import run_campaign
-from yadearch.studies.executors import local_pool
-from yadearch.studies.grid import grid
+from yadearch.studies.campaigns.runner import run_campaign
+from yadearch.studies.campaigns.executors import local_pool
+from yadearch.studies.campaigns.grid import grid
 
 def slow_run(case, folder, timeout_s):
     # a stand-in for the child process, with the real folder handling and pauses inside the writes

@@ -18,7 +18,7 @@ from conftest import REPO, needs_yade
 
 from yadearch.cli.campaigns import calibrate, sweep
 from yadearch.errors import YadearchError
-from yadearch.studies.campaign import RESULTS_FILE, batch_run
+from yadearch.studies.campaigns.runner import RESULTS_FILE, batch_run
 
 pytestmark = [pytest.mark.yade, needs_yade]
 

@@ -7,7 +7,7 @@ import pandas as pd
 import pytest
 
 from yadearch.plotting.capacity import capacity_polar_figure, reaction_curves_figure
-from yadearch.studies.capacity import (
+from yadearch.studies.capacity.directions import (
     DIRECTIONS_DEG,
     RigidLimit,
     du_components,

@@ -7,7 +7,7 @@ import pandas as pd
 import pytest
 
 import yadearch as ya
-from yadearch.studies.capacity import directions
+from yadearch.studies.capacity.directions import directions
 
 
 def test_directions_every_step_from_spreading_to_closing_and_bad_steps_refused():
@@ -37,7 +37,7 @@ def test_a_static_capacity_map_writes_its_files_and_settlement_is_the_strongest_
 def test_the_rigid_limits_are_solved_once_per_arch_and_direction(tmp_path, monkeypatch):
     """A rerun reads the rigid limits back (no analysis runs); another arch in the same cache is
     solved for itself."""
-    import yadearch.studies.capacity_map as capacity_map
+    import yadearch.studies.capacity.campaign as capacity_map
     from yadearch.case.config import preset
 
     cache, values = tmp_path / "rigid_limits.csv", (0.0, -90.0)

@@ -9,7 +9,7 @@ import pandas as pd
 import pytest
 
 from yadearch.errors import CANNOT_STAND
-from yadearch.studies.imperfection_amplitudes import (
+from yadearch.studies.imperfections.amplitudes import (
     KINDS,
     LEVEL,
     hinge_table,

@@ -7,7 +7,7 @@ import pandas as pd
 import pytest
 from synthetic_runs import BuiltHinge, BuiltRun
 
-from yadearch.studies.imperfection_matching import (
+from yadearch.studies.imperfections.matching import (
     TOWARD_CROWN,
     TOWARD_SPRINGING,
     Study,

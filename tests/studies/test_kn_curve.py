@@ -53,8 +53,8 @@ def test_a_bracket_narrower_than_the_target_is_located():
 def test_bisection_on_the_static_engine_narrows_a_jump_of_hinge_a(tmp_path):
     """A 9-voussoir arch between kn 0.3 and 30: whatever jumps its du makes are bracketed to 1 %."""
     from yadearch.case.config import preset
-    from yadearch.studies.campaign import run_campaign
-    from yadearch.studies.executors import local_pool
+    from yadearch.studies.campaigns.executors import local_pool
+    from yadearch.studies.campaigns.runner import run_campaign
     from yadearch.studies.kn_curve import bisect_jumps
 
     base = preset("set2").with_overrides({"n_voussoirs": 9, "numerics.engine": "static"})

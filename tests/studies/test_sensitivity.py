@@ -11,8 +11,9 @@ import pytest
 
 import yadearch as ya
 from yadearch.errors import CampaignError, CaseError
-from yadearch.studies.grid import RUN_COLUMN
-from yadearch.studies.sensitivity import (
+from yadearch.studies.campaigns.grid import RUN_COLUMN
+from yadearch.studies.sensitivity.checks import check_rows, other_engine
+from yadearch.studies.sensitivity.indices import (
     PAPER_FACTORS,
     Factor,
     check_base_points,
@@ -24,7 +25,6 @@ from yadearch.studies.sensitivity import (
     sobol_rows,
     stable_base_points,
 )
-from yadearch.studies.sensitivity_check import check_rows, other_engine
 
 ISHIGAMI = (
     Factor("geometry.thickness_mm", "x1", -math.pi, math.pi),

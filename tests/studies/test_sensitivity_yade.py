@@ -9,8 +9,8 @@ import pytest
 from conftest import needs_yade
 
 import yadearch as ya
-from yadearch.studies.sensitivity import parse_factor
-from yadearch.studies.sensitivity_check import AGREEMENT
+from yadearch.studies.sensitivity.checks import AGREEMENT
+from yadearch.studies.sensitivity.indices import parse_factor
 
 pytestmark = [needs_yade, pytest.mark.yade]
 

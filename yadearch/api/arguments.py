@@ -12,10 +12,10 @@ from typing import Any
 from yadearch.case.sections import InterfaceConfig
 from yadearch.errors import ArgumentTypeError, CampaignError
 from yadearch.studies.calibration import MAX_TARGET_DU_MM
-from yadearch.studies.capacity import MAX_STEP_DEG, MIN_STEP_DEG
-from yadearch.studies.grid import MAX_RUNS
-from yadearch.studies.sensitivity import MIN_BASE_POINTS
-from yadearch.studies.sensitivity_check import MAX_CHECKS
+from yadearch.studies.campaigns.grid import MAX_RUNS
+from yadearch.studies.capacity.directions import MAX_STEP_DEG, MIN_STEP_DEG
+from yadearch.studies.sensitivity.checks import MAX_CHECKS
+from yadearch.studies.sensitivity.indices import MIN_BASE_POINTS
 
 MAX_JOBS = 1024  # runs at once on one machine; a cluster is reached through a scheduler instead
 MAX_TIMEOUT_S = 30 * 24 * 3600.0  # 30 days: longer is no limit (and overflows the wait's timer)

@@ -16,11 +16,11 @@ from yadearch.api.runs import as_case, with_engine
 from yadearch.case.config import ArchCase
 from yadearch.case.names import FILE, output_path
 from yadearch.errors import ArgumentTypeError, CampaignError
-from yadearch.studies.grid import check_campaign_size
+from yadearch.studies.campaigns.grid import check_campaign_size
 
 if TYPE_CHECKING:
     from yadearch.studies.calibration import Calibration
-    from yadearch.studies.sensitivity_campaign import SensitivityResult
+    from yadearch.studies.sensitivity.study import SensitivityResult
 
 Log = Callable[[str], None]
 
@@ -46,9 +46,9 @@ def sweep(
     rows of a CSV `table` (one column a parameter), as a resumable campaign in `out` (runs recorded
     as failed are run again unless not `retry_failed`); draws du against each swept parameter
     (`figures`) and returns the results table (one row a run)."""
-    from yadearch.studies.campaign import run_campaign
-    from yadearch.studies.executors import open_pool
-    from yadearch.studies.grid import grid, read_table
+    from yadearch.studies.campaigns.executors import open_pool
+    from yadearch.studies.campaigns.grid import grid, read_table
+    from yadearch.studies.campaigns.runner import run_campaign
     from yadearch.studies.sweep_figures import sweep_figures
 
     check_arguments(jobs=jobs, timeout_s=timeout_s, retry_failed=retry_failed, figures=figures)
@@ -86,7 +86,7 @@ def montecarlo(
     `levels`, e.g. `edge_radius_mm=[0.5, 1]`) as a resumable campaign in `out`, with the distribution
     figures (`figures`); returns the table of montecarlo.csv (du, hinges and each sample's
     imperfection summary)."""
-    from yadearch.studies.executors import open_pool
+    from yadearch.studies.campaigns.executors import open_pool
     from yadearch.studies.montecarlo import levels as level_columns
     from yadearch.studies.montecarlo import run_montecarlo
 
@@ -131,7 +131,7 @@ def calibrate(
     `scheduler`); returns the `Calibration` (its `write(path)` saves it as JSON)."""
     from yadearch.studies.calibration import calibrate as calibrate_kn
     from yadearch.studies.calibration import campaign_evaluator
-    from yadearch.studies.executors import open_pool
+    from yadearch.studies.campaigns.executors import open_pool
 
     check_arguments(
         target_du_mm=target_du_mm,
@@ -169,7 +169,7 @@ def robustness(
     """Every kn (default: the study's) with each numerical variant and with higher friction, a
     resumable study in `out` that writes robustness.csv and robustness.md; returns the verdict per
     kn (`studies.robustness.verdicts`)."""
-    from yadearch.studies.executors import open_pool
+    from yadearch.studies.campaigns.executors import open_pool
     from yadearch.studies.robustness import KN_VALUES, VARIANTS, run_study, verdicts
 
     check_arguments(jobs=jobs, timeout_s=timeout_s)
@@ -195,9 +195,9 @@ def capacity(
     from spreading (0) to closing (-180), a resumable campaign in OUT/runs, with the rigid limit of
     each direction (unless not `rigid`); writes OUT/capacity.csv, capacity.md and the polar figure
     and returns the table."""
-    from yadearch.studies.capacity import directions
-    from yadearch.studies.capacity_map import run_capacity
-    from yadearch.studies.executors import open_pool
+    from yadearch.studies.campaigns.executors import open_pool
+    from yadearch.studies.capacity.campaign import run_capacity
+    from yadearch.studies.capacity.directions import directions
 
     check_arguments(step_deg=step_deg, jobs=jobs, timeout_s=timeout_s, rigid=rigid)
     folder, case = output_path(out, "out"), with_engine(case, engine)
@@ -220,14 +220,14 @@ def sensitivity(
     """What du of `case` is sensitive to: each factor alone at the ends of its range (a tornado) and
     Sobol indices from Saltelli's sample of `base_points` (a power of two; default
     `sensitivity_campaign.DEFAULT_BASE_POINTS`, 128), both resumable campaigns in
-    `out`; `factors` (`yadearch.studies.sensitivity.Factor`s) default to the paper arch's plausible
+    `out`; `factors` (`yadearch.studies.sensitivity.indices.Factor`s) default to the paper arch's plausible
     ranges; the `check_runs` one-at-a-time runs that move du most are made again on the other engine
     (the DEM for a static study). Writes the tables, figures and sensitivity.md; returns the
     `SensitivityResult`."""
-    from yadearch.studies.executors import open_pool
-    from yadearch.studies.sensitivity import PAPER_FACTORS, check_base_points, check_factors
-    from yadearch.studies.sensitivity_campaign import DEFAULT_BASE_POINTS, run_sensitivity
-    from yadearch.studies.sensitivity_check import check_count
+    from yadearch.studies.campaigns.executors import open_pool
+    from yadearch.studies.sensitivity.checks import check_count
+    from yadearch.studies.sensitivity.indices import PAPER_FACTORS, check_base_points, check_factors
+    from yadearch.studies.sensitivity.study import DEFAULT_BASE_POINTS, run_sensitivity
 
     check_arguments(base_points=base_points, check_runs=check_runs, jobs=jobs, timeout_s=timeout_s)
     folder, case = output_path(out, "out"), with_engine(case, engine)

@@ -24,7 +24,7 @@ from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacit
 from yadearch.solve.load_path import StaticLoadPath, static_load_path
 from yadearch.solve.rigid import rigid_arch
 from yadearch.solve.static_state import StaticEngineError
-from yadearch.studies.loads import influence_line
+from yadearch.studies.loads.rigid import influence_line
 
 
 def loads(case: ArchCase | str, out: str | Path | None = None, after_mm: float = 0.0) -> LoadCapacity:

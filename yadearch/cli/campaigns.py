@@ -21,8 +21,8 @@ from yadearch.cli.options import (
     timeout_s,
 )
 from yadearch.errors import YadearchError
-from yadearch.studies.campaign import RESULTS_FILE
-from yadearch.studies.grid import check_parameter, parse_values, qualified_name
+from yadearch.studies.campaigns.grid import check_parameter, parse_values, qualified_name
+from yadearch.studies.campaigns.runner import RESULTS_FILE
 from yadearch.studies.robustness import KN_VALUES, VARIANTS
 from yadearch.studies.sweep_figures import KN_KEY
 

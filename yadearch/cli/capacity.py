@@ -9,7 +9,7 @@ import click
 
 from yadearch import api
 from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, pool_options, resolve_case, timeout_s
-from yadearch.studies.capacity_map import FIGURE, REPORT, TABLE
+from yadearch.studies.capacity.campaign import FIGURE, REPORT, TABLE
 
 
 @click.command()

@@ -15,7 +15,7 @@ from yadearch.case.support import movement_overrides
 from yadearch.errors import CaseError
 from yadearch.results.summary import STATIC
 from yadearch.static.records import DEM_ONLY_NUMERICS
-from yadearch.studies.grid import parse_scalar
+from yadearch.studies.campaigns.grid import parse_scalar
 
 PRESETS = ("set1", "set2")
 ENGINES = ("dem", "static")

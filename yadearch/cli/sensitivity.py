@@ -9,8 +9,8 @@ import click
 
 from yadearch import api
 from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, pool_options, resolve_case, timeout_s
-from yadearch.studies.sensitivity import STABLE_TO, parse_factor
-from yadearch.studies.sensitivity_campaign import DEFAULT_BASE_POINTS, INDICES_TABLE, REPORT, TORNADO_TABLE
+from yadearch.studies.sensitivity.indices import STABLE_TO, parse_factor
+from yadearch.studies.sensitivity.study import DEFAULT_BASE_POINTS, INDICES_TABLE, REPORT, TORNADO_TABLE
 
 
 @click.command()

@@ -112,7 +112,7 @@ def _hinge_marks(ax, directions: pd.Series, hinge_labels: pd.Series, color: str,
 
 
 def reaction_curves_figure(curves: dict[str, dict[float, pd.DataFrame]], stem: Path) -> list[Path]:
-    """The force of the arch on the moving support along its path (N; `studies.capacity.reaction_curve`)
+    """The force of the arch on the moving support along its path (N; `studies.capacity.directions.reaction_curve`)
     against the support displacement (mm) at the equilibrium states of every direction, one panel
     per set: `curves[set][direction_deg]` holds the `delta_mm` and `force_N` columns."""
     with matplotlib.rc_context(SWEEP_STYLE):

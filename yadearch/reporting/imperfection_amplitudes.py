@@ -8,7 +8,7 @@ import math
 
 import pandas as pd
 
-from yadearch.studies.imperfection_amplitudes import LEVEL, PLAUSIBLE
+from yadearch.studies.imperfections.amplitudes import LEVEL, PLAUSIBLE
 
 COMMAND = ".venv/bin/python scripts/imperfection_amplitudes.py"
 

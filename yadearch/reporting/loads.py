@@ -16,8 +16,7 @@ from yadearch.plotting.load_figure import plot_load_collapse
 from yadearch.plotting.loads import plot_loads
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.rigid import rigid_arch
-from yadearch.studies.load_paths import STIFF_KNS, backfill_capacities, paper_cases, paper_loads, stiff_check
-from yadearch.studies.loads import (
+from yadearch.studies.loads.rigid import (
     check_cases,
     influence_line,
     mechanism_check,
@@ -25,6 +24,7 @@ from yadearch.studies.loads import (
     residual_capacities,
     semicircle_accelerations,
 )
+from yadearch.studies.loads.static import STIFF_KNS, backfill_capacities, paper_cases, paper_loads, stiff_check
 
 CHECK_TOLERANCE = 1e-9  # relative: the LP and the mechanism method are one answer to round-off
 QUARTERS = (0.25, 0.5, 0.75)

@@ -22,7 +22,7 @@ import pandas as pd
 from yadearch.case.config import ArchCase, case_from_dict
 from yadearch.results.rundir import SUMMARY_FILE, holds_case, is_complete, read_summary
 from yadearch.results.summary import RunSummary
-from yadearch.studies.failures import FAILED_FILE
+from yadearch.studies.campaigns.failures import FAILED_FILE
 from yadearch.studies.robustness import same_hinge_set
 
 AGREEMENT_PCT = 1.0  # the target: static du within 1 % of the DEM's where the DEM is converged

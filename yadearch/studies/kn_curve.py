@@ -17,9 +17,9 @@ import numpy as np
 import pandas as pd
 
 from yadearch.case.config import ArchCase
-from yadearch.studies.campaign import run_campaign
-from yadearch.studies.executors import Pool
-from yadearch.studies.grid import round_sig
+from yadearch.studies.campaigns.executors import Pool
+from yadearch.studies.campaigns.grid import round_sig
+from yadearch.studies.campaigns.runner import run_campaign
 
 KN = "kn_N_per_mm3"
 KN_RANGE = (0.05, 10000.0)  # N/mm^3

@@ -18,9 +18,9 @@ from yadearch.case.config import ArchCase
 from yadearch.errors import CampaignError
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.results.rundir import finished_summary
-from yadearch.studies.campaign import run_campaign
-from yadearch.studies.executors import Pool
-from yadearch.studies.grid import RUN_COLUMN, check_campaign_size, grid, run_tag
+from yadearch.studies.campaigns.executors import Pool
+from yadearch.studies.campaigns.grid import RUN_COLUMN, check_campaign_size, grid, run_tag
+from yadearch.studies.campaigns.runner import run_campaign
 
 SEED_KEY = "imperfections.seed"
 MONTECARLO_FILE = "montecarlo.csv"

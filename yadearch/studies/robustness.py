@@ -21,8 +21,8 @@ from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.results.summary import STATIC
 from yadearch.static.records import DEM_ONLY_NUMERICS
-from yadearch.studies.campaign import RESULTS_FILE, run_campaign
-from yadearch.studies.executors import Pool
+from yadearch.studies.campaigns.executors import Pool
+from yadearch.studies.campaigns.runner import RESULTS_FILE, run_campaign
 
 KN_VALUES = (0.1, 0.25, 1.0, 5.2, 17.78)  # kn 100 costs 8 min a DEM run: ask for it with kn_values
 TOLERANCE = 0.01  # largest relative change of du (and du_first) a numerical variant may cause

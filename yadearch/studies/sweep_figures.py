@@ -12,7 +12,7 @@ import pandas as pd
 from yadearch.case.config import ArchCase
 from yadearch.case.paper import is_paper_arch
 from yadearch.errors import YadearchError
-from yadearch.studies.grid import short_name
+from yadearch.studies.campaigns.grid import short_name
 
 KN_KEY = "kn_N_per_mm3"
 

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from yadearch.case.support import TILT_PIVOT_DEPTH_MM
-from yadearch.studies.grid import RUN_COLUMN
+from yadearch.studies.campaigns.grid import RUN_COLUMN
 
 REFERENCE_RADIUS_MM = 300.0  # every shape's half span (the paper's intrados radius): t/R is over it
 SPAN_MM = 2.0 * REFERENCE_RADIUS_MM

@@ -11,7 +11,7 @@ import pandas as pd
 
 from yadearch.studies.atlas.grid import KNS_N_PER_MM3, REFERENCE_RADIUS_MM, Geometry, geometries
 from yadearch.studies.atlas.rigid import KEY
-from yadearch.studies.grid import RUN_COLUMN
+from yadearch.studies.campaigns.grid import RUN_COLUMN
 
 STIFF_TARGET_PCT = 2.0  # static at the stiffest kn against the rigid march
 ENGINES_TARGET_PCT = 1.0  # static against the DEM, on du and on du_first
