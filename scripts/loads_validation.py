@@ -1,5 +1,5 @@
 """The live-load validation (reports/loads): the rigid-block load multiplier against the mechanism
-method on small arches, then the paper's arch and semicircles (docs/validation.md, "Live loads").
+method on small arches, then the paper's arch and semicircles (docs/loads.md).
 
     .venv/bin/python scripts/loads_validation.py [--out reports/loads]
 

@@ -3,7 +3,7 @@
 (tests/solve/test_edge_of_standing.py), and a DEM run once accepted its self-weight state while it
 still crept at 0.3 mm/s. The DEM now accepts only a state that passes the path's settling test
 (blocks slower than settle_speed_mm_per_s) with a positive definite static tangent; this one still
-moves after three holds, so it is refused, as the static engine refuses it (docs/validation.md, "Arches
+moves after three holds, so it is refused, as the static engine refuses it (docs/validation-engines.md, "Arches
 at the edge of standing")."""
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """An arch at the edge of standing, the sensitivity study's sample b00006_01 (57 voussoirs, kn 14.5
 N/mm3, face bumps s.d. 0.19 mm, tests/data/edge_of_standing.toml): its static self-weight path folds
 below full gravity, so the static engine's "cannot stand" is the model's quasi-static answer
-(docs/validation.md, "Arches at the edge of standing"; the DEM's self-weight accepts it creeping)."""
+(docs/validation-engines.md, "Arches at the edge of standing"; the DEM's self-weight accepts it creeping)."""
 
 from __future__ import annotations
 

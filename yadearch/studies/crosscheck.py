@@ -1,5 +1,5 @@
 """The static engine against the DEM: every committed DEM run solved again statically, du and the
-hinges at collapse side by side (docs/validation.md, "Static engine against the DEM").
+hinges at collapse side by side (docs/validation-engines.md).
 
 A DEM run is any finished run folder (case.toml and summary.json); the static run takes the same
 case with numerics.engine = 'static'. Static runs execute in worker processes, each reused from its

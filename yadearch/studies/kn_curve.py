@@ -1,5 +1,5 @@
 """The whole du(kn) curve on the static engine: a log grid of kn, every jump of du located by
-bisection in kn and tied to the hinge that moves there (docs/validation.md, "The whole kn curve").
+bisection in kn and tied to the hinge that moves there (docs/validation-stiff.md, "The whole kn curve").
 
 A jump is a change of du by more than JUMP_FRACTION between neighbouring kn; each is bisected
 (geometric midpoints, all jumps of a round as one campaign) until its bracket spans less than

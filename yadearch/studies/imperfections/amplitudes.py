@@ -1,6 +1,6 @@
 """Set 1 from imperfections of measured size: each kind of voussoir defect the model has, and one
 combination of them, drawn at several amplitudes with many seeds, to find the amplitude at which the
-accurate arch's median du falls to set 1's experiment (docs/validation.md, "Set 1 from imperfections
+accurate arch's median du falls to set 1's experiment (docs/validation-imperfections.md, "Set 1 from imperfections
 of measured size").
 
 A kind scales a fixed pattern of case parameters by its amplitude (`Kind.overrides`), so one
@@ -44,7 +44,7 @@ class Kind:
 
 
 # Amplitudes: from below what a careful maker achieves to beyond what the DEM study found for set 1
-# (docs/validation.md gives the measured sizes these are read against).
+# (docs/validation-imperfections.md gives the measured sizes these are read against).
 KINDS = (
     Kind(
         "bump",
@@ -102,7 +102,7 @@ KINDS = (
 
 # What a hand-made set like set 1 plausibly has (aluminium matrices milled by hand, blocks cast in a
 # deformable silicone mould, not vibrated; set 2's CNC matrices: +-0.05 mm): the range of each
-# kind's amplitude, and why (docs/validation.md).
+# kind's amplitude, and why (docs/validation-imperfections.md).
 PLAUSIBLE = {
     "bump": ((0.05, 0.25), "faces cast against a deformable mould, not vibrated: bulges and pits of a few tenths"),
     "edge": ((0.5, 2.0), "the paper's 'less sharp corners'; 3 mm would round off a quarter of a 24 mm face"),

@@ -1,4 +1,4 @@
-"""The imperfection study (docs/validation.md, "Imperfections instead of a low kn"): how large each
+"""The imperfection study (docs/validation-imperfections.md, "Imperfections instead of a low kn"): how large each
 kind of voussoir defect must be to bring the accurate arch's du down to set 1's, the kn that the
 low-kn model would need for the same median du, and where the hinges then form.
 

@@ -1,6 +1,6 @@
 """The sensitivity study checked by the other engine: the one-at-a-time runs that move du most, run
 again on the DEM (or, for a study on the DEM, on the static engine), both answers side by side
-(docs/validation.md, "What du is sensitive to")."""
+(docs/validation-imperfections.md, "What du is sensitive to")."""
 
 from __future__ import annotations
 

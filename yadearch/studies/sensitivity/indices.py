@@ -1,6 +1,6 @@
 """What du is sensitive to: one factor at a time over its plausible range (the tornado), and Sobol's
 variance-based indices over all the ranges at once, sampled and estimated with SALib (Saltelli's
-scheme, first-order and total indices; docs/validation.md, "What du is sensitive to").
+scheme, first-order and total indices; docs/validation-imperfections.md, "What du is sensitive to").
 
 The Sobol sample of 2N base points starts with the sample of N (a scrambled Sobol sequence extends),
 and each run is named by its base point, so doubling N reruns nothing: the campaign resumes.
@@ -61,7 +61,7 @@ class Factor:
         return round_sig(self.low + u * (self.high - self.low), VALUE_DIGITS)
 
 
-# The paper's arch (docs/validation.md gives the reasons for each range): stiffness from the softest
+# The paper's arch (docs/validation-imperfections.md gives the reasons for each range): stiffness from the softest
 # set to near-rigid joints, the geometry within a hand-milled model's tolerances, the defects up to
 # what the imperfection study found for set 1.
 PAPER_FACTORS = (

@@ -1,6 +1,6 @@
 """The sensitivity study of any case as campaigns (either engine): the one-at-a-time runs and the
 Sobol sample, resumable, then the tables, figures and report (`yadearch sensitivity`,
-`ya.sensitivity`; docs/validation.md, "What du is sensitive to")."""
+`ya.sensitivity`; docs/validation-imperfections.md, "What du is sensitive to")."""
 
 from __future__ import annotations
 
@@ -48,7 +48,7 @@ REPORT = "sensitivity.md"
 TORNADO_FIGURE = "tornado"
 INDICES_FIGURE = "indices"
 CONVERGENCE_FIGURE = "convergence"
-# a first look within 10 minutes on two cores (docs/validation.md); its report says what N would be stable
+# a first look within 10 minutes on two cores (docs/validation-imperfections.md); its report says what N would be stable
 DEFAULT_BASE_POINTS = 128
 
 
