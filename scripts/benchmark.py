@@ -52,6 +52,9 @@ TARGET_DU_REL = 0.01
 TARGET_STEP_US = 20.0  # a step's aim: the distance to YADE's bare explicit step
 
 
+IMPERFECT_SAMPLE = {"imperfections.face_bump_sd_mm": 0.18, "imperfections.seed": 3}  # a Monte Carlo sample
+
+
 def timed_run(case, folder: Path) -> RunSummary:
     """Run a case in its own process (reusing a complete folder of the same case); its summary."""
     from yadearch.launch.process import run_case_process
@@ -426,9 +429,6 @@ def static_floor_measurement() -> dict:
         target = f"static solver of {name} <= {TARGET_FLOOR_RATIO:g} x its compiled floor"
         result["verdicts"].append((target, cost.ratio <= TARGET_FLOOR_RATIO, f"{cost.ratio:.2f}"))
     return result
-
-
-IMPERFECT_SAMPLE = {"imperfections.face_bump_sd_mm": 0.18, "imperfections.seed": 3}  # a Monte Carlo sample
 
 
 def run_files_measurement(samples: int, runs: Path) -> dict:

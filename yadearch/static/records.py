@@ -77,7 +77,7 @@ class StaticRecords:
         delta_mm = units.to_mm(state.lam)
         if self.keep_tables:
             common = {"stage": state.stage, "step": self.iterations, "delta_mm": delta_mm}
-            self.series.append({**common, **self.series_columns(state)})
+            self.series.append({**common, **self.series_columns(state, pos)})
             self.joints.extend(joint_rows(snap, common))
             self.states.append(state_entry(state.stage, self.iterations, delta_mm, pos, rot))
         if label:
@@ -86,17 +86,19 @@ class StaticRecords:
             friction_extremes(self.friction, snap, delta_mm)
         return hinges
 
-    def series_columns(self, state: StaticState) -> dict[str, Any]:
-        """series.csv's columns of `state`: reactions (the supports' forces on the arch), the crown's
-        displacement, the residual, the tangent's smallest eigenvalue."""
-        pos, _ = self.arch.poses(state.u)
+    def series_columns(self, state: StaticState, pos: np.ndarray | None = None) -> dict[str, Any]:
+        """series.csv's columns of `state` (its blocks' positions `pos`, if known): reactions (the
+        supports' forces on the arch), the crown's displacement, the residual against the weights and
+        the dead loads, the tangent's smallest eigenvalue."""
+        pos = self.arch.poses(state.u)[0] if pos is None else pos
         force = state.forces.block_force
         crown = self.arch.geometry.crown_voussoir
         crown_disp = pos[crown] - self.arch.centroid0[crown]
         free = np.zeros(self.arch.n_blocks, bool)
         free[1:-1] = True
-        weights = np.column_stack([np.zeros(free.sum()), -self.arch.weight[free]])
-        unbalanced = unbalanced_force(state.forces, free, weights)
+        dead = self.arch.dead[free]
+        loads = np.column_stack([dead[:, 0], dead[:, 1] - self.arch.weight[free]])
+        unbalanced = unbalanced_force(state.forces, free, loads)
         return {
             "left_Rx_N": -force[0, 0],
             "left_Ry_N": -force[0, 1],
