@@ -87,6 +87,7 @@ def load_path_json(result: StaticLoadPath, case: ArchCase) -> dict[str, Any]:
         "collapse_kind": result.kind,
         "rigid_multiplier": number(result.rigid),
         "rigid_hinges": result.rigid_hinges.split(),
+        "rigid_note": result.rigid_note or None,
         "iterations": result.iterations,
         "case": case.to_dict(),
     }

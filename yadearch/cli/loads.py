@@ -91,7 +91,9 @@ def _static(case: ArchCase, out: str, after_mm: float, what: str) -> None:
         outcome = f"unresolved: the solver found no equilibrium nor runaway past {path.reach:.4g} {unit} (no capacity)"
     else:
         outcome = f"no collapse up to {path.reach:.4g} {unit}"
-    rigid = f"{path.rigid:.4g} {unit} on {path.rigid_hinges}" if math.isfinite(path.rigid) else "none"
+    rigid = (
+        f"{path.rigid:.4g} {unit} on {path.rigid_hinges}" if math.isfinite(path.rigid) else f"none ({path.rigid_note})"
+    )
     click.echo(
         f"{case.name}: {what}: static engine: {outcome}; rigid blocks: {rigid} -> {out}/{case.name}_load_path.json"
     )

@@ -48,8 +48,9 @@ class StaticLoadPath:
     after_mm: float
     reach: float  # the largest multiplier the path tried (the arch stands at least to it without collapse)
     iterations: int
-    rigid: float  # the rigid-block capacity of the same state (`solve.load_lp`; NaN where the rigid arch fell)
+    rigid: float  # the rigid-block capacity of the same state (`solve.load_lp`; NaN where there is none)
     rigid_hinges: str
+    rigid_note: str = ""  # why there is no rigid answer, where there is none
 
 
 def load_settings(scale: float, growth: float) -> PathSettings:
@@ -105,8 +106,8 @@ def _rigid(case: ArchCase, after_mm: float, at_rest: LoadCapacity) -> dict:
     movement (NaN where the rigid arch collapses before it)."""
     try:
         rigid = residual_capacity(case, after_mm) if after_mm > 0.0 else at_rest
-    except LimitError:
-        return {"rigid": math.nan, "rigid_hinges": ""}
+    except LimitError as exc:
+        return {"rigid": math.nan, "rigid_hinges": "", "rigid_note": str(exc)}
     return {"rigid": rigid.multiplier, "rigid_hinges": rigid.hinge_labels}
 
 
