@@ -19,7 +19,7 @@ from yadearch.solve.limit import limit_analysis, stands
 from yadearch.solve.rigid import LimitError
 
 TOLERANCE_MM = 1e-3  # limit_analysis's default bisection width
-DEM_STIFFEST_DU_MM = 109.07  # reports/kn-sweep/kn100: DEM du at kn = 100 N/mm3, 1E 8I 31E 56E
+DEM_STIFFEST_DU_MM = 109.09  # reports/kn-sweep/kn100: DEM du at kn = 100 N/mm3, 1E 8I 30E 56E
 
 
 def arch_case(**overrides) -> ArchCase:
