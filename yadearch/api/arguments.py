@@ -114,6 +114,7 @@ ARGUMENTS = {
         Argument("quiet", bool),
         Argument("retry_failed", bool),
         Argument("rigid", bool),
+        Argument("static", bool),
     )
 }
 

@@ -25,6 +25,7 @@ from yadearch.solve.load_path import StaticLoadPath, static_load_path
 from yadearch.solve.rigid import rigid_arch
 from yadearch.solve.static_state import StaticEngineError
 from yadearch.studies.loads.rigid import influence_line
+from yadearch.studies.loads.static import static_influence_line
 
 
 def loads(case: ArchCase | str, out: str | Path | None = None, after_mm: float = 0.0) -> LoadCapacity:
@@ -116,17 +117,22 @@ def load_json(result: LoadCapacity, case: ArchCase) -> dict[str, Any]:
 POSITIONS_RANGE = (2, 200)  # positions of an influence line across the span
 
 
-def load_influence(case: ArchCase | str, positions: int = 19, out: str | Path | None = None) -> pd.DataFrame:
+def load_influence(
+    case: ArchCase | str, positions: int = 19, out: str | Path | None = None, static: bool = False
+) -> pd.DataFrame:
     """The influence line of `case`'s arch: a concentrated vertical load's capacity (N) at `positions`
-    points evenly across the span (k / (positions + 1)), with each mechanism's hinges; with `out`,
-    OUT/NAME_influence.csv and its figure OUT/NAME_influence.pdf/.png."""
+    points evenly across the span (k / (positions + 1)), with each mechanism's hinges, by rigid blocks
+    or, `static`, on the static engine's path (its first loss and the rigid line beside it); with
+    `out`, OUT/NAME_influence.csv and its figure OUT/NAME_influence.pdf/.png."""
     low, high = POSITIONS_RANGE
     if isinstance(positions, bool) or not isinstance(positions, int) or not low <= positions <= high:
         raise CaseError(f"positions must be an integer in [{low}, {high}], got {positions!r}")
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
-    table = influence_line(case, tuple(k / (positions + 1) for k in range(1, positions + 1)))
+    check_arguments(static=static)
+    where = tuple(k / (positions + 1) for k in range(1, positions + 1))
+    table = static_influence_line(case, where) if static else influence_line(case, where)
     if folder is not None:
         write_csv_atomically(folder / f"{case.name}_influence.csv", table)
         weight = float(rigid_arch(case).weight[1:-1].sum())

@@ -45,7 +45,7 @@ LOAD_ENGINES = (RIGID, STATIC)
     type=int,
     default=None,
     help="also the influence line: a concentrated load's capacity at this many points across the span "
-    "(2-200), written as NAME_influence.csv and its figure",
+    "(2-200, by the --engine), written as NAME_influence.csv and its figure",
 )
 def loads(
     preset_name: str | None,
@@ -61,7 +61,7 @@ def loads(
     or on the static engine's path; --after-mm first moves the support."""
     case = resolve_case(preset_name, case_file, None, settings)
     if positions is not None:
-        table = api.load_influence(case, positions, out=out)
+        table = api.load_influence(case, positions, out=out, static=load_engine == STATIC)
         weakest = table.loc[table["collapse_load_N"].idxmin()]
         click.echo(
             f"{case.name}: influence line at {positions} positions: least {weakest.collapse_load_N:.4g} N at "

@@ -53,7 +53,14 @@ def plot_influence(influence: pd.DataFrame, arch_weight_N: float, stem: Path) ->
 
 def _draw_influence(ax, influence: pd.DataFrame, arch_weight_N: float) -> None:
     """The influence line of the capacity, in N and (right axis) in arch weights."""
-    ax.plot(influence["position_over_span"], influence["collapse_load_N"], "o-", ms=2.5, color="C0")
+    ax.plot(
+        influence["position_over_span"], influence["collapse_load_N"], "o-", ms=2.5, color="C0", label="static engine"
+    )
+    if "rigid_load_N" in influence:  # the static engine's line, with rigid blocks' for scale
+        ax.plot(
+            influence["position_over_span"], influence["rigid_load_N"], "--", lw=0.8, color="0.4", label="rigid blocks"
+        )
+        ax.legend(loc="upper center", frameon=False)
     ax.set_xlabel("point load's position / span (from the left springing)")
     ax.set_ylabel("collapse load (N)")
     ax.set_ylim(bottom=0.0)

@@ -82,3 +82,17 @@ def backfill_capacities(
                 )  # fmt: skip
                 rows.append({"fill_depth_mm": depth, "fill_lateral_coefficient": coefficient, **static_row(case)})
     return pd.DataFrame(rows)
+
+
+def static_influence_line(base: ArchCase, positions: Iterable[float]) -> pd.DataFrame:
+    """A concentrated load's capacity (N) against its position over the span on the static path, with
+    its first loss of stability, hinges and the rigid capacity beside it."""
+    rows = []
+    for x in positions:
+        path = static_load_path(base.with_overrides({"live_load": "vertical", "load_position_over_span": x}))
+        rows.append(
+            {"position_over_span": x, "collapse_load_N": path.capacity, "first_loss_N": path.first_loss,
+             "hinges": " ".join(path.hinges), "outcome": path.outcome, "rigid_load_N": path.rigid,
+             "rigid_hinges": path.rigid_hinges}
+        )  # fmt: skip
+    return pd.DataFrame(rows)
