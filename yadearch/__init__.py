@@ -1,8 +1,8 @@
 """yadearch: masonry arches on moving supports, simulated with YADE's polyhedral discrete elements.
 
 The public API (`yadearch.api`): `preset`, `movement`, `run`, `reproduce`, `report`, `open_run`, `sweep`,
-`montecarlo`, `calibrate`, `robustness`, `capacity`, `sensitivity`, `limit`, `loads`, `load_influence`, `load_path`,
-imported on first use so that
+`montecarlo`, `calibrate`, `robustness`, `capacity`, `sensitivity`, `limit`, `loads`, `load_influence`,
+`load_path`, `measured_case`, imported on first use so that
 `import yadearch` stays light (no pandas, no YADE); type checkers and IDEs see them through the
 TYPE_CHECKING import below."""
 
@@ -20,6 +20,7 @@ if TYPE_CHECKING:
         load_influence,
         load_path,
         loads,
+        measured_case,
         montecarlo,
         movement,
         open_run,
@@ -50,6 +51,7 @@ __all__ = [
     "loads",
     "load_influence",
     "load_path",
+    "measured_case",
     "RunResult",
     "HingeAtCollapse",
 ]

@@ -9,6 +9,7 @@ typed results, for notebooks and scripts; every command of the command line is a
 
 from yadearch.api.campaigns import calibrate, capacity, montecarlo, robustness, sensitivity, sweep
 from yadearch.api.live_loads import load_influence, load_path, loads
+from yadearch.api.measured import measured_case
 from yadearch.api.results import HingeAtCollapse, RunResult, open_run
 from yadearch.api.runs import as_case, limit, movement, preset, report, reproduce, run, with_engine
 
@@ -25,6 +26,7 @@ __all__ = [
     "loads",
     "load_influence",
     "load_path",
+    "measured_case",
     "sweep",
     "montecarlo",
     "calibrate",

@@ -20,10 +20,21 @@ class GeometryConfig:
     shape: str = field(
         default="segmental",
         metadata={
-            "choices": ("segmental", "pointed", "elliptical", "three_centred"),
+            "choices": ("segmental", "pointed", "elliptical", "three_centred", "measured"),
             "doc": "intrados shape: 'segmental' (circular, by internal_radius_mm and embrace_deg; 180 = "
             "semicircular), 'pointed' (two-centred, by span_mm and pointed_radius_over_span), "
-            "'elliptical' (half-ellipse) or 'three_centred' (basket-handle), both by span_mm and rise_mm",
+            "'elliptical' (half-ellipse) or 'three_centred' (basket-handle), both by span_mm and rise_mm; "
+            "'measured': the joints as surveyed (joint_points_mm), every other size taken from them",
+        },
+    )
+    joint_points_mm: list = field(
+        default_factory=list,
+        metadata={
+            "table_columns": ("x_intrados_mm", "y_intrados_mm", "x_extrados_mm", "y_extrados_mm"),
+            "predates": [],
+            "doc": "shape 'measured': each joint's intrados and extrados corners (mm), left springing to "
+            "right springing, one row a joint (voussoirs = rows - 1); a surveyed arch, its thickness "
+            "varying as the corners do (`ya.measured_case` reads them from a CSV)",
         },
     )
     n_voussoirs: int = field(default=55, metadata=number_meta(2, 1000, doc="number of voussoirs"))

@@ -10,7 +10,7 @@ import numpy as np
 from yadearch.case.sections import GeometryConfig
 from yadearch.errors import CaseError
 from yadearch.model import units
-from yadearch.model.geometry import ArchGeometry, arch_on_intrados, segmental_arch
+from yadearch.model.geometry import ArchGeometry, arch_from_joints, arch_on_intrados, segmental_arch
 from yadearch.model.intrados import (
     MAX_RISE_OVER_SPAN,
     HalfEllipse,
@@ -21,6 +21,8 @@ from yadearch.model.intrados import (
     three_centred,
 )
 
+MEASURED = "measured"  # geometry.shape of a surveyed arch (geometry.joint_points_mm)
+MIN_MEASURED_JOINTS = 3  # two voussoirs at least
 MIN_JOINT_ANGLE_DEG = 20.0  # a joint nearer the intrados tangent makes a sliver voussoir (joint > 2.9 t)
 
 INTRADOS: dict[str, Callable[[GeometryConfig], Intrados]] = {
@@ -72,6 +74,8 @@ def checked_intrados(g: GeometryConfig) -> Intrados:
 def build_arch(g: GeometryConfig) -> ArchGeometry:
     """The SI geometry of `g`; CaseError if it is not a buildable arch. The segmental arch with normal
     (= radial) joints is the paper's construction, bit for bit."""
+    if g.shape == MEASURED:
+        return measured_arch(g)
     intrados = checked_intrados(g)
     thickness, depth, support = units.mm(g.thickness_mm), units.mm(g.depth_mm), units.mm(g.support_length_mm)
     try:
@@ -82,3 +86,43 @@ def build_arch(g: GeometryConfig) -> ArchGeometry:
         return arch_on_intrados(intrados, g.n_voussoirs, g.joint_orientation, thickness, depth, support)
     except ValueError as exc:
         raise CaseError(f"the arch cannot be built: {exc}") from None
+
+
+def measured_arch(g: GeometryConfig) -> ArchGeometry:
+    """The arch of surveyed joints (`joint_points_mm`, left to right): its voussoirs between them, its
+    span and rise from the intrados corners; CaseError naming what is wrong."""
+    rows = np.asarray(g.joint_points_mm, float)
+    if len(rows) < MIN_MEASURED_JOINTS:
+        raise CaseError(
+            f"geometry.joint_points_mm must have at least {MIN_MEASURED_JOINTS} joints (rows) for shape "
+            f"'measured', got {len(rows)}"
+        )
+    if g.n_voussoirs != len(rows) - 1:
+        raise CaseError(
+            f"geometry.n_voussoirs must be {len(rows) - 1} for {len(rows)} measured joints (one fewer), "
+            f"got {g.n_voussoirs}"
+        )
+    points = units.mm(rows)
+    intrados, extrados = points[:, 0:2], points[:, 2:4]
+    backward = np.flatnonzero(np.diff(intrados[:, 0]) <= 0.0)
+    if backward.size:
+        raise CaseError(
+            f"geometry.joint_points_mm: joint {backward[0] + 2}'s intrados corner is not right of joint "
+            f"{backward[0] + 1}'s; give the joints left to right"
+        )
+    lengths = np.linalg.norm(extrados - intrados, axis=1)
+    springing = 0.5 * (intrados[0, 1] + intrados[-1, 1])
+    try:
+        return arch_from_joints(
+            list(zip(intrados, extrados)),
+            units.mm(g.depth_mm),
+            units.mm(g.support_length_mm),
+            thickness=float(lengths.mean()),
+            span=float(intrados[-1, 0] - intrados[0, 0]),
+            rise=float(intrados[:, 1].max() - springing),
+        )
+    except ValueError as exc:
+        raise CaseError(
+            f"geometry.joint_points_mm: {exc} (is each row [x, y] of the intrados corner then of the extrados "
+            "corner, the extrados above?)"
+        ) from None

@@ -19,6 +19,7 @@ from yadearch.cli.loads import loads
 from yadearch.cli.montecarlo import montecarlo
 from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, resolve_case
 from yadearch.cli.sensitivity import sensitivity
+from yadearch.cli.survey import survey
 from yadearch.cli.views import animate, export
 from yadearch.errors import YadearchError
 from yadearch.results.rundir import read_summary
@@ -194,6 +195,7 @@ cli.add_command(robustness)
 cli.add_command(montecarlo)
 cli.add_command(capacity)
 cli.add_command(loads)
+cli.add_command(survey)
 cli.add_command(sensitivity)
 cli.add_command(animate)
 cli.add_command(export)

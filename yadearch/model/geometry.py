@@ -138,6 +138,20 @@ def arch_on_intrados(
     for station in stations(intrados, n_voussoirs):
         direction = joint_direction(station, orientation)
         ends.append((station.point, extrados_end(intrados, station, direction, thickness)))
+    return arch_from_joints(ends, depth, support_length, thickness, intrados.span, intrados.rise)
+
+
+def arch_from_joints(
+    ends: list[tuple[np.ndarray, np.ndarray]],
+    depth: float,
+    support_length: float,
+    thickness: float,
+    span: float,
+    rise: float,
+) -> ArchGeometry:
+    """An arch from its joints' (intrados, extrados) end points, left to right: convex quadrilateral
+    voussoirs between consecutive joints, on two support blocks whose faces lie on the end joints
+    (ValueError where a voussoir is not convex)."""
     joints = []
     for k, (inner, outer) in enumerate(ends):
         along = (outer - inner) / np.linalg.norm(outer - inner)
@@ -155,8 +169,8 @@ def arch_on_intrados(
         joints,
         thickness,
         depth,
-        intrados.span,
-        intrados.rise,
+        span,
+        rise,
         voussoir_width=float(np.linalg.norm(np.diff(middles, axis=0), axis=1).min()),
         longest_joint=max(j.length for j in joints),
     )

@@ -23,6 +23,7 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes
 from yadearch.case.mechanics import backfill
+from yadearch.case.shape import MEASURED
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.model.hinges import mirror_hinge_labels
@@ -48,6 +49,8 @@ def has_other_branch(case: ArchCase) -> bool:
     other joint: an odd number of voussoirs without dimension errors (else there is no mirror image),
     one support moving, and a movement that is not its own mirror image (it moves vertically or turns)."""
     if not (case.geometry.n_voussoirs % 2 and case.loading.moving_support in MIRRORED):
+        return False
+    if case.geometry.shape == MEASURED:  # a surveyed arch is not its own mirror image
         return False
     return amplitudes(case).perfect_dimensions and not rigid_arch(case).movement.mirror_is_itself
 

@@ -1,0 +1,84 @@
+"""A surveyed arch (geometry.shape 'measured', `ya.measured_case`, `yadearch survey`): the paper's arch
+given as its own surveyed joints is the same arch (blocks to round-off, du and hinges on the static
+engine, the rigid limit); a ring of varying thickness builds and stands; bad surveys are refused in
+one line."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from yadearch.api.measured import JOINT_COLUMNS, measured_case
+from yadearch.case.config import preset
+from yadearch.case.mechanics import arch_geometry
+from yadearch.cli.commands import main
+from yadearch.errors import CaseError
+from yadearch.solve.limit import limit_analysis
+from yadearch.solve.static_path import StaticLoading
+
+SMALL = {"geometry.n_voussoirs": 15}
+
+
+def _joints(case) -> pd.DataFrame:
+    """The joints of `case`'s arch as a survey would list them (mm)."""
+    rows = [[*(1e3 * j.intrados[:2]), *(1e3 * j.extrados[:2])] for j in arch_geometry(case).joints]
+    return pd.DataFrame(rows, columns=list(JOINT_COLUMNS))
+
+
+def _du(case) -> tuple[float, list]:
+    loading = StaticLoading.of(case.with_overrides({"numerics.engine": "static"}))
+    loading.selfweight()
+    path = loading.follow()
+    return path.du, loading.fold_mode(path.upper).labels
+
+
+def test_the_paper_arch_surveyed_is_the_paper_arch():
+    base = preset("set2").with_overrides(SMALL)
+    surveyed = measured_case(_joints(base), base=base)
+    for a, b in zip(arch_geometry(base).blocks, arch_geometry(surveyed).blocks):
+        assert np.abs(a - b).max() < 1e-12
+    assert surveyed.geometry.n_voussoirs == 15 and surveyed.geometry.thickness_mm == pytest.approx(24.0, rel=1e-12)
+    assert _du(surveyed) == _du(base)
+    assert limit_analysis(surveyed).du_rigid_mm == pytest.approx(
+        limit_analysis(base, mirror=False).du_rigid_mm, rel=1e-9
+    )
+
+
+def test_a_ring_thicker_at_the_haunches_builds_and_stands():
+    base = preset("set2").with_overrides(SMALL)
+    joints = _joints(base)
+    centre = joints[["x_intrados_mm"]].to_numpy().ravel()
+    grow = 1.0 + 0.5 * (np.abs(centre) / np.abs(centre).max())  # 24 mm at the crown, 36 mm at the springings
+    for axis in ("x", "y"):
+        joints[f"{axis}_extrados_mm"] = joints[f"{axis}_intrados_mm"] + grow * (
+            joints[f"{axis}_extrados_mm"] - joints[f"{axis}_intrados_mm"]
+        )
+    thick = measured_case(joints, base=base)
+    lengths = [j.length for j in arch_geometry(thick).joints]
+    assert max(lengths) == pytest.approx(1.5 * min(lengths), rel=0.05)
+    du, _ = _du(thick)
+    assert du > _du(base)[0]  # thicker haunches carry the settlement further
+
+
+def test_bad_surveys_are_refused_in_one_line(tmp_path, capsys):
+    base = preset("set2").with_overrides(SMALL)
+    joints = _joints(base)
+    with pytest.raises(CaseError, match="missing y_extrados_mm"):
+        measured_case(joints.drop(columns="y_extrados_mm"))
+    with pytest.raises(CaseError, match="needs 3 joints at least"):
+        measured_case(joints.head(2))
+    with pytest.raises(CaseError, match="give the joints left to right"):
+        measured_case(joints.iloc[::-1].reset_index(drop=True))
+    swapped = joints.rename(columns={"x_intrados_mm": "x_extrados_mm", "x_extrados_mm": "x_intrados_mm",
+                                     "y_intrados_mm": "y_extrados_mm", "y_extrados_mm": "y_intrados_mm"})  # fmt: skip
+    with pytest.raises(CaseError, match="the extrados above"):
+        measured_case(swapped)
+    with pytest.raises(CaseError, match="n_voussoirs must be 15 for 16 measured joints"):
+        arch_geometry(measured_case(joints, base=base).with_overrides({"geometry.n_voussoirs": 14}))
+    survey_file = tmp_path / "joints.csv"
+    joints.to_csv(survey_file, index=False)
+    assert main(["survey", str(survey_file), "--preset", "set2", "--out", str(tmp_path / "arch.toml")]) == 0
+    assert "15 voussoirs between 16 measured joints" in capsys.readouterr().out
+    assert main(["run", "--case", str(tmp_path / "arch.toml"), "--engine", "static", "--no-figures",
+                 "--out", str(tmp_path / "run")]) == 0  # fmt: skip

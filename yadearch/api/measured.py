@@ -1,0 +1,58 @@
+"""A surveyed arch as a case (`ya.measured_case`, `yadearch survey`): the joints' intrados and extrados
+corners read from a CSV into `geometry.joint_points_mm` of shape 'measured' (docs/movements.md,
+"A surveyed arch")."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from yadearch.api.runs import as_case
+from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import arch_geometry
+from yadearch.case.shape import MEASURED, MIN_MEASURED_JOINTS
+from yadearch.errors import CaseError
+
+JOINT_COLUMNS = ("x_intrados_mm", "y_intrados_mm", "x_extrados_mm", "y_extrados_mm")
+
+
+def measured_case(
+    joints: str | Path | pd.DataFrame, base: ArchCase | str = "set2", name: str | None = None
+) -> ArchCase:
+    """`base` (a case or a preset's name: its material, joints, loading and numerics) with the arch of
+    the surveyed `joints` (a CSV file or table with the columns JOINT_COLUMNS, one row a joint, left to
+    right): voussoirs between consecutive joints, `thickness_mm` their mean joint length (the nominal
+    thickness the runaway bound and the snap floor scale with); CaseError for a table it cannot use."""
+    table = _read(joints)
+    missing = [c for c in JOINT_COLUMNS if c not in table.columns]
+    if missing:
+        raise CaseError(f"joints: the table needs the columns {', '.join(JOINT_COLUMNS)}; missing {', '.join(missing)}")
+    rows = table[list(JOINT_COLUMNS)].to_numpy(float)
+    if len(rows) < MIN_MEASURED_JOINTS:
+        raise CaseError(
+            f"joints: a surveyed arch needs {MIN_MEASURED_JOINTS} joints at least (two voussoirs), got {len(rows)}"
+        )
+    lengths = np.hypot(rows[:, 2] - rows[:, 0], rows[:, 3] - rows[:, 1])
+    overrides = {
+        "geometry.shape": MEASURED,
+        "geometry.joint_points_mm": rows.tolist(),
+        "geometry.n_voussoirs": len(rows) - 1,
+        "geometry.thickness_mm": float(lengths.mean()),
+    }
+    if name is not None:
+        overrides["name"] = name
+    case = as_case(base).with_overrides(overrides)
+    arch_geometry(case)  # refuses, in one line, corners that make no arch
+    return case
+
+
+def _read(joints: str | Path | pd.DataFrame) -> pd.DataFrame:
+    """The joints' table, from a file or as given; CaseError for a file that cannot be read."""
+    if isinstance(joints, pd.DataFrame):
+        return joints
+    try:
+        return pd.read_csv(joints)
+    except (OSError, ValueError, pd.errors.ParserError) as exc:
+        raise CaseError(f"joints: cannot read {joints}: {exc}") from None

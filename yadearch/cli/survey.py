@@ -1,0 +1,39 @@
+"""`yadearch survey`: a case TOML of a surveyed arch from its joints' corners in a CSV (a thin client of
+`ya.measured_case`)."""
+
+from __future__ import annotations
+
+import click
+
+from yadearch import api
+from yadearch.api.measured import JOINT_COLUMNS
+from yadearch.atomic import write_text_atomically
+from yadearch.case.names import FILE, output_path
+from yadearch.cli.options import OUT_FILE, case_options, resolve_case
+
+
+@click.command()
+@click.argument("joints", type=click.Path(exists=True, dir_okay=False))
+@case_options(with_kn=True, with_engine=False)
+@click.option("--out", type=OUT_FILE, required=True, help="the case TOML to write (e.g. my_arch.toml)")
+@click.option("--name", default=None, help="the case's name (default: the base case's)")
+def survey(
+    joints: str,
+    preset_name: str | None,
+    case_file: str | None,
+    kn: float | None,
+    settings: tuple[str, ...],
+    out: str,
+    name: str | None,
+) -> None:
+    """Write a case of the surveyed arch in JOINTS (a CSV with the columns x_intrados_mm, y_intrados_mm,
+    x_extrados_mm, y_extrados_mm, one row a joint, left to right) on the material, joints, loading and
+    numerics of --preset/--case/--set; run it with `yadearch run --case OUT`."""
+    case = api.measured_case(joints, base=resolve_case(preset_name, case_file, kn, settings), name=name)
+    path = output_path(out, "--out", FILE)
+    write_text_atomically(path, case.to_toml())
+    geometry = case.geometry
+    click.echo(
+        f"{case.name}: {geometry.n_voussoirs} voussoirs between {len(geometry.joint_points_mm)} measured joints "
+        f"({', '.join(JOINT_COLUMNS)}), mean joint length {geometry.thickness_mm:.2f} mm -> {path}"
+    )
