@@ -12,7 +12,7 @@ import pandas as pd
 from yadearch.case.config import ArchCase, preset
 from yadearch.model import units
 from yadearch.solve.limit_lp import weight_load
-from yadearch.solve.load_lp import live_forces, load_analysis, load_capacity, residual_capacity
+from yadearch.solve.load_lp import live_forces, load_analysis, load_capacity
 from yadearch.solve.mechanisms import mechanism_multiplier
 from yadearch.solve.rigid import at_rest, rigid_arch
 from yadearch.solve.static_path import StaticLoading
@@ -105,13 +105,12 @@ def residual_capacities(base: ArchCase, fractions: Iterable[float] = SETTLEMENT_
     rows = []
     for fraction in fractions:
         at_mm = fraction * du
-        rigid = residual_capacity(base, at_mm) if fraction > 0.0 else load_analysis(base)
-        static = static_row(base, at_mm)
+        static = static_row(base, at_mm)  # with the rigid answer of the same state
         rows.append(
-            {"settlement_over_du": fraction, "settlement_mm": at_mm, "rigid_capacity": rigid.multiplier,
-             "rigid_hinges": rigid.hinge_labels, "static_first_loss": static["static_first_loss"],
+            {"settlement_over_du": fraction, "settlement_mm": at_mm, "rigid_capacity": static["rigid_capacity"],
+             "rigid_hinges": static["rigid_hinges"], "static_first_loss": static["static_first_loss"],
              "static_capacity": static["static_capacity"], "static_hinges": static["static_hinges"],
-             "unit": rigid.unit}
+             "unit": static["unit"]}
         )  # fmt: skip
     return pd.DataFrame(rows)
 

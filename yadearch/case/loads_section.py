@@ -1,0 +1,92 @@
+"""The [loads] section of a case: a live load grown to collapse, its shape, and the backfill's dead loads
+(`yadearch loads`, docs/loads.md)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from yadearch.case.fields import number_meta
+from yadearch.model.loads import LIVE_LOADS, LOAD_SHAPES
+
+
+@dataclass
+class LoadsConfig:
+    """A live load besides the self-weight, grown to collapse by the rigid-block limit analysis
+    (`yadearch loads`, docs/theory.md "Loads"): a vertical load on the extrados, concentrated or spread,
+    or a horizontal acceleration of every voussoir."""
+
+    live_load: str = field(
+        default="none",
+        metadata={
+            "choices": LIVE_LOADS,
+            "predates": "none",
+            "doc": "'vertical' (a load on the extrados at load_position_over_span, spread over "
+            "load_width_mm; its capacity in N) or 'horizontal_acceleration' (each voussoir pushed by "
+            "its weight x the multiplier toward acceleration_toward; its capacity in g); 'none'",
+        },
+    )
+    load_position_over_span: float = field(
+        default=0.25,
+        metadata={
+            **number_meta(
+                0,
+                1,
+                doc="where the vertical load's centre stands: its horizontal distance from the left "
+                "springing's intrados point over the intrados span (0.25: the quarter span)",
+            ),
+            "predates": 0.25,
+        },
+    )
+    load_width_mm: float = field(
+        default=0.0,
+        metadata={
+            **number_meta(
+                0,
+                1e5,
+                doc="horizontal width the vertical load spreads over, uniformly (mm; 0: concentrated; "
+                "the span: a uniform load)",
+            ),
+            "predates": 0.0,
+        },
+    )
+    acceleration_toward: str = field(
+        default="right",
+        metadata={"choices": ("right", "left"), "predates": "right", "doc": "the horizontal acceleration's direction"},
+    )
+    load_shape: str = field(
+        default="uniform",
+        metadata={
+            "choices": LOAD_SHAPES,
+            "predates": "uniform",
+            "doc": "how a spread vertical load is distributed over load_width_mm: 'uniform', 'rising' "
+            "(a triangle from zero at its left edge) or 'falling' (from its peak at the left edge to zero)",
+        },
+    )
+    fill_depth_mm: float = field(
+        default=0.0,
+        metadata={
+            **number_meta(
+                0,
+                1e5,
+                doc="backfill: depth of the level fill above the extrados' highest point (mm; 0: no fill); "
+                "its weight and lateral pressure are dead loads on the voussoirs (docs/loads.md)",
+            ),
+            "predates": 0.0,
+        },
+    )
+    fill_density_g_per_cm3: float = field(
+        default=2.0,
+        metadata={**number_meta(0, 10, low_open=True, doc="the backfill's density (g/cm3)"), "predates": 2.0},
+    )
+    fill_lateral_coefficient: float = field(
+        default=0.0,
+        metadata={
+            **number_meta(
+                0,
+                10,
+                doc="the backfill's lateral pressure coefficient K (horizontal pressure K x its unit weight "
+                "x depth below its surface on the extrados; e.g. 1 - sin(phi) at rest; 0: none)",
+            ),
+            "predates": 0.0,
+        },
+    )
