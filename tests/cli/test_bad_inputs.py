@@ -295,7 +295,7 @@ def no_simulation(monkeypatch):
     def refuse(*args, **kwargs):
         raise SimulationStarted(f"a simulation was started: {args[0] if args else kwargs}")
 
-    monkeypatch.setattr(process, "_run_child", refuse)
+    monkeypatch.setattr(process, "run_child", refuse)
 
 
 def test_there_are_over_a_hundred_probes():

@@ -86,7 +86,7 @@ def no_yade_check(monkeypatch):
 
 def test_a_failed_run_leaves_the_finished_run_in_place(tmp_path, monkeypatch, no_yade_check):
     finished(tmp_path / "run")
-    monkeypatch.setattr(process, "_run_child", FakeChild(ok=False))
+    monkeypatch.setattr(process, "run_child", FakeChild(ok=False))
     with pytest.raises(RunFailedError, match="boom") as error:
         process.run_case_process(preset("set2"), tmp_path / "run")
     assert read_run(tmp_path / "run").summary.du_mm == 87.0
@@ -95,7 +95,7 @@ def test_a_failed_run_leaves_the_finished_run_in_place(tmp_path, monkeypatch, no
 
 def test_a_finished_run_replaces_the_folder_only_when_complete(tmp_path, monkeypatch, no_yade_check):
     finished(tmp_path / "run")
-    monkeypatch.setattr(process, "_run_child", FakeChild(ok=True))
+    monkeypatch.setattr(process, "run_child", FakeChild(ok=True))
     process.run_case_process(preset("set2"), tmp_path / "run")
     assert read_run(tmp_path / "run").summary.du_mm == 42.0
     assert sorted(p.name for p in tmp_path.iterdir()) == ["run"]  # no staging or replaced folder left
@@ -136,7 +136,7 @@ def test_an_interrupted_run_is_not_a_failure_and_stays_pending(tmp_path, monkeyp
         (Path(cmd[-1]) / LOG_FILE).write_text("INTERRUPTED: SIGTERM\n")
         return 130, "error: interrupted (SIGTERM)"
 
-    monkeypatch.setattr(process, "_run_child", interrupted_child)
+    monkeypatch.setattr(process, "run_child", interrupted_child)
     with pytest.raises(RunInterruptedError, match="interrupted"):
         process.run_case_process(preset("set2"), tmp_path / "run")
     outcome = execute(preset("set2"), tmp_path / "other", None)

@@ -125,13 +125,13 @@ def test_a_resume_in_process_trusts_only_complete_folders(tmp_path):
 def test_an_interrupted_local_pool_stops_its_running_simulations_at_once():
     """Ctrl-C or SIGTERM in a campaign: the simulations it waits on get SIGTERM instead of being
     waited for (each run is then recorded as interrupted and resumed by the next campaign)."""
-    from yadearch.launch.process import _run_child
+    from yadearch.launch.process import run_child
 
     started = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
         with local_pool(2) as pool:
             children = [
-                pool.executor.submit(_run_child, ["sleep", "60"], dict(os.environ), None, True) for _ in range(2)
+                pool.executor.submit(run_child, ["sleep", "60"], dict(os.environ), None, True) for _ in range(2)
             ]
             time.sleep(0.5)
             raise KeyboardInterrupt

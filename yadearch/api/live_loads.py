@@ -17,11 +17,13 @@ from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry, standing_parameters
 from yadearch.case.names import check_name, output_path
 from yadearch.errors import CaseError
+from yadearch.launch.load_process import run_load_process
 from yadearch.plotting.load_figure import plot_load_collapse
 from yadearch.plotting.loads import plot_influence, plot_load_path
+from yadearch.results.load_path import load_path_stem, write_load_path
 from yadearch.solve.limit import why_not_standing
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
-from yadearch.solve.load_path import StaticLoadPath, static_load_path
+from yadearch.solve.load_path import LoadPath, static_load_path
 from yadearch.solve.rigid import rigid_arch
 from yadearch.solve.static_state import StaticEngineError
 from yadearch.studies.loads.rigid import influence_line
@@ -47,51 +49,38 @@ def loads(case: ArchCase | str, out: str | Path | None = None, after_mm: float =
     return result
 
 
-def load_path(case: ArchCase | str, out: str | Path | None = None, after_mm: float = 0.0) -> StaticLoadPath:
-    """The live load grown to collapse by the static engine (the same blocks and joints as the DEM,
-    seconds, no YADE), after the case's support movement to `after_mm`: its first loss of stability,
-    capacity and mechanism, its load-displacement curve, and the rigid capacity of the same state.
-    With `out`, writes OUT/NAME_load_path.json, .csv (the curve) and its figure .pdf/.png."""
+LOAD_PATH_ENGINES = ("static", "dem")  # the engines that follow a live load's path
+
+
+def load_path(
+    case: ArchCase | str, out: str | Path | None = None, after_mm: float = 0.0, engine: str = "static"
+) -> LoadPath:
+    """The live load grown to collapse on an engine's path after the case's support movement to
+    `after_mm`: its first loss of stability, capacity and mechanism, its load-displacement curve, and the
+    rigid capacity of the same state. `engine` 'static': the static engine (seconds, no YADE); 'dem':
+    YADE's DEM by load ramps relaxed to equilibrium (a child process, minutes; needs `out`). With `out`,
+    writes OUT/NAME_load_path.json, .csv (the curve) and its figure .pdf/.png."""
     check_arguments(after_mm=after_mm)
+    if engine not in LOAD_PATH_ENGINES:
+        raise CaseError(f"engine must be one of {', '.join(LOAD_PATH_ENGINES)}, got {engine!r}")
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
-    try:
-        result = static_load_path(case, after_mm)
-    except StaticEngineError as exc:
-        raise CaseError(f"{exc} ({standing_parameters(case)}); {why_not_standing(case)}") from None
+    if engine == "dem":
+        if folder is None:
+            raise CaseError("out: the DEM's load path is written to a folder; give out")
+        result = run_load_process(case, folder, after_mm)
+    else:
+        try:
+            result = static_load_path(case, after_mm)
+        except StaticEngineError as exc:
+            raise CaseError(f"{exc} ({standing_parameters(case)}); {why_not_standing(case)}") from None
+        if folder is not None:
+            write_load_path(folder, result, case)
     if folder is not None:
-        stem = folder / f"{case.name}_load_path"
-        write_csv_atomically(stem.with_suffix(".csv"), result.curve)
-        write_text_atomically(stem.with_suffix(".json"), json.dumps(load_path_json(result, case), indent=1) + "\n")
+        stem = load_path_stem(folder, case.name)
         plot_load_path(result.curve, result.capacity, result.first_loss, result.rigid, result.unit, stem)
     return result
-
-
-def load_path_json(result: StaticLoadPath, case: ArchCase) -> dict[str, Any]:
-    """The static engine's load path as summary.json-like fields, with the case that gave it."""
-
-    def number(value: float) -> float | None:
-        return value if math.isfinite(value) else None
-
-    return {
-        "name": case.name,
-        "engine": "static",
-        "live_load": case.loads.live_load,
-        "after_mm": result.after_mm,
-        "unit": result.unit,
-        "outcome": result.outcome,
-        "collapse_multiplier": number(result.capacity),
-        "first_loss_multiplier": number(result.first_loss),
-        "largest_multiplier_tried": result.reach,
-        "hinges_at_collapse": list(result.hinges),
-        "collapse_kind": result.kind,
-        "rigid_multiplier": number(result.rigid),
-        "rigid_hinges": result.rigid_hinges.split(),
-        "rigid_note": result.rigid_note or None,
-        "iterations": result.iterations,
-        "case": case.to_dict(),
-    }
 
 
 def loads_file(case: ArchCase, out: str | Path) -> Path:

@@ -90,6 +90,24 @@ def plan_run(case: ArchCase) -> RunPlan:
     return RunPlan(dt, ramp_s, worst_s, steps)
 
 
+def check_dem_load(case: ArchCase) -> None:
+    """Refuse, before YADE starts, a live-load case the DEM cannot follow: no live load, CGAL contacts
+    (the load's stability test needs the joint elements) or backfill (not applied by the DEM yet)."""
+    if case.loads.live_load == NONE:
+        raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
+    if case.numerics.contact_model != "joint":
+        raise CaseError(
+            f"numerics.contact_model = {case.numerics.contact_model!r}: the DEM's load path needs the joint "
+            "elements (numerics.contact_model = 'joint')"
+        )
+    if case.loads.fill_depth_mm > 0.0:
+        raise CaseError(
+            f"loads.fill_depth_mm = {case.loads.fill_depth_mm:g}: the DEM does not apply backfill yet; "
+            "the static engine does (--engine static)"
+        )
+    plan_run(case.with_overrides({"live_load": NONE}))  # the time step and the run's other checks
+
+
 def _check_imperfections(case: ArchCase, geometry: ArchGeometry) -> None:
     """Imperfections need the joint elements, and a worn edge or an offset face must leave part of the
     joint shared."""

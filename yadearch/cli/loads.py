@@ -14,8 +14,9 @@ from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, resolv
 from yadearch.solve.load_lp import LoadCapacity
 from yadearch.solve.stages import Outcome
 
-RIGID, STATIC = "rigid", "static"
-LOAD_ENGINES = (RIGID, STATIC)
+RIGID, STATIC, DEM = "rigid", "static", "dem"
+LOAD_ENGINES = (RIGID, STATIC, DEM)
+ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
 
 
 @click.command()
@@ -31,7 +32,8 @@ LOAD_ENGINES = (RIGID, STATIC)
     show_default=True,
     help="rigid: rigid-block limit analysis (under a second); static: the load grown to collapse on the "
     "static engine's path (the DEM's blocks and joints, seconds): first loss of stability, collapse, the "
-    "load-displacement curve (NAME_load_path.csv/.json and figure), beside the rigid answer",
+    "load-displacement curve (NAME_load_path.csv/.json and figure), beside the rigid answer; dem: the same "
+    "path in YADE by load ramps relaxed to equilibrium (minutes)",
 )
 @click.option(
     "--after-mm",
@@ -56,10 +58,12 @@ def loads(
     after_mm: float,
     positions: int | None,
 ) -> None:
-    """A live load's capacity, no YADE: the load (N) or acceleration (g) at collapse with the self-weight
-    held, and its mechanism ([loads] of the case, or --set live_load=...), by rigid-block limit analysis
-    or on the static engine's path; --after-mm first moves the support."""
+    """A live load's capacity: the load (N) or acceleration (g) at collapse with the self-weight held, and
+    its mechanism ([loads] of the case, or --set live_load=...), by rigid-block limit analysis, on the
+    static engine's path, or on the DEM's (YADE); --after-mm first moves the support."""
     case = resolve_case(preset_name, case_file, None, settings)
+    if positions is not None and load_engine == DEM:
+        raise click.UsageError("--positions: the influence line is drawn by --engine rigid or static, not dem")
     if positions is not None:
         table = api.load_influence(case, positions, out=out, static=load_engine == STATIC)
         weakest = table.loc[table["collapse_load_N"].idxmin()]
@@ -70,8 +74,8 @@ def loads(
         if case.loads.live_load == "none":
             return
     what = _what(case) + (f" after {after_mm:g} mm of support movement" if after_mm else "")
-    if load_engine == STATIC:
-        _static(case, out, after_mm, what)
+    if load_engine in (STATIC, DEM):
+        _on_path(case, out, after_mm, what, load_engine)
         return
     result = api.loads(case, out=out, after_mm=after_mm)
     outcome = _rigid_outcome(result)
@@ -80,22 +84,24 @@ def loads(
     click.echo(f"{case.name}: {what}: {outcome} -> {loads_file(case, out)}")
 
 
-def _static(case: ArchCase, out: str, after_mm: float, what: str) -> None:
-    """The static engine's load path, said in one line beside the rigid answer."""
-    path = api.load_path(case, out=out, after_mm=after_mm)
+def _on_path(case: ArchCase, out: str, after_mm: float, what: str, engine: str) -> None:
+    """An engine's load path, said in one line beside the rigid answer."""
+    path = api.load_path(case, out=out, after_mm=after_mm, engine=engine)
     unit = path.unit
     if path.outcome == Outcome.COLLAPSE:
         first = f", first loss of stability at {path.first_loss:.4g} {unit}" if path.first_loss < path.capacity else ""
-        outcome = f"collapse at {path.capacity:.4g} {unit} on {' '.join(path.hinges)} ({path.kind}){first}"
+        kind = f" ({path.kind})" if path.kind else ""
+        outcome = f"collapse at {path.capacity:.4g} {unit} on {' '.join(path.hinges)}{kind}{first}"
     elif path.outcome == Outcome.UNRESOLVED:
-        outcome = f"unresolved: the solver found no equilibrium nor runaway past {path.reach:.4g} {unit} (no capacity)"
+        outcome = f"unresolved: no equilibrium nor runaway found past {path.reach:.4g} {unit} (no capacity)"
     else:
         outcome = f"no collapse up to {path.reach:.4g} {unit}"
     rigid = (
         f"{path.rigid:.4g} {unit} on {path.rigid_hinges}" if math.isfinite(path.rigid) else f"none ({path.rigid_note})"
     )
     click.echo(
-        f"{case.name}: {what}: static engine: {outcome}; rigid blocks: {rigid} -> {out}/{case.name}_load_path.json"
+        f"{case.name}: {what}: {ENGINE_NAMES[engine]}: {outcome}; rigid blocks: {rigid} "
+        f"-> {out}/{case.name}_load_path.json"
     )
 
 

@@ -36,6 +36,7 @@ class JointElementContacts:
         self.shear = np.zeros(len(geometry.joints))
         self.slip = np.zeros(len(geometry.joints))  # accumulated sliding beyond the Coulomb cap (m)
         self.last: JointForces | None = None
+        self.external = np.zeros((len(geometry.blocks), 2))  # loads besides the weights (N), for `unbalanced`
 
     def bind(self, pos0: np.ndarray, ori0: np.ndarray, callback: str) -> list[Any]:
         """Keep the block states and weights at hand and return the one engine this model needs."""
@@ -109,13 +110,21 @@ class JointElementContacts:
         forces = self.last if self.last is not None else self._evaluate()
         return forces.point, forces.normal_force, forces.shear_force
 
-    def smallest_stiffness(self) -> float:
-        """The smallest eigenvalue of the free blocks' tangent stiffness now (N/m; `model.stability`)."""
+    def smallest_stiffness(self, turning: np.ndarray | None = None) -> float:
+        """The smallest eigenvalue of the free blocks' tangent stiffness now (N/m; `model.stability`), with
+        the loads' own rotational stiffness `turning` (n_blocks, N m/rad; `model.loads.turning_stiffness`)."""
         poses = self.read_poses()
-        stiffness = tangent_stiffness(
-            self.table, self.law, poses[:, 0:2], poses[:, 2], self.shear, self._free, self.geometry.thickness
-        )
+        length = self.geometry.thickness
+        stiffness = tangent_stiffness(self.table, self.law, poses[:, 0:2], poses[:, 2], self.shear, self._free, length)
+        if turning is not None:
+            rotations = np.arange(2, stiffness.shape[0], 3)  # each free block's x, y, rotation x length
+            stiffness[rotations, rotations] += turning[self._free] / length**2
         return smallest_stiffness(stiffness)
+
+    @property
+    def poses(self) -> np.ndarray:
+        """The poses (n_blocks, 3) the joints were last evaluated at (this step's, once they ran)."""
+        return self._previous if self._previous is not None else self.read_poses()
 
     def joint_slip(self) -> np.ndarray:
         """Sliding each joint has accumulated beyond its Coulomb cap since the start (m)."""
@@ -145,4 +154,5 @@ class JointElementContacts:
         forces = self.last if self.last is not None else self._evaluate()
         newton = next(e for e in O.engines if isinstance(e, NewtonIntegrator))
         gravity = np.array(newton.gravity)[:2]
-        return unbalanced_force(forces, self._free, self._masses[self._free, None] * gravity)
+        weights = self._masses[self._free, None] * gravity
+        return unbalanced_force(forces, self._free, weights + self.external[self._free])

@@ -13,7 +13,7 @@ from yadearch.errors import CANNOT_STAND, RunFailedError
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.model.movement import Movement
-from yadearch.solve.path import PathResult, PathStep, first_snap, follow_path, path_settings
+from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, follow_path, path_settings
 from yadearch.solve.stages import Stage, Verdict
 
 SETTLE_TOLERANCE_FACTOR = 0.01  # a settled state's unbalanced force, relative to equilibrium_tolerance
@@ -21,7 +21,7 @@ HOLD_RETRIES = 1  # a hold that finds neither equilibrium nor runaway goes on th
 STABILITY_HOLDS = 2  # an equilibrium whose static tangent is indefinite is held this many times more
 JOINT_CONTACTS = "joint"  # numerics.contact_model of the joint elements (quiet at rest, unlike CGAL's)
 SNAP_THICKNESS_FRACTION = 0.01  # a relaxation moving a block this x the ring's thickness ...
-# ... and further than the support moved in its increment is a snap: a quasi-static step barely moves them
+# ... and further than its increment moves a block quasi-statically (`LiveArch.reach`) is a snap
 
 
 class PathRecorder(Protocol):
@@ -54,6 +54,8 @@ class LiveArch(Protocol):
 
     def smallest_stiffness(self) -> float: ...  # the static tangent's smallest eigenvalue at the poses (N/m)
 
+    def reach(self, increment: float) -> float: ...  # how far a path increment moves a block quasi-statically (m)
+
     @property
     def total_steps(self) -> int: ...
 
@@ -84,7 +86,7 @@ class EquilibriumPath:
 
     at_rest_when_accepted = False  # a DEM state is accepted still moving slowly: settled before du is bracketed
 
-    def __init__(self, arch: LiveArch):
+    def __init__(self, arch: LiveArch, load_settings: PathSettings | None = None, unit: str = "mm"):
         self.arch = arch
         self.num = arch.case.numerics
         self._accepted: list[dict] = []  # snapshots of the equilibrium states of the loading path
@@ -102,7 +104,11 @@ class EquilibriumPath:
         }
         self.snaps: list[dict] = []  # relaxations that carried the arch to another branch
         self._start = 0.0  # where the last increment started (m)
-        self.settings = path_settings(self.num, path_end_mm(arch.case, arch.movement))
+        # the path's parameter: the support's displacement, or with `load_settings` a live load's
+        # multiplier (in `unit`), the supports held
+        self.moves_support = load_settings is None
+        self.settings = load_settings or path_settings(self.num, path_end_mm(arch.case, arch.movement))
+        self.unit = unit
 
     def try_increment(self, target: float) -> Verdict:
         """From the last accepted equilibrium state, move the support to `target` and relax there
@@ -136,7 +142,7 @@ class EquilibriumPath:
         self.relaxations["increment_mm"].append(units.to_mm(increment))
         self.relaxations["move_mm"].append(units.to_mm(self.arch.hold_move))
         floor = SNAP_THICKNESS_FRACTION * units.mm(self.arch.case.geometry.thickness_mm)
-        if self.arch.hold_move > max(floor, increment):
+        if self.arch.hold_move > max(floor, self.arch.reach(increment)):
             self.snaps.append(
                 {
                     "fold_mm": [units.to_mm(self._start), units.to_mm(self.arch.delta())],
@@ -163,9 +169,7 @@ class EquilibriumPath:
             still_speed=units.mm(self.num.settle_speed_mm_per_s),
             tolerance=SETTLE_TOLERANCE_FACTOR * self.num.equilibrium_tolerance,
         )
-        self.arch.log(
-            f"[{self.arch.case.name}] settling the state at {units.to_mm(self.arch.delta()):.3f} mm: {verdict}"
-        )
+        self.arch.log(f"[{self.arch.case.name}] settling the state at {self._said(self.arch.delta())}: {verdict}")
         if verdict == Verdict.RUNAWAY:
             self._failures[self.arch.delta()] = self.arch.snapshot()
             self._at_accepted = False
@@ -197,9 +201,13 @@ class EquilibriumPath:
 
     def _log_increment(self, step: PathStep) -> None:
         self.arch.log(
-            f"[{self.arch.case.name}] increment {units.to_mm(step.start):7.3f} -> "
-            f"{units.to_mm(step.target):7.3f} mm: {step.verdict} (step {self.arch.total_steps})"
+            f"[{self.arch.case.name}] increment {self._said(step.start)} -> {self._said(step.target)}: "
+            f"{step.verdict} (step {self.arch.total_steps})"
         )
+
+    def _said(self, value: float) -> str:
+        """A value of the path's parameter with its unit, as the log writes it."""
+        return f"{units.to_mm(value):7.3f} mm" if self.moves_support else f"{value:7.4g} {self.unit}"
 
     def collapse_state(self, upper: float) -> list[Hinge]:
         """Show the mechanism: the state of the failure at du's upper bracket end `upper`, where a

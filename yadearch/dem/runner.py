@@ -204,6 +204,10 @@ class Runner:
         """The smallest eigenvalue of the free blocks' tangent stiffness at the scene's poses (N/m)."""
         return self.scene.contacts.smallest_stiffness()
 
+    def reach(self, increment: float) -> float:
+        """A support increment moves the blocks it carries at most by as much (m)."""
+        return abs(increment)
+
     def hold(
         self,
         runaway: float | None = None,
@@ -261,8 +265,12 @@ class Runner:
     def move_to(self, delta: float) -> None:
         """Move the support to `delta` along the trapezoidal profile."""
         self.driver.target = delta
+        self.drive(lambda: self.driver.reached() and self.driver.current_speed == 0.0)
+
+    def drive(self, done: Callable[[], bool]) -> None:
+        """Step at the loading's damping until `done()`: a move of the support, or of a live load."""
         self._set_damping(self.num.damping)
-        while not self.driver.reached() or self.driver.current_speed > 0.0:
+        while not done():
             self._run_steps(CHECK_EVERY_STEPS // 5)
             self._voussoir_positions()  # raises on a NaN
 

@@ -39,7 +39,7 @@ def stop_children() -> None:
     stop_workers()
 
 
-def _run_child(cmd: list[str], env: dict[str, str], timeout_s: float | None, quiet: bool) -> tuple[int, str]:
+def run_child(cmd: list[str], env: dict[str, str], timeout_s: float | None, quiet: bool) -> tuple[int, str]:
     """Run `cmd` to its end (killed after `timeout_s`: TimeoutExpired), known to `stop_children`
     meanwhile: its exit code and standard error."""
     # its own session: a terminal's Ctrl-C (SIGINT to the foreground group) reaches this process only,
@@ -134,7 +134,7 @@ def _run_locked(
                     _run_static_here(case_file, staging, quiet) if here else run_static(case_file, staging, timeout_s)
                 )
             else:
-                returncode, stderr = _run_child(cmd, env, timeout_s, quiet)
+                returncode, stderr = run_child(cmd, env, timeout_s, quiet)
         finally:
             _remove_scratch(staging)
     except subprocess.TimeoutExpired:

@@ -86,6 +86,32 @@ def block_loads(points: LoadPoints, centroids: np.ndarray, n_blocks: int) -> np.
     return loads
 
 
+def turned_moments(loads: np.ndarray, turn: np.ndarray) -> np.ndarray:
+    """Each block's moment about its centroid of its `loads` (`block_loads`) with the arms turned by the
+    block's rotation `turn` (rad): cos(t) m0 - sin(t) d0."""
+    return np.cos(turn) * loads[:, 2] - np.sin(turn) * loads[:, 3]
+
+
+def turning_stiffness(loads: np.ndarray, turn: np.ndarray) -> np.ndarray:
+    """Each block's rotational stiffness from its `loads` (N m/rad): minus the change of
+    `turned_moments` with the rotation, sin(t) m0 + cos(t) d0 (a load above the centroid softens it)."""
+    return np.sin(turn) * loads[:, 2] + np.cos(turn) * loads[:, 3]
+
+
+def load_displacement(
+    loads: np.ndarray, pos0: np.ndarray, turn0: np.ndarray, pos: np.ndarray, turn: np.ndarray
+) -> float:
+    """The work of `loads` (multiplier 1) from the poses `pos0`, `turn0` to `pos`, `turn` over the sum of
+    its forces' magnitudes: the mean displacement of the load's points along their forces (m)."""
+    magnitude = float(np.hypot(loads[:, 0], loads[:, 1]).sum())
+    if magnitude == 0.0:
+        return 0.0
+    work = (pos - pos0) * loads[:, 0:2]
+    # the turned moment integrated over the turn: m0 (sin t - sin t0) + d0 (cos t - cos t0)
+    turning = loads[:, 2] * (np.sin(turn) - np.sin(turn0)) + loads[:, 3] * (np.cos(turn) - np.cos(turn0))
+    return float((work.sum() + turning.sum()) / magnitude)
+
+
 def _extrados_shares(
     geometry: ArchGeometry, position: float, width: float, shape: str = UNIFORM
 ) -> list[tuple[int, float, np.ndarray]]:

@@ -17,7 +17,7 @@ import pandas as pd
 from yadearch.case.config import ArchCase
 from yadearch.errors import CaseError
 from yadearch.model import units
-from yadearch.model.loads import NONE, UNITS, VERTICAL
+from yadearch.model.loads import NONE, UNITS, VERTICAL, load_displacement
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
 from yadearch.solve.path import PathResult, PathSettings, first_snap, follow_path, path_settings
 from yadearch.solve.rigid import LimitError
@@ -33,10 +33,11 @@ REACH = 4.0  # ... and the path stops, the arch standing, at this many times the
 
 
 @dataclass(frozen=True)
-class StaticLoadPath:
-    """The static engine's answer for a live load: the multiplier at the end of the path (`capacity`,
-    NaN unless it collapsed) and at its first loss of stability, in `unit`; the outcome; the collapse
-    mode's hinges and kind; the load-displacement curve; after a support movement of `after_mm`."""
+class LoadPath:
+    """An engine's answer for a live load (the static engine's, or the DEM's: `engine`): the multiplier
+    at the end of the path (`capacity`, NaN unless it collapsed) and at its first loss of stability, in
+    `unit`; the outcome; the collapse's hinges and kind; the load-displacement curve; after a support
+    movement of `after_mm`."""
 
     capacity: float
     first_loss: float
@@ -47,10 +48,11 @@ class StaticLoadPath:
     curve: pd.DataFrame
     after_mm: float
     reach: float  # the largest multiplier the path tried (the arch stands at least to it without collapse)
-    iterations: int
+    iterations: int  # the static engine's Newton iterations, or the DEM's time steps
     rigid: float  # the rigid-block capacity of the same state (`solve.load_lp`; NaN where there is none)
     rigid_hinges: str
     rigid_note: str = ""  # why there is no rigid answer, where there is none
+    engine: str = "static"
 
 
 def load_settings(scale: float, growth: float) -> PathSettings:
@@ -64,7 +66,7 @@ def load_settings(scale: float, growth: float) -> PathSettings:
     )
 
 
-def static_load_path(case: ArchCase, after_mm: float = 0.0, scale: float | None = None) -> StaticLoadPath:
+def static_load_path(case: ArchCase, after_mm: float = 0.0, scale: float | None = None) -> LoadPath:
     """The live load of `case` grown to collapse on the static engine's path, the self-weight held,
     after the case's support movement to `after_mm` (0: at rest); `scale` (N or g; default
     `load_scale`) sets the increments. CaseError for an arch without a live load, or one that
@@ -86,9 +88,9 @@ def static_load_path(case: ArchCase, after_mm: float = 0.0, scale: float | None 
     path = follow_path(loading, loading.settings)
     mode = loading.fold_mode(path.upper) if path.collapsed else None
     first = first_snap(loading.snaps)
-    return StaticLoadPath(
+    return LoadPath(
         capacity=path.du if path.collapsed else math.nan,
-        first_loss=_first_loss(path, first),
+        first_loss=first_loss_multiplier(path, first),
         outcome=path.outcome,
         unit=UNITS[case.loads.live_load],
         hinges=tuple(mode.labels) if mode is not None else (),
@@ -97,11 +99,11 @@ def static_load_path(case: ArchCase, after_mm: float = 0.0, scale: float | None 
         after_mm=after_mm,
         reach=path.lower,
         iterations=loading.iterations,
-        **_rigid(case, after_mm, at_rest),
+        **rigid_answer(case, after_mm, at_rest),
     )
 
 
-def _rigid(case: ArchCase, after_mm: float, at_rest: LoadCapacity) -> dict:
+def rigid_answer(case: ArchCase, after_mm: float, at_rest: LoadCapacity) -> dict:
     """The rigid-block capacity of the same state: at rest, or in the rigid march's state after the
     movement (NaN where the rigid arch collapses before it)."""
     try:
@@ -123,7 +125,11 @@ def load_scale(rigid: LoadCapacity) -> float:
 def _move_supports(loading: StaticLoading, case: ArchCase, after_mm: float) -> None:
     """The support movement to `after_mm` along its path, which the arch must carry in equilibrium."""
     loading.settings = path_settings(case.numerics, after_mm)
-    moved = loading.follow()
+    check_carried(loading.follow(), after_mm)
+
+
+def check_carried(moved: PathResult, after_mm: float) -> None:
+    """CaseError unless the support movement's path `moved` stood in equilibrium up to `after_mm`."""
     if moved.outcome != Outcome.STANDS or moved.lower < units.mm(after_mm):
         where = f"{units.to_mm(moved.du):.2f} mm" if moved.collapsed else f"{units.to_mm(moved.lower):.2f} mm"
         raise CaseError(
@@ -131,7 +137,7 @@ def _move_supports(loading: StaticLoading, case: ArchCase, after_mm: float) -> N
         )
 
 
-def _first_loss(path: PathResult, first: tuple[float, float] | None) -> float:
+def first_loss_multiplier(path: PathResult, first: tuple[float, float] | None) -> float:
     """The first loss of stability's multiplier: the first snap's fold, or the collapse's own fold."""
     if first is not None:
         return 0.5 * (first[0] + first[1])
@@ -154,15 +160,7 @@ def load_curve(arch: StaticArch, start: StaticState, states: list[StaticState]) 
 
 
 def live_work(arch: StaticArch, u0: np.ndarray, u: np.ndarray) -> float:
-    """The work of the live load of multiplier 1 from `u0` to `u` over the sum of its forces'
-    magnitudes: the mean displacement of its points along their forces (m)."""
-    live = arch.live
-    magnitude = float(np.hypot(live[:, 0], live[:, 1]).sum())
-    if magnitude == 0.0:
-        return 0.0
+    """The live load's displacement along its forces from `u0` to `u` (m; `model.loads.load_displacement`)."""
     pos0, turn0 = arch.poses(u0)
     pos, turn = arch.poses(u)
-    # the moment c m0 - s d0 integrated over the turn: m0 (sin t - sin t0) + d0 (cos t - cos t0)
-    work = (pos - pos0) * live[:, 0:2]
-    turning = live[:, 2] * (np.sin(turn) - np.sin(turn0)) + live[:, 3] * (np.cos(turn) - np.cos(turn0))
-    return float((work.sum() + turning.sum()) / magnitude)
+    return load_displacement(arch.live, pos0, turn0, pos, turn)

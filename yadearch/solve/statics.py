@@ -23,7 +23,7 @@ from yadearch.model.block_state import assemble_band, free_state, kernel_table
 from yadearch.model.geometry import ArchGeometry, block_volume
 from yadearch.model.joint_law import JointLaw, JointTable, joint_table
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, joint_tangent
-from yadearch.model.loads import block_loads, live_load_points
+from yadearch.model.loads import block_loads, live_load_points, turned_moments
 from yadearch.model.movement import Movement
 from yadearch.solve import banded
 from yadearch.solve.newton_kernel import descent_kernel, newton_kernel
@@ -91,7 +91,7 @@ class StaticArch:
         with the arm turned by each block's rotation, / `length`)."""
         turn = self.poses(u)[1][1:-1]
         live = self.live[1:-1]
-        moment = np.cos(turn) * live[:, 2] - np.sin(turn) * live[:, 3]
+        moment = turned_moments(live, turn)
         return np.column_stack([live[:, 0], live[:, 1], moment / self.length]).ravel()
 
     def at_rest(self) -> np.ndarray:

@@ -1,0 +1,75 @@
+"""The live load on the DEM's blocks (YADE layer): the case's live load (`model.loads`) times a
+multiplier that ramps to a target at a set rate, applied every step at its points on the blocks with
+the arms turned by the blocks' rotations, as the static engine applies it."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from yadearch.dem.joint_elements import JointElementContacts
+from yadearch.dem.scene import CALLBACK_NAME, ArchScene
+from yadearch.model.loads import turned_moments, turning_stiffness
+
+LOAD_DRIVER_LABEL = "yadearch_live_load"
+LOAD_CALLBACK = f"{CALLBACK_NAME}_load"  # the driver's name in __main__, which its PyRunner calls
+
+
+class LoadDriver:
+    """Applies `loads` (n_blocks, 4: force x, force y and the arm terms m0, d0 of a multiplier of 1,
+    `model.loads.block_loads`) x `multiplier`, which moves toward `target` at `rate` per second."""
+
+    def __init__(self, scene: ArchScene, loads: np.ndarray):
+        if not isinstance(scene.contacts, JointElementContacts):
+            raise TypeError("a live load needs the joint elements (numerics.contact_model = 'joint')")
+        self.contacts: JointElementContacts = scene.contacts
+        self.loads = loads
+        self.loaded = np.flatnonzero(np.any(loads != 0.0, axis=1))
+        self.body_ids = [scene.body_ids[b] for b in self.loaded]
+        self.multiplier = 0.0
+        self.target = 0.0
+        self.rate = 0.0  # multiplier per second
+
+    def engine(self) -> Any:
+        """The PyRunner that calls `step` every step (before the integrator)."""
+        from yade.wrapper import PyRunner
+
+        return PyRunner(command=f"{LOAD_CALLBACK}.step()", iterPeriod=1, label=LOAD_DRIVER_LABEL)
+
+    def ramp_to(self, target: float, rate: float) -> None:
+        """Move the multiplier to `target` at `rate` per second from the next step."""
+        self.target, self.rate = target, rate
+
+    def set(self, multiplier: float) -> None:
+        """Put the multiplier at `multiplier` at once (a restored state's)."""
+        self.multiplier = self.target = multiplier
+        self.contacts.external = multiplier * self.loads[:, 0:2]
+
+    def reached(self) -> bool:
+        return self.multiplier == self.target
+
+    def step(self) -> None:
+        """This step's multiplier, and the load's forces and turned moments added to the blocks."""
+        from yade import O
+
+        if self.multiplier != self.target:
+            change = self.rate * O.dt
+            if abs(self.target - self.multiplier) <= change:
+                self.multiplier = self.target
+            else:
+                self.multiplier += change if self.target > self.multiplier else -change
+            self.contacts.external = self.multiplier * self.loads[:, 0:2]
+        if self.multiplier == 0.0:
+            return
+        loads = self.loads[self.loaded]
+        torque = self.multiplier * turned_moments(loads, self.contacts.poses[self.loaded, 2])
+        forces = self.multiplier * loads[:, 0:2]
+        add_force, add_torque = O.forces.addF, O.forces.addT
+        for body_id, (fx, fy), tz in zip(self.body_ids, forces.tolist(), torque.tolist()):
+            add_force(body_id, (fx, fy, 0.0))
+            add_torque(body_id, (0.0, 0.0, tz))
+
+    def turning(self) -> np.ndarray:
+        """The load's own rotational stiffness on each block now (N m/rad), for the stability test."""
+        return self.multiplier * turning_stiffness(self.loads, self.contacts.poses[:, 2])

@@ -1,0 +1,214 @@
+"""A live load grown to collapse in YADE, the DEM's answer to `yadearch loads --engine dem`: the
+self-weight, optionally the support movement to `after_mm`, then the live load's multiplier as the
+equilibrium path's parameter with the supports held, by ramps each relaxed to equilibrium
+(`dem.loading`), with the static engine's increments, bracket and definitions (`solve.load_path`)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import live_load
+from yadearch.dem.live_load import LOAD_CALLBACK, LoadDriver
+from yadearch.dem.loading import EquilibriumPath
+from yadearch.dem.recorder import Records
+from yadearch.dem.runner import Runner
+from yadearch.errors import CaseError
+from yadearch.model import units
+from yadearch.model.hinges import Hinge
+from yadearch.model.loads import NONE, UNITS, block_loads, live_load_points, load_displacement
+from yadearch.model.movement import Movement
+from yadearch.results.summary import HingeRef
+from yadearch.solve.load_lp import load_analysis
+from yadearch.solve.load_path import (
+    LoadPath,
+    check_carried,
+    first_loss_multiplier,
+    load_scale,
+    load_settings,
+    rigid_answer,
+)
+from yadearch.solve.path import first_snap, path_settings
+from yadearch.solve.stages import Stage, Verdict
+
+DEM = "dem"
+
+
+class LoadedArch:
+    """A live DEM scene whose path parameter is the live load's multiplier, the supports held (the
+    `dem.loading.LiveArch` the equilibrium path drives); it records the load-displacement curve."""
+
+    def __init__(self, runner: Runner, loads: np.ndarray, full_rate: float):
+        from yade import O
+
+        import __main__
+
+        self.runner = runner
+        self.driver = LoadDriver(runner.scene, loads)
+        setattr(__main__, LOAD_CALLBACK, self.driver)
+        engines = list(O.engines)
+        engines.insert(len(engines) - 1, self.driver.engine())  # before the integrator
+        O.engines = engines
+        self.full_rate = full_rate  # multiplier per second of the largest increment's ramp
+        self.loads = loads
+        length = runner.scene.geometry.thickness  # the rotations' lever in the tangent (`model.stability`)
+        self.force_norm = float(np.linalg.norm(np.column_stack([loads[:, 0:2], loads[:, 2] / length])))
+        self._start = self.driver.contacts.poses.copy()
+        self.curve: list[dict[str, float]] = [self._point()]  # the path's start, then each equilibrium
+
+    # ---- the live scene, as the path sees it ----------------------------------------------
+    @property
+    def stage(self) -> Stage:
+        return self.runner.stage
+
+    @stage.setter
+    def stage(self, value: Stage) -> None:
+        self.runner.stage = value
+
+    @property
+    def case(self) -> ArchCase:
+        return self.runner.case
+
+    @property
+    def movement(self) -> Movement:
+        return self.runner.movement
+
+    @property
+    def recorder(self) -> LoadedArch:
+        return self
+
+    @property
+    def hold_move(self) -> float:
+        return self.runner.hold_move
+
+    @property
+    def total_steps(self) -> int:
+        return self.runner.total_steps
+
+    @property
+    def log(self) -> Callable[[str], None]:
+        return self.runner.log
+
+    def smallest_stiffness(self) -> float:
+        """The static tangent's smallest eigenvalue at the poses, the load's own stiffness included."""
+        return self.driver.contacts.smallest_stiffness(self.driver.turning())
+
+    def reach(self, increment: float) -> float:
+        """A load increment moves the blocks quasi-statically at most by its generalised force over the
+        last equilibrium's smallest stiffness (m; unbounded where that was not positive)."""
+        softest = self.curve[-1]["min_stiffness_N_per_m"]
+        return abs(increment) * self.force_norm / softest if softest > 0.0 else math.inf
+
+    def delta(self) -> float:
+        return self.driver.multiplier
+
+    def snapshot(self) -> dict[str, Any]:
+        return {"scene": self.runner.snapshot(), "multiplier": self.driver.multiplier}
+
+    def restore(self, snapshot: dict[str, Any]) -> None:
+        self.runner.restore(snapshot["scene"])
+        self.driver.set(snapshot["multiplier"])
+
+    def move_support(self, target: float, speed_fraction: float) -> None:
+        """Ramp the live load to `target` (the supports held) at `speed_fraction` of the full rate."""
+        self.driver.ramp_to(target, self.full_rate * speed_fraction)
+        self.runner.drive(self.driver.reached)
+
+    def hold(
+        self,
+        runaway: float | None = None,
+        max_s: float | None = None,
+        from_rest: bool = True,
+        still_speed: float | None = None,
+        tolerance: float | None = None,
+    ) -> Verdict:
+        return self.runner.hold(runaway, max_s, from_rest, still_speed, tolerance)
+
+    # ---- records: the runner's, and a point of the curve for each equilibrium ------------
+    def record_equilibrium(self) -> tuple[tuple[int, int, int], list[Hinge]]:
+        mark, hinges = self.runner.recorder.record_equilibrium()
+        self.curve.append(self._point())
+        return mark, hinges
+
+    def _point(self) -> dict[str, float]:
+        """The load-displacement curve's point of the scene now (the columns of the static engine's)."""
+        poses = self.driver.contacts.poses
+        moved = load_displacement(self.loads, self._start[:, 0:2], self._start[:, 2], poses[:, 0:2], poses[:, 2])
+        return {
+            "multiplier": self.driver.multiplier,
+            "load_displacement_mm": units.to_mm(moved),
+            "min_stiffness_N_per_m": self.smallest_stiffness(),
+        }
+
+    def discard_since(self, mark: tuple[int, int, int]) -> None:
+        self.runner.recorder.discard_since(mark)
+        self.curve.pop()
+
+    def record_collapse(self) -> list[Hinge]:
+        return self.runner.recorder.record_collapse()
+
+
+def scene_live_loads(runner: Runner) -> np.ndarray:
+    """The case's live load of multiplier 1 on the scene's blocks (n_blocks, 4; `model.loads`), about
+    the bodies' own centroids and with their own weights (an acceleration pushes each by its weight)."""
+    scene = runner.scene
+    centroids = scene.pos0[:, 0:2]
+    weight = np.array([state.mass for state in scene.states]) * runner.case.loading.gravity_m_per_s2
+    points = live_load_points(scene.geometry, centroids, weight, live_load(runner.case, scene.geometry))
+    return block_loads(points, centroids, len(weight))
+
+
+def dem_load_path(
+    case: ArchCase, after_mm: float = 0.0, log: Callable[[str], None] = print
+) -> tuple[LoadPath, Records]:
+    """The live load of `case` grown to collapse in YADE after the support movement to `after_mm`: the
+    same answer as `solve.load_path.static_load_path` (its `iterations` the DEM's steps), and the
+    run's records (series, joints, snapshots). CaseError as the static engine raises it."""
+    if case.loads.live_load == NONE:
+        raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
+    at_rest = load_analysis(case)
+    scale = load_scale(at_rest)
+    settings = load_settings(scale, case.numerics.increment_growth)
+    # the largest load increment ramps as long as the largest support increment moves
+    full_rate = settings.max_increment * case.support_speed_mm_per_s / case.numerics.max_increment_mm
+    unit = UNITS[case.loads.live_load]
+    runner = Runner(case, log=log)
+    try:
+        runner.selfweight()
+        if after_mm > 0.0:
+            _move_supports(runner, after_mm)
+        arch = LoadedArch(runner, scene_live_loads(runner), full_rate)
+        loading = EquilibriumPath(arch, settings, unit)
+        path = loading.follow()
+        hinges = loading.collapse_state(path.upper) if path.collapsed else []
+    finally:
+        runner.close()
+    log(f"[{case.name}] {path.outcome} at {path.du if path.collapsed else path.lower:.5g} {unit}")
+    labels = tuple(HingeRef.of(h).label for h in hinges)
+    result = LoadPath(
+        capacity=path.du if path.collapsed else float("nan"),
+        first_loss=first_loss_multiplier(path, first_snap(loading.snaps)),
+        outcome=path.outcome,
+        unit=unit,
+        hinges=labels,
+        kind=None,
+        curve=pd.DataFrame(arch.curve),
+        after_mm=after_mm,
+        reach=path.lower,
+        iterations=runner.total_steps,
+        engine=DEM,
+        **rigid_answer(case, after_mm, at_rest),
+    )
+    return result, runner.records
+
+
+def _move_supports(runner: Runner, after_mm: float) -> None:
+    """The support movement to `after_mm` along its path, which the arch must carry in equilibrium."""
+    moving = EquilibriumPath(runner)
+    moving.settings = path_settings(runner.case.numerics, after_mm)
+    check_carried(moving.follow(), after_mm)

@@ -1,0 +1,48 @@
+"""One live load's path in YADE in this process: `python -m yadearch.dem.load_simulate CASE.toml OUT_DIR
+AFTER_MM`, writing OUT_DIR/NAME_load_path.json, .csv and .log (`results.load_path`). Exit code 0: written;
+1: the run failed (reason on stderr and in the log)."""
+
+from __future__ import annotations
+
+import sys
+import time
+from pathlib import Path
+
+from yadearch.case.config import load_case
+from yadearch.errors import YadearchError
+from yadearch.results.load_path import load_path_stem, write_load_path
+
+
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if len(argv) != 3:
+        print("usage: python -m yadearch.dem.load_simulate CASE.toml OUT_DIR AFTER_MM", file=sys.stderr)
+        return 2
+    from yadearch.dem.load_ramp import dem_load_path
+    from yadearch.dem.simulate import die_with_parent
+    from yadearch.dem.yade_env import import_yade
+
+    die_with_parent()
+    case, out, after_mm = load_case(argv[0]), Path(argv[1]), float(argv[2])
+    out.mkdir(parents=True, exist_ok=True)
+    with load_path_stem(out, case.name).with_suffix(".log").open("w") as log_file:
+
+        def log(line: str) -> None:
+            stamped = f"{time.strftime('%H:%M:%S')} {line}"
+            print(stamped, flush=True)
+            log_file.write(stamped + "\n")
+            log_file.flush()
+
+        try:
+            import_yade(case.numerics.threads)
+            result, _ = dem_load_path(case, after_mm, log)
+        except YadearchError as exc:
+            log(f"FAILED: {exc}")
+            print(f"error: {exc}", file=sys.stderr)
+            return 1
+        write_load_path(out, result, case)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

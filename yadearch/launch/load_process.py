@@ -1,0 +1,55 @@
+"""Launch a live load's DEM path in its own Python process (`yadearch.dem.load_simulate`) and read its
+answer back: OUT/NAME_load_path.json, .csv and .log, moved into OUT only once complete."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+from yadearch.case.config import ArchCase
+from yadearch.case.plan import check_dem_load
+from yadearch.errors import RunFailedError
+from yadearch.launch.process import check_yade_installed, exit_reason, run_child
+from yadearch.results.load_path import load_path_stem, read_load_path
+from yadearch.results.rundir import CASE_FILE
+from yadearch.solve.load_path import LoadPath
+
+LOAD_PATH_FILES = (".json", ".csv", ".log")
+
+
+def run_load_process(
+    case: ArchCase, out: Path, after_mm: float = 0.0, timeout_s: float | None = None, quiet: bool = True
+) -> LoadPath:
+    """The DEM's path of `case`'s live load after its support movement to `after_mm`, computed in a
+    child process and written to `out`; RunFailedError with the reason if it fails (its log is kept)."""
+    check_dem_load(case)
+    check_yade_installed()
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=f".{case.name}_load_", dir=out))
+    try:
+        case_file = staging / CASE_FILE
+        case_file.write_text(case.to_toml())
+        cmd = [sys.executable, "-m", "yadearch.dem.load_simulate", str(case_file), str(staging), repr(after_mm)]
+        env = dict(os.environ, OMP_NUM_THREADS=str(case.numerics.threads))
+        try:
+            returncode, stderr = run_child(cmd, env, timeout_s, quiet)
+        except subprocess.TimeoutExpired:
+            raise RunFailedError(f"the load path of {case.name!r} timed out after {timeout_s:.0f} s") from None
+        staged = load_path_stem(staging, case.name)
+        if returncode != 0 or not staged.with_suffix(".json").is_file():
+            lines = [line for line in stderr.splitlines() if line.startswith("error: ")]
+            reason = lines[-1].removeprefix("error: ") if lines else exit_reason(returncode)
+            log = load_path_stem(out, case.name).with_suffix(".log")
+            if staged.with_suffix(".log").is_file():
+                shutil.copy(staged.with_suffix(".log"), log)
+            raise RunFailedError(f"the load path of {case.name!r} failed: {reason} (see {log})")
+        for suffix in LOAD_PATH_FILES:
+            os.replace(staged.with_suffix(suffix), load_path_stem(out, case.name).with_suffix(suffix))
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
+    return read_load_path(out, case.name)

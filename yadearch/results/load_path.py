@@ -1,0 +1,83 @@
+"""A live load's path on disk (either engine): OUT/NAME_load_path.json (the answer and the case that
+gave it) and OUT/NAME_load_path.csv (the load-displacement curve), written atomically and read back."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+from yadearch.atomic import write_csv_atomically, write_text_atomically
+from yadearch.case.config import ArchCase
+from yadearch.solve.load_path import LoadPath
+
+LOAD_PATH_SUFFIX = "_load_path"
+
+
+def load_path_stem(folder: Path, name: str) -> Path:
+    """OUT/NAME_load_path, the stem of the path's files and figure."""
+    return Path(folder) / f"{name}{LOAD_PATH_SUFFIX}"
+
+
+def load_path_json(result: LoadPath, case: ArchCase) -> dict[str, Any]:
+    """A load path as summary.json-like fields, with the case that gave it."""
+
+    def number(value: float) -> float | None:
+        return value if math.isfinite(value) else None
+
+    return {
+        "name": case.name,
+        "engine": result.engine,
+        "live_load": case.loads.live_load,
+        "after_mm": result.after_mm,
+        "unit": result.unit,
+        "outcome": result.outcome,
+        "collapse_multiplier": number(result.capacity),
+        "first_loss_multiplier": number(result.first_loss),
+        "largest_multiplier_tried": result.reach,
+        "hinges_at_collapse": list(result.hinges),
+        "collapse_kind": result.kind,
+        "rigid_multiplier": number(result.rigid),
+        "rigid_hinges": result.rigid_hinges.split(),
+        "rigid_note": result.rigid_note or None,
+        "iterations" if result.engine == "static" else "steps": result.iterations,
+        "case": case.to_dict(),
+    }
+
+
+def write_load_path(folder: Path, result: LoadPath, case: ArchCase) -> Path:
+    """Write the path's JSON and curve CSV in `folder`; returns their stem."""
+    stem = load_path_stem(folder, case.name)
+    write_csv_atomically(stem.with_suffix(".csv"), result.curve)
+    write_text_atomically(stem.with_suffix(".json"), json.dumps(load_path_json(result, case), indent=1) + "\n")
+    return stem
+
+
+def read_load_path(folder: Path, name: str) -> LoadPath:
+    """The load path `write_load_path` wrote for the case `name` in `folder`."""
+    stem = load_path_stem(folder, name)
+    data = json.loads(stem.with_suffix(".json").read_text())
+
+    def number(key: str) -> float:
+        value = data[key]
+        return math.nan if value is None else float(value)
+
+    return LoadPath(
+        capacity=number("collapse_multiplier"),
+        first_loss=number("first_loss_multiplier"),
+        outcome=data["outcome"],
+        unit=data["unit"],
+        hinges=tuple(data["hinges_at_collapse"]),
+        kind=data["collapse_kind"],
+        curve=pd.read_csv(stem.with_suffix(".csv")),
+        after_mm=float(data["after_mm"]),
+        reach=float(data["largest_multiplier_tried"]),
+        iterations=int(data.get("iterations", data.get("steps", 0))),
+        rigid=number("rigid_multiplier"),
+        rigid_hinges=" ".join(data["rigid_hinges"]),
+        rigid_note=data["rigid_note"] or "",
+        engine=data["engine"],
+    )
