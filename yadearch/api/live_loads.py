@@ -20,7 +20,7 @@ from yadearch.errors import CaseError
 from yadearch.launch.load_process import run_load_process
 from yadearch.plotting.load_figure import plot_load_collapse
 from yadearch.plotting.loads import plot_influence, plot_load_path
-from yadearch.results.load_path import load_path_stem, write_load_path
+from yadearch.results.load_path import load_path_file, write_load_path
 from yadearch.solve.limit import why_not_standing
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
 from yadearch.solve.load_path import LoadPath, static_load_path
@@ -78,8 +78,8 @@ def load_path(
         if folder is not None:
             write_load_path(folder, result, case)
     if folder is not None:
-        stem = load_path_stem(folder, case.name)
-        plot_load_path(result.curve, result.capacity, result.first_loss, result.rigid, result.unit, stem)
+        stem = load_path_file(folder, case.name)
+        plot_load_path(result, stem)
     return result
 
 

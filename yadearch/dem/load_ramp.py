@@ -136,13 +136,17 @@ class LoadedArch:
         return mark, hinges
 
     def _point(self) -> dict[str, float]:
-        """The load-displacement curve's point of the scene now (the columns of the static engine's)."""
+        """The load-displacement curve's point of the scene now (the static engine's columns, and the sums
+        of the supports' reactions, which balance the weights and the live load in equilibrium)."""
         poses = self.driver.contacts.poses
         moved = load_displacement(self.loads, self._start[:, 0:2], self._start[:, 2], poses[:, 0:2], poses[:, 2])
+        left, right = self.runner.recorder.reactions()
         return {
             "multiplier": self.driver.multiplier,
             "load_displacement_mm": units.to_mm(moved),
             "min_stiffness_N_per_m": self.smallest_stiffness(),
+            "horizontal_reactions_N": float(left[0] + right[0]),  # the supports on the arch: its loads' balance
+            "vertical_reactions_N": float(left[1] + right[1]),
         }
 
     def discard_since(self, mark: tuple[int, int, int]) -> None:
@@ -183,6 +187,7 @@ def dem_load_path(
         if after_mm > 0.0:
             _move_supports(runner, after_mm)
         arch = LoadedArch(runner, scene_live_loads(runner), full_rate)
+        runner.position = lambda: f"load={arch.driver.multiplier:7.4g} {unit}"
         loading = EquilibriumPath(arch, settings, unit)
         path = loading.follow()
         hinges = loading.collapse_state(path.upper) if path.collapsed else []

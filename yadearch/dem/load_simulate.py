@@ -10,7 +10,7 @@ from pathlib import Path
 
 from yadearch.case.config import load_case
 from yadearch.errors import YadearchError
-from yadearch.results.load_path import load_path_stem, write_load_path
+from yadearch.results.load_path import load_path_file, write_load_path
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -25,7 +25,7 @@ def main(argv: list[str] | None = None) -> int:
     die_with_parent()
     case, out, after_mm = load_case(argv[0]), Path(argv[1]), float(argv[2])
     out.mkdir(parents=True, exist_ok=True)
-    with load_path_stem(out, case.name).with_suffix(".log").open("w") as log_file:
+    with load_path_file(out, case.name, ".log").open("w") as log_file:
 
         def log(line: str) -> None:
             stamped = f"{time.strftime('%H:%M:%S')} {line}"

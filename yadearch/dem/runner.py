@@ -19,7 +19,7 @@ from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import runaway_length, standing_parameters
 from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.dem.driver import SupportDriver
-from yadearch.dem.loading import EquilibriumPath, settle_selfweight
+from yadearch.dem.loading import settle_selfweight
 from yadearch.dem.recorder import Recorder, Records
 from yadearch.dem.scene import CALLBACK_NAME, body_states, build_scene, stop_voussoirs
 from yadearch.dem.scene_state import capture, put_back
@@ -27,7 +27,7 @@ from yadearch.dem.stepping import SteppingGate
 from yadearch.dem.timing import EngineClock
 from yadearch.errors import CANNOT_STAND, RunFailedError
 from yadearch.model import units
-from yadearch.results.summary import HingeRef, RunSummary, collapse_fields
+from yadearch.results.summary import RunSummary
 from yadearch.solve.limit import why_not_standing
 from yadearch.solve.stages import Stage, Verdict
 
@@ -60,6 +60,8 @@ class Runner:
         self._last_progress = time.time()
         self.weight = 0.0
         self.hold_move = 0.0  # the largest block displacement of the last hold (m)
+        # where the loading stands, as the progress lines say it (a live load's path says its multiplier)
+        self.position: Callable[[], str] = lambda: f"delta={units.to_mm(self.delta()):7.2f} mm"
 
     @property
     def stage(self) -> Stage:
@@ -102,16 +104,16 @@ class Runner:
         """Unbalanced force: mean resultant force on the blocks / mean contact force."""
         return self.scene.contacts.unbalanced()
 
-    def _progress(self, extra: str = "", force: bool = False) -> None:
+    def progress(self, extra: str = "", force: bool = False) -> None:
+        """A progress line (stage, position, steps/s, wall time), at most every `progress_every_s`."""
         now = time.time()
         if not force and now - self._last_progress < self.num.progress_every_s:
             return
         self._last_progress = now
         wall = now - self.wall0
         rate = self.total_steps / wall if wall > 0 else 0.0
-        delta = units.to_mm(self.delta())
         self.log(
-            f"[{self.case.name}] {self.stage:10s} delta={delta:7.2f} mm step={self.total_steps} "
+            f"[{self.case.name}] {self.stage:10s} {self.position()} step={self.total_steps} "
             f"{rate:6.0f} steps/s wall={wall:6.0f} s {extra}"
         )
 
@@ -166,7 +168,7 @@ class Runner:
             self._run_steps(CHECK_EVERY_STEPS)
             self._voussoir_positions()  # raises on a NaN
             unbalanced = self._unbalanced()
-            self._progress(f"gravity {fraction:.0%}, unbalanced {unbalanced:.2e}")
+            self.progress(f"gravity {fraction:.0%}, unbalanced {unbalanced:.2e}")
             sag = float(np.max(np.abs(body_states(self.scene)[0] - self.scene.pos0)))
             if sag > units.mm(SELFWEIGHT_COLLAPSE_MM):
                 raise RunFailedError(
@@ -241,7 +243,7 @@ class Runner:
             self._run_steps(CHECK_EVERY_STEPS)
             moved = np.linalg.norm(self._voussoir_positions() - start_pos, axis=1).max()
             self.hold_move = max(self.hold_move, moved)
-            self._progress(f"holding: max block move {units.to_mm(moved):.3f} mm")
+            self.progress(f"holding: max block move {units.to_mm(moved):.3f} mm")
             if moved > runaway:
                 return Verdict.RUNAWAY
             if (
@@ -275,54 +277,11 @@ class Runner:
             self._voussoir_positions()  # raises on a NaN
 
     def run(self) -> RunSummary:
-        """All stages, then YADE's simulation thread stopped; returns what the run found and cost
-        (the case's own fields are the caller's to add; records are in `self.records`)."""
+        """All stages (`dem.stages.run_stages`), then YADE's simulation thread stopped; returns what the
+        run found and cost (the case's own fields are the caller's to add; records are in `self.records`)."""
+        from yadearch.dem.stages import run_stages
+
         try:
-            return self._stages()
+            return run_stages(self)
         finally:
             self.close()
-
-    def _stages(self) -> RunSummary:
-        from yade import O
-
-        selfweight = self.selfweight()
-        loading = EquilibriumPath(self)
-        path = loading.follow()
-        outcome = collapse_fields(path, self.movement, loading.first_loss)
-        if path.collapsed:
-            hinges = loading.collapse_state(path.upper)
-            self.log(
-                f"[{self.case.name}] du = {outcome['du_mm']:.2f} mm (no equilibrium at "
-                f"{units.to_mm(path.upper):.2f}, equilibrium at {units.to_mm(path.lower):.2f})"
-            )
-        elif path.unresolved:
-            self.log(
-                f"[{self.case.name}] unresolved: neither equilibrium nor runaway at {units.to_mm(path.upper):.2f} mm "
-                f"after the holds' retries (last stable state {units.to_mm(path.lower):.2f} mm); no du"
-            )
-            self.stage = Stage.END
-            hinges = self.recorder.joints(Stage.END)
-        else:
-            self.log(f"[{self.case.name}] no collapse up to {units.to_mm(loading.settings.max_displacement):g} mm")
-            self.stage = Stage.END
-            hinges = self.recorder.joints(Stage.END)
-        wall = time.time() - self.wall0
-        self._progress("done", force=True)
-        return RunSummary(
-            **outcome,
-            selfweight=selfweight,
-            increments=len(path.steps),
-            equilibria=len(path.equilibria),
-            hinges_last_equilibrium=loading.last_equilibrium_hinges,
-            friction=dict(self.recorder.friction),
-            relaxations=loading.relaxations,
-            snaps=loading.snaps,
-            hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges) if path.collapsed else (),
-            hinges_detail=[h.to_json() for h in hinges],
-            steps=self.total_steps,
-            steps_by_stage=dict(self.steps_by_stage),
-            dt_s=O.dt,
-            wall_s=wall,
-            steps_per_s=self.total_steps / wall if wall > 0 else None,
-            profile=self.clock.profile(wall),
-        )

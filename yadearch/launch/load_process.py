@@ -14,7 +14,7 @@ from yadearch.case.config import ArchCase
 from yadearch.case.plan import check_dem_load
 from yadearch.errors import RunFailedError
 from yadearch.launch.process import check_yade_installed, exit_reason, run_child
-from yadearch.results.load_path import load_path_stem, read_load_path
+from yadearch.results.load_path import load_path_file, read_load_path
 from yadearch.results.rundir import CASE_FILE
 from yadearch.solve.load_path import LoadPath
 
@@ -40,16 +40,15 @@ def run_load_process(
             returncode, stderr = run_child(cmd, env, timeout_s, quiet)
         except subprocess.TimeoutExpired:
             raise RunFailedError(f"the load path of {case.name!r} timed out after {timeout_s:.0f} s") from None
-        staged = load_path_stem(staging, case.name)
-        if returncode != 0 or not staged.with_suffix(".json").is_file():
+        if returncode != 0 or not load_path_file(staging, case.name, ".json").is_file():
             lines = [line for line in stderr.splitlines() if line.startswith("error: ")]
             reason = lines[-1].removeprefix("error: ") if lines else exit_reason(returncode)
-            log = load_path_stem(out, case.name).with_suffix(".log")
-            if staged.with_suffix(".log").is_file():
-                shutil.copy(staged.with_suffix(".log"), log)
+            log = load_path_file(out, case.name, ".log")
+            if load_path_file(staging, case.name, ".log").is_file():
+                shutil.copy(load_path_file(staging, case.name, ".log"), log)
             raise RunFailedError(f"the load path of {case.name!r} failed: {reason} (see {log})")
         for suffix in LOAD_PATH_FILES:
-            os.replace(staged.with_suffix(suffix), load_path_stem(out, case.name).with_suffix(suffix))
+            os.replace(load_path_file(staging, case.name, suffix), load_path_file(out, case.name, suffix))
     finally:
         shutil.rmtree(staging, ignore_errors=True)
     return read_load_path(out, case.name)

@@ -56,7 +56,7 @@ def save_figure(fig: Figure, stem: Path) -> tuple[Path, Path]:
     """Write `stem`.pdf (vector, without a creation date, so that regenerated evidence differs only
     where its content does) and `stem`.png (300 dpi); returns both paths."""
     stem.parent.mkdir(parents=True, exist_ok=True)
-    pdf, png = stem.with_suffix(".pdf"), stem.with_suffix(".png")
+    pdf, png = stem.with_name(f"{stem.name}.pdf"), stem.with_name(f"{stem.name}.png")  # a stem may hold dots
     write_atomically(pdf, lambda tmp: fig.savefig(tmp, format="pdf", metadata={"CreationDate": None}))
     write_atomically(png, lambda tmp: fig.savefig(tmp, format="png", dpi=PNG_DPI))
     return pdf, png

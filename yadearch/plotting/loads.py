@@ -1,6 +1,6 @@
 """The live-load figures: a point load's capacity along the paper's arch (its influence line), the
 collapse acceleration of semicircles against t/R, the residual capacity after a settlement (static
-path and rigid blocks), and the static engine's load-displacement curve."""
+path and rigid blocks), an engine's load-displacement curve, and the DEM against the static engine."""
 
 from __future__ import annotations
 
@@ -10,9 +10,12 @@ from pathlib import Path
 import pandas as pd
 
 from yadearch.plotting.house import COLUMN_CM, house_style, new_figure, save_figure
+from yadearch.solve.load_path import LoadPath
 
 HEIGHT_CM = 15.0
 INFLUENCE_HEIGHT_CM = 6.0
+ENGINES_ROW_CM = 0.45  # the engines figure's height per case
+ENGINE_LABELS = {"static": "static engine", "dem": "DEM (YADE)"}
 RESIDUAL_TOP_OVER_LARGEST = 4.0  # the residual panel's top over its largest point: the legend's room
 
 
@@ -69,14 +72,15 @@ def _draw_influence(ax, influence: pd.DataFrame, arch_weight_N: float) -> None:
 
 
 @house_style
-def plot_load_path(
-    curve: pd.DataFrame, capacity: float, first_loss: float, rigid: float, unit: str, stem: Path
-) -> tuple[Path, Path]:
-    """STEM.pdf and .png: the static engine's load-displacement curve up to its limit point, its
-    first loss of stability and capacity, and the rigid-block capacity of the same state for scale."""
+def plot_load_path(path: LoadPath, stem: Path) -> tuple[Path, Path]:
+    """STEM.pdf and .png: an engine's load-displacement curve up to its limit point, its first loss of
+    stability and capacity, and the rigid-block capacity of the same state for scale."""
     fig = new_figure(height_cm=INFLUENCE_HEIGHT_CM, width_cm=COLUMN_CM)
     ax = fig.add_subplot()
-    ax.plot(curve["load_displacement_mm"], curve["multiplier"], "o-", ms=2.0, color="C0", label="static engine")
+    curve, unit, capacity, first_loss, rigid = path.curve, path.unit, path.capacity, path.first_loss, path.rigid
+    ax.plot(
+        curve["load_displacement_mm"], curve["multiplier"], "o-", ms=2.0, color="C0", label=ENGINE_LABELS[path.engine]
+    )
     if math.isfinite(rigid):
         ax.axhline(rigid, color="0.4", lw=0.8, ls="--", label=f"rigid blocks ({rigid:.3g} {unit})")
     if math.isfinite(capacity):
@@ -88,4 +92,21 @@ def plot_load_path(
     ax.set_xlim(left=0.0)
     ax.set_ylim(bottom=0.0)
     ax.legend(loc="upper left", frameon=False)
+    return save_figure(fig, stem)
+
+
+@house_style
+def plot_engines(table: pd.DataFrame, tolerance: float, stem: Path) -> tuple[Path, Path]:
+    """STEM.pdf and .png: each case's DEM capacity against the static engine's (%), with the band of
+    +-`tolerance` the two engines should agree within."""
+    fig = new_figure(height_cm=ENGINES_ROW_CM * (len(table) + 2), width_cm=COLUMN_CM)
+    ax = fig.add_subplot()
+    rows = range(len(table))
+    ax.axvspan(-100.0 * tolerance, 100.0 * tolerance, color="0.9", lw=0, label=f"+-{100 * tolerance:g} %")
+    ax.plot(100.0 * table["dem_over_static"], rows, "o", ms=3.0, color="C0", label="collapse")
+    ax.plot(100.0 * table["first_loss_dem_over_static"], rows, "x", ms=3.0, color="C1", label="first loss")
+    ax.set_yticks(list(rows), [name.replace("_", " ") for name in table["case"]])
+    ax.invert_yaxis()
+    ax.set_xlabel("DEM - static engine (% of the static capacity)")
+    ax.legend(loc="lower right", frameon=False, ncols=3, bbox_to_anchor=(1.0, 1.0))
     return save_figure(fig, stem)

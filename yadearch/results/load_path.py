@@ -17,9 +17,9 @@ from yadearch.solve.load_path import LoadPath
 LOAD_PATH_SUFFIX = "_load_path"
 
 
-def load_path_stem(folder: Path, name: str) -> Path:
-    """OUT/NAME_load_path, the stem of the path's files and figure."""
-    return Path(folder) / f"{name}{LOAD_PATH_SUFFIX}"
+def load_path_file(folder: Path, name: str, suffix: str = "") -> Path:
+    """OUT/NAME_load_path + `suffix` (no suffix: the stem of the figure), whatever dots NAME holds."""
+    return Path(folder) / f"{name}{LOAD_PATH_SUFFIX}{suffix}"
 
 
 def load_path_json(result: LoadPath, case: ArchCase) -> dict[str, Any]:
@@ -50,16 +50,15 @@ def load_path_json(result: LoadPath, case: ArchCase) -> dict[str, Any]:
 
 def write_load_path(folder: Path, result: LoadPath, case: ArchCase) -> Path:
     """Write the path's JSON and curve CSV in `folder`; returns their stem."""
-    stem = load_path_stem(folder, case.name)
-    write_csv_atomically(stem.with_suffix(".csv"), result.curve)
-    write_text_atomically(stem.with_suffix(".json"), json.dumps(load_path_json(result, case), indent=1) + "\n")
-    return stem
+    write_csv_atomically(load_path_file(folder, case.name, ".csv"), result.curve)
+    text = json.dumps(load_path_json(result, case), indent=1) + "\n"
+    write_text_atomically(load_path_file(folder, case.name, ".json"), text)
+    return load_path_file(folder, case.name)
 
 
 def read_load_path(folder: Path, name: str) -> LoadPath:
     """The load path `write_load_path` wrote for the case `name` in `folder`."""
-    stem = load_path_stem(folder, name)
-    data = json.loads(stem.with_suffix(".json").read_text())
+    data = json.loads(load_path_file(folder, name, ".json").read_text())
 
     def number(key: str) -> float:
         value = data[key]
@@ -72,7 +71,7 @@ def read_load_path(folder: Path, name: str) -> LoadPath:
         unit=data["unit"],
         hinges=tuple(data["hinges_at_collapse"]),
         kind=data["collapse_kind"],
-        curve=pd.read_csv(stem.with_suffix(".csv")),
+        curve=pd.read_csv(load_path_file(folder, name, ".csv"), dtype=float),  # every column a number
         after_mm=float(data["after_mm"]),
         reach=float(data["largest_multiplier_tried"]),
         iterations=int(data.get("iterations", data.get("steps", 0))),
@@ -81,3 +80,16 @@ def read_load_path(folder: Path, name: str) -> LoadPath:
         rigid_note=data["rigid_note"] or "",
         engine=data["engine"],
     )
+
+
+def stored_load_path(folder: Path, case: ArchCase, after_mm: float) -> LoadPath | None:
+    """The load path `folder` already holds for this very case and settlement (a study resumed), or None."""
+    try:
+        data = json.loads(load_path_file(folder, case.name, ".json").read_text())
+    except (OSError, ValueError):
+        return None
+    if data.get("case") != case.to_dict() or data.get("after_mm") != after_mm:
+        return None
+    if not load_path_file(folder, case.name, ".csv").is_file():
+        return None
+    return read_load_path(folder, case.name)

@@ -1,0 +1,32 @@
+"""The DEM against the static engine on live loads (reports/loads/engines; docs/loads.md).
+
+    .venv/bin/python scripts/loads_engines.py [--out reports/loads/engines] [--jobs 2]
+
+Runs every case's load path on both engines (the DEM in child processes, --jobs at a time; those whose
+files OUT/runs holds already are read back) and writes engines.md, engines.csv, numerics.csv and
+engines.pdf/.png; minutes of YADE on two cores.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+from yadearch.reporting.loads_engines import write_engines_report
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", type=Path, default=Path("reports/loads/engines"))
+    parser.add_argument("--jobs", type=int, default=2, choices=(1, 2, 3, 4))
+    args = parser.parse_args()
+    start = time.time()
+    print(write_engines_report(args.out, args.jobs))
+    print(f"{time.time() - start:.0f} s")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,67 @@
+"""A live load's path on disk (results/load_path.py): what one engine writes reads back as the same
+answer, and a study resumes only from the files of the very same case and settlement."""
+
+from __future__ import annotations
+
+import math
+
+import pandas as pd
+
+from yadearch.case.config import ArchCase
+from yadearch.results.load_path import load_path_file, read_load_path, stored_load_path, write_load_path
+from yadearch.solve.load_path import LoadPath
+
+CASE = ArchCase(name="point_0.3").with_overrides({"live_load": "vertical", "n_voussoirs": 15})
+
+
+def _path(engine: str) -> LoadPath:
+    curve = pd.DataFrame(
+        {"multiplier": [0.0, 1.5], "load_displacement_mm": [0.0, 0.1], "min_stiffness_N_per_m": [9.0, 1.0]}
+    )
+    return LoadPath(
+        capacity=7.96,
+        first_loss=6.5,
+        outcome="collapse",
+        unit="N",
+        hinges=("3I", "6E", "12I", "16E"),
+        kind=None,
+        curve=curve,
+        after_mm=0.0,
+        reach=7.95,
+        iterations=103_320,
+        rigid=math.nan,
+        rigid_hinges="",
+        rigid_note="the arch does not stand",
+        engine=engine,
+    )
+
+
+def test_a_load_path_reads_back_as_written(tmp_path):
+    for engine in ("dem", "static"):
+        written = _path(engine)
+        write_load_path(tmp_path, written, CASE)
+        read = read_load_path(tmp_path, CASE.name)
+        assert read.curve.equals(written.curve)
+        assert math.isnan(read.rigid)
+        assert {k: v for k, v in vars(read).items() if k not in ("curve", "rigid")} == {
+            k: v for k, v in vars(written).items() if k not in ("curve", "rigid")
+        }
+
+
+def test_names_with_dots_keep_their_own_files(tmp_path):
+    other = CASE.with_overrides({"name": "point_0.4"})
+    write_load_path(tmp_path, _path("dem"), CASE)
+    write_load_path(tmp_path, _path("static"), other)
+    assert (
+        read_load_path(tmp_path, CASE.name).engine == "dem" and read_load_path(tmp_path, other.name).engine == "static"
+    )
+    assert len(list(tmp_path.glob("*_load_path.json"))) == 2
+
+
+def test_a_study_resumes_only_from_the_same_case_and_settlement(tmp_path):
+    write_load_path(tmp_path, _path("dem"), CASE)
+    assert stored_load_path(tmp_path, CASE, 0.0) is not None
+    assert stored_load_path(tmp_path, CASE, 5.0) is None
+    assert stored_load_path(tmp_path, CASE.with_overrides({"interface.kn_N_per_mm3": 0.25}), 0.0) is None
+    load_path_file(tmp_path, CASE.name, ".csv").unlink()
+    assert stored_load_path(tmp_path, CASE, 0.0) is None  # half a result is no result

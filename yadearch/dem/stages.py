@@ -1,0 +1,61 @@
+"""A DEM run's stages on a live scene (`dem.runner.Runner`): the self-weight, then the support movement
+along the equilibrium path to collapse (`dem.loading`), and what the run found and cost."""
+
+from __future__ import annotations
+
+import time
+
+from yadearch.dem.loading import EquilibriumPath
+from yadearch.dem.runner import Runner
+from yadearch.model import units
+from yadearch.results.summary import HingeRef, RunSummary, collapse_fields
+from yadearch.solve.stages import Stage
+
+
+def run_stages(runner: Runner) -> RunSummary:
+    """Every stage of `runner`'s case; the summary of what it found (the case's own fields are the
+    caller's to add)."""
+    from yade import O
+
+    name = runner.case.name
+    selfweight = runner.selfweight()
+    loading = EquilibriumPath(runner)
+    path = loading.follow()
+    outcome = collapse_fields(path, runner.movement, loading.first_loss)
+    if path.collapsed:
+        hinges = loading.collapse_state(path.upper)
+        runner.log(
+            f"[{name}] du = {outcome['du_mm']:.2f} mm (no equilibrium at "
+            f"{units.to_mm(path.upper):.2f}, equilibrium at {units.to_mm(path.lower):.2f})"
+        )
+    elif path.unresolved:
+        runner.log(
+            f"[{name}] unresolved: neither equilibrium nor runaway at {units.to_mm(path.upper):.2f} mm "
+            f"after the holds' retries (last stable state {units.to_mm(path.lower):.2f} mm); no du"
+        )
+        runner.stage = Stage.END
+        hinges = runner.recorder.joints(Stage.END)
+    else:
+        runner.log(f"[{name}] no collapse up to {units.to_mm(loading.settings.max_displacement):g} mm")
+        runner.stage = Stage.END
+        hinges = runner.recorder.joints(Stage.END)
+    wall = time.time() - runner.wall0
+    runner.progress("done", force=True)
+    return RunSummary(
+        **outcome,
+        selfweight=selfweight,
+        increments=len(path.steps),
+        equilibria=len(path.equilibria),
+        hinges_last_equilibrium=loading.last_equilibrium_hinges,
+        friction=dict(runner.recorder.friction),
+        relaxations=loading.relaxations,
+        snaps=loading.snaps,
+        hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges) if path.collapsed else (),
+        hinges_detail=[h.to_json() for h in hinges],
+        steps=runner.total_steps,
+        steps_by_stage=dict(runner.steps_by_stage),
+        dt_s=O.dt,
+        wall_s=wall,
+        steps_per_s=runner.total_steps / wall if wall > 0 else None,
+        profile=runner.clock.profile(wall),
+    )

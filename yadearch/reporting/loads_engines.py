@@ -1,0 +1,127 @@
+"""reports/loads/engines: the DEM against the static engine on live loads, written as tables, a figure
+and a Markdown report (`scripts/loads_engines.py`; minutes of YADE)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from pathlib import Path
+
+import pandas as pd
+
+from yadearch.atomic import write_csv_atomically, write_text_atomically
+from yadearch.markdown import markdown_table
+from yadearch.plotting.loads import plot_engines
+from yadearch.studies.loads.engines import (
+    NUMERICS_CASES,
+    NUMERICS_VARIANTS,
+    engine_cases,
+    engines_table,
+    numerics_cases,
+)
+
+ENGINES_TOLERANCE = 0.01  # the DEM within 1 % of the static engine (issue 44)
+RUNS_FOLDER = "runs"  # each DEM load path's files, under the report's folder (a rerun reads them back)
+
+
+def write_engines_report(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> Path:
+    """Run the comparison (the DEM runs `jobs` at a time; those already in OUT/runs are read back) and
+    write engines.csv, numerics.csv, engines.pdf/.png and engines.md into `out`; the report's path."""
+    out.mkdir(parents=True, exist_ok=True)
+    cases = engine_cases()
+    table = engines_table(cases, out / RUNS_FOLDER, jobs, log)
+    numerics = engines_table(numerics_cases(cases), out / RUNS_FOLDER, jobs, log)
+    write_csv_atomically(out / "engines.csv", table)
+    write_csv_atomically(out / "numerics.csv", numerics)
+    plot_engines(table, ENGINES_TOLERANCE, out / "engines")
+    path = out / "engines.md"
+    write_text_atomically(path, engines_markdown(table, numerics))
+    return path
+
+
+def _percent(value: float) -> str:
+    return "-" if not math.isfinite(value) else f"{100.0 * value:+.2f} %"
+
+
+def _number(value: float) -> str:
+    return "-" if not math.isfinite(value) else f"{value:.4g}"
+
+
+def engines_markdown(table: pd.DataFrame, numerics: pd.DataFrame) -> str:
+    """The report: the two engines side by side, the agreement counted, and the DEM's numerics."""
+    done = table[table["dem_outcome"] != "failed"]
+    within = int((done["dem_over_static"].abs() <= ENGINES_TOLERANCE).sum())
+    first_within = int((done["first_loss_dem_over_static"].abs() <= ENGINES_TOLERANCE).sum())
+    same_hinges = int((done["dem_hinges"] == done["static_hinges"]).sum())
+    lines = [
+        "# Live loads: the DEM against the static engine",
+        "",
+        "Each case's live load grown to collapse on both engines' paths, the same blocks and joints, the same",
+        "increments (fractions of the rigid capacity), bracket and definitions (docs/loads.md). Regenerate with",
+        "`.venv/bin/python scripts/loads_engines.py --out reports/loads/engines` (minutes of two cores; the DEM",
+        f"runs' files are kept in {RUNS_FOLDER}/ and read back by a rerun: delete it to run them again).",
+        "",
+        f"- Collapse load within {100 * ENGINES_TOLERANCE:g} % in {within} of {len(done)} cases "
+        f"(first loss of stability: {first_within} of {len(done)}); the same hinges in {same_hinges} of "
+        f"{len(done)}; DEM runs failed: {len(table) - len(done)}.",
+        "",
+        *markdown_table(
+            [
+                "case",
+                "kn (N/mm3)",
+                "after (mm)",
+                "static",
+                "DEM",
+                "DEM - static",
+                "first loss static / DEM",
+                "hinges static",
+                "hinges DEM",
+                "rigid",
+            ],
+            (
+                [
+                    r.case.replace("_", " "),
+                    f"{r.kn_N_per_mm3:g}",
+                    f"{r.after_mm:g}",
+                    f"{_number(r.static_capacity)} {r.unit}",
+                    f"{_number(r.dem_capacity)} {r.unit}",
+                    _percent(r.dem_over_static),
+                    f"{_number(r.static_first_loss)} / {_number(r.dem_first_loss)}",
+                    r.static_hinges,
+                    r.dem_hinges or r.dem_failure,
+                    _number(r.rigid_capacity),
+                ]
+                for r in table.itertuples()
+            ),
+        ),  # fmt: skip
+        "",
+        "![DEM against the static engine](engines.png)",
+        "",
+        "## The DEM's numerics",
+        "",
+        f"On {', '.join(NUMERICS_CASES)}: "
+        + ", ".join(f"{s} x {f:g}" for s, f in NUMERICS_VARIANTS)
+        + " (the loading rate follows the support's):",
+        "",
+        *markdown_table(
+            ["variant", "DEM", "against the default DEM", "against static", "hinges"],
+            (
+                [
+                    r.case.replace("_", " "),
+                    f"{_number(r.dem_capacity)} {r.unit}",
+                    _percent(r.dem_capacity / _base(table, r.case) - 1.0),
+                    _percent(r.dem_over_static),
+                    r.dem_hinges or r.dem_failure,
+                ]
+                for r in numerics.itertuples()
+            ),
+        ),  # fmt: skip
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def _base(table: pd.DataFrame, variant: str) -> float:
+    """The default DEM capacity of the case a numerics variant was made from."""
+    base = next(name for name in NUMERICS_CASES if variant.startswith(name))
+    return float(table.loc[table["case"] == base, "dem_capacity"].iloc[0])

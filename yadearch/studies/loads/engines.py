@@ -1,0 +1,118 @@
+"""The DEM against the static engine on live loads (reports/loads/engines): each case's load path on both
+engines, capacities and first losses side by side, and the DEM's numerics halved and doubled on some
+cases (a capacity the loading rate, damping or time step moves is not a result)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import pandas as pd
+
+from yadearch.case.config import ArchCase
+from yadearch.errors import YadearchError
+from yadearch.launch.load_process import run_load_process
+from yadearch.results.load_path import stored_load_path
+from yadearch.solve.load_path import LoadPath, static_load_path
+from yadearch.studies.loads.rigid import check_cases, paper_arch
+from yadearch.studies.loads.static import PAPER_LOADS, QUARTER_SPAN
+
+ENGINES_KN = 5.2  # N/mm3: the paper's set 2, where both engines are quick
+SET1_KN = 0.25  # N/mm3: the paper's set 1, the softest joints
+SETTLED_MM = 22.0  # a settlement before the load: about a quarter of set 2's static du (87.99 mm)
+NUMERICS_CASES = ("segmental_point_0.3", "semicircle_t60_acceleration")  # the DEM's numerics varied on these
+NUMERICS_VARIANTS = (  # (setting, factor): the loading rate (it follows the support's), damping, time step
+    ("numerics.support_rate_mm_per_s", 0.5),
+    ("numerics.support_rate_mm_per_s", 2.0),
+    ("numerics.damping", 0.5),
+    ("numerics.damping", 2.0),
+    ("numerics.timestep_safety", 0.5),  # doubled it would pass the critical step
+)
+
+
+def engine_cases() -> list[tuple[ArchCase, float]]:
+    """The cases of the comparison and the settlement (mm) each is loaded after: the ten small arches of
+    the rigid check and the paper's arch under its three loads at kn 5.2, the quarter-span load at kn
+    0.25, and after a settlement of SETTLED_MM."""
+    cases = [(case.with_overrides({"interface.kn_N_per_mm3": ENGINES_KN}), 0.0) for case in check_cases()]
+    paper = paper_arch()
+    for what, overrides in PAPER_LOADS.items():
+        name = f"paper_{what.replace(' ', '_').replace('.', '')}"
+        cases.append((paper.with_overrides({**overrides, "name": name, "interface.kn_N_per_mm3": ENGINES_KN}), 0.0))
+    quarter = {**PAPER_LOADS[QUARTER_SPAN], "interface.kn_N_per_mm3": ENGINES_KN}
+    set1 = paper.with_overrides({**quarter, "name": "paper_quarter_span_set1", "interface.kn_N_per_mm3": SET1_KN})
+    cases.append((set1, 0.0))
+    cases.append((paper.with_overrides({**quarter, "name": f"paper_quarter_span_after_{SETTLED_MM:g}mm"}), SETTLED_MM))
+    return cases
+
+
+def numerics_cases(cases: Iterable[tuple[ArchCase, float]]) -> list[tuple[ArchCase, float]]:
+    """NUMERICS_CASES with each of NUMERICS_VARIANTS, named for it."""
+    varied = []
+    for case, after_mm in cases:
+        if case.name in NUMERICS_CASES:
+            for setting, factor in NUMERICS_VARIANTS:
+                name = f"{case.name}_{setting.split('.')[-1]}_x{factor:g}"
+                varied.append(
+                    (case.with_overrides({setting: _setting(case, setting) * factor, "name": name}), after_mm)
+                )
+    return varied
+
+
+def _setting(case: ArchCase, dotted: str) -> float:
+    """The value of a case's setting named as `with_overrides` names it."""
+    holder: object = case
+    for part in dotted.split("."):
+        holder = getattr(holder, part)
+    assert isinstance(holder, float)
+    return holder
+
+
+def engines_table(
+    cases: Iterable[tuple[ArchCase, float]], out: Path, jobs: int = 2, log: Callable[[str], None] = print
+) -> pd.DataFrame:
+    """Each case's load path on the static engine and in the DEM (its files in `out`, `jobs` at a time;
+    those `out` holds already are read back), one row each; a DEM run that fails is a row with its
+    reason, and the others go on."""
+    cases = list(cases)
+
+    def both(item: tuple[ArchCase, float]) -> dict:
+        case, after_mm = item
+        static = static_load_path(case, after_mm)
+        try:
+            dem = stored_load_path(out, case, after_mm) or run_load_process(case, out, after_mm)
+            reason = ""
+        except YadearchError as exc:
+            dem, reason = None, str(exc)
+        row = _row(case, after_mm, static, dem, reason)
+        log(f"{case.name}: static {row['static_capacity']:.5g}, DEM {row['dem_capacity']:.5g} {static.unit}")
+        return row
+
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        return pd.DataFrame(list(pool.map(both, cases)))
+
+
+def _row(case: ArchCase, after_mm: float, static: LoadPath, dem: LoadPath | None, reason: str) -> dict:
+    """The two engines' answers for one case as a table row."""
+    nan = math.nan
+    return {
+        "case": case.name,
+        "kn_N_per_mm3": case.interface.kn_N_per_mm3,
+        "after_mm": after_mm,
+        "unit": static.unit,
+        "static_outcome": static.outcome,
+        "static_first_loss": static.first_loss,
+        "static_capacity": static.capacity,
+        "static_hinges": " ".join(static.hinges),
+        "dem_outcome": dem.outcome if dem else "failed",
+        "dem_first_loss": dem.first_loss if dem else nan,
+        "dem_capacity": dem.capacity if dem else nan,
+        "dem_hinges": " ".join(dem.hinges) if dem else "",
+        "dem_over_static": dem.capacity / static.capacity - 1.0 if dem else nan,
+        "first_loss_dem_over_static": dem.first_loss / static.first_loss - 1.0 if dem else nan,
+        "dem_steps": dem.iterations if dem else 0,
+        "rigid_capacity": static.rigid,
+        "dem_failure": reason,
+    }
