@@ -62,6 +62,30 @@ class LoadsConfig:
             "(a triangle from zero at its left edge) or 'falling' (from its peak at the left edge to zero)",
         },
     )
+    held_load_N: float = field(
+        default=0.0,
+        metadata={
+            **number_meta(
+                0,
+                1e5,
+                doc="a run with a vertical live load (`yadearch run`): the load the arch carries while its "
+                "support moves, applied after the self-weight (N; 0: none): du under a load",
+            ),
+            "predates": 0.0,
+        },
+    )
+    held_acceleration_g: float = field(
+        default=0.0,
+        metadata={
+            **number_meta(
+                0,
+                10,
+                doc="a run with a horizontal acceleration (`yadearch run`): the acceleration held while the "
+                "support moves, applied after the self-weight (g; 0: none)",
+            ),
+            "predates": 0.0,
+        },
+    )
     fill_depth_mm: float = field(
         default=0.0,
         metadata={

@@ -121,6 +121,15 @@ def runaway_length(case: ArchCase) -> float:
     return case.numerics.runaway_thickness_ratio * units.mm(case.geometry.thickness_mm)
 
 
+def held_multiplier(case: ArchCase) -> float:
+    """The live load a run holds while its support moves, in its multiplier's unit (N for a vertical
+    load, g for an acceleration; 0: none)."""
+    loads = case.loads
+    return {"vertical": loads.held_load_N, "horizontal_acceleration": loads.held_acceleration_g}.get(
+        loads.live_load, 0.0
+    )
+
+
 def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:
     """The case's live load in SI (model.loads): its centre's position from the left springing is the
     case's fraction of the intrados span."""

@@ -95,6 +95,7 @@ class LoadingInfo:
     direction_deg: float
     max_displacement_mm: float
     motion: str = TRANSLATION  # runs written before rotations and paths moved it in a straight line
+    held_live_load: str = ""  # the live load held on the arch while the support moved ('' without one)
 
 
 @dataclass(kw_only=True)
@@ -262,11 +263,12 @@ def collapse_fields(
     }
 
 
-def loading_info(loading: LoadingConfig, max_displacement_mm: float) -> LoadingInfo:
-    """The case's loading as the summary records it."""
+def loading_info(loading: LoadingConfig, max_displacement_mm: float, held: str = "") -> LoadingInfo:
+    """The case's loading as the summary records it (`held`: the live load held, in words)."""
     return LoadingInfo(
         moving_support=loading.moving_support,
         motion=loading.support_motion,
         direction_deg=loading.support_direction_deg,
         max_displacement_mm=max_displacement_mm,
+        held_live_load=held,
     )

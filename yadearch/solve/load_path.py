@@ -9,12 +9,13 @@ Load control: the path stops at the limit point (its descending branch is not tr
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import pandas as pd
 
 from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import held_multiplier
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.loads import NONE, UNITS, VERTICAL, load_displacement
@@ -126,6 +127,26 @@ def _move_supports(loading: StaticLoading, case: ArchCase, after_mm: float) -> N
     """The support movement to `after_mm` along its path, which the arch must carry in equilibrium."""
     loading.settings = path_settings(case.numerics, after_mm)
     check_carried(loading.follow(), after_mm)
+
+
+def hold_the_live_load(loading: StaticLoading, case: ArchCase) -> float:
+    """Grow the case's live load to the value a run holds (`case.mechanics.held_multiplier`) on the load
+    path, then make the supports' movement the path's parameter with the load held (load, then
+    movement); the value. CaseError if the arch does not carry it."""
+    held = held_multiplier(case)
+    moving = loading.settings
+    settings = replace(
+        load_settings(load_scale(load_analysis(case)), case.numerics.increment_growth), max_displacement=held
+    )
+    loading.load_the_live_load(settings)
+    loaded = loading.follow()
+    if loaded.outcome != Outcome.STANDS or loaded.lower < held:
+        name = "held_load_N" if case.loads.live_load == VERTICAL else "held_acceleration_g"
+        at = loaded.du if loaded.collapsed else loaded.lower
+        unit = UNITS[case.loads.live_load]
+        raise CaseError(f"loads.{name} = {held:g}: the arch does not carry it ({loaded.outcome} at {at:.4g} {unit})")
+    loading.move_the_supports(moving)
+    return held
 
 
 def check_carried(moved: PathResult, after_mm: float) -> None:

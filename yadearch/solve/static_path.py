@@ -272,6 +272,16 @@ class StaticLoading:
         self.accepted = [replace(last, lam=0.0)]
         self.failures, self.snaps = {}, []
 
+    def move_the_supports(self, settings: PathSettings) -> None:
+        """From the last accepted state on (a live load grown to its multiplier there), the path's
+        parameter is the supports' movement from where they stand, the load held: load, then movement."""
+        last = self.accepted[-1]
+        held = self.parameter.multiplier(last.lam)
+        self.parameter = PathParameter(support_at=self.parameter.support(last.lam), held=held)
+        self.settings = settings
+        self.accepted = [replace(last, lam=self.parameter.support_at)]
+        self.failures, self.snaps = {}, []
+
     # ---- the whole path ---------------------------------------------------------------------------
     def follow(self, on_step: Callable[[PathStep], None] | None = None) -> PathResult:
         """From the self-weight state, increments to collapse (`solve.path.follow_path`)."""

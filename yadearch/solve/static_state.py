@@ -19,17 +19,19 @@ class StaticEngineError(RuntimeError):
 
 @dataclass(frozen=True)
 class PathParameter:
-    """What the path's parameter drives: the supports along their movement (m), or, with `live`, the
-    live load's multiplier (N or g) with the supports held at `support_at` (m along their movement)."""
+    """What the path's parameter drives: the supports along their movement (m), the live load held at
+    `held` (N or g), or, with `live`, the live load's multiplier with the supports held at `support_at`
+    (m along their movement)."""
 
     live: bool = False
     support_at: float = 0.0
+    held: float = 0.0
 
     def support(self, lam: float) -> float:
         return self.support_at if self.live else lam
 
     def multiplier(self, lam: float) -> float:
-        return lam if self.live else 0.0
+        return lam if self.live else self.held
 
 
 @dataclass

@@ -49,6 +49,7 @@ class StaticRecords:
     arch: StaticArch
     hinge_threshold: float  # rad
     keep_tables: bool = True  # rows of series.csv and joints.csv, the states and their stiffness
+    held: float = 0.0  # the live load's multiplier held during the movement (N or g; 0: none)
     series: list[dict[str, Any]] = field(default_factory=list)
     joints: list[dict[str, Any]] = field(default_factory=list)
     snapshots: dict[str, dict[str, Any]] = field(default_factory=dict)
@@ -88,15 +89,15 @@ class StaticRecords:
 
     def series_columns(self, state: StaticState, pos: np.ndarray | None = None) -> dict[str, Any]:
         """series.csv's columns of `state` (its blocks' positions `pos`, if known): reactions (the
-        supports' forces on the arch), the crown's displacement, the residual against the weights and
-        the dead loads, the tangent's smallest eigenvalue."""
+        supports' forces on the arch), the crown's displacement, the residual against the weights, the
+        dead loads and the live load `held`, the tangent's smallest eigenvalue."""
         pos = self.arch.poses(state.u)[0] if pos is None else pos
         force = state.forces.block_force
         crown = self.arch.geometry.crown_voussoir
         crown_disp = pos[crown] - self.arch.centroid0[crown]
         free = np.zeros(self.arch.n_blocks, bool)
         free[1:-1] = True
-        dead = self.arch.dead[free]
+        dead = self.arch.dead[free] + self.held * self.arch.live[free]  # a live load held during the movement
         loads = np.column_stack([dead[:, 0], dead[:, 1] - self.arch.weight[free]])
         unbalanced = unbalanced_force(state.forces, free, loads)
         return {

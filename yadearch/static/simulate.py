@@ -10,15 +10,17 @@ from pathlib import Path
 from typing import Any
 
 from yadearch.case.config import ArchCase, load_case
-from yadearch.case.mechanics import runaway_length, standing_parameters
+from yadearch.case.mechanics import held_multiplier, runaway_length, standing_parameters
 from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
+from yadearch.model.loads import UNITS
 from yadearch.results.provenance import provenance
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSummary, collapse_fields, loading_info
 from yadearch.solve.limit import why_not_standing
+from yadearch.solve.load_path import hold_the_live_load
 from yadearch.solve.path import PathStep
 from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import StaticLoading
@@ -66,6 +68,10 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         log(f"[{case.name}] warning: {model_values_text(taken)}")
     solver_start = time.time()
     selfweight = _selfweight(case, loading, records, log)
+    if held_multiplier(case) > 0.0:
+        records.held = hold_the_live_load(loading, case)
+        unit = UNITS[case.loads.live_load]
+        log(f"[{case.name}] the live load held at {records.held:g} {unit} (iterations {loading.iterations})")
 
     def progress(step: PathStep) -> None:
         wall = time.time() - wall0
@@ -90,7 +96,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         ks_N_per_mm3=case.ks_N_per_mm3,
         kn_effective_N_per_mm3=arch.law.kn / units.N_PER_MM3,
         contact_model="joint",
-        loading=loading_info(case.loading, end_mm),
+        loading=loading_info(case.loading, end_mm, held_text(case)),
         collapse_criterion=criterion_text(case),
         unused_parameters=unused,
         paper_model_values=taken,
@@ -140,6 +146,16 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         f"wall={summary.wall_s:.2f} s -> {final_folder(out)}"
     )
     return summary
+
+
+def held_text(case: ArchCase) -> str:
+    """The live load a run holds during its movement, in words for summary.json ('' without one)."""
+    held = held_multiplier(case)
+    if held == 0.0:
+        return ""
+    loads = case.loads
+    where = f" at {loads.load_position_over_span:g} of the span" if loads.live_load == "vertical" else ""
+    return f"{held:g} {UNITS[loads.live_load]} {loads.live_load.replace('_', ' ')}{where}"
 
 
 def _selfweight(

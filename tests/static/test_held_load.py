@@ -1,0 +1,65 @@
+"""Load, then movement (issue 44): a static run holds a live load while its support moves
+(`loads.held_load_N`, `held_acceleration_g`): the load is grown on the load path after the self-weight,
+then kept. The supports carry the weight and the load at every equilibrium; no load gives the run without
+one; a heavier load shortens du; a load above the arch's capacity, or held by the DEM, is refused in one
+line."""
+
+from __future__ import annotations
+
+import json
+
+import pandas as pd
+import pytest
+
+from yadearch.case.config import preset
+from yadearch.cli.commands import main
+from yadearch.solve.load_path import static_load_path
+
+SMALL = {"n_voussoirs": 15, "live_load": "vertical", "load_position_over_span": 0.25}
+BALANCE = 1e-6  # relative: the static equilibria are solved to round-off
+
+
+def _run(tmp_path, name: str, *settings: str) -> tuple[int, dict, pd.DataFrame | None]:
+    out = tmp_path / name
+    args = ["run", "--preset", "set2", "--engine", "static", "--no-figures", "--out", str(out)]
+    for key, value in {**SMALL, "name": name}.items():
+        args += ["--set", f"{key}={value}"]
+    for setting in settings:
+        args += ["--set", setting]
+    code = main(args)
+    if code != 0:
+        return code, {}, None
+    return code, json.loads((out / "summary.json").read_text()), pd.read_csv(out / "series.csv")
+
+
+def test_a_held_load_is_carried_at_every_state_and_shortens_du(tmp_path):
+    _, bare, _ = _run(tmp_path, "bare", "live_load=none")
+    _, light, _ = _run(tmp_path, "light", "held_load_N=0.5")
+    _, heavy, series = _run(tmp_path, "heavy", "held_load_N=4")
+    assert series is not None
+    weight = bare["selfweight"]["arch_weight_N"]
+    moving = series[series["stage"] == "equilibrium"]
+    carried = moving["left_Ry_N"] + moving["right_Ry_N"]
+    assert ((carried - (weight + 4.0)).abs() < BALANCE * weight).all()
+    assert (moving["unbalanced"] < BALANCE).all()
+    assert heavy["loading"]["held_live_load"] == "4 N vertical at 0.25 of the span"
+    assert bare["loading"]["held_live_load"] == ""
+    assert heavy["du_mm"] < bare["du_mm"]
+    assert light["du_mm"] == pytest.approx(bare["du_mm"], rel=0.1)  # a small load moves du little
+
+
+def test_a_load_the_arch_does_not_carry_or_that_the_dem_would_hold_is_refused_in_one_line(tmp_path, capsys):
+    capacity = static_load_path(preset("set2").with_overrides(SMALL)).capacity
+    for settings, words in (
+        ([f"held_load_N={1.5 * capacity:.3f}", "numerics.engine=static"], "loads.held_load_N = "),
+        (["held_load_N=1", "numerics.engine=dem"], "the static engine holds it"),
+        ([], "say how much of the live load it holds"),
+    ):
+        args = ["run", "--preset", "set2", "--out", str(tmp_path / "refused"), "--no-figures"]
+        for key, value in SMALL.items():
+            args += ["--set", f"{key}={value}"]
+        for setting in settings:
+            args += ["--set", setting]
+        assert main(args) != 0
+        message = capsys.readouterr().err.strip()  # the run's own log lines go to standard output
+        assert words in message and len(message.splitlines()) == 1, message
