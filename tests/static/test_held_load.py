@@ -1,8 +1,8 @@
 """Load, then movement (issue 44): a static run holds a live load while its support moves
 (`loads.held_load_N`, `held_acceleration_g`): the load is grown on the load path after the self-weight,
 then kept. The supports carry the weight and the load at every equilibrium; no load gives the run without
-one; a heavier load shortens du; a load above the arch's capacity, or held by the DEM, is refused in one
-line."""
+one (a live load of which nothing is held is listed unused); a heavier load shortens du; a load above
+the arch's capacity, or a live load in a DEM run, is refused in one line."""
 
 from __future__ import annotations
 
@@ -44,6 +44,8 @@ def test_a_held_load_is_carried_at_every_state_and_shortens_du(tmp_path):
     assert (moving["unbalanced"] < BALANCE).all()
     assert heavy["loading"]["held_live_load"] == "4 N vertical at 0.25 of the span"
     assert bare["loading"]["held_live_load"] == ""
+    _, none_held, _ = _run(tmp_path, "none_held", "held_load_N=0")  # the live load named, nothing of it held
+    assert none_held["du_mm"] == bare["du_mm"] and "live_load" in none_held["unused_parameters"]
     assert heavy["du_mm"] < bare["du_mm"]
     assert light["du_mm"] == pytest.approx(bare["du_mm"], rel=0.1)  # a small load moves du little
 
@@ -52,8 +54,7 @@ def test_a_load_the_arch_does_not_carry_or_that_the_dem_would_hold_is_refused_in
     capacity = static_load_path(preset("set2").with_overrides(SMALL)).capacity
     for settings, words in (
         ([f"held_load_N={1.5 * capacity:.3f}", "numerics.engine=static"], "loads.held_load_N = "),
-        (["held_load_N=1", "numerics.engine=dem"], "the static engine holds it"),
-        ([], "say how much of the live load it holds"),
+        (["held_load_N=1", "numerics.engine=dem"], "a DEM run does not hold a live load"),
     ):
         args = ["run", "--preset", "set2", "--out", str(tmp_path / "refused"), "--no-figures"]
         for key, value in SMALL.items():

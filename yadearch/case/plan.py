@@ -11,7 +11,7 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes, arch_imperfections, check_contact_model
-from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep, held_multiplier
+from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep
 from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.errors import CaseError
 from yadearch.model import units
@@ -44,16 +44,11 @@ def plan_run(case: ArchCase) -> RunPlan:
             f"{num.first_increment_mm:g} and max_increment_mm = {num.max_increment_mm:g} must "
             "grow in that order (the tolerance below the first increment, that at most the largest)"
         )
-    if case.loads.live_load != NONE and held_multiplier(case) == 0.0:
+    if case.loads.live_load != NONE and num.engine != "static":
         raise CaseError(
-            f"loads.live_load = {case.loads.live_load!r}: a run follows a support movement; say how much of "
-            "the live load it holds meanwhile (loads.held_load_N or held_acceleration_g), or ask its "
-            "capacity of `yadearch loads`"
-        )
-    if held_multiplier(case) > 0.0 and num.engine != "static":
-        raise CaseError(
-            f"loads.live_load = {case.loads.live_load!r} held during the movement: the static engine holds "
-            "it (numerics.engine = 'static', or --engine static); the DEM does not yet"
+            f"loads.live_load = {case.loads.live_load!r}: a DEM run does not hold a live load while its support "
+            "moves yet (the static engine does: --engine static, with loads.held_load_N or held_acceleration_g); "
+            "its capacity is `yadearch loads --engine dem`"
         )
     if case.loads.fill_depth_mm > 0.0 and num.engine != "static":
         raise CaseError(

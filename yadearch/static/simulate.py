@@ -15,7 +15,7 @@ from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
-from yadearch.model.loads import UNITS
+from yadearch.model.loads import NONE, UNITS
 from yadearch.results.provenance import provenance
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSummary, collapse_fields, loading_info
@@ -59,6 +59,8 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
     end_mm = path_end_mm(case, arch.movement)
     records = StaticRecords(arch, num.hinge_rotation_mrad * 1e-3, keep_tables=num.keeps_tables)
     unused = {key: getattr(num, key) for key in DEM_ONLY_NUMERICS}
+    if case.loads.live_load != NONE and held_multiplier(case) == 0.0:
+        unused["live_load"] = f"{case.loads.live_load} (none of it held: held_load_N, held_acceleration_g 0)"
     log(
         f"[{case.name}] static engine: kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
         f"{arch.n_blocks} blocks; not used by this engine: {', '.join(unused)}"
