@@ -31,6 +31,7 @@ class Verdict(NamedTuple):
     detail: str
 
     def line(self) -> str:
+        """The printed line: PASS or FAIL, the target and its figures."""
         return f"{'PASS' if self.met else 'FAIL'}  {self.target}: {self.detail}"
 
 
