@@ -10,7 +10,8 @@ import pytest
 from conftest import stacked_pairs
 
 from yadearch.model.compliant_hinge import fold_margin, joint_turn
-from yadearch.model.joint_law import JointLaw, joint_forces, joint_table
+from yadearch.model.joint_law import JointLaw, joint_forces
+from yadearch.model.joint_table import joint_table
 
 KN, DEPTH, WIDTH, HEIGHT = 3.0e12, 0.12, 0.024, 0.012  # kn 3000 N/mm^3, the paper's joint
 CHAIN_CURVATURE = 0.21  # N m / rad^2: the paper arch's chain beside hinge A at 38 mm (about N x one voussoir)

@@ -24,7 +24,8 @@ from yadearch.model.imperfections import (
     keystones,
     wedge_openings,
 )
-from yadearch.model.joint_law import JointLaw, joint_forces, joint_table
+from yadearch.model.joint_law import JointLaw, joint_forces
+from yadearch.model.joint_table import joint_table
 
 KN, KS, TAN_PHI = 5.2e9, 2.6e9, math.tan(math.radians(41.2))
 WIDTH, HEIGHT, DEPTH = 0.024, 0.02, 0.1

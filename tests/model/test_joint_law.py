@@ -9,7 +9,8 @@ import numpy as np
 import pytest
 from conftest import stacked_pairs
 
-from yadearch.model.joint_law import JointLaw, joint_forces, joint_table, unbalanced_force
+from yadearch.model.joint_law import JointLaw, joint_forces, unbalanced_force
+from yadearch.model.joint_table import joint_table
 
 KN, KS, TAN_PHI = 5.2e9, 2.6e9, math.tan(math.radians(41.2))
 WIDTH, HEIGHT, DEPTH = 0.05, 0.02, 0.1

@@ -18,7 +18,8 @@ from yadearch.case.mechanics import runaway_length
 from yadearch.errors import RunFolderError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry, Joint, prism
-from yadearch.model.joint_law import JointLaw, joint_forces, joint_table
+from yadearch.model.joint_law import JointLaw, joint_forces
+from yadearch.model.joint_table import joint_table
 from yadearch.model.joint_tangent import joint_tangent
 from yadearch.model.movement import Movement
 from yadearch.results.rundir import is_complete, read_run, read_summary

@@ -11,7 +11,8 @@ import numpy as np
 from yadearch.case.mechanics import ContactStiffness
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.imperfections import GapProfiles
-from yadearch.model.joint_law import JointForces, JointLaw, joint_forces, joint_table, unbalanced_force
+from yadearch.model.joint_law import JointForces, JointLaw, joint_forces, unbalanced_force
+from yadearch.model.joint_table import joint_table
 from yadearch.model.joints import pair_rotation
 from yadearch.model.stability import smallest_stiffness, tangent_stiffness
 

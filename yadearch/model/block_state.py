@@ -8,7 +8,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from yadearch.model.joint_law import JointForces, JointLaw, JointTable
+from yadearch.model.joint_law import JointForces, JointLaw
+from yadearch.model.joint_table import JointTable
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, tangent_kernel
 
 

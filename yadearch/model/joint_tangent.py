@@ -16,7 +16,8 @@ import numpy as np
 from numba import njit
 
 from yadearch.model.dual import add, const, dabs, dcos, div, dmax, dmin, dsin, dtan, mul, scale, shift, sub, var
-from yadearch.model.joint_law import JointForces, JointLaw, JointTable
+from yadearch.model.joint_law import JointForces, JointLaw
+from yadearch.model.joint_table import JointTable
 
 BLOCK_DOFS = 3  # x, y, rotation
 

@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from yadearch.model.joint_law import JointLaw, JointTable, joint_forces
+from yadearch.model.joint_law import JointLaw, joint_forces
+from yadearch.model.joint_table import JointTable
 
 PROBE_M = 1e-9  # trial displacement of the central differences (m): far below any overlap of interest
 

@@ -23,7 +23,6 @@ followed as before (it may climb first and take a hinge up to MIGRATION_REACH jo
 from __future__ import annotations
 
 import math
-from typing import TypeGuard
 
 import numpy as np
 
@@ -33,6 +32,7 @@ from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_
 from yadearch.solve.limit_result import HingeRecord, SnapRecord
 from yadearch.solve.reseat import closing_path, descending_chains, follow_tie, land, migrates
 from yadearch.solve.rigid import LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, contacts
+from yadearch.solve.snap_rules import climbs, moves_a_hinge
 
 COLLAPSE_PROBE_MM = 0.05  # past a limit, where the four-hinge chains are read (clear of LP tolerances)
 CLOSURE_BISECTIONS = 60  # halvings that put a closing corner on its contact to round-off
@@ -100,7 +100,7 @@ class March:
         starts) or collapses the arch (it closes no hinge); otherwise it would climb to close one, and
         the two joints share that hinge until, further along the support's path, the chain descends."""
         path = closing_path(self.arch, placement, chain, placement, self.runaway)
-        return path is None or not _climbs([potential(self.arch, p) for p in path], past_fold=True)
+        return path is None or not climbs([potential(self.arch, p) for p in path], past_fold=True)
 
     def valid(self, placement: Placement | None, base: Placement) -> bool:
         """Reached, and no corner open in `base` passed through its neighbour."""
@@ -226,13 +226,13 @@ class March:
         equilibrium so (collapse)."""
         state = start
         for _ in range(self.max_stages):
-            if not _migrates(chain, pivots, self.reach):
+            if not moves_a_hinge(chain, pivots, self.reach):
                 return None, 0.0, chain
             path = closing_path(self.arch, state, chain, start, self.runaway)
             if path is None:
                 return None, 0.0, chain
             height = [potential(self.arch, p) for p in path]
-            if _climbs(height, self.folding):
+            if climbs(height, self.folding):
                 raise LimitError(
                     f"at {units.to_mm(start.delta):.3f} mm the arch comes to rest on four "
                     "open hinges, which this analysis does not follow"
@@ -254,7 +254,7 @@ class March:
 
     @property
     def reach(self) -> int:
-        """How many interfaces a folded joint's chain may move a hinge (`_migrates`)."""
+        """How many interfaces a folded joint's chain may move a hinge (`snap_rules.moves_a_hinge`)."""
         return MIGRATION_REACH if self.folding else 1
 
     def switch(self, state: Placement, mechanism: Mechanism | None, jump_mm: float) -> Mechanism:
@@ -280,27 +280,6 @@ class March:
             HingeRecord(p.joint + 1, "IE"[p.side], d_mm, None, jump_mm) for p in new.pivots if p not in old
         ]
         return new
-
-
-def _climbs(height: list[float], past_fold: bool) -> bool:
-    """Whether the weights rise along a snap where they may not (heights of its samples): a rigid
-    arch snaps only downhill, else it would rest on four open hinges; past a fold the chain may
-    first climb the rigid barrier the fold removed, but must end lower and descend from its top."""
-    if not past_fold:
-        return bool(np.any(np.diff(height) > 0))
-    top = int(np.argmax(height))
-    return height[-1] >= height[0] or bool(np.any(np.diff(height[top:]) > 0))
-
-
-def _migrates(chain: Mechanism | None, pivots: tuple[Pivot, ...], reach: int = 1) -> TypeGuard[Mechanism]:
-    """Whether a fixed-support `chain` moves a hinge of `pivots` to another interface: one new
-    hinge, at most `reach` interfaces from the one hinge it turns back (to close; 1 for a rigid
-    snap, the next interface). Any other lowering chain is a collapse."""
-    if chain is None or chain.power >= 0 or len(chain.pivots) != 4 or len(chain.closing) != 1:
-        return False
-    new = [p for p in chain.pivots if p not in pivots]
-    back = chain.closing[0]
-    return len(new) == 1 and back in {p.joint for p in pivots} and 1 <= abs(new[0].joint - back) <= reach
 
 
 def _bisect(ok, high: float, width: float) -> float:

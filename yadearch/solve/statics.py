@@ -21,7 +21,8 @@ from yadearch.model import units
 from yadearch.model.backfill import backfill_points
 from yadearch.model.block_state import assemble_band, free_state, kernel_table
 from yadearch.model.geometry import ArchGeometry, block_volume
-from yadearch.model.joint_law import JointLaw, JointTable, joint_table
+from yadearch.model.joint_law import JointLaw
+from yadearch.model.joint_table import JointTable, joint_table
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, joint_tangent
 from yadearch.model.loads import block_loads, live_load_points, turned_moments
 from yadearch.model.movement import Movement

@@ -1,0 +1,33 @@
+"""The rules a snap obeys in the march (`solve.march`): the weights never rise along it (past a fold,
+only on the way to its top), and its chain moves one hinge to a nearby interface; a chain that breaks
+them is not a snap the march follows."""
+
+from __future__ import annotations
+
+from typing import TypeGuard
+
+import numpy as np
+
+from yadearch.solve.limit_lp import Mechanism
+from yadearch.solve.rigid import Pivot
+
+
+def climbs(height: list[float], past_fold: bool) -> bool:
+    """Whether the weights rise along a snap where they may not (heights of its samples): a rigid
+    arch snaps only downhill, else it would rest on four open hinges; past a fold the chain may
+    first climb the rigid barrier the fold removed, but must end lower and descend from its top."""
+    if not past_fold:
+        return bool(np.any(np.diff(height) > 0))
+    top = int(np.argmax(height))
+    return height[-1] >= height[0] or bool(np.any(np.diff(height[top:]) > 0))
+
+
+def moves_a_hinge(chain: Mechanism | None, pivots: tuple[Pivot, ...], reach: int = 1) -> TypeGuard[Mechanism]:
+    """Whether a fixed-support `chain` moves a hinge of `pivots` to another interface: one new
+    hinge, at most `reach` interfaces from the one hinge it turns back (to close; 1 for a rigid
+    snap, the next interface). Any other lowering chain is a collapse."""
+    if chain is None or chain.power >= 0 or len(chain.pivots) != 4 or len(chain.closing) != 1:
+        return False
+    new = [p for p in chain.pivots if p not in pivots]
+    back = chain.closing[0]
+    return len(new) == 1 and back in {p.joint for p in pivots} and 1 <= abs(new[0].joint - back) <= reach
