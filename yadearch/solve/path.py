@@ -16,6 +16,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Protocol
 
+import numpy as np
+
 from yadearch.case.config import NumericsConfig
 from yadearch.model import units
 from yadearch.solve.stages import Outcome, Verdict
@@ -126,6 +128,16 @@ def first_snap(snaps: list[dict]) -> tuple[float, float] | None:
         return None
     low, high = snaps[0]["fold_mm"]
     return units.mm(low), units.mm(high)
+
+
+def extrapolate(lams: list[float], values: list[np.ndarray], target: float) -> np.ndarray:
+    """The Lagrange polynomial through `values` at the distinct path positions `lams`, at `target`:
+    where the path's last states put the next (a line through two, a parabola through three)."""
+    weights = [
+        np.prod([(target - lams[m]) / (lams[k] - lams[m]) for m in range(len(lams)) if m != k])
+        for k in range(len(lams))
+    ]
+    return sum(w * v for w, v in zip(weights, values))
 
 
 def path_settings(numerics: NumericsConfig, max_displacement_mm: float) -> PathSettings:

@@ -27,7 +27,7 @@ from yadearch.model.joint_law import JointForces
 from yadearch.solve import banded
 from yadearch.solve.collapse_mode import FoldMode, fold_mode
 from yadearch.solve.newton import Equilibrium, Solver, SolverSettings, largest_move
-from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, follow_path, path_settings
+from yadearch.solve.path import PathResult, PathSettings, PathStep, extrapolate, first_snap, follow_path, path_settings
 from yadearch.solve.stages import Stage, Verdict
 from yadearch.solve.static_state import PathParameter, StaticEngineError, StaticState
 from yadearch.solve.statics import StaticArch, static_arch
@@ -239,12 +239,8 @@ class StaticLoading:
         last = history[-1]
         history = history[-PREDICTOR_POINTS:]
         lams = [s.lam for s in history]
-        if len(set(lams)) == len(lams) >= 2:  # Lagrange extrapolation through the last states
-            weights = [
-                np.prod([(target - lams[m]) / (lams[k] - lams[m]) for m in range(len(lams)) if m != k])
-                for k in range(len(lams))
-            ]
-            return self.place(sum(w * s.u for w, s in zip(weights, history)), target)
+        if len(set(lams)) == len(lams) >= 2:
+            return self.place(extrapolate(lams, [s.u for s in history], target), target)
         moved = self.place(last.u, target)
         stiffness = self.arch.stiffness(self.solver.state(last.u, last.u, last.forces.shear_force)[0])
         free = self.arch.free_dofs
