@@ -80,7 +80,7 @@ def _options(command: click.Command):
 
 def test_every_option_of_an_api_argument_takes_its_type_from_the_table():
     seen = set()
-    for command in cli.commands.values():
+    for command in cli.all_commands().values():  # the lazily imported commands too
         for name, option in _options(command):
             flag = option.opts[0]
             if flag in OPTIONS:

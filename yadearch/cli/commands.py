@@ -4,29 +4,58 @@ from __future__ import annotations
 
 import signal
 import sys
+from importlib import import_module
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
-from yadearch import api
-from yadearch.analysis.mechanism import run_warnings
-from yadearch.api.runs import limit_files
-from yadearch.case.config import parameter_docs
-from yadearch.case.names import check_name
-from yadearch.cli.campaigns import calibrate, robustness, sweep
-from yadearch.cli.capacity import capacity
-from yadearch.cli.loads import loads
-from yadearch.cli.montecarlo import montecarlo
 from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, resolve_case
-from yadearch.cli.sensitivity import sensitivity
-from yadearch.cli.survey import survey
-from yadearch.cli.views import animate, export
 from yadearch.errors import YadearchError
-from yadearch.results.rundir import read_summary
+
+if TYPE_CHECKING:
+    from yadearch.results.summary import RunSummary
+
+# The commands defined in other modules, imported only when invoked (or listed by --help): a command
+# imports what it needs (pandas, matplotlib, the studies) and no other command's, so that a single
+# static run starts in a fraction of a second (docs/speed.md).
+LAZY_COMMANDS = {
+    "sweep": "yadearch.cli.campaigns",
+    "calibrate": "yadearch.cli.campaigns",
+    "robustness": "yadearch.cli.campaigns",
+    "montecarlo": "yadearch.cli.montecarlo",
+    "capacity": "yadearch.cli.capacity",
+    "loads": "yadearch.cli.loads",
+    "survey": "yadearch.cli.survey",
+    "sensitivity": "yadearch.cli.sensitivity",
+    "animate": "yadearch.cli.views",
+    "export": "yadearch.cli.views",
+}
+
+
+class LazyGroup(click.Group):
+    """A group whose commands in LAZY_COMMANDS are imported from their module on first use."""
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted({*self.commands, *LAZY_COMMANDS})
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        if cmd_name not in self.commands and cmd_name in LAZY_COMMANDS:
+            command = getattr(import_module(LAZY_COMMANDS[cmd_name]), cmd_name)
+            self.add_command(command, cmd_name)
+        return self.commands.get(cmd_name)
+
+    def all_commands(self) -> dict[str, click.Command]:
+        """Every command by name, the lazy ones imported (for tests and documentation)."""
+        context = click.Context(self)
+        return {name: command for name in self.list_commands(context) if (command := self.get_command(context, name))}
 
 
 def _report_summary(out: Path) -> None:
-    summary = read_summary(out)
+    from yadearch.analysis.mechanism import run_warnings
+    from yadearch.results.rundir import read_summary
+
+    summary: RunSummary = read_summary(out)
     du = summary.du_mm
     click.echo(
         f"{summary.name}: du = {'no collapse' if du is None else f'{du:.2f} mm'}, "
@@ -37,7 +66,7 @@ def _report_summary(out: Path) -> None:
         click.echo(f"warning: {warning}")
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(package_name="yadearch")
 def cli() -> None:
     """Masonry arches on moving supports, simulated with YADE (polyhedral blocks, dry joints)."""
@@ -67,10 +96,13 @@ def run(
     figures: bool,
 ) -> None:
     """Run one case to collapse and write its run folder (a finished run of the same case is reused)."""
+    from yadearch.api.runs import run as run_case
+    from yadearch.case.names import check_name
+
     case = resolve_case(preset_name, case_file, kn, settings)
     if name is not None:
         case = case.with_overrides({"name": check_name(name, "--name")})
-    result = api.run(case, out=out, rerun=rerun, overwrite=overwrite, figures=figures)
+    result = run_case(case, out=out, rerun=rerun, overwrite=overwrite, figures=figures)
     _report_summary(result.path)
     if figures:
         click.echo(f"figures -> {result.path / 'figures'}")
@@ -93,11 +125,12 @@ def reproduce(out: str, jobs: int, rerun: bool) -> None:
 
     A finished run of exactly the same case already in OUT is reused (an interrupted reproduction
     resumes), unless --rerun."""
+    from yadearch.api.runs import reproduce as reproduce_cases
 
     def reused(folder: Path) -> None:
         click.echo(f"{folder.name}: reusing the finished run in {folder} (--rerun to run it again)")
 
-    results, path = api.reproduce(out, jobs=jobs, rerun=rerun, on_reuse=reused)
+    results, path = reproduce_cases(out, jobs=jobs, rerun=rerun, on_reuse=reused)
     for result in results:
         _report_summary(result.path)
     click.echo(f"report: {path}")
@@ -106,6 +139,8 @@ def reproduce(out: str, jobs: int, rerun: bool) -> None:
 @cli.command()
 def params() -> None:
     """List every case parameter with its default and meaning."""
+    from yadearch.case.config import parameter_docs
+
     for qualified, default, doc in parameter_docs():
         click.echo(f"{qualified:40s} {default:>10s}  {doc}")
 
@@ -143,6 +178,8 @@ def limit(
     compliant: bool,
 ) -> None:
     """Rigid-block limit analysis, no YADE: du_rigid, hinges, thrust-line figure (kn only with --compliant)."""
+    from yadearch.api.runs import limit as limit_analysis
+    from yadearch.api.runs import limit_files
     from yadearch.case.imperfect import amplitudes
     from yadearch.solve.compliant import VALID_MARGIN_FRACTION
 
@@ -153,7 +190,7 @@ def limit(
             "for the du a run at that kn should find",
             err=True,
         )
-    result = api.limit(case, compliant=compliant, max_snap_mm=max_snap_mm, out=out)
+    result = limit_analysis(case, compliant=compliant, max_snap_mm=max_snap_mm, out=out)
     path, _ = limit_files(case, compliant, out)
     du = "no collapse" if result.du_rigid_mm is None else f"{result.du_rigid_mm:.2f} mm"
     if compliant:
@@ -189,24 +226,14 @@ def limit(
         )
 
 
-cli.add_command(sweep)
-cli.add_command(calibrate)
-cli.add_command(robustness)
-cli.add_command(montecarlo)
-cli.add_command(capacity)
-cli.add_command(loads)
-cli.add_command(survey)
-cli.add_command(sensitivity)
-cli.add_command(animate)
-cli.add_command(export)
-
-
 @cli.command("report")
 @click.argument("runs", nargs=-1, required=True, type=click.Path())
 @click.option("--out", required=True, type=OUT_FOLDER, help="folder that receives report.md and the figures")
 def report(runs: tuple[str, ...], out: str) -> None:
     """Write OUT/report.md for the run folders RUNS: comparison with the paper, hinges, figures."""
-    click.echo(f"report -> {api.report(runs, out)}")
+    from yadearch.api.runs import report as write_report
+
+    click.echo(f"report -> {write_report(runs, out)}")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -237,7 +264,8 @@ def _terminate_as_interrupt(signum: int, frame: object) -> None:
 def _command(argv: list[str] | None) -> str:
     """The sub-command a command line names (with a trailing space), for the help hint."""
     words = sys.argv[1:] if argv is None else argv
-    return next((f"{w} " for w in words if w in cli.commands), "")
+    names = set(cli.commands) | set(LAZY_COMMANDS)
+    return next((f"{w} " for w in words if w in names), "")
 
 
 if __name__ == "__main__":

@@ -4,18 +4,19 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 
-from yadearch.api.arguments import ARGUMENTS, Argument
-from yadearch.case.config import ArchCase, load_case, preset
 from yadearch.case.names import FILE, FOLDER, output_path
-from yadearch.case.support import movement_overrides
 from yadearch.errors import CaseError
-from yadearch.results.summary import STATIC
-from yadearch.static.records import DEM_ONLY_NUMERICS
-from yadearch.studies.campaigns.grid import parse_scalar
+
+if TYPE_CHECKING:
+    from yadearch.api.arguments import Argument
+    from yadearch.case.config import ArchCase
+
+# The modules a case or an option's check needs are imported when a command runs, not when the
+# command line starts: `yadearch run` imports no campaign, study or plotting module (docs/speed.md).
 
 PRESETS = ("set1", "set2")
 ENGINES = ("dem", "static")
@@ -27,6 +28,12 @@ def resolve_case(
     preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...]
 ) -> ArchCase:
     """The case from a preset or a TOML file, with `--kn` and `--set key=value` overrides applied."""
+    from yadearch.case.config import load_case, preset
+    from yadearch.case.support import movement_overrides
+    from yadearch.results.summary import STATIC
+    from yadearch.static.records import DEM_ONLY_NUMERICS
+    from yadearch.studies.campaigns.grid import parse_scalar
+
     if preset_name and case_file:
         raise click.UsageError("give either --preset or --case, not both")
     case = load_case(case_file) if case_file else preset(preset_name or "set2")
@@ -119,6 +126,8 @@ def pool_options(func: Any) -> Any:
 
 def timeout_s(timeout_min: float | None) -> float | None:
     """--timeout-min in seconds (None: no limit)."""
+    from yadearch.api.arguments import ARGUMENTS
+
     return None if timeout_min is None else ARGUMENTS["timeout_s"].scale * timeout_min
 
 
@@ -145,11 +154,23 @@ NUMBER = Number()
 
 class ArgumentType(click.ParamType):
     """The option of an API argument (`api.arguments.ARGUMENTS`): read strictly and checked against
-    the same range in the option's unit, so that the command line and the API agree."""
+    the same range in the option's unit, so that the command line and the API agree. A row given by
+    its name is looked up when first needed (the table imports the studies whose limits it holds)."""
 
-    def __init__(self, argument: Argument):
-        self.argument = argument
-        self.name = "integer" if argument.kind is int else "number"
+    def __init__(self, argument: Argument | str):
+        self._argument = argument
+
+    @property
+    def argument(self) -> Argument:
+        if isinstance(self._argument, str):
+            from yadearch.api.arguments import ARGUMENTS
+
+            self._argument = ARGUMENTS[self._argument]
+        return self._argument
+
+    @property
+    def name(self) -> str:  # type: ignore[override]  # click's name of the type (help's metavar, messages)
+        return "integer" if self.argument.kind is int else "number"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
         argument = self.argument
@@ -166,7 +187,7 @@ class ArgumentType(click.ParamType):
 
 def argument_type(name: str) -> ArgumentType:
     """The click type of the option for the API argument `name`."""
-    return ArgumentType(ARGUMENTS[name])
+    return ArgumentType(name)
 
 
 class OutputPath(click.ParamType):

@@ -14,7 +14,6 @@ from dataclasses import dataclass
 from typing import Protocol
 
 import numpy as np
-from scipy.optimize import brentq
 from scipy.special import ellipe, ellipeinc
 
 ORIENTATIONS = ("normal", "vertical", "radial")
@@ -185,6 +184,8 @@ class HalfEllipse:
             return 0.0
         if s >= (1.0 - END_TOLERANCE) * self.length:
             return float(np.pi)
+        from scipy.optimize import brentq  # here, not at import: scipy.optimize costs a run ~50 ms
+
         return float(brentq(lambda phi: self._arc(phi) - s, 0.0, np.pi, xtol=ROOT_XTOL))
 
     def _frame(self, phi: float) -> tuple[np.ndarray, np.ndarray]:
@@ -259,6 +260,8 @@ def extrados_end(intrados: Intrados, station: Station, direction: np.ndarray, th
     def across(u: float) -> float:
         d = intrados.extrados(u, thickness) - station.point
         return float(direction[0] * d[1] - direction[1] * d[0])
+
+    from scipy.optimize import brentq  # here, not at import: scipy.optimize costs a run ~50 ms
 
     margin = 1.0 / RAY_SAMPLES  # the curves continue past the springings, where round-off may put a root
     u = np.linspace(-margin, 1.0 + margin, RAY_SAMPLES + 3)

@@ -15,7 +15,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import linprog
 
 from yadearch.solve.rigid import EXTRADOS, INTRADOS, Contacts, LimitError, Pivot, Placement, RigidArch, contacts, cross
 
@@ -113,6 +112,8 @@ def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True, 
         "method": LP_METHOD,
         "options": LP_OPTIONS,
     }
+    from scipy.optimize import linprog  # here, not at import: scipy.optimize costs a run ~50 ms
+
     result = linprog(objective, **problem)
     if result.status == STATUS_UNBOUNDED:  # a self-stress (flat arch) relieves the support without end
         result = linprog(np.zeros_like(objective), **problem)
@@ -176,6 +177,8 @@ def solve_kinematics(arch: RigidArch, placement: Placement, support_speed: float
     length = arch.geometry.span  # rotations boxed to 1/length: velocities of order one across the arch
     box = None if support_speed else [(-1.0, 1.0), (-1.0, 1.0), (-1.0 / length, 1.0 / length)]
     bounds = [(None, None)] * len(load) if box is None else box * (len(load) // 3)
+    from scipy.optimize import linprog
+
     result = linprog(
         load,
         A_ub=-a_v.T[np.flatnonzero(corner)],

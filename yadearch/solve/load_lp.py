@@ -13,7 +13,6 @@ import math
 from dataclasses import dataclass, replace
 
 import numpy as np
-from scipy.optimize import linprog
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import backfill, live_load
@@ -105,6 +104,8 @@ def load_capacity(
     bounds = bounds + [(0.0, None)]  # the multiplier
     if a_ub is not None:
         a_ub = np.column_stack([a_ub, np.zeros(2 * m)])
+    from scipy.optimize import linprog  # here, not at import: scipy.optimize costs a run ~50 ms
+
     result = linprog(
         objective,
         A_ub=a_ub,

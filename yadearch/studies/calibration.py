@@ -16,7 +16,6 @@ from pathlib import Path
 from typing import Any
 
 import pandas as pd
-from scipy.optimize import brentq
 
 from yadearch.atomic import write_text_atomically
 from yadearch.case.config import ArchCase
@@ -155,6 +154,8 @@ def _brent(
                 raise _Converged
             known[x] = evaluation
         return known[x].du_mm - target
+
+    from scipy.optimize import brentq  # here, not at import: scipy.optimize costs a run ~50 ms
 
     try:
         brentq(
