@@ -22,6 +22,7 @@ from yadearch.studies.loads.static import PAPER_LOADS, QUARTER_SPAN
 ENGINES_KN = 5.2  # N/mm3: the paper's set 2, where both engines are quick
 SET1_KN = 0.25  # N/mm3: the paper's set 1, the softest joints
 SETTLED_MM = 22.0  # a settlement before the load: about a quarter of set 2's static du (87.99 mm)
+PAPER_NAMES = ("paper_quarter_span", "paper_mid_span", "paper_acceleration")  # of PAPER_LOADS, in order
 NUMERICS_CASES = ("segmental_point_0.3", "semicircle_t60_acceleration")  # the DEM's numerics varied on these
 NUMERICS_VARIANTS = (  # (setting, factor): the loading rate (it follows the support's), damping, time step
     ("numerics.support_rate_mm_per_s", 0.5),
@@ -38,8 +39,7 @@ def engine_cases() -> list[tuple[ArchCase, float]]:
     0.25, and after a settlement of SETTLED_MM."""
     cases = [(case.with_overrides({"interface.kn_N_per_mm3": ENGINES_KN}), 0.0) for case in check_cases()]
     paper = paper_arch()
-    for what, overrides in PAPER_LOADS.items():
-        name = f"paper_{what.replace(' ', '_').replace('.', '')}"
+    for (what, overrides), name in zip(PAPER_LOADS.items(), PAPER_NAMES):
         cases.append((paper.with_overrides({**overrides, "name": name, "interface.kn_N_per_mm3": ENGINES_KN}), 0.0))
     quarter = {**PAPER_LOADS[QUARTER_SPAN], "interface.kn_N_per_mm3": ENGINES_KN}
     set1 = paper.with_overrides({**quarter, "name": "paper_quarter_span_set1", "interface.kn_N_per_mm3": SET1_KN})
