@@ -8,7 +8,7 @@ DEBIAN_PACKAGES=(yade python3-venv python3-pip python3-setuptools python3-numpy 
                  python3-matplotlib python3-scipy python3-click python3-tomli-w python3-tqdm
                  python3-dask python3-distributed python3-pytest python3-numba
                  python3-hypothesis python3-nbclient python3-ipykernel python3-nbformat
-                 python3-multiprocess python3-vtk9 ffmpeg xvfb xauth)
+                 python3-multiprocess python3-vtk9 python3-notebook ffmpeg xvfb xauth)
 
 missing=()
 for pkg in "${DEBIAN_PACKAGES[@]}"; do
@@ -27,6 +27,9 @@ if [ ! -x .venv/bin/python ]; then
     /usr/bin/python3 -m venv --system-site-packages .venv
 fi
 .venv/bin/python -m pip install -q --no-build-isolation --no-deps -e .
+# the notebooks' kernel ("python3") is the venv's Python when Jupyter runs from the venv
+# (`.venv/bin/python -m notebook examples/`): Debian's own python3 kernel cannot import yadearch
+.venv/bin/python -m ipykernel install --prefix .venv --name python3 --display-name "Python 3 (yadearch .venv)" >/dev/null
 # SALib (the sensitivity study's Sobol sampling and estimators) is not in Debian: pip, without its
 # dependencies, which are all Debian's (numpy, scipy, pandas, matplotlib, multiprocess)
 .venv/bin/python -m pip install -q --no-deps "SALib==1.4.7"
