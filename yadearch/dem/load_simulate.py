@@ -5,12 +5,12 @@ AFTER_MM`, writing OUT_DIR/NAME_load_path.json, .csv and .log (`results.load_pat
 from __future__ import annotations
 
 import sys
-import time
 from pathlib import Path
 
 from yadearch.case.config import load_case
 from yadearch.errors import YadearchError
 from yadearch.results.load_path import load_path_file, write_load_path
+from yadearch.results.run_log import stamped_log
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -26,12 +26,7 @@ def main(argv: list[str] | None = None) -> int:
     case, out, after_mm = load_case(argv[0]), Path(argv[1]), float(argv[2])
     out.mkdir(parents=True, exist_ok=True)
     with load_path_file(out, case.name, ".log").open("w") as log_file:
-
-        def log(line: str) -> None:
-            stamped = f"{time.strftime('%H:%M:%S')} {line}"
-            print(stamped, flush=True)
-            log_file.write(stamped + "\n")
-            log_file.flush()
+        log = stamped_log(log_file)
 
         try:
             import_yade(case.numerics.threads)

@@ -20,6 +20,7 @@ from yadearch.case.support import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.results.provenance import provenance
+from yadearch.results.run_log import stamped_log
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 from yadearch.results.summary import DEM, RunSummary, loading_info
 
@@ -37,11 +38,7 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
     out.mkdir(parents=True, exist_ok=True)
     log_file = (out / LOG_FILE).open("w")
 
-    def log(line: str) -> None:
-        stamped = f"{time.strftime('%H:%M:%S')} {line}"
-        print(stamped, flush=True)
-        log_file.write(stamped + "\n")
-        log_file.flush()
+    log = stamped_log(log_file)
 
     import_yade(case.numerics.threads)
     import yade.config

@@ -97,6 +97,13 @@ class LoadingInfo:
     motion: str = TRANSLATION  # runs written before rotations and paths moved it in a straight line
     held_live_load: str = ""  # the live load held on the arch while the support moved ('' without one)
 
+    def to_json(self) -> dict[str, Any]:
+        """summary.json's `loading`: a run without a held live load writes no `held_live_load`."""
+        out = dataclasses.asdict(self)
+        if not self.held_live_load:
+            del out["held_live_load"]
+        return out
+
 
 @dataclass(kw_only=True)
 class RunSummary:
@@ -210,7 +217,7 @@ class RunSummary:
             if f.name == "hinges_at_collapse":
                 value = [h.to_json() for h in value]
             elif isinstance(value, LoadingInfo):
-                value = dataclasses.asdict(value)
+                value = value.to_json()
             elif isinstance(value, tuple):
                 value = list(value)
             out[f.name] = value

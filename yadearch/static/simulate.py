@@ -17,6 +17,7 @@ from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.model.loads import NONE, UNITS
 from yadearch.results.provenance import provenance
+from yadearch.results.run_log import stamped_log
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSummary, collapse_fields, loading_info
 from yadearch.solve.limit import why_not_standing
@@ -204,12 +205,7 @@ def main(argv: list[str] | None = None) -> int:
     out = Path(argv[1])
     out.mkdir(parents=True, exist_ok=True)
     with (out / LOG_FILE).open("w") as log_file:
-
-        def log(line: str) -> None:
-            stamped = f"{time.strftime('%H:%M:%S')} {line}"
-            print(stamped, flush=True)
-            log_file.write(stamped + "\n")
-            log_file.flush()
+        log = stamped_log(log_file)
 
         try:
             simulate_static(load_case(argv[0]), out, log)

@@ -39,7 +39,7 @@ def engine_cases() -> list[tuple[ArchCase, float]]:
     0.25, and after a settlement of SETTLED_MM."""
     cases = [(case.with_overrides({"interface.kn_N_per_mm3": ENGINES_KN}), 0.0) for case in check_cases()]
     paper = paper_arch()
-    for (what, overrides), name in zip(PAPER_LOADS.items(), PAPER_NAMES):
+    for overrides, name in zip(PAPER_LOADS.values(), PAPER_NAMES):
         cases.append((paper.with_overrides({**overrides, "name": name, "interface.kn_N_per_mm3": ENGINES_KN}), 0.0))
     quarter = {**PAPER_LOADS[QUARTER_SPAN], "interface.kn_N_per_mm3": ENGINES_KN}
     set1 = paper.with_overrides({**quarter, "name": "paper_quarter_span_set1", "interface.kn_N_per_mm3": SET1_KN})
