@@ -1,7 +1,7 @@
 """The DEM's live-load path (dem/load_ramp.py) on a small arch against the static engine's, the same
 blocks and joints: a point load at 0.3 of the span of a 15-voussoir segmental arch (kn 5.2 N/mm3). The
 DEM finds the static capacity within 1 % on the same four hinges (reports/loads/engines: -0.04 %), and
-at every equilibrium of its path the supports carry the weight and the load."""
+at every equilibrium of its path the supports carry the weight and the load to the holds' tolerance."""
 
 from __future__ import annotations
 
@@ -25,7 +25,6 @@ POINT = {
     "progress_every_s": 1e9,
 }
 ENGINES_TOLERANCE = 0.01  # the two engines' capacities (docs/loads.md)
-BALANCE_TOLERANCE = 1e-3  # the reactions against weight + load, relative (the holds' unbalanced force)
 
 
 def test_the_dem_load_path_finds_the_static_capacity_and_hinges():
@@ -38,7 +37,26 @@ def test_the_dem_load_path_finds_the_static_capacity_and_hinges():
     assert math.isclose(dem.capacity, static.capacity, rel_tol=ENGINES_TOLERANCE), (dem.capacity, static.capacity)
     assert dem.hinges == static.hinges
     assert dem.first_loss == dem.capacity  # no snap on the way: the path folds once, as the static one does
+    # a hold accepts a mean block resultant below numerics.equilibrium_tolerance x the mean joint force
+    # (here below the weight): summed over the voussoirs, the reactions balance the weight and the load
+    # within n_voussoirs x tolerance x weight (measured: 0.18 N of 31.43 N at most, the bound 0.47 N)
     weight = load_analysis(case).arch_weight_N
+    balance = case.geometry.n_voussoirs * case.numerics.equilibrium_tolerance
     carried = dem.curve["vertical_reactions_N"] - dem.curve["multiplier"]
-    assert (abs(carried / weight - 1.0) < BALANCE_TOLERANCE).all(), carried.tolist()
-    assert (abs(dem.curve["horizontal_reactions_N"]) < BALANCE_TOLERANCE * weight).all()
+    assert (abs(carried / weight - 1.0) < balance).all(), carried.tolist()
+    assert (abs(dem.curve["horizontal_reactions_N"]) < balance * weight).all()
+
+
+def test_a_dem_run_holding_a_load_settles_where_the_static_engine_does(tmp_path):
+    """Load, then movement: the same arch with 4 N held at 0.3 of the span while its right support
+    settles; the DEM's du within 1 % of the static engine's on the same hinges (measured +0.12 %,
+    66.82 against 66.74 mm; set 2 with 4 N at the quarter span: 56.66 against 56.59 mm)."""
+    from yadearch.api import run
+
+    held = {**POINT, "held_load_N": 4.0}
+    base = ArchCase(name="held").with_overrides({k: v for k, v in held.items() if k != "progress_every_s"})
+    static = run(base.with_overrides({"numerics.engine": "static"}), out=tmp_path / "static", figures=False)
+    dem = run(base.with_overrides({"numerics.engine": "dem"}), out=tmp_path / "dem", figures=False)
+    assert dem.summary.loading.held_live_load == "4 N vertical at 0.3 of the span"
+    assert math.isclose(dem.summary.du_mm, static.summary.du_mm, rel_tol=ENGINES_TOLERANCE)
+    assert dem.summary.hinge_labels == static.summary.hinge_labels

@@ -18,7 +18,7 @@ from yadearch.case.shape import build_arch
 from yadearch.model import units
 from yadearch.model.backfill import Backfill
 from yadearch.model.geometry import ArchGeometry
-from yadearch.model.loads import LiveLoad
+from yadearch.model.loads import UNITS, VERTICAL, LiveLoad
 
 
 @dataclass(frozen=True)
@@ -128,6 +128,16 @@ def held_multiplier(case: ArchCase) -> float:
     return {"vertical": loads.held_load_N, "horizontal_acceleration": loads.held_acceleration_g}.get(
         loads.live_load, 0.0
     )
+
+
+def held_load_text(case: ArchCase) -> str:
+    """The live load a run holds during its movement, in words for summary.json ('' without one)."""
+    held = held_multiplier(case)
+    if held == 0.0:
+        return ""
+    loads = case.loads
+    where = f" at {loads.load_position_over_span:g} of the span" if loads.live_load == VERTICAL else ""
+    return f"{held:g} {UNITS[loads.live_load]} {loads.live_load.replace('_', ' ')}{where}"
 
 
 def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:

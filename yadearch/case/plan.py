@@ -11,7 +11,7 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes, arch_imperfections, check_contact_model
-from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep
+from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep, held_multiplier
 from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.errors import CaseError
 from yadearch.model import units
@@ -45,11 +45,17 @@ def plan_run(case: ArchCase) -> RunPlan:
             "grow in that order (the tolerance below the first increment, that at most the largest)"
         )
     if case.loads.live_load != NONE and num.engine != "static":
-        raise CaseError(
-            f"loads.live_load = {case.loads.live_load!r}: a DEM run does not hold a live load while its support "
-            "moves yet (the static engine does: --engine static, with loads.held_load_N or held_acceleration_g); "
-            "its capacity is `yadearch loads --engine dem`"
-        )
+        if held_multiplier(case) == 0.0:
+            raise CaseError(
+                f"loads.live_load = {case.loads.live_load!r} with nothing of it held: a DEM run holds "
+                "loads.held_load_N or held_acceleration_g while its support moves; the load's capacity is "
+                "`yadearch loads --engine dem`"
+            )
+        if num.contact_model != "joint":
+            raise CaseError(
+                f"numerics.contact_model = {num.contact_model!r}: a DEM run holding a live load needs the joint "
+                "elements (numerics.contact_model = 'joint')"
+            )
     if case.loads.fill_depth_mm > 0.0 and num.engine != "static":
         raise CaseError(
             f"loads.fill_depth_mm = {case.loads.fill_depth_mm:g}: the DEM does not apply backfill yet; "

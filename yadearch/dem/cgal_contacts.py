@@ -78,7 +78,7 @@ class CgalContacts:
         """Not tracked by this model: NaN for every joint."""
         return np.full(len(self.geometry.joints), np.nan)
 
-    def smallest_stiffness(self) -> float:
+    def smallest_stiffness(self, turning: np.ndarray | None = None) -> float:
         """Not available from CGAL's contacts (the joint elements compute it): NaN."""
         return float("nan")
 

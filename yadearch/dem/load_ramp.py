@@ -7,13 +7,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
 import pandas as pd
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import live_load
+from yadearch.case.mechanics import held_multiplier, live_load
 from yadearch.dem.live_load import LOAD_CALLBACK, LoadDriver
 from yadearch.dem.loading import EquilibriumPath
 from yadearch.dem.recorder import Records
@@ -28,12 +29,13 @@ from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import (
     LoadPath,
     check_carried,
+    check_held,
     first_loss_multiplier,
     load_scale,
     load_settings,
     rigid_answer,
 )
-from yadearch.solve.path import first_snap, path_settings
+from yadearch.solve.path import PathSettings, first_snap, path_settings
 from yadearch.solve.stages import Stage, Verdict
 
 DEM = "dem"
@@ -167,6 +169,12 @@ def scene_live_loads(runner: Runner) -> np.ndarray:
     return block_loads(points, centroids, len(weight))
 
 
+def ramp_rate(case: ArchCase, settings: PathSettings) -> float:
+    """The load's ramp rate (multiplier per second): its largest increment ramps as long as the largest
+    support increment moves at the support speed."""
+    return settings.max_increment * case.support_speed_mm_per_s / case.numerics.max_increment_mm
+
+
 def dem_load_path(
     case: ArchCase, after_mm: float = 0.0, log: Callable[[str], None] = print
 ) -> tuple[LoadPath, Records]:
@@ -178,15 +186,13 @@ def dem_load_path(
     at_rest = load_analysis(case)
     scale = load_scale(at_rest)
     settings = load_settings(scale, case.numerics.increment_growth)
-    # the largest load increment ramps as long as the largest support increment moves
-    full_rate = settings.max_increment * case.support_speed_mm_per_s / case.numerics.max_increment_mm
     unit = UNITS[case.loads.live_load]
     runner = Runner(case, log=log)
     try:
         runner.selfweight()
         if after_mm > 0.0:
             _move_supports(runner, after_mm)
-        arch = LoadedArch(runner, scene_live_loads(runner), full_rate)
+        arch = LoadedArch(runner, scene_live_loads(runner), ramp_rate(case, settings))
         runner.position = lambda: f"load={arch.driver.multiplier:7.4g} {unit}"
         loading = EquilibriumPath(arch, settings, unit)
         path = loading.follow()
@@ -210,6 +216,21 @@ def dem_load_path(
         **rigid_answer(case, after_mm, at_rest),
     )
     return result, runner.records
+
+
+def hold_the_live_load(runner: Runner) -> float:
+    """Grow the case's live load on the load path to the value the run holds while its support moves
+    (`case.mechanics.held_multiplier`), and keep it on the scene (load, then movement); the value.
+    CaseError, as the static engine's, if the arch does not carry it."""
+    case = runner.case
+    held = held_multiplier(case)
+    settings = replace(
+        load_settings(load_scale(load_analysis(case)), case.numerics.increment_growth), max_displacement=held
+    )
+    arch = LoadedArch(runner, scene_live_loads(runner), ramp_rate(case, settings))
+    check_held(EquilibriumPath(arch, settings, UNITS[case.loads.live_load]).follow(), case)
+    runner.load_turning = arch.driver.turning
+    return held
 
 
 def _move_supports(runner: Runner, after_mm: float) -> None:

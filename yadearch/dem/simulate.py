@@ -15,6 +15,7 @@ import time
 from pathlib import Path
 
 from yadearch.case.config import ArchCase, load_case
+from yadearch.case.mechanics import held_load_text
 from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
 from yadearch.errors import YadearchError
@@ -68,7 +69,7 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
         kn_effective_N_per_mm3=runner.scene.stiffness.kn / units.N_PER_MM3,
         support_speed_mm_per_s=case.support_speed_mm_per_s,
         contact_model=case.numerics.contact_model,
-        loading=loading_info(case.loading, path_end_mm(case, runner.movement)),
+        loading=loading_info(case.loading, path_end_mm(case, runner.movement), held_load_text(case)),
         collapse_criterion=criterion_text(case.numerics),
         imperfections=imperfections.summary() if imperfections is not None else None,
         paper_model_values=taken,

@@ -5,9 +5,12 @@ from __future__ import annotations
 
 import time
 
+from yadearch.case.mechanics import held_multiplier
+from yadearch.dem.load_ramp import hold_the_live_load
 from yadearch.dem.loading import EquilibriumPath
 from yadearch.dem.runner import Runner
 from yadearch.model import units
+from yadearch.model.loads import UNITS
 from yadearch.results.summary import HingeRef, RunSummary, collapse_fields
 from yadearch.solve.stages import Stage
 
@@ -19,6 +22,9 @@ def run_stages(runner: Runner) -> RunSummary:
 
     name = runner.case.name
     selfweight = runner.selfweight()
+    if held_multiplier(runner.case) > 0.0:
+        held = hold_the_live_load(runner)
+        runner.log(f"[{name}] the live load held at {held:g} {UNITS[runner.case.loads.live_load]}")
     loading = EquilibriumPath(runner)
     path = loading.follow()
     outcome = collapse_fields(path, runner.movement, loading.first_loss)

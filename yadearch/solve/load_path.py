@@ -139,14 +139,19 @@ def hold_the_live_load(loading: StaticLoading, case: ArchCase) -> float:
         load_settings(load_scale(load_analysis(case)), case.numerics.increment_growth), max_displacement=held
     )
     loading.load_the_live_load(settings)
-    loaded = loading.follow()
+    check_held(loading.follow(), case)
+    loading.move_the_supports(moving)
+    return held
+
+
+def check_held(loaded: PathResult, case: ArchCase) -> None:
+    """CaseError unless the load path `loaded` stood in equilibrium up to the load the case holds."""
+    held = held_multiplier(case)
     if loaded.outcome != Outcome.STANDS or loaded.lower < held:
         name = "held_load_N" if case.loads.live_load == VERTICAL else "held_acceleration_g"
         at = loaded.du if loaded.collapsed else loaded.lower
         unit = UNITS[case.loads.live_load]
         raise CaseError(f"loads.{name} = {held:g}: the arch does not carry it ({loaded.outcome} at {at:.4g} {unit})")
-    loading.move_the_supports(moving)
-    return held
 
 
 def check_carried(moved: PathResult, after_mm: float) -> None:

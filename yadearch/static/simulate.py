@@ -10,7 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from yadearch.case.config import ArchCase, load_case
-from yadearch.case.mechanics import held_multiplier, runaway_length, standing_parameters
+from yadearch.case.mechanics import held_load_text, held_multiplier, runaway_length, standing_parameters
 from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
 from yadearch.errors import YadearchError
@@ -99,7 +99,7 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         ks_N_per_mm3=case.ks_N_per_mm3,
         kn_effective_N_per_mm3=arch.law.kn / units.N_PER_MM3,
         contact_model="joint",
-        loading=loading_info(case.loading, end_mm, held_text(case)),
+        loading=loading_info(case.loading, end_mm, held_load_text(case)),
         collapse_criterion=criterion_text(case),
         unused_parameters=unused,
         paper_model_values=taken,
@@ -149,16 +149,6 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         f"wall={summary.wall_s:.2f} s -> {final_folder(out)}"
     )
     return summary
-
-
-def held_text(case: ArchCase) -> str:
-    """The live load a run holds during its movement, in words for summary.json ('' without one)."""
-    held = held_multiplier(case)
-    if held == 0.0:
-        return ""
-    loads = case.loads
-    where = f" at {loads.load_position_over_span:g} of the span" if loads.live_load == "vertical" else ""
-    return f"{held:g} {UNITS[loads.live_load]} {loads.live_load.replace('_', ' ')}{where}"
 
 
 def _selfweight(
