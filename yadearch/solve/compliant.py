@@ -47,8 +47,13 @@ class Margin:
 
 
 def potential(arch: RigidArch, placement: Placement) -> float:
-    """The weights' potential energy (J, from y = 0)."""
-    return float(arch.weight @ placement.centroids(arch)[:, 1])
+    """The potential energy (J, from the origin) of the weights and of the constant forces held on the
+    blocks (`arch.fixed`: -F . r at each force's point where `placement` moves it)."""
+    weights = float(arch.weight @ placement.centroids(arch)[:, 1])
+    fixed = arch.fixed
+    if not len(fixed.block):
+        return weights
+    return weights - float(np.sum(fixed.force * placement.place(fixed.point, fixed.block)))
 
 
 def _turn(arch: RigidArch, placement: Placement, joint: int) -> float:

@@ -22,7 +22,6 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes
-from yadearch.case.mechanics import backfill
 from yadearch.case.shape import MEASURED
 from yadearch.errors import YadearchError
 from yadearch.model import units
@@ -57,19 +56,8 @@ def has_other_branch(case: ArchCase) -> bool:
 
 def stands(case: ArchCase) -> bool:
     """Whether the undeformed arch admits an equilibrium (thrust line inside, friction enough)."""
-    refuse_backfill(case)
     arch = rigid_arch(case)
     return solve_statics(arch, at_rest(arch)).feasible
-
-
-def refuse_backfill(case: ArchCase) -> None:
-    """The rigid march under a support movement balances the weights alone: a case with backfill is
-    refused in one line (LimitError) until it balances dead loads too."""
-    if backfill(case).present:
-        raise LimitError(
-            f"loads.fill_depth_mm = {case.loads.fill_depth_mm:g}: the rigid-block analysis of a support movement "
-            "does not take backfill yet; the static engine and `yadearch loads` do"
-        )
 
 
 def why_not_standing(case: ArchCase) -> str:
@@ -108,7 +96,6 @@ def limit_analysis(
     (`mirror_du_rigid_mm`; `mirror` false: not): the keystone's two joints tie, and each branch has
     its own limit. `compliant`: the joints beside the hinges fold at the margin the case's kn allows
     (`solve.compliant`), giving the du a DEM run of that stiffness should find instead of the rigid one."""
-    refuse_backfill(case)
     settings = (step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant, runaway_thicknesses)
     result, arch = _solve(case, *settings)
     if not (mirror and has_other_branch(case)):

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from yadearch.model.loads import generalised
 from yadearch.solve.rigid import EXTRADOS, INTRADOS, Contacts, LimitError, Pivot, Placement, RigidArch, contacts, cross
 
 LP_METHOD = "highs-ds"  # dual simplex: vertex solutions, i.e. mechanisms with the fewest hinges
@@ -74,9 +75,14 @@ def equilibrium_matrix(arch: RigidArch, c: Contacts) -> np.ndarray:
 
 def weight_load(arch: RigidArch, placement: Placement) -> np.ndarray:
     """(3 n_blocks,) what the contacts must supply to each block: the opposite of its weight, i.e.
-    force (0, W) and moment W x_centroid about the origin; also the weights' power per velocity."""
+    force (0, W) and moment W x_centroid about the origin, and of the forces held on it (`arch.fixed`,
+    where `placement` moves their points); also the loads' power per velocity."""
     x = placement.centroids(arch)[:, 0]
-    return np.column_stack([np.zeros_like(x), arch.weight, arch.weight * x]).ravel()
+    load = np.column_stack([np.zeros_like(x), arch.weight, arch.weight * x])
+    fixed = arch.fixed
+    if len(fixed.block):
+        load -= generalised(fixed, arch.n_blocks, placement.place(fixed.point, fixed.block))
+    return load.ravel()
 
 
 def _split(

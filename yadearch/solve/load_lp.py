@@ -15,9 +15,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import backfill, live_load
+from yadearch.case.mechanics import live_load
 from yadearch.errors import CaseError
-from yadearch.model.backfill import backfill_points
 from yadearch.model.loads import NONE, UNITS, LoadPoints, generalised, live_load_points
 from yadearch.solve.limit_lp import (
     LP_METHOD,
@@ -54,12 +53,12 @@ class LoadCapacity:
 def load_analysis(case: ArchCase, placement: Placement | None = None) -> LoadCapacity:
     """The capacity of `case`'s arch to its live load (`case.loads`), its self-weight held, at rest or
     in `placement` (a state of the support movement's rigid march: the residual capacity)."""
-    arch = rigid_arch(case)
+    arch = rigid_arch(case, hold_live=False)  # the live load grows from nothing; the backfill is held
     load = live_load(case, arch.geometry)
     if load.kind == NONE:
         raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
     placement = placement or at_rest(arch)
-    found = load_capacity(arch, live_forces(case, arch, placement), placement, dead=dead_forces(case, arch, placement))
+    found = load_capacity(arch, live_forces(case, arch, placement), placement)
     return replace(found, unit=UNITS[load.kind], arch_weight_N=float(arch.weight[1:-1].sum()))
 
 
@@ -68,11 +67,6 @@ def live_forces(case: ArchCase, arch: RigidArch, placement: Placement | None = N
     `placement` puts its block (default: the undeformed arch)."""
     points = live_load_points(arch.geometry, arch.centroid0, arch.weight, live_load(case, arch.geometry))
     return _placed(points, arch, placement)
-
-
-def dead_forces(case: ArchCase, arch: RigidArch, placement: Placement | None = None) -> np.ndarray:
-    """The case's dead loads besides the weights (its backfill, `model.backfill`) in the same form."""
-    return _placed(backfill_points(arch.geometry, arch.centroid0, backfill(case)), arch, placement)
 
 
 def _placed(points: LoadPoints, arch: RigidArch, placement: Placement | None) -> np.ndarray:
@@ -85,18 +79,16 @@ def load_capacity(
     live: np.ndarray,
     placement: Placement | None = None,
     friction: bool = True,
-    dead: np.ndarray | None = None,
 ) -> LoadCapacity:
     """The largest multiplier of the live load `live` ((n_blocks, 3) generalised forces, as
-    `model.loads.generalised` gives them) that the arch carries under its self-weight and the dead
-    loads `dead` (the same form; default none) in `placement` (default: at rest)."""
+    `model.loads.generalised` gives them) that the arch carries under its self-weight and the loads it
+    holds (`arch.fixed`: the backfill) in `placement` (default: at rest)."""
     placement = placement or at_rest(arch)
     c = contacts(arch, placement)
     m = arch.n_joints
     voussoirs = slice(3, 3 * (arch.n_blocks - 1))
     a_v = equilibrium_matrix(arch, c)[voussoirs]
-    held = weight_load(arch, placement) - (0.0 if dead is None else np.ravel(dead))
-    held = held[voussoirs]  # what the contacts supply against the weights and the dead loads
+    held = weight_load(arch, placement)[voussoirs]  # what the contacts supply against the held loads
     scale, rows, bounds, a_ub, b_ub = static_constraints(arch, c, friction)
     a_eq = np.column_stack([a_v, np.ravel(live)[voussoirs]]) * rows[:, None]  # ... and the live load
     objective = np.zeros(3 * m + 1)

@@ -14,11 +14,13 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import arch_imperfections
-from yadearch.case.mechanics import arch_geometry
+from yadearch.case.mechanics import arch_geometry, backfill, held_multiplier, live_load
 from yadearch.case.support import case_movement
 from yadearch.errors import YadearchError
 from yadearch.model import units
+from yadearch.model.backfill import backfill_points
 from yadearch.model.geometry import ArchGeometry, block_volume
+from yadearch.model.loads import LoadPoints, live_load_points
 from yadearch.model.movement import Motion, Movement, SupportMotion
 
 INTRADOS, EXTRADOS = 0, 1
@@ -64,6 +66,7 @@ class RigidArch:
     movement: Movement
     tan_phi: float
     touch_tol: float
+    fixed: LoadPoints  # forces held besides the weights (the backfill, a held live load), undeformed arch
 
     @property
     def n_blocks(self) -> int:
@@ -74,12 +77,16 @@ class RigidArch:
         return len(self.left)
 
 
-def rigid_arch(case: ArchCase) -> RigidArch:
-    """The rigid model of a case: blocks of density x g x volume, Coulomb friction, no cohesion."""
+def rigid_arch(case: ArchCase, hold_live: bool = True) -> RigidArch:
+    """The rigid model of a case: blocks of density x g x volume, Coulomb friction, no cohesion, the
+    backfill's loads and (`hold_live`) the live load a run holds (`loads.held_load_N`) held on them."""
     geometry = arch_geometry(case)
     unit_weight = units.density(case.material.density_g_per_cm3) * case.loading.gravity_m_per_s2
     weight = np.array([unit_weight * block_volume(b) for b in geometry.blocks])
     centroid0 = np.array([polygon_centroid(b[: len(b) // 2, :2]) for b in geometry.blocks])
+    fill = backfill_points(geometry, centroid0, backfill(case))
+    live = live_load_points(geometry, centroid0, weight, live_load(case, geometry))
+    held = held_multiplier(case) if hold_live else 0.0
     joints = geometry.joints
     movement = case_movement(case, geometry)
     if movement.moves_rigidly:
@@ -99,6 +106,11 @@ def rigid_arch(case: ArchCase) -> RigidArch:
         movement=movement,
         tan_phi=float(np.tan(units.radians(case.material.friction_deg))),
         touch_tol=TOUCH_FRACTION * geometry.thickness,
+        fixed=LoadPoints(
+            np.concatenate([fill.block, live.block]),
+            np.concatenate([fill.point, live.point]),
+            np.concatenate([fill.force, held * live.force]),
+        ),
     )
 
 
