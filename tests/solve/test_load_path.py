@@ -153,7 +153,7 @@ def test_the_static_influence_line_is_symmetric_and_below_rigid_blocks(tmp_path)
     points carry the same load (within 0.1 %), every point less than rigid blocks do."""
     import yadearch as ya
 
-    table = ya.load_influence(preset("set2").with_overrides(SMALL), 3, out=tmp_path, static=True)
+    table = ya.load_influence(preset("set2").with_overrides(SMALL), 3, out=tmp_path, engine="static")
     loads = table["collapse_load_N"].to_numpy()
     assert loads[0] == pytest.approx(loads[2], rel=1e-3)
     assert (table["outcome"] == "collapse").all() and (loads < table["rigid_load_N"].to_numpy()).all()
@@ -161,16 +161,15 @@ def test_the_static_influence_line_is_symmetric_and_below_rigid_blocks(tmp_path)
 
 
 def test_the_dem_load_path_refuses_what_it_cannot_follow_in_one_line(tmp_path, capsys):
-    """`yadearch loads --engine dem` refuses, before YADE starts, an influence line, backfill, CGAL
-    contacts and no live load, each in one line; the API refuses an unknown engine and a DEM path
-    without a folder to write it to."""
+    """`yadearch loads --engine dem` refuses, before YADE starts, backfill, CGAL contacts and no live
+    load, each in one line; the API refuses an unknown engine and a DEM path or influence line without
+    a folder to write it to."""
     import yadearch as ya
     from yadearch.cli.commands import main
     from yadearch.errors import CaseError
 
     base = ["loads", "--preset", "set2", "--set", "n_voussoirs=15", "--engine", "dem", "--out", str(tmp_path)]
     refusals = (
-        (["--set", "live_load=vertical", "--positions", "3"], "--positions"),
         (["--set", "live_load=vertical", "--set", "fill_depth_mm=20"], "loads.fill_depth_mm = 20"),
         (["--set", "live_load=vertical", "--set", "numerics.contact_model=cgal"], "numerics.contact_model = 'cgal'"),
         ([], "loads.live_load is 'none'"),
@@ -185,3 +184,7 @@ def test_the_dem_load_path_refuses_what_it_cannot_follow_in_one_line(tmp_path, c
         ya.load_path(case, engine="fem")
     with pytest.raises(CaseError, match="out: the DEM's load path is written to a folder"):
         ya.load_path(case, engine="dem")
+    with pytest.raises(CaseError, match="out: the DEM's influence line keeps its load paths in a folder"):
+        ya.load_influence(case, 3, engine="dem")
+    with pytest.raises(CaseError, match="engine must be one of rigid, static, dem, got 'fem'"):
+        ya.load_influence(case, 3, engine="fem")

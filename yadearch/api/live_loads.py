@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 from pathlib import Path
 from typing import Any
 
@@ -26,6 +27,7 @@ from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacit
 from yadearch.solve.load_path import LoadPath, static_load_path
 from yadearch.solve.rigid import rigid_arch
 from yadearch.solve.static_state import StaticEngineError
+from yadearch.studies.loads.engines import dem_influence_line
 from yadearch.studies.loads.rigid import influence_line
 from yadearch.studies.loads.static import static_influence_line
 
@@ -106,24 +108,39 @@ def load_json(result: LoadCapacity, case: ArchCase) -> dict[str, Any]:
 POSITIONS_RANGE = (2, 200)  # positions of an influence line across the span
 
 
+INFLUENCE_ENGINES = ("rigid", "static", "dem")
+
+
 def load_influence(
-    case: ArchCase | str, positions: int = 19, out: str | Path | None = None, static: bool = False
+    case: ArchCase | str,
+    positions: int = 19,
+    out: str | Path | None = None,
+    engine: str = "rigid",
+    jobs: int | None = None,
 ) -> pd.DataFrame:
     """The influence line of `case`'s arch: a concentrated vertical load's capacity (N) at `positions`
-    points evenly across the span (k / (positions + 1)), with each mechanism's hinges, by rigid blocks
-    or, `static`, on the static engine's path (its first loss and the rigid line beside it); with
-    `out`, OUT/NAME_influence.csv and its figure OUT/NAME_influence.pdf/.png."""
+    points evenly across the span (k / (positions + 1)), with each mechanism's hinges, by `engine`:
+    'rigid' blocks, or on the 'static' engine's or the 'dem''s path (their first loss and the rigid line
+    beside it; the DEM's load paths in child processes, `jobs` at a time, under OUT/NAME_influence_runs,
+    so it needs `out`); with `out`, OUT/NAME_influence.csv and its figure OUT/NAME_influence.pdf/.png."""
     low, high = POSITIONS_RANGE
     if isinstance(positions, bool) or not isinstance(positions, int) or not low <= positions <= high:
         raise CaseError(f"positions must be an integer in [{low}, {high}], got {positions!r}")
+    if engine not in INFLUENCE_ENGINES:
+        raise CaseError(f"engine must be one of {', '.join(INFLUENCE_ENGINES)}, got {engine!r}")
+    check_arguments(jobs=jobs)
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
-    check_arguments(static=static)
     where = tuple(k / (positions + 1) for k in range(1, positions + 1))
-    table = static_influence_line(case, where) if static else influence_line(case, where)
+    if engine == "dem":
+        if folder is None:
+            raise CaseError("out: the DEM's influence line keeps its load paths in a folder; give out")
+        table = dem_influence_line(case, where, folder / f"{case.name}_influence_runs", jobs or os.cpu_count() or 1)
+    else:
+        table = static_influence_line(case, where) if engine == "static" else influence_line(case, where)
     if folder is not None:
         write_csv_atomically(folder / f"{case.name}_influence.csv", table)
         weight = float(rigid_arch(case).weight[1:-1].sum())
-        plot_influence(table, weight, folder / f"{case.name}_influence")
+        plot_influence(table, weight, folder / f"{case.name}_influence", engine)
     return table

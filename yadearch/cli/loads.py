@@ -62,10 +62,8 @@ def loads(
     its mechanism ([loads] of the case, or --set live_load=...), by rigid-block limit analysis, on the
     static engine's path, or on the DEM's (YADE); --after-mm first moves the support."""
     case = resolve_case(preset_name, case_file, None, settings)
-    if positions is not None and load_engine == DEM:
-        raise click.UsageError("--positions: the influence line is drawn by --engine rigid or static, not dem")
     if positions is not None:
-        table = api.load_influence(case, positions, out=out, static=load_engine == STATIC)
+        table = api.load_influence(case, positions, out=out, engine=load_engine)
         weakest = table.loc[table["collapse_load_N"].idxmin()]
         click.echo(
             f"{case.name}: influence line at {positions} positions: least {weakest.collapse_load_N:.4g} N at "

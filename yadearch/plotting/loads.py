@@ -47,19 +47,20 @@ def plot_loads(
 
 
 @house_style
-def plot_influence(influence: pd.DataFrame, arch_weight_N: float, stem: Path) -> tuple[Path, Path]:
-    """STEM.pdf and .png: a concentrated load's capacity against its position (one column wide)."""
+def plot_influence(
+    influence: pd.DataFrame, arch_weight_N: float, stem: Path, engine: str = "rigid"
+) -> tuple[Path, Path]:
+    """STEM.pdf and .png: a concentrated load's capacity against its position by `engine` (one column wide)."""
     fig = new_figure(height_cm=INFLUENCE_HEIGHT_CM, width_cm=COLUMN_CM)
-    _draw_influence(fig.add_subplot(), influence, arch_weight_N)
+    _draw_influence(fig.add_subplot(), influence, arch_weight_N, engine)
     return save_figure(fig, stem)
 
 
-def _draw_influence(ax, influence: pd.DataFrame, arch_weight_N: float) -> None:
+def _draw_influence(ax, influence: pd.DataFrame, arch_weight_N: float, engine: str = "rigid") -> None:
     """The influence line of the capacity, in N and (right axis) in arch weights."""
-    ax.plot(
-        influence["position_over_span"], influence["collapse_load_N"], "o-", ms=2.5, color="C0", label="static engine"
-    )
-    if "rigid_load_N" in influence:  # the static engine's line, with rigid blocks' for scale
+    label = ENGINE_LABELS.get(engine, "rigid blocks")
+    ax.plot(influence["position_over_span"], influence["collapse_load_N"], "o-", ms=2.5, color="C0", label=label)
+    if "rigid_load_N" in influence:  # an engine's line, with rigid blocks' for scale
         ax.plot(
             influence["position_over_span"], influence["rigid_load_N"], "--", lw=0.8, color="0.4", label="rigid blocks"
         )

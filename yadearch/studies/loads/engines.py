@@ -116,3 +116,27 @@ def _row(case: ArchCase, after_mm: float, static: LoadPath, dem: LoadPath | None
         "rigid_capacity": static.rigid,
         "dem_failure": reason,
     }
+
+
+def dem_influence_line(base: ArchCase, positions: Iterable[float], out: Path, jobs: int = 2) -> pd.DataFrame:
+    """A concentrated load's capacity (N) against its position over the span on the DEM's path (its
+    load paths in `out`, `jobs` at a time; those `out` holds already are read back), with its first loss,
+    hinges and the rigid capacity beside it, as `static.static_influence_line` gives the static engine's."""
+
+    def at(x: float) -> dict:
+        case = base.with_overrides(
+            {"live_load": "vertical", "load_position_over_span": x, "name": f"{base.name}_at_{x:.4f}"}
+        )
+        path = stored_load_path(out, case, 0.0) or run_load_process(case, out)
+        return {
+            "position_over_span": x,
+            "collapse_load_N": path.capacity,
+            "first_loss_N": path.first_loss,
+            "hinges": " ".join(path.hinges),
+            "outcome": path.outcome,
+            "rigid_load_N": path.rigid,
+            "rigid_hinges": path.rigid_hinges,
+        }
+
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        return pd.DataFrame(list(pool.map(at, positions)))
