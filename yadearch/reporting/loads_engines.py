@@ -13,30 +13,86 @@ from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.markdown import markdown_table
 from yadearch.plotting.loads import plot_engines
 from yadearch.studies.loads.engines import (
+    ENGINES_KN,
     NUMERICS_CASES,
     NUMERICS_VARIANTS,
+    dem_influence_line,
     engine_cases,
     engines_table,
     numerics_cases,
 )
+from yadearch.studies.loads.rigid import paper_arch
+from yadearch.studies.loads.static import static_influence_line
 
 ENGINES_TOLERANCE = 0.01  # the DEM within 1 % of the static engine (issue 44)
+INFLUENCE_POSITIONS = 7  # points of the paper's arch's influence line on both engines
 RUNS_FOLDER = "runs"  # each DEM load path's files, under the report's folder (a rerun reads them back)
 
 
 def write_engines_report(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> Path:
     """Run the comparison (the DEM runs `jobs` at a time; those already in OUT/runs are read back) and
-    write engines.csv, numerics.csv, engines.pdf/.png and engines.md into `out`; the report's path."""
+    write engines.csv, numerics.csv, influence.csv, engines.pdf/.png and engines.md into `out`; the
+    report's path."""
     out.mkdir(parents=True, exist_ok=True)
     cases = engine_cases()
     table = engines_table(cases, out / RUNS_FOLDER, jobs, log)
     numerics = engines_table(numerics_cases(cases), out / RUNS_FOLDER, jobs, log)
+    influence = influence_table(out / RUNS_FOLDER, jobs)
     write_csv_atomically(out / "engines.csv", table)
     write_csv_atomically(out / "numerics.csv", numerics)
+    write_csv_atomically(out / "influence.csv", influence)
     plot_engines(table, ENGINES_TOLERANCE, out / "engines")
     path = out / "engines.md"
-    write_text_atomically(path, engines_markdown(table, numerics))
+    write_text_atomically(path, engines_markdown(table, numerics) + influence_markdown(influence))
     return path
+
+
+def influence_table(runs: Path, jobs: int) -> pd.DataFrame:
+    """The paper's arch (kn 5.2): a concentrated load's capacity at INFLUENCE_POSITIONS of the span on
+    both engines' paths, side by side."""
+    paper = paper_arch().with_overrides({"interface.kn_N_per_mm3": ENGINES_KN, "name": "paper"})
+    where = tuple(k / (INFLUENCE_POSITIONS + 1) for k in range(1, INFLUENCE_POSITIONS + 1))
+    static = static_influence_line(paper, where)
+    dem = dem_influence_line(paper, where, runs, jobs)
+    table = static[["position_over_span", "collapse_load_N", "first_loss_N", "hinges", "rigid_load_N"]].copy()
+    table.columns = ["position_over_span", "static_N", "static_first_loss_N", "static_hinges", "rigid_N"]
+    table["dem_N"], table["dem_first_loss_N"], table["dem_hinges"] = (
+        dem["collapse_load_N"],
+        dem["first_loss_N"],
+        dem["hinges"],
+    )
+    table["dem_over_static"] = table["dem_N"] / table["static_N"] - 1.0
+    return table
+
+
+def influence_markdown(influence: pd.DataFrame) -> str:
+    """The influence lines of the two engines, side by side."""
+    within = int((influence["dem_over_static"].abs() <= ENGINES_TOLERANCE).sum())
+    lines = [
+        "## The influence line on both engines",
+        "",
+        f"The paper's arch at kn {ENGINES_KN:g} N/mm3, a concentrated load at {len(influence)} points of the span "
+        f"(`yadearch loads --positions {len(influence)} --engine static|dem`): the DEM within "
+        f"{100 * ENGINES_TOLERANCE:g} % of the static engine at {within} of {len(influence)}.",
+        "",
+        *markdown_table(
+            ["position / span", "static (N)", "DEM (N)", "DEM - static", "hinges static", "hinges DEM", "rigid (N)"],
+            (
+                [
+                    f"{r.position_over_span:.3f}",
+                    _number(r.static_N),
+                    _number(r.dem_N),
+                    _percent(r.dem_over_static),
+                    r.static_hinges,
+                    r.dem_hinges,
+                    _number(r.rigid_N),
+                ]
+                for r in influence.itertuples()
+            ),
+        ),  # fmt: skip
+        "",
+    ]
+    return "\n".join(lines)
 
 
 def _percent(value: float) -> str:
