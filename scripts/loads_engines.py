@@ -3,8 +3,8 @@
     .venv/bin/python scripts/loads_engines.py [--out reports/loads/engines] [--jobs 2]
 
 Runs every case's load path on both engines (the DEM in child processes, --jobs at a time; those whose
-files OUT/runs holds already are read back) and writes engines.md, engines.csv, numerics.csv and
-engines.pdf/.png; minutes of YADE on two cores.
+files OUT/load_paths holds already are read back) and writes engines.md, engines.csv, numerics.csv,
+influence.csv and engines.pdf/.png; about 13 minutes of YADE on two cores from scratch.
 """
 
 from __future__ import annotations

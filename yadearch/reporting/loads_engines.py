@@ -26,11 +26,11 @@ from yadearch.studies.loads.static import static_influence_line
 
 ENGINES_TOLERANCE = 0.01  # the DEM within 1 % of the static engine (issue 44)
 INFLUENCE_POSITIONS = 7  # points of the paper's arch's influence line on both engines
-RUNS_FOLDER = "runs"  # each DEM load path's files, under the report's folder (a rerun reads them back)
+RUNS_FOLDER = "load_paths"  # each DEM load path's files, under the report's folder (a rerun reads them back)
 
 
 def write_engines_report(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> Path:
-    """Run the comparison (the DEM runs `jobs` at a time; those already in OUT/runs are read back) and
+    """Run the comparison (the DEM runs `jobs` at a time; those already in OUT/load_paths are read back) and
     write engines.csv, numerics.csv, influence.csv, engines.pdf/.png and engines.md into `out`; the
     report's path."""
     out.mkdir(parents=True, exist_ok=True)
@@ -47,13 +47,13 @@ def write_engines_report(out: Path, jobs: int = 2, log: Callable[[str], None] = 
     return path
 
 
-def influence_table(runs: Path, jobs: int) -> pd.DataFrame:
+def influence_table(paths: Path, jobs: int) -> pd.DataFrame:
     """The paper's arch (kn 5.2): a concentrated load's capacity at INFLUENCE_POSITIONS of the span on
     both engines' paths, side by side."""
     paper = paper_arch().with_overrides({"interface.kn_N_per_mm3": ENGINES_KN, "name": "paper"})
     where = tuple(k / (INFLUENCE_POSITIONS + 1) for k in range(1, INFLUENCE_POSITIONS + 1))
     static = static_influence_line(paper, where)
-    dem = dem_influence_line(paper, where, runs, jobs)
+    dem = dem_influence_line(paper, where, paths, jobs)
     table = static[["position_over_span", "collapse_load_N", "first_loss_N", "hinges", "rigid_load_N"]].copy()
     table.columns = ["position_over_span", "static_N", "static_first_loss_N", "static_hinges", "rigid_N"]
     table["dem_N"], table["dem_first_loss_N"], table["dem_hinges"] = (
