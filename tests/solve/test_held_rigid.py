@@ -51,3 +51,20 @@ def test_the_potential_counts_the_held_forces_work():
     lowered = Placement(0.0, rest.rot, rest.shift + np.array([0.0, -1e-3]))
     drop = potential(arch, rest) - potential(arch, lowered)
     assert math.isclose(drop, (float(arch.weight.sum()) + 3.0) * 1e-3, rel_tol=1e-9)
+
+
+def test_a_held_value_of_another_load_is_refused_and_a_held_load_is_not_mirrored():
+    import pytest
+
+    from yadearch.case.plan import plan_run
+    from yadearch.errors import CaseError
+    from yadearch.solve.limit import has_other_branch
+
+    with pytest.raises(CaseError, match="loads.held_load_N = 2 holds a vertical load, but loads.live_load is 'none'"):
+        plan_run(preset("set2").with_overrides({"held_load_N": 2.0, "numerics.engine": "static"}))
+    with pytest.raises(CaseError, match="held_acceleration_g = 0.1 holds a horizontal acceleration load"):
+        limit_analysis(preset("set2").with_overrides({"live_load": "vertical", "held_acceleration_g": 0.1}))
+    # the keystone's other branch is the mirror image of the movement, not of an off-centre held load
+    settling = preset("set2")
+    assert has_other_branch(settling)
+    assert not has_other_branch(settling.with_overrides({"live_load": "vertical", "held_load_N": 2.0}))

@@ -136,7 +136,8 @@ def load_influence(
     if engine == "dem":
         if folder is None:
             raise CaseError("out: the DEM's influence line keeps its load paths in a folder; give out")
-        table = dem_influence_line(case, where, folder / f"{case.name}_influence_runs", jobs or os.cpu_count() or 1)
+        cores = max(1, (os.cpu_count() or 1) // case.numerics.threads)  # one core a process by default
+        table = dem_influence_line(case, where, folder / f"{case.name}_influence_runs", jobs or cores)
     else:
         table = static_influence_line(case, where) if engine == "static" else influence_line(case, where)
     if folder is not None:

@@ -15,10 +15,11 @@ from dataclasses import dataclass
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes, imperfect_geometry
 from yadearch.case.shape import build_arch
+from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.backfill import Backfill
 from yadearch.model.geometry import ArchGeometry
-from yadearch.model.loads import UNITS, VERTICAL, LiveLoad
+from yadearch.model.loads import ACCELERATION, UNITS, VERTICAL, LiveLoad
 
 
 @dataclass(frozen=True)
@@ -121,13 +122,26 @@ def runaway_length(case: ArchCase) -> float:
     return case.numerics.runaway_thickness_ratio * units.mm(case.geometry.thickness_mm)
 
 
+HELD_SETTINGS = {VERTICAL: "held_load_N", ACCELERATION: "held_acceleration_g"}  # each live load's held value
+
+
 def held_multiplier(case: ArchCase) -> float:
     """The live load a run holds while its support moves, in its multiplier's unit (N for a vertical
-    load, g for an acceleration; 0: none)."""
+    load, g for an acceleration; 0: none); CaseError for a held value of another kind of live load."""
     loads = case.loads
-    return {"vertical": loads.held_load_N, "horizontal_acceleration": loads.held_acceleration_g}.get(
-        loads.live_load, 0.0
-    )
+    for kind, name in HELD_SETTINGS.items():
+        if getattr(loads, name) > 0.0 and loads.live_load != kind:
+            raise CaseError(
+                f"loads.{name} = {getattr(loads, name):g} holds a {kind.replace('_', ' ')} load, but "
+                f"loads.live_load is {loads.live_load!r}; set live_load = {kind!r} or {name} = 0"
+            )
+    return float(getattr(loads, HELD_SETTINGS[loads.live_load])) if loads.live_load in HELD_SETTINGS else 0.0
+
+
+def unheld(case: ArchCase) -> ArchCase:
+    """`case` without the live load a run holds: the load paths grow the load from nothing, and the
+    self-weight's diagnosis and the residual capacity's movement are made without it."""
+    return case.with_overrides({name: 0.0 for name in HELD_SETTINGS.values()})
 
 
 def held_load_text(case: ArchCase) -> str:

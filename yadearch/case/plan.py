@@ -44,6 +44,7 @@ def plan_run(case: ArchCase) -> RunPlan:
             f"{num.first_increment_mm:g} and max_increment_mm = {num.max_increment_mm:g} must "
             "grow in that order (the tolerance below the first increment, that at most the largest)"
         )
+    held_multiplier(case)  # refuses a held value of another kind of live load
     if case.loads.live_load != NONE and num.engine != "static":
         if held_multiplier(case) == 0.0:
             raise CaseError(

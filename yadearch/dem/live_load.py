@@ -10,6 +10,7 @@ import numpy as np
 
 from yadearch.dem.joint_elements import JointElementContacts
 from yadearch.dem.scene import CALLBACK_NAME, ArchScene
+from yadearch.errors import CaseError
 from yadearch.model.loads import turned_moments, turning_stiffness
 
 LOAD_DRIVER_LABEL = "yadearch_live_load"
@@ -22,7 +23,7 @@ class LoadDriver:
 
     def __init__(self, scene: ArchScene, loads: np.ndarray):
         if not isinstance(scene.contacts, JointElementContacts):
-            raise TypeError("a live load needs the joint elements (numerics.contact_model = 'joint')")
+            raise CaseError("a live load needs the joint elements (numerics.contact_model = 'joint')")
         self.contacts: JointElementContacts = scene.contacts
         self.loads = loads
         self.loaded = np.flatnonzero(np.any(loads != 0.0, axis=1))

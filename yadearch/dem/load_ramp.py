@@ -7,14 +7,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import replace
 from typing import Any
 
 import numpy as np
 import pandas as pd
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import held_multiplier, live_load
+from yadearch.case.mechanics import HELD_SETTINGS, held_multiplier, live_load
 from yadearch.dem.live_load import LOAD_CALLBACK, LoadDriver
 from yadearch.dem.loading import EquilibriumPath
 from yadearch.dem.recorder import Records
@@ -31,6 +30,7 @@ from yadearch.solve.load_path import (
     check_carried,
     check_held,
     first_loss_multiplier,
+    held_load_settings,
     load_scale,
     load_settings,
     rigid_answer,
@@ -39,13 +39,14 @@ from yadearch.solve.path import PathSettings, first_snap, path_settings
 from yadearch.solve.stages import Stage, Verdict
 
 DEM = "dem"
+NOT_RECORDED = (0, 0, 0)  # the mark of an equilibrium the run's tables do not keep
 
 
 class LoadedArch:
     """A live DEM scene whose path parameter is the live load's multiplier, the supports held (the
     `dem.loading.LiveArch` the equilibrium path drives); it records the load-displacement curve."""
 
-    def __init__(self, runner: Runner, loads: np.ndarray, full_rate: float):
+    def __init__(self, runner: Runner, loads: np.ndarray, full_rate: float, recorded: bool = True):
         from yade import O
 
         import __main__
@@ -57,6 +58,7 @@ class LoadedArch:
         engines.insert(len(engines) - 1, self.driver.engine())  # before the integrator
         O.engines = engines
         self.full_rate = full_rate  # multiplier per second of the largest increment's ramp
+        self.recorded = recorded  # its equilibria recorded in the run's tables (not while a run's load is set)
         self.loads = loads
         length = runner.scene.geometry.thickness  # the rotations' lever in the tangent (`model.stability`)
         self.force_norm = float(np.linalg.norm(np.column_stack([loads[:, 0:2], loads[:, 2] / length])))
@@ -133,9 +135,8 @@ class LoadedArch:
 
     # ---- records: the runner's, and a point of the curve for each equilibrium ------------
     def record_equilibrium(self) -> tuple[tuple[int, int, int], list[Hinge]]:
-        mark, hinges = self.runner.recorder.record_equilibrium()
         self.curve.append(self._point())
-        return mark, hinges
+        return self.runner.recorder.record_equilibrium() if self.recorded else (NOT_RECORDED, [])
 
     def _point(self) -> dict[str, float]:
         """The load-displacement curve's point of the scene now (the static engine's columns, and the sums
@@ -152,7 +153,8 @@ class LoadedArch:
         }
 
     def discard_since(self, mark: tuple[int, int, int]) -> None:
-        self.runner.recorder.discard_since(mark)
+        if self.recorded:
+            self.runner.recorder.discard_since(mark)
         self.curve.pop()
 
     def record_collapse(self) -> list[Hinge]:
@@ -223,14 +225,18 @@ def hold_the_live_load(runner: Runner) -> float:
     (`case.mechanics.held_multiplier`), and keep it on the scene (load, then movement); the value.
     CaseError, as the static engine's, if the arch does not carry it."""
     case = runner.case
-    held = held_multiplier(case)
-    settings = replace(
-        load_settings(load_scale(load_analysis(case)), case.numerics.increment_growth), max_displacement=held
-    )
-    arch = LoadedArch(runner, scene_live_loads(runner), ramp_rate(case, settings))
-    check_held(EquilibriumPath(arch, settings, UNITS[case.loads.live_load]).follow(), case)
-    runner.load_turning = arch.driver.turning
-    return held
+    settings = held_load_settings(case)
+    unit = UNITS[case.loads.live_load]
+    arch = LoadedArch(runner, scene_live_loads(runner), ramp_rate(case, settings), recorded=False)
+    moving_position = runner.position
+    runner.position = lambda: f"load={arch.driver.multiplier:7.4g} {unit}"
+    loading = EquilibriumPath(arch, settings, unit)
+    check_held(loading.follow(), case)
+    if not loading.settle():  # the movement starts from a state at rest, as from the self-weight's
+        raise CaseError(f"loads.{HELD_SETTINGS[case.loads.live_load]}: the held load's state ran away while settling")
+    runner.position = moving_position
+    runner.load_turning = runner.recorder.turning = arch.driver.turning
+    return held_multiplier(case)
 
 
 def _move_supports(runner: Runner, after_mm: float) -> None:

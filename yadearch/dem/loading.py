@@ -86,7 +86,7 @@ class EquilibriumPath:
 
     at_rest_when_accepted = False  # a DEM state is accepted still moving slowly: settled before du is bracketed
 
-    def __init__(self, arch: LiveArch, load_settings: PathSettings | None = None, unit: str = "mm"):
+    def __init__(self, arch: LiveArch, settings: PathSettings | None = None, unit: str = "mm"):
         self.arch = arch
         self.num = arch.case.numerics
         self._accepted: list[dict] = []  # snapshots of the equilibrium states of the loading path
@@ -104,10 +104,10 @@ class EquilibriumPath:
         }
         self.snaps: list[dict] = []  # relaxations that carried the arch to another branch
         self._start = 0.0  # where the last increment started (m)
-        # the path's parameter: the support's displacement, or with `load_settings` a live load's
-        # multiplier (in `unit`), the supports held
-        self.moves_support = load_settings is None
-        self.settings = load_settings or path_settings(self.num, path_end_mm(arch.case, arch.movement))
+        # the path's parameter: the support's displacement, or with `settings` a live load's multiplier
+        # (in `unit`), the supports held
+        self.moves_support = settings is None
+        self.settings = settings or path_settings(self.num, path_end_mm(arch.case, arch.movement))
         self.unit = unit
 
     def try_increment(self, target: float) -> Verdict:

@@ -3,6 +3,7 @@ the block positions, and the largest mobilised friction and slip of the equilibr
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -43,6 +44,7 @@ class Recorder:
         self.num = numerics
         self.records = Records()
         self.stage = Stage.SELFWEIGHT
+        self.turning: Callable[[], np.ndarray] | None = None  # a held live load's stiffness (`dem.load_ramp`)
         self.friction: dict = {}
         self._last_series_iter = -(10**9)
 
@@ -107,7 +109,8 @@ class Recorder:
             }
         )
         if stability:
-            self.records.series[-1][STIFFNESS_COLUMN] = self.scene.contacts.smallest_stiffness()
+            turning = self.turning() if self.turning else None
+            self.records.series[-1][STIFFNESS_COLUMN] = self.scene.contacts.smallest_stiffness(turning)
 
     def joint_snapshot(self) -> tuple[dict, list[Hinge]]:
         """Per-interface state now, and its hinges (`results.joint_rows`)."""

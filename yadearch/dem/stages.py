@@ -1,5 +1,6 @@
-"""A DEM run's stages on a live scene (`dem.runner.Runner`): the self-weight, then the support movement
-along the equilibrium path to collapse (`dem.loading`), and what the run found and cost."""
+"""A DEM run's stages on a live scene (`dem.runner.Runner`): the self-weight, a live load the run holds
+grown to its value (`dem.load_ramp`), then the support movement along the equilibrium path to collapse
+(`dem.loading`), and what the run found and cost."""
 
 from __future__ import annotations
 

@@ -18,7 +18,7 @@ from yadearch.results.load_path import load_path_file, read_load_path
 from yadearch.results.rundir import CASE_FILE
 from yadearch.solve.load_path import LoadPath
 
-LOAD_PATH_FILES = (".json", ".csv", ".log")
+LOAD_PATH_FILES = (".csv", ".log", ".json")  # the JSON last: it marks the result complete
 
 
 def run_load_process(

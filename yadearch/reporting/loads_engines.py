@@ -105,6 +105,8 @@ def _number(value: float) -> str:
 
 def engines_markdown(table: pd.DataFrame, numerics: pd.DataFrame) -> str:
     """The report: the two engines side by side, the agreement counted, and the DEM's numerics."""
+    words = {"static_hinges": "", "dem_hinges": "", "dem_failure": ""}  # a failed row has none
+    table, numerics = table.fillna(words), numerics.fillna(words)
     done = table[table["dem_outcome"] != "failed"]
     within = int((done["dem_over_static"].abs() <= ENGINES_TOLERANCE).sum())
     first_within = int((done["first_loss_dem_over_static"].abs() <= ENGINES_TOLERANCE).sum())

@@ -82,13 +82,14 @@ def read_load_path(folder: Path, name: str) -> LoadPath:
     )
 
 
-def stored_load_path(folder: Path, case: ArchCase, after_mm: float) -> LoadPath | None:
-    """The load path `folder` already holds for this very case and settlement (a study resumed), or None."""
+def stored_load_path(folder: Path, case: ArchCase, after_mm: float, engine: str = "dem") -> LoadPath | None:
+    """The load path `folder` already holds for this very case, settlement and engine (a study
+    resumed), or None."""
     try:
         data = json.loads(load_path_file(folder, case.name, ".json").read_text())
     except (OSError, ValueError):
         return None
-    if data.get("case") != case.to_dict() or data.get("after_mm") != after_mm:
+    if data.get("case") != case.to_dict() or data.get("after_mm") != after_mm or data.get("engine") != engine:
         return None
     if not load_path_file(folder, case.name, ".csv").is_file():
         return None

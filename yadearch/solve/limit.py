@@ -22,6 +22,7 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes
+from yadearch.case.mechanics import held_multiplier, unheld
 from yadearch.case.shape import MEASURED
 from yadearch.errors import YadearchError
 from yadearch.model import units
@@ -51,12 +52,14 @@ def has_other_branch(case: ArchCase) -> bool:
         return False
     if case.geometry.shape == MEASURED:  # a surveyed arch is not its own mirror image
         return False
+    if held_multiplier(case) > 0.0:  # a held live load is not mirrored with the movement
+        return False
     return amplitudes(case).perfect_dimensions and not rigid_arch(case).movement.mirror_is_itself
 
 
 def stands(case: ArchCase) -> bool:
     """Whether the undeformed arch admits an equilibrium (thrust line inside, friction enough)."""
-    arch = rigid_arch(case)
+    arch = rigid_arch(unheld(case))  # under its own weight (and the fill's), as a run's self-weight
     return solve_statics(arch, at_rest(arch)).feasible
 
 

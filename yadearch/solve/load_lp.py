@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import live_load
+from yadearch.case.mechanics import live_load, unheld
 from yadearch.errors import CaseError
 from yadearch.model.loads import NONE, UNITS, LoadPoints, generalised, live_load_points
 from yadearch.solve.limit_lp import (
@@ -53,7 +53,7 @@ class LoadCapacity:
 def load_analysis(case: ArchCase, placement: Placement | None = None) -> LoadCapacity:
     """The capacity of `case`'s arch to its live load (`case.loads`), its self-weight held, at rest or
     in `placement` (a state of the support movement's rigid march: the residual capacity)."""
-    arch = rigid_arch(case, hold_live=False)  # the live load grows from nothing; the backfill is held
+    arch = rigid_arch(unheld(case))  # the live load grows from nothing; the backfill is held
     load = live_load(case, arch.geometry)
     if load.kind == NONE:
         raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
@@ -132,7 +132,7 @@ def _hinges(arch: RigidArch, a_v: np.ndarray, velocity: np.ndarray, touching: np
 def residual_capacity(case: ArchCase, at_mm: float) -> LoadCapacity:
     """The live load's capacity after the case's support movement to `at_mm` (along its path), in the
     state the rigid march has the arch there (its hinges open): the residual capacity of a settled arch."""
-    placement, march = march_placement(case, at_mm)
+    placement, march = march_placement(unheld(case), at_mm)  # the movement first, then the load
     if march.du_rigid_mm is not None and march.du_rigid_mm <= at_mm:
         raise LimitError(f"the rigid arch collapses at {march.du_rigid_mm:.2f} mm, before {at_mm:g} mm of movement")
     return load_analysis(case, placement)

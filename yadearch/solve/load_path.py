@@ -16,7 +16,7 @@ import pandas as pd
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import held_multiplier
-from yadearch.errors import CaseError
+from yadearch.errors import CaseError, RunFailedError
 from yadearch.model import units
 from yadearch.model.loads import NONE, UNITS, VERTICAL, load_displacement
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
@@ -135,18 +135,26 @@ def hold_the_live_load(loading: StaticLoading, case: ArchCase) -> float:
     movement); the value. CaseError if the arch does not carry it."""
     held = held_multiplier(case)
     moving = loading.settings
-    settings = replace(
-        load_settings(load_scale(load_analysis(case)), case.numerics.increment_growth), max_displacement=held
-    )
-    loading.load_the_live_load(settings)
+    loading.load_the_live_load(held_load_settings(case))
     check_held(loading.follow(), case)
     loading.move_the_supports(moving)
     return held
 
 
+def held_load_settings(case: ArchCase) -> PathSettings:
+    """The load path's increments up to the live load a run holds (both engines grow it alike)."""
+    growing = load_settings(load_scale(load_analysis(case)), case.numerics.increment_growth)
+    return replace(growing, max_displacement=held_multiplier(case))
+
+
 def check_held(loaded: PathResult, case: ArchCase) -> None:
     """CaseError unless the load path `loaded` stood in equilibrium up to the load the case holds."""
     held = held_multiplier(case)
+    if loaded.unresolved:
+        raise RunFailedError(
+            f"unresolved: the load path found neither equilibrium nor runaway at {loaded.upper:.4g} "
+            f"{UNITS[case.loads.live_load]} on its way to the held {held:g} (no verdict on the held load)"
+        )
     if loaded.outcome != Outcome.STANDS or loaded.lower < held:
         name = "held_load_N" if case.loads.live_load == VERTICAL else "held_acceleration_g"
         at = loaded.du if loaded.collapsed else loaded.lower

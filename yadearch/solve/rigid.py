@@ -77,16 +77,16 @@ class RigidArch:
         return len(self.left)
 
 
-def rigid_arch(case: ArchCase, hold_live: bool = True) -> RigidArch:
+def rigid_arch(case: ArchCase) -> RigidArch:
     """The rigid model of a case: blocks of density x g x volume, Coulomb friction, no cohesion, the
-    backfill's loads and (`hold_live`) the live load a run holds (`loads.held_load_N`) held on them."""
+    backfill's loads and the live load a run holds (`loads.held_load_N`) held on them."""
     geometry = arch_geometry(case)
     unit_weight = units.density(case.material.density_g_per_cm3) * case.loading.gravity_m_per_s2
     weight = np.array([unit_weight * block_volume(b) for b in geometry.blocks])
     centroid0 = np.array([polygon_centroid(b[: len(b) // 2, :2]) for b in geometry.blocks])
     fill = backfill_points(geometry, centroid0, backfill(case))
     live = live_load_points(geometry, centroid0, weight, live_load(case, geometry))
-    held = held_multiplier(case) if hold_live else 0.0
+    held = held_multiplier(case)
     joints = geometry.joints
     movement = case_movement(case, geometry)
     if movement.moves_rigidly:

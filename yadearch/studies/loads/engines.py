@@ -80,7 +80,12 @@ def engines_table(
 
     def both(item: tuple[ArchCase, float]) -> dict:
         case, after_mm = item
-        static = static_load_path(case, after_mm)
+        try:
+            static = static_load_path(case, after_mm)
+        except YadearchError as exc:
+            log(f"{case.name}: the static engine failed: {exc}")
+            return {"case": case.name, "after_mm": after_mm, "static_outcome": "failed", "dem_outcome": "not run",
+                    "dem_failure": str(exc)}  # fmt: skip
         try:
             dem = stored_load_path(out, case, after_mm) or run_load_process(case, out, after_mm)
             reason = ""
@@ -127,7 +132,10 @@ def dem_influence_line(base: ArchCase, positions: Iterable[float], out: Path, jo
         case = base.with_overrides(
             {"live_load": "vertical", "load_position_over_span": x, "name": f"{base.name}_at_{x:.4f}"}
         )
-        path = stored_load_path(out, case, 0.0) or run_load_process(case, out)
+        try:
+            path = stored_load_path(out, case, 0.0) or run_load_process(case, out)
+        except YadearchError as exc:  # a failed point is a row with its reason; the others go on
+            return {"position_over_span": x, "collapse_load_N": math.nan, "outcome": "failed", "failure": str(exc)}
         return {
             "position_over_span": x,
             "collapse_load_N": path.capacity,
