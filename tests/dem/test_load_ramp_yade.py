@@ -10,7 +10,7 @@ import math
 import pytest
 from conftest import needs_yade
 
-from yadearch.case.config import ArchCase
+from yadearch.case.config import ArchCase, preset
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import static_load_path
 
@@ -60,3 +60,24 @@ def test_a_dem_run_holding_a_load_settles_where_the_static_engine_does(tmp_path)
     assert dem.summary.loading.held_live_load == "4 N vertical at 0.3 of the span"
     assert math.isclose(dem.summary.du_mm, static.summary.du_mm, rel_tol=ENGINES_TOLERANCE)
     assert dem.summary.hinge_labels == static.summary.hinge_labels
+
+
+def test_the_command_runs_the_dem_load_path_in_a_child_and_writes_its_files(tmp_path, capsys):
+    """`yadearch loads --engine dem`: the path in a child process, its JSON, curve, log and figure in
+    OUT, the answer said in one line beside the rigid one."""
+    import json
+
+    from yadearch.cli.commands import main
+
+    settings = [f"{k}={v}" for k, v in POINT.items() if k != "progress_every_s"]
+    args = ["loads", "--preset", "set2", "--engine", "dem", "--out", str(tmp_path)]
+    for setting in settings:
+        args += ["--set", setting]
+    assert main(args) == 0
+    said = capsys.readouterr().out.strip().splitlines()[-1]
+    assert "DEM: collapse at" in said and "rigid blocks:" in said, said
+    written = json.loads((tmp_path / "set2_load_path.json").read_text())
+    static = static_load_path(preset("set2").with_overrides(POINT))
+    assert written["engine"] == "dem" and written["steps"] > 0
+    assert math.isclose(written["collapse_multiplier"], static.capacity, rel_tol=ENGINES_TOLERANCE)
+    assert {"csv", "json", "log", "pdf", "png"} <= {p.suffix[1:] for p in tmp_path.glob("set2_load_path.*")}
