@@ -29,7 +29,7 @@ fi
 .venv/bin/python -m pip install -q --no-build-isolation --no-deps -e .
 # the notebooks' kernel ("python3") is the venv's Python when Jupyter runs from the venv
 # (`.venv/bin/python -m notebook examples/`): Debian's own python3 kernel cannot import yadearch
-.venv/bin/python -m ipykernel install --prefix .venv --name python3 --display-name "Python 3 (yadearch .venv)" >/dev/null
+.venv/bin/python -Xfrozen_modules=off -m ipykernel install --prefix .venv --name python3 --display-name "Python 3 (yadearch .venv)" >/dev/null
 # SALib (the sensitivity study's Sobol sampling and estimators) is not in Debian: pip, without its
 # dependencies, which are all Debian's (numpy, scipy, pandas, matplotlib, multiprocess)
 .venv/bin/python -m pip install -q --no-deps "SALib==1.4.7"
