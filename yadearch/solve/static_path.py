@@ -262,20 +262,20 @@ class StaticLoading:
     def load_the_live_load(self, settings: PathSettings) -> None:
         """From the last accepted state on, the path's parameter is the live load's multiplier (from 0,
         in `settings`' units), the supports held where they are: movement, then load."""
-        last = self.accepted[-1]
-        self.parameter = PathParameter(live=True, support_at=self.parameter.support(last.lam))
-        self.settings = settings
-        self.accepted = [replace(last, lam=0.0)]
-        self.failures, self.snaps = {}, []
+        support = self.parameter.support(self.accepted[-1].lam)
+        self._go_on(PathParameter(live=True, support_at=support), settings, 0.0)
 
     def move_the_supports(self, settings: PathSettings) -> None:
         """From the last accepted state on (a live load grown to its multiplier there), the path's
         parameter is the supports' movement from where they stand, the load held: load, then movement."""
-        last = self.accepted[-1]
-        held = self.parameter.multiplier(last.lam)
-        self.parameter = PathParameter(support_at=self.parameter.support(last.lam), held=held)
-        self.settings = settings
-        self.accepted = [replace(last, lam=self.parameter.support_at)]
+        lam = self.accepted[-1].lam
+        support = self.parameter.support(lam)
+        self._go_on(PathParameter(support_at=support, held=self.parameter.multiplier(lam)), settings, support)
+
+    def _go_on(self, parameter: PathParameter, settings: PathSettings, lam: float) -> None:
+        """The path goes on from its last accepted state, now at `lam` of the new `parameter`."""
+        self.parameter, self.settings = parameter, settings
+        self.accepted = [replace(self.accepted[-1], lam=lam)]
         self.failures, self.snaps = {}, []
 
     # ---- the whole path ---------------------------------------------------------------------------
