@@ -21,30 +21,86 @@ from yadearch.studies.loads.engines import (
     engines_table,
     numerics_cases,
 )
+from yadearch.studies.loads.held import STIFF_KN, held_cases, held_table
 from yadearch.studies.loads.rigid import paper_arch
 from yadearch.studies.loads.static import static_influence_line
 
 ENGINES_TOLERANCE = 0.01  # the DEM within 1 % of the static engine (issue 44)
 INFLUENCE_POSITIONS = 7  # points of the paper's arch's influence line on both engines
+HELD_FOLDER = "held_runs"  # the DEM's run folders of the held-load cases (a rerun reads them back)
+STIFF_TOLERANCE = 0.02  # stiff static within 2 % of the rigid march
 RUNS_FOLDER = "load_paths"  # each DEM load path's files, under the report's folder (a rerun reads them back)
 
 
 def write_engines_report(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> Path:
     """Run the comparison (the DEM runs `jobs` at a time; those already in OUT/load_paths are read back) and
-    write engines.csv, numerics.csv, influence.csv, engines.pdf/.png and engines.md into `out`; the
-    report's path."""
+    write engines.csv, numerics.csv, influence.csv, held.csv, engines.pdf/.png and engines.md into `out`;
+    the report's path."""
     out.mkdir(parents=True, exist_ok=True)
     cases = engine_cases()
     table = engines_table(cases, out / RUNS_FOLDER, jobs, log)
     numerics = engines_table(numerics_cases(cases), out / RUNS_FOLDER, jobs, log)
     influence = influence_table(out / RUNS_FOLDER, jobs)
+    held = held_table(held_cases(), out / HELD_FOLDER, jobs, log)
     write_csv_atomically(out / "engines.csv", table)
     write_csv_atomically(out / "numerics.csv", numerics)
     write_csv_atomically(out / "influence.csv", influence)
+    write_csv_atomically(out / "held.csv", held)
     plot_engines(table, ENGINES_TOLERANCE, out / "engines")
     path = out / "engines.md"
-    write_text_atomically(path, engines_markdown(table, numerics) + influence_markdown(influence))
+    text = engines_markdown(table, numerics) + influence_markdown(influence) + held_markdown(held)
+    write_text_atomically(path, text)
     return path
+
+
+def held_markdown(held: pd.DataFrame) -> str:
+    """Load, then movement: du under a held load on the three solvers."""
+    done = held[held["dem_failure"].fillna("") == ""]
+    within = int((done["dem_over_static"].abs() <= ENGINES_TOLERANCE).sum())
+    stiff = int((held["stiff_over_rigid"].abs() <= STIFF_TOLERANCE).sum())
+    lines = [
+        "## Load, then movement",
+        "",
+        "A live load held while the right support settles (`loads.held_load_N`, `held_acceleration_g`; "
+        f"docs/loads.md): du by the static engine and the DEM at kn {ENGINES_KN:g} N/mm3 (the DEM within "
+        f"{100 * ENGINES_TOLERANCE:g} % in {within} of {len(done)}), and by the static engine at kn "
+        f"{STIFF_KN:g} beside the rigid march (within {100 * STIFF_TOLERANCE:g} % in {stiff} of {len(held)}). "
+        f"The DEM's run folders are in {HELD_FOLDER}/.",
+        "",
+        *markdown_table(
+            [
+                "case",
+                "held",
+                "static du (mm)",
+                "DEM du (mm)",
+                "DEM - static",
+                "hinges static / DEM",
+                "stiff static (mm)",
+                "rigid (mm)",
+                "stiff - rigid",
+                "rigid hinges",
+            ],
+            (
+                [
+                    r.case.replace("_", " "),
+                    f"{r.held:g} {r.unit}",
+                    _number(r.static_du_mm),
+                    _number(r.dem_du_mm),
+                    _percent(r.dem_over_static),
+                    f"{r.static_hinges} / {r.dem_hinges or r.dem_failure}",
+                    _number(r.stiff_static_du_mm),
+                    _number(r.rigid_du_mm),
+                    _percent(r.stiff_over_rigid),
+                    r.rigid_hinges,
+                ]
+                for r in held.fillna(
+                    {"static_hinges": "", "dem_hinges": "", "dem_failure": "", "rigid_hinges": ""}
+                ).itertuples()
+            ),
+        ),  # fmt: skip
+        "",
+    ]
+    return "\n".join(lines)
 
 
 def influence_table(paths: Path, jobs: int) -> pd.DataFrame:

@@ -1,0 +1,94 @@
+"""Load, then movement, on the three solvers (reports/loads/engines): a live load held while the support
+settles, du on the static engine, in the DEM (a run folder each, read back on a rerun) and by the rigid
+march, with the static engine at stiff joints beside the rigid answer."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import pandas as pd
+
+from yadearch.case.config import ArchCase
+from yadearch.errors import YadearchError
+from yadearch.launch.process import run_case_process
+from yadearch.model import units
+from yadearch.results.rundir import is_complete, read_summary
+from yadearch.solve.limit import limit_analysis
+from yadearch.solve.load_path import hold_the_live_load
+from yadearch.solve.static_path import StaticLoading
+from yadearch.studies.loads.engines import ENGINES_KN
+from yadearch.studies.loads.rigid import CHECK_FRICTION_DEG, paper_arch
+
+STIFF_KN = 100_000.0  # N/mm3: the static engine beside rigid blocks
+SMALL = {"n_voussoirs": 15, "friction_deg": CHECK_FRICTION_DEG, "live_load": "vertical", "load_position_over_span": 0.3}
+PAPER_HELD_N = (2.0, 4.0, 6.0)  # held at the paper arch's quarter span
+SMALL_HELD_N = (2.0, 4.0)  # held at 0.3 of the small arch's span
+PAPER_HELD_G = 0.1  # an acceleration held on the paper's arch
+
+
+def held_cases() -> list[ArchCase]:
+    """The paper's arch with a point load held at its quarter span and an acceleration held, and the
+    small segmental arch with a point load held at 0.3 of its span, all at kn 5.2 N/mm3."""
+    paper = paper_arch().with_overrides({"interface.kn_N_per_mm3": ENGINES_KN})
+    quarter = {"live_load": "vertical", "load_position_over_span": 0.25}
+    cases = [paper.with_overrides({**quarter, "held_load_N": p, "name": f"paper_held_{p:g}N"}) for p in PAPER_HELD_N]
+    cases.append(
+        paper.with_overrides(
+            {"live_load": "horizontal_acceleration", "held_acceleration_g": PAPER_HELD_G, "name": "paper_held_0.1g"}
+        )
+    )
+    small = ArchCase(name="small").with_overrides({**SMALL, "interface.kn_N_per_mm3": ENGINES_KN})
+    cases += [small.with_overrides({"held_load_N": p, "name": f"small_held_{p:g}N"}) for p in SMALL_HELD_N]
+    return cases
+
+
+def static_du_mm(case: ArchCase) -> tuple[float, str]:
+    """du (mm; NaN without collapse) and the collapse mode's hinges of `case` on the static engine."""
+    loading = StaticLoading.of(case)
+    loading.selfweight()
+    hold_the_live_load(loading, case)
+    path = loading.follow()
+    if not path.collapsed:
+        return math.nan, ""
+    return units.to_mm(path.du), " ".join(loading.fold_mode(path.upper).labels)
+
+
+def held_table(cases: list[ArchCase], out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> pd.DataFrame:
+    """Each case's du on the three solvers (the DEM's run folders in `out`, `jobs` at a time; those
+    complete are read back); a DEM run that fails is a row with its reason."""
+
+    def row(case: ArchCase) -> dict:
+        static, static_hinges = static_du_mm(case)
+        stiff, _ = static_du_mm(case.with_overrides({"interface.kn_N_per_mm3": STIFF_KN}))
+        rigid = limit_analysis(case, mirror=False)
+        folder = out / case.name
+        try:
+            if not is_complete(folder):
+                lean = {"numerics.engine": "dem", "numerics.run_files": "summary"}  # the summary is the evidence
+                run_case_process(case.with_overrides(lean), folder, quiet=True)
+            dem = read_summary(folder)
+            dem_du, dem_hinges, failure = dem.du_mm or math.nan, dem.hinge_labels, ""
+        except YadearchError as exc:
+            dem_du, dem_hinges, failure = math.nan, "", str(exc)
+        log(f"{case.name}: static {static:.2f}, DEM {dem_du:.2f}, rigid {rigid.du_rigid_mm} mm")
+        return {
+            "case": case.name,
+            "held": case.loads.held_load_N or case.loads.held_acceleration_g,
+            "unit": "N" if case.loads.live_load == "vertical" else "g",
+            "static_du_mm": static,
+            "static_hinges": static_hinges,
+            "dem_du_mm": dem_du,
+            "dem_hinges": dem_hinges,
+            "dem_over_static": dem_du / static - 1.0,
+            "stiff_static_du_mm": stiff,
+            "rigid_du_mm": rigid.du_rigid_mm if rigid.du_rigid_mm is not None else math.nan,
+            "rigid_hinges": " ".join(rigid.collapse_hinges),
+            "stiff_over_rigid": stiff / rigid.du_rigid_mm - 1.0 if rigid.du_rigid_mm else math.nan,
+            "dem_failure": failure,
+        }
+
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        return pd.DataFrame(list(pool.map(row, cases)))
