@@ -19,7 +19,7 @@ from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.backfill import Backfill
 from yadearch.model.geometry import ArchGeometry
-from yadearch.model.loads import ACCELERATION, UNITS, VERTICAL, LiveLoad
+from yadearch.model.loads import ACCELERATION, NONE, UNITS, VERTICAL, LiveLoad
 
 
 @dataclass(frozen=True)
@@ -152,6 +152,12 @@ def held_load_text(case: ArchCase) -> str:
     loads = case.loads
     where = f" at {loads.load_position_over_span:g} of the span" if loads.live_load == VERTICAL else ""
     return f"{held:g} {UNITS[loads.live_load]} {loads.live_load.replace('_', ' ')}{where}"
+
+
+def require_live_load(case: ArchCase) -> None:
+    """CaseError for a case without a live load where one must grow."""
+    if case.loads.live_load == NONE:
+        raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
 
 
 def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:

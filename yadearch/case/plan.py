@@ -11,7 +11,13 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes, arch_imperfections, check_contact_model
-from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep, held_multiplier
+from yadearch.case.mechanics import (
+    arch_geometry,
+    contact_stiffness,
+    critical_timestep,
+    held_multiplier,
+    require_live_load,
+)
 from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.errors import CaseError
 from yadearch.model import units
@@ -101,8 +107,7 @@ def plan_run(case: ArchCase) -> RunPlan:
 def check_dem_load(case: ArchCase) -> None:
     """Refuse, before YADE starts, a live-load case the DEM cannot follow: no live load, CGAL contacts
     (the load's stability test needs the joint elements) or backfill (not applied by the DEM yet)."""
-    if case.loads.live_load == NONE:
-        raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
+    require_live_load(case)
     if case.numerics.contact_model != "joint":
         raise CaseError(
             f"numerics.contact_model = {case.numerics.contact_model!r}: the DEM's load path needs the joint "

@@ -27,6 +27,7 @@ class LoadDriver:
         self.contacts: JointElementContacts = scene.contacts
         self.loads = loads
         self.loaded = np.flatnonzero(np.any(loads != 0.0, axis=1))
+        self._loaded_loads = loads[self.loaded]  # read every step
         self.body_ids = [scene.body_ids[b] for b in self.loaded]
         self.multiplier = 0.0
         self.target = 0.0
@@ -63,7 +64,7 @@ class LoadDriver:
             self.contacts.external = self.multiplier * self.loads[:, 0:2]
         if self.multiplier == 0.0:
             return
-        loads = self.loads[self.loaded]
+        loads = self._loaded_loads
         torque = self.multiplier * turned_moments(loads, self.contacts.poses[self.loaded, 2])
         forces = self.multiplier * loads[:, 0:2]
         add_force, add_torque = O.forces.addF, O.forces.addT

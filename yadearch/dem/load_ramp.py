@@ -21,7 +21,7 @@ from yadearch.dem.runner import Runner
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
-from yadearch.model.loads import NONE, UNITS, block_loads, live_load_points, load_displacement
+from yadearch.model.loads import UNITS, block_loads, live_load_points, load_displacement
 from yadearch.model.movement import Movement
 from yadearch.results.summary import HingeRef
 from yadearch.solve.load_lp import load_analysis
@@ -183,9 +183,7 @@ def dem_load_path(
     """The live load of `case` grown to collapse in YADE after the support movement to `after_mm`: the
     same answer as `solve.load_path.static_load_path` (its `iterations` the DEM's steps), and the
     run's records (series, joints, snapshots). CaseError as the static engine raises it."""
-    if case.loads.live_load == NONE:
-        raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
-    at_rest = load_analysis(case)
+    at_rest = load_analysis(case)  # refuses a case without a live load
     scale = load_scale(at_rest)
     settings = load_settings(scale, case.numerics.increment_growth)
     unit = UNITS[case.loads.live_load]
@@ -235,7 +233,7 @@ def hold_the_live_load(runner: Runner) -> float:
     if not loading.settle():  # the movement starts from a state at rest, as from the self-weight's
         raise CaseError(f"loads.{HELD_SETTINGS[case.loads.live_load]}: the held load's state ran away while settling")
     runner.position = moving_position
-    runner.load_turning = runner.recorder.turning = arch.driver.turning
+    runner.recorder.turning = arch.driver.turning  # the stability test and series.csv count its stiffness
     return held_multiplier(case)
 
 

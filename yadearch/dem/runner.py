@@ -62,7 +62,6 @@ class Runner:
         self.hold_move = 0.0  # the largest block displacement of the last hold (m)
         # where the loading stands, as the progress lines say it (a live load's path says its multiplier)
         self.position: Callable[[], str] = lambda: f"delta={units.to_mm(self.delta()):7.2f} mm"
-        self.load_turning: Callable[[], np.ndarray] | None = None  # a held live load's (`dem.load_ramp`)
 
     @property
     def stage(self) -> Stage:
@@ -205,8 +204,9 @@ class Runner:
 
     def smallest_stiffness(self) -> float:
         """The smallest eigenvalue of the free blocks' tangent stiffness at the scene's poses (N/m), with
-        the rotational stiffness of a live load the run holds (`load_turning`)."""
-        return self.scene.contacts.smallest_stiffness(self.load_turning() if self.load_turning else None)
+        the rotational stiffness of a live load the run holds (`recorder.turning`)."""
+        turning = self.recorder.turning
+        return self.scene.contacts.smallest_stiffness(turning() if turning else None)
 
     def reach(self, increment: float) -> float:
         """A support increment moves the blocks it carries at most by as much (m)."""

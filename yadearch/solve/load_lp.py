@@ -15,9 +15,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import live_load, unheld
-from yadearch.errors import CaseError
-from yadearch.model.loads import NONE, UNITS, LoadPoints, generalised, live_load_points
+from yadearch.case.mechanics import live_load, require_live_load, unheld
+from yadearch.model.loads import UNITS, LoadPoints, generalised, live_load_points
 from yadearch.solve.limit_lp import (
     LP_METHOD,
     LP_OPTIONS,
@@ -53,10 +52,9 @@ class LoadCapacity:
 def load_analysis(case: ArchCase, placement: Placement | None = None) -> LoadCapacity:
     """The capacity of `case`'s arch to its live load (`case.loads`), its self-weight held, at rest or
     in `placement` (a state of the support movement's rigid march: the residual capacity)."""
+    require_live_load(case)
     arch = rigid_arch(unheld(case))  # the live load grows from nothing; the backfill is held
     load = live_load(case, arch.geometry)
-    if load.kind == NONE:
-        raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
     placement = placement or at_rest(arch)
     found = load_capacity(arch, live_forces(case, arch, placement), placement)
     return replace(found, unit=UNITS[load.kind], arch_weight_N=float(arch.weight[1:-1].sum()))

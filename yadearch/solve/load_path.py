@@ -15,10 +15,10 @@ import numpy as np
 import pandas as pd
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import held_multiplier
+from yadearch.case.mechanics import HELD_SETTINGS, held_multiplier
 from yadearch.errors import CaseError, RunFailedError
 from yadearch.model import units
-from yadearch.model.loads import NONE, UNITS, VERTICAL, load_displacement
+from yadearch.model.loads import UNITS, VERTICAL, load_displacement
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
 from yadearch.solve.path import PathResult, PathSettings, first_snap, follow_path, path_settings
 from yadearch.solve.rigid import LimitError
@@ -72,9 +72,7 @@ def static_load_path(case: ArchCase, after_mm: float = 0.0, scale: float | None 
     after the case's support movement to `after_mm` (0: at rest); `scale` (N or g; default
     `load_scale`) sets the increments. CaseError for an arch without a live load, or one that
     collapses or stops before `after_mm`; StaticEngineError for one that does not stand."""
-    if case.loads.live_load == NONE:
-        raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
-    at_rest = load_analysis(case)
+    at_rest = load_analysis(case)  # refuses a case without a live load
     scale = load_scale(at_rest) if scale is None else scale
     if not (math.isfinite(scale) and scale > 0.0):
         raise ValueError(f"the load scale must be a positive number, got {scale}")
@@ -156,7 +154,7 @@ def check_held(loaded: PathResult, case: ArchCase) -> None:
             f"{UNITS[case.loads.live_load]} on its way to the held {held:g} (no verdict on the held load)"
         )
     if loaded.outcome != Outcome.STANDS or loaded.lower < held:
-        name = "held_load_N" if case.loads.live_load == VERTICAL else "held_acceleration_g"
+        name = HELD_SETTINGS[case.loads.live_load]
         at = loaded.du if loaded.collapsed else loaded.lower
         unit = UNITS[case.loads.live_load]
         raise CaseError(f"loads.{name} = {held:g}: the arch does not carry it ({loaded.outcome} at {at:.4g} {unit})")

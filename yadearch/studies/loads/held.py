@@ -12,9 +12,11 @@ from pathlib import Path
 import pandas as pd
 
 from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import held_multiplier
 from yadearch.errors import YadearchError
 from yadearch.launch.process import run_case_process
 from yadearch.model import units
+from yadearch.model.loads import UNITS
 from yadearch.results.rundir import is_complete, read_summary
 from yadearch.solve.limit import limit_analysis
 from yadearch.solve.load_path import hold_the_live_load
@@ -76,8 +78,8 @@ def held_table(cases: list[ArchCase], out: Path, jobs: int = 2, log: Callable[[s
         log(f"{case.name}: static {static:.2f}, DEM {dem_du:.2f}, rigid {rigid.du_rigid_mm} mm")
         return {
             "case": case.name,
-            "held": case.loads.held_load_N or case.loads.held_acceleration_g,
-            "unit": "N" if case.loads.live_load == "vertical" else "g",
+            "held": held_multiplier(case),
+            "unit": UNITS[case.loads.live_load],
             "static_du_mm": static,
             "static_hinges": static_hinges,
             "dem_du_mm": dem_du,
