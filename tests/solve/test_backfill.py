@@ -103,6 +103,33 @@ def test_the_rigid_march_carries_the_fill_at_every_state():
     assert math.isclose(carried, voussoirs + fill, rel_tol=1e-6)
 
 
+def test_under_fill_the_rigid_linkage_hangs_on_a_joint_whose_thrust_grazes_its_corner(tmp_path):
+    """50 mm of fill (K 0), settling: the thrust follows the extrados, so on the rigid march's path
+    hinged at 41E joint 40 keeps its thrust within 0.03 mm of its extrados corner (measured 0.023 mm at
+    10 mm); stiff joints hinge there instead, and the rigid linkage hinged at 40E stands to between 142
+    and 143 mm, where the static engine at kn 100 000 collapses on 40E (142.13 mm measured), past the
+    rigid march's 41E (139.11 mm): two linkages of one arch, not two answers of one."""
+    from yadearch.solve.limit_lp import solve_statics
+    from yadearch.solve.rigid import Pivot, at_rest, close_linkage, rigid_arch
+    from yadearch.static.simulate import simulate_static
+
+    case = _filled(fill_lateral_coefficient=0.0)
+    rigid = limit_analysis(case, mirror=False)
+    assert "41E" in rigid.collapse_hinges and rigid.closest_edge_joint == "40E" and rigid.closest_edge_mm < 0.03
+    arch = rigid_arch(case)
+    hinged_at_40 = (Pivot(6, 0), Pivot(39, 1), Pivot(55, 1))  # 7I 40E 56E
+
+    def stands(at_mm: float) -> bool:
+        placement = close_linkage(arch, at_rest(arch), hinged_at_40, at_mm / 1000.0)
+        return placement is not None and solve_statics(arch, placement).feasible
+
+    assert stands(142.0) and not stands(143.0)
+    stiff = case.with_overrides({"interface.kn_N_per_mm3": 100_000.0, "numerics.engine": "static"})
+    summary = simulate_static(stiff, tmp_path / "stiff", log=lambda _line: None)
+    assert summary.collapsed and 142.0 < summary.du_mm < 143.0
+    assert "40E" in {h.label for h in summary.hinges_at_collapse}
+
+
 def test_who_does_not_take_backfill_says_so_in_one_line():
     with pytest.raises(CaseError, match="fill_depth_mm = 50: the DEM does not apply backfill yet"):
         plan_run(_filled())

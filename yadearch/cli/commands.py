@@ -203,6 +203,12 @@ def limit(
     if result.du_first_mm is not None and result.snaps:
         snaps = ", ".join(f"{s.at_mm:.2f} mm ({s.largest_move_mm:.2f} mm)" for s in result.snaps)
         click.echo(f"du_first = {result.du_first_mm:.2f} mm; snaps survived at (largest block move): {snaps}")
+    if result.closest_edge_joint is not None:
+        click.echo(
+            f"nearest edge: joint {result.closest_edge_joint} beside a hinge held its thrust "
+            f"{result.closest_edge_mm:.3f} mm from its corner (at {result.closest_edge_at_mm:.2f} mm); a joint of "
+            "finite kn shares the hinge within its fold margin (--compliant)"
+        )
     if result.mirror_collapse_mode is not None:
         mirrored = "no collapse" if result.mirror_du_rigid_mm is None else f"{result.mirror_du_rigid_mm:.2f} mm"
         hinges = " ".join(result.mirror_collapse_hinges or ())

@@ -102,6 +102,26 @@ def joint_margins(
     return margins
 
 
+def edge_distances(
+    arch: RigidArch, normal: np.ndarray, c: Contacts, pivots: tuple[Pivot, ...]
+) -> list[tuple[float, Pivot]]:
+    """The rigid thrust's distance (m) from the hinge side's corner at each closed joint beside an
+    open hinge of `pivots`, from the corner normal forces `normal` (joint, side) of an equilibrium: how
+    near the joint is to sharing the hinge (a joint of finite kn folds within `fold_margin`)."""
+    hinged = {p.joint for p in pivots}
+    found = []
+    for p in pivots:
+        if c.touching[p.joint].all():
+            continue
+        for joint in (p.joint - 1, p.joint + 1):
+            total = float(normal[joint].sum()) if 0 <= joint < arch.n_joints else 0.0
+            if joint in hinged or total <= 0.0 or not c.touching[joint].all():
+                continue
+            length = float(np.linalg.norm(c.point[joint, 1] - c.point[joint, 0]))
+            found.append((length * float(normal[joint, 1 - p.side]) / total, Pivot(joint, p.side)))
+    return found
+
+
 def opening_chain(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ...], fold: Margin) -> Mechanism:
     """The four-hinge chain that opens the folding joint of `fold` about its corner, as a mechanism
     the rigid march's snap follows: it turns back (to close) the open hinges on the folding joint's

@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import replace
+from typing import Any
 
 import numpy as np
 
@@ -175,4 +176,20 @@ def _solve(
         compliant_largest_margin_mm=units.to_mm(march.largest_margin) if compliant else None,
         n_lp=march.n_lp,
         wall_s=time.perf_counter() - start,
+        **_closest_edge(march, hinges),
     ), arch
+
+
+def _closest_edge(march: March, hinges: tuple[str, ...]) -> dict[str, Any]:
+    """The nearest approach of a thrust to a hinge side's corner at a joint that never hinged (the
+    march's `closest`; a joint that became a hinge reached its corner by design), as LimitResult's fields."""
+    hinged = set(hinges) | {record.label for record in march.history}
+    kept = {pivot: near for pivot, near in march.closest.items() if pivot.label not in hinged}
+    if not kept:
+        return {}
+    pivot, (distance, delta) = min(kept.items(), key=lambda item: (item[1][0], item[0]))
+    return {
+        "closest_edge_joint": pivot.label,
+        "closest_edge_mm": units.to_mm(distance),
+        "closest_edge_at_mm": units.to_mm(delta),
+    }

@@ -27,12 +27,20 @@ import math
 import numpy as np
 
 from yadearch.model import units
-from yadearch.solve.compliant import MIGRATION_REACH, Margin, folds, joint_margins, opening_chain, potential
+from yadearch.solve.compliant import (
+    MIGRATION_REACH,
+    Margin,
+    edge_distances,
+    folds,
+    joint_margins,
+    opening_chain,
+    potential,
+)
 from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
 from yadearch.solve.limit_result import HingeRecord, SnapRecord
 from yadearch.solve.reseat import closing_path, descending_chains, follow_tie, land, migrates
 from yadearch.solve.rigid import LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, contacts
-from yadearch.solve.snap_rules import climbs, moves_a_hinge
+from yadearch.solve.snap_rules import climbs, largest_accepted, moves_a_hinge
 
 COLLAPSE_PROBE_MM = 0.05  # past a limit, where the four-hinge chains are read (clear of LP tolerances)
 CLOSURE_BISECTIONS = 60  # halvings that put a closing corner on its contact to round-off
@@ -62,6 +70,10 @@ class March:
         self.reseated: list[SnapRecord] = []  # the re-seatings survived
         self.history: list[HingeRecord] = []
         self.pivots: tuple[Pivot, ...] = ()  # the hinges of the mechanism followed now
+        self.accepted: Statics  # the equilibrium `admissible` solved last
+        # per closed joint beside an open hinge, its thrust's nearest approach to the hinge side's corner
+        # on the path followed: distance (m), support position (m)
+        self.closest: dict[Pivot, tuple[float, float]] = {}
         # re-seatings one limit may chain (each lowers the weights, so they cannot cycle)
         self.max_stages = 2 * arch.n_joints
 
@@ -78,7 +90,7 @@ class March:
         or a collapse)."""
         if placement is None:
             return False
-        statics = self.statics(placement)
+        statics = self.accepted = self.statics(placement)
         if not statics.feasible or self.kn is None:
             return statics.feasible
         return not any(self.snaps(placement, self.opening(placement, fold)) for fold in self.folds(placement, statics))
@@ -127,12 +139,13 @@ class March:
             offset = min(self.step, corner - state.delta)
             trial, capped = self.moved(state, mechanism, offset), False
             if trial is None:  # a corner closes, or the linkage straightens, within the step
-                offset = _bisect(
+                offset = largest_accepted(
                     lambda h: self.moved(state, mechanism, h) is not None, offset, offset / 2**CLOSURE_BISECTIONS
                 )
                 trial, capped = self.moved(state, mechanism, offset), True
             if trial is not None and self.admissible(trial):
                 state = trial
+                self.note_edges(state)
                 if not capped and abs(state.delta - corner) < 1e-12 and corner < limit:  # the path turns
                     mechanism = self.switch(state, mechanism, 0.0)
                 elif capped:  # a corner has closed (or the linkage straightened): solve the mechanism again
@@ -144,7 +157,9 @@ class March:
                         )
                     mechanism = new
                 continue
-            offset = _bisect(lambda h: self.admissible(self.moved(state, mechanism, h)), offset, self.tolerance)
+            offset = largest_accepted(
+                lambda h: self.admissible(self.moved(state, mechanism, h)), offset, self.tolerance
+            )
             last = self.moved(state, mechanism, offset) if offset > 0 else state
             if last is None:  # the bisection accepted `offset`, so the linkage reaches it
                 raise RuntimeError(
@@ -173,6 +188,12 @@ class March:
             after = " ".join(p.label for p in mechanism.pivots)
             self.reseated.append(SnapRecord(units.to_mm(last.delta), jump, before, after))
         return state, None, mechanism, None
+
+    def note_edges(self, state: Placement) -> None:
+        """Keep the nearest approach of a thrust to its corner beside a hinge at `state`, just admitted."""
+        for distance, pivot in edge_distances(self.arch, self.accepted.normal, self.accepted.contacts, self.pivots):
+            if pivot not in self.closest or distance < self.closest[pivot][0]:
+                self.closest[pivot] = (distance, state.delta)
 
     def fold_chain(self, past: Placement) -> Mechanism | None:
         """With `kn`, the chain that opens a joint folded at `past` and takes a hinge by a snap
@@ -280,14 +301,3 @@ class March:
             HingeRecord(p.joint + 1, "IE"[p.side], d_mm, None, jump_mm) for p in new.pivots if p not in old
         ]
         return new
-
-
-def _bisect(ok, high: float, width: float) -> float:
-    """The largest offset in [0, high] that `ok` accepts (ok(0) assumed), to within `width`."""
-    low = 0.0
-    while high - low > width:
-        mid = 0.5 * (low + high)
-        if mid in (low, high):  # adjacent floats: as close as it gets
-            break
-        low, high = (mid, high) if ok(mid) else (low, mid)
-    return low

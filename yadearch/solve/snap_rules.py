@@ -1,6 +1,6 @@
 """The rules a snap obeys in the march (`solve.march`): the weights never rise along it (past a fold,
 only on the way to its top), and its chain moves one hinge to a nearby interface; a chain that breaks
-them is not a snap the march follows."""
+them is not a snap the march follows. And the bisection the march places its limits and closures by."""
 
 from __future__ import annotations
 
@@ -31,3 +31,14 @@ def moves_a_hinge(chain: Mechanism | None, pivots: tuple[Pivot, ...], reach: int
     new = [p for p in chain.pivots if p not in pivots]
     back = chain.closing[0]
     return len(new) == 1 and back in {p.joint for p in pivots} and 1 <= abs(new[0].joint - back) <= reach
+
+
+def largest_accepted(ok, high: float, width: float) -> float:
+    """The largest offset in [0, high] that `ok` accepts (ok(0) assumed), to within `width`."""
+    low = 0.0
+    while high - low > width:
+        mid = 0.5 * (low + high)
+        if mid in (low, high):  # adjacent floats: as close as it gets
+            break
+        low, high = (mid, high) if ok(mid) else (low, mid)
+    return low
