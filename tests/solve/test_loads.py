@@ -84,6 +84,30 @@ def test_milankovitchs_semicircle_stands_on_its_minimum_and_carries_no_accelerat
     assert math.isnan(load_analysis(semicircle(0.97 * 0.1075)).multiplier)
 
 
+def test_the_minimum_thickness_of_a_semicircle_converges_to_milankovitchs_with_more_voussoirs():
+    """Self-weight only, radial joints, no sliding: the least t/R (R the centre-line radius) at which
+    the rigid LP finds an admissible equilibrium rises with the voussoir count (hinges only at joints)
+    toward Milankovitch's 0.1075 for a continuous ring (as quoted by Makris and Alexakis 2013, Arch.
+    Appl. Mech., doi:10.1007/s00419-013-0763-4); measured 0.10736 / 0.10746 / 0.10748 with 55 / 101 /
+    201 voussoirs."""
+    from yadearch.solve.limit import stands
+
+    def least_standing(n_voussoirs: int) -> float:
+        low, high = 0.09, 0.13
+        while high - low > 1e-5:
+            middle = 0.5 * (low + high)
+            thickness = 2.0 * 300.0 * middle / (2.0 - middle)  # t / (radius + t/2) = t/R
+            case = preset("set2").with_overrides(
+                {"embrace_deg": 180.0, "n_voussoirs": n_voussoirs, "thickness_mm": thickness, **HIGH_FRICTION}
+            )
+            low, high = (low, middle) if stands(case) else (middle, high)
+        return high
+
+    least = [least_standing(n) for n in (55, 101, 201)]
+    assert least[0] < least[1] < least[2] < 0.1075
+    assert least[2] == pytest.approx(0.1075, rel=5e-4)
+
+
 def test_a_settled_rigid_arch_is_a_three_hinge_arch_with_little_capacity_left():
     case = preset("set2").with_overrides({"live_load": "vertical"})
     at_rest_capacity = load_analysis(case).multiplier
