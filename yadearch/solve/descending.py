@@ -28,14 +28,14 @@ from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import PREDICTOR_POINTS, StaticLoading
 from yadearch.solve.static_state import StaticState
 
-FIRST_STEP = 1e-3  # the first arc length: this x the ring's thickness
-LARGEST_STEP = 5e-2  # ... the largest
+FIRST_STEP = 5e-3  # the first arc length: this x the ring's thickness
+LARGEST_STEP = 0.1  # ... the largest
 LEAST_STEP = 1e-5  # ... and the least: a step that must be shorter has lost the branch
 STEP_GROWTH = 1.5  # a step that converged quickly is followed by one this much longer
 QUICK_ITERATIONS = 6  # ... quickly: within this many iterations
 HALVING = 0.5  # a step that fails is tried again this much shorter
 ITERATIONS = 30  # Newton iterations a step may take
-MAX_STEPS = 300  # steps a branch may take (the branches of docs/loads.md take 20 to 40 at kn 5.2)
+MAX_STEPS = 300  # steps a branch may take (set 2's at kn 5.2 take 13 to 26 to half the capacity)
 DESCEND_TO = 0.5  # by default the branch ends when the multiplier has fallen to this x the capacity
 
 
