@@ -99,7 +99,7 @@ def plot_load_path(path: LoadPath, stem: Path) -> tuple[Path, Path]:
     ax.set_ylabel(f"live load ({unit})")
     ax.set_xlim(left=0.0)
     ax.set_ylim(bottom=0.0)
-    ax.legend(loc="lower right", frameon=False)  # below the curve's end: the peak and its lines above
+    ax.legend(loc="best", frameon=False)  # where the curve and its lines leave room: the peak moves about
     return save_figure(fig, stem)
 
 

@@ -44,7 +44,7 @@ def load_path_json(result: LoadPath, case: ArchCase) -> dict[str, Any]:
         "rigid_hinges": result.rigid_hinges.split(),
         "rigid_note": result.rigid_note or None,
         "iterations" if result.engine == "static" else "steps": result.iterations,
-        "descending_branch_end": result.descent_end or None,
+        **({"descending_branch_end": result.descent_end or None} if result.engine == "static" else {}),
         "case": case.to_dict(),
     }
 
