@@ -48,7 +48,7 @@ ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
     "--descending/--no-descending",
     default=True,
     show_default=True,
-    help="static engine: follow the load-displacement curve past its peak (displacement control of the load)",
+    help="static engine: follow the load-displacement curve past its peak (arc length; docs/loads.md)",
 )
 @click.option(
     "--descend-to",

@@ -4,8 +4,8 @@ continuation, fold bracketing and descent as a support movement (`solve.static_p
 of stability, the end of its path (collapse, unresolved, or none up to the largest load tried), the
 mechanism from the fold's softest mode, and the load-displacement curve (docs/loads.md).
 
-Load control up to the limit point; past it, the descending branch by displacement control of the
-load (`solve.descending`), the curve's rows past the peak marked `descending`."""
+Load control up to the limit point; past it, the descending branch by arc length
+(`solve.descending`), the curve's rows past the peak marked `descending`."""
 
 from __future__ import annotations
 
@@ -20,7 +20,7 @@ from yadearch.case.mechanics import HELD_SETTINGS, held_multiplier
 from yadearch.errors import CaseError, RunFailedError
 from yadearch.model import units
 from yadearch.model.loads import UNITS, VERTICAL, load_displacement
-from yadearch.solve.descending import DESCEND_TO, Descent, descend
+from yadearch.solve.descending import DESCEND_TO, descend
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
 from yadearch.solve.path import PathResult, PathSettings, first_snap, follow_path, path_settings
 from yadearch.solve.rigid import LimitError
@@ -58,7 +58,7 @@ class LoadPath:
     rigid_hinges: str
     rigid_note: str = ""  # why there is no rigid answer, where there is none
     engine: str = "static"
-    descent_end: str = ""  # why the descending branch past the peak ends (`solve.descending.DescentEnd`); "": none
+    descent_end: str = ""  # why the branch past the peak ends (`solve.descending.DescentEnd`); "": not traced
 
 
 def load_settings(scale: float, growth: float) -> PathSettings:
@@ -96,8 +96,7 @@ def static_load_path(
     path = follow_path(loading, loading.settings)
     mode = loading.fold_mode(path.upper) if path.collapsed else None
     first = first_snap(loading.snaps)
-    iterations = loading.iterations  # the load-controlled path's, as before the descending branch
-    descent = descend(loading, path.du, descend_to) if path.collapsed and descend_to is not None else Descent()
+    descent = descend(loading, path.du, descend_to) if path.collapsed and descend_to is not None else None
     return LoadPath(
         capacity=path.du if path.collapsed else math.nan,
         first_loss=first_loss_multiplier(path, first),
@@ -105,12 +104,12 @@ def static_load_path(
         unit=UNITS[case.loads.live_load],
         hinges=tuple(mode.labels) if mode is not None else (),
         kind=str(mode.kind) if mode is not None else None,
-        curve=load_curve(arch, start, loading.accepted + descent.states),
+        curve=load_curve(arch, start, loading.accepted + (descent.states if descent is not None else [])),
         after_mm=after_mm,
         reach=path.lower,
-        iterations=iterations,
+        iterations=loading.iterations,  # the load control's: the descending branch has its own solver
         **rigid_answer(case, after_mm, at_rest),
-        descent_end=str(descent.end) if descent.states else "",
+        descent_end=str(descent.end) if descent is not None else "",
     )
 
 
