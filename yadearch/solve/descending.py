@@ -27,6 +27,7 @@ from yadearch.solve.path import extrapolate
 from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import PREDICTOR_POINTS, StaticLoading
 from yadearch.solve.static_state import StaticState
+from yadearch.solve.statics import WARM_UP_VOUSSOIRS, static_arch
 
 FIRST_STEP = 5e-3  # the first arc length: this x the ring's thickness
 LARGEST_STEP = 0.1  # ... the largest
@@ -203,3 +204,18 @@ def bordered_kernel(
             break
         u, lam, state = trial, lam + alpha * more, trial_state
     return u, lam, iterations, bool(np.abs(state[8]).max() <= converged), state
+
+
+def compile_kernel() -> None:
+    """Compile the descending branch's kernel once into numba's cache (scripts/setup.sh calls this after
+    `solve.statics.compile_kernels`, so that a fresh install's first load path does not wait for it)."""
+    from yadearch.case.config import preset
+
+    case = preset("set2").with_overrides({"geometry.n_voussoirs": WARM_UP_VOUSSOIRS, "live_load": "vertical"})
+    arch = static_arch(case)
+    u, shear = arch.at_rest(), np.zeros(len(arch.table.left))
+    normal = np.ones(len(arch.free_dofs)) / np.sqrt(len(arch.free_dofs))
+    bordered_kernel(
+        arch.kernel, u, shear, arch.weight, arch.length, banded.BAND, 1e-9, 1e-4,
+        np.ascontiguousarray(arch.dead), np.ascontiguousarray(arch.live), normal, u, 0.0, 2,
+    )  # fmt: skip
