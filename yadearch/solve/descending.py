@@ -55,7 +55,6 @@ class Descent:
 
     states: list[StaticState] = field(default_factory=list)
     end: DescentEnd = DescentEnd.LOST
-    iterations: int = 0
 
 
 def descend(loading: StaticLoading, capacity: float, descend_to: float = DESCEND_TO) -> Descent:
@@ -80,7 +79,6 @@ def descend(loading: StaticLoading, capacity: float, descend_to: float = DESCEND
             solver.converged, solver.settings.max_step, np.ascontiguousarray(arch.dead),
             np.ascontiguousarray(arch.live), normal, guess_u, guess_lam, ITERATIONS,
         )  # fmt: skip
-        descent.iterations += iterations
         if not success or largest_move(u, guess_u) > loading.snap_floor or _turned_back(history, u, free):
             step *= HALVING
             if step < LEAST_STEP * thickness:
