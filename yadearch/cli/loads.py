@@ -128,7 +128,7 @@ def _descent(path: LoadPath) -> str:
     end = past.iloc[-1]
     return (
         f"; past the peak down to {end.multiplier:.4g} {path.unit} at {end.load_displacement_mm:.3g} mm of the "
-        f"load's displacement ({path.descent_end})"
+        f"load's displacement ({path.descent_end}; turning on {' '.join(path.descent_hinges)})"
     )
 
 

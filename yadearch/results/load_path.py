@@ -44,9 +44,15 @@ def load_path_json(result: LoadPath, case: ArchCase) -> dict[str, Any]:
         "rigid_hinges": result.rigid_hinges.split(),
         "rigid_note": result.rigid_note or None,
         "iterations" if result.engine == "static" else "steps": result.iterations,
-        **({"descending_branch_end": result.descent_end or None} if result.engine == "static" else {}),
+        **(_descent_json(result) if result.engine == "static" else {}),
         "case": case.to_dict(),
     }
+
+
+def _descent_json(result: LoadPath) -> dict[str, Any]:
+    """The static engine's descending branch: why it ended and the hinges its last step turns."""
+    hinges = list(result.descent_hinges)
+    return {"descending_branch_end": result.descent_end or None, "descending_branch_hinges": hinges}
 
 
 def write_load_path(folder: Path, result: LoadPath, case: ArchCase) -> Path:
@@ -81,6 +87,7 @@ def read_load_path(folder: Path, name: str) -> LoadPath:
         rigid_note=data["rigid_note"] or "",
         engine=data["engine"],
         descent_end=data.get("descending_branch_end") or "",
+        descent_hinges=tuple(data.get("descending_branch_hinges", ())),
     )
 
 

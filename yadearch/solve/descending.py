@@ -22,6 +22,7 @@ from yadearch.model.block_state import as_joints, free_state_kernel
 from yadearch.model.joint_tangent import BLOCK_DOFS
 from yadearch.solve import banded
 from yadearch.solve.banded import band_solve
+from yadearch.solve.collapse_mode import fold_mode
 from yadearch.solve.newton import BACKTRACKS, SUFFICIENT_DECREASE, largest_move
 from yadearch.solve.path import extrapolate
 from yadearch.solve.stages import Stage
@@ -55,6 +56,7 @@ class Descent:
 
     states: list[StaticState] = field(default_factory=list)
     end: DescentEnd = DescentEnd.LOST
+    hinges: tuple[str, ...] = ()  # the joints the last step turns: the mechanism where the branch ends
 
 
 def descend(loading: StaticLoading, capacity: float, descend_to: float = DESCEND_TO) -> Descent:
@@ -82,8 +84,7 @@ def descend(loading: StaticLoading, capacity: float, descend_to: float = DESCEND
         if not success or largest_move(u, guess_u) > loading.snap_floor or _turned_back(history, u, free):
             step *= HALVING
             if step < LEAST_STEP * thickness:
-                descent.end = DescentEnd.LOST
-                return descent
+                return _ended(descent, DescentEnd.LOST, loading)
             continue
         joints, residual, stiffness = as_joints(state)
         forces = joints.forces
@@ -94,14 +95,22 @@ def descend(loading: StaticLoading, capacity: float, descend_to: float = DESCEND
         descent.states.append(reached)
         history = (history + [(done + float(np.linalg.norm((u - last.u)[free])), reached)])[-PREDICTOR_POINTS:]
         if lam <= descend_to * capacity:
-            descent.end = DescentEnd.FALLEN
-            return descent
+            return _ended(descent, DescentEnd.FALLEN, loading)
         if largest_move(u, stable.u) >= loading.runaway:
-            descent.end = DescentEnd.RUNAWAY
-            return descent
+            return _ended(descent, DescentEnd.RUNAWAY, loading)
         if iterations <= QUICK_ITERATIONS:
             step = min(step * STEP_GROWTH, LARGEST_STEP * thickness)
-    descent.end = DescentEnd.STEPS
+    return _ended(descent, DescentEnd.STEPS, loading)
+
+
+def _ended(descent: Descent, end: DescentEnd, loading: StaticLoading) -> Descent:
+    """`descent` ending for `end`, with the hinges its last step turns (`solve.collapse_mode.fold_mode`
+    of that step's motion)."""
+    descent.end = end
+    if descent.states:
+        before = descent.states[-2] if len(descent.states) > 1 else loading.accepted[-1]
+        assert before.stiffness is not None  # every state is made from the solver's equilibrium
+        descent.hinges = tuple(fold_mode(loading.arch, before.u, before.stiffness, descent.states[-1].u).labels)
     return descent
 
 

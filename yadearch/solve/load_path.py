@@ -59,6 +59,7 @@ class LoadPath:
     rigid_note: str = ""  # why there is no rigid answer, where there is none
     engine: str = "static"
     descent_end: str = ""  # why the branch past the peak ends (`solve.descending.DescentEnd`); "": not traced
+    descent_hinges: tuple[str, ...] = ()  # the hinges turning where it ends
 
 
 def load_settings(scale: float, growth: float) -> PathSettings:
@@ -110,6 +111,7 @@ def static_load_path(
         iterations=loading.iterations,  # the load control's: the descending branch has its own solver
         **rigid_answer(case, after_mm, at_rest),
         descent_end=str(descent.end) if descent is not None else "",
+        descent_hinges=descent.hinges if descent is not None else (),
     )
 
 
