@@ -43,5 +43,7 @@ import_yade()
 import yade.config
 from yadearch.solve.statics import compile_kernels
 compile_kernels()  # the static engine's numba kernel, compiled once into its cache
+from yadearch.solve.descending import compile_kernel
+compile_kernel()  # ... and the load path's descending branch's
 print(f"setup: ok (numpy {numpy.__version__}, YADE {yade.config.version})")
 PY

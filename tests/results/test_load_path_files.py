@@ -48,6 +48,19 @@ def test_a_load_path_reads_back_as_written(tmp_path):
         }
 
 
+def test_the_static_engines_branches_read_back_as_words(tmp_path):
+    """A curve with the static engine's `branch` column (past the peak: descending) and why its
+    descending branch ended read back as written, the other columns numbers."""
+    written = _path("static")
+    curve = pd.concat([written.curve, pd.DataFrame({"multiplier": [0.75], "load_displacement_mm": [0.4],
+                                                    "min_stiffness_N_per_m": [-2.0]})], ignore_index=True)  # fmt: skip
+    curve["branch"] = ["ascending", "ascending", "descending"]
+    written = LoadPath(**{**vars(written), "curve": curve, "descent_end": "fallen", "descent_hinges": ("3I", "7E")})
+    write_load_path(tmp_path, written, CASE)
+    read = read_load_path(tmp_path, CASE.name)
+    assert read.curve.equals(written.curve) and (read.descent_end, read.descent_hinges) == ("fallen", ("3I", "7E"))
+
+
 def test_names_with_dots_keep_their_own_files(tmp_path):
     other = CASE.with_overrides({"name": "point_0.4"})
     write_load_path(tmp_path, _path("dem"), CASE)

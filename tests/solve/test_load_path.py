@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pandas as pd
 import pytest
 
 from yadearch.case.config import preset
@@ -112,7 +113,7 @@ def test_a_settled_arch_carries_its_load_past_the_load_that_first_moves_rigid_bl
     assert settled.outcome == "collapse"
     assert settled.rigid == residual_capacity(case, 44.0).multiplier
     assert 5.0 * settled.rigid < settled.capacity < 0.8 * at_rest.capacity
-    curve = settled.curve
+    curve = settled.curve[settled.curve["branch"] == "ascending"]  # load control, up to the peak
     assert (np.diff(curve["multiplier"]) > 0).all() and (np.diff(curve["load_displacement_mm"]) > 0).all()
     assert curve["load_displacement_mm"].iloc[0] == 0.0
 
@@ -137,9 +138,12 @@ def test_the_command_writes_the_load_path_and_refuses_bad_input_in_one_line(tmp_
     base = ["loads", "--preset", "set2", "--set", "live_load=vertical", "--set", "n_voussoirs=15", "--engine", "static"]
     assert main([*base, "--out", str(tmp_path)]) == 0
     said = capsys.readouterr().out
-    assert "static engine: collapse at" in said and "rigid blocks:" in said
+    assert "static engine: collapse at" in said and "rigid blocks:" in said and "past the peak down to" in said
     written = json.loads((tmp_path / "set2_load_path.json").read_text())
     assert written["outcome"] == "collapse" and written["collapse_multiplier"] < written["rigid_multiplier"]
+    assert written["descending_branch_end"] == "fallen"
+    branches = pd.read_csv(tmp_path / "set2_load_path.csv")["branch"]
+    assert branches.iloc[0] == "ascending" and branches.iloc[-1] == "descending"
     assert {"pdf", "png", "csv", "json"} <= {p.suffix[1:] for p in tmp_path.glob("set2_load_path.*")}
     for after, words in (("500", "does not carry its support movement to 500 mm"), ("-1", "in [0, 10000]")):
         assert main([*base, "--after-mm", after, "--out", str(tmp_path)]) != 0

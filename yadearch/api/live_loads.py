@@ -22,6 +22,7 @@ from yadearch.launch.load_process import run_load_process
 from yadearch.plotting.load_figure import plot_load_collapse
 from yadearch.plotting.loads import plot_influence, plot_load_path
 from yadearch.results.load_path import load_path_file, write_load_path
+from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.limit import why_not_standing
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
 from yadearch.solve.load_path import LoadPath, static_load_path
@@ -55,14 +56,20 @@ LOAD_PATH_ENGINES = ("static", "dem")  # the engines that follow a live load's p
 
 
 def load_path(
-    case: ArchCase | str, out: str | Path | None = None, after_mm: float = 0.0, engine: str = "static"
+    case: ArchCase | str,
+    out: str | Path | None = None,
+    after_mm: float = 0.0,
+    engine: str = "static",
+    descend_to: float | None = DESCEND_TO,
 ) -> LoadPath:
     """The live load grown to collapse on an engine's path after the case's support movement to
     `after_mm`: its first loss of stability, capacity and mechanism, its load-displacement curve, and the
-    rigid capacity of the same state. `engine` 'static': the static engine (seconds, no YADE); 'dem':
-    YADE's DEM by load ramps relaxed to equilibrium (a child process, minutes; needs `out`). With `out`,
-    writes OUT/NAME_load_path.json, .csv (the curve) and its figure .pdf/.png."""
-    check_arguments(after_mm=after_mm)
+    rigid capacity of the same state. `engine` 'static': the static engine (seconds, no YADE), its curve
+    going on past the peak until the multiplier falls to `descend_to` x the capacity (None: it stops at
+    the peak); 'dem': YADE's DEM by load ramps relaxed to equilibrium (a child process, minutes; needs
+    `out`; its curve stops at the peak). With `out`, writes OUT/NAME_load_path.json, .csv (the curve)
+    and its figure .pdf/.png."""
+    check_arguments(after_mm=after_mm, descend_to=descend_to)
     if engine not in LOAD_PATH_ENGINES:
         raise CaseError(f"engine must be one of {', '.join(LOAD_PATH_ENGINES)}, got {engine!r}")
     case = as_case(case)
@@ -74,7 +81,7 @@ def load_path(
         result = run_load_process(case, folder, after_mm)
     else:
         try:
-            result = static_load_path(case, after_mm)
+            result = static_load_path(case, after_mm, descend_to=descend_to)
         except StaticEngineError as exc:
             raise CaseError(f"{exc} ({standing_parameters(case)}); {why_not_standing(case)}") from None
         if folder is not None:

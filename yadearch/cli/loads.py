@@ -11,7 +11,9 @@ from yadearch import api
 from yadearch.api.live_loads import loads_file
 from yadearch.case.config import ArchCase
 from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, resolve_case
+from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_lp import LoadCapacity
+from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath
 from yadearch.solve.stages import Outcome
 
 RIGID, STATIC, DEM = "rigid", "static", "dem"
@@ -43,6 +45,19 @@ ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
     help="apply the load after the case's support movement to this displacement (mm): the residual capacity",
 )
 @click.option(
+    "--descending/--no-descending",
+    default=True,
+    show_default=True,
+    help="static engine: follow the load-displacement curve past its peak (arc length; docs/loads.md)",
+)
+@click.option(
+    "--descend-to",
+    type=argument_type("descend_to"),
+    default=DESCEND_TO,
+    show_default=True,
+    help="static engine: the descending branch ends when the load has fallen to this fraction of the capacity",
+)
+@click.option(
     "--positions",
     type=int,
     default=None,
@@ -56,6 +71,8 @@ def loads(
     out: str,
     load_engine: str,
     after_mm: float,
+    descending: bool,
+    descend_to: float,
     positions: int | None,
 ) -> None:
     """A live load's capacity: the load (N) or acceleration (g) at collapse with the self-weight held, and
@@ -73,7 +90,7 @@ def loads(
             return
     what = _what(case) + (f" after {after_mm:g} mm of support movement" if after_mm else "")
     if load_engine in (STATIC, DEM):
-        _on_path(case, out, after_mm, what, load_engine)
+        _on_path(case, out, after_mm, what, load_engine, descend_to if descending else None)
         return
     result = api.loads(case, out=out, after_mm=after_mm)
     outcome = _rigid_outcome(result)
@@ -82,14 +99,14 @@ def loads(
     click.echo(f"{case.name}: {what}: {outcome} -> {loads_file(case, out)}")
 
 
-def _on_path(case: ArchCase, out: str, after_mm: float, what: str, engine: str) -> None:
+def _on_path(case: ArchCase, out: str, after_mm: float, what: str, engine: str, descend_to: float | None) -> None:
     """An engine's load path, said in one line beside the rigid answer."""
-    path = api.load_path(case, out=out, after_mm=after_mm, engine=engine)
+    path = api.load_path(case, out=out, after_mm=after_mm, engine=engine, descend_to=descend_to)
     unit = path.unit
     if path.outcome == Outcome.COLLAPSE:
         first = f", first loss of stability at {path.first_loss:.4g} {unit}" if path.first_loss < path.capacity else ""
         kind = f" ({path.kind})" if path.kind else ""
-        outcome = f"collapse at {path.capacity:.4g} {unit} on {' '.join(path.hinges)}{kind}{first}"
+        outcome = f"collapse at {path.capacity:.4g} {unit} on {' '.join(path.hinges)}{kind}{first}{_descent(path)}"
     elif path.outcome == Outcome.UNRESOLVED:
         outcome = f"unresolved: no equilibrium nor runaway found past {path.reach:.4g} {unit} (no capacity)"
     else:
@@ -100,6 +117,18 @@ def _on_path(case: ArchCase, out: str, after_mm: float, what: str, engine: str) 
     click.echo(
         f"{case.name}: {what}: {ENGINE_NAMES[engine]}: {outcome}; rigid blocks: {rigid} "
         f"-> {out}/{case.name}_load_path.json"
+    )
+
+
+def _descent(path: LoadPath) -> str:
+    """The descending branch in words ("" where none was traced)."""
+    past = path.curve[path.curve[BRANCH] == DESCENDING] if BRANCH in path.curve else path.curve.iloc[:0]
+    if past.empty:
+        return ""
+    end = past.iloc[-1]
+    return (
+        f"; past the peak down to {end.multiplier:.4g} {path.unit} at {end.load_displacement_mm:.3g} mm of the "
+        f"load's displacement ({path.descent_end}; turning on {' '.join(path.descent_hinges)})"
     )
 
 

@@ -7,10 +7,11 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 
 from yadearch.plotting.house import COLUMN_CM, house_style, new_figure, save_figure
-from yadearch.solve.load_path import LoadPath
+from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath
 
 HEIGHT_CM = 15.0
 INFLUENCE_HEIGHT_CM = 6.0
@@ -74,14 +75,20 @@ def _draw_influence(ax, influence: pd.DataFrame, arch_weight_N: float, engine: s
 
 @house_style
 def plot_load_path(path: LoadPath, stem: Path) -> tuple[Path, Path]:
-    """STEM.pdf and .png: an engine's load-displacement curve up to its limit point, its first loss of
-    stability and capacity, and the rigid-block capacity of the same state for scale."""
+    """STEM.pdf and .png: an engine's load-displacement curve up to its limit point and, where traced,
+    past it (the descending branch), its first loss of stability and capacity, and the rigid-block
+    capacity of the same state for scale."""
     fig = new_figure(height_cm=INFLUENCE_HEIGHT_CM, width_cm=COLUMN_CM)
     ax = fig.add_subplot()
     curve, unit, capacity, first_loss, rigid = path.curve, path.unit, path.capacity, path.first_loss, path.rigid
-    ax.plot(
-        curve["load_displacement_mm"], curve["multiplier"], "o-", ms=2.0, color="C0", label=ENGINE_LABELS[path.engine]
-    )
+    past = (curve[BRANCH] == DESCENDING).to_numpy() if BRANCH in curve else np.zeros(len(curve), bool)
+    up = curve[~past]
+    ax.plot(up["load_displacement_mm"], up["multiplier"], "o-", ms=2.0, color="C0", label=ENGINE_LABELS[path.engine])
+    if past.any():  # from the peak on, so that the two branches join
+        down = curve.iloc[len(up) - 1 :]
+        ax.plot(
+            down["load_displacement_mm"], down["multiplier"], ".-", ms=2.0, lw=0.8, color="C3", label="past the peak"
+        )
     if math.isfinite(rigid):
         ax.axhline(rigid, color="0.4", lw=0.8, ls="--", label=f"rigid blocks ({rigid:.3g} {unit})")
     if math.isfinite(capacity):
@@ -92,7 +99,7 @@ def plot_load_path(path: LoadPath, stem: Path) -> tuple[Path, Path]:
     ax.set_ylabel(f"live load ({unit})")
     ax.set_xlim(left=0.0)
     ax.set_ylim(bottom=0.0)
-    ax.legend(loc="upper left", frameon=False)
+    ax.legend(loc="best", frameon=False)  # where the curve and its lines leave room: the peak moves about
     return save_figure(fig, stem)
 
 

@@ -216,8 +216,8 @@ def static_markdown(stiff: pd.DataFrame, at_paper_kn: pd.DataFrame) -> str:
         "The live load grown on the static engine's path (`yadearch loads --engine static`, "
         "`ya.load_path`): Newton's method on the DEM's blocks and joints, the load's multiplier as the "
         "path's parameter, the fold bracketed to 0.1 % of the rigid capacity; the first loss of stability "
-        "and the collapse as for a support movement (docs/loads.md). Load control: the path stops at "
-        "the limit point.",
+        "and the collapse as for a support movement (docs/loads.md). Load control: the capacities here "
+        "stop at the limit point (`yadearch loads --engine static` goes on past it by arc length).",
         "",
         f"**Stiff joints against rigid blocks**: at kn {STIFF_KNS[-1]:g} N/mm3 (the stiffest a case accepts) "
         f"within {STIFF_TOLERANCE:.0%} of the rigid-block multiplier in "
@@ -239,8 +239,7 @@ def static_markdown(stiff: pd.DataFrame, at_paper_kn: pd.DataFrame) -> str:
             paper_rows,
         ),
         "",
-        "Not yet: the DEM's load ramp, so static against DEM on loads is not measured; the descending "
-        "branch past the limit point (arc length).",
+        "Not yet: the DEM's load ramp, so static against DEM on loads is not measured.",
         "",
     ]
     return "\n".join(lines)

@@ -12,7 +12,7 @@ import pandas as pd
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.solve.load_path import LoadPath
+from yadearch.solve.load_path import BRANCH, LoadPath
 
 LOAD_PATH_SUFFIX = "_load_path"
 
@@ -44,8 +44,15 @@ def load_path_json(result: LoadPath, case: ArchCase) -> dict[str, Any]:
         "rigid_hinges": result.rigid_hinges.split(),
         "rigid_note": result.rigid_note or None,
         "iterations" if result.engine == "static" else "steps": result.iterations,
+        **(_descent_json(result) if result.engine == "static" else {}),
         "case": case.to_dict(),
     }
+
+
+def _descent_json(result: LoadPath) -> dict[str, Any]:
+    """The static engine's descending branch: why it ended and the hinges its last step turns."""
+    hinges = list(result.descent_hinges)
+    return {"descending_branch_end": result.descent_end or None, "descending_branch_hinges": hinges}
 
 
 def write_load_path(folder: Path, result: LoadPath, case: ArchCase) -> Path:
@@ -71,7 +78,7 @@ def read_load_path(folder: Path, name: str) -> LoadPath:
         unit=data["unit"],
         hinges=tuple(data["hinges_at_collapse"]),
         kind=data["collapse_kind"],
-        curve=pd.read_csv(load_path_file(folder, name, ".csv"), dtype=float),  # every column a number
+        curve=read_curve(load_path_file(folder, name, ".csv")),
         after_mm=float(data["after_mm"]),
         reach=float(data["largest_multiplier_tried"]),
         iterations=int(data.get("iterations", data.get("steps", 0))),
@@ -79,7 +86,15 @@ def read_load_path(folder: Path, name: str) -> LoadPath:
         rigid_hinges=" ".join(data["rigid_hinges"]),
         rigid_note=data["rigid_note"] or "",
         engine=data["engine"],
+        descent_end=data.get("descending_branch_end") or "",
+        descent_hinges=tuple(data.get("descending_branch_hinges", ())),
     )
+
+
+def read_curve(file: Path) -> pd.DataFrame:
+    """A load-displacement curve as written: every column a number but the static engine's `branch`."""
+    curve = pd.read_csv(file)
+    return curve.astype({c: float for c in curve.columns if c != BRANCH})
 
 
 def stored_load_path(folder: Path, case: ArchCase, after_mm: float, engine: str = "dem") -> LoadPath | None:

@@ -4,7 +4,8 @@ continuation, fold bracketing and descent as a support movement (`solve.static_p
 of stability, the end of its path (collapse, unresolved, or none up to the largest load tried), the
 mechanism from the fold's softest mode, and the load-displacement curve (docs/loads.md).
 
-Load control: the path stops at the limit point (its descending branch is not traced)."""
+Load control up to the limit point; past it, the descending branch by arc length
+(`solve.descending`), the curve's rows past the peak marked `descending`."""
 
 from __future__ import annotations
 
@@ -19,6 +20,7 @@ from yadearch.case.mechanics import HELD_SETTINGS, held_multiplier
 from yadearch.errors import CaseError, RunFailedError
 from yadearch.model import units
 from yadearch.model.loads import UNITS, VERTICAL, load_displacement
+from yadearch.solve.descending import DESCEND_TO, descend
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
 from yadearch.solve.path import PathResult, PathSettings, first_snap, follow_path, path_settings
 from yadearch.solve.rigid import LimitError
@@ -31,6 +33,8 @@ FIRST_FRACTION = 0.05  # the load's first increment: this x the load scale (the 
 LARGEST_FRACTION = 0.1  # ... its largest increment
 TOLERANCE_FRACTION = 1e-3  # ... the bracket that ends the search (0.1 % of the capacity)
 REACH = 4.0  # ... and the path stops, the arch standing, at this many times the scale
+BRANCH, ASCENDING, DESCENDING = "branch", "ascending", "descending"  # the curve's column of branches: up
+# to the peak, past it
 
 
 @dataclass(frozen=True)
@@ -54,6 +58,8 @@ class LoadPath:
     rigid_hinges: str
     rigid_note: str = ""  # why there is no rigid answer, where there is none
     engine: str = "static"
+    descent_end: str = ""  # why the branch past the peak ends (`solve.descending.DescentEnd`); "": not traced
+    descent_hinges: tuple[str, ...] = ()  # the hinges turning where it ends
 
 
 def load_settings(scale: float, growth: float) -> PathSettings:
@@ -67,11 +73,15 @@ def load_settings(scale: float, growth: float) -> PathSettings:
     )
 
 
-def static_load_path(case: ArchCase, after_mm: float = 0.0, scale: float | None = None) -> LoadPath:
+def static_load_path(
+    case: ArchCase, after_mm: float = 0.0, scale: float | None = None, descend_to: float | None = DESCEND_TO
+) -> LoadPath:
     """The live load of `case` grown to collapse on the static engine's path, the self-weight held,
     after the case's support movement to `after_mm` (0: at rest); `scale` (N or g; default
-    `load_scale`) sets the increments. CaseError for an arch without a live load, or one that
-    collapses or stops before `after_mm`; StaticEngineError for one that does not stand."""
+    `load_scale`) sets the increments; past a collapse's limit point the descending branch until the
+    multiplier falls to `descend_to` x the capacity (None: not traced). CaseError for an arch without a
+    live load, or one that collapses or stops before `after_mm`; StaticEngineError for one that does
+    not stand."""
     at_rest = load_analysis(case)  # refuses a case without a live load
     scale = load_scale(at_rest) if scale is None else scale
     if not (math.isfinite(scale) and scale > 0.0):
@@ -87,6 +97,7 @@ def static_load_path(case: ArchCase, after_mm: float = 0.0, scale: float | None 
     path = follow_path(loading, loading.settings)
     mode = loading.fold_mode(path.upper) if path.collapsed else None
     first = first_snap(loading.snaps)
+    descent = descend(loading, path.du, descend_to) if path.collapsed and descend_to is not None else None
     return LoadPath(
         capacity=path.du if path.collapsed else math.nan,
         first_loss=first_loss_multiplier(path, first),
@@ -94,11 +105,13 @@ def static_load_path(case: ArchCase, after_mm: float = 0.0, scale: float | None 
         unit=UNITS[case.loads.live_load],
         hinges=tuple(mode.labels) if mode is not None else (),
         kind=str(mode.kind) if mode is not None else None,
-        curve=load_curve(arch, start, loading.accepted),
+        curve=load_curve(arch, start, loading.accepted + (descent.states if descent is not None else [])),
         after_mm=after_mm,
         reach=path.lower,
-        iterations=loading.iterations,
+        iterations=loading.iterations,  # the load control's: the descending branch has its own solver
         **rigid_answer(case, after_mm, at_rest),
+        descent_end=str(descent.end) if descent is not None else "",
+        descent_hinges=descent.hinges if descent is not None else (),
     )
 
 
@@ -177,16 +190,19 @@ def first_loss_multiplier(path: PathResult, first: tuple[float, float] | None) -
 
 
 def load_curve(arch: StaticArch, start: StaticState, states: list[StaticState]) -> pd.DataFrame:
-    """The load-displacement curve: each accepted state's multiplier, the live load's displacement
-    along its own direction (mm; weighted by its forces, the work it does per unit multiplier), and the
-    tangent's smallest eigenvalue (N/m, zero at the limit point)."""
+    """The load-displacement curve: each state's multiplier, the live load's displacement along its
+    own direction (mm; weighted by its forces, the work it does per unit multiplier), the tangent's
+    smallest eigenvalue (N/m, zero at the limit point, negative past it) and its branch: `descending`
+    past the row of the largest multiplier, `ascending` up to it."""
+    peak = int(np.argmax([s.lam for s in states])) if states else 0
     rows = [
         {
             "multiplier": s.lam,
             "load_displacement_mm": units.to_mm(live_work(arch, start.u, s.u)),
             "min_stiffness_N_per_m": s.min_stiffness,
+            BRANCH: DESCENDING if k > peak else ASCENDING,
         }
-        for s in states
+        for k, s in enumerate(states)
     ]
     return pd.DataFrame(rows)
 

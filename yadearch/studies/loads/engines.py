@@ -81,7 +81,7 @@ def engines_table(
     def both(item: tuple[ArchCase, float]) -> dict:
         case, after_mm = item
         try:
-            static = static_load_path(case, after_mm)
+            static = static_load_path(case, after_mm, descend_to=None)  # the capacities alone
         except YadearchError as exc:
             log(f"{case.name}: the static engine failed: {exc}")
             return {"case": case.name, "after_mm": after_mm, "static_outcome": "failed", "dem_outcome": "not run",

@@ -22,7 +22,7 @@ PAPER_LOADS: dict[str, dict[str, object]] = {
 
 def static_row(case: ArchCase, after_mm: float = 0.0) -> dict:
     """One static load path as a table row, with the rigid answer of the same state."""
-    path = static_load_path(case, after_mm)
+    path = static_load_path(case, after_mm, descend_to=None)  # the capacity alone
     return {
         "case": case.name,
         "kn_N_per_mm3": case.interface.kn_N_per_mm3,
@@ -89,7 +89,8 @@ def static_influence_line(base: ArchCase, positions: Iterable[float]) -> pd.Data
     its first loss of stability, hinges and the rigid capacity beside it."""
     rows = []
     for x in positions:
-        path = static_load_path(base.with_overrides({"live_load": "vertical", "load_position_over_span": x}))
+        case = base.with_overrides({"live_load": "vertical", "load_position_over_span": x})
+        path = static_load_path(case, descend_to=None)  # the capacity alone
         rows.append(
             {"position_over_span": x, "collapse_load_N": path.capacity, "first_loss_N": path.first_loss,
              "hinges": " ".join(path.hinges), "outcome": path.outcome, "rigid_load_N": path.rigid,
