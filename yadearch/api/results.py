@@ -128,13 +128,14 @@ class RunResult:
 
         return export_run(self.folder, output_path(out, "out") if out is not None else self.path / VTK_DIR)
 
-    def write_figures(self, out: str | Path | None = None) -> dict[str, tuple[Path, Path]]:
-        """Write the run's figures (PDF and PNG) into `out` (default: the run folder's `figures/`)."""
+    def write_figures(self, out: str | Path | None = None, jobs: int = 1) -> dict[str, tuple[Path, Path]]:
+        """Write the run's figures (PDF and PNG) into `out` (default: the run folder's `figures/`); `jobs`
+        2 draws them in two processes where the platform forks (Linux)."""
         from yadearch.analysis import analyse_run
         from yadearch.plotting.run_figures import write_figures
 
         folder = output_path(out, "out") if out is not None else self.path / FIGURES_DIR
-        return write_figures(self.folder, analyse_run(self.folder), folder)
+        return write_figures(self.folder, analyse_run(self.folder), folder, jobs)
 
     def __repr__(self) -> str:
         du = "no collapse" if self.du_mm is None else f"du={self.du_mm:.2f} mm"

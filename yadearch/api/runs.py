@@ -72,11 +72,13 @@ def run(
     overwrite: bool = False,
     engine: str | None = None,
     quiet: bool = False,
+    figure_jobs: int = 1,
 ) -> RunResult:
     """Run `case` to collapse in a child process (YADE, or the static engine with `engine="static"`),
     writing the run folder `out` (default runs/NAME) and its figures; returns the result read back.
     A finished run of the same case in `out` is reused (unless `rerun`); one of another case is kept
-    unless `overwrite`. The run's progress lines are printed unless `quiet` (run.log keeps them)."""
+    unless `overwrite`. The run's progress lines are printed unless `quiet` (run.log keeps them);
+    `figure_jobs` 2 draws the figures in two processes (`RunResult.write_figures`)."""
     from yadearch.launch.process import run_case_process
 
     check_arguments(timeout_s=timeout_s, figures=figures, rerun=rerun, overwrite=overwrite, quiet=quiet)
@@ -101,7 +103,7 @@ def run(
     run_case_process(case, folder, timeout_s=timeout_s, quiet=quiet, single=True)
     result = open_run(folder)
     if figures:
-        result.write_figures()
+        result.write_figures(jobs=figure_jobs)
     return result
 
 

@@ -16,6 +16,8 @@ from yadearch.errors import YadearchError
 if TYPE_CHECKING:
     from yadearch.results.summary import RunSummary
 
+FIGURE_JOBS = 2  # a single run's figures are drawn in two processes (where the platform forks)
+
 # The commands defined in other modules, imported only when invoked (or listed by --help): a command
 # imports what it needs (pandas, matplotlib, the studies) and no other command's, so that a single
 # static run starts in a fraction of a second (docs/speed.md).
@@ -102,7 +104,7 @@ def run(
     case = resolve_case(preset_name, case_file, kn, settings)
     if name is not None:
         case = case.with_overrides({"name": check_name(name, "--name")})
-    result = run_case(case, out=out, rerun=rerun, overwrite=overwrite, figures=figures)
+    result = run_case(case, out=out, rerun=rerun, overwrite=overwrite, figures=figures, figure_jobs=FIGURE_JOBS)
     _report_summary(result.path)
     if figures:
         click.echo(f"figures -> {result.path / 'figures'}")

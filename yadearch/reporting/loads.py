@@ -239,7 +239,7 @@ def static_markdown(stiff: pd.DataFrame, at_paper_kn: pd.DataFrame) -> str:
             paper_rows,
         ),
         "",
-        "Not yet: the DEM's load ramp, so static against DEM on loads is not measured.",
+        "The DEM's load path against this one: reports/loads/engines (`scripts/loads_engines.py`).",
         "",
     ]
     return "\n".join(lines)

@@ -1,0 +1,46 @@
+"""A run's figures drawn in two processes (plotting.parallel) are the files one process draws, byte
+for byte, and a drawing the child could not finish is drawn by the parent."""
+
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+
+import pytest
+from conftest import REPO
+
+from yadearch.analysis import analyse_run
+from yadearch.plotting.parallel import Drawing, draw_all
+from yadearch.plotting.run_figures import write_figures
+from yadearch.results.rundir import read_run
+
+forking = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="figures fork only on Linux")
+
+
+@forking
+def test_two_processes_draw_the_same_files_as_one(tmp_path: Path) -> None:
+    run = read_run(REPO / "reports/set2")
+    analysis = analyse_run(run)
+    one = write_figures(run, analysis, tmp_path / "one", jobs=1)
+    two = write_figures(run, analysis, tmp_path / "two", jobs=2)
+    assert one.keys() == two.keys() and len(one) >= 5
+    for name, paths in one.items():
+        for drawn_once, drawn_twice in zip(paths, two[name], strict=True):
+            assert drawn_once.read_bytes() == drawn_twice.read_bytes(), drawn_once.name
+
+
+@forking
+def test_what_the_child_did_not_draw_is_drawn_here(tmp_path: Path) -> None:
+    parent = os.getpid()
+
+    def write(name: str) -> None:
+        if os.getpid() != parent:
+            raise RuntimeError("the child fails")
+        (tmp_path / name).write_text(name)
+
+    drawings = [
+        Drawing(name, cost, lambda name=name: write(name)) for name, cost in (("a", 2.0), ("b", 1.0), ("c", 1.0))
+    ]
+    draw_all(drawings, jobs=2)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a", "b", "c"]
