@@ -22,6 +22,7 @@ from pathlib import Path
 from typing import Any
 
 WORKER_ENDED = "the static engine's worker process ended"
+PROC_UTIME, PROC_STIME = 11, 12  # /proc/PID/stat's CPU ticks, counted after the command's name
 STOPPED = (-signal.SIGTERM, -signal.SIGINT)  # a worker stopped by `stop_workers` or a Ctrl-C: runs left pending
 _idle: queue.LifoQueue[subprocess.Popen] = queue.LifoQueue()
 _all: set[subprocess.Popen] = set()
@@ -127,6 +128,19 @@ def _stop(worker: subprocess.Popen) -> None:
     worker.wait()
     with _lock:
         _all.discard(worker)
+
+
+def workers_cpu_s() -> float:
+    """The CPU seconds (user and system) the live workers have used so far (Linux's /proc)."""
+    ticks = os.sysconf("SC_CLK_TCK")
+    with _lock:
+        workers = list(_all)
+    total = 0.0
+    for worker in workers:
+        with contextlib.suppress(OSError):  # a worker that just ended
+            fields = Path(f"/proc/{worker.pid}/stat").read_text().rsplit(")", 1)[1].split()
+            total += (int(fields[PROC_UTIME]) + int(fields[PROC_STIME])) / ticks
+    return total
 
 
 def stop_workers() -> None:
