@@ -9,6 +9,7 @@ import os
 import signal
 import subprocess
 import sys
+import threading
 import time
 
 import pandas as pd
@@ -17,6 +18,7 @@ from conftest import REPO
 
 from yadearch.case.config import preset
 from yadearch.errors import YadearchError
+from yadearch.static import pool as static_pool
 from yadearch.static.pool import solve_batch, stop_workers
 from yadearch.studies.campaigns.batches import BATCHES_DIR, read_batches
 from yadearch.studies.campaigns.executors import local_pool
@@ -80,6 +82,22 @@ def test_a_batch_over_its_timeout_fails_that_run_and_the_others_go_on():
     finally:
         stop_workers()
     assert answers == [{"error": "timed out after 0 s"}] * 2
+
+
+def test_a_batch_whose_worker_is_stopped_hands_back_its_finished_runs_and_the_rest_as_interrupted():
+    cases = [BASE.with_overrides({"kn_N_per_mm3": 100.0, "n_voussoirs": 31}).to_dict()] * 80
+    answers: list[dict] = []
+    solving = threading.Thread(target=lambda: answers.extend(solve_batch(cases, timeout_s=60)))
+    solving.start()
+    deadline = time.time() + 60
+    while not static_pool._all and time.time() < deadline:
+        time.sleep(0.01)
+    time.sleep(3.0)  # the worker's imports, then a few runs
+    stop_workers()
+    solving.join(timeout=60)
+    kinds = [next(iter(answer)) for answer in answers]
+    assert len(answers) == len(cases) and "interrupted" in kinds
+    assert kinds == sorted(kinds, key=lambda kind: kind == "interrupted")  # the finished ones first
 
 
 def test_a_campaign_without_folders_killed_resumes_after_its_last_whole_batch(tmp_path):

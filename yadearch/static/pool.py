@@ -89,8 +89,9 @@ def run_static(case_file: Path, staging: Path, timeout_s: float | None) -> tuple
 
 def solve_batch(cases: list[dict[str, Any]], timeout_s: float | None) -> list[dict[str, Any]]:
     """Solve cases (`ArchCase.to_dict()`) in a worker, no run folder written: per case its summary
-    ({"summary": summary.json's object}), its failure ({"error": reason, "wall_s": seconds}) or, once the worker was
-    stopped, {"interrupted": reason}. A case over `timeout_s` fails and the rest go on in a new worker."""
+    ({"summary": summary.json's object}), its failure ({"error": reason, "wall_s": seconds}) or, once
+    the worker was stopped, {"interrupted": reason}. A case over `timeout_s`, or one its worker died
+    under, fails; the rest go on in a new worker."""
     results: list[dict[str, Any]] = []
     while len(results) < len(cases):
         rest = cases[len(results) :]
@@ -108,9 +109,11 @@ def solve_batch(cases: list[dict[str, Any]], timeout_s: float | None) -> list[di
             _stop(worker)
             results.append({"error": f"timed out after {timeout_s:.0f} s"})
             continue
-        except (KeyboardInterrupt, BrokenPipeError, OSError):
+        except KeyboardInterrupt:
             _stop(worker)
             raise
+        except OSError:  # a broken pipe: the worker died, said below
+            pass
         if len(results) == len(cases):
             _idle.put(worker)
             break
@@ -119,7 +122,8 @@ def solve_batch(cases: list[dict[str, Any]], timeout_s: float | None) -> list[di
         if code in STOPPED:
             results += [{"interrupted": f"{WORKER_ENDED} (signal {-code})"}] * (len(cases) - len(results))
         else:
-            results.append({"error": f"{WORKER_ENDED} (exit code {code})"})
+            ended = f"exit code {code}" if code >= 0 else f"killed by signal {-code}"
+            results.append({"error": f"{WORKER_ENDED} ({ended})"})
     return results
 
 
