@@ -87,9 +87,13 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
 
     path = loading.follow(on_step=progress)
     for state in loading.accepted[1:]:
-        last_hinges = records.add(state)
-    hinges_last = last_hinges if len(loading.accepted) > 1 else []
-    hinges = records.add(loading.collapse_state(path.upper), label=Stage.COLLAPSE) if path.collapsed else hinges_last
+        records.add(state)
+    hinges_last = records.hinges(loading.accepted[-1]) if len(loading.accepted) > 1 else []
+    hinges = hinges_last
+    if path.collapsed:
+        collapse = loading.collapse_state(path.upper)
+        records.add(collapse, label=Stage.COLLAPSE)
+        hinges = records.hinges(collapse)
     mode = loading.fold_mode(path.upper) if path.collapsed else None
     summary = RunSummary(
         name=case.name,
