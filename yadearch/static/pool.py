@@ -192,8 +192,9 @@ def _solve(data: dict[str, Any]) -> dict[str, Any]:
     from yadearch.static.simulate import simulate_static
 
     started = time.time()
-    try:
-        return {"summary": simulate_static(case_from_dict(data), None, log=lambda _: None).to_json()}
+    try:  # anything the engine prints must not reach the answer lines on standard output
+        with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+            return {"summary": simulate_static(case_from_dict(data), None, log=lambda _: None).to_json()}
     except YadearchError as exc:
         reason = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
     except Exception as exc:  # noqa: BLE001 - a defect of the engine fails this run, not the campaign
