@@ -86,7 +86,10 @@ def parser() -> argparse.ArgumentParser:
 
 
 def main() -> int:
-    args = parser().parse_args()
+    options = parser()
+    args = options.parse_args()
+    if args.campaign_runs < 0:
+        options.error(f"--campaign-runs must be >= 1 (0: not measured), got {args.campaign_runs}")
     out, runs = Path(args.out), Path(args.runs)
     if args.campaign_runs:
         figures = campaign_runs_measurement(args.campaign_runs, runs / "campaign_runs")

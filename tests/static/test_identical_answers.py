@@ -1,18 +1,21 @@
 """The static engine's answers stay those of the engine before issue 45's speed work (commit 8ecff91):
 du, du_first, the outcome, the hinges, the collapse kind and the iterations and joint evaluations
 (the same path), to the bit, on set 2, kn 1 and kn 100, three imperfect samples and three points of
-the sensitivity study's Saltelli sample. `python tests/static/test_identical_answers.py` rewrites the
-reference, only ever from that engine."""
+the sensitivity study's Saltelli sample. `PYTHONPATH=.:tests python
+tests/static/test_identical_answers.py` (on a checkout of 8ecff91) rewrites the reference."""
 
 from __future__ import annotations
 
 import json
 import sys
+import tempfile
+from pathlib import Path
 
 import pytest
 from conftest import DATA
 
 from yadearch.case.config import ArchCase, preset
+from yadearch.results.summary import RunSummary
 from yadearch.static.simulate import simulate_static
 from yadearch.studies.sensitivity.indices import PAPER_FACTORS, sobol_rows
 
@@ -35,25 +38,30 @@ def cases() -> dict[str, ArchCase]:
     return found
 
 
-def answers(case: ArchCase) -> dict:
+def answers(summary: RunSummary) -> dict:
     """What must not change: the physical answers and the path's length."""
-    s = simulate_static(case, None, log=lambda _: None)
     return {
-        "du_mm": s.du_mm,
-        "du_first_mm": s.du_first_mm,
-        "outcome": s.path_outcome,
-        "hinges": s.hinge_labels,
-        "collapse_kind": s.collapse_kind,
-        "iterations": s.iterations,
-        "joint_evaluations": s.joint_evaluations,
+        "du_mm": summary.du_mm,
+        "du_first_mm": summary.du_first_mm,
+        "outcome": summary.path_outcome,
+        "hinges": summary.hinge_labels,
+        "collapse_kind": summary.collapse_kind,
+        "iterations": summary.iterations,
+        "joint_evaluations": summary.joint_evaluations,
     }
 
 
 @pytest.mark.parametrize("name", sorted(json.loads(REFERENCE.read_text())))
 def test_the_static_engine_gives_the_reference_answers_to_the_bit(name):
-    assert answers(cases()[name]) == json.loads(REFERENCE.read_text())[name]
+    summary = simulate_static(cases()[name], None, log=lambda _: None)
+    assert answers(summary) == json.loads(REFERENCE.read_text())[name]
 
 
-if __name__ == "__main__":
-    REFERENCE.write_text(json.dumps({name: answers(case) for name, case in cases().items()}, indent=1) + "\n")
+if __name__ == "__main__":  # with a run folder each, as every revision of simulate_static writes one
+    with tempfile.TemporaryDirectory() as folder:
+        found = {
+            name: answers(simulate_static(case, Path(folder) / name, log=lambda _: None))
+            for name, case in cases().items()
+        }
+    REFERENCE.write_text(json.dumps(found, indent=1) + "\n")
     sys.exit(0)
