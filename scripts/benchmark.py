@@ -1,6 +1,7 @@
 """Speed benchmark (docs/speed.md): set 1, set 2 (and kn 100) run or read, set 2's du against a slow
 reference, the limit analysis, the contact models' and the driver's speeds, the campaigns' wall times
-and (--static) the static engine's; --run-files N and --static-floor measure only that (no YADE).
+and (--static) the static engine's; --run-files N, --static-floor and --campaign-runs N measure only
+that (no YADE).
 Prints a verdict line per target and writes the figures to --out (`yadearch.studies.benchmark`).
 """
 
@@ -12,6 +13,7 @@ from dataclasses import fields
 from pathlib import Path
 
 from yadearch.api.campaigns import montecarlo, sweep
+from yadearch.studies.benchmark.campaign_runs import campaign_runs_measurement, campaign_runs_verdicts
 from yadearch.studies.benchmark.report import BenchmarkPlan, run_benchmark
 from yadearch.studies.benchmark.run_files import run_files_measurement, run_files_verdicts
 from yadearch.studies.benchmark.static_engine import StaticCampaigns, static_floor_measurement, static_floor_verdicts
@@ -73,12 +75,27 @@ def parser() -> argparse.ArgumentParser:
         help="only measure the static solver's CPU against its compiled floor (set 2 and an imperfect "
         "sample; static.cost) and write it to --out",
     )
+    add(
+        "--campaign-runs",
+        type=int,
+        default=0,
+        help="only measure the CPU a static campaign run costs, over this many runs of the sensitivity "
+        "study's Saltelli sample kept in run folders and kept as rows only, and write it to --out",
+    )
     return parser
 
 
 def main() -> int:
-    args = parser().parse_args()
+    options = parser()
+    args = options.parse_args()
+    if args.campaign_runs < 0:
+        options.error(f"--campaign-runs must be >= 1 (0: not measured), got {args.campaign_runs}")
     out, runs = Path(args.out), Path(args.runs)
+    if args.campaign_runs:
+        figures = campaign_runs_measurement(args.campaign_runs, runs / "campaign_runs")
+        write_report(out, {**figures, "measured": measured_at()})
+        print_verdicts(campaign_runs_verdicts(figures))
+        return 0
     if args.static_floor or args.run_files:
         figures = (
             static_floor_measurement()

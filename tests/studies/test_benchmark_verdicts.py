@@ -12,6 +12,7 @@ import pandas as pd
 import pytest
 from conftest import REPO
 
+from yadearch.studies.benchmark.campaign_runs import campaign_runs_verdicts
 from yadearch.studies.benchmark.dem_runs import campaign_status, montecarlo_wall_s, slow_reference
 from yadearch.studies.benchmark.run_files import run_files_verdicts
 from yadearch.studies.benchmark.static_engine import static_floor_verdicts, static_verdicts
@@ -47,6 +48,7 @@ def test_the_committed_reports_verdicts_follow_from_their_figures():
     for name, decide in (
         ("benchmark_run_files", run_files_verdicts),
         ("benchmark_static_floor", static_floor_verdicts),
+        ("benchmark_campaign_runs", campaign_runs_verdicts),
     ):
         figures, lines = _committed(name)
         assert [v.line() for v in decide(figures)] == lines
@@ -122,6 +124,20 @@ def test_the_static_engine_fails_on_a_slow_solver_or_a_du_off_the_dems():
     assert not slow[0].met and slow[0].target == "static set 2 solver <= 0.5 s, whole run <= 10 s"
     off = static_verdicts(report, report["set2_du_mm"] * 1.02, COMMITTED_STATIC_DONE)[1]
     assert not off.met and off.detail == "1.96%"
+
+
+def test_a_campaign_run_passes_at_25_ms_with_the_same_answers_and_the_study_at_20_minutes():
+    good = {
+        "campaign_lean_run_cpu_s": 0.02,
+        "campaign_folders_run_cpu_s": 0.2,
+        "campaign_same_answers": True,
+        "sensitivity_4096_estimate_s": 1100.0,
+    }
+    assert [v.met for v in campaign_runs_verdicts(good)] == [True, True]
+    for change in ({"campaign_lean_run_cpu_s": 0.026}, {"campaign_same_answers": False}):
+        assert not campaign_runs_verdicts({**good, **change})[0].met
+    slow = campaign_runs_verdicts({**good, "sensitivity_4096_estimate_s": 1260.0})[1]
+    assert not slow.met and slow.detail == "21 min"
 
 
 def test_each_case_of_the_static_floor_is_judged_against_the_floor_ratio():

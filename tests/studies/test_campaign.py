@@ -26,7 +26,6 @@ from yadearch.studies.campaigns.failures import record_failure
 from yadearch.studies.campaigns.grid import RUN_COLUMN, grid, parse_values, read_table, run_tag
 from yadearch.studies.campaigns.runner import (
     FAILED_FILE,
-    RESULTS_COST_SHARE,
     RESULTS_EVERY_S,
     RESULTS_FILE,
     batch_run,
@@ -35,7 +34,7 @@ from yadearch.studies.campaigns.runner import (
     run_campaign,
 )
 from yadearch.studies.campaigns.sessions import SESSIONS_FILE, campaign_wall_s
-from yadearch.studies.campaigns.table import label_hinges
+from yadearch.studies.campaigns.table import RESULTS_COST_SHARE, label_hinges
 
 BASE = preset("set1").with_overrides({"n_voussoirs": 15})
 HINGES = [

@@ -130,7 +130,8 @@ def test_static_sensitivity_of_a_small_arch_puts_thickness_before_friction(tmp_p
     indices = result.indices[result.indices["base_points"] == 8].set_index("factor")
     assert indices["ST"].idxmax() == "thickness_mm"
     assert (result.samples["status"] == "done").all()
-    assert not list((tmp_path / "runs").glob("*/joints.csv"))  # the sample's folders keep their summaries
+    assert not list((tmp_path / "runs").glob("*/summary.json"))  # the sample's static runs keep no folders
+    assert list((tmp_path / "runs" / "batches").glob("*.jsonl"))
     assert len(list((tmp_path / "tornado_runs").glob("*/joints.csv"))) == len(result.tornado) * 2 + 1
     assert pd.read_csv(tmp_path / "indices.csv")["base_points"].tolist() == [4, 4, 8, 8]
     for figure in ("tornado", "indices", "convergence"):

@@ -11,11 +11,12 @@ from numba import njit
 from yadearch.model.joint_law import JointForces, JointLaw
 from yadearch.model.joint_table import JointTable
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, tangent_kernel
+from yadearch.model.kernel_call import KernelCall
 
 
 def kernel_table(table: JointTable, law: JointLaw) -> tuple:
     """The joint table's arrays and the law's constants as one tuple, as the compiled kernels of the
-    static engine take them (a flat tuple of arrays costs numba about 10 us to dispatch)."""
+    static engine take them (`model.kernel_call` dispatches a tuple of this size without numba's typing)."""
     return (*table.kernel_geometry(), *law.kernel_constants(), *table.kernel_gaps())
 
 
@@ -35,7 +36,7 @@ def free_state(
     per block) having moved from `u_before`, the residual R = joint forces + `gravity` x the weights
     + `factor` x the point loads `loads` (`model.loads.block_loads`) on the free blocks (all but the
     first and last) and their tangent K in band storage; `kernel` is `kernel_table`'s tuple."""
-    return as_joints(free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, length, band, loads, factor))
+    return as_joints(FREE_STATE_KERNEL(kernel, u, u_before, shear_before, weight, gravity, length, band, loads, factor))
 
 
 def as_joints(state: tuple) -> tuple[JointTangent, np.ndarray, np.ndarray]:
@@ -115,3 +116,6 @@ def _add_point_loads(residual, stiffness, loads, factor, rot, lever, band):
         residual[k + 1] += factor * loads[b, 1]
         residual[k + 2] += factor * (c * m0 - s * d0) / lever
         stiffness[band, k + 2] += factor * (s * m0 + c * d0) / lever**2
+
+
+FREE_STATE_KERNEL = KernelCall(free_state_kernel)  # `model.kernel_call`

@@ -30,7 +30,7 @@ def joint_snapshot(
 ) -> tuple[dict[str, Any], list[Hinge]]:
     """Per-interface state (kinematics, forces, friction use, slip, hinge rotation) of blocks at
     `pos`, `rot` with joint contact `points`, forces and accumulated `slip`, and its hinges (rad)."""
-    friction_use = np.divide(np.abs(shear), normal * tan_friction, out=np.zeros_like(shear), where=normal > 0.0)
+    friction_use = mobilised_friction(normal, shear, tan_friction)
     js = joint_states(geometry, pos0, pos, rot, points)
     if imperfections is not None:  # the real faces' openings: a wedge closed flat is closed
         wedge_intrados, wedge_extrados = imperfections.wedge_openings()
@@ -51,6 +51,11 @@ def joint_snapshot(
         "slip": slip,
         "hinge_rotation": rotation,
     }, hinges
+
+
+def mobilised_friction(normal: np.ndarray, shear: np.ndarray, tan_friction: float) -> np.ndarray:
+    """Each joint's friction use |T| / (N tan phi) (0 where it carries no normal force)."""
+    return np.divide(np.abs(shear), normal * tan_friction, out=np.zeros_like(shear), where=normal > 0.0)
 
 
 def joint_rows(snap: dict[str, Any], common: dict[str, Any]) -> list[dict[str, Any]]:

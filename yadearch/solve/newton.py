@@ -18,10 +18,13 @@ import scipy.linalg
 
 from yadearch.model.block_state import as_joints
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent
+from yadearch.model.kernel_call import KernelCall
 from yadearch.solve import banded
 from yadearch.solve.newton_kernel import CONVERGED, RUNAWAY, STUCK, TIMEOUT, descent_kernel, newton_kernel
 from yadearch.solve.stages import Verdict
 from yadearch.solve.statics import StaticArch
+
+NEWTON_KERNEL, DESCENT_KERNEL = KernelCall(newton_kernel), KernelCall(descent_kernel)  # `model.kernel_call`
 
 BACKTRACKS = 12  # halvings of a Newton step before it counts as failed
 SUFFICIENT_DECREASE = 1e-4  # Armijo constant of the line search on |R|^2
@@ -127,7 +130,7 @@ class Solver:
         """Newton from `u0` (supports already placed); None if it does not converge. The iterations
         run compiled (`solve.newton_kernel`): Newton's step capped at `max_step`, halved up to
         BACKTRACKS times until |R|^2 falls by SUFFICIENT_DECREASE x the step's fraction."""
-        u, loops, evaluations, success, state = newton_kernel(
+        u, loops, evaluations, success, state = NEWTON_KERNEL(
             self._problem(u_before, shear_before, gravity, multiplier),
             u0,
             self.settings.newton_iterations,
@@ -228,7 +231,7 @@ class Solver:
         """The descent's iterations `start` to `budget` compiled (`solve.newton_kernel.descent_kernel`),
         to the first event the interpreter decides on (an equilibrium, a stuck shift) or an end."""
         problem = self._problem(u_before, shear_before, *loads)
-        return descent_kernel(problem, u, floor, shift, origin, runaway, start, budget)
+        return DESCENT_KERNEL(problem, u, floor, shift, origin, runaway, start, budget)
 
     def _kick(self, u: np.ndarray, stiffness: np.ndarray) -> np.ndarray:
         """`u` moved along the softest mode of `stiffness`, the way the weights go down."""

@@ -11,7 +11,13 @@ import numpy as np
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.model.joint_law import unbalanced_force
-from yadearch.results.joint_rows import friction_extremes, joint_rows, joint_snapshot, snapshot_entry
+from yadearch.results.joint_rows import (
+    friction_extremes,
+    joint_rows,
+    joint_snapshot,
+    mobilised_friction,
+    snapshot_entry,
+)
 from yadearch.results.rundir import STIFFNESS_COLUMN
 from yadearch.results.states import state_entry
 from yadearch.solve.stages import Stage
@@ -44,7 +50,7 @@ DEM_ONLY_NUMERICS = (
 @dataclass
 class StaticRecords:
     """Rows and snapshots of one static run, added state by state (a lean run keeps only what its
-    summary reads: hinges, friction, the snapshots' labels)."""
+    summary reads: the friction extremes; its hinges are asked for, `hinges`)."""
 
     arch: StaticArch
     hinge_threshold: float  # rad
@@ -57,12 +63,34 @@ class StaticRecords:
     friction: dict[str, Any] = field(default_factory=dict)
     iterations: int = 0
 
-    def add(self, state: StaticState, label: str | None = None) -> list[Hinge]:
-        """Record `state` (a series row, its joints, the snapshot under `label`); its hinges."""
+    def add(self, state: StaticState, label: str | None = None) -> None:
+        """Record `state`: where the run keeps its tables, a series row, its joints and the snapshot
+        under `label`; an equilibrium's friction extremes always (the summary's `friction`)."""
         self.iterations += state.iterations
-        pos, rot = self.arch.poses(state.u)
+        delta_mm = units.to_mm(state.lam)
         f = state.forces
-        snap, hinges = joint_snapshot(
+        if self.keep_tables:
+            pos, rot = self.arch.poses(state.u)
+            snap, hinges = self._snapshot(state, pos, rot)
+            common = {"stage": state.stage, "step": self.iterations, "delta_mm": delta_mm}
+            self.series.append({**common, **self.series_columns(state, pos)})
+            self.joints.extend(joint_rows(snap, common))
+            self.states.append(state_entry(state.stage, self.iterations, delta_mm, pos, rot))
+            if label:
+                self.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, self.iterations)
+        if state.stage == Stage.EQUILIBRIUM:
+            use = mobilised_friction(f.normal_force, f.shear_force, self.arch.law.tan_friction)
+            friction_extremes(self.friction, {"friction_use": use, "slip": state.slip}, delta_mm)
+
+    def hinges(self, state: StaticState) -> list[Hinge]:
+        """The hinges of `state` (a lean run's joint snapshot is made only for the states whose hinges
+        its summary reads)."""
+        return self._snapshot(state, *self.arch.poses(state.u))[1]
+
+    def _snapshot(self, state: StaticState, pos: np.ndarray, rot: np.ndarray) -> tuple[dict[str, Any], list[Hinge]]:
+        """`joint_rows.joint_snapshot` of `state`, whose blocks are at `pos`, `rot`."""
+        f = state.forces
+        return joint_snapshot(
             self.arch.geometry,
             self.arch.centroid0,
             pos,
@@ -75,17 +103,6 @@ class StaticRecords:
             self.arch.imperfections,
             self.hinge_threshold,
         )
-        delta_mm = units.to_mm(state.lam)
-        if self.keep_tables:
-            common = {"stage": state.stage, "step": self.iterations, "delta_mm": delta_mm}
-            self.series.append({**common, **self.series_columns(state, pos)})
-            self.joints.extend(joint_rows(snap, common))
-            self.states.append(state_entry(state.stage, self.iterations, delta_mm, pos, rot))
-        if label:
-            self.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, self.iterations)
-        if state.stage == Stage.EQUILIBRIUM:
-            friction_extremes(self.friction, snap, delta_mm)
-        return hinges
 
     def series_columns(self, state: StaticState, pos: np.ndarray | None = None) -> dict[str, Any]:
         """series.csv's columns of `state` (its blocks' positions `pos`, if known): reactions (the

@@ -50,8 +50,9 @@ def criterion_text(case: ArchCase) -> str:
     )
 
 
-def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = print) -> RunSummary:
-    """Run `case` with the static engine and write its run folder to `out`; returns the summary."""
+def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None] = print) -> RunSummary:
+    """Run `case` with the static engine and write its run folder to `out` (none if `out` is None: a
+    campaign that keeps only its results table, `static.pool.solve_batch`); returns the summary."""
     wall0 = time.time()
     started = time.strftime("%Y-%m-%dT%H:%M:%S")
     num = case.numerics
@@ -86,9 +87,13 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
 
     path = loading.follow(on_step=progress)
     for state in loading.accepted[1:]:
-        last_hinges = records.add(state)
-    hinges_last = last_hinges if len(loading.accepted) > 1 else []
-    hinges = records.add(loading.collapse_state(path.upper), label=Stage.COLLAPSE) if path.collapsed else hinges_last
+        records.add(state)
+    hinges_last = records.hinges(loading.accepted[-1]) if len(loading.accepted) > 1 else []
+    hinges = hinges_last
+    if path.collapsed:
+        collapse = loading.collapse_state(path.upper)
+        records.add(collapse, label=Stage.COLLAPSE)
+        hinges = records.hinges(collapse)
     mode = loading.fold_mode(path.upper) if path.collapsed else None
     summary = RunSummary(
         name=case.name,
@@ -130,23 +135,24 @@ def simulate_static(case: ArchCase, out: Path, log: Callable[[str], None] = prin
         wall_s=time.time() - wall0,
         **provenance(None),
     )
-    write_run(
-        out,
-        case.to_toml(),
-        records.series,
-        records.joints,
-        records.snapshots,
-        summary,
-        arch.imperfections.table() if arch.imperfections is not None else None,
-        records.states,
-        tables=num.keeps_tables,
-    )
+    if out is not None:
+        write_run(
+            out,
+            case.to_toml(),
+            records.series,
+            records.joints,
+            records.snapshots,
+            summary,
+            arch.imperfections.table() if arch.imperfections is not None else None,
+            records.states,
+            tables=num.keeps_tables,
+        )
     du, first = summary.du_mm, summary.du_first_mm
     log(
         f"[{case.name}] done ({summary.outcome}): du={'none' if du is None else f'{du:.2f} mm'} "
         f"du_first={'none' if first is None else f'{first:.2f} mm'} "
         f"hinges={summary.hinge_labels or '-'} iterations={loading.iterations} "
-        f"wall={summary.wall_s:.2f} s -> {final_folder(out)}"
+        f"wall={summary.wall_s:.2f} s" + (f" -> {final_folder(out)}" if out is not None else "")
     )
     return summary
 

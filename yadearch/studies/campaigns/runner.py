@@ -26,24 +26,27 @@ from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, Yade
 from yadearch.launch.process import STATIC_ENGINE, check_yade_installed, run_case_process
 from yadearch.results.lock import folder_lock
 from yadearch.results.rundir import case_differences, is_complete, is_current
+from yadearch.studies.campaigns.batches import BATCHES_DIR
 from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.failures import FAILED_FILE, failure_stands, record_failure
 from yadearch.studies.campaigns.grid import RUN_COLUMN, check_campaign_size, check_parameter, run_tag
+from yadearch.studies.campaigns.lean import known_rows, run_batches
 from yadearch.studies.campaigns.sessions import record_session
 from yadearch.studies.campaigns.table import (
+    RESULTS_EVERY_S,
+    RESULTS_FILE,
     RunSpec,
     override_columns,
+    pending_row,
+    results_interval,
     results_table,
     run_row,
     tidy,
 )
 
 RUNS_FILE = "runs.csv"
-RESULTS_FILE = "results.csv"
 SHOWN_DUPLICATES = 5  # a refusal names this many duplicate runs (a grid of rounded values can repeat thousands)
 SUBMITTED_PER_SLOT = 2  # runs handed to the executor ahead of time, per slot (a bounded window)
-RESULTS_EVERY_S = 5.0  # results.csv is rewritten at most this often while runs finish (and at the end)
-RESULTS_COST_SHARE = 0.05  # ... and no more often than keeps its rewriting to this share of the parent's time
 
 
 def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]:
@@ -141,17 +144,49 @@ def run_campaign(
     progress: bool = True,
     task: Task = execute,
     retry_failed: bool = True,
+    folders: bool = True,
 ) -> pd.DataFrame:
     """Run every unfinished run of the campaign on `pool`, then write and return the results table.
 
     Finished folders are skipped; interrupted and new runs are (re)done, failed ones too unless
     `retry_failed` is false (they keep their recorded reason). Runs start in decreasing
     `expected_cost`. `task` runs one case (default: a child process through `execute`; tests
-    inject stand-ins)."""
+    inject stand-ins). Without `folders`, a campaign of static runs keeps no run folders: its runs
+    are solved in batches and kept as rows (`campaigns.lean`)."""
     out = Path(out)
     specs = plan(base, rows, out)
+    lean = not folders and task is execute and all(s.case.numerics.engine == STATIC_ENGINE for s in specs)
     with folder_lock(out, "campaign"):
+        if lean:
+            return _run_lean(specs, out, pool, timeout_s, progress, retry_failed)
         return _run_planned(specs, out, pool, timeout_s, progress, task, retry_failed)
+
+
+def _run_lean(
+    specs: list[RunSpec], out: Path, pool: Pool, timeout_s: float | None, progress: bool, retry_failed: bool
+) -> pd.DataFrame:
+    """`run_campaign` without run folders, once planned and locked: its rows from the batch files
+    (and any folders an earlier campaign kept), the rest solved in batches."""
+    out.mkdir(parents=True, exist_ok=True)
+    remove_stale_temporaries(out)
+    remove_stale_temporaries(out / BATCHES_DIR)
+    write_run_table(specs, out)
+    rows = known_rows(specs, out)
+    todo = [
+        s for s in specs if rows[s.name]["status"] == "pending" or (retry_failed and rows[s.name]["status"] == "failed")
+    ]
+    todo.sort(key=lambda spec: expected_cost(spec.case), reverse=True)
+    for spec in todo:
+        rows[spec.name] = pending_row(spec, "not run yet")
+    started = time.time()
+    try:
+        run_batches(specs, todo, rows, out, pool, timeout_s, progress)
+    finally:
+        table = tidy(pd.DataFrame(rows.values()))
+        write_csv_atomically(out / RESULTS_FILE, table)
+        if todo:
+            record_session(out, started, pool, len(todo), table)
+    return table
 
 
 def _run_planned(
@@ -221,13 +256,6 @@ def _run_planned(
         if todo:
             record_session(out, started, pool, len(todo), table)
     return table
-
-
-def results_interval(write_s: float) -> float:
-    """Seconds until results.csv is rewritten while runs finish, after a rewrite that took `write_s`:
-    RESULTS_EVERY_S, or longer for a table so large that its rewriting would take more than
-    RESULTS_COST_SHARE of the parent's time (57 000 runs take 1.7 s: every 5 s was a third of a core)."""
-    return max(RESULTS_EVERY_S, write_s / RESULTS_COST_SHARE)
 
 
 def write_run_table(specs: list[RunSpec], out: Path) -> None:

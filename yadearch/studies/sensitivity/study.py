@@ -90,7 +90,8 @@ def run_sensitivity(
     check_runs: int = 0,
 ) -> SensitivityResult:
     """Run (or resume) the one-at-a-time runs in OUT/tornado_runs, Saltelli's sample of `base_points`
-    in OUT/runs (its folders keep only their summaries, numerics.run_files) and the `check_runs`
+    in OUT/runs (its folders keep only their summaries, numerics.run_files; static runs keep no
+    folders, `campaigns.lean`) and the `check_runs`
     one-at-a-time runs that move du most again on the other engine in OUT/check_runs; write the
     tables, figures and sensitivity.md; return the result."""
     check_base_points(base_points)
@@ -101,13 +102,16 @@ def run_sensitivity(
     # a static run's failure (an arch that cannot stand) is deterministic: it is not made again
     retry = base.numerics.engine != STATIC_ENGINE
 
-    def campaign(case: ArchCase, rows: list[dict], folder: str) -> pd.DataFrame:
-        return run_campaign(case, rows, out / folder, pool, timeout_s=timeout_s, progress=progress, retry_failed=retry)
+    def campaign(case: ArchCase, rows: list[dict], folder: str, folders: bool = True) -> pd.DataFrame:
+        return run_campaign(
+            case, rows, out / folder, pool, timeout_s=timeout_s, progress=progress, retry_failed=retry, folders=folders
+        )
 
     tornado_results = campaign(base, tornado_rows(base, factors), TORNADO_RUNS)
-    # thousands of runs of which only du is read: their folders keep only the summary
+    # thousands of runs of which only du is read: their folders keep only the summary, and static
+    # runs keep none (their rows in OUT/runs/batches, `campaigns.lean`)
     lean = base.with_overrides({"numerics.run_files": SUMMARY_RUN_FILES})
-    samples = campaign(lean, sobol_rows(factors, base_points), SOBOL_RUNS)
+    samples = campaign(lean, sobol_rows(factors, base_points), SOBOL_RUNS, folders=False)
     tornado = tornado_table(base, factors, tornado_results)
     checks = run_checks(base, tornado_results, factors, check_runs, out, pool, timeout_s, progress)
     du = collapse_displacement(samples)
