@@ -60,3 +60,22 @@ def test_a_lazy_command_is_the_module_s_own():
     context = click.Context(cli)
     for name, module in LAZY_COMMANDS.items():
         assert cli.get_command(context, name) is getattr(sys.modules[module], name)
+
+
+def test_help_lists_the_lazy_commands_without_importing_them():
+    """`yadearch --help` reads each lazy command's one-line help from its module's source: the list is
+    the one the imported commands give, and none of their modules (nor pandas, matplotlib, ...) loads."""
+    listing = (
+        "from click.testing import CliRunner\n"
+        "from yadearch.cli.commands import cli\n"
+        "assert 'Commands:' in CliRunner().invoke(cli, ['--help']).output"
+    )
+    assert _imported_after(listing, *HEAVY, *set(LAZY_COMMANDS.values())) == []
+    both = (
+        "from click.testing import CliRunner\n"
+        "from yadearch.cli.commands import cli\n"
+        "lazy = CliRunner().invoke(cli, ['--help']).output\n"
+        "cli.all_commands()\n"
+        "assert CliRunner().invoke(cli, ['--help']).output == lazy, lazy"
+    )
+    subprocess.run([sys.executable, "-c", both], cwd=REPO, check=True)
