@@ -27,15 +27,8 @@ import math
 import numpy as np
 
 from yadearch.model import units
-from yadearch.solve.compliant import (
-    MIGRATION_REACH,
-    Margin,
-    edge_distances,
-    folds,
-    joint_margins,
-    opening_chain,
-    potential,
-)
+from yadearch.solve import compliant
+from yadearch.solve.compliant import MIGRATION_REACH, Margin, folds, joint_margins, opening_chain, potential
 from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
 from yadearch.solve.limit_result import HingeRecord, SnapRecord
 from yadearch.solve.reseat import closing_path, descending_chains, follow_tie, land, migrates
@@ -191,7 +184,9 @@ class March:
 
     def note_edges(self, state: Placement) -> None:
         """Keep the nearest approach of a thrust to its corner beside a hinge at `state`, just admitted."""
-        for distance, pivot in edge_distances(self.arch, self.accepted.normal, self.accepted.contacts, self.pivots):
+        for distance, pivot in compliant.edge_distances(
+            self.arch, self.accepted.normal, self.accepted.contacts, self.pivots
+        ):
             if pivot not in self.closest or distance < self.closest[pivot][0]:
                 self.closest[pivot] = (distance, state.delta)
 
