@@ -6,10 +6,10 @@ one line."""
 from __future__ import annotations
 
 import numpy as np
-import pandas as pd
 import pytest
+from surveys import surveyed_joints, thicker_at_the_haunches
 
-from yadearch.api.measured import JOINT_COLUMNS, measured_case
+from yadearch.api.measured import measured_case
 from yadearch.case.config import preset
 from yadearch.case.mechanics import arch_geometry
 from yadearch.cli.commands import main
@@ -18,12 +18,6 @@ from yadearch.solve.limit import limit_analysis
 from yadearch.solve.static_path import StaticLoading
 
 SMALL = {"geometry.n_voussoirs": 15}
-
-
-def _joints(case) -> pd.DataFrame:
-    """The joints of `case`'s arch as a survey would list them (mm)."""
-    rows = [[*(1e3 * j.intrados[:2]), *(1e3 * j.extrados[:2])] for j in arch_geometry(case).joints]
-    return pd.DataFrame(rows, columns=list(JOINT_COLUMNS))
 
 
 def _du(case) -> tuple[float, list]:
@@ -35,7 +29,7 @@ def _du(case) -> tuple[float, list]:
 
 def test_the_paper_arch_surveyed_is_the_paper_arch():
     base = preset("set2").with_overrides(SMALL)
-    surveyed = measured_case(_joints(base), base=base)
+    surveyed = measured_case(surveyed_joints(base), base=base)
     for a, b in zip(arch_geometry(base).blocks, arch_geometry(surveyed).blocks):
         assert np.abs(a - b).max() < 1e-12
     assert surveyed.geometry.n_voussoirs == 15 and surveyed.geometry.thickness_mm == pytest.approx(24.0, rel=1e-12)
@@ -47,14 +41,7 @@ def test_the_paper_arch_surveyed_is_the_paper_arch():
 
 def test_a_ring_thicker_at_the_haunches_builds_and_stands():
     base = preset("set2").with_overrides(SMALL)
-    joints = _joints(base)
-    centre = joints[["x_intrados_mm"]].to_numpy().ravel()
-    grow = 1.0 + 0.5 * (np.abs(centre) / np.abs(centre).max())  # 24 mm at the crown, 36 mm at the springings
-    for axis in ("x", "y"):
-        joints[f"{axis}_extrados_mm"] = joints[f"{axis}_intrados_mm"] + grow * (
-            joints[f"{axis}_extrados_mm"] - joints[f"{axis}_intrados_mm"]
-        )
-    thick = measured_case(joints, base=base)
+    thick = measured_case(thicker_at_the_haunches(base), base=base)
     lengths = [j.length for j in arch_geometry(thick).joints]
     assert max(lengths) == pytest.approx(1.5 * min(lengths), rel=0.05)
     du, _ = _du(thick)
@@ -63,7 +50,7 @@ def test_a_ring_thicker_at_the_haunches_builds_and_stands():
 
 def test_bad_surveys_are_refused_in_one_line(tmp_path, capsys):
     base = preset("set2").with_overrides(SMALL)
-    joints = _joints(base)
+    joints = surveyed_joints(base)
     with pytest.raises(CaseError, match="missing y_extrados_mm"):
         measured_case(joints.drop(columns="y_extrados_mm"))
     with pytest.raises(CaseError, match="needs 3 joints at least"):
