@@ -44,3 +44,25 @@ def test_what_the_child_did_not_draw_is_drawn_here(tmp_path: Path) -> None:
     ]
     draw_all(drawings, jobs=2)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a", "b", "c"]
+
+
+def test_a_process_running_other_threads_draws_alone(tmp_path: Path) -> None:
+    """A fork copies no thread (a lock another thread holds would stay locked in the child): with a
+    second thread running, every figure is drawn by this process."""
+    import threading
+
+    parent, drawn_by = os.getpid(), []
+    release = threading.Event()
+    other = threading.Thread(target=release.wait)
+    other.start()
+    try:
+        draw_all([Drawing(name, 1.0, lambda: drawn_by.append(os.getpid())) for name in "abc"], jobs=2)
+    finally:
+        release.set()
+        other.join()
+    assert drawn_by == [parent] * 3
+
+
+def test_the_number_of_drawing_processes_is_one_or_two() -> None:
+    with pytest.raises(ValueError, match="jobs must be 1 or 2"):
+        draw_all([], jobs=3)

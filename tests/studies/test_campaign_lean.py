@@ -121,3 +121,21 @@ def test_a_campaign_without_folders_killed_resumes_after_its_last_whole_batch(tm
     assert set(results["status"]) == {"done"} and len(results) == len(RESUMED_KN)
     assert set(read_batches(out)) == set(results["run"])
     assert not list(out.glob(".*")) and not list((out / BATCHES_DIR).glob(".*")), "a temporary file was left"
+
+
+def test_batch_files_are_read_in_the_order_written_and_a_cut_line_is_run_again(tmp_path):
+    """Batch files are numbered as written: a later one wins whatever the width of its number; a line
+    cut short (the machine stopped mid-write) is skipped, so its run counts as not done."""
+    import json
+
+    from yadearch.studies.campaigns.batches import BATCHES_DIR, read_batches
+    from yadearch.studies.campaigns.grid import RUN_COLUMN
+
+    folder = tmp_path / BATCHES_DIR
+    folder.mkdir()
+    (folder / "9.jsonl").write_text(json.dumps({"row": {RUN_COLUMN: "a", "du_mm": 1.0}, "case": "k"}) + "\n")
+    (folder / "10.jsonl").write_text(
+        json.dumps({"row": {RUN_COLUMN: "a", "du_mm": 2.0}, "case": "k"}) + "\n" + '{"row": {"run": "b", "du'
+    )
+    records = read_batches(tmp_path)
+    assert records["a"]["row"]["du_mm"] == 2.0 and "b" not in records

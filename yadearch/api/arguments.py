@@ -17,6 +17,7 @@ from yadearch.studies.capacity.directions import MAX_STEP_DEG, MIN_STEP_DEG
 from yadearch.studies.sensitivity.checks import MAX_CHECKS
 from yadearch.studies.sensitivity.indices import MIN_BASE_POINTS
 
+FIGURE_PROCESSES = 2  # a run's figures are drawn by one process or by two (plotting.parallel)
 MAX_JOBS = 1024  # runs at once on one machine; a cluster is reached through a scheduler instead
 MAX_TIMEOUT_S = 30 * 24 * 3600.0  # 30 days: longer is no limit (and overflows the wait's timer)
 MAX_CALIBRATION_RUNS = 100  # a root search that needs more runs has no root to find
@@ -83,6 +84,7 @@ ARGUMENTS = {
     a.name: a
     for a in (
         Argument("jobs", int, 1, MAX_JOBS, optional=True, option="--jobs"),
+        Argument("figure_jobs", int, 1, FIGURE_PROCESSES),
         Argument(
             "timeout_s",
             float,

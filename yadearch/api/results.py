@@ -132,8 +132,10 @@ class RunResult:
         """Write the run's figures (PDF and PNG) into `out` (default: the run folder's `figures/`); `jobs`
         2 draws them in two processes where the platform forks (Linux)."""
         from yadearch.analysis import analyse_run
+        from yadearch.api.arguments import check_arguments
         from yadearch.plotting.run_figures import write_figures
 
+        check_arguments(figure_jobs=jobs)
         folder = output_path(out, "out") if out is not None else self.path / FIGURES_DIR
         return write_figures(self.folder, analyse_run(self.folder), folder, jobs)
 

@@ -81,7 +81,9 @@ def run(
     `figure_jobs` 2 draws the figures in two processes (`RunResult.write_figures`)."""
     from yadearch.launch.process import run_case_process
 
-    check_arguments(timeout_s=timeout_s, figures=figures, rerun=rerun, overwrite=overwrite, quiet=quiet)
+    check_arguments(
+        timeout_s=timeout_s, figures=figures, rerun=rerun, overwrite=overwrite, quiet=quiet, figure_jobs=figure_jobs
+    )
     case = with_engine(case, engine)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else DEFAULT_RUNS_DIR / case.name

@@ -39,6 +39,9 @@ HALVING = 0.5  # a step that fails is tried again this much shorter
 ITERATIONS = 30  # Newton iterations a step may take
 MAX_STEPS = 300  # steps a branch may take (set 2's at kn 5.2 take 13 to 26 to half the capacity)
 DESCEND_TO = 0.5  # by default the branch ends when the multiplier has fallen to this x the capacity
+# a branch whose multiplier rises above the capacity by more than the load path's bracket (0.1 %,
+# `solve.load_path.TOLERANCE_FRACTION`) shows the load-controlled path stopped short of its limit point
+RISE_FRACTION = 1e-3
 
 
 class DescentEnd(StrEnum):
@@ -48,6 +51,7 @@ class DescentEnd(StrEnum):
     RUNAWAY = "runaway"  # a block moved the runaway bound from the last stable state: the mechanism runs
     LOST = "lost"  # no equilibrium near the branch even with the least step
     STEPS = "steps"  # MAX_STEPS taken
+    ROSE = "rose"  # the multiplier rose above the capacity: the load control stopped short of its peak
 
 
 @dataclass
@@ -75,7 +79,10 @@ def descend(loading: StaticLoading, capacity: float, descend_to: float = DESCEND
         done, last = history[-1]
         guess_u, guess_lam = _predict(history, done + step) if len(history) > 1 else _tangent(loading, step)
         normal = (guess_u - last.u)[free]
-        normal /= np.linalg.norm(normal)
+        length = float(np.linalg.norm(normal))
+        if not length > 0.0:  # a predictor that does not move (or is not finite) has lost the branch
+            return _ended(descent, DescentEnd.LOST, loading)
+        normal /= length
         u, lam, iterations, success, state = bordered_kernel(
             arch.kernel, last.u, last.forces.shear_force, arch.weight, thickness, banded.BAND,
             solver.converged, solver.settings.max_step, np.ascontiguousarray(arch.dead),
@@ -94,6 +101,8 @@ def descend(loading: StaticLoading, capacity: float, descend_to: float = DESCEND
         )  # fmt: skip
         descent.states.append(reached)
         history = (history + [(done + float(np.linalg.norm((u - last.u)[free])), reached)])[-PREDICTOR_POINTS:]
+        if lam > (1.0 + RISE_FRACTION) * capacity:
+            return _ended(descent, DescentEnd.ROSE, loading)
         if lam <= descend_to * capacity:
             return _ended(descent, DescentEnd.FALLEN, loading)
         if largest_move(u, stable.u) >= loading.runaway:
@@ -206,7 +215,7 @@ def bordered_kernel(
             if trial_state[8] @ trial_state[8] <= (1.0 - SUFFICIENT_DECREASE * alpha) * merit:
                 accepted = True
                 break
-            alpha *= 0.5
+            alpha *= HALVING
         if not accepted:
             break
         u, lam, state = trial, lam + alpha * more, trial_state

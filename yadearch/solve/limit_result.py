@@ -105,8 +105,8 @@ class LimitResult:
     mirror_du_rigid_mm: float | None = None
     mirror_collapse_mode: str | None = None  # the mirror image's collapse_mode, "failed: why", None: not solved
     mirror_collapse_hinges: tuple[str, ...] | None = None  # the mirror image's, in this case's numbering
-    # the closed joint beside an open hinge whose thrust came nearest the hinge side's corner on the path
-    # (e.g. "40E"), that distance and where: a joint of finite kn shares the hinge within its fold margin,
+    # the closed joint beside an open hinge whose thrust came nearest the hinge side's corner at the march's
+    # steps (e.g. "40E"), that distance and where: a joint of finite kn shares the hinge within its fold margin,
     # so a small distance says the rigid answer's linkage hangs on it (docs/theory.md)
     closest_edge_joint: str | None = None
     closest_edge_mm: float | None = None

@@ -105,6 +105,10 @@ def solve_batch(cases: list[dict[str, Any]], timeout_s: float | None) -> list[di
                 if not line:
                     break
                 results.append(json.loads(line))
+        except ValueError:  # not an answer line (something written past the capture): that run fails
+            _stop(worker)
+            results.append({"error": f"{WORKER_ENDED} (an unreadable answer)"})
+            continue
         except subprocess.TimeoutExpired:
             _stop(worker)
             results.append({"error": f"timed out after {timeout_s:.0f} s"})
@@ -170,7 +174,7 @@ def serve() -> None:
         request = json.loads(line)
         if isinstance(request, dict):
             for case in request["cases"]:
-                sys.stdout.write(json.dumps(_solve(case), default=_plain) + "\n")
+                sys.stdout.write(_answer_line(_solve(case)) + "\n")
                 sys.stdout.flush()
             continue
         case_file, staging = request
@@ -183,6 +187,14 @@ def serve() -> None:
                 print(f"error: cannot write the run folder {exc.filename or staging}: {exc.strerror}", file=sys.stderr)
         sys.stdout.write(json.dumps([code, errors.getvalue()]) + "\n")
         sys.stdout.flush()
+
+
+def _answer_line(answer: dict[str, Any]) -> str:
+    """A batch run's answer as one JSON line; a summary that cannot be written so fails that run only."""
+    try:
+        return json.dumps(answer, default=_plain)
+    except (TypeError, ValueError) as exc:
+        return json.dumps({"error": f"internal error: the run's summary is not JSON: {exc}".splitlines()[0]})
 
 
 def _solve(data: dict[str, Any]) -> dict[str, Any]:

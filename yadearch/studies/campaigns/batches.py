@@ -30,9 +30,13 @@ def case_key(spec: RunSpec) -> str:
 def read_batches(out: Path) -> dict[str, dict[str, Any]]:
     """The latest record of every run in the campaign's batch files, by run name."""
     records: dict[str, dict[str, Any]] = {}
-    for path in sorted((out / BATCHES_DIR).glob("*.jsonl")):
+    numbered = [p for p in (out / BATCHES_DIR).glob("*.jsonl") if p.stem.isdigit()]
+    for path in sorted(numbered, key=lambda p: int(p.stem)):  # in the order written, past any width
         for line in path.read_text().splitlines():
-            record = json.loads(line)
+            try:
+                record = json.loads(line)
+            except ValueError:  # a line cut short (the machine stopped mid-write): its run is run again
+                continue
             records[record["row"][RUN_COLUMN]] = record
     return records
 

@@ -19,6 +19,7 @@ from yadearch.results.summary import RunSummary
 from yadearch.static.pool import solve_batch
 from yadearch.studies.campaigns.batches import OUTDATED, read_batches, stored_row, write_batch
 from yadearch.studies.campaigns.executors import Pool
+from yadearch.studies.campaigns.failures import failure_stands
 from yadearch.studies.campaigns.table import (
     RESULTS_EVERY_S,
     RESULTS_FILE,
@@ -38,7 +39,8 @@ SUBMITTED_PER_SLOT = 2  # batches handed to the executor ahead of time, per slot
 
 def known_rows(specs: list[RunSpec], out: Path) -> dict[str, dict[str, Any]]:
     """Each run's row as the campaign stands: from its batch record, else from a run folder an
-    earlier campaign kept in `out` (`table.run_row`: done, failed or pending)."""
+    earlier campaign kept in `out` (`table.run_row`: done, failed or pending; a failure another
+    revision of the static engine recorded is pending, as `failures.failure_stands` has it)."""
     records = read_batches(out)
     rows: dict[str, dict[str, Any]] = {}
     for spec in specs:
@@ -48,8 +50,12 @@ def known_rows(specs: list[RunSpec], out: Path) -> dict[str, dict[str, Any]]:
             rows[spec.name] = stored
         elif record is not None:
             rows[spec.name] = pending_row(spec, OUTDATED)
+        elif spec.folder.is_dir():
+            row = run_row(spec, out)
+            stale = row["status"] == "failed" and not failure_stands(spec.folder, spec.case)
+            rows[spec.name] = pending_row(spec, OUTDATED) if stale else row  # another revision's failure: again
         else:
-            rows[spec.name] = run_row(spec, out) if spec.folder.is_dir() else pending_row(spec, "not run yet")
+            rows[spec.name] = pending_row(spec, "not run yet")
     return rows
 
 
