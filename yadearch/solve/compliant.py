@@ -91,10 +91,9 @@ def joint_margins(
         total = float(normal[joint].sum())
         if joint in hinged or not c.touching[joint].all() or total <= 0.0:
             continue
-        length = float(np.linalg.norm(c.point[joint, 1] - c.point[joint, 0]))
         side = int(np.argmin(normal[joint, ::-1]))  # the corner the thrust is nearer: the other carries less
-        margin = length * float(normal[joint, 1 - side]) / total
-        if margin > SCREEN_FRACTION * length:
+        margin = thrust_distance(normal, c, joint, side)
+        if margin > SCREEN_FRACTION * _length(c, joint):
             continue
         pivot = Pivot(joint, side)
         curvature = chain_curvature(arch, placement, tuple(sorted((*pivots, pivot))), joint)
@@ -117,9 +116,19 @@ def edge_distances(
             total = float(normal[joint].sum()) if 0 <= joint < arch.n_joints else 0.0
             if joint in hinged or total <= 0.0 or not c.touching[joint].all():
                 continue
-            length = float(np.linalg.norm(c.point[joint, 1] - c.point[joint, 0]))
-            found.append((length * float(normal[joint, 1 - p.side]) / total, Pivot(joint, p.side)))
+            found.append((thrust_distance(normal, c, joint, p.side), Pivot(joint, p.side)))
     return found
+
+
+def thrust_distance(normal: np.ndarray, c: Contacts, joint: int, side: int) -> float:
+    """The rigid thrust's distance (m) from `joint`'s corner on `side`, from the corner normal forces
+    `normal` (joint, side) of an equilibrium: the joint's length x the other corner's share."""
+    return _length(c, joint) * float(normal[joint, 1 - side]) / float(normal[joint].sum())
+
+
+def _length(c: Contacts, joint: int) -> float:
+    """The joint's length between its two corners (m)."""
+    return float(np.linalg.norm(c.point[joint, 1] - c.point[joint, 0]))
 
 
 def opening_chain(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ...], fold: Margin) -> Mechanism:
