@@ -203,11 +203,14 @@ def test_an_accepted_relaxation_that_moved_a_block_far_is_flagged_as_a_jump():
     assert relaxation_jump(_summary()) is None  # a run from before the record
 
 
-def test_a_collapse_read_from_a_timeout_is_flagged_and_a_runaway_is_not():
+def test_an_unresolved_end_is_flagged_with_its_engines_own_numerics_and_a_runaway_is_not():
     from yadearch.analysis.mechanism import run_warnings
+    from yadearch.results.summary import STATIC
     from yadearch.solve.stages import Verdict
 
-    timed_out = run_warnings(_summary(du_mm=27.3, collapse_verdict=Verdict.TIMEOUT))
+    timed_out = run_warnings(_summary(collapse_verdict=Verdict.TIMEOUT))
     assert len(timed_out) == 1 and "numerics.hold_max_s" in timed_out[0] and "\n" not in timed_out[0]
+    static = run_warnings(_summary(collapse_verdict=Verdict.TIMEOUT, engine=STATIC))
+    assert len(static) == 1 and "unresolved" in static[0] and "hold_max_s" not in static[0]  # ignored there
     assert run_warnings(_summary(du_mm=27.3, collapse_verdict=Verdict.RUNAWAY)) == []
     assert run_warnings(_summary(du_mm=27.3)) == []  # a run from before the record

@@ -67,6 +67,48 @@ def test_the_thick_semicircle_that_timed_out_collapses_near_the_rigid_value(tmp_
     assert summary.du_first_mm is not None and summary.du_first_mm <= summary.du_mm
 
 
+# the atlas's semicircle t/R 0.15 (reports/atlas), spreading: symmetric, so its path meets a symmetric
+# bifurcation at the keystone's two joints whose antisymmetric mode is nearly neutral (-0.04 N/m)
+ATLAS_SEMICIRCLE = {
+    "embrace_deg": 180.0,
+    "internal_radius_mm": 300.0,
+    "span_mm": 600.0,
+    "thickness_mm": 45.0,
+    "support_direction_deg": 0.0,
+}
+ATLAS_SEMICIRCLE_DEM_MM = 20.02  # the DEM's du, 1E 12I 29E 45I 56E (reports/atlas/atlas.csv)
+
+
+def test_a_symmetric_arch_leaves_its_bifurcation_and_collapses_where_the_dem_does(tmp_path: Path) -> None:
+    """Kicked off the symmetric saddle by a hair, the descent came back to a state that still passed
+    for an equilibrium and the run ended unresolved at 9.8 mm; kicked far enough for the mode's negative
+    stiffness to push 10x the converged residual, it takes one side and collapses on the DEM's hinges."""
+    summary = static_run(tmp_path, "semicircle", ATLAS_SEMICIRCLE)
+    assert summary.outcome == Outcome.COLLAPSE
+    assert summary.du_mm == pytest.approx(ATLAS_SEMICIRCLE_DEM_MM, abs=BRACKET_MM)
+    assert summary.hinge_labels == "1E 12I 29E 45I 56E"
+
+
+def test_a_stiff_thick_ring_collapses_at_the_rigid_value_not_unresolved(tmp_path: Path) -> None:
+    """An elliptical ring at t/R 0.25 and kn 10 000 spreading: past the rigid collapse (74.86 mm) its
+    descent crawls down a valley of stiff joints; carrying the shear from go to go it runs away, where
+    one elastic step from the last state left it unresolved at 74.83 mm."""
+    summary = static_run(
+        tmp_path,
+        "ellipse",
+        {
+            "shape": "elliptical",
+            "span_mm": 600.0,
+            "rise_mm": 200.0,
+            "thickness_mm": 75.0,
+            "support_direction_deg": 0.0,
+            "kn_N_per_mm3": 10000.0,
+        },
+    )
+    assert summary.outcome == Outcome.COLLAPSE and summary.collapse_verdict == Verdict.RUNAWAY
+    assert summary.du_mm == pytest.approx(74.86, rel=0.01)
+
+
 def test_stiffer_joints_carry_an_inclined_movement_further(tmp_path: Path) -> None:
     """Set 2 moving at -45 deg: du rises with kn toward the rigid march's 40.82 mm (the old answers,
     22.99 / 31.82 / 21.12 / 25.18 mm, stopped at the first snap: they are du_first now)."""

@@ -10,7 +10,7 @@ import numpy as np
 
 from yadearch.analysis.tracking import HingeTrack, sequence
 from yadearch.case.paper import model_values_text
-from yadearch.results.summary import RunSummary
+from yadearch.results.summary import STATIC, RunSummary
 from yadearch.solve.stages import Verdict
 
 CAP_TOLERANCE = 0.05  # |shear| >= (1 - this) tan(phi) |normal| counts as at the Coulomb cap
@@ -75,14 +75,18 @@ def relaxation_jump(summary: RunSummary, fraction: float = JUMP_FRACTION, near_l
 
 
 def collapse_by_timeout(summary: RunSummary) -> str | None:
-    """A warning when du's upper end had no equilibrium only because the time allowed ran out (no
-    block moved the runaway distance): a slow snap, as under heavy damping, reads as collapse."""
+    """A warning when the path ended where the engine found neither an equilibrium nor a runaway: an
+    unresolved run (no du, never a collapse), with the numerics that decide it in the engine that ran."""
     if summary.collapse_verdict != Verdict.TIMEOUT:
         return None
-    return (
-        "du's upper end reached no equilibrium within numerics.hold_max_s but no block ran away: a "
-        "slow hinge snap may have been read as collapse; confirm with a larger numerics.hold_max_s"
-    )
+    if summary.engine == STATIC:
+        remedy = (
+            "the static descent found neither after its retries (docs/theory.md, 'The static engine'); "
+            "the DEM (--engine dem) follows the same arch by its dynamics"
+        )
+    else:
+        remedy = "a larger numerics.hold_max_s lets the holds go on longer"
+    return f"unresolved: past the last stable state the arch reached neither an equilibrium nor a runaway; {remedy}"
 
 
 def run_warnings(summary: RunSummary) -> list[str]:

@@ -26,7 +26,10 @@ DEM, STATIC = "dem", "static"  # the engines that write run folders
 # bracket: a snap hidden in a long step or a wide bracket no longer moves du_first.
 # 5: a descent kicked off a saddle that comes back to it twice has found a well (sliding joints make
 # the tangent's symmetric part indefinite at stable states), and one still falling goes on.
-STATIC_REVISION = 5
+# 6: a saddle is left along its softest mode far enough for its negative stiffness to push 10x the
+# converged residual (a nearly neutral mode at a symmetric bifurcation), its side chosen by the blocks'
+# order where the loads do not choose; a descent's goes carry the joints' shear from go to go.
+STATIC_REVISION = 6
 TRANSLATION = "translation"
 # written only when set: engine-specific figures and what older runs lack
 OPTIONAL_KEYS = frozenset(

@@ -120,7 +120,7 @@ def smallest_eigenvalue(ab: np.ndarray) -> float:
     return float(values[0])
 
 
-def softest_mode(ab: np.ndarray) -> np.ndarray:
-    """The eigenvector of the smallest eigenvalue of the symmetric part of K."""
-    _, vectors = scipy.linalg.eig_banded(symmetric_upper(ab), select="i", select_range=(0, 0), check_finite=False)
-    return vectors[:, 0]
+def softest_mode(ab: np.ndarray) -> tuple[float, np.ndarray]:
+    """The smallest eigenvalue of the symmetric part of K and its eigenvector."""
+    values, vectors = scipy.linalg.eig_banded(symmetric_upper(ab), select="i", select_range=(0, 0), check_finite=False)
+    return float(values[0]), vectors[:, 0]

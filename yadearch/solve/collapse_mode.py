@@ -51,7 +51,7 @@ def fold_mode(arch: StaticArch, u: np.ndarray, stiffness: np.ndarray, failed: np
     if failed is not None:
         mode = (failed - u)[arch.free_dofs]  # the way the arch ran away: the loads' work released
     else:
-        mode = banded.softest_mode(stiffness)
+        _, mode = banded.softest_mode(stiffness)
         if float(arch.loads()[arch.free_dofs] @ mode) < 0.0:
             mode = -mode  # an eigenvector's sign: the way the weights go down
     moved = u.copy()

@@ -31,7 +31,10 @@ SUFFICIENT_DECREASE = 1e-4  # Armijo constant of the line search on |R|^2
 ROUNDOFF = 1e-14  # relative round-off of a position, about 50 machine epsilons
 RETURN_FRACTION = 0.01  # a descent ending this x max_step from the saddle it was kicked off came back
 RETURNS_TO_STAND = 2  # ... and one that comes back this many times sits in a well
-KICK_FRACTION = 0.02  # an unstable equilibrium is left along its softest mode by this x max_step
+KICK_FRACTION = 0.02  # an unstable equilibrium is left along its softest mode by this x max_step,
+KICK_RESOLUTION = 10.0  # ... or further, until its negative stiffness pushes this x the converged residual
+TIED_LOADS = 1e-9  # a mode the loads barely work on (|loads . mode| below this x |loads|): a symmetric
+# arch's antisymmetric mode, whose side is then chosen by the blocks' order, not by round-off
 
 
 @dataclass(frozen=True)
@@ -60,6 +63,11 @@ class Equilibrium:
     def stable(self) -> bool:
         """The free blocks' tangent stiffness is positive definite (its symmetric part)."""
         return banded.positive_definite(self.stiffness)
+
+    def with_slip(self, slip: np.ndarray) -> Equilibrium:
+        """This state with `slip` (m, per joint) added to its joints' sliding (that of earlier goes)."""
+        forces = replace(self.joints.forces, plastic_slip=self.joints.forces.plastic_slip + slip)
+        return replace(self, joints=replace(self.joints, forces=forces))
 
 
 # near a fold the tangent is nearly singular by nature: the line search and the descent judge the step
@@ -234,13 +242,25 @@ class Solver:
         return DESCENT_KERNEL(problem, u, floor, shift, origin, runaway, start, budget)
 
     def _kick(self, u: np.ndarray, stiffness: np.ndarray) -> np.ndarray:
-        """`u` moved along the softest mode of `stiffness`, the way the weights go down."""
-        mode = banded.softest_mode(stiffness)
+        """`u` moved along the softest mode of `stiffness`, the way the weights go down (for a mode they
+        do not work on, the way that moves the blocks' weighted order up): by KICK_FRACTION x max_step,
+        or as far as needed for the mode's negative stiffness to push KICK_RESOLUTION x the converged
+        residual (a nearly neutral mode, near a bifurcation, would otherwise leave a state that still
+        passes for an equilibrium), at most max_step."""
+        value, mode = banded.softest_mode(stiffness)
         mode = mode / float(np.abs(mode).max())
-        if float(self.arch.loads()[self.free] @ mode) < 0.0:
+        loads = self.arch.loads()[self.free]
+        side = float(loads @ mode)
+        if abs(side) <= TIED_LOADS * float(np.abs(loads).sum()):
+            side = float(np.arange(1, mode.size + 1) @ mode)
+        if side < 0.0:
             mode = -mode
+        step = self.settings.max_step
+        length = KICK_FRACTION * step
+        if value < 0.0:
+            length = max(length, KICK_RESOLUTION * self.converged / -value)
         kicked = u.copy()
-        kicked[self.free] += KICK_FRACTION * self.settings.max_step * mode
+        kicked[self.free] += min(length, step) * mode
         return kicked
 
 

@@ -39,7 +39,9 @@ PREDICTOR_POINTS = 3  # accepted states the predictor extrapolates through (a pa
 SNAP_THICKNESS_FRACTION = 0.01  # a descent landing further than this x the ring's thickness from the
 # prediction at the fold is a snap, a new branch: a length of the arch, not of the bracket or the step
 DESCENT_RETRIES = 2  # a descent that finds neither equilibrium nor runaway goes on this many times more,
-FALLING_FRACTION = 0.02  # ... and on while each go moves a block this x the runaway bound (still falling),
+FALLING_FRACTION = 0.02  # ... and on while each go moves a block this x the runaway bound (still falling)
+UNBALANCED = 1e-3  # ... or ends pushed by this x the heaviest block's weight on an indefinite tangent
+# (not at rest: a stiff ring's fall crawls down a narrow valley of its joints' energy), ...
 MAX_DESCENT_GOES = 40  # ... up to this many goes of the solver's descent_iterations
 
 
@@ -170,23 +172,28 @@ class StaticLoading:
     def _descend(self, history: list[StaticState], lam: float) -> Equilibrium:
         """The descent at support position `lam` from the state predicted there; where it finds neither
         equilibrium nor runaway it goes on from where it stopped (DESCENT_RETRIES times, and on while
-        each go moves a block FALLING_FRACTION of the runaway bound, up to MAX_DESCENT_GOES), then starts
-        again from the last state with only the support moved: a solver's failure is retried before
-        it is reported (Verdict.TIMEOUT), never read as collapse."""
+        each go moves a block FALLING_FRACTION of the runaway bound or ends far from rest, UNBALANCED, up
+        to MAX_DESCENT_GOES), the joints'
+        shear carried from go to go as the DEM carries it step by step (a long fall is not one elastic
+        step from the last state), then starts again from the last state with only the support moved:
+        a solver's failure is retried before it is reported (Verdict.TIMEOUT), never read as collapse."""
         last = history[-1]
         shear = last.forces.shear_force
         start = self.predict(lam, history)
         multiplier = self.parameter.multiplier(lam)
         found = self.solver.descend(start, last.u, shear, self.runaway, multiplier=multiplier)
         self.descents += 1
-        before, goes = start, 1
+        before, goes, slip = start, 1, np.zeros_like(shear)
         while found.verdict == Verdict.TIMEOUT and goes < MAX_DESCENT_GOES:
             falling = largest_move(found.u, before) >= FALLING_FRACTION * self.runaway
-            if goes > DESCENT_RETRIES and not falling:
+            pushed = found.residual > UNBALANCED and not found.stable()
+            if goes > DESCENT_RETRIES and not (falling or pushed):
                 break
             self.retries += 1
-            before, goes = found.u, goes + 1
-            found = self.solver.descend(found.u, last.u, shear, self.runaway, origin=start, multiplier=multiplier)
+            before, goes, slip = found.u, goes + 1, slip + found.joints.forces.plastic_slip
+            carried = found.joints.forces.shear_force
+            found = self.solver.descend(found.u, found.u, carried, self.runaway, origin=start, multiplier=multiplier)
+            found = found.with_slip(slip)
         if found.verdict == Verdict.TIMEOUT:
             self.retries += 1
             found = self.solver.descend(self.place(last.u, lam), last.u, shear, self.runaway, multiplier=multiplier)
