@@ -123,6 +123,19 @@ def test_timeouts_count_as_no_equilibrium_and_say_so():
     assert follow_path(FakeArch(500.0), SETTINGS).upper_verdict is None
 
 
+def test_a_state_that_ran_away_while_settling_bounds_du_as_a_runaway_whatever_an_earlier_try_said():
+    """The DEM's pattern (pointed arch spreading, reports/atlas): a move to 62.094 mm timed out from a
+    creeping state, succeeded once that state was settled, then the state at 62.094 ran away while
+    settling. du's upper end is that runaway: a collapse, not the earlier try's timeout (unresolved)."""
+    arch = FakeArch(40.0, verdict=Verdict.TIMEOUT, creep_reach=0.05, false_margin=0.05)
+    result = follow_path(arch, SETTINGS)
+    timed_out = [s for s in result.steps if s.target == result.upper and s.verdict == Verdict.TIMEOUT]
+    accepted = [s for s in result.steps if s.target == result.upper and s.verdict == Verdict.STABLE]
+    assert timed_out and accepted  # tried, timed out, then reached and accepted: it never settled
+    assert result.upper_verdict == Verdict.RUNAWAY and result.collapsed
+    assert result.lower <= 40.0 < result.upper <= 40.0 + SETTINGS.tolerance
+
+
 def test_no_collapse_up_to_the_maximum_displacement():
     result = follow_path(FakeArch(500.0), SETTINGS)
     assert not result.collapsed and math.isinf(result.du)

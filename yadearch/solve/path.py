@@ -81,6 +81,7 @@ class PathResult:
     upper_from: float = math.inf  # where the increment that failed at `upper` started
     steps: list[PathStep] = field(default_factory=list)
     equilibria: list[float] = field(default_factory=list)  # accepted displacements, in order
+    failure: str | None = None  # how the arch failed at `upper` (None: read from `steps`)
 
     @property
     def failed(self) -> bool:
@@ -113,10 +114,12 @@ class PathResult:
     @property
     def upper_verdict(self) -> str | None:
         """How the arch failed at `upper`: Verdict.RUNAWAY (a block moved the runaway distance, or the state
-        ran away while settling) or Verdict.TIMEOUT (no equilibrium nor runaway after the solver's
-        retries); None if no increment failed."""
+        there ran away while settling, whatever an earlier increment to it said) or Verdict.TIMEOUT (no
+        equilibrium nor runaway after the solver's retries); None if no increment failed."""
         if not self.failed:
             return None
+        if self.failure is not None:
+            return self.failure
         failed = (s.verdict for s in reversed(self.steps) if s.target == self.upper and s.verdict != Verdict.STABLE)
         return next(failed, Verdict.RUNAWAY)
 
@@ -188,6 +191,7 @@ def follow_path(
             firm_upper = result.equilibria.pop()
             result.lower = result.equilibria[-1] if result.equilibria else start
             result.upper, result.upper_from = firm_upper, result.lower
+            result.failure = Verdict.RUNAWAY  # it ran away while settling, whatever an increment to it said
             settled = False
             continue
         if result.lower >= settings.max_displacement:
@@ -211,9 +215,10 @@ def follow_path(
             result.equilibria.append(target)
             if target >= result.upper:  # the retried failure holds: the path goes on from here
                 result.upper, result.upper_from = firm_upper, math.inf
+                result.failure = Verdict.RUNAWAY if math.isfinite(firm_upper) else None
                 increment = 2.0 * settings.tolerance
             result.lower = target
             increment = min(increment * settings.growth, settings.max_increment)
         else:
-            result.upper, result.upper_from = target, result.lower
+            result.upper, result.upper_from, result.failure = target, result.lower, verdict
     return result
