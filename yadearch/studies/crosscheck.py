@@ -135,7 +135,7 @@ def crosscheck_markdown(table: pd.DataFrame, limits: pd.DataFrame, wall_s: float
         "'static'`): du and the hinges at collapse. Regenerate with "
         "`.venv/bin/python scripts/static_crosscheck.py` (table: `crosscheck.csv`).",
         "",
-        f"{len(table)} pairs; the static runs took {wall_s:.0f} s on {jobs} processes "
+        f"{len(table)} pairs; the static runs took {wall_s:.0f} s on {jobs} process{'es' if jobs > 1 else ''} "
         f"(the DEM runs {table['dem_wall_s'].sum() / 3600:.1f} h of one core).",
         "",
         "| group | runs | within 1 % | same hinges (±1 interface) | largest |difference| (%) | "
