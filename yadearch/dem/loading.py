@@ -3,81 +3,18 @@ increments, relaxations, acceptance and settling, played on the runner's live sc
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any, Protocol
-
-from yadearch.case.config import ArchCase, NumericsConfig
+from yadearch.case.config import NumericsConfig
 from yadearch.case.mechanics import runaway_length
 from yadearch.case.support import path_end_mm
-from yadearch.errors import CANNOT_STAND, RunFailedError
+from yadearch.dem.live_arch import SETTLE_TOLERANCE_FACTOR, LiveArch, stable_tangent
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
-from yadearch.model.movement import Movement
 from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, follow_path, path_settings
 from yadearch.solve.stages import Stage, Verdict
 
-SETTLE_TOLERANCE_FACTOR = 0.01  # a settled state's unbalanced force, relative to equilibrium_tolerance
 HOLD_RETRIES = 1  # a hold that finds neither equilibrium nor runaway goes on this many times more
-STABILITY_HOLDS = 2  # an equilibrium whose static tangent is indefinite is held this many times more
-JOINT_CONTACTS = "joint"  # numerics.contact_model of the joint elements (quiet at rest, unlike CGAL's)
 SNAP_THICKNESS_FRACTION = 0.01  # a relaxation moving a block this x the ring's thickness ...
 # ... and further than its increment moves a block quasi-statically (`LiveArch.reach`) is a snap
-
-
-class PathRecorder(Protocol):
-    """What the path records through (dem.recorder.Recorder)."""
-
-    def record_equilibrium(self) -> tuple[tuple[int, int, int], list[Hinge]]: ...
-
-    def discard_since(self, mark: tuple[int, int, int]) -> None: ...
-
-    def record_collapse(self) -> list[Hinge]: ...
-
-
-class LiveArch(Protocol):
-    """What the path needs of a live DEM scene (dem.runner.Runner): move the support, hold it,
-    go back to a kept state, record; `stage` labels the records."""
-
-    stage: Stage
-
-    @property
-    def case(self) -> ArchCase: ...
-
-    @property
-    def movement(self) -> Movement: ...
-
-    @property
-    def recorder(self) -> PathRecorder: ...
-
-    @property
-    def hold_move(self) -> float: ...  # the largest block displacement of the last hold (m)
-
-    def smallest_stiffness(self) -> float: ...  # the static tangent's smallest eigenvalue at the poses (N/m)
-
-    def reach(self, increment: float) -> float: ...  # how far a path increment moves a block quasi-statically (m)
-
-    @property
-    def total_steps(self) -> int: ...
-
-    @property
-    def log(self) -> Callable[[str], None]: ...
-
-    def delta(self) -> float: ...
-
-    def snapshot(self) -> dict[str, Any]: ...
-
-    def restore(self, snapshot: dict[str, Any]) -> None: ...
-
-    def move_support(self, target: float, speed_fraction: float) -> None: ...
-
-    def hold(
-        self,
-        runaway: float | None = None,
-        max_s: float | None = None,
-        from_rest: bool = True,
-        still_speed: float | None = None,
-        tolerance: float | None = None,
-    ) -> Verdict: ...
 
 
 class EquilibriumPath:
@@ -104,6 +41,7 @@ class EquilibriumPath:
         }
         self.snaps: list[dict] = []  # relaxations that carried the arch to another branch
         self._start = 0.0  # where the last increment started (m)
+        self._trial_snaps: list[dict] = []  # snaps located on the way of the last increment tried
         # the path's parameter: the support's displacement, or with `settings` a live load's multiplier
         # (in `unit`), the supports held
         self.moves_support = settings is None
@@ -112,15 +50,46 @@ class EquilibriumPath:
 
     def try_increment(self, target: float) -> Verdict:
         """From the last accepted equilibrium state, move the support to `target` and relax there
-        with the support held: 'stable', 'runaway' or 'timeout' (see `hold`). A failed state is kept
-        for `collapse_state`."""
+        with the support held: 'stable', 'runaway' or 'timeout' (see `hold`). A relaxation that snaps
+        (`_snapped`) is not taken as it comes: its fold is located by bisection to the path's tolerance
+        and the snap made from just past it, as the static engine makes it, then the path goes on to
+        `target`. A failed state is kept for `collapse_state`."""
         if not self._at_accepted:
             self.arch.restore(self._accepted[-1])
+        self._at_accepted = False
+        start = self._start = self.arch.delta()
+        base = self._accepted[-1]
+        self._trial_snaps = []
+        verdict = self._relax_at(start, target)
+        while verdict == Verdict.STABLE and self._snapped(target - start) and target - start > self.settings.tolerance:
+            low, low_state, high = self._locate_fold(base, start, target)
+            self.arch.restore(low_state)
+            verdict = self._relax_at(low, high)  # the snap, from the last state before the fold
+            if verdict != Verdict.STABLE:
+                break
+            if self._snapped(high - low):
+                self._trial_snaps.append(
+                    {"fold_mm": [units.to_mm(low), units.to_mm(high)], "move_mm": units.to_mm(self.arch.hold_move)}
+                )
+                self.arch.log(
+                    f"[{self.arch.case.name}] a snap between {self._said(low)} and {self._said(high)}: a block "
+                    f"moved {units.to_mm(self.arch.hold_move):.3f} mm"
+                )
+            if high >= target:
+                break
+            start, base = high, self.arch.snapshot()
+            verdict = self._relax_at(start, target)
+        if verdict != Verdict.STABLE:
+            self._failures[target] = self.arch.snapshot()
+        return verdict
+
+    def _relax_at(self, start: float, target: float) -> Verdict:
+        """From the live state at `start`, move the support to `target` and hold it: the verdict, an
+        equilibrium counted only where the static tangent at the poses is positive definite."""
         self.arch.stage = Stage.INCREMENT
-        self._start = self.arch.delta()
         # every move lasts as long as the largest increment's: the short moves near collapse are
         # gentle, and the arch ends them close to its equilibrium configuration
-        fraction = abs(target - self._start) / self.settings.max_increment
+        fraction = abs(target - start) / self.settings.max_increment
         self.arch.move_support(target, min(1.0, fraction))
         self.arch.stage = Stage.RELAX
         verdict = self.arch.hold()
@@ -128,27 +97,37 @@ class EquilibriumPath:
             if verdict != Verdict.TIMEOUT:
                 break
             verdict = self.arch.hold(from_rest=False)  # the hold goes on before it is called unresolved
-        verdict = stable_tangent(self.arch, verdict)
-        self._at_accepted = False
-        if verdict != Verdict.STABLE:
-            self._failures[target] = self.arch.snapshot()
-        return verdict
+        return stable_tangent(self.arch, verdict)
+
+    def _snapped(self, increment: float) -> bool:
+        """Whether the last relaxation moved a block further than 0.01 ring thickness and than the
+        increment moves a block quasi-statically: a snap to another branch, not a step along one."""
+        floor = SNAP_THICKNESS_FRACTION * units.mm(self.arch.case.geometry.thickness_mm)
+        return self.arch.hold_move > max(floor, self.arch.reach(increment))
+
+    def _locate_fold(self, base: dict, start: float, target: float) -> tuple[float, dict, float]:
+        """Bisect [start, target] (the live state `base` at `start`) by increments relaxed without a
+        snap until the bracket is narrower than the path's tolerance: its lower end, the state there,
+        its upper end (the first position whose relaxation snaps, runs away or times out)."""
+        low, low_state, high = start, base, target
+        while high - low > self.settings.tolerance:
+            middle = 0.5 * (low + high)
+            self.arch.restore(low_state)
+            if self._relax_at(low, middle) == Verdict.STABLE and not self._snapped(middle - low):
+                low, low_state = middle, self.arch.snapshot()
+            else:
+                high = middle
+        return low, low_state, high
 
     def accept(self) -> None:
         """The state the last increment relaxed to is the new equilibrium state: keep and record it,
-        with how far its relaxation moved the blocks (a quasi-static step barely moves them)."""
+        with how far its relaxation moved the blocks and the snaps located on its way."""
         increment = self.arch.delta() - self._start
         self.relaxations["delta_mm"].append(units.to_mm(self.arch.delta()))
         self.relaxations["increment_mm"].append(units.to_mm(increment))
         self.relaxations["move_mm"].append(units.to_mm(self.arch.hold_move))
-        floor = SNAP_THICKNESS_FRACTION * units.mm(self.arch.case.geometry.thickness_mm)
-        if self.arch.hold_move > max(floor, self.arch.reach(increment)):
-            self.snaps.append(
-                {
-                    "fold_mm": [units.to_mm(self._start), units.to_mm(self.arch.delta())],
-                    "move_mm": units.to_mm(self.arch.hold_move),
-                }
-            )
+        self.snaps += self._trial_snaps
+        self._trial_snaps = []
         self._accepted.append(self.arch.snapshot())
         self._at_accepted = True
         self.arch.stage = Stage.EQUILIBRIUM
@@ -215,52 +194,6 @@ class EquilibriumPath:
         self.arch.stage = Stage.COLLAPSE
         self.arch.restore(self._failures[min(self._failures, key=lambda d: abs(d - upper))])
         return self.arch.recorder.record_collapse()
-
-
-def stable_tangent(arch: LiveArch, verdict: Verdict) -> Verdict:
-    """A hold's verdict kept only where the static model agrees: an equilibrium whose tangent at the
-    blocks' poses is indefinite is held on (STABILITY_HOLDS times), then unresolved (Verdict.TIMEOUT)."""
-    holds = 0
-    while verdict == Verdict.STABLE and arch.smallest_stiffness() <= 0.0:
-        if holds == STABILITY_HOLDS:
-            return Verdict.TIMEOUT
-        verdict = arch.hold(from_rest=False)
-        holds += 1
-    return verdict
-
-
-def settle_selfweight(arch: LiveArch) -> None:
-    """Settle the self-weight state by the path's own test (`settle_speed_mm_per_s`, a hundredth of
-    the equilibrium tolerance) and until the static model calls it stable: a state still creeping or
-    indefinite is not the path's start (RunFailedError: it cannot stand, or it is unresolved). A settle
-    that times out goes on (STABILITY_HOLDS times); with joint elements a state still creeping then is
-    unresolved, with CGAL contacts (which never get that quiet) it is kept."""
-    num = arch.case.numerics
-
-    def settle() -> Verdict:
-        return arch.hold(
-            from_rest=False,
-            still_speed=units.mm(num.settle_speed_mm_per_s),
-            tolerance=SETTLE_TOLERANCE_FACTOR * num.equilibrium_tolerance,
-        )
-
-    verdict, holds = settle(), 1
-    while verdict == Verdict.TIMEOUT and holds <= STABILITY_HOLDS:
-        verdict, holds = settle(), holds + 1
-    arch.log(f"[{arch.case.name}] settling the self-weight state: {verdict} after {holds} hold(s)")
-    if verdict == Verdict.RUNAWAY:
-        raise RunFailedError(f"{CANNOT_STAND}: the self-weight state ran away while settling")
-    if verdict == Verdict.TIMEOUT and num.contact_model == JOINT_CONTACTS:
-        raise RunFailedError(
-            f"unresolved: the self-weight state still creeps after {holds} holds of {num.hold_max_s} s "
-            f"(numerics.hold_max_s; a block moved {units.to_mm(arch.hold_move):.3f} mm in the last, blocks "
-            f"faster than {num.settle_speed_mm_per_s:g} mm/s): an arch at the edge of standing"
-        )
-    if verdict == Verdict.STABLE and stable_tangent(arch, verdict) != Verdict.STABLE:
-        raise RunFailedError(
-            f"unresolved: the self-weight state did not settle to a stable equilibrium within "
-            f"{STABILITY_HOLDS + 1} holds of {num.hold_max_s} s (numerics.hold_max_s)"
-        )
 
 
 def criterion_text(n: NumericsConfig) -> str:

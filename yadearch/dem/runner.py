@@ -19,7 +19,7 @@ from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import runaway_length, standing_parameters
 from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.dem.driver import SupportDriver
-from yadearch.dem.loading import settle_selfweight
+from yadearch.dem.live_arch import settle_selfweight
 from yadearch.dem.recorder import Recorder, Records
 from yadearch.dem.scene import CALLBACK_NAME, body_states, build_scene, stop_voussoirs
 from yadearch.dem.scene_state import capture, put_back

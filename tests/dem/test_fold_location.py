@@ -1,0 +1,96 @@
+"""The DEM's loading path locates a snap's fold as the static engine does (docs/numerics.md,
+"Collapse"): a relaxation that snaps is not taken as it comes; the fold is bisected to the path's
+tolerance and the snap made from just past it. A fake live arch, no YADE."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from yadearch.case.config import preset
+from yadearch.dem.loading import EquilibriumPath
+from yadearch.solve.path import PathSettings
+from yadearch.solve.stages import Stage, Verdict
+
+FOLD = 0.03137  # where the fake arch's branch ends (m)
+JUMP = 0.004  # how far its blocks move when it snaps to the next branch (m)
+CREEP = 0.05  # a block moves this x the increment in a quasi-static relaxation
+SETTINGS = PathSettings(first_increment=0.001, max_increment=0.0025, growth=1.5, tolerance=1e-4, max_displacement=0.05)
+
+
+class FakeRecorder:
+    def __init__(self) -> None:
+        self.marks = 0
+
+    def record_equilibrium(self) -> tuple[tuple[int, int, int], list]:
+        self.marks += 1
+        return (self.marks, 0, 0), []
+
+    def discard_since(self, mark: tuple[int, int, int]) -> None:
+        pass
+
+    def record_collapse(self) -> list:
+        return []
+
+
+class SnappingArch:
+    """One support coordinate and a branch: a relaxation that crosses FOLD from the first branch
+    moves a block by JUMP (wherever the move ended), any other by CREEP x its increment."""
+
+    def __init__(self) -> None:
+        self.case = preset("set2")
+        self.stage = Stage.INCREMENT
+        self.recorder = FakeRecorder()
+        self.log = lambda line: None
+        self.total_steps = 0
+        self.hold_move = 0.0
+        self.position, self.branch, self._from = 0.0, 0, 0.0
+        self.snaps_made_at: list[float] = []  # where each snap's move ended
+
+    def smallest_stiffness(self) -> float:
+        return 1.0
+
+    def reach(self, increment: float) -> float:
+        return abs(increment)
+
+    def delta(self) -> float:
+        return self.position
+
+    def snapshot(self) -> dict[str, Any]:
+        return {"position": self.position, "branch": self.branch}
+
+    def restore(self, snapshot: dict[str, Any]) -> None:
+        self.position, self.branch = snapshot["position"], snapshot["branch"]
+
+    def move_support(self, target: float, speed_fraction: float) -> None:
+        self._from, self.position = self.position, target
+
+    def hold(self, **_: Any) -> Verdict:
+        if self.branch == 0 and self.position >= FOLD:
+            self.branch, self.hold_move = 1, JUMP
+            self.snaps_made_at.append(self.position)
+        else:
+            self.hold_move = CREEP * abs(self.position - self._from)
+        return Verdict.STABLE
+
+
+def test_a_snap_is_made_from_its_fold_located_to_the_paths_tolerance():
+    arch = SnappingArch()
+    path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
+    path.follow()
+    assert len(path.snaps) == 1
+    low, high = (x / 1e3 for x in path.snaps[0]["fold_mm"])
+    assert low < FOLD <= high and high - low <= SETTINGS.tolerance  # not the increment's 2.5 mm
+    assert path.snaps[0]["move_mm"] == pytest.approx(JUMP * 1e3)
+    assert arch.snaps_made_at[-1] == pytest.approx(high)  # the branch taken from just past the fold
+    assert path.first_loss == pytest.approx((low, high))
+
+
+def test_a_path_without_snaps_is_not_bisected():
+    arch = SnappingArch()
+    arch.branch = 1  # already on the last branch: every relaxation creeps
+    path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
+    result = path.follow()
+    assert path.snaps == [] and path.first_loss is None
+    assert len(result.steps) == len(result.equilibria) < 25  # one relaxation an increment
