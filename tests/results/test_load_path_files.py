@@ -5,10 +5,23 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pandas as pd
+import pytest
 
 from yadearch.case.config import ArchCase
-from yadearch.results.load_path import load_path_file, read_load_path, stored_load_path, write_load_path
+from yadearch.errors import RunFolderError
+from yadearch.results.load_path import (
+    LOAD_PATH_FILE,
+    is_load_path_folder,
+    load_path_file,
+    read_load_path,
+    read_load_path_folder,
+    stored_load_path,
+    write_load_path,
+    write_load_path_folder,
+)
+from yadearch.results.states import read_states, state_entry, write_states
 from yadearch.solve.load_path import LoadPath
 
 CASE = ArchCase(name="point_0.3").with_overrides({"live_load": "vertical", "n_voussoirs": 15})
@@ -78,3 +91,39 @@ def test_a_study_resumes_only_from_the_same_case_and_settlement(tmp_path):
     assert stored_load_path(tmp_path, CASE.with_overrides({"interface.kn_N_per_mm3": 0.25}), 0.0) is None
     load_path_file(tmp_path, CASE.name, ".csv").unlink()
     assert stored_load_path(tmp_path, CASE, 0.0) is None  # half a result is no result
+
+
+def _states(load: tuple[float, str] | None) -> list[dict]:
+    pose = np.zeros((3, 2)), np.zeros(3)
+    return [state_entry("selfweight", 2, 1.2, *pose, load), state_entry("equilibrium", 5, 1.2, *pose, load)]
+
+
+def test_states_keep_a_load_paths_loads_and_a_frame_says_which(tmp_path):
+    """states.npz of a load path reads back with each state's load and its unit, labelled by the load;
+    a support's run's has none, labelled by its displacement."""
+    write_states(tmp_path / "states.npz", _states((0.1234567, "g")))
+    loaded = read_states(tmp_path)
+    write_states(tmp_path / "states.npz", _states(None))
+    moved = read_states(tmp_path)
+    assert loaded is not None and moved is not None
+    assert loaded.load_unit == "g" and loaded.load is not None and loaded.load.tolist() == [0.1234567, 0.1234567]
+    assert loaded.place(0) == "load 0.1235 g" and moved.load is None and moved.place(1) == "δ = 1.20 mm"
+
+
+def test_a_load_path_folder_is_one_while_its_answer_is_there(tmp_path):
+    """The folder reads as a run named by its answer (no du) while load_path.json, written last, is
+    there; without it, it is no load path's folder; a damaged answer is one line."""
+    written = _path("static")
+    rows = [{"stage": "selfweight", "step": 2}, {"stage": "equilibrium", "step": 5}]
+    folder = write_load_path_folder(tmp_path, written, CASE, rows, rows, {}, _states((1.0, "N")))
+    assert folder == load_path_file(tmp_path, CASE.name) and is_load_path_folder(folder)
+    run = read_load_path_folder(folder)
+    assert run.summary.name == CASE.name and run.summary.collapsed and run.summary.du_mm is None
+    assert [h.label for h in run.summary.hinges_at_collapse] == list(written.hinges)
+    assert run.load_path is not None and run.load_path["collapse_multiplier"] == written.capacity
+    (folder / LOAD_PATH_FILE).write_text("{")
+    with pytest.raises(RunFolderError, match="cannot be read as a load path's answer") as error:
+        read_load_path_folder(folder)
+    assert "\n" not in str(error.value)
+    (folder / LOAD_PATH_FILE).unlink()
+    assert not is_load_path_folder(folder)

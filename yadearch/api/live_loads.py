@@ -21,13 +21,14 @@ from yadearch.errors import CaseError
 from yadearch.launch.load_process import run_load_process
 from yadearch.plotting.load_figure import plot_load_collapse
 from yadearch.plotting.loads import plot_influence, plot_load_path
-from yadearch.results.load_path import load_path_file, write_load_path
+from yadearch.results.load_path import load_path_file, write_load_path, write_load_path_folder
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.limit import why_not_standing
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
 from yadearch.solve.load_path import LoadPath, static_load_path
 from yadearch.solve.rigid import rigid_arch
 from yadearch.solve.static_state import StaticEngineError
+from yadearch.static.records import load_path_records
 from yadearch.studies.loads.engines import dem_influence_line
 from yadearch.studies.loads.rigid import influence_line
 from yadearch.studies.loads.static import static_influence_line
@@ -68,7 +69,8 @@ def load_path(
     going on past the peak until the multiplier falls to `descend_to` x the capacity (None: it stops at
     the peak); 'dem': YADE's DEM by load ramps relaxed to equilibrium (a child process, minutes; needs
     `out`; its curve stops at the peak). With `out`, writes OUT/NAME_load_path.json, .csv (the curve)
-    and its figure .pdf/.png."""
+    and its figure .pdf/.png; the static engine also its states as the folder OUT/NAME_load_path/
+    (`open_run(...).animate()`, `.export_vtk()`)."""
     check_arguments(after_mm=after_mm, descend_to=descend_to)
     if engine not in LOAD_PATH_ENGINES:
         raise CaseError(f"engine must be one of {', '.join(LOAD_PATH_ENGINES)}, got {engine!r}")
@@ -86,10 +88,28 @@ def load_path(
             raise CaseError(f"{exc} ({standing_parameters(case)}); {why_not_standing(case)}") from None
         if folder is not None:
             write_load_path(folder, result, case)
+            _keep_states(folder, result, case)
     if folder is not None:
         stem = load_path_file(folder, case.name)
         plot_load_path(result, stem)
     return result
+
+
+def _keep_states(folder: Path, result: LoadPath, case: ArchCase) -> Path:
+    """The static engine's load path's states as the folder OUT/NAME_load_path/ (`yadearch animate`,
+    `export`)."""
+    records = load_path_records(case, result)
+    defects = records.arch.imperfections
+    return write_load_path_folder(
+        folder,
+        result,
+        case,
+        records.series,
+        records.joints,
+        records.snapshots,
+        records.states,
+        defects.table() if defects is not None else None,
+    )
 
 
 def loads_file(case: ArchCase, out: str | Path) -> Path:

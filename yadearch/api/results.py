@@ -12,6 +12,7 @@ import pandas as pd
 
 from yadearch.case.names import FILE, output_path, writable_folder
 from yadearch.errors import ArgumentTypeError, CaseError
+from yadearch.results.load_path import is_load_path_folder, read_load_path_folder
 from yadearch.results.rundir import FIGURES_DIR, VTK_DIR, RunFolder, read_run
 from yadearch.results.states import RunStates
 from yadearch.results.summary import DEM, HingeRef, RunSummary
@@ -136,18 +137,28 @@ class RunResult:
         from yadearch.plotting.run_figures import write_figures
 
         check_arguments(figure_jobs=jobs)
+        if self.folder.load_path is not None:  # a run's figures are drawn against a displacement it holds
+            raise CaseError(
+                f"{self.path} is a live load's path: its figure is {self.path}.pdf/.png; its folder serves "
+                "animate and export_vtk"
+            )
         folder = output_path(out, "out") if out is not None else self.path / FIGURES_DIR
         return write_figures(self.folder, analyse_run(self.folder), folder, jobs)
 
     def __repr__(self) -> str:
-        du = "no collapse" if self.du_mm is None else f"du={self.du_mm:.2f} mm"
-        return f"RunResult({self.path}, {du}, hinges {' '.join(map(str, self.hinges)) or '-'})"
+        if self.folder.load_path is not None:
+            answer = f"live load: {self.summary.outcome}"
+        else:
+            answer = "no collapse" if self.du_mm is None else f"du={self.du_mm:.2f} mm"
+        return f"RunResult({self.path}, {answer}, hinges {' '.join(map(str, self.hinges)) or '-'})"
 
 
 def open_run(path: str | Path) -> RunResult:
-    """Read a finished run folder (RunFolderError in one line for one that is not complete or damaged)."""
+    """Read a finished run folder, or a live load's path folder (OUT/NAME_load_path/ of `load_path`
+    on the static engine: its states, `animate`, `export_vtk`); RunFolderError in one line for one
+    that is not complete or damaged."""
     if isinstance(path, bytes) or not isinstance(path, (str, os.PathLike)):
         raise ArgumentTypeError(
             f"path must be a run folder (str or pathlib.Path), got {type(path).__name__} {path!r:.40}"
         )
-    return RunResult(read_run(path))
+    return RunResult(read_load_path_folder(Path(path)) if is_load_path_folder(Path(path)) else read_run(path))

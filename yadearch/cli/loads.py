@@ -34,7 +34,8 @@ ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
     show_default=True,
     help="rigid: rigid-block limit analysis (under a second); static: the load grown to collapse on the "
     "static engine's path (the DEM's blocks and joints, seconds): first loss of stability, collapse, the "
-    "load-displacement curve (NAME_load_path.csv/.json and figure), beside the rigid answer; dem: the same "
+    "load-displacement curve (NAME_load_path.csv/.json and figure; its states in NAME_load_path/ for `yadearch "
+    "animate` and `export`), beside the rigid answer; dem: the same "
     "path in YADE by load ramps relaxed to equilibrium (minutes)",
 )
 @click.option(
@@ -114,9 +115,10 @@ def _on_path(case: ArchCase, out: str, after_mm: float, what: str, engine: str, 
     rigid = (
         f"{path.rigid:.4g} {unit} on {path.rigid_hinges}" if math.isfinite(path.rigid) else f"none ({path.rigid_note})"
     )
+    states = f" and its states {out}/{case.name}_load_path/ (yadearch animate, export)" if engine == STATIC else ""
     click.echo(
         f"{case.name}: {what}: {ENGINE_NAMES[engine]}: {outcome}; rigid blocks: {rigid} "
-        f"-> {out}/{case.name}_load_path.json"
+        f"-> {out}/{case.name}_load_path.json{states}"
     )
 
 

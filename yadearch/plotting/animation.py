@@ -1,6 +1,6 @@
-"""A run as a movie: the arch along its loading path to collapse, one frame a recorded state, drawn
-to scale as `plotting.states` draws a state, the collapse held at the end. MP4 through ffmpeg,
-GIF through Pillow (no ffmpeg needed)."""
+"""A run as a movie: the arch along its loading path to collapse (a support's movement, or a live
+load's path), one frame a recorded state, drawn to scale as `plotting.states` draws a state, the
+collapse held at the end. MP4 through ffmpeg, GIF through Pillow (no ffmpeg needed)."""
 
 from __future__ import annotations
 
@@ -16,6 +16,7 @@ from yadearch.errors import CaseError, YadearchError
 from yadearch.plotting.house import house_style, new_figure
 from yadearch.plotting.states import draw_state, drawing_limits, place_texts, run_states, state_view
 from yadearch.results.rundir import RunFolder
+from yadearch.results.states import LOAD_DIGITS
 
 FORMATS = ("mp4", "gif")
 FRAMES_PER_S = 8
@@ -33,6 +34,18 @@ def check_format(fmt: str) -> None:
             "MP4 needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg); "
             "or write a GIF with --format gif"
         )
+
+
+def movie_title(run: RunFolder) -> str:
+    """The run's name and engine and its answer: du, or on a live load's path the load at collapse."""
+    title = f"{run.summary.name or run.path.name}: {run.summary.engine} engine"
+    answer = run.load_path
+    if answer is None:
+        return title + (f", du = {run.summary.du_mm:.2f} mm" if run.summary.du_mm is not None else ", no collapse")
+    unit, capacity = answer["unit"], answer["collapse_multiplier"]
+    if capacity is not None:
+        return f"{title}, live load: collapse at {capacity:.{LOAD_DIGITS}g} {unit}"
+    return f"{title}, live load: {answer['outcome']} up to {answer['largest_multiplier_tried']:.{LOAD_DIGITS}g} {unit}"
 
 
 @house_style
@@ -53,9 +66,7 @@ def animate_run(
     }
     fig = new_figure(height_cm=FRAME_CM[1], width_cm=FRAME_CM[0])
     ax = fig.add_subplot()
-    title = f"{run.summary.name or run.path.name}: {run.summary.engine} engine" + (
-        f", du = {run.summary.du_mm:.2f} mm" if run.summary.du_mm is not None else ", no collapse"
-    )
+    title = movie_title(run)
 
     def draw(index: int) -> list:
         ax.clear()

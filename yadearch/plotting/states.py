@@ -1,7 +1,7 @@
 """Any recorded state of a run drawn to scale (states.npz): the blocks, the hinges open at that state
 with the paper's letters, the line of the joints' contact-force resultants (the thrust line), the
-support displacement and the moving support's reaction; and the strip of four states (self-weight,
-a third and two thirds of du, collapse) written with every run's figures."""
+support displacement (a live load's path: the load) and the moving support's reaction; and the strip
+of four states (self-weight, a third and two thirds of du, collapse) written with every run's figures."""
 
 from __future__ import annotations
 
@@ -41,15 +41,16 @@ STRIP_CM = (17.0, 9.0)  # two columns wide
 class StateView:
     """What one drawn state shows, in mm: block outlines, open hinges (interface, side, pivot point,
     paper letter, the joint's unit direction from intrados to extrados), the thrust line's points,
-    the support displacement and reaction."""
+    where the state is on its path (the support displacement, or a live load's path's load) and a
+    support's reaction."""
 
     outlines: list[np.ndarray]
     hinges: list[tuple[int, str, np.ndarray, str, np.ndarray]]
     thrust: np.ndarray
-    delta_mm: float
+    place: str  # `RunStates.place`: "δ = 1.20 mm", or "load 3.21 N"
     stage: str
-    reaction_N: tuple[float, float] | None  # of the moving support on the arch
-    moving_support: str = "right"  # which support the reaction is of ('both': the right one)
+    reaction_N: tuple[float, float] | None  # of the support named by `support` on the arch
+    support: str = "right support (moving)"  # the moving one ('both': the right one); on a load path, held
 
 
 def run_states(run: RunFolder) -> RunStates:
@@ -94,7 +95,8 @@ def state_view(run: RunFolder, geometry: ArchGeometry, analysis: RunAnalysis, in
         else (float(same_step[f"{side}_Rx_N"].iloc[-1]), float(same_step[f"{side}_Ry_N"].iloc[-1]))
     )
     outlines = [o * MM_PER_M for o in snapshot_outlines(geometry, snapshot)]
-    return StateView(outlines, hinges, thrust, float(states.delta_mm[index]), str(states.stage[index]), reaction, side)
+    support = f"{side} support" + (" (moving)" if run.load_path is None else "")
+    return StateView(outlines, hinges, thrust, states.place(index), str(states.stage[index]), reaction, support)
 
 
 def drawing_limits(geometry: ArchGeometry) -> tuple[tuple[float, float], tuple[float, float]]:
@@ -108,8 +110,8 @@ def drawing_limits(geometry: ArchGeometry) -> tuple[tuple[float, float], tuple[f
 
 
 def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple, corner: bool = True) -> None:
-    """Draw `view` into `ax` to scale, over the undeformed outline, with the support displacement and
-    the reaction in the lower left corner (`corner`)."""
+    """Draw `view` into `ax` to scale, over the undeformed outline, with its place on the path (the
+    support displacement, or the load) and the reaction in the lower left corner (`corner`)."""
     last = len(view.outlines) - 1
     for b, (vertices, moved) in enumerate(zip(geometry.blocks, view.outlines)):
         ax.add_patch(
@@ -139,12 +141,9 @@ def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple,
         label.set_fontsize(TEXT_PT)
         label.away = across if side == "E" else -across  # off the ring: out at the extrados, in at the intrados
     if corner:
-        text = f"δ = {view.delta_mm:.2f} mm ({view.stage})"
+        text = f"{view.place} ({view.stage})"
         if view.reaction_N is not None:
-            text += (
-                f"\n{view.moving_support} support (moving) on the arch:"
-                f"\nRx {view.reaction_N[0]:.2f} N, Ry {view.reaction_N[1]:.2f} N"
-            )
+            text += f"\n{view.support} on the arch:\nRx {view.reaction_N[0]:.2f} N, Ry {view.reaction_N[1]:.2f} N"
         ax.text(0.01, 0.02, text, transform=ax.transAxes, va="bottom", ha="left", fontsize=TEXT_PT)
     ax.set_aspect("equal")
     ax.set_xlim(*limits[0])

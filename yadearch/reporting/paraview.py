@@ -2,7 +2,9 @@
 XML unstructured grids written by VTK itself, in metres: part 0 the blocks as hexahedra (cell data:
 block id, support flag, displacement, rotation), part 1 the joints as points at their centres
 (point data: interface, normal and shear force, openings, hinge flag). ParaView's time is the
-support displacement delta in mm; the file names carry the state's index and delta."""
+support displacement delta in mm; the file names carry the state's index and delta. On a live load's
+path the time is the state's index along it (its load rises, then falls past the peak), the load in
+the file names and in the blocks' `live_load_N` (or `_g`)."""
 
 from __future__ import annotations
 
@@ -18,6 +20,7 @@ from yadearch.errors import YadearchError
 from yadearch.model.geometry import ArchGeometry
 from yadearch.plotting.states import run_states, state_hinges, state_joints
 from yadearch.results.rundir import RunFolder
+from yadearch.results.states import LOAD_COLUMN, LOAD_DIGITS, RunStates
 
 PARTS = ("blocks", "joints")
 HEX_CORNERS = 8  # a block is a prism on a quadrilateral: 4 front and 4 back corners
@@ -81,6 +84,21 @@ def _write(grid: Any, path: Path) -> Path:
     return write_atomically(path, save)
 
 
+def _time_and_tag(states: RunStates, index: int) -> tuple[float, str]:
+    """ParaView's time of state `index` and its files' tag: its support displacement, or on a live
+    load's path its index, the load in the tag."""
+    if states.load is None:
+        return float(states.delta_mm[index]), f"delta{states.delta_mm[index]:.3f}mm"
+    return float(index), f"load{states.load[index]:.{LOAD_DIGITS}g}{states.load_unit}"
+
+
+def _load_data(states: RunStates, index: int, n_blocks: int) -> dict[str, np.ndarray]:
+    """The blocks' cell array of a live load's path state: its load (none on a support's path)."""
+    if states.load is None:
+        return {}
+    return {f"{LOAD_COLUMN}_{states.load_unit}": np.full(n_blocks, states.load[index])}
+
+
 def export_run(run: RunFolder, out: Path) -> Path:
     """Write every state of the run's loading path into `out` (one .vtu per part and state) and
     `out`/RUN.pvd (RUN: the run folder's name) that lists them by time; returns the .pvd's path."""
@@ -100,7 +118,8 @@ def export_run(run: RunFolder, out: Path) -> Path:
     for index in states.path():
         pos, rot = states.pos_m[index], states.rot_rad[index]
         snapshot = states.snapshot(index)
-        stem = f"{index:04d}_delta{states.delta_mm[index]:.3f}mm"
+        time, tag = _time_and_tag(states, index)
+        stem = f"{index:04d}_{tag}"
         displacement = np.column_stack([pos - centroids, np.zeros(n_blocks)])  # from the unloaded arch
         blocks = _grid(
             placed_corners(geometry, pos, rot).reshape(-1, 3),
@@ -111,6 +130,7 @@ def export_run(run: RunFolder, out: Path) -> Path:
                 "support": np.isin(ids, (0, n_blocks - 1)).astype(np.int8),
                 "displacement_m": displacement,
                 "rotation_rad": rot,
+                **_load_data(states, index, n_blocks),
             },
             on_cells=True,
         )
@@ -137,9 +157,7 @@ def export_run(run: RunFolder, out: Path) -> Path:
         for part, grid in enumerate((blocks, joint_grid)):
             name = f"{PARTS[part]}_{stem}.vtu"
             _write(grid, out / name)
-            ElementTree.SubElement(
-                collection, "DataSet", timestep=f"{states.delta_mm[index]:.6g}", part=str(part), file=name
-            )
+            ElementTree.SubElement(collection, "DataSet", timestep=f"{time:.6g}", part=str(part), file=name)
     root = ElementTree.Element("VTKFile", type="Collection", version="0.1")
     root.append(collection)
     ElementTree.indent(root)

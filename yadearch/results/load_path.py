@@ -1,5 +1,8 @@
 """A live load's path on disk (either engine): OUT/NAME_load_path.json (the answer and the case that
-gave it) and OUT/NAME_load_path.csv (the load-displacement curve), written atomically and read back."""
+gave it) and OUT/NAME_load_path.csv (the load-displacement curve), written atomically and read back;
+and the static engine's states as the folder OUT/NAME_load_path/, read as a run folder for `yadearch
+animate` and `export`: case.toml, series.csv, joints.csv, snapshots.json, states.npz (each state's
+load in it) and the answer again, load_path.json, written last (the folder is complete)."""
 
 from __future__ import annotations
 
@@ -12,9 +15,14 @@ import pandas as pd
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
+from yadearch.errors import RunFolderError
+from yadearch.results.rundir import CASE_FILE, RunFolder, read_tables, write_tables
+from yadearch.results.summary import HingeRef, RunSummary
 from yadearch.solve.load_path import BRANCH, LoadPath
+from yadearch.solve.stages import Outcome
 
 LOAD_PATH_SUFFIX = "_load_path"
+LOAD_PATH_FILE = "load_path.json"  # in a load path's folder: its answer, written last
 
 
 def load_path_file(folder: Path, name: str, suffix: str = "") -> Path:
@@ -58,9 +66,65 @@ def _descent_json(result: LoadPath) -> dict[str, Any]:
 def write_load_path(folder: Path, result: LoadPath, case: ArchCase) -> Path:
     """Write the path's JSON and curve CSV in `folder`; returns their stem."""
     write_csv_atomically(load_path_file(folder, case.name, ".csv"), result.curve)
-    text = json.dumps(load_path_json(result, case), indent=1) + "\n"
-    write_text_atomically(load_path_file(folder, case.name, ".json"), text)
+    write_text_atomically(load_path_file(folder, case.name, ".json"), _json_text(result, case))
     return load_path_file(folder, case.name)
+
+
+def _json_text(result: LoadPath, case: ArchCase) -> str:
+    """The answer as written beside the folder and in it."""
+    return json.dumps(load_path_json(result, case), indent=1) + "\n"
+
+
+def write_load_path_folder(
+    folder: Path,
+    result: LoadPath,
+    case: ArchCase,
+    series: list[dict],
+    joints: list[dict],
+    snapshots: dict[str, Any],
+    states: list[dict[str, Any]],
+    imperfections: dict[str, Any] | None = None,
+) -> Path:
+    """Write the folder OUT/NAME_load_path/ of the path's recorded states in `folder` (the rows and
+    states of `static.records.load_path_records`), its answer last; returns the folder."""
+    out = load_path_file(folder, case.name)
+    (out / LOAD_PATH_FILE).unlink(missing_ok=True)  # a folder being written again is not complete
+    write_text_atomically(out / CASE_FILE, case.to_toml())
+    write_tables(out, series, joints, snapshots, imperfections, states)
+    write_text_atomically(out / LOAD_PATH_FILE, _json_text(result, case))
+    return out
+
+
+def is_load_path_folder(path: Path) -> bool:
+    """True if `path` is a live load's path folder (`write_load_path_folder`), complete."""
+    return (Path(path) / LOAD_PATH_FILE).is_file()
+
+
+def read_load_path_folder(path: Path) -> RunFolder:
+    """A live load's path folder read as a run folder (its states drawn and exported as a run's): the
+    summary says only what the answer says (name, engine, outcome, hinges, the solver's iterations; no
+    du, no wall time), `load_path` holds the answer."""
+    path = Path(path)
+    file = path / LOAD_PATH_FILE
+    try:
+        answer = json.loads(file.read_text())
+        outcome = Outcome(answer["outcome"])
+        summary = RunSummary(
+            name=str(answer["name"]),
+            engine=str(answer["engine"]),
+            outcome=outcome,
+            collapsed=outcome == Outcome.COLLAPSE,
+            du_mm=None,
+            hinges_at_collapse=tuple(HingeRef(int(h[:-1]), h[-1]) for h in answer["hinges_at_collapse"]),
+            collapse_kind=answer["collapse_kind"],
+            steps=int(answer["iterations"]),
+            wall_s=math.nan,
+        )
+    except (OSError, ValueError, KeyError, TypeError) as exc:
+        raise RunFolderError(
+            f"{file} cannot be read as a load path's answer ({exc}); run the load path again"
+        ) from None
+    return read_tables(path, summary, answer)
 
 
 def read_load_path(folder: Path, name: str) -> LoadPath:

@@ -52,6 +52,7 @@ class RunFolder:
     snapshots: dict[str, Any]
     summary: RunSummary
     states: RunStates | None = None  # none in runs written before states were recorded
+    load_path: dict[str, Any] | None = None  # a live load's path folder: its answer (load_path.json); None: a run
 
 
 def staging_folder(out: Path) -> Path:
@@ -87,6 +88,20 @@ def write_run(
     if not tables:
         _write_summary(out, dataclasses.replace(summary, table_rows={}))
         return
+    write_tables(out, series, joints, snapshots, imperfections, states)
+    _write_summary(out, dataclasses.replace(summary, table_rows={SERIES_FILE: len(series), JOINTS_FILE: len(joints)}))
+
+
+def write_tables(
+    out: Path,
+    series: list[dict],
+    joints: list[dict],
+    snapshots: dict[str, Any],
+    imperfections: dict[str, Any] | None = None,
+    states: list[dict[str, Any]] | None = None,
+) -> None:
+    """The tables, snapshots and states of a run folder (`write_run`'s, and a live load's path
+    folder's), each atomically."""
     if imperfections is not None:
         write_csv_atomically(out / IMPERFECTIONS_FILE, pd.DataFrame(imperfections))
     for name, rows in ((SERIES_FILE, series), (JOINTS_FILE, joints)):
@@ -94,7 +109,6 @@ def write_run(
     write_text_atomically(out / SNAPSHOTS_FILE, json.dumps(snapshots, indent=1, default=_json_default))
     if states:
         write_states(out / STATES_FILE, states)
-    _write_summary(out, dataclasses.replace(summary, table_rows={SERIES_FILE: len(series), JOINTS_FILE: len(joints)}))
 
 
 def _write_summary(out: Path, summary: RunSummary) -> None:
@@ -223,7 +237,12 @@ def read_run(path: str | Path) -> RunFolder:
     """Read a run folder written by `write_run` (RunFolderError in one line for one that kept only
     its summary: it has nothing to analyse or draw)."""
     path = Path(path)
-    summary = read_summary(path)
+    return read_tables(path, read_summary(path))
+
+
+def read_tables(path: Path, summary: RunSummary, load_path: dict[str, Any] | None = None) -> RunFolder:
+    """The folder's case, tables, snapshots and states read beside its `summary` (and a live load's
+    path's answer `load_path`), the tables' lengths checked against the summary's counts."""
     try:
         case = with_current_names(tomllib.loads((path / CASE_FILE).read_text()))
         if kept_only_summary(case):
@@ -239,6 +258,7 @@ def read_run(path: str | Path) -> RunFolder:
             snapshots=json.loads((path / SNAPSHOTS_FILE).read_text()),
             summary=summary,
             states=read_states(path),
+            load_path=load_path,
         )
     except (OSError, ValueError, tomllib.TOMLDecodeError) as exc:
         raise RunFolderError(f"{path}: a file of the run folder cannot be read ({exc})") from None

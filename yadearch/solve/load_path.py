@@ -10,7 +10,7 @@ Load control up to the limit point; past it, the descending branch by arc length
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
@@ -60,6 +60,9 @@ class LoadPath:
     engine: str = "static"
     descent_end: str = ""  # why the branch past the peak ends (`solve.descending.DescentEnd`); "": not traced
     descent_hinges: tuple[str, ...] = ()  # the hinges turning where it ends
+    # the static engine's states in the path's order: its start (the self-weight's or the movement's end),
+    # each accepted state, the descending branch's, the collapse's; none from the DEM or read from disk
+    states: tuple[StaticState, ...] = field(default=(), repr=False, compare=False)
 
 
 def load_settings(scale: float, growth: float) -> PathSettings:
@@ -96,8 +99,10 @@ def static_load_path(
     start = loading.accepted[0]
     path = follow_path(loading, loading.settings)
     mode = loading.fold_mode(path.upper) if path.collapsed else None
+    collapse = [loading.collapse_state(path.upper)] if path.collapsed else []
     first = first_snap(loading.snaps)
     descent = descend(loading, path.du, descend_to) if path.collapsed and descend_to is not None else None
+    branches = loading.accepted + (descent.states if descent is not None else [])
     return LoadPath(
         capacity=path.du if path.collapsed else math.nan,
         first_loss=first_loss_multiplier(path, first),
@@ -105,13 +110,14 @@ def static_load_path(
         unit=UNITS[case.loads.live_load],
         hinges=tuple(mode.labels) if mode is not None else (),
         kind=str(mode.kind) if mode is not None else None,
-        curve=load_curve(arch, start, loading.accepted + (descent.states if descent is not None else [])),
+        curve=load_curve(arch, start, branches),
         after_mm=after_mm,
         reach=path.lower,
         iterations=loading.iterations,  # the load control's: the descending branch has its own solver
         **rigid_answer(case, after_mm, at_rest),
         descent_end=str(descent.end) if descent is not None else "",
         descent_hinges=descent.hinges if descent is not None else (),
+        states=tuple(branches + collapse),
     )
 
 

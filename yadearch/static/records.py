@@ -1,5 +1,6 @@
 """What a static run records (no YADE): the rows of series.csv and joints.csv and the snapshots of its
-states, in the DEM's columns (docs/usage.md, "The run folder"), so that every reader takes both."""
+states, in the DEM's columns (docs/usage.md, "The run folder"), so that every reader takes both; and
+the same records of a live load's path (its states' parameter the load's multiplier)."""
 
 from __future__ import annotations
 
@@ -8,6 +9,7 @@ from typing import Any
 
 import numpy as np
 
+from yadearch.case.config import ArchCase
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.model.joint_law import unbalanced_force
@@ -19,10 +21,11 @@ from yadearch.results.joint_rows import (
     snapshot_entry,
 )
 from yadearch.results.rundir import STIFFNESS_COLUMN
-from yadearch.results.states import state_entry
+from yadearch.results.states import LOAD_COLUMN, state_entry
+from yadearch.solve.load_path import LoadPath
 from yadearch.solve.stages import Stage
 from yadearch.solve.static_state import StaticState
-from yadearch.solve.statics import StaticArch
+from yadearch.solve.statics import StaticArch, static_arch
 
 # numerics of the DEM that a static run does not use: time stepping, damping, holds, the support's speed
 DEM_ONLY_NUMERICS = (
@@ -56,6 +59,10 @@ class StaticRecords:
     hinge_threshold: float  # rad
     keep_tables: bool = True  # rows of series.csv and joints.csv, the states and their stiffness
     held: float = 0.0  # the live load's multiplier held during the movement (N or g; 0: none)
+    # a live load's path: each state's `lam` is the load's multiplier in this unit (N or g), the supports
+    # held at `after_mm`; "": the supports' path, `lam` their displacement
+    load_unit: str = ""
+    after_mm: float = 0.0
     series: list[dict[str, Any]] = field(default_factory=list)
     joints: list[dict[str, Any]] = field(default_factory=list)
     snapshots: dict[str, dict[str, Any]] = field(default_factory=dict)
@@ -67,15 +74,18 @@ class StaticRecords:
         """Record `state`: where the run keeps its tables, a series row, its joints and the snapshot
         under `label`; an equilibrium's friction extremes always (the summary's `friction`)."""
         self.iterations += state.iterations
-        delta_mm = units.to_mm(state.lam)
+        delta_mm = self.after_mm if self.load_unit else units.to_mm(state.lam)
+        load = (state.lam, self.load_unit) if self.load_unit else None
         f = state.forces
         if self.keep_tables:
             pos, rot = self.arch.poses(state.u)
             snap, hinges = self._snapshot(state, pos, rot)
             common = {"stage": state.stage, "step": self.iterations, "delta_mm": delta_mm}
+            if load is not None:
+                common[f"{LOAD_COLUMN}_{self.load_unit}"] = state.lam
             self.series.append({**common, **self.series_columns(state, pos)})
             self.joints.extend(joint_rows(snap, common))
-            self.states.append(state_entry(state.stage, self.iterations, delta_mm, pos, rot))
+            self.states.append(state_entry(state.stage, self.iterations, delta_mm, pos, rot, load))
             if label:
                 self.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, self.iterations)
         if state.stage == Stage.EQUILIBRIUM:
@@ -107,14 +117,15 @@ class StaticRecords:
     def series_columns(self, state: StaticState, pos: np.ndarray | None = None) -> dict[str, Any]:
         """series.csv's columns of `state` (its blocks' positions `pos`, if known): reactions (the
         supports' forces on the arch), the crown's displacement, the residual against the weights, the
-        dead loads and the live load `held`, the tangent's smallest eigenvalue."""
+        dead loads and the live load (`held`, or a load path's own), the tangent's smallest eigenvalue."""
         pos = self.arch.poses(state.u)[0] if pos is None else pos
         force = state.forces.block_force
         crown = self.arch.geometry.crown_voussoir
         crown_disp = pos[crown] - self.arch.centroid0[crown]
         free = np.zeros(self.arch.n_blocks, bool)
         free[1:-1] = True
-        dead = self.arch.dead[free] + self.held * self.arch.live[free]  # a live load held during the movement
+        live = state.lam if self.load_unit else self.held  # a load path's own, or the one held during the movement
+        dead = self.arch.dead[free] + live * self.arch.live[free]
         loads = np.column_stack([dead[:, 0], dead[:, 1] - self.arch.weight[free]])
         unbalanced = unbalanced_force(state.forces, free, loads)
         return {
@@ -130,3 +141,14 @@ class StaticRecords:
             "iterations": state.iterations,
             STIFFNESS_COLUMN: state.min_stiffness,
         }
+
+
+def load_path_records(case: ArchCase, result: LoadPath) -> StaticRecords:
+    """The states of the static engine's load path `result` of `case` recorded as a run records its own,
+    each with its load (the start's and the collapse's also as snapshots, under their stages)."""
+    records = StaticRecords(
+        static_arch(case), case.numerics.hinge_rotation_mrad * 1e-3, load_unit=result.unit, after_mm=result.after_mm
+    )
+    for state in result.states:
+        records.add(state, label=None if state.stage == Stage.EQUILIBRIUM else state.stage)
+    return records
