@@ -1,6 +1,7 @@
 """Errors that mean a user mistake or an unusable environment: the CLI prints them as one line."""
 
 CANNOT_STAND = "the arch does not stand under its own weight"  # both engines' words; campaigns read them
+UNRESOLVED = "unresolved"  # a run's failure that is the solver's, not the arch's (never a collapse)
 
 
 class YadearchError(Exception):

@@ -109,6 +109,24 @@ def test_a_stiff_thick_ring_collapses_at_the_rigid_value_not_unresolved(tmp_path
     assert summary.du_mm == pytest.approx(74.86, rel=0.01)
 
 
+def test_a_self_weight_still_falling_goes_on_and_a_solver_failure_is_not_cannot_stand(tmp_path: Path) -> None:
+    """Set 2 with face angles of s.d. 32 mrad (seed 123, reports/imperfections/amplitudes): its
+    self-weight descent moved a block 18.8 mm in its budget and was read as an arch that cannot stand;
+    going on while it falls, it settles and the arch collapses under the movement. A campaign row whose
+    self-weight the solver leaves unresolved is `unresolved`, not `cannot stand`."""
+    from yadearch.studies.campaigns.table import RunSpec, failed_row
+
+    summary = static_run(tmp_path, "rough", {"face_angle_sd_mrad": 32.0, "seed": 123})
+    assert summary.outcome == Outcome.COLLAPSE and summary.du_mm is not None and summary.du_mm > 30.0
+    spec = RunSpec("rough", {}, tmp_path, preset("set2"))
+    row = failed_row(spec, "run 'rough' failed: unresolved: the self-weight descent found neither", 1.0)
+    assert row["outcome"] == Outcome.UNRESOLVED
+    assert (
+        failed_row(spec, "run 'rough' failed: the arch does not stand under its own weight", 1.0)["outcome"]
+        == Outcome.CANNOT_STAND
+    )
+
+
 def test_stiffer_joints_carry_an_inclined_movement_further(tmp_path: Path) -> None:
     """Set 2 moving at -45 deg: du rises with kn toward the rigid march's 40.82 mm (the old answers,
     22.99 / 31.82 / 21.12 / 25.18 mm, stopped at the first snap: they are du_first now)."""

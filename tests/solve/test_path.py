@@ -136,6 +136,25 @@ def test_a_state_that_ran_away_while_settling_bounds_du_as_a_runaway_whatever_an
     assert result.lower <= 40.0 < result.upper <= 40.0 + SETTINGS.tolerance
 
 
+class SlowFall(FakeArch):
+    """Past du it runs away from a state accepted still creeping, but from the settled state it falls
+    too slowly for the hold to see either (kn sweep at kn 0.2371, reports/kn-sweep)."""
+
+    def try_increment(self, target: float) -> str:
+        verdict = super().try_increment(target)
+        if verdict != Verdict.STABLE and target > self.du:
+            return Verdict.TIMEOUT if self.stack[-1][1] else Verdict.RUNAWAY
+        return verdict
+
+
+def test_a_runaway_seen_at_a_position_is_not_undone_by_a_slower_try_from_the_settled_state():
+    arch = SlowFall(40.0, creep_reach=0.05)
+    result = follow_path(arch, SETTINGS)
+    tried = [s.verdict for s in result.steps if s.target == result.upper]
+    assert Verdict.RUNAWAY in tried and tried[-1] == Verdict.TIMEOUT  # the retry only timed out
+    assert result.collapsed and result.lower <= 40.0 < result.upper <= 40.0 + SETTINGS.tolerance
+
+
 def test_no_collapse_up_to_the_maximum_displacement():
     result = follow_path(FakeArch(500.0), SETTINGS)
     assert not result.collapsed and math.isinf(result.du)

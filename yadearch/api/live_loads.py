@@ -15,7 +15,7 @@ from yadearch.api.arguments import check_arguments
 from yadearch.api.runs import as_case
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import arch_geometry, standing_parameters
+from yadearch.case.mechanics import arch_geometry
 from yadearch.case.names import check_name, output_path
 from yadearch.errors import CaseError
 from yadearch.launch.load_process import run_load_process
@@ -23,12 +23,12 @@ from yadearch.plotting.load_figure import plot_load_collapse
 from yadearch.plotting.loads import plot_influence, plot_load_path
 from yadearch.results.load_path import load_path_file, write_load_path, write_load_path_folder
 from yadearch.solve.descending import DESCEND_TO
-from yadearch.solve.limit import why_not_standing
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
 from yadearch.solve.load_path import LoadPath, static_load_path
 from yadearch.solve.rigid import rigid_arch
 from yadearch.solve.static_state import StaticEngineError
 from yadearch.static.records import load_path_records
+from yadearch.static.simulate import selfweight_failure
 from yadearch.studies.loads.engines import dem_influence_line
 from yadearch.studies.loads.rigid import influence_line
 from yadearch.studies.loads.static import static_influence_line
@@ -85,7 +85,7 @@ def load_path(
         try:
             result = static_load_path(case, after_mm, descend_to=descend_to)
         except StaticEngineError as exc:
-            raise CaseError(f"{exc} ({standing_parameters(case)}); {why_not_standing(case)}") from None
+            raise CaseError(selfweight_failure(exc, case)) from None
         if folder is not None:
             write_load_path(folder, result, case)
             _keep_states(folder, result, case)

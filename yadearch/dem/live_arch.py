@@ -8,7 +8,7 @@ from collections.abc import Callable
 from typing import Any, Protocol
 
 from yadearch.case.config import ArchCase
-from yadearch.errors import CANNOT_STAND, RunFailedError
+from yadearch.errors import CANNOT_STAND, UNRESOLVED, RunFailedError
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.model.movement import Movement
@@ -110,12 +110,12 @@ def settle_selfweight(arch: LiveArch) -> None:
         raise RunFailedError(f"{CANNOT_STAND}: the self-weight state ran away while settling")
     if verdict == Verdict.TIMEOUT and num.contact_model == JOINT_CONTACTS:
         raise RunFailedError(
-            f"unresolved: the self-weight state still creeps after {holds} holds of {num.hold_max_s} s "
+            f"{UNRESOLVED}: the self-weight state still creeps after {holds} holds of {num.hold_max_s} s "
             f"(numerics.hold_max_s; a block moved {units.to_mm(arch.hold_move):.3f} mm in the last, blocks "
             f"faster than {num.settle_speed_mm_per_s:g} mm/s): an arch at the edge of standing"
         )
     if verdict == Verdict.STABLE and stable_tangent(arch, verdict) != Verdict.STABLE:
         raise RunFailedError(
-            f"unresolved: the self-weight state did not settle to a stable equilibrium within "
+            f"{UNRESOLVED}: the self-weight state did not settle to a stable equilibrium within "
             f"{STABILITY_HOLDS + 1} holds of {num.hold_max_s} s (numerics.hold_max_s)"
         )

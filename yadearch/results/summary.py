@@ -29,7 +29,9 @@ DEM, STATIC = "dem", "static"  # the engines that write run folders
 # 6: a saddle is left along its softest mode far enough for its negative stiffness to push 10x the
 # converged residual (a nearly neutral mode at a symmetric bifurcation), its side chosen by the blocks'
 # order where the loads do not choose; a descent's goes carry the joints' shear from go to go.
-STATIC_REVISION = 6
+# 7: the self-weight's descent goes on while it falls, as the path's does; one that finds neither an
+# equilibrium nor a fall is `unresolved`, not an arch that cannot stand.
+STATIC_REVISION = 7
 TRANSLATION = "translation"
 # written only when set: engine-specific figures and what older runs lack
 OPTIONAL_KEYS = frozenset(

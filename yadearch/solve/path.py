@@ -114,8 +114,9 @@ class PathResult:
     @property
     def upper_verdict(self) -> str | None:
         """How the arch failed at `upper`: Verdict.RUNAWAY (a block moved the runaway distance, or the state
-        there ran away while settling, whatever an earlier increment to it said) or Verdict.TIMEOUT (no
-        equilibrium nor runaway after the solver's retries); None if no increment failed."""
+        there ran away while settling, whatever an earlier increment to it said; a try from the settled
+        lower state that only times out there does not undo a runaway seen there) or Verdict.TIMEOUT
+        (no equilibrium nor runaway after the solver's retries); None if no increment failed."""
         if not self.failed:
             return None
         if self.failure is not None:
@@ -219,6 +220,8 @@ def follow_path(
                 increment = 2.0 * settings.tolerance
             result.lower = target
             increment = min(increment * settings.growth, settings.max_increment)
-        else:
-            result.upper, result.upper_from, result.failure = target, result.lower, verdict
+        else:  # a runaway seen at this position stands against a slower try's timeout: no equilibrium there
+            ran_away = target == result.upper and result.failure == Verdict.RUNAWAY
+            result.upper, result.upper_from = target, result.lower
+            result.failure = Verdict.RUNAWAY if ran_away else verdict
     return result

@@ -21,12 +21,13 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import runaway_length
 from yadearch.case.support import path_end_mm
-from yadearch.errors import CANNOT_STAND
+from yadearch.errors import CANNOT_STAND, UNRESOLVED
 from yadearch.model import units
 from yadearch.model.joint_law import JointForces
 from yadearch.solve import banded
 from yadearch.solve.collapse_mode import FoldMode, fold_mode
-from yadearch.solve.newton import Equilibrium, Solver, SolverSettings, largest_move
+from yadearch.solve.falls import fall
+from yadearch.solve.newton import Equilibrium, Solver, SolverSettings
 from yadearch.solve.path import PathResult, PathSettings, PathStep, extrapolate, first_snap, follow_path, path_settings
 from yadearch.solve.stages import Stage, Verdict
 from yadearch.solve.static_state import PathParameter, StaticEngineError, StaticState
@@ -38,11 +39,6 @@ SUBSTEPS = 8  # an increment Newton cannot solve at once is marched in this many
 PREDICTOR_POINTS = 3  # accepted states the predictor extrapolates through (a parabola)
 SNAP_THICKNESS_FRACTION = 0.01  # a descent landing further than this x the ring's thickness from the
 # prediction at the fold is a snap, a new branch: a length of the arch, not of the bracket or the step
-DESCENT_RETRIES = 2  # a descent that finds neither equilibrium nor runaway goes on this many times more,
-FALLING_FRACTION = 0.02  # ... and on while each go moves a block this x the runaway bound (still falling)
-UNBALANCED = 1e-3  # ... or ends pushed by this x the heaviest block's weight on an indefinite tangent
-# (not at rest: a stiff ring's fall crawls down a narrow valley of its joints' energy), ...
-MAX_DESCENT_GOES = 40  # ... up to this many goes of the solver's descent_iterations
 
 
 @dataclass
@@ -84,16 +80,21 @@ class StaticLoading:
         shear = np.zeros(len(self.arch.table.left))
         slip = np.zeros_like(shear)
         for k in range(1, GRAVITY_STEPS + 1):
-            pressed = self.solver.newton(u, u, shear, gravity=k / GRAVITY_STEPS) if k > 1 else None
+            gravity = k / GRAVITY_STEPS
+            pressed = self.solver.newton(u, u, shear, gravity=gravity) if k > 1 else None
             found = (
                 pressed
                 if pressed is not None and pressed.stable()
-                else self.solver.descend(u, u, shear, SELFWEIGHT_FALL, gravity=k / GRAVITY_STEPS)
+                else self._fall(u, u, shear, SELFWEIGHT_FALL, gravity=gravity)
             )
             if found.verdict != Verdict.STABLE:
+                said = f"at {k}/{GRAVITY_STEPS} of gravity, a block moved {1e3 * found.moved:.1f} mm"
+                if found.verdict == Verdict.RUNAWAY:
+                    raise StaticEngineError(f"{CANNOT_STAND} (it fell {said})")
                 raise StaticEngineError(
-                    f"{CANNOT_STAND} ({found.verdict} at {k}/{GRAVITY_STEPS} "
-                    f"of gravity, a block moved {1e3 * found.moved:.1f} mm)"
+                    f"{UNRESOLVED}: the self-weight descent found neither an equilibrium nor a fall of "
+                    f"{1e3 * SELFWEIGHT_FALL:.0f} mm after its retries ({said}): the solver's failure, "
+                    "not an arch that cannot stand"
                 )
             u, shear = found.u, found.joints.forces.shear_force
             slip = slip + found.joints.forces.plastic_slip
@@ -170,33 +171,26 @@ class StaticLoading:
         return history, (low, high)
 
     def _descend(self, history: list[StaticState], lam: float) -> Equilibrium:
-        """The descent at support position `lam` from the state predicted there; where it finds neither
-        equilibrium nor runaway it goes on from where it stopped (DESCENT_RETRIES times, and on while
-        each go moves a block FALLING_FRACTION of the runaway bound or ends far from rest, UNBALANCED, up
-        to MAX_DESCENT_GOES), the joints'
-        shear carried from go to go as the DEM carries it step by step (a long fall is not one elastic
-        step from the last state), then starts again from the last state with only the support moved:
-        a solver's failure is retried before it is reported (Verdict.TIMEOUT), never read as collapse."""
+        """The descent at support position `lam` from the state predicted there, going on while it falls
+        (`solve.falls.fall`), then again from the last state with only the support moved: a solver's
+        failure is retried before it is reported (Verdict.TIMEOUT), never read as collapse."""
         last = history[-1]
         shear = last.forces.shear_force
         start = self.predict(lam, history)
         multiplier = self.parameter.multiplier(lam)
-        found = self.solver.descend(start, last.u, shear, self.runaway, multiplier=multiplier)
+        found = self._fall(start, last.u, shear, self.runaway, multiplier=multiplier)
         self.descents += 1
-        before, goes, slip = start, 1, np.zeros_like(shear)
-        while found.verdict == Verdict.TIMEOUT and goes < MAX_DESCENT_GOES:
-            falling = largest_move(found.u, before) >= FALLING_FRACTION * self.runaway
-            pushed = found.residual > UNBALANCED and not found.stable()
-            if goes > DESCENT_RETRIES and not (falling or pushed):
-                break
-            self.retries += 1
-            before, goes, slip = found.u, goes + 1, slip + found.joints.forces.plastic_slip
-            carried = found.joints.forces.shear_force
-            found = self.solver.descend(found.u, found.u, carried, self.runaway, origin=start, multiplier=multiplier)
-            found = found.with_slip(slip)
         if found.verdict == Verdict.TIMEOUT:
             self.retries += 1
             found = self.solver.descend(self.place(last.u, lam), last.u, shear, self.runaway, multiplier=multiplier)
+        return found
+
+    def _fall(
+        self, start: np.ndarray, u_before: np.ndarray, shear: np.ndarray, bound: float, **loads: float
+    ) -> Equilibrium:
+        """The descent from `start` going on while it falls (`solve.falls.fall`), its goes counted."""
+        found, goes = fall(self.solver, start, u_before, shear, bound, **loads)
+        self.retries += goes - 1
         return found
 
     def _advance(self, history: list[StaticState], lam: float, found: Equilibrium) -> StaticState:

@@ -13,7 +13,7 @@ from yadearch.case.config import ArchCase, load_case
 from yadearch.case.mechanics import held_load_text, held_multiplier, runaway_length, standing_parameters
 from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
-from yadearch.errors import YadearchError
+from yadearch.errors import CANNOT_STAND, YadearchError
 from yadearch.model import units
 from yadearch.model.loads import NONE, UNITS
 from yadearch.results.provenance import provenance
@@ -157,6 +157,14 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
     return summary
 
 
+def selfweight_failure(error: StaticEngineError, case: ArchCase) -> str:
+    """The one line for a self-weight the static engine could not find: with the arch's standing
+    parameters and why it may not stand where it fell, as it is where the solver gave up."""
+    if not str(error).startswith(CANNOT_STAND):
+        return f"{error} ({standing_parameters(case)})"
+    return f"{error} ({standing_parameters(case)}); {why_not_standing(case)}"
+
+
 def _selfweight(
     case: ArchCase, loading: StaticLoading, records: StaticRecords, log: Callable[[str], None]
 ) -> dict[str, Any]:
@@ -164,7 +172,7 @@ def _selfweight(
     try:
         state = loading.selfweight()
     except StaticEngineError as exc:
-        raise YadearchError(f"{exc} ({standing_parameters(case)}); {why_not_standing(case)}") from None
+        raise YadearchError(selfweight_failure(exc, case)) from None
     records.add(state, label=Stage.SELFWEIGHT)
     row = records.series_columns(state)
     weight = float(loading.arch.weight[1:-1].sum())

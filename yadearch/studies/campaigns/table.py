@@ -12,7 +12,7 @@ from typing import Any
 import pandas as pd
 
 from yadearch.case.config import ArchCase
-from yadearch.errors import CANNOT_STAND
+from yadearch.errors import CANNOT_STAND, UNRESOLVED
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.results.rundir import current_summary, outdated
 from yadearch.results.summary import RunSummary
@@ -118,8 +118,11 @@ def done_row(spec: RunSpec, summary: RunSummary) -> dict[str, Any]:
 
 
 def failed_row(spec: RunSpec, reason: str, wall_s: float) -> dict[str, Any]:
-    """The row of a failed run, with its reason (an arch that cannot stand has that outcome)."""
+    """The row of a failed run, with its reason: an arch that cannot stand has that outcome, a run whose
+    self-weight the solver left unresolved is `unresolved` (never counted as an arch that falls)."""
     outcome = Outcome.CANNOT_STAND if CANNOT_STAND in reason else ""
+    if f"{UNRESOLVED}:" in reason:
+        outcome = Outcome.UNRESOLVED
     return {
         **_parameters(spec),
         **EMPTY_RESULT,
