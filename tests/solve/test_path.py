@@ -56,6 +56,9 @@ class FakeArch:
     def discard(self) -> None:
         self.stack.pop()
 
+    def resolve(self, target: float) -> str:
+        return Verdict.TIMEOUT  # a slow failure stays as slow when followed further
+
 
 SETTINGS = PathSettings(first_increment=2.0, max_increment=5.0, growth=1.5, tolerance=0.1, max_displacement=150.0)
 
@@ -153,6 +156,16 @@ def test_a_runaway_seen_at_a_position_is_not_undone_by_a_slower_try_from_the_set
     tried = [s.verdict for s in result.steps if s.target == result.upper]
     assert Verdict.RUNAWAY in tried and tried[-1] == Verdict.TIMEOUT  # the retry only timed out
     assert result.collapsed and result.lower <= 40.0 < result.upper <= 40.0 + SETTINGS.tolerance
+
+
+def test_a_slow_failure_followed_further_that_runs_away_is_a_collapse():
+    class Followed(FakeArch):
+        def resolve(self, target: float) -> str:
+            return Verdict.RUNAWAY
+
+    result = follow_path(Followed(40.0, verdict=Verdict.TIMEOUT), SETTINGS)
+    assert result.collapsed and result.upper_verdict == Verdict.RUNAWAY
+    assert result.lower <= 40.0 < result.upper <= 40.0 + SETTINGS.tolerance
 
 
 def test_no_collapse_up_to_the_maximum_displacement():

@@ -7,6 +7,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any, Protocol
 
+import numpy as np
+
 from yadearch.case.config import ArchCase
 from yadearch.errors import CANNOT_STAND, UNRESOLVED, RunFailedError
 from yadearch.model import units
@@ -60,6 +62,8 @@ class LiveArch(Protocol):
     def delta(self) -> float: ...
 
     def snapshot(self) -> dict[str, Any]: ...
+
+    def positions(self) -> np.ndarray: ...  # the voussoirs' centroids now (n, 3; m)
 
     def restore(self, snapshot: dict[str, Any]) -> None: ...
 

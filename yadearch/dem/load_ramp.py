@@ -123,6 +123,9 @@ class LoadedArch:
         self.driver.ramp_to(target, self.full_rate * speed_fraction)
         self.runner.drive(self.driver.reached)
 
+    def positions(self) -> np.ndarray:
+        return self.runner.positions()
+
     def hold(
         self,
         runaway: float | None = None,

@@ -3,12 +3,15 @@ increments, relaxations, acceptance and settling, played on the runner's live sc
 
 from __future__ import annotations
 
+import numpy as np
+
 from yadearch.case.config import NumericsConfig
 from yadearch.case.mechanics import runaway_length
 from yadearch.case.support import path_end_mm
 from yadearch.dem.live_arch import SETTLE_TOLERANCE_FACTOR, LiveArch, stable_tangent
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
+from yadearch.solve.falls import FALLING_FRACTION, MAX_DESCENT_GOES
 from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, follow_path, path_settings
 from yadearch.solve.stages import Stage, Verdict
 
@@ -156,6 +159,31 @@ class EquilibriumPath:
         self._accepted[-1] = self.arch.snapshot()
         self._at_accepted = True
         return True
+
+    def resolve(self, target: float) -> Verdict:
+        """Hold on with the failure at `target` that found neither equilibrium nor runaway while its holds
+        still move a block FALLING_FRACTION of the runaway bound, up to MAX_DESCENT_GOES holds (the
+        static engine's descents go on alike, `solve.falls`): 'runaway' once a block is the runaway
+        bound from the last accepted state, 'stable' if it stops in equilibrium, else 'timeout'."""
+        self.arch.restore(self._accepted[-1])
+        origin = self.arch.positions()
+        self.arch.restore(self._failures[target])
+        self.arch.stage = Stage.RELAX
+        verdict, holds = Verdict.TIMEOUT, 0
+        while verdict == Verdict.TIMEOUT and holds < MAX_DESCENT_GOES:
+            fallen = float(np.linalg.norm(self.arch.positions() - origin, axis=1).max())
+            if fallen >= self.runaway:
+                verdict = Verdict.RUNAWAY
+                break
+            verdict = stable_tangent(self.arch, self.arch.hold(runaway=self.runaway - fallen, from_rest=False))
+            holds += 1
+            if verdict == Verdict.TIMEOUT and self.arch.hold_move < FALLING_FRACTION * self.runaway:
+                break  # no longer falling
+        self.arch.log(f"[{self.arch.case.name}] held on at {self._said(target)} for {holds} hold(s): {verdict}")
+        if verdict != Verdict.STABLE:
+            self._failures[target] = self.arch.snapshot()
+        self._at_accepted = False
+        return verdict
 
     def discard(self) -> None:
         """Drop the last accepted state (it did not settle): the one before is the accepted one."""

@@ -136,6 +136,10 @@ class Runner:
         self._advance(n)
         self.recorder.series()
 
+    def positions(self) -> np.ndarray:
+        """The voussoirs' centroids now (n, 3; m)."""
+        return self._voussoir_positions()
+
     def _voussoir_positions(self) -> np.ndarray:
         """Current voussoir centroids (n, 3); a NaN ends the run (the law calls exit(1) on NaN)."""
         from yade import O

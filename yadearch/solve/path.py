@@ -42,6 +42,10 @@ class EquilibriumOracle(Protocol):
     def discard(self) -> None:
         """Drop the accepted state: the one accepted before it is the accepted state again."""
 
+    def resolve(self, target: float) -> Verdict:
+        """Go on with the failure at `target` that found neither equilibrium nor runaway while the arch
+        is still falling, up to the oracle's budget: its verdict then."""
+
 
 @dataclass(frozen=True)
 class PathSettings:
@@ -224,4 +228,6 @@ def follow_path(
             ran_away = target == result.upper and result.failure == Verdict.RUNAWAY
             result.upper, result.upper_from = target, result.lower
             result.failure = Verdict.RUNAWAY if ran_away else verdict
+    if result.unresolved and oracle.resolve(result.upper) == Verdict.RUNAWAY:
+        result.failure = Verdict.RUNAWAY  # the slow fall, followed further, ran away
     return result

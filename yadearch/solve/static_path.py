@@ -223,6 +223,10 @@ class StaticLoading:
         """A static equilibrium is at rest already: nothing creeps."""
         return True
 
+    def resolve(self, target: float) -> Verdict:
+        """A static failure has gone on while it fell already (`solve.falls`): it stays as it is."""
+        return Verdict.TIMEOUT
+
     def discard(self) -> None:
         self.accepted.pop()  # with the snaps made on its way: they are no longer on the path
         self.snaps = [s for s in self.snaps if units.mm(s["fold_mm"][1]) <= self.accepted[-1].lam]
