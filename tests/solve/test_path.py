@@ -168,6 +168,29 @@ def test_a_slow_failure_followed_further_that_runs_away_is_a_collapse():
     assert result.lower <= 40.0 < result.upper <= 40.0 + SETTINGS.tolerance
 
 
+def test_a_slow_snap_that_comes_to_rest_when_followed_further_is_survived():
+    class SlowSnap(FakeArch):
+        """Past 30 mm its relaxations time out (a slow snap) until one is followed to rest."""
+
+        passed = False
+
+        def try_increment(self, target: float) -> str:
+            if target > 30.0 and not self.passed:
+                self.tries.append((self.accepted, target))
+                self.reached, self.reached_from = target, self.accepted
+                return Verdict.TIMEOUT
+            return super().try_increment(target)
+
+        def resolve(self, target: float) -> str:
+            self.passed = True
+            return Verdict.STABLE
+
+    arch = SlowSnap(40.0)
+    result = follow_path(arch, SETTINGS)
+    assert arch.passed and any(30.0 < e <= 30.2 for e in result.equilibria)  # accepted where it came to rest
+    assert result.collapsed and result.lower <= 40.0 < result.upper <= 40.0 + SETTINGS.tolerance
+
+
 def test_no_collapse_up_to_the_maximum_displacement():
     result = follow_path(FakeArch(500.0), SETTINGS)
     assert not result.collapsed and math.isinf(result.du)

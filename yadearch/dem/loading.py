@@ -11,7 +11,7 @@ from yadearch.case.support import path_end_mm
 from yadearch.dem.live_arch import SETTLE_TOLERANCE_FACTOR, LiveArch, stable_tangent
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
-from yadearch.solve.falls import FALLING_FRACTION, MAX_DESCENT_GOES
+from yadearch.solve.falls import MAX_DESCENT_GOES
 from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, follow_path, path_settings
 from yadearch.solve.stages import Stage, Verdict
 
@@ -161,15 +161,15 @@ class EquilibriumPath:
         return True
 
     def resolve(self, target: float) -> Verdict:
-        """Hold on with the failure at `target` that found neither equilibrium nor runaway while its holds
-        still move a block FALLING_FRACTION of the runaway bound, up to MAX_DESCENT_GOES holds (the
-        static engine's descents go on alike, `solve.falls`): 'runaway' once a block is the runaway
-        bound from the last accepted state, 'stable' if it stops in equilibrium, else 'timeout'."""
+        """Hold on with the failure at `target` that found neither equilibrium nor runaway, the blocks in
+        their motion, up to MAX_DESCENT_GOES holds (the static engine's descents go on alike,
+        `solve.falls`): 'runaway' once a block is the runaway bound from the last accepted state,
+        'stable' where it comes to rest (a slow snap survived, recorded as one), else 'timeout'."""
         self.arch.restore(self._accepted[-1])
         origin = self.arch.positions()
         self.arch.restore(self._failures[target])
         self.arch.stage = Stage.RELAX
-        verdict, holds = Verdict.TIMEOUT, 0
+        verdict, holds, fallen = Verdict.TIMEOUT, 0, 0.0
         while verdict == Verdict.TIMEOUT and holds < MAX_DESCENT_GOES:
             fallen = float(np.linalg.norm(self.arch.positions() - origin, axis=1).max())
             if fallen >= self.runaway:
@@ -177,12 +177,15 @@ class EquilibriumPath:
                 break
             verdict = stable_tangent(self.arch, self.arch.hold(runaway=self.runaway - fallen, from_rest=False))
             holds += 1
-            if verdict == Verdict.TIMEOUT and self.arch.hold_move < FALLING_FRACTION * self.runaway:
-                break  # no longer falling
         self.arch.log(f"[{self.arch.case.name}] held on at {self._said(target)} for {holds} hold(s): {verdict}")
+        self._at_accepted = False
+        fallen = float(np.linalg.norm(self.arch.positions() - origin, axis=1).max())
         if verdict != Verdict.STABLE:
             self._failures[target] = self.arch.snapshot()
-        self._at_accepted = False
+        elif fallen > SNAP_THICKNESS_FRACTION * units.mm(self.arch.case.geometry.thickness_mm):
+            self._trial_snaps.append(
+                {"fold_mm": [units.to_mm(self._start), units.to_mm(target)], "move_mm": units.to_mm(fallen)}
+            )
         return verdict
 
     def discard(self) -> None:

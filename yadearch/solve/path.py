@@ -43,8 +43,8 @@ class EquilibriumOracle(Protocol):
         """Drop the accepted state: the one accepted before it is the accepted state again."""
 
     def resolve(self, target: float) -> Verdict:
-        """Go on with the failure at `target` that found neither equilibrium nor runaway while the arch
-        is still falling, up to the oracle's budget: its verdict then."""
+        """Go on with the failure at `target` that found neither equilibrium nor runaway, up to the
+        oracle's budget: 'runaway', 'timeout', or 'stable' with that state live (then accepted)."""
 
 
 @dataclass(frozen=True)
@@ -182,11 +182,24 @@ def follow_path(
     increment = settings.first_increment
     settled = False  # the accepted state has been settled completely
     firm_upper = math.inf  # the lowest discarded state: no equilibrium there, whatever the path
+    resolved = math.nan  # where a slow failure was followed further (`EquilibriumOracle.resolve`)
     while True:
         narrow = result.upper - result.lower <= settings.tolerance
         if narrow and (result.upper_from >= result.lower or result.upper >= firm_upper):
             if settled or not result.equilibria:
-                break
+                if not result.unresolved or resolved == result.upper:
+                    break
+                resolved = result.upper  # a slow failure: followed further, once
+                verdict = oracle.resolve(result.upper)
+                if verdict != Verdict.STABLE:
+                    result.failure = Verdict.RUNAWAY if verdict == Verdict.RUNAWAY else result.failure
+                    break
+                oracle.accept()  # it came to rest there: a snap survived, the path goes on from it
+                result.equilibria.append(result.upper)
+                result.lower, result.upper, result.upper_from = result.upper, firm_upper, math.inf
+                result.failure = Verdict.RUNAWAY if math.isfinite(firm_upper) else None
+                settled, increment = False, 2.0 * settings.tolerance
+                continue
             settled = True
             if oracle.settle():
                 if result.upper < firm_upper and not oracle.at_rest_when_accepted:
@@ -228,6 +241,4 @@ def follow_path(
             ran_away = target == result.upper and result.failure == Verdict.RUNAWAY
             result.upper, result.upper_from = target, result.lower
             result.failure = Verdict.RUNAWAY if ran_away else verdict
-    if result.unresolved and oracle.resolve(result.upper) == Verdict.RUNAWAY:
-        result.failure = Verdict.RUNAWAY  # the slow fall, followed further, ran away
     return result
