@@ -151,6 +151,8 @@ def main() -> int:
     write_csv_atomically(out / "hinges.csv", pd.concat(hinges, ignore_index=True))
     if confirmations:
         write_csv_atomically(out / "confirmations.csv", pd.DataFrame(confirmations))
+    kept = args.no_dem and (out / "confirmations.csv").is_file()  # the DEM's, from its last run
+    table = pd.read_csv(out / "confirmations.csv") if kept else pd.DataFrame(confirmations)
     amplitude_panels_figure(panels, out / FIGURE, target, f"set 1 experiment, {target} mm")
     write_text_atomically(
         out / REPORT,
@@ -158,10 +160,11 @@ def main() -> int:
             levels,
             pd.DataFrame(matches),
             pd.concat(hinges, ignore_index=True),
-            pd.DataFrame(confirmations),
+            table,
             perfect,
             target,
             FIGURE,
+            kept=kept,
         ),
     )
     print((out / REPORT).read_text())

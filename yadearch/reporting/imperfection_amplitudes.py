@@ -32,9 +32,11 @@ def amplitudes_markdown(
     perfect_du_mm: float,
     target: float,
     figure: str,
+    kept: bool = False,
 ) -> str:
     """The study's report: per kind its levels, the matching amplitude and whether it is plausible,
-    the hinges at the nearest level against set 1's experiment, then the DEM confirmations."""
+    the hinges at the nearest level against set 1's experiment, then the DEM confirmations (`kept`: read
+    back from an earlier run, not made by this one)."""
     lines = [
         "# Set 1 from imperfections of measured size",
         "",
@@ -71,8 +73,9 @@ def amplitudes_markdown(
         lines += [f"| {r.hinge} | {r.experiment} | {r.within_one:.0%} | {r.most_frequent} |" for r in at.itertuples()]
         lines.append("")
     if not confirmations.empty:
+        source = " (kept from the last run with the DEM, confirmations.csv)" if kept else ""
         lines += [
-            "## DEM confirmations (same seeds)",
+            f"## DEM confirmations (same seeds){source}",
             "",
             "| kind | amplitude | seeds | static median (mm) | DEM median (mm) | DEM - static | within 3 % "
             "| DEM time (s) | static time (s) |",
