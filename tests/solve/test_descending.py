@@ -13,7 +13,14 @@ from yadearch.errors import CampaignError
 from yadearch.solve.descending import DescentEnd, descend
 from yadearch.solve.four_bar import rigid_softening
 from yadearch.solve.load_lp import load_analysis
-from yadearch.solve.load_path import DESCENDING, live_work, load_scale, load_settings, static_load_path
+from yadearch.solve.load_path import (
+    DESCENDING,
+    live_work,
+    load_scale,
+    load_settings,
+    load_the_live_load,
+    static_load_path,
+)
 from yadearch.solve.path import follow_path
 from yadearch.solve.static_path import StaticLoading
 
@@ -29,7 +36,7 @@ def _collapsed(overrides: dict) -> tuple[StaticLoading, float]:
     case = preset("set2").with_overrides(overrides)
     loading = StaticLoading.of(case)
     loading.selfweight()
-    loading.load_the_live_load(load_settings(load_scale(load_analysis(case)), case.numerics.increment_growth))
+    load_the_live_load(loading, load_settings(load_scale(load_analysis(case)), case.numerics.increment_growth))
     path = follow_path(loading, loading.settings)
     assert path.collapsed
     return loading, path.du

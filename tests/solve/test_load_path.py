@@ -15,7 +15,7 @@ from yadearch.case.config import preset
 from yadearch.case.mechanics import runaway_length
 from yadearch.solve import banded
 from yadearch.solve.load_lp import load_analysis, residual_capacity
-from yadearch.solve.load_path import live_work, load_settings, static_load_path
+from yadearch.solve.load_path import live_work, load_settings, load_the_live_load, static_load_path
 from yadearch.solve.path import follow_path, path_settings
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.statics import static_arch
@@ -34,7 +34,7 @@ def _loaded(overrides: dict, kn: float = 5.2) -> StaticLoading:
     case = preset("set2").with_overrides({**overrides, "interface.kn_N_per_mm3": kn})
     loading = StaticLoading(static_arch(case), path_settings(case.numerics, 10.0), runaway_length(case))
     loading.selfweight()
-    loading.load_the_live_load(load_settings(load_analysis(case).multiplier, case.numerics.increment_growth))
+    load_the_live_load(loading, load_settings(load_analysis(case).multiplier, case.numerics.increment_growth))
     return loading
 
 

@@ -71,13 +71,7 @@ class EquilibriumPath:
             if verdict != Verdict.STABLE:
                 break
             if self._snapped(high - low):
-                self._trial_snaps.append(
-                    {"fold_mm": [units.to_mm(low), units.to_mm(high)], "move_mm": units.to_mm(self.arch.hold_move)}
-                )
-                self.arch.log(
-                    f"[{self.arch.case.name}] a snap between {self._said(low)} and {self._said(high)}: a block "
-                    f"moved {units.to_mm(self.arch.hold_move):.3f} mm"
-                )
+                self._record_snap(low, high, self.arch.hold_move)
             if high >= target:
                 break
             start, base = high, self.arch.snapshot()
@@ -105,8 +99,20 @@ class EquilibriumPath:
     def _snapped(self, increment: float) -> bool:
         """Whether the last relaxation moved a block further than 0.01 ring thickness and than the
         increment moves a block quasi-statically: a snap to another branch, not a step along one."""
-        floor = SNAP_THICKNESS_FRACTION * units.mm(self.arch.case.geometry.thickness_mm)
-        return self.arch.hold_move > max(floor, self.arch.reach(increment))
+        return self.arch.hold_move > max(self._snap_floor(), self.arch.reach(increment))
+
+    def _snap_floor(self) -> float:
+        """The smallest block move that counts as a snap: SNAP_THICKNESS_FRACTION x the ring's thickness (m)."""
+        return SNAP_THICKNESS_FRACTION * units.mm(self.arch.case.geometry.thickness_mm)
+
+    def _record_snap(self, low: float, high: float, move: float) -> None:
+        """A snap between path positions `low` and `high` that moved a block `move` (m), on the way of
+        the increment being tried (kept if it is accepted), and its log line."""
+        self._trial_snaps.append({"fold_mm": [units.to_mm(low), units.to_mm(high)], "move_mm": units.to_mm(move)})
+        self.arch.log(
+            f"[{self.arch.case.name}] a snap between {self._said(low)} and {self._said(high)}: a block "
+            f"moved {units.to_mm(move):.3f} mm"
+        )
 
     def _locate_fold(self, base: dict, start: float, target: float) -> tuple[float, dict, float]:
         """Bisect [start, target] (the live state `base` at `start`) by increments relaxed without a
@@ -169,7 +175,7 @@ class EquilibriumPath:
         origin = self.arch.positions()
         self.arch.restore(self._failures[target])
         self.arch.stage = Stage.RELAX
-        verdict, holds, fallen = Verdict.TIMEOUT, 0, 0.0
+        verdict, holds = Verdict.TIMEOUT, 0
         while verdict == Verdict.TIMEOUT and holds < MAX_DESCENT_GOES:
             fallen = float(np.linalg.norm(self.arch.positions() - origin, axis=1).max())
             if fallen >= self.runaway:
@@ -182,10 +188,8 @@ class EquilibriumPath:
         fallen = float(np.linalg.norm(self.arch.positions() - origin, axis=1).max())
         if verdict != Verdict.STABLE:
             self._failures[target] = self.arch.snapshot()
-        elif fallen > SNAP_THICKNESS_FRACTION * units.mm(self.arch.case.geometry.thickness_mm):
-            self._trial_snaps.append(
-                {"fold_mm": [units.to_mm(self._start), units.to_mm(target)], "move_mm": units.to_mm(fallen)}
-            )
+        elif fallen > self._snap_floor():
+            self._record_snap(self._start, target, fallen)
         return verdict
 
     def discard(self) -> None:

@@ -26,7 +26,7 @@ from yadearch.solve.path import PathResult, PathSettings, first_snap, follow_pat
 from yadearch.solve.rigid import LimitError
 from yadearch.solve.stages import Outcome
 from yadearch.solve.static_path import StaticLoading
-from yadearch.solve.static_state import StaticState
+from yadearch.solve.static_state import PathParameter, StaticState
 from yadearch.solve.statics import StaticArch
 
 FIRST_FRACTION = 0.05  # the load's first increment: this x the load scale (the rigid capacity)
@@ -95,7 +95,7 @@ def static_load_path(
     loading.selfweight()
     if after_mm > 0.0:
         _move_supports(loading, case, after_mm)
-    loading.load_the_live_load(load_settings(scale, num.increment_growth))
+    load_the_live_load(loading, load_settings(scale, num.increment_growth))
     start = loading.accepted[0]
     path = follow_path(loading, loading.settings)
     mode = loading.fold_mode(path.upper) if path.collapsed else None
@@ -152,9 +152,9 @@ def hold_the_live_load(loading: StaticLoading, case: ArchCase) -> float:
     movement); the value. CaseError if the arch does not carry it."""
     held = held_multiplier(case)
     moving = loading.settings
-    loading.load_the_live_load(held_load_settings(case))
+    load_the_live_load(loading, held_load_settings(case))
     check_held(loading.follow(), case)
-    loading.move_the_supports(moving)
+    move_the_supports(loading, moving)
     return held
 
 
@@ -218,3 +218,25 @@ def live_work(arch: StaticArch, u0: np.ndarray, u: np.ndarray) -> float:
     pos0, turn0 = arch.poses(u0)
     pos, turn = arch.poses(u)
     return load_displacement(arch.live, pos0, turn0, pos, turn)
+
+
+def load_the_live_load(loading: StaticLoading, settings: PathSettings) -> None:
+    """From `loading`'s last accepted state on, the path's parameter is the live load's multiplier (from 0,
+    in `settings`' units), the supports held where they are: movement, then load."""
+    support = loading.parameter.support(loading.accepted[-1].lam)
+    _go_on(loading, PathParameter(live=True, support_at=support), settings, 0.0)
+
+
+def move_the_supports(loading: StaticLoading, settings: PathSettings) -> None:
+    """From `loading`'s last accepted state on (a live load grown to its multiplier there), the path's
+    parameter is the supports' movement from where they stand, the load held: load, then movement."""
+    lam = loading.accepted[-1].lam
+    support = loading.parameter.support(lam)
+    _go_on(loading, PathParameter(support_at=support, held=loading.parameter.multiplier(lam)), settings, support)
+
+
+def _go_on(loading: StaticLoading, parameter: PathParameter, settings: PathSettings, lam: float) -> None:
+    """`loading`'s path goes on from its last accepted state, now at `lam` of the new `parameter`."""
+    loading.parameter, loading.settings = parameter, settings
+    loading.accepted = [replace(loading.accepted[-1], lam=lam)]
+    loading.failures, loading.snaps = {}, []

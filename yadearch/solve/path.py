@@ -191,13 +191,14 @@ def follow_path(
                     break
                 resolved = result.upper  # a slow failure: followed further, once
                 verdict = oracle.resolve(result.upper)
+                if verdict == Verdict.RUNAWAY:
+                    result.failure = Verdict.RUNAWAY
                 if verdict != Verdict.STABLE:
-                    result.failure = Verdict.RUNAWAY if verdict == Verdict.RUNAWAY else result.failure
                     break
                 oracle.accept()  # it came to rest there: a snap survived, the path goes on from it
                 result.equilibria.append(result.upper)
-                result.lower, result.upper, result.upper_from = result.upper, firm_upper, math.inf
-                result.failure = Verdict.RUNAWAY if math.isfinite(firm_upper) else None
+                result.lower = result.upper
+                _reopen(result, firm_upper)
                 settled, increment = False, 2.0 * settings.tolerance
                 continue
             settled = True
@@ -232,8 +233,7 @@ def follow_path(
             settled = False
             result.equilibria.append(target)
             if target >= result.upper:  # the retried failure holds: the path goes on from here
-                result.upper, result.upper_from = firm_upper, math.inf
-                result.failure = Verdict.RUNAWAY if math.isfinite(firm_upper) else None
+                _reopen(result, firm_upper)
                 increment = 2.0 * settings.tolerance
             result.lower = target
             increment = min(increment * settings.growth, settings.max_increment)
@@ -242,3 +242,10 @@ def follow_path(
             result.upper, result.upper_from = target, result.lower
             result.failure = Verdict.RUNAWAY if ran_away else verdict
     return result
+
+
+def _reopen(result: PathResult, firm_upper: float) -> None:
+    """The path goes on past `result.upper`: its upper end is the lowest state that ran away while
+    settling (a runaway, whatever the path), or none."""
+    result.upper, result.upper_from = firm_upper, math.inf
+    result.failure = Verdict.RUNAWAY if math.isfinite(firm_upper) else None

@@ -14,7 +14,7 @@ increment unresolved, never collapsed.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -263,25 +263,6 @@ class StaticLoading:
     def place(self, u: np.ndarray, lam: float) -> np.ndarray:
         """`u` with the supports where the path's parameter `lam` puts them."""
         return self.arch.with_supports(u, self.parameter.support(lam))
-
-    def load_the_live_load(self, settings: PathSettings) -> None:
-        """From the last accepted state on, the path's parameter is the live load's multiplier (from 0,
-        in `settings`' units), the supports held where they are: movement, then load."""
-        support = self.parameter.support(self.accepted[-1].lam)
-        self._go_on(PathParameter(live=True, support_at=support), settings, 0.0)
-
-    def move_the_supports(self, settings: PathSettings) -> None:
-        """From the last accepted state on (a live load grown to its multiplier there), the path's
-        parameter is the supports' movement from where they stand, the load held: load, then movement."""
-        lam = self.accepted[-1].lam
-        support = self.parameter.support(lam)
-        self._go_on(PathParameter(support_at=support, held=self.parameter.multiplier(lam)), settings, support)
-
-    def _go_on(self, parameter: PathParameter, settings: PathSettings, lam: float) -> None:
-        """The path goes on from its last accepted state, now at `lam` of the new `parameter`."""
-        self.parameter, self.settings = parameter, settings
-        self.accepted = [replace(self.accepted[-1], lam=lam)]
-        self.failures, self.snaps = {}, []
 
     # ---- the whole path ---------------------------------------------------------------------------
     def follow(self, on_step: Callable[[PathStep], None] | None = None) -> PathResult:
