@@ -14,6 +14,7 @@ matplotlib.use("Agg")
 from yadearch.analysis.blocks import case_geometry  # noqa: E402
 from yadearch.analysis.run import analyse_run  # noqa: E402
 from yadearch.plotting.animation import FRAME_CM  # noqa: E402
+from yadearch.plotting.blocks import BLOCKS_GID  # noqa: E402
 from yadearch.plotting.house import new_figure  # noqa: E402
 from yadearch.plotting.labels import label_clashes  # noqa: E402
 from yadearch.plotting.states import (  # noqa: E402
@@ -60,8 +61,8 @@ def test_a_label_on_a_block_is_found():
     run = read_run(REPORTS / "set2")
     fig = strip_figure(run, analyse_run(run))
     ax = fig.axes[0]
-    blocks = [p for p in ax.patches if p.get_fill()]  # the deformed arch's blocks (the outline is dashed)
-    block = blocks[len(blocks) // 2].get_xy()
+    (blocks,) = [c for c in ax.collections if c.get_gid() == BLOCKS_GID]  # the deformed arch's blocks
+    block = blocks.get_paths()[len(blocks.get_paths()) // 2].vertices
     ax.annotate("on a block", block.mean(axis=0), fontsize=TEXT_PT)
     assert any("on a block" in clash for clash in label_clashes(fig))
 

@@ -10,8 +10,11 @@ from matplotlib.backend_bases import RendererBase
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
+from matplotlib.path import Path
 from matplotlib.text import Annotation, Text
 from matplotlib.transforms import Bbox
+
+from yadearch.plotting.blocks import BLOCKS_GID
 
 TURNS_DEG = (0.0, 45.0, -45.0, 90.0, -90.0, 135.0, -135.0, 180.0)  # tried in turn from the preferred side
 PAD_PX = 1.0  # a label this close to something touches it
@@ -95,8 +98,20 @@ def _clashes(ax: Axes, text: Text, renderer: RendererBase) -> bool:
     others = (t for t in ax.texts if t is not text and t.get_text().strip() and t.get_visible())
     if any(box.overlaps(t.get_window_extent(renderer)) for t in others):
         return True
-    blocks = (p for p in ax.patches if isinstance(p, Polygon) and p.get_fill())
-    return any(p.get_transform().transform_path(p.get_path()).intersects_bbox(box, filled=True) for p in blocks)
+    return any(path.intersects_bbox(box, filled=True) for path in _block_paths(ax))
+
+
+def _block_paths(ax: Axes) -> list[Path]:
+    """The outlines of the axes' filled blocks in display coordinates: filled polygon patches and the
+    blocks' collection (`plotting.blocks`)."""
+    paths = [
+        p.get_transform().transform_path(p.get_path()) for p in ax.patches if isinstance(p, Polygon) and p.get_fill()
+    ]
+    for collection in ax.collections:
+        if collection.get_gid() == BLOCKS_GID:
+            transform = collection.get_transform()
+            paths.extend(transform.transform_path(path) for path in collection.get_paths())
+    return paths
 
 
 def _inside(box: Bbox, frame: Bbox) -> bool:

@@ -7,17 +7,17 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-from matplotlib.patches import FancyArrow, Polygon
+from matplotlib.patches import FancyArrow
 
 from yadearch.case.config import ArchCase
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.loads import VERTICAL, extrados_segments, on_segment
+from yadearch.plotting.blocks import draw_blocks
 from yadearch.plotting.house import COLUMN_CM, THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
 from yadearch.plotting.labels import layout, place_label
 from yadearch.solve.load_lp import LoadCapacity
 
 MM = 1e3
-BLOCK_COLOUR, SUPPORT_COLOUR = "#EADDCA", "0.45"
 LABEL_PT, OFFSET_PT = 7, 5
 HEIGHT_CM = 6.5
 GAP = 0.01  # of the span: between the load's arrow and the extrados
@@ -37,10 +37,7 @@ def plot_load_collapse(case: ArchCase, geometry: ArchGeometry, result: LoadCapac
     """STEM.pdf and .png: the arch, the thrust line at collapse, the hinges and the load."""
     fig = new_figure(height_cm=HEIGHT_CM, width_cm=COLUMN_CM)
     ax = fig.add_subplot()
-    last = len(geometry.blocks) - 1
-    for b, vertices in enumerate(geometry.blocks):
-        colour = SUPPORT_COLOUR if b in (0, last) else BLOCK_COLOUR
-        ax.add_patch(Polygon(vertices[: len(vertices) // 2, :2] * MM, closed=True, fc=colour, ec="0.2", lw=0.3))
+    draw_blocks(ax, [vertices[: len(vertices) // 2, :2] * MM for vertices in geometry.blocks], edge="0.2")
     points = thrust_points(geometry, result)
     ax.plot(points[:, 0], points[:, 1], "-", color=THRUST_COLOUR, lw=0.9, label="thrust line at collapse")
     labels = []

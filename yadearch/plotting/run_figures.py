@@ -13,11 +13,11 @@ import numpy as np
 import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
-from matplotlib.patches import Polygon
 
 from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
 from yadearch.errors import RunFolderError
+from yadearch.plotting.blocks import block_legend_entries, draw_blocks
 from yadearch.plotting.hinge_marks import mark_hinge
 from yadearch.plotting.house import (
     AXIS_MARGINS_CM,
@@ -113,17 +113,8 @@ def collapse_figure(
         axes_width_cm = width_cm - AXIS_MARGINS_CM[0]
         height_cm = axes_width_cm * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1]
         ax = new_figure(height_cm=height_cm, width_cm=width_cm).add_subplot()
-    n_blocks = len(geometry.blocks)
-    for b, (vertices, moved) in enumerate(zip(geometry.blocks, outlines)):
-        support = b in (0, n_blocks - 1)
-        ax.add_patch(
-            Polygon(
-                vertices[: len(vertices) // 2, :2] * 1e3, closed=True, fill=False, ec="0.65", lw=0.4, ls="--", zorder=1
-            )
-        )
-        ax.add_patch(
-            Polygon(moved * 1e3, closed=True, fc="0.45" if support else "#EADDCA", ec="0.15", lw=0.3, zorder=2)
-        )
+    undeformed = [vertices[: len(vertices) // 2, :2] * 1e3 for vertices in geometry.blocks]
+    draw_blocks(ax, [moved * 1e3 for moved in outlines], undeformed)
     pivots = {side: joint_points(geometry, state, side) * 1e3 for side in ("I", "E")}
     for k, track in enumerate(analysis.tracks):
         point = pivots[track.side][track.interface - 1]
@@ -134,10 +125,7 @@ def collapse_figure(
             track.side,
             hinge_colour(track.paper_label, k),
         )
-    ax.plot([], [], color="0.65", lw=0.6, ls="--", label="undeformed")
-    ax.add_patch(
-        Polygon(np.zeros((3, 2)), fc="#EADDCA", ec="0.15", lw=0.3, label=rf"$\delta$ = {state['delta_mm']:.2f} mm")
-    )
+    block_legend_entries(ax, rf"$\delta$ = {state['delta_mm']:.2f} mm")
     ax.legend(loc="lower center", ncols=1, handlelength=1.5)  # inside the arch, under the crown
     ax.set_aspect("equal")
     ax.set_xlim(*xlim)

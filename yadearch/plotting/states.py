@@ -12,7 +12,6 @@ import numpy as np
 import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
-from matplotlib.patches import Polygon
 from matplotlib.text import Annotation
 
 from yadearch.analysis import RunAnalysis
@@ -21,13 +20,14 @@ from yadearch.analysis.run import default_thresholds
 from yadearch.errors import RunFolderError
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.hinges import Hinge, hinge_rotation, hinges_at
+from yadearch.plotting.blocks import draw_blocks
 from yadearch.plotting.house import THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
 from yadearch.plotting.labels import layout, place_corner, place_label
 from yadearch.results.rundir import RunFolder
 from yadearch.results.states import RunStates
 
 MM_PER_M = 1e3
-BLOCK_COLOUR, SUPPORT_COLOUR = "#EADDCA", "0.45"
+UNDEFORMED_COLOUR = "0.7"
 UNLABELLED_COLOUR = "0.3"  # a hinge that is not one of the collapse mechanism's A-D
 MARGIN = 0.1  # of the arch's span, above the drawing
 SIDE_MARGIN = 0.15  # of the arch's span, either side: room for the labels of hinges at the springings
@@ -112,24 +112,8 @@ def drawing_limits(geometry: ArchGeometry) -> tuple[tuple[float, float], tuple[f
 def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple, corner: bool = True) -> None:
     """Draw `view` into `ax` to scale, over the undeformed outline, with its place on the path (the
     support displacement, or the load) and the reaction in the lower left corner (`corner`)."""
-    last = len(view.outlines) - 1
-    for b, (vertices, moved) in enumerate(zip(geometry.blocks, view.outlines)):
-        ax.add_patch(
-            Polygon(
-                vertices[: len(vertices) // 2, :2] * MM_PER_M,
-                closed=True,
-                fill=False,
-                ec="0.7",
-                lw=0.4,
-                ls="--",
-                zorder=1,
-            )
-        )
-        ax.add_patch(
-            Polygon(
-                moved, closed=True, fc=SUPPORT_COLOUR if b in (0, last) else BLOCK_COLOUR, ec="0.15", lw=0.3, zorder=2
-            )
-        )
+    undeformed = [vertices[: len(vertices) // 2, :2] * MM_PER_M for vertices in geometry.blocks]
+    draw_blocks(ax, view.outlines, undeformed, undeformed_colour=UNDEFORMED_COLOUR)
     if len(view.thrust):
         ax.plot(view.thrust[:, 0], view.thrust[:, 1], "-", color=THRUST_COLOUR, lw=0.8, zorder=3)
     for interface, side, point, letter, across in view.hinges:

@@ -13,12 +13,12 @@ import matplotlib
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
-from matplotlib.patches import Polygon
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.hinges import paper_labels
+from yadearch.plotting.blocks import block_legend_entries, draw_blocks
 from yadearch.plotting.hinge_marks import mark_hinge
 from yadearch.plotting.house import (
     AXIS_MARGINS_CM,
@@ -34,8 +34,6 @@ from yadearch.solve.limit_result import LimitResult
 from yadearch.solve.rigid import rotate
 
 M_TO_MM = 1e3
-VOUSSOIR_COLOUR, SUPPORT_COLOUR = "#EADDCA", "0.45"
-UNDEFORMED_STYLE = {"fill": False, "ec": "0.65", "lw": 0.4, "ls": "--", "zorder": 1}
 
 
 def placed_outlines(result: LimitResult, geometry: ArchGeometry) -> list[np.ndarray]:
@@ -88,19 +86,7 @@ def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchC
 
 def _draw(ax: Axes, result: LimitResult, undeformed: list[np.ndarray], outlines: list[np.ndarray]) -> None:
     """Blocks, thrust line, hinges and legend."""
-    last = len(outlines) - 1
-    for b, (before, after) in enumerate(zip(undeformed, outlines)):
-        ax.add_patch(Polygon(before, closed=True, **UNDEFORMED_STYLE))
-        ax.add_patch(
-            Polygon(
-                after,
-                closed=True,
-                fc=SUPPORT_COLOUR if b in (0, last) else VOUSSOIR_COLOUR,
-                ec="0.15",
-                lw=0.3,
-                zorder=2,
-            )
-        )
+    draw_blocks(ax, outlines, undeformed)
     thrust = np.array([f.thrust_mm for f in result.forces])
     ax.plot(thrust[:, 0], thrust[:, 1], color=THRUST_COLOUR, lw=0.9, marker="o", ms=1.2, zorder=3, label="thrust line")
     points = hinge_points(result)
@@ -108,8 +94,7 @@ def _draw(ax: Axes, result: LimitResult, undeformed: list[np.ndarray], outlines:
     for k, (label, point) in enumerate(points.items()):
         text = f"{label} (new)" if label in result.new_at_collapse else label
         mark_hinge(ax, point, text, label[-1], hinge_colour(letters.get((int(label[:-1]), label[-1]), ""), k))
-    ax.plot([], [], color="0.65", lw=0.6, ls="--", label="undeformed")
-    ax.add_patch(Polygon(np.zeros((3, 2)), fc=VOUSSOIR_COLOUR, ec="0.15", lw=0.3, label="at the limit"))
+    block_legend_entries(ax, "at the limit")
     ax.legend(loc="lower center", ncols=1, handlelength=1.5)
 
 
