@@ -7,9 +7,12 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+import pandas as pd
 import pytest
 from conftest import needs_yade
 
+from yadearch.api import open_run
 from yadearch.case.config import ArchCase, preset
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import static_load_path
@@ -32,7 +35,7 @@ def test_the_dem_load_path_finds_the_static_capacity_and_hinges():
 
     case = ArchCase(name="segmental_point").with_overrides(POINT)
     static = static_load_path(case)
-    dem, _ = dem_load_path(case, log=lambda line: None)
+    dem, records, defects = dem_load_path(case, log=lambda line: None)
     assert dem.outcome == static.outcome == "collapse"
     assert math.isclose(dem.capacity, static.capacity, rel_tol=ENGINES_TOLERANCE), (dem.capacity, static.capacity)
     assert dem.hinges == static.hinges
@@ -45,6 +48,10 @@ def test_the_dem_load_path_finds_the_static_capacity_and_hinges():
     carried = dem.curve["vertical_reactions_N"] - dem.curve["multiplier"]
     assert (abs(carried / weight - 1.0) < balance).all(), carried.tolist()
     assert (abs(dem.curve["horizontal_reactions_N"]) < balance * weight).all()
+    # its states from the load's start, each with its load: the curve's equilibria, then the collapse
+    path = [s for s in records.states if s["stage"] in ("selfweight", "equilibrium", "collapse")]
+    assert [s["stage"] for s in path[:1] + path[-1:]] == ["selfweight", "collapse"] and defects is None
+    assert [s["load"] for s in path[:-1]] == dem.curve["multiplier"].tolist()
 
 
 def test_a_dem_run_holding_a_load_settles_where_the_static_engine_does(tmp_path):
@@ -64,7 +71,8 @@ def test_a_dem_run_holding_a_load_settles_where_the_static_engine_does(tmp_path)
 
 def test_the_command_runs_the_dem_load_path_in_a_child_and_writes_its_files(tmp_path, capsys):
     """`yadearch loads --engine dem`: the path in a child process, its JSON, curve, log and figure in
-    OUT, the answer said in one line beside the rigid one."""
+    OUT, the answer said in one line beside the rigid one, and its states in OUT/NAME_load_path/ as a
+    run folder (each with its load, the collapse last) that the movie and ParaView export read."""
     import json
 
     from yadearch.cli.commands import main
@@ -81,3 +89,10 @@ def test_the_command_runs_the_dem_load_path_in_a_child_and_writes_its_files(tmp_
     assert written["engine"] == "dem" and written["steps"] > 0
     assert math.isclose(written["collapse_multiplier"], static.capacity, rel_tol=ENGINES_TOLERANCE)
     assert {"csv", "json", "log", "pdf", "png"} <= {p.suffix[1:] for p in tmp_path.glob("set2_load_path.*")}
+    run = open_run(tmp_path / "set2_load_path")
+    states, curve = run.folder.states, pd.read_csv(tmp_path / "set2_load_path.csv")
+    path = states.path()
+    assert states.load_unit == "N" and states.stage[path[0]] == "selfweight" and states.stage[path[-1]] == "collapse"
+    assert np.allclose(states.load[path[:-1]], curve["multiplier"], rtol=1e-5)  # the curve CSV: 6 figures
+    assert run.summary.engine == "dem" and run.summary.hinge_labels == " ".join(written["hinges_at_collapse"])
+    assert len(list(run.export_vtk(tmp_path / "vtk").parent.glob("*.vtu"))) >= len(path)

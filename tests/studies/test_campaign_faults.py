@@ -30,7 +30,7 @@ CAMPAIGN = f"""
 import math, random, shutil, sys, time
 from pathlib import Path
 from yadearch.case.config import preset
-from yadearch.launch.process import _swap_into_place
+from yadearch.launch.process import swap_into_place
 from yadearch.results.rundir import staging_folder, write_run
 from yadearch.results.summary import RunSummary
 from yadearch.studies.campaigns.runner import run_campaign
@@ -49,7 +49,7 @@ def slow_run(case, folder, timeout_s):
     write_run(staging, case.to_toml(), [{{"stage": "equilibrium", "delta_mm": 1.0}}] * 200,
               [{{"stage": "equilibrium", "interface": 1}}] * 200, {{}}, summary)
     time.sleep(random.uniform(0.0, 0.1))
-    _swap_into_place(staging, folder)
+    swap_into_place(staging, folder)
     return {{"status": "done", "reason": ""}}
 
 base = preset("set1").with_overrides({{"n_voussoirs": 15}})

@@ -68,9 +68,9 @@ def load_path(
     rigid capacity of the same state. `engine` 'static': the static engine (seconds, no YADE), its curve
     going on past the peak until the multiplier falls to `descend_to` x the capacity (None: it stops at
     the peak); 'dem': YADE's DEM by load ramps relaxed to equilibrium (a child process, minutes; needs
-    `out`; its curve stops at the peak). With `out`, writes OUT/NAME_load_path.json, .csv (the curve)
-    and its figure .pdf/.png; the static engine also its states as the folder OUT/NAME_load_path/
-    (`open_run(...).animate()`, `.export_vtk()`)."""
+    `out`; its curve stops at the peak). With `out`, writes OUT/NAME_load_path.json, .csv (the curve),
+    its figure .pdf/.png and its states as the folder OUT/NAME_load_path/ (`open_run(...).animate()`,
+    `.export_vtk()`)."""
     check_arguments(after_mm=after_mm, descend_to=descend_to)
     if engine not in LOAD_PATH_ENGINES:
         raise CaseError(f"engine must be one of {', '.join(LOAD_PATH_ENGINES)}, got {engine!r}")

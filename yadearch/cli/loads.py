@@ -36,7 +36,7 @@ ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
     "static engine's path (the DEM's blocks and joints, seconds): first loss of stability, collapse, the "
     "load-displacement curve (NAME_load_path.csv/.json and figure; its states in NAME_load_path/ for `yadearch "
     "animate` and `export`), beside the rigid answer; dem: the same "
-    "path in YADE by load ramps relaxed to equilibrium (minutes)",
+    "path in YADE by load ramps relaxed to equilibrium (minutes; its states too, no descending branch)",
 )
 @click.option(
     "--after-mm",
@@ -115,7 +115,7 @@ def _on_path(case: ArchCase, out: str, after_mm: float, what: str, engine: str, 
     rigid = (
         f"{path.rigid:.4g} {unit} on {path.rigid_hinges}" if math.isfinite(path.rigid) else f"none ({path.rigid_note})"
     )
-    states = f" and its states {out}/{case.name}_load_path/ (yadearch animate, export)" if engine == STATIC else ""
+    states = f" and its states {out}/{case.name}_load_path/ (yadearch animate, export)"
     click.echo(
         f"{case.name}: {what}: {ENGINE_NAMES[engine]}: {outcome}; rigid blocks: {rigid} "
         f"-> {out}/{case.name}_load_path.json{states}"

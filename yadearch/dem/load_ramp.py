@@ -182,10 +182,11 @@ def ramp_rate(case: ArchCase, settings: PathSettings) -> float:
 
 def dem_load_path(
     case: ArchCase, after_mm: float = 0.0, log: Callable[[str], None] = print
-) -> tuple[LoadPath, Records]:
+) -> tuple[LoadPath, Records, dict[str, Any] | None]:
     """The live load of `case` grown to collapse in YADE after the support movement to `after_mm`: the
-    same answer as `solve.load_path.static_load_path` (its `iterations` the DEM's steps), and the
-    run's records (series, joints, snapshots). CaseError as the static engine raises it."""
+    same answer as `solve.load_path.static_load_path` (its `iterations` the DEM's steps), the load
+    path's records (series, joints, snapshots and states from the load's start, each with its load) and
+    the arch's imperfections table (None for a perfect arch). CaseError as the static engine raises it."""
     at_rest = load_analysis(case)  # refuses a case without a live load
     scale = load_scale(at_rest)
     settings = load_settings(scale, case.numerics.increment_growth)
@@ -197,6 +198,8 @@ def dem_load_path(
             _move_supports(runner, after_mm)
         arch = LoadedArch(runner, scene_live_loads(runner), ramp_rate(case, settings))
         runner.position = lambda: f"load={arch.driver.multiplier:7.4g} {unit}"
+        start = Stage.SELFWEIGHT if after_mm == 0.0 else Stage.EQUILIBRIUM
+        _record_from_here(runner, lambda: (arch.driver.multiplier, unit), start)
         loading = EquilibriumPath(arch, settings, unit)
         path = loading.follow()
         hinges = loading.collapse_state(path.upper) if path.collapsed else []
@@ -218,7 +221,18 @@ def dem_load_path(
         engine=DEM,
         **rigid_answer(case, after_mm, at_rest),
     )
-    return result, runner.records
+    defects = runner.scene.imperfections
+    return result, runner.records, defects.table() if defects is not None else None
+
+
+def _record_from_here(runner: Runner, load: Callable[[], tuple[float, str]], stage: Stage) -> None:
+    """Start the run's records afresh at the live load's start (the self-weight and the movement before it
+    are the path's origin, as the static engine's load path keeps them), each row and state with its
+    `load`, the start recorded as the path's first state under `stage`."""
+    runner.recorder.records = Records()
+    runner.recorder.load = load
+    runner.stage = stage
+    runner.recorder.record_equilibrium()
 
 
 def hold_the_live_load(runner: Runner) -> float:

@@ -1,5 +1,6 @@
 """One live load's path in YADE in this process: `python -m yadearch.dem.load_simulate CASE.toml OUT_DIR
-AFTER_MM`, writing OUT_DIR/NAME_load_path.json, .csv and .log (`results.load_path`). Exit code 0: written;
+AFTER_MM`, writing OUT_DIR/NAME_load_path.json, .csv and .log and the folder of its states,
+OUT_DIR/NAME_load_path/ (`results.load_path`). Exit code 0: written;
 1: the run failed (reason on stderr and in the log)."""
 
 from __future__ import annotations
@@ -9,7 +10,7 @@ from pathlib import Path
 
 from yadearch.case.config import load_case
 from yadearch.errors import YadearchError
-from yadearch.results.load_path import load_path_file, write_load_path
+from yadearch.results.load_path import load_path_file, write_load_path, write_load_path_folder
 from yadearch.results.run_log import stamped_log
 
 
@@ -30,11 +31,14 @@ def main(argv: list[str] | None = None) -> int:
 
         try:
             import_yade(case.numerics.threads)
-            result, _ = dem_load_path(case, after_mm, log)
+            result, records, defects = dem_load_path(case, after_mm, log)
         except YadearchError as exc:
             log(f"FAILED: {exc}")
             print(f"error: {exc}", file=sys.stderr)
             return 1
+        write_load_path_folder(
+            out, result, case, records.series, records.joints, records.snapshots, records.states, defects
+        )
         write_load_path(out, result, case)
     return 0
 

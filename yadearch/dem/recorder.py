@@ -16,7 +16,7 @@ from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.results.joint_rows import friction_extremes, joint_rows, joint_snapshot, snapshot_entry
 from yadearch.results.rundir import STIFFNESS_COLUMN
-from yadearch.results.states import state_entry
+from yadearch.results.states import LOAD_COLUMN, state_entry
 from yadearch.solve.stages import Stage
 
 DISCARDED_STAGE = "discarded"  # rows of an accepted state that ran away while settling
@@ -45,6 +45,7 @@ class Recorder:
         self.records = Records()
         self.stage = Stage.SELFWEIGHT
         self.turning: Callable[[], np.ndarray] | None = None  # a held live load's stiffness (`dem.load_ramp`)
+        self.load: Callable[[], tuple[float, str]] | None = None  # a live load's path: its multiplier now, unit
         self.friction: dict = {}
         self._last_series_iter = -(10**9)
 
@@ -97,6 +98,7 @@ class Recorder:
                 "step": O.iter,
                 "time_s": O.time,
                 "delta_mm": units.to_mm(self.driver.displacement()),
+                **self._load_column(),
                 "left_Rx_N": left[0],
                 "left_Ry_N": left[1],
                 "right_Rx_N": right[0],
@@ -145,8 +147,10 @@ class Recorder:
         from yade import O
 
         delta_mm = units.to_mm(self.driver.displacement())
-        self.records.joints.extend(joint_rows(snap, {"stage": self.stage, "step": O.iter, "delta_mm": delta_mm}))
-        self.records.states.append(state_entry(self.stage, O.iter, delta_mm, snap["pos"], snap["rot"]))
+        where = {"stage": self.stage, "step": O.iter, "delta_mm": delta_mm, **self._load_column()}
+        self.records.joints.extend(joint_rows(snap, where))
+        load = self.load() if self.load else None
+        self.records.states.append(state_entry(self.stage, O.iter, delta_mm, snap["pos"], snap["rot"], load))
         if label:
             self.records.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, O.iter)
 
@@ -171,6 +175,13 @@ class Recorder:
         hinges = self.joints(Stage.COLLAPSE)
         self.series(force=True)
         return hinges
+
+    def _load_column(self) -> dict[str, float]:
+        """On a live load's path, the load as the rows give it (the static engine's column); else none."""
+        if self.load is None:
+            return {}
+        value, unit = self.load()
+        return {f"{LOAD_COLUMN}_{unit}": value}
 
     def track_friction(self, snap: dict) -> None:
         """Keep the largest mobilised friction and slip met in the equilibrium states, with their

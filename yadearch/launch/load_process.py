@@ -1,5 +1,6 @@
 """Launch a live load's DEM path in its own Python process (`yadearch.dem.load_simulate`) and read its
-answer back: OUT/NAME_load_path.json, .csv and .log, moved into OUT only once complete."""
+answer back: OUT/NAME_load_path.json, .csv and .log and the folder of its states OUT/NAME_load_path/,
+moved into OUT only once complete."""
 
 from __future__ import annotations
 
@@ -13,7 +14,7 @@ from pathlib import Path
 from yadearch.case.config import ArchCase
 from yadearch.case.plan import check_dem_load
 from yadearch.errors import RunFailedError
-from yadearch.launch.process import check_yade_installed, exit_reason, run_child
+from yadearch.launch.process import check_yade_installed, exit_reason, run_child, swap_into_place
 from yadearch.results.load_path import load_path_file, read_load_path
 from yadearch.results.rundir import CASE_FILE
 from yadearch.solve.load_path import LoadPath
@@ -47,6 +48,7 @@ def run_load_process(
             if load_path_file(staging, case.name, ".log").is_file():
                 shutil.copy(load_path_file(staging, case.name, ".log"), log)
             raise RunFailedError(f"the load path of {case.name!r} failed: {reason} (see {log})")
+        swap_into_place(load_path_file(staging, case.name), load_path_file(out, case.name))  # its states
         for suffix in LOAD_PATH_FILES:
             os.replace(load_path_file(staging, case.name, suffix), load_path_file(out, case.name, suffix))
     finally:

@@ -153,7 +153,7 @@ def _run_locked(
         reason = lines[-1].removeprefix("error: ") if lines else exit_reason(returncode)
         where = _keep_failed(staging, out)
         raise RunFailedError(f"run {case.name!r} failed: {reason} (see {where / LOG_FILE})")
-    _swap_into_place(staging, out)
+    swap_into_place(staging, out)
     return out
 
 
@@ -183,11 +183,11 @@ def _keep_failed(staging: Path, out: Path) -> Path:
     """Where a failed run's folder stays: at `out` unless `out` holds a finished run to protect."""
     if is_complete(out):
         return staging
-    _swap_into_place(staging, out)
+    swap_into_place(staging, out)
     return out
 
 
-def _swap_into_place(staging: Path, out: Path) -> None:
+def swap_into_place(staging: Path, out: Path) -> None:
     """Replace `out` by the `staging` folder (two renames; the old folder is removed after)."""
     previous = out.parent / f"{STAGING_PREFIX}{out.name}{REPLACED_SUFFIX}"
     shutil.rmtree(previous, ignore_errors=True)

@@ -102,8 +102,8 @@ def is_load_path_folder(path: Path) -> bool:
 
 def read_load_path_folder(path: Path) -> RunFolder:
     """A live load's path folder read as a run folder (its states drawn and exported as a run's): the
-    summary says only what the answer says (name, engine, outcome, hinges, the solver's iterations; no
-    du, no wall time), `load_path` holds the answer."""
+    summary says only what the answer says (name, engine, outcome, hinges, the static engine's
+    iterations or the DEM's steps; no du, no wall time), `load_path` holds the answer."""
     path = Path(path)
     file = path / LOAD_PATH_FILE
     try:
@@ -117,7 +117,7 @@ def read_load_path_folder(path: Path) -> RunFolder:
             du_mm=None,
             hinges_at_collapse=tuple(HingeRef(int(h[:-1]), h[-1]) for h in answer["hinges_at_collapse"]),
             collapse_kind=answer["collapse_kind"],
-            steps=int(answer["iterations"]),
+            steps=int(answer["iterations"] if "iterations" in answer else answer["steps"]),  # static / DEM
             wall_s=math.nan,
         )
     except (OSError, ValueError, KeyError, TypeError) as exc:
