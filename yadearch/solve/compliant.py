@@ -23,7 +23,6 @@ from yadearch.solve.rigid import Contacts, Pivot, Placement, RigidArch, contacts
 
 CURVATURE_STEP_RAD = 1e-4  # turn of the chain's first segment for the central differences
 OPENING_PROBE_RAD = 1e-6  # turn that tells which way the chain opens the folding joint
-MIGRATION_REACH = 3  # interfaces a folded joint may take a hinge across (the DEM's crown hinge walks two)
 # measured on the paper's arch: within 0.8 % of the DEM for kn >= 15 N/mm^3, where the largest fold
 # margin met stays below 5 % of the joint; at kn <= 13.3 (5.5 %) the DEM's hinge A sits further from
 # the springing, moved by the whole arch's deformation, which the march ignores (+15-17 %)

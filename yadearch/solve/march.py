@@ -17,7 +17,8 @@ before a block has moved `runaway` (a multiple of the ring's thickness) is the c
 chain at all (a failure of the friction alone: sliding). `first_limit` is the first limit point,
 `snaps` the re-seatings survived. With a joint stiffness `kn` the joints beside the hinges must also
 keep the thrust their fold margin from the edge (`solve.compliant`): a folded joint's chain is
-followed as before (it may climb first and take a hinge up to MIGRATION_REACH joints).
+followed as before (it may climb first and take a hinge to any joint: a snap that lands is survived
+however far it moves), and where it finds no landing the re-seating by the weights decides.
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ import numpy as np
 
 from yadearch.model import units
 from yadearch.solve import compliant
-from yadearch.solve.compliant import MIGRATION_REACH, Margin, folds, joint_margins, opening_chain, potential
+from yadearch.solve.compliant import Margin, folds, joint_margins, opening_chain, potential
 from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
 from yadearch.solve.limit_result import HingeRecord, SnapRecord
 from yadearch.solve.reseat import closing_path, descending_chains, follow_tie, land, migrates
@@ -165,11 +166,13 @@ class March:
             read_at = self.moved(last, mechanism, units.mm(COLLAPSE_PROBE_MM)) or past
             if past is None:
                 return last, read_at, mechanism, self.kinematics(read_at, 0.0) if read_at is not None else None
-            chain = self.fold_chain(past)
+            chain, snapped = self.fold_chain(past), None
             if chain is not None:
                 snapped, jump, chain = self.snap(past, chain, mechanism.pivots)
-            else:
-                snapped, jump, chain = self.reseat(past, read_at or past)
+            if snapped is None:  # no fold, or a fold's snap that finds no landing: the weights decide
+                self.pivots, self.folding = mechanism.pivots, False
+                snapped, jump, descending = self.reseat(past, read_at or past)
+                chain = chain or descending
             if snapped is not None and jump > self.max_snap_mm:
                 self.snap_collapse_mm = jump
             if snapped is None or self.snap_collapse_mm is not None:
@@ -270,8 +273,9 @@ class March:
 
     @property
     def reach(self) -> int:
-        """How many interfaces a folded joint's chain may move a hinge (`snap_rules.moves_a_hinge`)."""
-        return MIGRATION_REACH if self.folding else 1
+        """How many interfaces a chain may move a hinge (`snap_rules.moves_a_hinge`): a folded joint's any
+        number (its landing decides), a rigid re-seating's the next one."""
+        return self.arch.n_joints if self.folding else 1
 
     def switch(self, state: Placement, mechanism: Mechanism | None, jump_mm: float) -> Mechanism:
         """The three-hinge mechanism that follows the support from `state` (the LP's, or one tied with
@@ -284,7 +288,7 @@ class March:
                 f"at {units.to_mm(state.delta):.3f} mm the support is followed by no "
                 f"three-hinge mechanism (hinges: {found})"
             )
-        new = follow_tie(self.arch, state, new)
+        new = follow_tie(self.arch, state, new, lambda placement: self.statics(placement).feasible)
         old = set() if mechanism is None else set(mechanism.pivots)
         self.pivots = new.pivots
         d_mm = units.to_mm(state.delta)

@@ -13,8 +13,9 @@ hinges come first from the left support. A chain that moves a block further than
 multiple of the ring's thickness) before it closes a hinge runs away: the collapse.
 
 The same energy check picks the three-hinge mechanism that follows the support (`follow_tie`): the
-LP's mechanism against the ones with a hinge one or two joints away, compared by the weights'
-potential a small support step on; the LP cannot tell them apart where they tie to first order.
+LP's mechanism against those with one hinge at any other closed joint, either side, compared by the
+weights' potential a small support step on; the LP cannot tell them apart where they tie to first
+order (the keystone's two joints, or a thrust line touching the ring at joints far apart).
 """
 
 from __future__ import annotations
@@ -47,7 +48,6 @@ FOLLOW_PROBE_FRACTION = 1e-2  # support step (of the ring's thickness) at which 
 # arch's weight tie to first order: the keystone's two joints differ by ~1e-8 of it (the rate's
 # O(step^2) error), a hinge one joint further by >1e-4 where the first order decides
 RATE_TIE_FRACTION = 1e-6
-FOLLOW_SHIFTS = (-2, -1, 1, 2)  # joints a hinge of the LP's mechanism is moved to find its ties
 CLOSURE_BISECTIONS = 60  # halvings that put a closing corner on its contact to round-off
 FIRST_TURN_RAD = 1e-7  # the first turn tried when searching where a chain closes a hinge
 SNAP_SAMPLES = 9  # points along a snap where the weights must keep descending
@@ -198,42 +198,58 @@ def land(arch: RigidArch, state: Placement, chain: Mechanism, origin: Placement,
     return Landing(path[-1], pivots, chain, float(height[-1]), move)
 
 
+def _tie_candidates(pivots: tuple[Pivot, ...], closed: np.ndarray) -> list[tuple[Pivot, ...]]:
+    """The LP's `pivots` and every linkage with one of them, at a joint still `closed`, moved to another
+    closed joint on either side (each once, sorted)."""
+    found = {tuple(sorted(pivots))}
+    for k, pivot in enumerate(pivots):
+        others = pivots[:k] + pivots[k + 1 :]
+        if not closed[pivot.joint]:
+            continue
+        taken = {p.joint for p in others}
+        for joint in np.flatnonzero(closed):
+            if int(joint) not in taken:
+                found.update(tuple(sorted((*others, Pivot(int(joint), side)))) for side in (0, 1))
+    return sorted(found)
+
+
 def rank_landings(arch: RigidArch, landings: list[Landing]) -> list[Landing]:
     """Landings from the lowest weights up; ties go to the hinges nearest the left support."""
     return _ranked(landings, lambda g: g.energy, lambda g: g.pivots, energy_tolerance(arch))
 
 
-def follow_tie(arch: RigidArch, state: Placement, mechanism: Mechanism) -> Mechanism:
-    """The three-hinge mechanism to follow from `state`: the LP's `mechanism`, or one with a hinge
-    still closed moved one or two joints (`FOLLOW_SHIFTS`) whose first-order energy rate ties with it
-    (within RATE_TIE_FRACTION of the weight) and whose weights sit lower a step `FOLLOW_PROBE_FRACTION`
-    of the ring's thickness on: of two tied mechanisms the higher would re-seat into the lower at the
-    fixed support. Ties of the second order go to the hinges nearest the left support."""
+def follow_tie(
+    arch: RigidArch, state: Placement, mechanism: Mechanism, admissible: Callable[[Placement], bool]
+) -> Mechanism:
+    """The three-hinge mechanism to follow from `state`: the LP's `mechanism`, or one with a hinge moved
+    to any other closed joint (either side) whose first-order energy rate ties with it (within
+    RATE_TIE_FRACTION of the weight) and whose weights sit lower a step `FOLLOW_PROBE_FRACTION` of the
+    ring's thickness on, where it must still hold an `admissible` equilibrium (a first-order tie within
+    the tolerance is not an exact one): of two tied mechanisms the higher would re-seat into the lower
+    at the fixed support. Ties of the second order go to the hinges nearest the left support."""
     step = FOLLOW_PROBE_FRACTION * arch.geometry.thickness
-    touching = contacts(arch, state).touching
+    closed = contacts(arch, state).touching.all(axis=1)  # only a hinge still closed can form elsewhere
     e0 = potential(arch, state)
     options: dict[tuple[Pivot, ...], tuple[float, float]] = {}  # first-order rate (N), energy at 2 steps (J)
-    for k, pivot in enumerate(mechanism.pivots):
-        for shift in (0, *FOLLOW_SHIFTS):
-            moved = Pivot(pivot.joint + shift, pivot.side)
-            others = mechanism.pivots[:k] + mechanism.pivots[k + 1 :]
-            if not 0 <= moved.joint < arch.n_joints or moved.joint in {p.joint for p in others}:
-                continue
-            if shift and not (touching[moved.joint].all() and touching[pivot.joint].all()):
-                continue  # only a hinge still closed can form elsewhere (an open joint is a hinge)
-            pivots = tuple(sorted((*others, moved)))
-            if pivots in options:
-                continue
-            one, two = (close_linkage(arch, state, pivots, state.delta + n * step) for n in (1, 2))
-            if one is None or two is None or penetrates(arch, state, one, step / arch.geometry.span):
-                continue
-            e1, e2 = potential(arch, one) - e0, potential(arch, two) - e0
-            options[pivots] = ((4.0 * e1 - e2) / (2.0 * step), e2)  # the rate to O(step^2)
+    ahead: dict[tuple[Pivot, ...], Placement] = {}  # each option's placement two steps on
+    for pivots in _tie_candidates(mechanism.pivots, closed):
+        one, two = (close_linkage(arch, state, pivots, state.delta + n * step) for n in (1, 2))
+        if one is None or two is None or penetrates(arch, state, one, step / arch.geometry.span):
+            continue
+        e1, e2 = potential(arch, one) - e0, potential(arch, two) - e0
+        options[pivots], ahead[pivots] = ((4.0 * e1 - e2) / (2.0 * step), e2), two  # the rate to O(step^2)
     if len(options) < 2:
         return mechanism
     weight = float(arch.weight.sum())
     low = min(rate for rate, _ in options.values())
-    tied = [p for p, (rate, _) in options.items() if rate - low <= RATE_TIE_FRACTION * weight]
+    own = tuple(sorted(mechanism.pivots))
+    tied = [
+        p
+        for p, (rate, _) in options.items()
+        if rate - low <= RATE_TIE_FRACTION * weight and (p == own or admissible(ahead[p]))
+    ]
+    if not tied:
+        return mechanism
     best = _ranked(tied, lambda p: options[p][1], lambda p: p, energy_tolerance(arch, 2.0 * step))[0]
     if set(best) == set(mechanism.pivots):
         return mechanism
