@@ -1,7 +1,7 @@
 """Speed benchmark (docs/speed.md): set 1, set 2 (and kn 100) run or read, set 2's du against a slow
 reference, the limit analysis, the contact models' and the driver's speeds, the campaigns' wall times
-and (--static) the static engine's; --run-files N, --static-floor and --campaign-runs N measure only
-that (no YADE).
+and (--static) the static engine's; --run-files N, --static-floor, --campaign-runs N and --cli-run N
+measure only that (no YADE).
 Prints a verdict line per target and writes the figures to --out (`yadearch.studies.benchmark`).
 """
 
@@ -14,6 +14,7 @@ from pathlib import Path
 
 from yadearch.api.campaigns import montecarlo, sweep
 from yadearch.studies.benchmark.campaign_runs import campaign_runs_measurement, campaign_runs_verdicts
+from yadearch.studies.benchmark.cli_run import cli_run_measurement, cli_run_verdicts
 from yadearch.studies.benchmark.report import BenchmarkPlan, run_benchmark
 from yadearch.studies.benchmark.run_files import run_files_measurement, run_files_verdicts
 from yadearch.studies.benchmark.static_engine import StaticCampaigns, static_floor_measurement, static_floor_verdicts
@@ -76,6 +77,13 @@ def parser() -> argparse.ArgumentParser:
         "sample; static.cost) and write it to --out",
     )
     add(
+        "--cli-run",
+        type=int,
+        default=0,
+        help="only time this many single `yadearch run --preset set2 --engine static` from the command line, "
+        "with and without figures, against the bare interpreter, and write them to --out",
+    )
+    add(
         "--campaign-runs",
         type=int,
         default=0,
@@ -90,7 +98,14 @@ def main() -> int:
     args = options.parse_args()
     if args.campaign_runs < 0:
         options.error(f"--campaign-runs must be >= 1 (0: not measured), got {args.campaign_runs}")
+    if args.cli_run < 0:
+        options.error(f"--cli-run must be >= 1 (0: not measured), got {args.cli_run}")
     out, runs = Path(args.out), Path(args.runs)
+    if args.cli_run:
+        figures = cli_run_measurement(args.cli_run, runs / "cli_run")
+        write_report(out, {**figures, "measured": measured_at()})
+        print_verdicts(cli_run_verdicts(figures))
+        return 0
     if args.campaign_runs:
         figures = campaign_runs_measurement(args.campaign_runs, runs / "campaign_runs")
         write_report(out, {**figures, "measured": measured_at()})

@@ -1,7 +1,7 @@
 """scripts/benchmark.py runs end to end in its quick modes (a benchmark nothing runs breaks unseen): a
 summary-only run folder solves the same arches as a whole one and weighs a tenth or less; the static
-solver is judged against its floor; and the DEM report, from the committed run folders, has the
-committed report's figures without YADE."""
+solver is judged against its floor; a run from the command line against its two targets; and the
+DEM report, from the committed run folders, has the committed report's figures without YADE."""
 
 from __future__ import annotations
 
@@ -50,6 +50,17 @@ def test_the_static_floor_benchmark_judges_each_case_by_its_cpu_over_its_floor(t
         floor = cost["evaluations"] * cost["evaluation_s"] + cost["iterations"] * cost["solve_s"]
         assert cost["ratio"] == pytest.approx(cost["solver_cpu_s"] / floor)
         assert line.startswith("PASS" if cost["ratio"] <= 1.5 else "FAIL") and line.endswith(f"{cost['ratio']:.2f}")
+
+
+def test_the_command_line_benchmark_judges_both_targets_against_their_times(tmp_path):
+    measured, lines = _benchmark(tmp_path, "--cli-run", "1")
+    assert list(measured) == list(json.loads((REPORTS / "benchmark_cli_run.json").read_text()))
+    assert (
+        0 < measured["cli_bare_interpreter_wall_s"] < measured["cli_no_figures_wall_s"] < measured["cli_figures_wall_s"]
+    )
+    verdicts = [s for s in lines if s.startswith(("PASS", "FAIL"))]
+    for line, key, target in zip(verdicts, ("cli_no_figures_wall_s", "cli_figures_wall_s"), (1.0, 3.0)):
+        assert line.startswith("PASS" if measured[key] <= target else "FAIL") and f"{measured[key]:.2f} s" in line
 
 
 def test_the_dem_report_from_stored_runs_needs_no_yade_and_keeps_the_committed_keys(tmp_path):
