@@ -100,7 +100,8 @@ def summary_markdown(table: pd.DataFrame, level_columns: list[str]) -> str:
         else [()]
     )
     for key in keys:
-        group = table[(table[level_columns] == tuple(key)).all(axis=1)] if level_columns else table
+        level = pd.Series(tuple(key), index=level_columns)  # aligned on the columns (a tuple is deprecated)
+        group = table[(table[level_columns] == level).all(axis=1)] if level_columns else table
         stats = du_statistics(group.loc[group["status"] == "done", "du_mm"])
         prefix = "".join(f"{value:g} | " for value in key)
         lines.append(
