@@ -10,8 +10,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from yadearch.analysis import Thresholds, analyse_history
 from yadearch.analysis.blocks import block_centroids, case_geometry
+from yadearch.analysis.run import Thresholds, analyse_history
 from yadearch.results.rundir import STIFFNESS_COLUMN, write_run
 from yadearch.results.summary import HingeRef, RunSummary
 

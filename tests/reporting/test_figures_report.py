@@ -10,8 +10,8 @@ import pytest
 from click.testing import CliRunner
 from synthetic_runs import make_run
 
-from yadearch.analysis import analyse_run, load_run
 from yadearch.analysis.blocks import case_geometry, snapshot_outlines
+from yadearch.analysis.run import analyse_run, load_run
 from yadearch.cli.commands import report
 from yadearch.errors import YadearchError
 from yadearch.plotting import run_figures as figures

@@ -16,8 +16,8 @@ from synthetic_runs import make_run
 matplotlib.use("Agg")
 
 import yadearch as ya  # noqa: E402
-from yadearch.analysis import analyse_run  # noqa: E402
 from yadearch.analysis.blocks import case_geometry  # noqa: E402
+from yadearch.analysis.run import analyse_run  # noqa: E402
 from yadearch.cli.commands import main  # noqa: E402
 from yadearch.errors import CaseError  # noqa: E402
 from yadearch.plotting.animation import FRAME_CM, movie_title  # noqa: E402

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from conftest import REPO
 
-from yadearch.analysis import analyse_run
+from yadearch.analysis.run import analyse_run
 from yadearch.plotting.parallel import Drawing, draw_all
 from yadearch.plotting.run_figures import write_figures
 from yadearch.results.rundir import read_run

@@ -12,8 +12,6 @@ import pytest
 from yadearch.case.config import ArchCase
 from yadearch.errors import RunFolderError
 from yadearch.results.load_path import (
-    LOAD_PATH_FILE,
-    is_load_path_folder,
     load_path_file,
     read_load_path,
     read_load_path_folder,
@@ -21,6 +19,7 @@ from yadearch.results.load_path import (
     write_load_path,
     write_load_path_folder,
 )
+from yadearch.results.rundir import LOAD_PATH_FILE, is_load_path_folder
 from yadearch.results.states import read_states, state_entry, write_states
 from yadearch.solve.load_path import LoadPath
 

@@ -7,12 +7,15 @@ all below du) and the final record ("collapse": the runaway from the first state
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from yadearch.model.hinges import hinge_rotation
 from yadearch.solve.stages import PATH_STAGES, Stage
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 @dataclass(frozen=True)

@@ -10,12 +10,15 @@ hinges by the joint stiffness rather than by the mechanism.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from yadearch.analysis.history import JointHistory
 from yadearch.model.hinges import Hinge, hinges_at, paper_labels
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 ROTATION_THRESHOLD_MRAD = 2.0  # runner's default: 0.05 mm across a 24 mm joint
 OPENING_THRESHOLD_MM = 0.02  # a hinge has formed once its joint has opened this much
@@ -203,4 +206,6 @@ def hinge_table(
                 }
             )
     columns = ["stage", "step", "delta_mm", "label", "interface", "interfaces", "side", "rotation_mrad", "opening_mm"]
+    import pandas as pd  # the table of one run's analysis: a run's warnings need only its summary
+
     return pd.DataFrame(rows, columns=columns)

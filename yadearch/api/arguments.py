@@ -9,13 +9,9 @@ import numbers
 from dataclasses import dataclass, fields
 from typing import Any
 
+from yadearch.case.bounds import MAX_CHECKS, MAX_RUNS, MAX_STEP_DEG, MAX_TARGET_DU_MM, MIN_BASE_POINTS, MIN_STEP_DEG
 from yadearch.case.sections import InterfaceConfig
 from yadearch.errors import ArgumentTypeError, CampaignError
-from yadearch.studies.calibration import MAX_TARGET_DU_MM
-from yadearch.studies.campaigns.grid import MAX_RUNS
-from yadearch.studies.capacity.directions import MAX_STEP_DEG, MIN_STEP_DEG
-from yadearch.studies.sensitivity.checks import MAX_CHECKS
-from yadearch.studies.sensitivity.indices import MIN_BASE_POINTS
 
 FIGURE_PROCESSES = 2  # a run's figures are drawn by one process or by two (plotting.parallel)
 MAX_JOBS = 1024  # runs at once on one machine; a cluster is reached through a scheduler instead

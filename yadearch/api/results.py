@@ -7,15 +7,16 @@ import os
 from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
-
-import pandas as pd
+from typing import TYPE_CHECKING
 
 from yadearch.case.names import FILE, output_path, writable_folder
 from yadearch.errors import ArgumentTypeError, CaseError
-from yadearch.results.load_path import is_load_path_folder, read_load_path_folder
-from yadearch.results.rundir import FIGURES_DIR, VTK_DIR, RunFolder, read_run
+from yadearch.results.rundir import FIGURES_DIR, VTK_DIR, RunFolder, is_load_path_folder, read_run
 from yadearch.results.states import RunStates
 from yadearch.results.summary import DEM, HingeRef, RunSummary
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 MOVIE_FORMATS = ("mp4", "gif")
 
@@ -87,7 +88,7 @@ class RunResult:
     def plot_collapse(self, ax=None, snapshot: str = "collapse"):
         """The arch at collapse with its hinges (the paper's Fig. 9) into a matplotlib `ax`, or a new
         figure at print size; returns the figure."""
-        from yadearch.analysis import analyse_run
+        from yadearch.analysis.run import analyse_run
         from yadearch.plotting.run_figures import collapse_figure
 
         return collapse_figure(self.folder, analyse_run(self.folder), ax=ax, snapshot=snapshot)
@@ -111,7 +112,7 @@ class RunResult:
     def animate(self, out: str | Path | None = None, fmt: str = "mp4") -> Path:
         """The run as a movie (MP4 through ffmpeg, or GIF) along its loading path to collapse, written
         to `out` (default: the run folder's figures/NAME.FMT); returns its path."""
-        from yadearch.analysis import analyse_run
+        from yadearch.analysis.run import analyse_run
         from yadearch.plotting.animation import animate_run
 
         if fmt not in MOVIE_FORMATS:
@@ -132,7 +133,7 @@ class RunResult:
     def write_figures(self, out: str | Path | None = None, jobs: int = 1) -> dict[str, tuple[Path, Path]]:
         """Write the run's figures (PDF and PNG) into `out` (default: the run folder's `figures/`); `jobs`
         2 draws them in two processes where the platform forks (Linux)."""
-        from yadearch.analysis import analyse_run
+        from yadearch.analysis.run import analyse_run
         from yadearch.api.arguments import check_arguments
         from yadearch.plotting.run_figures import write_figures
 
@@ -161,4 +162,8 @@ def open_run(path: str | Path) -> RunResult:
         raise ArgumentTypeError(
             f"path must be a run folder (str or pathlib.Path), got {type(path).__name__} {path!r:.40}"
         )
-    return RunResult(read_load_path_folder(Path(path)) if is_load_path_folder(Path(path)) else read_run(path))
+    if not is_load_path_folder(Path(path)):
+        return RunResult(read_run(path))
+    from yadearch.results.load_path import read_load_path_folder  # a live load's solver, imported for one only
+
+    return RunResult(read_load_path_folder(Path(path)))

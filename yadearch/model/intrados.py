@@ -14,7 +14,6 @@ from dataclasses import dataclass
 from typing import Protocol
 
 import numpy as np
-from scipy.special import ellipe, ellipeinc
 
 ORIENTATIONS = ("normal", "vertical", "radial")
 MAX_RISE_OVER_SPAN = 0.5  # elliptical and three-centred arches: the rise is at most the half-span
@@ -177,6 +176,8 @@ class HalfEllipse:
 
     def _arc(self, phi: float) -> float:
         """Arc length from the left springing to the point at eccentric angle `phi` (0..pi)."""
+        from scipy.special import ellipe, ellipeinc  # elliptical arches only: scipy.special costs 40 ms to import
+
         return float(self.a * (ellipeinc(phi - np.pi / 2, self.m) + ellipe(self.m)))
 
     def _angle(self, s: float) -> float:

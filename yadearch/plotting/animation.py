@@ -9,8 +9,8 @@ from pathlib import Path
 from matplotlib.animation import FFMpegWriter, FuncAnimation, PillowWriter, writers
 from tqdm import tqdm
 
-from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry
+from yadearch.analysis.run import RunAnalysis
 from yadearch.atomic import write_atomically
 from yadearch.errors import CaseError, YadearchError
 from yadearch.plotting.house import house_style, new_figure

@@ -14,8 +14,8 @@ import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
+from yadearch.analysis.run import RunAnalysis
 from yadearch.errors import RunFolderError
 from yadearch.plotting.blocks import block_legend_entries, draw_blocks
 from yadearch.plotting.hinge_marks import mark_hinge

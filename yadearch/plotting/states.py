@@ -14,9 +14,8 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.text import Annotation
 
-from yadearch.analysis import RunAnalysis
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
-from yadearch.analysis.run import default_thresholds
+from yadearch.analysis.run import RunAnalysis, default_thresholds
 from yadearch.errors import RunFolderError
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.hinges import Hinge, hinge_rotation, hinges_at

@@ -11,8 +11,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from yadearch.analysis import RunAnalysis, analyse_run, load_run
 from yadearch.analysis.mechanism import run_warnings
+from yadearch.analysis.run import RunAnalysis, analyse_run, load_run
 from yadearch.analysis.tracking import format_interfaces
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference

@@ -16,13 +16,18 @@ import pandas as pd
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.errors import RunFolderError
-from yadearch.results.rundir import CASE_FILE, RunFolder, read_tables, write_tables
+from yadearch.results.rundir import (
+    CASE_FILE,
+    LOAD_PATH_FILE,
+    RunFolder,
+    read_tables,
+    write_tables,
+)
 from yadearch.results.summary import HingeRef, RunSummary
 from yadearch.solve.load_path import BRANCH, LoadPath
 from yadearch.solve.stages import Outcome
 
 LOAD_PATH_SUFFIX = "_load_path"
-LOAD_PATH_FILE = "load_path.json"  # in a load path's folder: its answer, written last
 
 
 def load_path_file(folder: Path, name: str, suffix: str = "") -> Path:
@@ -93,11 +98,6 @@ def write_load_path_folder(
     write_tables(out, series, joints, snapshots, imperfections, states)
     write_text_atomically(out / LOAD_PATH_FILE, _json_text(result, case))
     return out
-
-
-def is_load_path_folder(path: Path) -> bool:
-    """True if `path` is a live load's path folder (`write_load_path_folder`), complete."""
-    return (Path(path) / LOAD_PATH_FILE).is_file()
 
 
 def read_load_path_folder(path: Path) -> RunFolder:

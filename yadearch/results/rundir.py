@@ -7,19 +7,20 @@ import dataclasses
 import json
 import tomllib
 from dataclasses import dataclass
-from functools import partial
+from functools import cached_property
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import pandas as pd
-
-from yadearch.atomic import write_atomically, write_csv_atomically, write_text_atomically
+from yadearch.atomic import write_rows_atomically, write_text_atomically
 from yadearch.case.config import ArchCase, as_ran, with_current_names
 from yadearch.case.numerics_section import FULL_RUN_FILES, SUMMARY_RUN_FILES
 from yadearch.errors import RunFolderError
 from yadearch.results.states import STATES_FILE, RunStates, read_states, write_states
 from yadearch.results.summary import STATIC, STATIC_REVISION, RunSummary
 from yadearch.results.summary_checks import summary_values_problem
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 CASE_FILE = "case.toml"
 SERIES_FILE = "series.csv"
@@ -31,8 +32,10 @@ IMPERFECTIONS_FILE = "imperfections.csv"  # the defects drawn for each joint (im
 SNAPSHOTS_FILE = "snapshots.json"
 SUMMARY_FILE = "summary.json"
 LOG_FILE = "run.log"
+LOAD_PATH_FILE = "load_path.json"  # in a live load's path folder (results/load_path.py): its answer, written last
 STAGING_PREFIX, STAGING_SUFFIX = ".", ".partial"  # a run is written to .NAME.partial beside NAME
 SCHEMA_VERSION = 1  # of summary.json; a summary without one predates the marker and is read by its keys
+TABLE_FLOAT_FORMAT = "%.8g"  # series.csv and joints.csv: eight significant figures (states to 1e-8 of a metre)
 REQUIRED_KEYS = ("du_mm", "hinges_at_collapse", "steps", "wall_s")  # what campaigns and reports read
 
 
@@ -43,16 +46,38 @@ def hinge_list(hinges: list[dict] | None) -> str:
 
 @dataclass
 class RunFolder:
-    """A run folder read back: the resolved case, both tables, snapshots and the summary."""
+    """A run folder read back: the resolved case, snapshots and the summary; both tables are read on
+    first use (a run's answer needs neither, nor pandas)."""
 
     path: Path
     case: dict[str, Any]
-    series: pd.DataFrame
-    joints: pd.DataFrame
     snapshots: dict[str, Any]
     summary: RunSummary
     states: RunStates | None = None  # none in runs written before states were recorded
     load_path: dict[str, Any] | None = None  # a live load's path folder: its answer (load_path.json); None: a run
+
+    @cached_property
+    def series(self) -> pd.DataFrame:
+        """series.csv: one row every few steps, labelled by stage."""
+        return self._table(SERIES_FILE)
+
+    @cached_property
+    def joints(self) -> pd.DataFrame:
+        """joints.csv: every interface at every equilibrium state and at collapse."""
+        return self._table(JOINTS_FILE)
+
+    def _table(self, name: str) -> pd.DataFrame:
+        import pandas as pd
+
+        try:
+            return pd.read_csv(self.path / name)
+        except (OSError, ValueError) as exc:
+            raise RunFolderError(f"{self.path}: a file of the run folder cannot be read ({exc})") from None
+
+
+def is_load_path_folder(path: Path) -> bool:
+    """True if `path` is a live load's path folder (`write_load_path_folder`), complete."""
+    return (Path(path) / LOAD_PATH_FILE).is_file()
 
 
 def staging_folder(out: Path) -> Path:
@@ -103,9 +128,11 @@ def write_tables(
     """The tables, snapshots and states of a run folder (`write_run`'s, and a live load's path
     folder's), each atomically."""
     if imperfections is not None:
-        write_csv_atomically(out / IMPERFECTIONS_FILE, pd.DataFrame(imperfections))
+        write_rows_atomically(
+            out / IMPERFECTIONS_FILE, [dict(zip(imperfections, row)) for row in zip(*imperfections.values())]
+        )
     for name, rows in ((SERIES_FILE, series), (JOINTS_FILE, joints)):
-        write_atomically(out / name, partial(pd.DataFrame(rows).to_csv, index=False, float_format="%.8g"))
+        write_rows_atomically(out / name, rows, float_format=TABLE_FLOAT_FORMAT)
     write_text_atomically(out / SNAPSHOTS_FILE, json.dumps(snapshots, indent=1, default=_json_default))
     if states:
         write_states(out / STATES_FILE, states)
@@ -253,8 +280,6 @@ def read_tables(path: Path, summary: RunSummary, load_path: dict[str, Any] | Non
         folder = RunFolder(
             path=path,
             case=case,
-            series=pd.read_csv(path / SERIES_FILE),
-            joints=pd.read_csv(path / JOINTS_FILE),
             snapshots=json.loads((path / SNAPSHOTS_FILE).read_text()),
             summary=summary,
             states=read_states(path),
@@ -262,11 +287,21 @@ def read_tables(path: Path, summary: RunSummary, load_path: dict[str, Any] | Non
         )
     except (OSError, ValueError, tomllib.TOMLDecodeError) as exc:
         raise RunFolderError(f"{path}: a file of the run folder cannot be read ({exc})") from None
-    for name, table in ((SERIES_FILE, folder.series), (JOINTS_FILE, folder.joints)):
+    for name in (SERIES_FILE, JOINTS_FILE):
         written = (summary.table_rows or {}).get(name)  # none in runs written before the counts
-        if written is not None and len(table) != written:
+        rows = _row_count(path / name)
+        if written is not None and rows != written:
             raise RunFolderError(
-                f"{path / name} has {len(table)} rows where the run wrote {written}: it was cut short "
+                f"{path / name} has {rows} rows where the run wrote {written}: it was cut short "
                 "or changed; run the case again"
             )
     return folder
+
+
+def _row_count(file: Path) -> int:
+    """The data rows of a table the run wrote (one a line, after the header; no cell holds a newline)."""
+    try:
+        with open(file, "rb") as handle:
+            return max(sum(1 for line in handle if line.strip()) - 1, 0)
+    except OSError as exc:
+        raise RunFolderError(f"{file.parent}: a file of the run folder cannot be read ({exc})") from None

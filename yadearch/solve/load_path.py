@@ -11,9 +11,9 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import HELD_SETTINGS, held_multiplier
@@ -28,6 +28,9 @@ from yadearch.solve.stages import Outcome
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.static_state import PathParameter, StaticState
 from yadearch.solve.statics import StaticArch
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 FIRST_FRACTION = 0.05  # the load's first increment: this x the load scale (the rigid capacity)
 LARGEST_FRACTION = 0.1  # ... its largest increment
@@ -210,6 +213,8 @@ def load_curve(arch: StaticArch, start: StaticState, states: list[StaticState]) 
         }
         for k, s in enumerate(states)
     ]
+    import pandas as pd  # a live load's curve only: a support movement's run does not import pandas
+
     return pd.DataFrame(rows)
 
 

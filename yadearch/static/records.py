@@ -5,7 +5,7 @@ the same records of a live load's path (its states' parameter the load's multipl
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -22,10 +22,12 @@ from yadearch.results.joint_rows import (
 )
 from yadearch.results.rundir import STIFFNESS_COLUMN
 from yadearch.results.states import LOAD_COLUMN, state_entry
-from yadearch.solve.load_path import LoadPath
 from yadearch.solve.stages import Stage
 from yadearch.solve.static_state import StaticState
 from yadearch.solve.statics import StaticArch, static_arch
+
+if TYPE_CHECKING:
+    from yadearch.solve.load_path import LoadPath  # a live load's records only: its solver is not imported for a run
 
 # numerics of the DEM that a static run does not use: time stepping, damping, holds, the support's speed
 DEM_ONLY_NUMERICS = (

@@ -18,14 +18,13 @@ from typing import Any
 import pandas as pd
 
 from yadearch.atomic import write_text_atomically
+from yadearch.case.bounds import MAX_TARGET_DU_MM
 from yadearch.case.config import ArchCase
 from yadearch.errors import YadearchError
 from yadearch.results.rundir import is_complete
 from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.grid import round_sig, run_tag
 from yadearch.studies.campaigns.runner import run_campaign
-
-MAX_TARGET_DU_MM = 10_000.0  # the largest support displacement a case accepts (loading.max_support_displacement_mm)
 
 
 @dataclass

@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from yadearch.case.bounds import MAX_RUNS
 from yadearch.case.config import parameter_docs
 from yadearch.errors import ArgumentTypeError, CampaignError, CaseError, YadearchError
 
@@ -24,7 +25,6 @@ TEXT_ENCODING = "utf-8-sig"  # UTF-8, with or without the byte-order mark Excel'
 RUN_COLUMN = "run"  # optional column of an explicit table: the run's name
 NAME_COLUMNS = (RUN_COLUMN, "name", "description")  # each names the runs (yade-batch's is description)
 MAX_TAG = 64
-MAX_RUNS = 100_000  # a larger campaign is refused (a typo in a grid), unless MAX_RUNS_VARIABLE raises it
 MAX_RUNS_VARIABLE = "YADEARCH_MAX_RUNS"
 _UNIT_SUFFIXES = ("_N_per_mm3", "_mm_per_s", "_g_per_cm3", "_m_per_s2", "_mm", "_deg", "_MPa", "_s")
 _BARE_NAMES = {q.split(".")[-1]: q for q, _, _ in parameter_docs()}

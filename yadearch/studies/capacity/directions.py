@@ -10,11 +10,10 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from yadearch.case.bounds import MAX_STEP_DEG, MIN_STEP_DEG
 from yadearch.solve.stages import Stage
 
 DIRECTION_STEP_DEG = 15
-MAX_STEP_DEG = 90  # coarser than this a map would not show the half-plane
-MIN_STEP_DEG = 0.1  # finer is 1801+ directions a map, more than the figure can show
 
 
 def directions(step_deg: float = DIRECTION_STEP_DEG) -> tuple[float, ...]:

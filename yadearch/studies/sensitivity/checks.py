@@ -10,6 +10,7 @@ from typing import Any
 
 import pandas as pd
 
+from yadearch.case.bounds import MAX_CHECKS
 from yadearch.case.config import ArchCase
 from yadearch.errors import CampaignError
 from yadearch.launch.process import STATIC_ENGINE
@@ -21,7 +22,6 @@ from yadearch.studies.sensitivity.indices import BASE_RUN, Factor, tornado_rows
 
 CHECK_RUNS = "check_runs"
 AGREEMENT = 0.01  # the two engines' du within this fraction (the cross-check's standard, docs/validation.md)
-MAX_CHECKS = 50  # more is a campaign of its own (`yadearch sweep --engine ...`)
 DEM_ENGINE = "dem"
 ENGINE_NAMES = {DEM_ENGINE: "the DEM", STATIC_ENGINE: "the static engine"}
 

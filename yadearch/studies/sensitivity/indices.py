@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from yadearch.case.bounds import MIN_BASE_POINTS
 from yadearch.case.config import ArchCase
 from yadearch.errors import CampaignError
 from yadearch.studies.campaigns.grid import RUN_COLUMN, check_parameter, qualified_name, round_sig
@@ -23,7 +24,6 @@ SAMPLE_SEED = 20261126  # scrambling of the Sobol sequence (fixed: the same samp
 BOOTSTRAP_RESAMPLES = 200  # SALib's bootstrap of the indices' confidence intervals
 CONFIDENCE = 0.95
 STABLE_TO = 0.02  # indices stable when no index moves more than this as the sample doubles
-MIN_BASE_POINTS = 8  # the sample's size at least; its first half gives the coarse indices
 MIN_ESTIMATE_POINTS = 4  # complete base points an estimate needs at least
 CONVERGENCE_FROM = 32  # the smallest sample of the convergence table (base points), when N allows it
 FIT_FROM = 128  # the changes fitted to estimate the sample that stability needs start at this size
