@@ -98,7 +98,7 @@ class Recorder:
                 "step": O.iter,
                 "time_s": O.time,
                 "delta_mm": units.to_mm(self.driver.displacement()),
-                **self._load_column(),
+                **_load_column(self.load() if self.load else None),
                 "left_Rx_N": left[0],
                 "left_Ry_N": left[1],
                 "right_Rx_N": right[0],
@@ -147,9 +147,9 @@ class Recorder:
         from yade import O
 
         delta_mm = units.to_mm(self.driver.displacement())
-        where = {"stage": self.stage, "step": O.iter, "delta_mm": delta_mm, **self._load_column()}
-        self.records.joints.extend(joint_rows(snap, where))
         load = self.load() if self.load else None
+        where = {"stage": self.stage, "step": O.iter, "delta_mm": delta_mm, **_load_column(load)}
+        self.records.joints.extend(joint_rows(snap, where))
         self.records.states.append(state_entry(self.stage, O.iter, delta_mm, snap["pos"], snap["rot"], load))
         if label:
             self.records.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, O.iter)
@@ -176,14 +176,12 @@ class Recorder:
         self.series(force=True)
         return hinges
 
-    def _load_column(self) -> dict[str, float]:
-        """On a live load's path, the load as the rows give it (the static engine's column); else none."""
-        if self.load is None:
-            return {}
-        value, unit = self.load()
-        return {f"{LOAD_COLUMN}_{unit}": value}
-
     def track_friction(self, snap: dict) -> None:
         """Keep the largest mobilised friction and slip met in the equilibrium states, with their
         interfaces: friction can move du only where some joint slides."""
         friction_extremes(self.friction, snap, units.to_mm(self.driver.displacement()))
+
+
+def _load_column(load: tuple[float, str] | None) -> dict[str, float]:
+    """On a live load's path, its `load` (value, unit) as the rows give it (the static engine's column)."""
+    return {} if load is None else {f"{LOAD_COLUMN}_{load[1]}": load[0]}

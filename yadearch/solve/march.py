@@ -2,23 +2,18 @@
 support drives, locate where equilibrium is lost, re-seat the hinges at the fixed support, read the
 collapse.
 
-Incremental, geometry updated. The kinematic LP gives the three-hinge mechanism that follows the
-support, and mechanisms tied with it to first order are told apart by the weights' energy a small
-step on (`reseat.follow_tie`); the support moves in steps along it, each configuration reached
-exactly by closing the linkage (no drift), and the static LP checks that an admissible equilibrium
-remains with forces only at touching corners. A corner that closes on the way (a hinge turning
-back) ends the step there and the mechanism is solved again. When equilibrium is lost (a limit
-point: the thrust line touches a fourth corner, located by bisection), the four-hinge chains that
-lower the weights at the fixed support are followed until one re-seats a hinge, i.e. closes one of
-its open hinges, the weights never rising on the way (`reseat`): the landing with an admissible
-equilibrium and the lowest weights is kept (ties broken by a stated tolerance toward the left), and
-the march goes on from it; a landing without one re-seats again. A chain that closes no hinge
-before a block has moved `runaway` (a multiple of the ring's thickness) is the collapse, as is no
-chain at all (a failure of the friction alone: sliding). `first_limit` is the first limit point,
-`snaps` the re-seatings survived. With a joint stiffness `kn` the joints beside the hinges must also
-keep the thrust their fold margin from the edge (`solve.compliant`): a folded joint's chain is
-followed as before (it may climb first and take a hinge to any joint: a snap that lands is survived
-however far it moves), and where it finds no landing the re-seating by the weights decides.
+The kinematic LP gives the mechanism that follows the support (ties to first order told apart by the
+weights' energy a step on, `reseat.follow_tie`); each step closes the linkage exactly (no drift) and
+the static LP checks that an admissible equilibrium remains with forces only at touching corners; a
+corner that closes on the way ends the step and the mechanism is solved again. Where equilibrium is
+lost (a fourth corner, located by bisection), the four-hinge chains that lower the weights at the
+fixed support are followed until one closes one of its open hinges (`reseat`): the admissible landing
+with the lowest weights is kept (ties toward the left) and the march goes on from it; a chain that
+closes none before a block has moved `runaway` (a multiple of the ring's thickness), or no chain at
+all (sliding), is the collapse. `first_limit` is the first limit point, `snaps` the re-seatings
+survived. With a joint stiffness `kn` the joints beside the hinges must also keep their fold margin
+(`solve.compliant`): a folded joint's chain may climb first and take a hinge to any joint (a snap
+that lands is survived however far it moves); where it finds no landing the weights decide.
 """
 
 from __future__ import annotations

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -218,6 +219,15 @@ def rank_landings(arch: RigidArch, landings: list[Landing]) -> list[Landing]:
     return _ranked(landings, lambda g: g.energy, lambda g: g.pivots, energy_tolerance(arch))
 
 
+class _Probe(NamedTuple):
+    """A candidate mechanism probed two steps on: its first-order energy rate (N), its energy there (J)
+    and its placement there."""
+
+    rate: float
+    energy_ahead: float
+    ahead: Placement
+
+
 def follow_tie(
     arch: RigidArch, state: Placement, mechanism: Mechanism, admissible: Callable[[Placement], bool]
 ) -> Mechanism:
@@ -230,27 +240,26 @@ def follow_tie(
     step = FOLLOW_PROBE_FRACTION * arch.geometry.thickness
     closed = contacts(arch, state).touching.all(axis=1)  # only a hinge still closed can form elsewhere
     e0 = potential(arch, state)
-    options: dict[tuple[Pivot, ...], tuple[float, float]] = {}  # first-order rate (N), energy at 2 steps (J)
-    ahead: dict[tuple[Pivot, ...], Placement] = {}  # each option's placement two steps on
+    options: dict[tuple[Pivot, ...], _Probe] = {}
     for pivots in _tie_candidates(mechanism.pivots, closed):
         one, two = (close_linkage(arch, state, pivots, state.delta + n * step) for n in (1, 2))
         if one is None or two is None or penetrates(arch, state, one, step / arch.geometry.span):
             continue
         e1, e2 = potential(arch, one) - e0, potential(arch, two) - e0
-        options[pivots], ahead[pivots] = ((4.0 * e1 - e2) / (2.0 * step), e2), two  # the rate to O(step^2)
+        options[pivots] = _Probe((4.0 * e1 - e2) / (2.0 * step), e2, two)  # the rate to O(step^2)
     if len(options) < 2:
         return mechanism
     weight = float(arch.weight.sum())
-    low = min(rate for rate, _ in options.values())
+    low = min(o.rate for o in options.values())
     own = tuple(sorted(mechanism.pivots))
     tied = [
         p
-        for p, (rate, _) in options.items()
-        if rate - low <= RATE_TIE_FRACTION * weight and (p == own or admissible(ahead[p]))
+        for p, o in options.items()
+        if o.rate - low <= RATE_TIE_FRACTION * weight and (p == own or admissible(o.ahead))
     ]
     if not tied:
         return mechanism
-    best = _ranked(tied, lambda p: options[p][1], lambda p: p, energy_tolerance(arch, 2.0 * step))[0]
+    best = _ranked(tied, lambda p: options[p].energy_ahead, lambda p: p, energy_tolerance(arch, 2.0 * step))[0]
     if set(best) == set(mechanism.pivots):
         return mechanism
     return Mechanism(best, mechanism.rates, mechanism.power, mechanism.closing)
