@@ -136,6 +136,13 @@ def params() -> None:
     help="let the joints fold at the margin the case's kn allows (compliant hinges): the du a DEM "
     "run of that stiffness should find, written as NAME_compliant.json",
 )
+@click.option(
+    "--start-hinges",
+    default=None,
+    metavar="'1E 35I 56E'",
+    help="leave rest on these three hinges (e.g. another engine's) instead of the linkage the kinematic "
+    "LP picks; refused unless the rigid arch holds an admissible equilibrium on them",
+)
 def limit(
     preset_name: str | None,
     case_file: str | None,
@@ -144,6 +151,7 @@ def limit(
     out: str,
     max_snap_mm: float | None,
     compliant: bool,
+    start_hinges: str | None,
 ) -> None:
     """Rigid-block limit analysis, no YADE: du_rigid, hinges, thrust-line figure (kn only with --compliant)."""
     from yadearch.api.runs import limit as limit_analysis
@@ -158,12 +166,14 @@ def limit(
             "for the du a run at that kn should find",
             err=True,
         )
-    result = limit_analysis(case, compliant=compliant, max_snap_mm=max_snap_mm, out=out)
-    path, _ = limit_files(case, compliant, out)
+    result = limit_analysis(case, compliant=compliant, max_snap_mm=max_snap_mm, out=out, start_hinges=start_hinges)
+    path, _ = limit_files(case, compliant, out, result.start_hinges)
     du = "no collapse" if result.du_rigid_mm is None else f"{result.du_rigid_mm:.2f} mm"
     if compliant:
         du += f" with compliant hinges at kn {case.interface.kn_N_per_mm3:g} N/mm^3"
     new = f" (new: {' '.join(result.new_at_collapse)})" if result.new_at_collapse else ""
+    if result.start_hinges:
+        new += f", from rest on {' '.join(result.start_hinges)}"
     click.echo(
         f"{case.name}: du_rigid = {du}, {result.collapse_mode} on {' '.join(result.collapse_hinges)}"
         f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}"

@@ -15,7 +15,9 @@ finite-stiffness margin (`solve.compliant`): the DEM's du at that stiffness.
 from __future__ import annotations
 
 import math
+import re
 import time
+from collections.abc import Sequence
 from dataclasses import replace
 from typing import Any
 
@@ -25,18 +27,19 @@ from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes
 from yadearch.case.mechanics import held_multiplier, unheld
 from yadearch.case.shape import MEASURED
-from yadearch.errors import YadearchError
+from yadearch.errors import CaseError, YadearchError
 from yadearch.model import units
 from yadearch.model.hinges import mirror_hinge_labels
-from yadearch.solve.limit_lp import solve_statics
+from yadearch.solve.limit_lp import Mechanism, solve_statics
 from yadearch.solve.limit_result import LimitResult, interface_forces
 from yadearch.solve.march import March
 from yadearch.solve.reseat import DEFAULT_RUNAWAY_THICKNESSES
-from yadearch.solve.rigid import LimitError, RigidArch, at_rest, rigid_arch
+from yadearch.solve.rigid import SIDES, LimitError, Pivot, RigidArch, at_rest, rigid_arch
 
 DEFAULT_STEP_MM = 0.5  # support step between equilibrium checks
 DEFAULT_TOLERANCE_MM = 1e-3  # width of the bisection bracket that locates a limit
 MIRRORED = {"right": "left", "left": "right"}  # the moving support of a case's mirror image
+HINGE_LABEL = re.compile(r"(\d+)([IE])")  # a hinge as the results name it: interface (1-based) and side
 
 
 def mirror_image(case: ArchCase) -> ArchCase:
@@ -89,6 +92,7 @@ def limit_analysis(
     mirror: bool = True,
     compliant: bool = False,
     runaway_thicknesses: float = DEFAULT_RUNAWAY_THICKNESSES,
+    start_hinges: Sequence[str] | str | None = None,
 ) -> LimitResult:
     """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible
     equilibrium, its hinge history and its last admissible state (see the module docstring). A
@@ -99,10 +103,13 @@ def limit_analysis(
     whose mirror image differs (a support that turns or moves vertically) is solved mirrored too
     (`mirror_du_rigid_mm`; `mirror` false: not): the keystone's two joints tie, and each branch has
     its own limit. `compliant`: the joints beside the hinges fold at the margin the case's kn allows
-    (`solve.compliant`), giving the du a DEM run of that stiffness should find instead of the rigid one."""
+    (`solve.compliant`), giving the du a DEM run of that stiffness should find instead of the rigid one.
+    `start_hinges` ("1E 35I 56E"): leave rest on that linkage instead of the LP's (another engine's, to
+    see where the rigid blocks take it), refused in one line unless the support drives it with an
+    admissible equilibrium; its hinges name this branch, so the mirror image is not solved."""
     settings = (step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant, runaway_thicknesses)
-    result, arch = _solve(case, *settings)
-    if not (mirror and has_other_branch(case)):
+    result, arch = _solve(case, *settings, start_hinges)
+    if start_hinges is not None or not (mirror and has_other_branch(case)):
         return result
     try:
         mirrored, _ = _solve(mirror_image(case), *settings)
@@ -125,6 +132,7 @@ def _solve(
     max_snap_mm: float | None,
     compliant: bool,
     runaway_thicknesses: float,
+    start_hinges: Sequence[str] | str | None = None,
 ) -> tuple[LimitResult, RigidArch]:
     """`limit_analysis` of `case` as it stands (the keystone's tie broken toward its left joint), and
     the rigid arch it solved."""
@@ -135,7 +143,10 @@ def _solve(
     if not runaway_thicknesses > 0.0:
         raise ValueError(f"runaway_thicknesses must be positive, got {runaway_thicknesses}")
     runaway = runaway_thicknesses * arch.geometry.thickness
-    march = March(arch, units.mm(step_mm), units.mm(tolerance_mm), runaway, kn, snap_cap)
+    start_pivots = () if start_hinges is None else named_linkage(start_hinges, arch.n_joints)
+    march = March(arch, units.mm(step_mm), units.mm(tolerance_mm), runaway, kn, snap_cap, start_pivots)
+    if start_pivots:
+        _check_start(march, start_pivots)
     limit = min(units.mm(max_displacement_mm or case.loading.max_support_displacement_mm), arch.movement.length)
     last, read_at, mechanism, chain = march.run(limit)
     mode, hinges = "none", tuple(p.label for p in mechanism.pivots)
@@ -176,8 +187,40 @@ def _solve(
         compliant_largest_margin_mm=units.to_mm(march.largest_margin) if compliant else None,
         n_lp=march.n_lp,
         wall_s=time.perf_counter() - start,
+        start_hinges=tuple(p.label for p in start_pivots) or None,
         **_closest_edge(march, hinges),
     ), arch
+
+
+def named_linkage(labels: Sequence[str] | str, n_joints: int) -> tuple[Pivot, ...]:
+    """Three hinges named as the results name them ("1E 35I 56E", or a list of labels), left to right;
+    CaseError in one line unless they are three distinct interfaces of 1..n_joints, each side I or E."""
+    texts = labels.split() if isinstance(labels, str) else [str(label) for label in labels]
+    matches = [HINGE_LABEL.fullmatch(t.strip().upper()) for t in texts]
+    pivots = {
+        int(m[1]) - 1: Pivot(int(m[1]) - 1, SIDES.index(m[2])) for m in matches if m and 0 < int(m[1]) <= n_joints
+    }
+    if len(texts) != 3 or len(pivots) != 3:
+        raise CaseError(
+            f"start_hinges must be three hinges on distinct interfaces of 1..{n_joints}, each side I or E "
+            f"(e.g. '1E 35I 56E'), got {' '.join(texts) or 'none'}"
+        )
+    return tuple(pivots[j] for j in sorted(pivots))
+
+
+def _check_start(march: March, pivots: tuple[Pivot, ...]) -> None:
+    """Refuse in one line a named linkage the support does not drive from rest, or on which the rigid
+    arch has no admissible equilibrium at the march's first step (where the march first checks it: a
+    linkage that a thrust line misses by a hair at the very start is still followed)."""
+    rest, named = at_rest(march.arch), " ".join(p.label for p in pivots)
+    probe = march.moved(rest, Mechanism(pivots, (0.0,) * 3, 0.0), march.step)
+    if probe is None:
+        raise CaseError(f"start_hinges {named}: the support cannot move the arch on these hinges from rest")
+    if not march.admissible(probe):
+        raise CaseError(
+            f"start_hinges {named}: the rigid arch has no admissible equilibrium on these hinges "
+            f"{units.to_mm(march.step):g} mm from rest (no thrust line fits them)"
+        )
 
 
 def _closest_edge(march: March, hinges: tuple[str, ...]) -> dict[str, Any]:

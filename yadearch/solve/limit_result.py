@@ -111,6 +111,7 @@ class LimitResult:
     closest_edge_joint: str | None = None
     closest_edge_mm: float | None = None
     closest_edge_at_mm: float | None = None
+    start_hinges: tuple[str, ...] | None = None  # the linkage named to leave rest on (None: the LP's)
 
     @property
     def references(self) -> list[str]:

@@ -46,8 +46,10 @@ class March:
         runaway: float,
         kn: float | None = None,
         max_snap_mm: float = math.inf,
+        start: tuple[Pivot, ...] = (),
     ) -> None:
         self.arch, self.step, self.tolerance, self.n_lp = arch, step, tolerance, 0
+        self.start = start  # the three hinges to leave rest on (none: the kinematic LP's)
         self.runaway = runaway  # a re-seating chain moving a block further (m) runs away: the collapse
         self.kn = kn  # joint stiffness (N/m^3) whose fold margins the joints keep (None: rigid blocks)
         self.folding = False  # the chain followed now opens a joint that folded (it may climb first)
@@ -276,14 +278,16 @@ class March:
         """The three-hinge mechanism that follows the support from `state` (the LP's, or one tied with
         it to first order that lowers the weights more: `reseat.follow_tie`), recorded in the history
         (hinges that stop, hinges that start)."""
-        new = self.kinematics(state)
+        named = mechanism is None and bool(self.start)  # the linkage named to leave rest on
+        new = Mechanism(self.start, (0.0,) * len(self.start), 0.0) if named else self.kinematics(state)
         if new is None or len(new.pivots) != 3:
             found = "none" if new is None else " ".join(p.label for p in new.pivots) or "none"
             raise LimitError(
                 f"at {units.to_mm(state.delta):.3f} mm the support is followed by no "
                 f"three-hinge mechanism (hinges: {found})"
             )
-        new = follow_tie(self.arch, state, new, lambda placement: self.statics(placement).feasible)
+        if not named:
+            new = follow_tie(self.arch, state, new, lambda placement: self.statics(placement).feasible)
         old = set() if mechanism is None else set(mechanism.pivots)
         self.pivots = new.pivots
         d_mm = units.to_mm(state.delta)

@@ -1,0 +1,58 @@
+"""The rigid march started on a named linkage (`limit_analysis(start_hinges=...)`, `yadearch limit
+--start-hinges`): the LP's own linkage gives the LP's answer, another admissible one is followed from
+rest (non-uniqueness of the rigid three-hinge linkage, docs/atlas.md), and a linkage the rigid arch
+cannot take is refused in one line."""
+
+from __future__ import annotations
+
+import pytest
+
+from yadearch.case.config import preset
+from yadearch.cli.commands import main
+from yadearch.errors import CaseError
+from yadearch.solve.limit import limit_analysis
+
+# the closing semicircle of docs/atlas.md at t/R 0.25: its thrust line grazes the intrados at joints 22-23
+# and 34-35, so two three-hinge linkages are admissible rigid equilibria from the first steps on
+CLOSING_SEMICIRCLE = {"embrace_deg": 180.0, "support_direction_deg": 180.0, "thickness_mm": 75.0}
+
+
+def test_the_lps_own_linkage_named_gives_the_lps_answer():
+    case = preset("set2").with_overrides({"n_voussoirs": 15})
+    own = limit_analysis(case, mirror=False)
+    first = " ".join(f"{h.interface}{h.side}" for h in own.hinge_history if h.from_mm == 0.0)
+    named = limit_analysis(case, start_hinges=first)
+    assert named.start_hinges == tuple(first.split())
+    assert named.du_mm == own.du_mm and named.collapse_hinges == own.collapse_hinges
+
+
+def test_another_admissible_linkage_is_followed_from_rest_and_ends_elsewhere():
+    case = preset("set2").with_overrides(CLOSING_SEMICIRCLE)
+    own = limit_analysis(case, mirror=False)
+    named = limit_analysis(case, start_hinges="1E 35I 56E")
+    assert [f"{h.interface}{h.side}" for h in named.hinge_history[:3]] == ["1E", "35I", "56E"]
+    assert all(h.from_mm == 0.0 for h in named.hinge_history[:3])
+    assert "35I" not in " ".join(f"{h.interface}{h.side}" for h in own.hinge_history[:3])
+    # both are admissible rigid paths; they part by more than the bisection's width
+    assert named.du_mm is not None and own.du_mm is not None and abs(named.du_mm - own.du_mm) > 1.0
+    assert named.mirror_du_rigid_mm is None  # its hinges name this branch: the mirror image is not solved
+
+
+@pytest.mark.parametrize(
+    "hinges, words",
+    [
+        ("1E 9I", "three hinges on distinct interfaces of 1..16"),
+        ("1E 9X 16E", "three hinges"),
+        ("0E 9I 16E", "1..16"),
+        ("1E 1I 16E", "distinct"),
+        ("1E 2E 3E", "no admissible equilibrium on these hinges"),
+    ],
+)
+def test_a_linkage_the_rigid_arch_cannot_take_is_refused_in_one_line(hinges, words, capsys):
+    case = preset("set2").with_overrides({"n_voussoirs": 15})
+    with pytest.raises(CaseError, match=words):
+        limit_analysis(case, start_hinges=hinges)
+    args = ["limit", "--preset", "set2", "--set", "n_voussoirs=15", "--start-hinges", hinges, "--out", "/dev/null/x"]
+    assert main(args) != 0
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("error: start_hinges") and "\n" not in err and "Traceback" not in err
