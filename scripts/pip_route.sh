@@ -10,4 +10,4 @@ if [ ! -x .venv-pip/bin/python ]; then
 fi
 .venv-pip/bin/python -m pip install -q ".[test]"
 .venv-pip/bin/python -c "import numpy, pandas, numba, scipy; print(f'pip route: numpy {numpy.__version__}, pandas {pandas.__version__}, numba {numba.__version__}, scipy {scipy.__version__}')"
-.venv-pip/bin/python -m pytest -q -p no:cacheprovider --deselect tests/test_lint.py "$@"
+.venv-pip/bin/python -m pytest -q -p no:cacheprovider -n auto --dist loadfile --deselect tests/test_lint.py "$@"
