@@ -83,18 +83,23 @@ def semicircle_accelerations(ratios: Iterable[float] = T_OVER_R, n_voussoirs: in
     """The collapse acceleration (g) of semicircles of t/R (R the centre-line radius) under their weight."""
     rows = []
     for ratio in ratios:
-        thickness = 2.0 * SEMICIRCLE_RADIUS_MM * ratio / (2.0 - ratio)  # t / (r + t/2) = ratio
         case = ArchCase(name=f"semicircle_{ratio:g}").with_overrides(
             {
                 "embrace_deg": 180.0,
                 "n_voussoirs": n_voussoirs,
-                "thickness_mm": thickness,
+                "thickness_mm": semicircle_thickness_mm(ratio),
                 "live_load": "horizontal_acceleration",
             }
         )
         found = load_analysis(case)
         rows.append({"t_over_R": ratio, "collapse_acceleration_g": found.multiplier, "hinges": found.hinge_labels})
     return pd.DataFrame(rows)
+
+
+def semicircle_thickness_mm(t_over_r: float) -> float:
+    """The ring thickness of a semicircle of intrados radius SEMICIRCLE_RADIUS_MM whose t/R is `t_over_r`
+    (R the centre-line radius: t / (r + t/2))."""
+    return 2.0 * SEMICIRCLE_RADIUS_MM * t_over_r / (2.0 - t_over_r)
 
 
 def residual_capacities(base: ArchCase, fractions: Iterable[float] = SETTLEMENT_FRACTIONS) -> pd.DataFrame:

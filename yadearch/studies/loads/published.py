@@ -1,0 +1,83 @@
+"""The rigid-block LP against published closed forms of the semicircular arch under its own weight
+(docs/loads.md): the least friction at which it stands at all and the friction below which its least
+thickness rises above the no-sliding one, from Cocchetti and Rizzi (2020), Frattura ed Integrità
+Strutturale 51, 356-375, doi:10.3221/IGF-ESIS.51.26 (p. 370: a complete semicircle, radial joints)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import pandas as pd
+
+from yadearch.case.config import ArchCase, preset
+from yadearch.solve.limit import stands
+from yadearch.studies.loads.rigid import semicircle_thickness_mm
+
+SLIDING_FRICTION_DEG = 17.1824  # mu_ms = 0.309215: below it no thickness stands (purely sliding modes)
+MIXED_FRICTION_DEG = 21.5952  # mu_rm = 0.395832: below it the least thickness rises (sliding at the shoulders)
+SLIDING_LEAST_T_OVER_R = 0.200637  # the least t/R at the sliding friction
+THICK_T_OVER_R = (0.21, 0.25, 0.30)  # rings thicker than that: the least friction is the sliding one
+FRICTIONS_DEG = (17.5, 19.0, 21.0, 21.4, 21.8, 25.0, 41.2)  # the least t/R against friction
+N_VOUSSOIRS = 55
+FRICTION_TOLERANCE_DEG = 0.005  # bisection brackets
+T_OVER_R_TOLERANCE = 1e-5
+
+
+def semicircle(t_over_r: float, friction_deg: float, n_voussoirs: int = N_VOUSSOIRS) -> ArchCase:
+    """A complete semicircle with radial joints, t/R its thickness over its centre-line radius."""
+    return preset("set2").with_overrides(
+        {
+            "embrace_deg": 180.0,
+            "n_voussoirs": n_voussoirs,
+            "thickness_mm": semicircle_thickness_mm(t_over_r),
+            "friction_deg": friction_deg,
+        }
+    )
+
+
+def least(holds: Callable[[float], bool], low: float, high: float, tolerance: float) -> float:
+    """The least value in [low, high] at which `holds` (monotone: false below, true above), to `tolerance`."""
+    while high - low > tolerance:
+        middle = 0.5 * (low + high)
+        low, high = (low, middle) if holds(middle) else (middle, high)
+    return high
+
+
+def least_friction_deg(t_over_r: float, n_voussoirs: int = N_VOUSSOIRS) -> float:
+    """The least friction angle at which the semicircle of `t_over_r` stands (rigid LP)."""
+    return least(lambda phi: stands(semicircle(t_over_r, phi, n_voussoirs)), 10.0, 45.0, FRICTION_TOLERANCE_DEG)
+
+
+def least_t_over_r(friction_deg: float, n_voussoirs: int = N_VOUSSOIRS) -> float:
+    """The least t/R at which the semicircle stands with `friction_deg` (rigid LP)."""
+    return least(lambda t: stands(semicircle(t, friction_deg, n_voussoirs)), 0.09, 0.4, T_OVER_R_TOLERANCE)
+
+
+def friction_table() -> pd.DataFrame:
+    """Each published value beside the LP's: the least friction of rings thicker than the sliding
+    least t/R, the friction where the least t/R starts to rise, the least t/R just above the sliding
+    friction, and the least t/R against friction (published: the no-sliding one above MIXED_FRICTION_DEG,
+    a closed form below it that the source draws, Fig. 7)."""
+    no_sliding = least_t_over_r(FRICTIONS_DEG[-1])
+    rising = least_friction_deg(no_sliding + 2 * T_OVER_R_TOLERANCE)  # just thicker than the no-sliding least
+    near_sliding = SLIDING_FRICTION_DEG + 2 * FRICTION_TOLERANCE_DEG
+    rows = [
+        {"check": "least friction to stand", "friction_deg": least_friction_deg(t), "t_over_R": t,
+         "published_friction_deg": SLIDING_FRICTION_DEG, "published_t_over_R": None}
+        for t in THICK_T_OVER_R
+    ]  # fmt: skip
+    rows.append(
+        {"check": "least t/R starts to rise", "friction_deg": rising, "t_over_R": no_sliding,
+         "published_friction_deg": MIXED_FRICTION_DEG, "published_t_over_R": None}
+    )  # fmt: skip
+    rows.append(
+        {"check": "least t/R at the sliding friction", "friction_deg": near_sliding,
+         "t_over_R": least_t_over_r(near_sliding), "published_friction_deg": SLIDING_FRICTION_DEG,
+         "published_t_over_R": SLIDING_LEAST_T_OVER_R}
+    )  # fmt: skip
+    rows += [
+        {"check": "least t/R", "friction_deg": phi, "t_over_R": least_t_over_r(phi), "published_friction_deg": None,
+         "published_t_over_R": None}
+        for phi in FRICTIONS_DEG
+    ]  # fmt: skip
+    return pd.DataFrame(rows)
