@@ -56,3 +56,19 @@ def test_a_linkage_the_rigid_arch_cannot_take_is_refused_in_one_line(hinges, wor
     assert main(args) != 0
     err = capsys.readouterr().err.strip()
     assert err.startswith("error: start_hinges") and "\n" not in err and "Traceback" not in err
+
+
+def test_a_linkage_admissible_only_further_on_is_followed_from_where_it_is_placed():
+    # the semicircle of t/R 0.25 moved down and in (docs/atlas.md): the static engine ends on 10I 39I 56E
+    # from about 102 mm; rigid blocks placed on it there collapse a few millimetres on (measured 108.94 mm)
+    geometry = {"embrace_deg": 180.0, "thickness_mm": 75.0, "support_direction_deg": -135.0}
+    case = preset("set2").with_overrides(geometry)
+    placed = limit_analysis(case, start_hinges="10I 39I 56E", start_mm=102.5)
+    assert placed.start_mm == 102.5 and [h.from_mm for h in placed.hinge_history[:3]] == [102.5] * 3
+    assert placed.du_mm is not None and 102.5 < placed.du_mm < 120.0
+    with pytest.raises(CaseError, match="no admissible equilibrium on these hinges 10 mm along them"):
+        limit_analysis(case, start_hinges="10I 39I 56E", start_mm=10.0)
+    with pytest.raises(CaseError, match="give start_hinges too"):
+        limit_analysis(case, start_mm=5.0)
+    with pytest.raises(CaseError, match=r"start_mm must be in \[0, 150\) mm, got -1"):
+        limit_analysis(case, start_hinges="10I 39I 56E", start_mm=-1.0)

@@ -147,13 +147,14 @@ def limit(
     max_snap_mm: float | None = None,
     out: str | Path | None = None,
     start_hinges: str | Sequence[str] | None = None,
+    start_mm: float = 0.0,
 ) -> LimitResult:
     """Rigid-block limit analysis of `case` (no YADE, seconds): du_rigid and the hinge history;
     `compliant`: with the joints folding at the margin the case's kn allows (what a DEM run of that
     stiffness should find; docs/validation.md); `max_snap_mm`: a hinge snap moving a block further
     is collapse, as in a run; `start_hinges` ("1E 35I 56E"): leave rest on that linkage (another
-    engine's) instead of the LP's. With `out`, writes OUT/NAME.json and the thrust-line figure
-    (NAME_compliant.* when compliant, NAME_start-1E-35I-56E.* from a named linkage)."""
+    engine's) instead of the LP's, placed `start_mm` along it. With `out`, writes OUT/NAME.json and the
+    thrust-line figure (NAME_compliant.* when compliant, NAME_start-1E-35I-56E.* from a named linkage)."""
     from yadearch.plotting.thrust_line import save_thrust_line
     from yadearch.solve.limit import limit_analysis
     from yadearch.solve.limit_result import write_result_json
@@ -162,20 +163,27 @@ def limit(
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
-    result = limit_analysis(case, max_snap_mm=max_snap_mm, compliant=compliant, start_hinges=start_hinges)
+    result = limit_analysis(
+        case, max_snap_mm=max_snap_mm, compliant=compliant, start_hinges=start_hinges, start_mm=start_mm
+    )
     if folder is not None:
-        json_path, figure_stem = limit_files(case, compliant, folder, result.start_hinges)
+        json_path, figure_stem = limit_files(case, compliant, folder, result.start_hinges, result.start_mm)
         write_result_json(result, case, json_path)
         save_thrust_line(result, case, figure_stem)
     return result
 
 
 def limit_files(
-    case: ArchCase, compliant: bool, out: str | Path, start_hinges: Sequence[str] | None = None
+    case: ArchCase,
+    compliant: bool,
+    out: str | Path,
+    start_hinges: Sequence[str] | None = None,
+    start_mm: float | None = None,
 ) -> tuple[Path, Path]:
     """Where `limit(..., out=out)` writes: OUT/NAME.json and the figure's stem OUT/NAME (NAME_compliant
-    when compliant, then _start-1E-35I-56E from a named linkage; a name may hold dots, as kn5.2)."""
+    when compliant, then _start-1E-35I-56E from a named linkage, -at2.5mm placed along it; a name may
+    hold dots, as kn5.2)."""
     name = f"{case.name}_compliant" if compliant else case.name
     if start_hinges:
-        name += "_start-" + "-".join(start_hinges)
+        name += "_start-" + "-".join(start_hinges) + (f"-at{start_mm:g}mm" if start_mm else "")
     return Path(out) / f"{name}.json", Path(out) / name

@@ -143,6 +143,13 @@ def params() -> None:
     help="leave rest on these three hinges (e.g. another engine's) instead of the linkage the kinematic "
     "LP picks; refused unless the rigid arch holds an admissible equilibrium on them",
 )
+@click.option(
+    "--start-mm",
+    type=float,
+    default=0.0,
+    show_default=True,
+    help="with --start-hinges: place the arch this far (mm) along those hinges from rest and march on from there",
+)
 def limit(
     preset_name: str | None,
     case_file: str | None,
@@ -152,6 +159,7 @@ def limit(
     max_snap_mm: float | None,
     compliant: bool,
     start_hinges: str | None,
+    start_mm: float,
 ) -> None:
     """Rigid-block limit analysis, no YADE: du_rigid, hinges, thrust-line figure (kn only with --compliant)."""
     from yadearch.api.runs import limit as limit_analysis
@@ -166,14 +174,17 @@ def limit(
             "for the du a run at that kn should find",
             err=True,
         )
-    result = limit_analysis(case, compliant=compliant, max_snap_mm=max_snap_mm, out=out, start_hinges=start_hinges)
-    path, _ = limit_files(case, compliant, out, result.start_hinges)
+    result = limit_analysis(
+        case, compliant=compliant, max_snap_mm=max_snap_mm, out=out, start_hinges=start_hinges, start_mm=start_mm
+    )
+    path, _ = limit_files(case, compliant, out, result.start_hinges, result.start_mm)
     du = "no collapse" if result.du_rigid_mm is None else f"{result.du_rigid_mm:.2f} mm"
     if compliant:
         du += f" with compliant hinges at kn {case.interface.kn_N_per_mm3:g} N/mm^3"
     new = f" (new: {' '.join(result.new_at_collapse)})" if result.new_at_collapse else ""
     if result.start_hinges:
-        new += f", from rest on {' '.join(result.start_hinges)}"
+        where = f"{result.start_mm:g} mm along" if result.start_mm else "from rest on"
+        new += f", {where} {' '.join(result.start_hinges)}"
     click.echo(
         f"{case.name}: du_rigid = {du}, {result.collapse_mode} on {' '.join(result.collapse_hinges)}"
         f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}"

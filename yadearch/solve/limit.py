@@ -34,7 +34,7 @@ from yadearch.solve.limit_lp import Mechanism, solve_statics
 from yadearch.solve.limit_result import LimitResult, interface_forces
 from yadearch.solve.march import March
 from yadearch.solve.reseat import DEFAULT_RUNAWAY_THICKNESSES
-from yadearch.solve.rigid import SIDES, LimitError, Pivot, RigidArch, at_rest, rigid_arch
+from yadearch.solve.rigid import SIDES, LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, rigid_arch
 
 DEFAULT_STEP_MM = 0.5  # support step between equilibrium checks
 DEFAULT_TOLERANCE_MM = 1e-3  # width of the bisection bracket that locates a limit
@@ -93,6 +93,7 @@ def limit_analysis(
     compliant: bool = False,
     runaway_thicknesses: float = DEFAULT_RUNAWAY_THICKNESSES,
     start_hinges: Sequence[str] | str | None = None,
+    start_mm: float = 0.0,
 ) -> LimitResult:
     """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible
     equilibrium, its hinge history and its last admissible state (see the module docstring). A
@@ -106,9 +107,11 @@ def limit_analysis(
     (`solve.compliant`), giving the du a DEM run of that stiffness should find instead of the rigid one.
     `start_hinges` ("1E 35I 56E"): leave rest on that linkage instead of the LP's (another engine's, to
     see where the rigid blocks take it), refused in one line unless the support drives it with an
-    admissible equilibrium; its hinges name this branch, so the mirror image is not solved."""
+    admissible equilibrium; its hinges name this branch, so the mirror image is not solved. `start_mm`:
+    placed that far along it from rest (the path before is not followed), for a linkage that becomes
+    admissible only there."""
     settings = (step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant, runaway_thicknesses)
-    result, arch = _solve(case, *settings, start_hinges)
+    result, arch = _solve(case, *settings, start_hinges, start_mm)
     if start_hinges is not None or not (mirror and has_other_branch(case)):
         return result
     try:
@@ -133,6 +136,7 @@ def _solve(
     compliant: bool,
     runaway_thicknesses: float,
     start_hinges: Sequence[str] | str | None = None,
+    start_mm: float = 0.0,
 ) -> tuple[LimitResult, RigidArch]:
     """`limit_analysis` of `case` as it stands (the keystone's tie broken toward its left joint), and
     the rigid arch it solved."""
@@ -145,10 +149,9 @@ def _solve(
     runaway = runaway_thicknesses * arch.geometry.thickness
     start_pivots = () if start_hinges is None else named_linkage(start_hinges, arch.n_joints)
     march = March(arch, units.mm(step_mm), units.mm(tolerance_mm), runaway, kn, snap_cap, start_pivots)
-    if start_pivots:
-        _check_start(march, start_pivots)
     limit = min(units.mm(max_displacement_mm or case.loading.max_support_displacement_mm), arch.movement.length)
-    last, read_at, mechanism, chain = march.run(limit)
+    placed = _check_start(march, start_pivots, units.mm(start_mm), limit) if start_pivots or start_mm else None
+    last, read_at, mechanism, chain = march.run(limit, placed)
     mode, hinges = "none", tuple(p.label for p in mechanism.pivots)
     new: tuple[str, ...] = ()
     if read_at is not None:
@@ -188,6 +191,7 @@ def _solve(
         n_lp=march.n_lp,
         wall_s=time.perf_counter() - start,
         start_hinges=tuple(p.label for p in start_pivots) or None,
+        start_mm=start_mm if start_pivots else None,
         **_closest_edge(march, hinges),
     ), arch
 
@@ -208,19 +212,27 @@ def named_linkage(labels: Sequence[str] | str, n_joints: int) -> tuple[Pivot, ..
     return tuple(pivots[j] for j in sorted(pivots))
 
 
-def _check_start(march: March, pivots: tuple[Pivot, ...]) -> None:
-    """Refuse in one line a named linkage the support does not drive from rest, or on which the rigid
-    arch has no admissible equilibrium at the march's first step (where the march first checks it: a
-    linkage that a thrust line misses by a hair at the very start is still followed)."""
+def _check_start(march: March, pivots: tuple[Pivot, ...], start: float, limit: float) -> Placement | None:
+    """Where the march on a named linkage begins: rest, or `start` (m) along it; CaseError in one line
+    unless the support drives the arch on it and the rigid arch holds an admissible equilibrium there
+    (from rest: at the march's first step, where the march first checks it, so that a linkage a thrust
+    line misses by a hair at the very start is still followed)."""
+    if not pivots:
+        raise CaseError("start_mm places the arch along a named linkage: give start_hinges too")
+    if not (math.isfinite(start) and 0.0 <= start < limit):
+        raise CaseError(f"start_mm must be in [0, {units.to_mm(limit):g}) mm, got {units.to_mm(start):g}")
     rest, named = at_rest(march.arch), " ".join(p.label for p in pivots)
-    probe = march.moved(rest, Mechanism(pivots, (0.0,) * 3, 0.0), march.step)
+    placed = close_linkage(march.arch, rest, pivots, start) if start > 0.0 else rest
+    probe = march.moved(placed, Mechanism(pivots, (0.0,) * 3, 0.0), march.step) if placed is not None else None
+    where = f"{units.to_mm(start):g} mm along them" if start > 0.0 else f"{units.to_mm(march.step):g} mm from rest"
     if probe is None:
-        raise CaseError(f"start_hinges {named}: the support cannot move the arch on these hinges from rest")
-    if not march.admissible(probe):
+        raise CaseError(f"start_hinges {named}: the support cannot move the arch on these hinges ({where})")
+    if not march.admissible(probe if start == 0.0 else placed):
         raise CaseError(
-            f"start_hinges {named}: the rigid arch has no admissible equilibrium on these hinges "
-            f"{units.to_mm(march.step):g} mm from rest (no thrust line fits them)"
+            f"start_hinges {named}: the rigid arch has no admissible equilibrium on these hinges {where} "
+            "(no thrust line fits them)"
         )
+    return placed if start > 0.0 else None
 
 
 def _closest_edge(march: March, hinges: tuple[str, ...]) -> dict[str, Any]:

@@ -112,6 +112,7 @@ class LimitResult:
     closest_edge_mm: float | None = None
     closest_edge_at_mm: float | None = None
     start_hinges: tuple[str, ...] | None = None  # the linkage named to leave rest on (None: the LP's)
+    start_mm: float | None = None  # ... placed this far along it from rest (0: from rest)
 
     @property
     def references(self) -> list[str]:

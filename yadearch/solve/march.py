@@ -99,9 +99,8 @@ class March:
         return opening_chain(self.arch, placement, self.pivots, fold)
 
     def snaps(self, placement: Placement, chain: Mechanism) -> bool:
-        """Whether a folded joint's opening `chain` takes a hinge by a snap (it ends lower than it
-        starts) or collapses the arch (it closes no hinge); otherwise it would climb to close one, and
-        the two joints share that hinge until, further along the support's path, the chain descends."""
+        """Whether a folded joint's opening `chain` snaps (ends lower than it starts) or collapses the arch
+        (closes no hinge); else it climbs, and the two joints share the hinge until the chain descends."""
         path = closing_path(self.arch, placement, chain, placement, self.runaway)
         return path is None or not climbs([potential(self.arch, p) for p in path], past_fold=True)
 
@@ -117,10 +116,13 @@ class March:
         placement = close_linkage(self.arch, base, mechanism.pivots, base.delta + offset)
         return placement if self.valid(placement, base) else None
 
-    def run(self, limit: float) -> tuple[Placement, Placement | None, Mechanism, Mechanism | None]:
-        """March to collapse or to `limit`: the last admissible placement, the one where the collapse
-        mechanism was read, the mechanism followed last and the collapse mechanism."""
-        state = at_rest(self.arch)
+    def run(
+        self, limit: float, start: Placement | None = None
+    ) -> tuple[Placement, Placement | None, Mechanism, Mechanism | None]:
+        """March to collapse or to `limit` from rest (or from `start`, placed on the `start` linkage): the
+        last admissible placement, the one where the collapse mechanism was read, the mechanism followed
+        last and the collapse mechanism."""
+        state = start or at_rest(self.arch)
         if not self.admissible(state):
             raise LimitError("the arch admits no equilibrium at rest (too thin, or too little friction)")
         mechanism = self.switch(state, None, 0.0)
@@ -203,12 +205,10 @@ class March:
         return chain
 
     def reseat(self, start: Placement, read_at: Placement) -> tuple[Placement | None, float, Mechanism | None]:
-        """Re-seat the hinges at the fixed support from `start`, just past a limit (`reseat`): follow
-        the steepest chain that lowers the weights (ties toward the left) until it closes a hinge, and
-        again from there while no admissible equilibrium holds: that placement, the largest block
-        movement from `start` (mm) and the last chain tried (at a collapse: the one that runs away);
-        None for the placement if a chain runs away or none descends (collapse). The first chains are
-        read at `read_at`, further past the limit, where the energy rates stand clear of round-off."""
+        """Re-seat the hinges at the fixed support from `start`, just past a limit (`reseat`): follow the
+        steepest chain that lowers the weights (ties to the left) until it closes a hinge, again while no
+        admissible equilibrium holds: that placement (None at a collapse), the largest block move (mm)
+        and the last chain tried; the first chains read at `read_at`, clear of the LP's round-off."""
         state, probe, pivots = start, read_at, self.pivots
         last: Mechanism | None = None  # the steepest chain last tried: at a collapse, the one it runs away on
         for _ in range(self.max_stages):
