@@ -19,7 +19,8 @@ from pathlib import Path
 
 from yadearch.case.config import preset
 from yadearch.launch.process import run_case_process
-from yadearch.results.rundir import holds_case, read_summary
+from yadearch.results.reuse import holds_case
+from yadearch.results.rundir import read_summary
 from yadearch.results.summary import RunSummary
 
 TOLERANCE = 0.01

@@ -57,7 +57,8 @@ def _cell(value: object, float_format: str) -> object:
 
 def write_rows_atomically(path: Path, rows: Sequence[dict], float_format: str = CSV_FLOAT_FORMAT) -> Path:
     """`write_atomically` for records as a CSV table (the columns in order of first appearance, a
-    missing value empty): the same file as pandas' `to_csv`, without importing pandas on a run's path."""
+    missing value empty): the file pandas' `to_csv` writes for a run's rows (numbers, flags, text; a
+    column mixing big integers with floats keeps the integers whole), without importing pandas."""
     columns = list(dict.fromkeys(key for row in rows for key in row))
 
     def write(temporary: Path) -> None:

@@ -11,7 +11,8 @@ from yadearch.api import runs as api_runs
 from yadearch.case.config import preset
 from yadearch.cli import commands as cli
 from yadearch.launch import process
-from yadearch.results.rundir import CASE_FILE, holds_case, write_run
+from yadearch.results.reuse import holds_case
+from yadearch.results.rundir import CASE_FILE, write_run
 from yadearch.results.summary import RunSummary
 
 

@@ -14,7 +14,8 @@ import yadearch as ya
 from yadearch.case.config import preset
 from yadearch.errors import CaseError, RunFailedError, RunFolderError
 from yadearch.launch import process
-from yadearch.results.rundir import LOG_FILE, SUMMARY_FILE, case_differences, is_complete, read_run, write_run
+from yadearch.results.reuse import case_differences
+from yadearch.results.rundir import LOG_FILE, SUMMARY_FILE, is_complete, read_run, write_run
 from yadearch.results.summary import RunSummary
 
 
@@ -171,7 +172,7 @@ def test_a_table_cut_short_after_the_run_is_an_error_not_half_a_table(tmp_path):
 def test_a_static_run_of_another_engine_revision_is_made_again_not_reused(tmp_path):
     """The static engine's results change with its revision: a run or a failure it recorded under
     another revision is made again by `run` and by campaigns; a current one is reused."""
-    from yadearch.results.rundir import is_current, outdated
+    from yadearch.results.reuse import is_current, outdated
     from yadearch.studies.campaigns.failures import FAILED_FILE, failure_stands, record_failure
 
     case = preset("set1").replace(n_voussoirs=9, kn_N_per_mm3=1.0)

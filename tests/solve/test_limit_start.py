@@ -7,9 +7,10 @@ from __future__ import annotations
 
 import pytest
 
+import yadearch.api as ya
 from yadearch.case.config import preset
 from yadearch.cli.commands import main
-from yadearch.errors import CaseError
+from yadearch.errors import ArgumentTypeError, CaseError
 from yadearch.solve.limit import limit_analysis
 
 # the closing semicircle of docs/atlas.md at t/R 0.25: its thrust line grazes the intrados at joints 22-23
@@ -24,6 +25,17 @@ def test_the_lps_own_linkage_named_gives_the_lps_answer():
     named = limit_analysis(case, start_hinges=first)
     assert named.start_hinges == tuple(first.split())
     assert named.du_mm == own.du_mm and named.collapse_hinges == own.collapse_hinges
+
+
+def test_hinges_may_come_as_a_list_and_other_types_are_refused_in_one_line():
+    case = preset("set2").with_overrides({"n_voussoirs": 15})
+    named = limit_analysis(case, start_hinges=["3i 10e", "16E"])
+    assert named.start_hinges == ("3I", "10E", "16E")
+    for wrong in (b"3I 10E 16E", 5):
+        with pytest.raises(ArgumentTypeError, match="start_hinges must be three hinge labels"):
+            limit_analysis(case, start_hinges=wrong)
+    with pytest.raises(ArgumentTypeError, match="start_mm must be a number"):
+        ya.limit(case, start_hinges="3I 10E 16E", start_mm="5")
 
 
 def test_another_admissible_linkage_is_followed_from_rest_and_ends_elsewhere():
@@ -45,7 +57,10 @@ def test_another_admissible_linkage_is_followed_from_rest_and_ends_elsewhere():
         ("1E 9X 16E", "three hinges"),
         ("0E 9I 16E", "1..16"),
         ("1E 1I 16E", "distinct"),
-        ("1E 2E 3E", "no admissible equilibrium on these hinges"),
+        ("1E 2E 3E", "without blocks passing through each other"),
+        ("2I 10E 16E", "no admissible equilibrium on these hinges"),
+        ("1E 9I 16E", "without blocks passing through each other"),  # the LP's 3I 10E 16E with sides swapped
+        ("1I 9E 16I", "without blocks passing through each other"),
     ],
 )
 def test_a_linkage_the_rigid_arch_cannot_take_is_refused_in_one_line(hinges, words, capsys):

@@ -105,6 +105,7 @@ ARGUMENTS = {
         Argument("max_runs", int, 3, MAX_CALIBRATION_RUNS, option="--max-runs"),
         Argument("max_snap_mm", float, 0, MAX_TARGET_DU_MM, low_open=True, optional=True, option="--max-snap-mm"),
         Argument("after_mm", float, 0, MAX_TARGET_DU_MM, option="--after-mm"),
+        Argument("start_mm", float, 0, MAX_TARGET_DU_MM, option="--start-mm"),
         Argument("descend_to", float, 0, 1, optional=True, option="--descend-to"),
         Argument("compliant", bool),
         Argument("rerun", bool),

@@ -13,7 +13,7 @@ from yadearch.case.config import ArchCase
 from yadearch.case.config import preset as _preset
 from yadearch.case.names import check_name, output_path
 from yadearch.errors import ArgumentTypeError, CaseError, RunFolderError
-from yadearch.results.rundir import case_differences, is_current
+from yadearch.results.reuse import case_differences, is_current
 
 if TYPE_CHECKING:
     from yadearch.solve.limit_result import LimitResult
@@ -118,7 +118,7 @@ def reproduce(
     from concurrent.futures import ThreadPoolExecutor
 
     from yadearch.launch.process import run_case_process
-    from yadearch.results.rundir import holds_case
+    from yadearch.results.reuse import holds_case
 
     check_arguments(jobs=jobs, rerun=rerun)
     folders = [output_path(out, "out") / name for name in PAPER_SETS]
@@ -159,7 +159,7 @@ def limit(
     from yadearch.solve.limit import limit_analysis
     from yadearch.solve.limit_result import write_result_json
 
-    check_arguments(compliant=compliant, max_snap_mm=max_snap_mm)
+    check_arguments(compliant=compliant, max_snap_mm=max_snap_mm, start_mm=start_mm)
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None

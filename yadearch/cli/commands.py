@@ -145,7 +145,7 @@ def params() -> None:
 )
 @click.option(
     "--start-mm",
-    type=float,
+    type=argument_type("start_mm"),
     default=0.0,
     show_default=True,
     help="with --start-hinges: place the arch this far (mm) along those hinges from rest and march on from there",

@@ -19,8 +19,8 @@ def _value(value: float | None, digits: int) -> str:
 def published_markdown(table: pd.DataFrame) -> str:
     """The table of `published.friction_table` with its sources and what the gaps mean."""
     rows = [
-        [r.check, _value(r.friction_deg, 3), _value(r.t_over_R, 5), _value(r.published_friction_deg, 4),
-         _value(r.published_t_over_R, 6)]
+        [r.check, r.solved_for, _value(r.friction_deg, 3), _value(r.t_over_R, 5),
+         _value(r.published_friction_deg, 4), _value(r.published_t_over_R, 6)]
         for r in table.itertuples()
     ]  # fmt: skip
     lines = [
@@ -34,9 +34,13 @@ def published_markdown(table: pd.DataFrame) -> str:
         "continuous ring): below 17.1824 deg (mu 0.309215) no thickness stands, the arch slides; between it "
         "and 21.5952 deg (mu 0.395832) sliding at the shoulders raises the least t/R, to 0.200637 at the "
         "lower end; above, the least t/R is the no-sliding one. A ring of finite voussoirs can hinge or "
-        "slide only at its joints, so its least t/R lies a little below the continuous ring's.",
+        "slide only at its joints, so its least t/R lies a little below the continuous ring's. `solved for`: the "
+        "column the LP bisected (the other is given; the t/R just above the sliding friction is taken 0.01 deg "
+        "above it, where a ring still stands).",
         "",
-        *markdown_table(["check", "friction (deg)", "t/R", "published friction (deg)", "published t/R"], rows),
+        *markdown_table(
+            ["check", "solved for", "friction (deg)", "t/R", "published friction (deg)", "published t/R"], rows
+        ),
         "",
     ]
     return "\n".join(lines)

@@ -12,11 +12,11 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from yadearch.atomic import write_rows_atomically, write_text_atomically
-from yadearch.case.config import ArchCase, as_ran, with_current_names
+from yadearch.case.config import with_current_names
 from yadearch.case.numerics_section import FULL_RUN_FILES, SUMMARY_RUN_FILES
 from yadearch.errors import RunFolderError
 from yadearch.results.states import STATES_FILE, RunStates, read_states, write_states
-from yadearch.results.summary import STATIC, STATIC_REVISION, RunSummary
+from yadearch.results.summary import RunSummary
 from yadearch.results.summary_checks import summary_values_problem
 
 if TYPE_CHECKING:
@@ -129,7 +129,8 @@ def write_tables(
     folder's), each atomically."""
     if imperfections is not None:
         write_rows_atomically(
-            out / IMPERFECTIONS_FILE, [dict(zip(imperfections, row)) for row in zip(*imperfections.values())]
+            out / IMPERFECTIONS_FILE,
+            [dict(zip(imperfections, row)) for row in zip(*imperfections.values(), strict=True)],
         )
     for name, rows in ((SERIES_FILE, series), (JOINTS_FILE, joints)):
         write_rows_atomically(out / name, rows, float_format=TABLE_FLOAT_FORMAT)
@@ -204,60 +205,9 @@ def finished_summary(path: Path) -> RunSummary | None:
         return None
 
 
-def case_differences(path: Path, case: ArchCase) -> list[str]:
-    """How the finished or started run in `path` differs from `case` ("section.key: ran X, wanted
-    Y"), comparing what each runs with (`as_ran`; the name aside), and a folder that kept only its
-    summary where `case` keeps its tables."""
-    stored = tomllib.loads((Path(path) / CASE_FILE).read_text())
-    ran, wanted = as_ran(stored), as_ran(case.to_dict())
-
-    def show(value: Any) -> str:
-        return f"{value:.6g}" if isinstance(value, float) else repr(value)
-
-    differences = [
-        f"{section}.{key}: ran {show(value)}, wanted {show(wanted[section][key])}"
-        for section, values in ran.items()
-        if section != "name"
-        for key, value in values.items()
-        if value != wanted[section][key]
-    ]
-    if kept_only_summary(with_current_names(stored)) and case.numerics.keeps_tables:  # the reverse serves
-        differences.append(f"numerics.run_files: ran {SUMMARY_RUN_FILES!r} (no tables), wanted {FULL_RUN_FILES!r}")
-    return differences
-
-
 def kept_only_summary(case: dict[str, Any]) -> bool:
     """True if the run of this stored case (today's names) kept only its summary (numerics.run_files)."""
     return case.get("numerics", {}).get("run_files", FULL_RUN_FILES) == SUMMARY_RUN_FILES
-
-
-def outdated(path: Path) -> bool:
-    """True if the finished run in `path` was made by another revision of the static engine than
-    today's, whose results may differ: commands and campaigns make it again instead of reusing it."""
-    summary = finished_summary(path)
-    return summary is not None and _other_static_revision(summary)
-
-
-def current_summary(path: Path) -> RunSummary | None:
-    """The summary of the finished run in `path` if today's engines would give it alike; None for a
-    folder without one or with a run of another static engine revision (`outdated`), whose results
-    no table may show as today's."""
-    summary = finished_summary(path)
-    return None if summary is None or _other_static_revision(summary) else summary
-
-
-def is_current(path: Path) -> bool:
-    """True if the folder holds a finished run that today's engines would give alike (`outdated`)."""
-    return current_summary(path) is not None
-
-
-def _other_static_revision(summary: RunSummary) -> bool:
-    return summary.engine == STATIC and summary.engine_revision != STATIC_REVISION
-
-
-def holds_case(path: Path, case: ArchCase) -> bool:
-    """True if the folder holds a finished, current run of `case`, which can be reused instead of run again."""
-    return is_current(path) and not case_differences(path, case)
 
 
 def read_run(path: str | Path) -> RunFolder:
@@ -289,8 +239,8 @@ def read_tables(path: Path, summary: RunSummary, load_path: dict[str, Any] | Non
         raise RunFolderError(f"{path}: a file of the run folder cannot be read ({exc})") from None
     for name in (SERIES_FILE, JOINTS_FILE):
         written = (summary.table_rows or {}).get(name)  # none in runs written before the counts
-        rows = _row_count(path / name)
-        if written is not None and rows != written:
+        rows = written if written is None else _row_count(path / name)
+        if rows != written:
             raise RunFolderError(
                 f"{path / name} has {rows} rows where the run wrote {written}: it was cut short "
                 "or changed; run the case again"

@@ -18,7 +18,7 @@ from yadearch.solve.stages import Outcome
 
 DEM, STATIC = "dem", "static"  # the engines that write run folders
 # The static engine's revision, raised with every change of its results: a static run made by another
-# one is made again instead of reused (`rundir.outdated`). 2: the joints' shear is carried from one
+# one is made again instead of reused (`reuse.outdated`). 2: the joints' shear is carried from one
 # self-weight load step to the next (1: each step counted the sliding from the blocks at rest).
 # 3: the runaway bound a multiple of the ring's thickness (was 1 mm), continuation checked against the
 # step, folds located, descents retried (a solver failure is `unresolved`, never collapse).

@@ -27,13 +27,13 @@ from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes
 from yadearch.case.mechanics import held_multiplier, unheld
 from yadearch.case.shape import MEASURED
-from yadearch.errors import CaseError, YadearchError
+from yadearch.errors import ArgumentTypeError, CaseError, YadearchError
 from yadearch.model import units
 from yadearch.model.hinges import mirror_hinge_labels
 from yadearch.solve.limit_lp import Mechanism, solve_statics
 from yadearch.solve.limit_result import LimitResult, interface_forces
 from yadearch.solve.march import March
-from yadearch.solve.reseat import DEFAULT_RUNAWAY_THICKNESSES
+from yadearch.solve.reseat import DEFAULT_RUNAWAY_THICKNESSES, penetrates
 from yadearch.solve.rigid import SIDES, LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, rigid_arch
 
 DEFAULT_STEP_MM = 0.5  # support step between equilibrium checks
@@ -152,6 +152,11 @@ def _solve(
     limit = min(units.mm(max_displacement_mm or case.loading.max_support_displacement_mm), arch.movement.length)
     placed = _check_start(march, start_pivots, units.mm(start_mm), limit) if start_pivots or start_mm else None
     last, read_at, mechanism, chain = march.run(limit, placed)
+    if read_at is None and last.delta < limit - units.mm(tolerance_mm):
+        raise LimitError(
+            f"the march stopped at {units.to_mm(last.delta):.3f} mm, short of {units.to_mm(limit):g} mm: its "
+            f"linkage {' '.join(p.label for p in mechanism.pivots)} can move no further and no limit was read"
+        )
     mode, hinges = "none", tuple(p.label for p in mechanism.pivots)
     new: tuple[str, ...] = ()
     if read_at is not None:
@@ -199,7 +204,13 @@ def _solve(
 def named_linkage(labels: Sequence[str] | str, n_joints: int) -> tuple[Pivot, ...]:
     """Three hinges named as the results name them ("1E 35I 56E", or a list of labels), left to right;
     CaseError in one line unless they are three distinct interfaces of 1..n_joints, each side I or E."""
-    texts = labels.split() if isinstance(labels, str) else [str(label) for label in labels]
+    is_list = isinstance(labels, (list, tuple)) and all(isinstance(label, str) for label in labels)
+    if not (isinstance(labels, str) or is_list):
+        raise ArgumentTypeError(
+            f"start_hinges must be three hinge labels such as '1E 35I 56E' (a str, or a list of str), got "
+            f"{type(labels).__name__} {labels!r:.40}"
+        )
+    texts = [text for label in ([labels] if isinstance(labels, str) else labels) for text in label.split()]
     matches = [HINGE_LABEL.fullmatch(t.strip().upper()) for t in texts]
     pivots = {
         int(m[1]) - 1: Pivot(int(m[1]) - 1, SIDES.index(m[2])) for m in matches if m and 0 < int(m[1]) <= n_joints
@@ -207,7 +218,7 @@ def named_linkage(labels: Sequence[str] | str, n_joints: int) -> tuple[Pivot, ..
     if len(texts) != 3 or len(pivots) != 3:
         raise CaseError(
             f"start_hinges must be three hinges on distinct interfaces of 1..{n_joints}, each side I or E "
-            f"(e.g. '1E 35I 56E'), got {' '.join(texts) or 'none'}"
+            f"(e.g. '1E 35I 56E'), got {texts!r:.80}"
         )
     return tuple(pivots[j] for j in sorted(pivots))
 
@@ -225,8 +236,17 @@ def _check_start(march: March, pivots: tuple[Pivot, ...], start: float, limit: f
     placed = close_linkage(march.arch, rest, pivots, start) if start > 0.0 else rest
     probe = march.moved(placed, Mechanism(pivots, (0.0,) * 3, 0.0), march.step) if placed is not None else None
     where = f"{units.to_mm(start):g} mm along them" if start > 0.0 else f"{units.to_mm(march.step):g} mm from rest"
-    if probe is None:
-        raise CaseError(f"start_hinges {named}: the support cannot move the arch on these hinges ({where})")
+    span = march.arch.geometry.span
+    if (
+        placed is None
+        or probe is None
+        or (start > 0.0 and penetrates(march.arch, rest, placed, start / span))
+        or penetrates(march.arch, placed, probe, march.step / span)
+    ):
+        raise CaseError(
+            f"start_hinges {named}: the support cannot move the arch on these hinges ({where}) without "
+            "blocks passing through each other (a hinge on the wrong side?)"
+        )
     if not march.admissible(probe if start == 0.0 else placed):
         raise CaseError(
             f"start_hinges {named}: the rigid arch has no admissible equilibrium on these hinges {where} "

@@ -21,7 +21,6 @@ from yadearch.results.run_log import stamped_log
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSummary, collapse_fields, loading_info
 from yadearch.solve.limit import why_not_standing
-from yadearch.solve.load_path import hold_the_live_load
 from yadearch.solve.path import PathStep
 from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import StaticLoading
@@ -73,6 +72,8 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
     solver_start = time.time()
     selfweight = _selfweight(case, loading, records, log)
     if held_multiplier(case) > 0.0:
+        from yadearch.solve.load_path import hold_the_live_load  # a held load's solver, for such runs only
+
         records.held = hold_the_live_load(loading, case)
         unit = UNITS[case.loads.live_load]
         log(f"[{case.name}] the live load held at {records.held:g} {unit} (iterations {loading.iterations})")

@@ -20,7 +20,8 @@ from typing import Any
 import pandas as pd
 
 from yadearch.case.config import ArchCase, case_from_dict
-from yadearch.results.rundir import SUMMARY_FILE, holds_case, is_complete, read_summary
+from yadearch.results.reuse import holds_case
+from yadearch.results.rundir import SUMMARY_FILE, is_complete, read_summary
 from yadearch.results.summary import RunSummary
 from yadearch.studies.campaigns.failures import FAILED_FILE
 from yadearch.studies.robustness import same_hinge_set

@@ -25,7 +25,8 @@ from yadearch.case.plan import plan_run
 from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, YadearchError
 from yadearch.launch.process import STATIC_ENGINE, check_yade_installed, run_case_process
 from yadearch.results.lock import folder_lock
-from yadearch.results.rundir import case_differences, is_complete, is_current
+from yadearch.results.reuse import case_differences, is_current
+from yadearch.results.rundir import is_complete
 from yadearch.studies.campaigns.batches import BATCHES_DIR
 from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.failures import FAILED_FILE, failure_stands, record_failure
@@ -89,7 +90,7 @@ def confined_folder_name(name: str) -> str:
 
 
 def _check_same_case(spec: RunSpec) -> None:
-    """Refuse to resume over a finished run folder that ran another case (`rundir.case_differences`:
+    """Refuse to resume over a finished run folder that ran another case (`reuse.case_differences`:
     a parameter the run predates counts as the value that keeps its old behaviour)."""
     differences = case_differences(spec.folder, spec.case)
     if differences:

@@ -14,7 +14,7 @@ import pandas as pd
 from yadearch.case.config import ArchCase
 from yadearch.errors import CANNOT_STAND, UNRESOLVED
 from yadearch.model.hinges import PAPER_LABELS
-from yadearch.results.rundir import current_summary, outdated
+from yadearch.results.reuse import current_summary, outdated
 from yadearch.results.summary import RunSummary
 from yadearch.solve.stages import Outcome
 from yadearch.studies.campaigns.failures import FAILED_FILE

@@ -36,7 +36,10 @@ def semicircle(t_over_r: float, friction_deg: float, n_voussoirs: int = N_VOUSSO
 
 
 def least(holds: Callable[[float], bool], low: float, high: float, tolerance: float) -> float:
-    """The least value in [low, high] at which `holds` (monotone: false below, true above), to `tolerance`."""
+    """The least value in [low, high] at which `holds` (monotone: false below, true above), to `tolerance`;
+    ValueError if the bracket does not hold it (a bound would pass for a result)."""
+    if holds(low) or not holds(high):
+        raise ValueError(f"the least value is not bracketed by [{low:g}, {high:g}]")
     while high - low > tolerance:
         middle = 0.5 * (low + high)
         low, high = (low, middle) if holds(middle) else (middle, high)
@@ -54,30 +57,30 @@ def least_t_over_r(friction_deg: float, n_voussoirs: int = N_VOUSSOIRS) -> float
 
 
 def friction_table() -> pd.DataFrame:
-    """Each published value beside the LP's: the least friction of rings thicker than the sliding
-    least t/R, the friction where the least t/R starts to rise, the least t/R just above the sliding
-    friction, and the least t/R against friction (published: the no-sliding one above MIXED_FRICTION_DEG,
-    a closed form below it that the source draws, Fig. 7)."""
+    """Each published value beside the LP's, `solved_for` naming the column the LP computed (the other
+    is given): the least friction of rings thicker than the sliding least t/R, the friction where the
+    least t/R starts to rise, the least t/R just above the sliding friction, and the least t/R against
+    friction (published as a curve only, the source's Fig. 7: no values to set beside it)."""
     no_sliding = least_t_over_r(FRICTIONS_DEG[-1])
     rising = least_friction_deg(no_sliding + 2 * T_OVER_R_TOLERANCE)  # just thicker than the no-sliding least
     near_sliding = SLIDING_FRICTION_DEG + 2 * FRICTION_TOLERANCE_DEG
     rows = [
-        {"check": "least friction to stand", "friction_deg": least_friction_deg(t), "t_over_R": t,
-         "published_friction_deg": SLIDING_FRICTION_DEG, "published_t_over_R": None}
+        {"check": "least friction to stand", "solved_for": "friction", "friction_deg": least_friction_deg(t),
+         "t_over_R": t, "published_friction_deg": SLIDING_FRICTION_DEG, "published_t_over_R": None}
         for t in THICK_T_OVER_R
     ]  # fmt: skip
     rows.append(
-        {"check": "least t/R starts to rise", "friction_deg": rising, "t_over_R": no_sliding,
-         "published_friction_deg": MIXED_FRICTION_DEG, "published_t_over_R": None}
+        {"check": "least t/R starts to rise", "solved_for": "friction", "friction_deg": rising,
+         "t_over_R": no_sliding, "published_friction_deg": MIXED_FRICTION_DEG, "published_t_over_R": None}
     )  # fmt: skip
     rows.append(
-        {"check": "least t/R at the sliding friction", "friction_deg": near_sliding,
+        {"check": "least t/R just above the sliding friction", "solved_for": "t/R", "friction_deg": near_sliding,
          "t_over_R": least_t_over_r(near_sliding), "published_friction_deg": SLIDING_FRICTION_DEG,
          "published_t_over_R": SLIDING_LEAST_T_OVER_R}
     )  # fmt: skip
     rows += [
-        {"check": "least t/R", "friction_deg": phi, "t_over_R": least_t_over_r(phi), "published_friction_deg": None,
-         "published_t_over_R": None}
+        {"check": "least t/R", "solved_for": "t/R", "friction_deg": phi, "t_over_R": least_t_over_r(phi),
+         "published_friction_deg": None, "published_t_over_R": None}
         for phi in FRICTIONS_DEG
     ]  # fmt: skip
     return pd.DataFrame(rows)
