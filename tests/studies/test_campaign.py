@@ -325,9 +325,10 @@ def test_a_sweep_of_other_parameters_draws_du_against_each(tmp_path):
     from yadearch.plotting.sweep import parameter_sweep_figure, swept_columns
 
     table = campaign(tmp_path, FakeRuns(), grid({"kn_N_per_mm3": [0.1, 1.0, 10.0], "damping": [0.1, 0.3]}))
-    assert set(swept_columns(table)) == {"kn_N_per_mm3", "damping"}
-    for column in swept_columns(table):
-        paths = parameter_sweep_figure(table, column, tmp_path / f"du_vs_{column}")
+    swept = ["kn_N_per_mm3", "damping"]
+    assert swept_columns(table, swept) == swept
+    for column in swept_columns(table, swept):
+        paths = parameter_sweep_figure(table, column, tmp_path / f"du_vs_{column}", swept)
         assert all(p.stat().st_size > 1000 for p in paths)
 
 
@@ -387,3 +388,26 @@ def test_a_table_naming_its_runs_twice_is_refused(tmp_path):
     table.write_text("name,description,kn_N_per_mm3\na,b,1\n")
     with pytest.raises(CampaignError, match="names its runs twice"):
         read_table(table)
+
+
+def test_a_sweep_of_unlike_arches_draws_a_line_per_arch_and_no_answer_as_an_axis(tmp_path):
+    from yadearch.plotting.sweep import parameter_sweep_figure, swept_columns
+
+    table = pd.DataFrame(
+        {
+            "run": ["a0", "a45", "semi0", "semi45"],
+            "support_direction_deg": [0.0, -45.0, 0.0, -45.0],
+            "embrace_deg": [float("nan"), float("nan"), 180.0, 180.0],  # empty cells: the base case's
+            "du_mm": [25.5, 35.3, 13.3, 20.1],
+            "du_first_mm": [12.0, 21.5, 13.3, 19.0],
+            "collapsed": [True] * 4,
+            "status": ["done"] * 4,
+        }
+    )
+    swept = ["support_direction_deg", "embrace_deg"]
+    assert swept_columns(table, swept) == ["support_direction_deg"]  # du_first_mm varies too: an answer
+    paths = parameter_sweep_figure(table, "support_direction_deg", tmp_path / "du_vs_direction", swept)
+    assert all(p.stat().st_size > 1000 for p in paths)
+    alone = table.assign(embrace_deg=[float("nan"), 150.0, 160.0, 180.0])  # no two runs alike but for the axis
+    with pytest.raises(ValueError, match="no two on one line"):
+        parameter_sweep_figure(alone, "support_direction_deg", tmp_path / "none", swept)

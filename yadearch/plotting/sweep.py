@@ -5,6 +5,7 @@ Drawn from a campaign's results table, with the paper's two calibrated points fo
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 
 import matplotlib
@@ -26,26 +27,9 @@ HINGE_STYLE = {
 LEGEND_HEADROOM = 1.45  # hinge panel's y range as a multiple of the last interface
 PAPER_MECHANISM = "E-I-E-E"  # hinges D, A, B, C from left to right (paper: collapse when D opens)
 DECADE = 10.0
+BASE_CASE = "as the base case"  # a parameter a sweep's row leaves empty
+LEGEND_SETTINGS = 2  # more parameters differing between a sweep's lines: each line named by its runs
 SWEEP_STYLE = {"font.size": 8, "axes.labelsize": 8, "legend.fontsize": 6.5, "xtick.labelsize": 7, "ytick.labelsize": 7}
-RESULT_COLUMNS = {
-    "du_mm",
-    "collapsed",
-    "hinges",
-    "mechanism",
-    "hinge_A",
-    "hinge_B",
-    "hinge_C",
-    "hinge_D",
-    "steps",
-    "wall_s",
-    "max_slip_mm",
-    "max_friction_use",
-    "friction_interface",
-    "status",
-    "reason",
-    "folder",
-    "run",
-}
 
 
 def kn_sweep_figure(
@@ -153,21 +137,27 @@ def _hinge_panel(ax: Axes, runs: pd.DataFrame, paper: bool) -> None:
     ax.grid(True, which="major", lw=0.3, alpha=0.5)
 
 
-def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path) -> list[Path]:
+def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path, parameters: Sequence[str]) -> list[Path]:
     """du against one swept `column` (results.csv's name for it), one line per combination of the
-    other swept columns; log scale when the values span more than a decade. Writes STEM.pdf/.png."""
+    other swept `parameters` that vary, numbers or not (a shape, a movement); log scale when the values
+    span more than a decade. Writes STEM.pdf/.png."""
     runs = _collapsed(table)
-    others = [c for c in swept_columns(table) if c != column]
+    # a parameter left at the base case in some rows (an empty cell) takes a value of its own there
+    others = [c for c in parameters if c != column and c in table and table[c].nunique(dropna=False) > 1]
+    keys = runs[others].astype(object).where(runs[others].notna(), BASE_CASE)
+    grouper = keys[others[0]] if len(others) == 1 else [keys[c] for c in others]
+    groups = list(runs.groupby(grouper)) if others else [((), runs)]
+    if all(len(group) < 2 for _, group in groups):
+        raise ValueError(f"du against {column}: every run differs in another parameter too, no two on one line")
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
         ax = fig.subplots()
-        groups = runs.groupby(others if len(others) > 1 else others[0]) if others else [((), runs)]
         for key, group in groups:
             group = group.sort_values(column)
-            label = ", ".join(
-                f"{c} = {v:g}" if isinstance(v, float) else f"{c} = {v}"
-                for c, v in zip(others, key if isinstance(key, tuple) else (key,))
-            )
+            values_of = key if isinstance(key, tuple) else (key,)
+            label = ", ".join(_setting(c, v) for c, v in zip(others, values_of))
+            if len(others) > LEGEND_SETTINGS and "run" in group:  # a table of unlike arches: name its runs
+                label = ", ".join(group["run"].astype(str))
             ax.plot(group[column], group["du_mm"], "o-", ms=3.5, lw=1, label=label or None)
         values = runs[column].astype(float)
         if (values > 0).all() and values.max() > DECADE * values.min():
@@ -180,10 +170,18 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path) -> list
         return list(save_figure(fig, stem))
 
 
-def swept_columns(table: pd.DataFrame) -> list[str]:
-    """The parameter columns of a results table that take more than one numeric value."""
+def _setting(column: str, value: object) -> str:
+    """A legend's "name = value" (the base case's value where the row left it empty)."""
+    if value == BASE_CASE:
+        return f"{column} {BASE_CASE}"
+    return f"{column} = {value:g}" if isinstance(value, float) else f"{column} = {value}"
+
+
+def swept_columns(table: pd.DataFrame, parameters: Sequence[str]) -> list[str]:
+    """The swept `parameters` (results.csv's names) that take more than one numeric value in `table`:
+    the x axes of a sweep's figures (an answer such as du_first_mm is never one)."""
     return [
         c
-        for c in table.columns
-        if c not in RESULT_COLUMNS and pd.api.types.is_numeric_dtype(table[c]) and table[c].nunique(dropna=True) > 1
+        for c in parameters
+        if c in table and pd.api.types.is_numeric_dtype(table[c]) and table[c].nunique(dropna=True) > 1
     ]

@@ -12,7 +12,7 @@ import pandas as pd
 from yadearch.case.config import ArchCase
 from yadearch.case.paper import is_paper_arch
 from yadearch.errors import YadearchError
-from yadearch.studies.campaigns.grid import short_name
+from yadearch.studies.campaigns.grid import NAME_COLUMNS
 
 KN_KEY = "kn_N_per_mm3"
 
@@ -24,10 +24,10 @@ def sweep_figures(
     why (no numeric parameter takes two values, too few runs done)."""
     from yadearch.plotting.sweep import ENGINE_LABELS, kn_sweep_figure, parameter_sweep_figure, swept_columns
 
-    swept = {short_name(k) for row in rows for k in row if k != "run"}
-    columns = swept_columns(table)
+    swept = list(dict.fromkeys(k.split(".")[-1] for row in rows for k in row if k not in NAME_COLUMNS))
+    columns = swept_columns(table, swept)  # results.csv names an override by its last part
     try:
-        if swept == {short_name(KN_KEY)}:
+        if swept == [KN_KEY.split(".")[-1]]:
             return list(
                 kn_sweep_figure(
                     table,
@@ -38,7 +38,7 @@ def sweep_figures(
                 )
             )
         if columns:
-            return [p for c in columns for p in parameter_sweep_figure(table, c, folder / f"du_vs_{c}")]
+            return [p for c in columns for p in parameter_sweep_figure(table, c, folder / f"du_vs_{c}", swept)]
         note("no figure: no numeric parameter takes two values in this campaign")
     except ValueError as exc:
         note(f"no figure: {exc}")
