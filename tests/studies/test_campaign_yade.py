@@ -229,8 +229,15 @@ def test_ctrl_c_at_a_terminal_interrupts_a_run_instead_of_failing_it(tmp_path):
     out = tmp_path / "run"
     argv = [sys.executable, "-m", "yadearch.cli", "run", *COARSE, "--kn", "0.1", "--out", str(out)]
     run = subprocess.Popen(
-        argv, cwd=REPO, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, start_new_session=True
-    )  # a group of its own, as a terminal's foreground job
+        argv,
+        cwd=REPO,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,  # a group of its own, as a terminal's foreground job
+        # ... which takes Ctrl-C: a test worker (pytest-xdist's) may ignore SIGINT, and children inherit that
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
+    )
     log, record = tmp_path / ".run.partial" / "run.log", tmp_path / ".run.partial" / SCRATCH_RECORD
     deadline = time.time() + 120
     while not (log.is_file() and record.is_file() and record.read_text().strip()) and time.time() < deadline:
