@@ -87,3 +87,18 @@ def test_a_linkage_admissible_only_further_on_is_followed_from_where_it_is_place
         limit_analysis(case, start_mm=5.0)
     with pytest.raises(CaseError, match=r"start_mm must be in \[0, 150\) mm, got -1"):
         limit_analysis(case, start_hinges="10I 39I 56E", start_mm=-1.0)
+
+
+def test_on_the_deformable_arch_s_own_linkage_the_compliant_march_meets_the_static_engine():
+    # the semicircle of docs/validation-movements.md spreading: the deformable arch hinges at 12I and 45I,
+    # which rigid blocks admit only from about 2 mm on; placed there, the compliant march at kn 10 000
+    # meets the static engine (measured 14.41 against 14.40 mm), where on its own rigid linkage it gave 15.20
+    from yadearch.static.simulate import simulate_static
+
+    spreading = {"embrace_deg": 180.0, "thickness_mm": 40.0, "support_direction_deg": 0.0, "kn_N_per_mm3": 10000.0}
+    case = preset("set2").with_overrides(spreading)
+    static = simulate_static(case.with_overrides({"engine": "static"}), None, log=lambda line: None)
+    march = limit_analysis(case, compliant=True, start_hinges="12I 28E 45I", start_mm=2.0)
+    assert static.du_mm is not None and march.du_mm is not None
+    assert march.du_mm == pytest.approx(static.du_mm, rel=0.01)
+    assert {"12I", "45I"} <= set(march.collapse_hinges) and "12I" in static.hinge_labels

@@ -203,7 +203,7 @@ def _solve(
 
 def named_linkage(labels: Sequence[str] | str, n_joints: int) -> tuple[Pivot, ...]:
     """Three hinges named as the results name them ("1E 35I 56E", or a list of labels), left to right;
-    CaseError in one line unless they are three distinct interfaces of 1..n_joints, each side I or E."""
+    ArgumentTypeError for neither, CaseError unless three distinct interfaces of 1..n_joints, side I or E."""
     is_list = isinstance(labels, (list, tuple)) and all(isinstance(label, str) for label in labels)
     if not (isinstance(labels, str) or is_list):
         raise ArgumentTypeError(
