@@ -47,7 +47,7 @@ def write_csv_atomically(path: Path, table) -> Path:
 
 def _cell(value: object, float_format: str) -> object:
     """A CSV cell as pandas writes it: floats by `float_format`, NaN and None empty, the rest as text."""
-    if value is None or (isinstance(value, float) and math.isnan(value)):
+    if value is None:
         return ""
     if isinstance(value, numbers.Real) and not isinstance(value, numbers.Integral):
         value = float(value)

@@ -90,20 +90,9 @@ def test_the_minimum_thickness_of_a_semicircle_converges_to_milankovitchs_with_m
     toward Milankovitch's 0.1075 for a continuous ring (as quoted by Makris and Alexakis 2013, Arch.
     Appl. Mech., doi:10.1007/s00419-013-0763-4); measured 0.10736 / 0.10746 / 0.10748 with 55 / 101 /
     201 voussoirs."""
-    from yadearch.solve.limit import stands
+    from yadearch.studies.loads.published import least_t_over_r
 
-    def least_standing(n_voussoirs: int) -> float:
-        low, high = 0.09, 0.13
-        while high - low > 1e-5:
-            middle = 0.5 * (low + high)
-            thickness = 2.0 * 300.0 * middle / (2.0 - middle)  # t / (radius + t/2) = t/R
-            case = preset("set2").with_overrides(
-                {"embrace_deg": 180.0, "n_voussoirs": n_voussoirs, "thickness_mm": thickness, **HIGH_FRICTION}
-            )
-            low, high = (low, middle) if stands(case) else (middle, high)
-        return high
-
-    least = [least_standing(n) for n in (55, 101, 201)]
+    least = [least_t_over_r(HIGH_FRICTION["friction_deg"], n) for n in (55, 101, 201)]
     assert least[0] < least[1] < least[2] < 0.1075
     assert least[2] == pytest.approx(0.1075, rel=5e-4)
 

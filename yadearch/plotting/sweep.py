@@ -144,9 +144,7 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path, paramet
     runs = _collapsed(table)
     # a parameter left at the base case in some rows (an empty cell) takes a value of its own there
     others = [c for c in parameters if c != column and c in table and table[c].nunique(dropna=False) > 1]
-    keys = runs[others].astype(object).where(runs[others].notna(), BASE_CASE)
-    grouper = keys[others[0]] if len(others) == 1 else [keys[c] for c in others]
-    groups = list(runs.groupby(grouper)) if others else [((), runs)]
+    groups = _lines(runs, others)
     if all(len(group) < 2 for _, group in groups):
         raise ValueError(f"du against {column}: every run differs in another parameter too, no two on one line")
     with matplotlib.rc_context(SWEEP_STYLE):
@@ -168,6 +166,15 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path, paramet
             ax.legend(frameon=False)
         ax.grid(True, lw=0.3, alpha=0.5)
         return list(save_figure(fig, stem))
+
+
+def _lines(runs: pd.DataFrame, others: list[str]) -> list[tuple[object, pd.DataFrame]]:
+    """The runs grouped by their values of `others` (an empty cell, the base case's value, a group of its
+    own): one line of the figure each, keyed by those values."""
+    if not others:
+        return [((), runs)]
+    keys = runs[others].astype(object).where(runs[others].notna(), BASE_CASE)
+    return list(runs.groupby(keys[others[0]] if len(others) == 1 else [keys[c] for c in others]))
 
 
 def _setting(column: str, value: object) -> str:

@@ -239,7 +239,9 @@ def read_tables(path: Path, summary: RunSummary, load_path: dict[str, Any] | Non
         raise RunFolderError(f"{path}: a file of the run folder cannot be read ({exc})") from None
     for name in (SERIES_FILE, JOINTS_FILE):
         written = (summary.table_rows or {}).get(name)  # none in runs written before the counts
-        rows = written if written is None else _row_count(path / name)
+        if written is None:
+            continue
+        rows = _row_count(path / name)
         if rows != written:
             raise RunFolderError(
                 f"{path / name} has {rows} rows where the run wrote {written}: it was cut short "

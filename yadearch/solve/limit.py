@@ -30,7 +30,7 @@ from yadearch.case.shape import MEASURED
 from yadearch.errors import ArgumentTypeError, CaseError, YadearchError
 from yadearch.model import units
 from yadearch.model.hinges import mirror_hinge_labels
-from yadearch.solve.limit_lp import Mechanism, solve_statics
+from yadearch.solve.limit_lp import solve_statics
 from yadearch.solve.limit_result import LimitResult, interface_forces
 from yadearch.solve.march import March
 from yadearch.solve.reseat import DEFAULT_RUNAWAY_THICKNESSES, penetrates
@@ -234,7 +234,7 @@ def _check_start(march: March, pivots: tuple[Pivot, ...], start: float, limit: f
         raise CaseError(f"start_mm must be in [0, {units.to_mm(limit):g}) mm, got {units.to_mm(start):g}")
     rest, named = at_rest(march.arch), " ".join(p.label for p in pivots)
     placed = close_linkage(march.arch, rest, pivots, start) if start > 0.0 else rest
-    probe = march.moved(placed, Mechanism(pivots, (0.0,) * 3, 0.0), march.step) if placed is not None else None
+    probe = march.moved(placed, march.start, march.step) if placed is not None and march.start else None
     where = f"{units.to_mm(start):g} mm along them" if start > 0.0 else f"{units.to_mm(march.step):g} mm from rest"
     span = march.arch.geometry.span
     if (

@@ -49,7 +49,7 @@ class March:
         start: tuple[Pivot, ...] = (),
     ) -> None:
         self.arch, self.step, self.tolerance, self.n_lp = arch, step, tolerance, 0
-        self.start = start  # the three hinges to leave rest on (none: the kinematic LP's)
+        self.start = Mechanism(start, (0.0,) * len(start), 0.0) if start else None  # None: leave rest on the LP's
         self.runaway = runaway  # a re-seating chain moving a block further (m) runs away: the collapse
         self.kn = kn  # joint stiffness (N/m^3) whose fold margins the joints keep (None: rigid blocks)
         self.folding = False  # the chain followed now opens a joint that folded (it may climb first)
@@ -122,7 +122,7 @@ class March:
         """March to collapse or to `limit` from rest (or from `start`, placed on the `start` linkage): the
         last admissible placement, the one where the collapse mechanism was read, the mechanism followed
         last and the collapse mechanism."""
-        state = start or at_rest(self.arch)
+        state = start if start is not None else at_rest(self.arch)
         if not self.admissible(state):
             raise LimitError("the arch admits no equilibrium at rest (too thin, or too little friction)")
         mechanism = self.switch(state, None, 0.0)
@@ -236,10 +236,9 @@ class March:
     def snap(
         self, start: Placement, chain: Mechanism | None, pivots: tuple[Pivot, ...]
     ) -> tuple[Placement | None, float, Mechanism | None]:
-        """Follow a folded joint's hinge-migrating chains (compliant march) at a fixed support from
-        `start` until the turned-back hinge closes and equilibrium exists again: that placement, the
-        largest block movement (mm) and the last chain; None for the placement if the arch finds no
-        equilibrium so (collapse)."""
+        """Follow a folded joint's hinge-migrating chains (compliant march) at a fixed support from `start`
+        until the turned-back hinge closes and equilibrium exists again: that placement (None: collapse),
+        the largest block movement (mm) and the last chain."""
         state = start
         for _ in range(self.max_stages):
             if not moves_a_hinge(chain, pivots, self.reach):
@@ -278,8 +277,8 @@ class March:
         """The three-hinge mechanism that follows the support from `state` (the LP's, or one tied with
         it to first order that lowers the weights more: `reseat.follow_tie`), recorded in the history
         (hinges that stop, hinges that start)."""
-        named = mechanism is None and bool(self.start)  # the linkage named to leave rest on
-        new = Mechanism(self.start, (0.0,) * len(self.start), 0.0) if named else self.kinematics(state)
+        named = mechanism is None and self.start is not None
+        new = self.start if named else self.kinematics(state)
         if new is None or len(new.pivots) != 3:
             found = "none" if new is None else " ".join(p.label for p in new.pivots) or "none"
             raise LimitError(

@@ -61,7 +61,8 @@ def friction_table() -> pd.DataFrame:
     is given): the least friction of rings thicker than the sliding least t/R, the friction where the
     least t/R starts to rise, the least t/R just above the sliding friction, and the least t/R against
     friction (published as a curve only, the source's Fig. 7: no values to set beside it)."""
-    no_sliding = least_t_over_r(FRICTIONS_DEG[-1])
+    least_t = {phi: least_t_over_r(phi) for phi in FRICTIONS_DEG}  # each bisected once
+    no_sliding = least_t[FRICTIONS_DEG[-1]]
     rising = least_friction_deg(no_sliding + 2 * T_OVER_R_TOLERANCE)  # just thicker than the no-sliding least
     near_sliding = SLIDING_FRICTION_DEG + 2 * FRICTION_TOLERANCE_DEG
     rows = [
@@ -79,8 +80,8 @@ def friction_table() -> pd.DataFrame:
          "published_t_over_R": SLIDING_LEAST_T_OVER_R}
     )  # fmt: skip
     rows += [
-        {"check": "least t/R", "solved_for": "t/R", "friction_deg": phi, "t_over_R": least_t_over_r(phi),
+        {"check": "least t/R", "solved_for": "t/R", "friction_deg": phi, "t_over_R": t,
          "published_friction_deg": None, "published_t_over_R": None}
-        for phi in FRICTIONS_DEG
+        for phi, t in least_t.items()
     ]  # fmt: skip
     return pd.DataFrame(rows)
