@@ -1,7 +1,7 @@
 """Backfill as dead loads (model/backfill.py) and spread loads' shapes (model/loads.py): the fill's
 weight is the fill's volume above the extrados, its lateral thrust Rankine's K gamma H^2 / 2 on each
 side; the rigid LP, the rigid march and the static engine carry it (supports balance weights, fill and
-load; stiff joints within 2 % of rigid blocks); the DEM refuses it in one line."""
+load; stiff joints within 2 % of rigid blocks); CGAL contacts refuse it in one line (the DEM: tests/dem)."""
 
 from __future__ import annotations
 
@@ -131,8 +131,9 @@ def test_under_fill_the_rigid_linkage_hangs_on_a_joint_whose_thrust_grazes_its_c
 
 
 def test_who_does_not_take_backfill_says_so_in_one_line():
-    with pytest.raises(CaseError, match="fill_depth_mm = 50: the DEM does not apply backfill yet"):
-        plan_run(_filled())
+    with pytest.raises(CaseError, match="contact_model = 'cgal': backfill .* needs the joint elements"):
+        plan_run(_filled(**{"numerics.contact_model": "cgal"}))
     with pytest.raises(CaseError, match="fill_depth_mm must be"):
         _filled(fill_depth_mm=-1.0)
-    plan_run(_filled(**{"numerics.engine": "static"}))  # the static engine takes it
+    plan_run(_filled(**{"numerics.engine": "static"}))  # both engines take it with the joint elements
+    plan_run(_filled())

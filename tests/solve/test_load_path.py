@@ -166,8 +166,8 @@ def test_the_static_influence_line_is_symmetric_and_below_rigid_blocks(tmp_path)
 
 
 def test_the_dem_load_path_refuses_what_it_cannot_follow_in_one_line(tmp_path, capsys):
-    """`yadearch loads --engine dem` refuses, before YADE starts, backfill, CGAL contacts and no live
-    load, each in one line; the API refuses an unknown engine and a DEM path or influence line without
+    """`yadearch loads --engine dem` refuses, before YADE starts, CGAL contacts and no live load, each
+    in one line; the API refuses an unknown engine and a DEM path or influence line without
     a folder to write it to."""
     import yadearch as ya
     from yadearch.cli.commands import main
@@ -175,7 +175,6 @@ def test_the_dem_load_path_refuses_what_it_cannot_follow_in_one_line(tmp_path, c
 
     base = ["loads", "--preset", "set2", "--set", "n_voussoirs=15", "--engine", "dem", "--out", str(tmp_path)]
     refusals = (
-        (["--set", "live_load=vertical", "--set", "fill_depth_mm=20"], "loads.fill_depth_mm = 20"),
         (["--set", "live_load=vertical", "--set", "numerics.contact_model=cgal"], "numerics.contact_model = 'cgal'"),
         ([], "loads.live_load is 'none'"),
     )

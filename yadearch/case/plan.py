@@ -63,10 +63,10 @@ def plan_run(case: ArchCase) -> RunPlan:
                 f"numerics.contact_model = {num.contact_model!r}: a DEM run holding a live load needs the joint "
                 "elements (numerics.contact_model = 'joint')"
             )
-    if case.loads.fill_depth_mm > 0.0 and num.engine != "static":
+    if case.loads.fill_depth_mm > 0.0 and num.contact_model != "joint":
         raise CaseError(
-            f"loads.fill_depth_mm = {case.loads.fill_depth_mm:g}: the DEM does not apply backfill yet; "
-            "the static engine does (numerics.engine = 'static', or --engine static)"
+            f"numerics.contact_model = {num.contact_model!r}: backfill (loads.fill_depth_mm = "
+            f"{case.loads.fill_depth_mm:g}) needs the joint elements (numerics.contact_model = 'joint')"
         )
     geometry = arch_geometry(case)  # refuses an arch that cannot be built (case/shape.py)
     _check_imperfections(case, geometry)
@@ -105,18 +105,13 @@ def plan_run(case: ArchCase) -> RunPlan:
 
 
 def check_dem_load(case: ArchCase) -> None:
-    """Refuse, before YADE starts, a live-load case the DEM cannot follow: no live load, CGAL contacts
-    (the load's stability test needs the joint elements) or backfill (not applied by the DEM yet)."""
+    """Refuse, before YADE starts, a live-load case the DEM cannot follow: no live load or CGAL contacts
+    (the load's stability test needs the joint elements)."""
     require_live_load(case)
     if case.numerics.contact_model != "joint":
         raise CaseError(
             f"numerics.contact_model = {case.numerics.contact_model!r}: the DEM's load path needs the joint "
             "elements (numerics.contact_model = 'joint')"
-        )
-    if case.loads.fill_depth_mm > 0.0:
-        raise CaseError(
-            f"loads.fill_depth_mm = {case.loads.fill_depth_mm:g}: the DEM does not apply backfill yet; "
-            "the static engine does (--engine static)"
         )
     plan_run(case.with_overrides({"live_load": NONE}))  # the time step and the run's other checks
 

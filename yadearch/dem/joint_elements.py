@@ -37,7 +37,8 @@ class JointElementContacts:
         self.shear = np.zeros(len(geometry.joints))
         self.slip = np.zeros(len(geometry.joints))  # accumulated sliding beyond the Coulomb cap (m)
         self.last: JointForces | None = None
-        self.external = np.zeros((len(geometry.blocks), 2))  # loads besides the weights (N), for `unbalanced`
+        self.external = np.zeros((len(geometry.blocks), 2))  # a live load now (N), for `unbalanced`
+        self.dead_external = np.zeros((len(geometry.blocks), 2))  # the dead loads now (N), for `unbalanced`
 
     def bind(self, pos0: np.ndarray, ori0: np.ndarray, callback: str) -> list[Any]:
         """Keep the block states and weights at hand and return the one engine this model needs."""
@@ -156,4 +157,5 @@ class JointElementContacts:
         newton = next(e for e in O.engines if isinstance(e, NewtonIntegrator))
         gravity = np.array(newton.gravity)[:2]
         weights = self._masses[self._free, None] * gravity
-        return unbalanced_force(forces, self._free, weights + self.external[self._free])
+        loads = weights + self.external[self._free] + self.dead_external[self._free]
+        return unbalanced_force(forces, self._free, loads)

@@ -100,7 +100,7 @@ class LoadedArch:
 
     def smallest_stiffness(self) -> float:
         """The static tangent's smallest eigenvalue at the poses, the load's own stiffness included."""
-        return self.driver.contacts.smallest_stiffness(self.driver.turning())
+        return self.runner.smallest_stiffness(self.driver.turning())
 
     def reach(self, increment: float) -> float:
         """A load increment moves the blocks quasi-statically at most by its generalised force over the
@@ -197,6 +197,7 @@ def dem_load_path(
         if after_mm > 0.0:
             _move_supports(runner, after_mm)
         arch = LoadedArch(runner, scene_live_loads(runner), ramp_rate(case, settings))
+        runner.recorder.stiffness = arch.smallest_stiffness  # series.csv's stiffness with the live load's
         runner.position = lambda: f"load={arch.driver.multiplier:7.4g} {unit}"
         start = Stage.SELFWEIGHT if after_mm == 0.0 else Stage.EQUILIBRIUM
         _record_from_here(runner, lambda: (arch.driver.multiplier, unit), start)

@@ -45,6 +45,8 @@ class Recorder:
         self.records = Records()
         self.stage = Stage.SELFWEIGHT
         self.turning: Callable[[], np.ndarray] | None = None  # a held live load's stiffness (`dem.load_ramp`)
+        # the static tangent's smallest eigenvalue at the poses, the loads' stiffness included (the runner's)
+        self.stiffness: Callable[[], float] = scene.contacts.smallest_stiffness
         self.load: Callable[[], tuple[float, str]] | None = None  # a live load's path: its multiplier now, unit
         self.friction: dict = {}
         self._last_series_iter = -(10**9)
@@ -65,8 +67,9 @@ class Recorder:
         left, right = self.reactions()
         return abs((left[1] + right[1]) / weight - 1.0)
 
-    def selfweight_record(self, weight: float, unbalanced: float, steps: int) -> dict:
-        """What the self-weight equilibrium is, for summary.json: its reactions, thrust and crown sag."""
+    def selfweight_record(self, weight: float, unbalanced: float, steps: int, fill: float = 0.0) -> dict:
+        """What the self-weight equilibrium is, for summary.json: its reactions, thrust and crown sag, and
+        the backfill's weight `fill` (N) where there is one."""
         left, right = self.reactions()
         crown = self.scene.geometry.crown_voussoir
         crown_y = body_states(self.scene)[0][crown][1]
@@ -78,6 +81,7 @@ class Recorder:
             "horizontal_reaction_sum_N": float(left[0] + right[0]),
             "thrust_N": float(abs(left[0])),
             "crown_settlement_mm": -units.to_mm(float(crown_y - self.scene.pos0[crown][1])),
+            **({"fill_weight_N": fill} if fill else {}),
         }
 
     def series(self, force: bool = False, stability: bool = False) -> None:
@@ -111,8 +115,7 @@ class Recorder:
             }
         )
         if stability:
-            turning = self.turning() if self.turning else None
-            self.records.series[-1][STIFFNESS_COLUMN] = self.scene.contacts.smallest_stiffness(turning)
+            self.records.series[-1][STIFFNESS_COLUMN] = self.stiffness()
 
     def joint_snapshot(self) -> tuple[dict, list[Hinge]]:
         """Per-interface state now, and its hinges (`results.joint_rows`)."""

@@ -18,6 +18,7 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import runaway_length, standing_parameters
 from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
+from yadearch.dem.dead_load import install_dead_loads
 from yadearch.dem.driver import SupportDriver
 from yadearch.dem.live_arch import settle_selfweight
 from yadearch.dem.recorder import Recorder, Records
@@ -49,7 +50,9 @@ class Runner:
             self.scene, self.movement, self.full_speed, units.mm(support_acceleration_mm_per_s2(case, self.movement))
         )
         self._install_driver()
+        self.dead_loads = install_dead_loads(self.scene, case)  # the backfill (None without)
         self.recorder = Recorder(self.scene, self.driver, self.num)
+        self.recorder.stiffness = self.smallest_stiffness
         self.gate = SteppingGate()
         self.gate.install()
         self.driver.zero_here()
@@ -165,6 +168,8 @@ class Runner:
         gravity = np.array(newton.gravity)
         ramp_steps = max(1, int(ramp_s / O.dt))
         self.weight = sum(O.bodies[i].state.mass for i in self.scene.voussoir_ids) * self.case.loading.gravity_m_per_s2
+        # the backfill's weight on the voussoirs, which the supports carry beside the arch's
+        fill = self.dead_loads.vertical if self.dead_loads is not None else 0.0
         unbalanced = math.inf
         while O.iter - start < max_steps:
             fraction = min(1.0, (O.iter - start) / ramp_steps)
@@ -184,7 +189,7 @@ class Runner:
                 and unbalanced < self.num.equilibrium_tolerance
                 and O.iter - start > ramp_steps + 10 * CHECK_EVERY_STEPS
                 and self.recorder.voussoir_speeds().max() < units.mm(self.num.still_speed_mm_per_s)
-                and self.recorder.weight_carried_error(self.weight) < self.num.equilibrium_tolerance
+                and self.recorder.weight_carried_error(self.weight + fill) < self.num.equilibrium_tolerance
             ):
                 break
         else:
@@ -198,19 +203,23 @@ class Runner:
         self.driver.zero_here()
         self.recorder.series(force=True)
         self.recorder.joints(Stage.SELFWEIGHT)
-        info = self.recorder.selfweight_record(self.weight, unbalanced, O.iter - start)
+        info = self.recorder.selfweight_record(self.weight, unbalanced, O.iter - start, fill)
         self.log(
             f"[{self.case.name}] self-weight equilibrium after {info['steps']} steps: "
             f"unbalanced {unbalanced:.2e}, reactions {info['vertical_reaction_sum_N']:.3f} N "
-            f"for a weight of {self.weight:.3f} N, thrust {info['thrust_N']:.3f} N"
+            f"for a weight of {self.weight:.3f} N"
+            + (f" and {fill:.3f} N of backfill" if fill else "")
+            + f", thrust {info['thrust_N']:.3f} N"
         )
         return info
 
-    def smallest_stiffness(self) -> float:
+    def smallest_stiffness(self, live: np.ndarray | None = None) -> float:
         """The smallest eigenvalue of the free blocks' tangent stiffness at the scene's poses (N/m), with
-        the rotational stiffness of a live load the run holds (`recorder.turning`)."""
-        turning = self.recorder.turning
-        return self.scene.contacts.smallest_stiffness(turning() if turning else None)
+        the rotational stiffness of the loads on the blocks: the dead loads' and the live load's (`live`,
+        or the one the run holds, `recorder.turning`)."""
+        held, dead = self.recorder.turning, self.dead_loads
+        parts = [t for t in (live, held() if held else None, dead.turning() if dead else None) if t is not None]
+        return self.scene.contacts.smallest_stiffness(np.sum(parts, axis=0) if parts else None)
 
     def reach(self, increment: float) -> float:
         """A support increment moves the blocks it carries at most by as much (m)."""

@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -61,8 +62,9 @@ def held_markdown(held: pd.DataFrame) -> str:
     lines = [
         "## Load, then movement",
         "",
-        "A live load held while the right support settles (`loads.held_load_N`, `held_acceleration_g`; "
-        f"docs/loads.md): du by the static engine and the DEM at kn {ENGINES_KN:g} N/mm3 (the DEM within "
+        "A live load or a backfill held while the right support settles (`loads.held_load_N`, "
+        "`held_acceleration_g`, `fill_depth_mm` with its lateral coefficient K; docs/loads.md): du by the "
+        f"static engine and the DEM at kn {ENGINES_KN:g} N/mm3 (the DEM within "
         f"{100 * ENGINES_TOLERANCE:g} % in {within} of {len(done)}), and by the static engine at kn "
         f"{STIFF_KN:g} beside the rigid march (within {100 * STIFF_TOLERANCE:g} % in {stiff} of {len(held)}). "
         f"The DEM's run folders are in {HELD_FOLDER}/.",
@@ -70,7 +72,7 @@ def held_markdown(held: pd.DataFrame) -> str:
         *markdown_table(
             [
                 "case",
-                "held",
+                "held load",
                 "static du (mm)",
                 "DEM du (mm)",
                 "DEM - static",
@@ -83,7 +85,7 @@ def held_markdown(held: pd.DataFrame) -> str:
             (
                 [
                     r.case.replace("_", " "),
-                    f"{r.held:g} {r.unit}",
+                    _held_loads(r),
                     _number(r.static_du_mm),
                     _number(r.dem_du_mm),
                     _percent(r.dem_over_static),
@@ -101,6 +103,14 @@ def held_markdown(held: pd.DataFrame) -> str:
         "",
     ]
     return "\n".join(lines)
+
+
+def _held_loads(row: Any) -> str:
+    """What a held-load row holds: its live load, its backfill, or both."""
+    parts = [f"{row.held:g} {row.unit}"] if row.held else []
+    if row.fill_mm:
+        parts.append(f"{row.fill_mm:g} mm of fill (K {row.fill_K:g})")
+    return ", ".join(parts)
 
 
 def influence_table(paths: Path, jobs: int) -> pd.DataFrame:

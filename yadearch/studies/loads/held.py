@@ -1,6 +1,6 @@
-"""Load, then movement, on the three solvers (reports/loads/engines): a live load held while the support
-settles, du on the static engine, in the DEM (a run folder each, read back on a rerun) and by the rigid
-march, with the static engine at stiff joints beside the rigid answer."""
+"""Load, then movement, on the three solvers (reports/loads/engines): a live load or a backfill held while
+the support settles, du on the static engine, in the DEM (a run folder each, read back on a rerun) and
+by the rigid march, with the static engine at stiff joints beside the rigid answer."""
 
 from __future__ import annotations
 
@@ -29,6 +29,8 @@ SMALL = {"n_voussoirs": 15, "friction_deg": CHECK_FRICTION_DEG, "live_load": "ve
 PAPER_HELD_N = (2.0, 4.0, 6.0)  # held at the paper arch's quarter span
 SMALL_HELD_N = (2.0, 4.0)  # held at 0.3 of the small arch's span
 PAPER_HELD_G = 0.1  # an acceleration held on the paper's arch
+PAPER_FILL_MM = 50.0  # backfill over the paper arch's crown (K 0: its weight alone)
+SMALL_FILL = {"fill_depth_mm": 20.0, "fill_lateral_coefficient": 0.3}  # over the small arch, with its lateral pressure
 
 
 def held_cases() -> list[ArchCase]:
@@ -44,6 +46,12 @@ def held_cases() -> list[ArchCase]:
     )
     small = ArchCase(name="small").with_overrides({**SMALL, "interface.kn_N_per_mm3": ENGINES_KN})
     cases += [small.with_overrides({"held_load_N": p, "name": f"small_held_{p:g}N"}) for p in SMALL_HELD_N]
+    unloaded = {"live_load": "none"}
+    cases.append(
+        paper.with_overrides({**unloaded, "fill_depth_mm": PAPER_FILL_MM, "name": f"paper_fill_{PAPER_FILL_MM:g}mm"})
+    )
+    fill = SMALL_FILL["fill_depth_mm"]
+    cases.append(small.with_overrides({**unloaded, **SMALL_FILL, "name": f"small_fill_{fill:g}mm_K0.3"}))
     return cases
 
 
@@ -51,7 +59,8 @@ def static_du_mm(case: ArchCase) -> tuple[float, str]:
     """du (mm; NaN without collapse) and the collapse mode's hinges of `case` on the static engine."""
     loading = StaticLoading.of(case)
     loading.selfweight()
-    hold_the_live_load(loading, case)
+    if held_multiplier(case) > 0.0:
+        hold_the_live_load(loading, case)
     path = loading.follow()
     if not path.collapsed:
         return math.nan, ""
@@ -79,7 +88,9 @@ def held_table(cases: list[ArchCase], out: Path, jobs: int = 2, log: Callable[[s
         return {
             "case": case.name,
             "held": held_multiplier(case),
-            "unit": UNITS[case.loads.live_load],
+            "unit": UNITS.get(case.loads.live_load, ""),
+            "fill_mm": case.loads.fill_depth_mm,
+            "fill_K": case.loads.fill_lateral_coefficient,
             "static_du_mm": static,
             "static_hinges": static_hinges,
             "dem_du_mm": dem_du,
