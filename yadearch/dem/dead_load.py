@@ -10,10 +10,11 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import backfill
 from yadearch.dem.joint_elements import JointElementContacts
+from yadearch.dem.live_load import add_block_loads
 from yadearch.dem.scene import CALLBACK_NAME, ArchScene
 from yadearch.errors import CaseError
 from yadearch.model.backfill import backfill_points
-from yadearch.model.loads import block_loads, turned_moments, turning_stiffness
+from yadearch.model.loads import block_loads, turning_stiffness
 
 DEAD_LOAD_LABEL = "yadearch_dead_load"
 DEAD_CALLBACK = f"{CALLBACK_NAME}_dead"  # the driver's name in __main__, which its PyRunner calls
@@ -53,21 +54,12 @@ class DeadLoadDriver:
 
     def step(self) -> None:
         """This step's share of the loads: forces and turned moments added to the blocks."""
-        from yade import O
-
         share = -float(self.scene.newton.gravity[1]) / self.full_gravity
         if share != self.share:
             self.share = share
             self.contacts.dead_external = share * self.loads[:, 0:2]
-        if share == 0.0:
-            return
-        loads = self._loaded_loads
-        torque = share * turned_moments(loads, self.contacts.poses[self.loaded, 2])
-        forces = share * loads[:, 0:2]
-        add_force, add_torque = O.forces.addF, O.forces.addT
-        for body_id, (fx, fy), tz in zip(self.body_ids, forces.tolist(), torque.tolist()):
-            add_force(body_id, (fx, fy, 0.0))
-            add_torque(body_id, (0.0, 0.0, tz))
+        if share != 0.0:
+            add_block_loads(self.body_ids, share * self._loaded_loads, self.contacts.poses[self.loaded, 2])
 
     def turning(self) -> np.ndarray:
         """The loads' own rotational stiffness on each block now (N m/rad), for the stability test."""

@@ -62,16 +62,21 @@ class LoadDriver:
             else:
                 self.multiplier += change if self.target > self.multiplier else -change
             self.contacts.external = self.multiplier * self.loads[:, 0:2]
-        if self.multiplier == 0.0:
-            return
-        loads = self._loaded_loads
-        torque = self.multiplier * turned_moments(loads, self.contacts.poses[self.loaded, 2])
-        forces = self.multiplier * loads[:, 0:2]
-        add_force, add_torque = O.forces.addF, O.forces.addT
-        for body_id, (fx, fy), tz in zip(self.body_ids, forces.tolist(), torque.tolist()):
-            add_force(body_id, (fx, fy, 0.0))
-            add_torque(body_id, (0.0, 0.0, tz))
+        if self.multiplier != 0.0:
+            add_block_loads(self.body_ids, self.multiplier * self._loaded_loads, self.contacts.poses[self.loaded, 2])
 
     def turning(self) -> np.ndarray:
         """The load's own rotational stiffness on each block now (N m/rad), for the stability test."""
         return self.multiplier * turning_stiffness(self.loads, self.contacts.poses[:, 2])
+
+
+def add_block_loads(body_ids: list[int], loads: np.ndarray, turn: np.ndarray) -> None:
+    """Add `loads` (k, 4; `model.loads.block_loads`) to the bodies `body_ids` in YADE's force container:
+    the forces, and their moments about the centroids with the arms turned by the blocks' rotations `turn`."""
+    from yade import O
+
+    torque = turned_moments(loads, turn)
+    add_force, add_torque = O.forces.addF, O.forces.addT
+    for body_id, (fx, fy), tz in zip(body_ids, loads[:, 0:2].tolist(), torque.tolist()):
+        add_force(body_id, (fx, fy, 0.0))
+        add_torque(body_id, (0.0, 0.0, tz))
