@@ -1,8 +1,10 @@
 """A run's figures drawn in two processes (plotting.parallel) are the files one process draws, byte
-for byte, and a drawing the child could not finish is drawn by the parent."""
+for byte, a drawing the child could not finish is drawn by the parent, the shares are the most even
+split of the costs, and the garbage collector is paused while drawing."""
 
 from __future__ import annotations
 
+import gc
 import os
 import sys
 from pathlib import Path
@@ -11,7 +13,7 @@ import pytest
 from conftest import REPO
 
 from yadearch.analysis.run import analyse_run
-from yadearch.plotting.parallel import Drawing, draw_all
+from yadearch.plotting.parallel import Drawing, _split, collector_paused, draw_all
 from yadearch.plotting.run_figures import write_figures
 from yadearch.results.rundir import read_run
 
@@ -66,3 +68,24 @@ def test_a_process_running_other_threads_draws_alone(tmp_path: Path) -> None:
 def test_the_number_of_drawing_processes_is_one_or_two() -> None:
     with pytest.raises(ValueError, match="jobs must be 1 or 2"):
         draw_all([], jobs=3)
+
+
+def test_the_split_is_the_most_even_one() -> None:
+    """Costs 3, 3, 2, 2, 2: a greedy split, dearest first, gives 7 and 5; the best gives 6 and 6."""
+    drawings = [Drawing(name, cost, lambda: None) for name, cost in zip("abcde", (3.0, 3.0, 2.0, 2.0, 2.0))]
+    here, there = _split(drawings)
+    assert sorted(d.name for d in here + there) == list("abcde")
+    assert sum(d.cost for d in here) == sum(d.cost for d in there) == 6.0
+
+
+def test_the_garbage_collector_is_paused_while_drawing_and_restored() -> None:
+    enabled = []
+    draw_all([Drawing("a", 1.0, lambda: enabled.append(gc.isenabled()))])
+    assert enabled == [False] and gc.isenabled()
+    gc.disable()
+    try:
+        with collector_paused():
+            pass
+        assert not gc.isenabled()  # a collector that was off stays off
+    finally:
+        gc.enable()

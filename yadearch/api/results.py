@@ -132,10 +132,10 @@ class RunResult:
 
     def write_figures(self, out: str | Path | None = None, jobs: int = 1) -> dict[str, tuple[Path, Path]]:
         """Write the run's figures (PDF and PNG) into `out` (default: the run folder's `figures/`); `jobs`
-        2 draws them in two processes where the platform forks (Linux)."""
-        from yadearch.analysis.run import analyse_run
+        2 draws them in two processes where the platform forks (Linux). The garbage collector is paused
+        from the imports on (`plotting.parallel.collector_paused`)."""
         from yadearch.api.arguments import check_arguments
-        from yadearch.plotting.run_figures import write_figures
+        from yadearch.plotting.parallel import collector_paused
 
         check_arguments(figure_jobs=jobs)
         if self.folder.load_path is not None:  # a run's figures are drawn against a displacement it holds
@@ -144,7 +144,11 @@ class RunResult:
                 "animate and export_vtk"
             )
         folder = output_path(out, "out") if out is not None else self.path / FIGURES_DIR
-        return write_figures(self.folder, analyse_run(self.folder), folder, jobs)
+        with collector_paused():
+            from yadearch.analysis.run import analyse_run
+            from yadearch.plotting.run_figures import write_figures
+
+            return write_figures(self.folder, analyse_run(self.folder), folder, jobs)
 
     def __repr__(self) -> str:
         if self.folder.load_path is not None:

@@ -11,6 +11,7 @@ from matplotlib.figure import Figure
 
 from yadearch.atomic import write_atomically
 from yadearch.model.hinges import PAPER_LABELS
+from yadearch.plotting.pdf_fonts import lean_pdf_fonts
 
 CM = 1 / 2.54  # inches
 COLUMN_CM = 8.5
@@ -54,10 +55,12 @@ def new_figure(height_cm: float, width_cm: float = COLUMN_CM) -> Figure:
 
 def save_figure(fig: Figure, stem: Path) -> tuple[Path, Path]:
     """Write `stem`.pdf (vector, without a creation date, so that regenerated evidence differs only
-    where its content does) and `stem`.png (300 dpi); returns both paths."""
+    where its content does; fonts without their layout tables, `plotting.pdf_fonts`) and `stem`.png
+    (300 dpi); returns both paths."""
     stem.parent.mkdir(parents=True, exist_ok=True)
     pdf, png = stem.with_name(f"{stem.name}.pdf"), stem.with_name(f"{stem.name}.png")  # a stem may hold dots
-    write_atomically(pdf, lambda tmp: fig.savefig(tmp, format="pdf", metadata={"CreationDate": None}))
+    with lean_pdf_fonts():
+        write_atomically(pdf, lambda tmp: fig.savefig(tmp, format="pdf", metadata={"CreationDate": None}))
     write_atomically(png, lambda tmp: fig.savefig(tmp, format="png", dpi=PNG_DPI))
     return pdf, png
 

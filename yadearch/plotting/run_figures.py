@@ -227,8 +227,8 @@ def plot_stability(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[P
     return save_figure(fig, stem)
 
 
-# what drawing each figure costs, relative (seconds of set 2's static run, measured): splits the work
-FIGURE_COSTS = {"strip": 1.08, "reactions": 0.55, "hinges": 0.51, "stability": 0.39, "collapse": 0.35, "crown": 0.24}
+# what drawing each figure costs, relative (CPU seconds of set 2's static run, measured): splits the work
+FIGURE_COSTS = {"strip": 0.83, "hinges": 0.40, "reactions": 0.37, "collapse": 0.26, "crown": 0.24, "stability": 0.22}
 
 
 def write_figures(run: RunFolder, analysis: RunAnalysis, out: Path, jobs: int = 1) -> dict[str, tuple[Path, Path]]:
