@@ -9,16 +9,21 @@ import zlib
 from pathlib import Path
 
 import matplotlib
+import pytest
 from fontTools.ttLib import TTFont
 from matplotlib import font_manager
 from matplotlib.backends import _backend_pdf_ps
 
 from yadearch.plotting.house import STYLE, new_figure, save_figure
-from yadearch.plotting.pdf_fonts import LAYOUT_TABLES, glyph_subset, lean_pdf_fonts
+from yadearch.plotting.pdf_fonts import LAYOUT_TABLES, glyph_subset, lean_fonts_apply, lean_pdf_fonts
 
+needs_lean_fonts = pytest.mark.skipif(
+    not lean_fonts_apply(), reason="this matplotlib subsets fonts otherwise: its own subsetting writes the PDFs"
+)
 TEXT = r"0123456789.,()-=: reaction (N) settlement δ"
 
 
+@needs_lean_fonts
 def test_the_lean_subset_draws_the_same_glyphs() -> None:
     path = font_manager.findfont("DejaVu Sans")
     lean, full = TTFont(glyph_subset(path, TEXT)), TTFont(_backend_pdf_ps.get_glyphs_subset(path, TEXT))
@@ -42,6 +47,7 @@ def _page_content(pdf: Path) -> list[bytes]:
     return [zlib.decompress(stream[1]) for number, stream in streams if stream and number not in fonts]
 
 
+@needs_lean_fonts
 def test_a_figure_pdf_is_drawn_the_same_with_lean_fonts(tmp_path: Path) -> None:
     fig = new_figure(height_cm=5.0)
     ax = fig.add_subplot()
@@ -59,3 +65,15 @@ def test_a_figure_pdf_is_drawn_the_same_with_lean_fonts(tmp_path: Path) -> None:
     assert _backend_pdf_ps.get_glyphs_subset is not glyph_subset  # matplotlib's own, outside the block
     with lean_pdf_fonts():
         assert _backend_pdf_ps.get_glyphs_subset is glyph_subset
+
+
+def test_where_the_lean_fonts_do_not_apply_matplotlib_writes_the_pdf(tmp_path: Path, monkeypatch) -> None:
+    """A matplotlib whose subsetting takes other arguments (3.11: glyph indices) keeps its own."""
+
+    def by_glyph_index(fontfile: str, glyphs: set[int]) -> None:
+        raise AssertionError("not called in this test")
+
+    monkeypatch.setattr(_backend_pdf_ps, "get_glyphs_subset", by_glyph_index)
+    assert not lean_fonts_apply()
+    with lean_pdf_fonts():
+        assert _backend_pdf_ps.get_glyphs_subset is by_glyph_index
