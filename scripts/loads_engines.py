@@ -4,7 +4,7 @@
 
 Runs every case's load path on both engines (the DEM in child processes, --jobs at a time; those whose
 files OUT/load_paths holds already are read back) and writes engines.md, engines.csv, numerics.csv,
-influence.csv and engines.pdf/.png; about 13 minutes of YADE on two cores from scratch.
+influence.csv, held.csv and engines.pdf/.png; about 30 minutes of YADE on two cores from scratch.
 """
 
 from __future__ import annotations

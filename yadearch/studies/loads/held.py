@@ -30,7 +30,7 @@ PAPER_HELD_N = (2.0, 4.0, 6.0)  # held at the paper arch's quarter span
 SMALL_HELD_N = (2.0, 4.0)  # held at 0.3 of the small arch's span
 PAPER_HELD_G = 0.1  # an acceleration held on the paper's arch
 PAPER_FILL_MM = 50.0  # backfill over the paper arch's crown (K 0: its weight alone)
-SMALL_FILL = {"fill_depth_mm": 20.0, "fill_lateral_coefficient": 0.3}  # over the small arch, with its lateral pressure
+SMALL_FILL_MM = 20.0  # over the small arch (K 0; with K 0.3 it stands beyond 150 mm)
 
 
 def held_cases() -> list[ArchCase]:
@@ -50,8 +50,9 @@ def held_cases() -> list[ArchCase]:
     cases.append(
         paper.with_overrides({**unloaded, "fill_depth_mm": PAPER_FILL_MM, "name": f"paper_fill_{PAPER_FILL_MM:g}mm"})
     )
-    fill = SMALL_FILL["fill_depth_mm"]
-    cases.append(small.with_overrides({**unloaded, **SMALL_FILL, "name": f"small_fill_{fill:g}mm_K0.3"}))
+    cases.append(
+        small.with_overrides({**unloaded, "fill_depth_mm": SMALL_FILL_MM, "name": f"small_fill_{SMALL_FILL_MM:g}mm"})
+    )
     return cases
 
 
