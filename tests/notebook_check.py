@@ -20,7 +20,11 @@ UNIT = re.compile(r"(?:\s*-\s*[\d.]+)?\s*(mrad|mm|N)(?![/\w])")  # "12.6 N", "3.
 NUMERICS = NumericsConfig()
 DU_BRACKET_MM = NUMERICS.du_tolerance_mm  # du and the path's displacements are located to this bracket
 EQUILIBRIUM = NUMERICS.equilibrium_tolerance  # a force balances to this share of the contact forces
-HINGE_MRAD = NUMERICS.hinge_rotation_mrad  # rotations are told apart at the hinge threshold
+HINGE_MRAD = NUMERICS.hinge_rotation_mrad  # rotations are told apart at the hinge threshold, ...
+# ... or this share of a large one: a collapse state is read where a falling block passed the runaway
+# bound, and its rotations move with the round-off of the fall (the quickstart's set-1 run on an AMD
+# EPYC: 218, 573, 286 mrad against the committed 210, 562, 282, the same du and hinges)
+FALLING_ROTATION = 0.05
 EXACT = 1e-9  # counts, hinge numbers, inputs and bisection points: identical on every machine
 MM, MRAD, FORCE, PLAIN = "mm", "mrad", "N", ""
 COLUMN_KINDS = (("_mm", MM), ("_mrad", MRAD), ("_N", FORCE))  # a table column's kind from its unit
@@ -82,7 +86,8 @@ def _numbers(cell) -> list[tuple[float, str]]:
 
 
 def _close(was: float, now: float, kind: str, largest_force: float) -> bool:
-    tolerance = {MM: DU_BRACKET_MM, MRAD: HINGE_MRAD, FORCE: EQUILIBRIUM * largest_force}.get(kind)
+    rotation = max(HINGE_MRAD, FALLING_ROTATION * abs(was))
+    tolerance = {MM: DU_BRACKET_MM, MRAD: rotation, FORCE: EQUILIBRIUM * largest_force}.get(kind)
     return abs(now - was) <= tolerance if tolerance is not None else now == pytest.approx(was, rel=EXACT)
 
 
