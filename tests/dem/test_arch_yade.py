@@ -1,8 +1,10 @@
-"""A coarse arch on real YADE, with each contact model: equilibrium under self-weight, then three
-hinges under settlement."""
+"""A coarse arch on real YADE, with each contact model: equilibrium under self-weight, also with
+voussoirs of erroneous dimensions (built touching, they stand with every joint closed and carrying
+compression, no joint overlapping beyond its elastic closure), then three hinges under settlement."""
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 from conftest import HAS_YADE, needs_yade
 
@@ -15,32 +17,56 @@ if HAS_YADE:
     import_yade()
 
 COARSE = {"n_voussoirs": 15, "kn_N_per_mm3": 0.25, "equilibrium_tolerance": 1e-4, "progress_every_s": 1e9}
+ERRORS = {"voussoir_length_sd_mm": 0.5, "voussoir_thickness_sd_mm": 1.0, "seed": 2}
+OVERLAP_TOLERANCE = 1.5  # no joint closes more than this times the perfect arch's largest closure
+
+
+def _overlaps(runner) -> tuple[dict, np.ndarray]:
+    """The joint snapshot and each joint's largest overlap (mm) of a settled arch."""
+    snap, _ = runner.recorder.joint_snapshot()
+    js = snap["js"]
+    return snap, -units.to_mm(np.minimum(js.opening_intrados, js.opening_extrados))
 
 
 # The tests share one arch and run in file order, each settling the support further: the holds come
 # first, while the arch is far from collapse (a hold near it may time out), the 12 mm move last.
 @pytest.fixture(scope="module", params=["joint", "cgal"])
 def settled(request):
-    """A 15-voussoir version of the paper's arch after the self-weight stage."""
+    """A 15-voussoir version of the paper's arch after the self-weight stage, and what the same arch
+    of voussoirs with dimension errors settled to before it (self-weight info, joint snapshot, overlaps;
+    one scene at a time, so it runs first)."""
     from yadearch.dem.runner import Runner
 
     case = preset("set1").with_overrides({**COARSE, "contact_model": request.param})
+    imperfect = Runner(case.with_overrides(ERRORS), log=lambda line: None)
+    try:
+        errors = (imperfect.selfweight(), *_overlaps(imperfect))
+    finally:
+        imperfect.close()
     runner = Runner(case, log=lambda line: None)
     info = runner.selfweight()
-    yield runner, info
+    yield runner, info, errors
     runner.close()
 
 
 def test_self_weight_is_carried_by_the_supports(settled):
-    runner, info = settled
+    runner, info, _ = settled
     assert info["vertical_reaction_sum_N"] == pytest.approx(info["arch_weight_N"], rel=0.005)
     assert abs(info["horizontal_reaction_sum_N"]) < 0.005 * info["thrust_N"]  # equal, opposite thrusts
     # a no-tension arch of this shape pushes outwards: thrust between 0.2 and 0.6 of its weight
     assert 0.2 < info["thrust_N"] / info["arch_weight_N"] < 0.6
 
 
+def test_voussoirs_with_dimension_errors_stand_in_contact_under_their_weight(settled):
+    runner, _, (info, snap, overlap) = settled
+    _, perfect = _overlaps(runner)
+    assert info["vertical_reaction_sum_N"] == pytest.approx(info["arch_weight_N"], rel=0.005)
+    assert (overlap > 0.0).all() and (snap["normal"] > 0.0).all()  # every joint touches and carries
+    assert overlap.max() < OVERLAP_TOLERANCE * perfect.max()
+
+
 def test_settlement_opens_three_hinges_where_the_mechanism_puts_them(settled):
-    runner, _ = settled
+    runner, *_ = settled
     runner.stage = "loading"
     runner.move_to(units.mm(8.0))
     assert runner.hold() == "stable"  # 8 mm is far from collapse: the arch follows the support
@@ -69,7 +95,7 @@ def test_collider_pairs_only_blocks_that_share_a_joint():
 def test_a_snapshot_puts_the_arch_back_where_it_was(settled):
     """The search goes back to saved states: a restored snapshot must be the saved configuration
     (support included), with its shear forces, and stand in equilibrium as it did."""
-    runner, _ = settled
+    runner, *_ = settled
     runner.stage = "loading"
     runner.move_to(runner.delta() + units.mm(2.0))
     assert runner.hold() == "stable"
@@ -92,7 +118,7 @@ def test_a_snapshot_puts_the_arch_back_where_it_was(settled):
 def test_holds_run_at_hold_damping_and_moves_at_the_loading_damping(settled):
     """du must not depend on the loading damping: the equilibrium verdicts use their own damping."""
 
-    runner, _ = settled
+    runner, *_ = settled
     num = runner.num
     loading, num.hold_damping = num.hold_damping, 0.35
     try:
@@ -111,7 +137,7 @@ def test_support_follows_the_trapezoidal_profile_to_its_target(settled):
     arrive exactly, in the steps the trapezoid takes (ramp up, cruise, ramp down)."""
     from yade import O
 
-    runner, _ = settled
+    runner, *_ = settled
     driver = runner.driver
     start, start_iter = runner.delta(), O.iter
     runner.move_to(start + units.mm(12.0))
@@ -125,7 +151,7 @@ def test_support_follows_the_trapezoidal_profile_to_its_target(settled):
 def test_an_engine_error_fails_the_run_in_one_line_instead_of_hanging(settled):
     from yadearch.errors import RunFailedError
 
-    runner, _ = settled
+    runner, *_ = settled
     contacts = runner.scene.contacts
     original = contacts.step
     contacts.step = lambda: 1 / 0  # a Python engine of the scene raises inside YADE's loop

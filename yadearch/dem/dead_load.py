@@ -11,7 +11,7 @@ from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import backfill
 from yadearch.dem.joint_elements import JointElementContacts
 from yadearch.dem.live_load import add_block_loads
-from yadearch.dem.scene import CALLBACK_NAME, ArchScene
+from yadearch.dem.scene import CALLBACK_NAME, ArchScene, install_before_integrator
 from yadearch.errors import CaseError
 from yadearch.model.backfill import backfill_points
 from yadearch.model.loads import block_loads, turning_stiffness
@@ -40,17 +40,10 @@ class DeadLoadDriver:
 
     def install(self) -> None:
         """Reachable from its PyRunner, which runs every step before the integrator."""
-        from yade import O
         from yade.wrapper import PyRunner
 
-        import __main__
-
-        setattr(__main__, DEAD_CALLBACK, self)
-        engines = list(O.engines)
-        engines.insert(
-            len(engines) - 1, PyRunner(command=f"{DEAD_CALLBACK}.step()", iterPeriod=1, label=DEAD_LOAD_LABEL)
-        )
-        O.engines = engines
+        engine = PyRunner(command=f"{DEAD_CALLBACK}.step()", iterPeriod=1, label=DEAD_LOAD_LABEL)
+        install_before_integrator(DEAD_CALLBACK, self, engine)
 
     def step(self) -> None:
         """This step's share of the loads: forces and turned moments added to the blocks."""

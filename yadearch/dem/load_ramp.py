@@ -18,6 +18,7 @@ from yadearch.dem.live_load import LOAD_CALLBACK, LoadDriver
 from yadearch.dem.loading import EquilibriumPath
 from yadearch.dem.recorder import Records
 from yadearch.dem.runner import Runner
+from yadearch.dem.scene import install_before_integrator
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
@@ -47,16 +48,9 @@ class LoadedArch:
     `dem.loading.LiveArch` the equilibrium path drives); it records the load-displacement curve."""
 
     def __init__(self, runner: Runner, loads: np.ndarray, full_rate: float, recorded: bool = True):
-        from yade import O
-
-        import __main__
-
         self.runner = runner
         self.driver = LoadDriver(runner.scene, loads)
-        setattr(__main__, LOAD_CALLBACK, self.driver)
-        engines = list(O.engines)
-        engines.insert(len(engines) - 1, self.driver.engine())  # before the integrator
-        O.engines = engines
+        install_before_integrator(LOAD_CALLBACK, self.driver, self.driver.engine())
         self.full_rate = full_rate  # multiplier per second of the largest increment's ramp
         self.recorded = recorded  # its equilibria recorded in the run's tables (not while a run's load is set)
         self.loads = loads

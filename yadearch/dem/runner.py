@@ -22,7 +22,7 @@ from yadearch.dem.dead_load import install_dead_loads
 from yadearch.dem.driver import SupportDriver
 from yadearch.dem.live_arch import settle_selfweight
 from yadearch.dem.recorder import Recorder, Records
-from yadearch.dem.scene import CALLBACK_NAME, body_states, build_scene, stop_voussoirs
+from yadearch.dem.scene import CALLBACK_NAME, body_states, build_scene, install_before_integrator, stop_voussoirs
 from yadearch.dem.scene_state import capture, put_back
 from yadearch.dem.stepping import SteppingGate
 from yadearch.dem.timing import EngineClock
@@ -81,14 +81,7 @@ class Runner:
 
     # ---- scene plumbing -------------------------------------------------------------------
     def _install_driver(self) -> None:
-        from yade import O
-
-        import __main__
-
-        setattr(__main__, CALLBACK_NAME + "_driver", self.driver)
-        engines = list(O.engines)
-        engines.insert(len(engines) - 1, self.driver.engine())
-        O.engines = engines
+        install_before_integrator(CALLBACK_NAME + "_driver", self.driver, self.driver.engine())
         self.driver.bind()
 
     def snapshot(self) -> dict:

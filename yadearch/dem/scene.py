@@ -163,6 +163,19 @@ def build_block_scene(
     )
 
 
+def install_before_integrator(callback_name: str, callback: object, engine: Any) -> None:
+    """Make `callback` reachable under `callback_name` from PyRunner commands and put its `engine`
+    last before the integrator, so that what it sets on the blocks acts in the same step."""
+    from yade import O
+
+    import __main__
+
+    setattr(__main__, callback_name, callback)
+    engines = list(O.engines)
+    engines.insert(len(engines) - 1, engine)
+    O.engines = engines
+
+
 def _quat_wxyz(q: Any) -> list[float]:
     """A minieigen Quaternion (indexed x, y, z, w) as [w, x, y, z]."""
     return [q[3], q[0], q[1], q[2]]
