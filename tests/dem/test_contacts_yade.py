@@ -146,13 +146,15 @@ def test_block_on_tilted_plane_stays_below_the_friction_angle_and_slides_above(m
 def test_cgal_contacts_collapse_a_coarse_arch_where_the_joint_model_does(tmp_path):
     """The whole run with CGAL contacts against the static engine (the joint model; the joint-element
     DEM meets it on this arch, tests/dem/test_static_vs_dem_yade.py): du within 1 % and the same
-    hinges (measured: 110.66 against 110.26 mm, 1E 2I 6E 10E; 110.59 and 110.74 with holds of 2 and
-    0.5 s). Holds of 1 s: CGAL contacts never get quiet enough to end their self-weight's settling
-    holds early, which took 67 s of the run at 2 s. kn 0.5, where du_first = du: at kn 0.3 the static
-    path snaps at 74 mm and ends at 99.40 mm (1E 2I 5E 8I 10E), and the DEM's du moves with its
-    increments (99.41 mm at 5 mm, 105.6 at 2.5 and 10 mm, on 1E 2I 6E 10E; docs/numerics.md)."""
+    hinges at the last equilibrium (measured: 110.66 against 110.27 mm, 1E 2I 6E 10E; 110.59 and
+    110.74 with holds of 2 and 0.5 s). Holds of 1 s: CGAL contacts never get quiet enough to end
+    their self-weight's settling holds early, which took 67 s of the run at 2 s. kn 0.5, where
+    du_first = du: at kn 0.3 the static path snaps at 74 mm and ends at 99.40 mm (1E 2I 5E 8I 10E),
+    and the DEM's du moves with its increments (99.41 mm at 5 mm, 105.6 at 2.5 and 10 mm, on
+    1E 2I 6E 10E; docs/numerics.md)."""
     from yadearch.case.config import preset
     from yadearch.dem.runner import Runner
+    from yadearch.model.hinges import same_hinges
     from yadearch.static.simulate import simulate_static
 
     coarse = {"n_voussoirs": 9, "kn_N_per_mm3": 0.5, "max_increment_mm": 5.0, "progress_every_s": 1e9}
@@ -164,4 +166,6 @@ def test_cgal_contacts_collapse_a_coarse_arch_where_the_joint_model_does(tmp_pat
     )
     assert cgal.collapsed and static.collapsed and static.du_first_mm == static.du_mm
     assert cgal.du_mm == pytest.approx(static.du_mm, rel=0.01)
-    assert cgal.hinge_labels == static.hinge_labels
+    # the mechanism at the last equilibrium: the runaway state's hinges vary from run to run with CGAL
+    # contacts (1E 2I 6E 9I in one CI run, 1E 2I 6E 10E in others)
+    assert same_hinges(cgal.hinges_last_equilibrium, static.hinges_last_equilibrium)
