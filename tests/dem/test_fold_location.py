@@ -1,11 +1,13 @@
 """The DEM's loading path locates a snap's fold as the static engine does (docs/numerics.md,
 "Collapse"): a relaxation that snaps is not taken as it comes; the fold is bisected to the path's
-tolerance and the snap made from just past it. A fake live arch, no YADE."""
+tolerance and the snap made from just past it. A state the hold calls an equilibrium but the static
+model moves is held on. Fake live arches, no YADE."""
 
 from __future__ import annotations
 
 from typing import Any
 
+import numpy as np
 import pytest
 
 from yadearch.case.config import preset
@@ -51,6 +53,12 @@ class SnappingArch:
     def smallest_stiffness(self) -> float:
         return 1.0
 
+    def static_distance(self) -> float | None:
+        return None  # no static model: the hold's verdict alone
+
+    def positions(self) -> np.ndarray:
+        return np.array([[self.branch * JUMP, 0.0, 0.0]])
+
     def reach(self, increment: float) -> float:
         return abs(increment)
 
@@ -94,3 +102,44 @@ def test_a_path_without_snaps_is_not_bisected():
     result = path.follow()
     assert path.snaps == [] and path.first_loss is None
     assert len(result.steps) == len(result.equilibria) < 25  # one relaxation an increment
+
+
+class NearEquilibriumArch(SnappingArch):
+    """Past FOLD on the first branch a hold from rest stops at once (slow and balanced: the DEM's
+    near-equilibrium) though the static model moves the blocks JUMP; a hold that goes on snaps to
+    the next branch, unless `stuck`."""
+
+    def __init__(self, stuck: bool = False) -> None:
+        super().__init__()
+        self.stuck = stuck
+
+    def static_distance(self) -> float | None:
+        return JUMP if self.branch == 0 and self.position >= FOLD else 0.0
+
+    def hold(self, from_rest: bool = True, **_: Any) -> Verdict:
+        if self.branch == 0 and self.position >= FOLD and not from_rest and not self.stuck:
+            self.branch, self.hold_move = 1, JUMP
+            self.snaps_made_at.append(self.position)
+        else:
+            self.hold_move = CREEP * abs(self.position - self._from) if from_rest else 0.0
+        return Verdict.STABLE
+
+
+def test_a_near_equilibrium_the_static_model_moves_is_held_on_and_its_snap_located():
+    arch = NearEquilibriumArch()
+    path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
+    path.follow()
+    assert path.relaxations["off_equilibrium"]  # held on where the hold alone said 'stable'
+    assert len(path.snaps) == 1
+    low, high = (x / 1e3 for x in path.snaps[0]["fold_mm"])
+    assert low < FOLD <= high and high - low <= SETTINGS.tolerance
+    assert path.snaps[0]["move_mm"] == pytest.approx(JUMP * 1e3)
+    assert path.first_loss == pytest.approx((low, high))
+
+
+def test_a_state_the_static_model_keeps_moving_is_unresolved_not_accepted():
+    arch = NearEquilibriumArch(stuck=True)
+    path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
+    result = path.follow()
+    assert result.unresolved and not result.collapsed
+    assert max(path.relaxations["delta_mm"]) < FOLD * 1e3  # nothing past the fold was accepted

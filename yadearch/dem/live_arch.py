@@ -53,6 +53,10 @@ class LiveArch(Protocol):
 
     def reach(self, increment: float) -> float: ...  # how far a path increment moves a block quasi-statically (m)
 
+    def static_distance(
+        self,
+    ) -> float | None: ...  # the static model's move to a stable equilibrium (m; `dem.static_check`)
+
     @property
     def total_steps(self) -> int: ...
 

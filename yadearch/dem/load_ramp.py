@@ -102,6 +102,10 @@ class LoadedArch:
         softest = self.curve[-1]["min_stiffness_N_per_m"]
         return abs(increment) * self.force_norm / softest if softest > 0.0 else math.inf
 
+    def static_distance(self) -> float | None:
+        """None: a live load's states are not put in the static model (its multiplier is not wired)."""
+        return None
+
     def delta(self) -> float:
         return self.driver.multiplier
 

@@ -16,6 +16,7 @@ from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, 
 from yadearch.solve.stages import Stage, Verdict
 
 HOLD_RETRIES = 1  # a hold that finds neither equilibrium nor runaway goes on this many times more
+NEAR_EQUILIBRIUM_HOLDS = 8  # holds a state the static model moves (`_off_equilibrium`) goes on, then unresolved
 SNAP_THICKNESS_FRACTION = 0.01  # a relaxation moving a block this x the ring's thickness ...
 # ... and further than its increment moves a block quasi-statically (`LiveArch.reach`) is a snap
 
@@ -41,6 +42,8 @@ class EquilibriumPath:
             "delta_mm": [],
             "increment_mm": [],
             "move_mm": [],
+            # states a hold called equilibria that the static model moved: [delta_mm, move_mm (inf: no stable state)]
+            "off_equilibrium": [],
         }
         self.snaps: list[dict] = []  # relaxations that carried the arch to another branch
         self._start = 0.0  # where the last increment started (m)
@@ -48,6 +51,7 @@ class EquilibriumPath:
         # the path's parameter: the support's displacement, or with `settings` a live load's multiplier
         # (in `unit`), the supports held
         self.moves_support = settings is None
+        self._relax_move = 0.0  # how far the last relaxation moved a block, over all its holds (m)
         self.settings = settings or path_settings(self.num, path_end_mm(arch.case, arch.movement))
         self.unit = unit
 
@@ -71,7 +75,7 @@ class EquilibriumPath:
             if verdict != Verdict.STABLE:
                 break
             if self._snapped(high - low):
-                self._record_snap(low, high, self.arch.hold_move)
+                self._record_snap(low, high, self._relax_move)
             if high >= target:
                 break
             start, base = high, self.arch.snapshot()
@@ -82,24 +86,59 @@ class EquilibriumPath:
 
     def _relax_at(self, start: float, target: float) -> Verdict:
         """From the live state at `start`, move the support to `target` and hold it: the verdict, an
-        equilibrium counted only where the static tangent at the poses is positive definite."""
+        equilibrium counted only where the static tangent at the poses is positive definite and the
+        static model does not move the blocks (`_on_equilibrium`)."""
         self.arch.stage = Stage.INCREMENT
         # every move lasts as long as the largest increment's: the short moves near collapse are
         # gentle, and the arch ends them close to its equilibrium configuration
         fraction = abs(target - start) / self.settings.max_increment
         self.arch.move_support(target, min(1.0, fraction))
         self.arch.stage = Stage.RELAX
+        origin = self.arch.positions()
         verdict = self.arch.hold()
+        first_move = self.arch.hold_move
         for _ in range(HOLD_RETRIES):
             if verdict != Verdict.TIMEOUT:
                 break
             verdict = self.arch.hold(from_rest=False)  # the hold goes on before it is called unresolved
-        return stable_tangent(self.arch, verdict)
+        verdict = self._on_equilibrium(stable_tangent(self.arch, verdict))
+        self._relax_move = max(first_move, self._moved_from(origin))
+        return verdict
+
+    def _on_equilibrium(self, verdict: Verdict) -> Verdict:
+        """A hold's 'stable' kept only where the static model does not move the blocks (`_off_equilibrium`):
+        a near-equilibrium past a fold is slow and balanced to the tolerance but is not one. Such a
+        state is held on, up to NEAR_EQUILIBRIUM_HOLDS times, then unresolved (Verdict.TIMEOUT)."""
+        holds = 0
+        while verdict == Verdict.STABLE and self._off_equilibrium():
+            if holds == NEAR_EQUILIBRIUM_HOLDS:
+                self.arch.log(f"[{self.arch.case.name}] still off after {holds} more holds: unresolved")
+                return Verdict.TIMEOUT
+            verdict = stable_tangent(self.arch, self.arch.hold(from_rest=False))
+            holds += 1
+        return verdict
+
+    def _off_equilibrium(self) -> bool:
+        """Whether the static model, from the blocks' poses and shear forces, moves a block further than
+        the snap floor to a stable equilibrium (`dem.static_check`); such a state is recorded and logged."""
+        distance = self.arch.static_distance()
+        if distance is None or distance <= self._snap_floor():
+            return False
+        self.relaxations["off_equilibrium"].append([units.to_mm(self.arch.delta()), units.to_mm(distance)])
+        self.arch.log(
+            f"[{self.arch.case.name}] at {self._said(self.arch.delta())} the static model moves the blocks "
+            f"{units.to_mm(distance):.3f} mm to a stable equilibrium: holding on"
+        )
+        return True
+
+    def _moved_from(self, origin: np.ndarray) -> float:
+        """The largest block displacement from the voussoir centroids `origin` to now (m)."""
+        return float(np.linalg.norm(self.arch.positions() - origin, axis=1).max())
 
     def _snapped(self, increment: float) -> bool:
         """Whether the last relaxation moved a block further than 0.01 ring thickness and than the
         increment moves a block quasi-statically: a snap to another branch, not a step along one."""
-        return self.arch.hold_move > max(self._snap_floor(), self.arch.reach(increment))
+        return self._relax_move > max(self._snap_floor(), self.arch.reach(increment))
 
     def _snap_floor(self) -> float:
         """The smallest block move that counts as a snap: SNAP_THICKNESS_FRACTION x the ring's thickness (m)."""
@@ -134,7 +173,7 @@ class EquilibriumPath:
         increment = self.arch.delta() - self._start
         self.relaxations["delta_mm"].append(units.to_mm(self.arch.delta()))
         self.relaxations["increment_mm"].append(units.to_mm(increment))
-        self.relaxations["move_mm"].append(units.to_mm(self.arch.hold_move))
+        self.relaxations["move_mm"].append(units.to_mm(self._relax_move))
         self.snaps += self._trial_snaps
         self._trial_snaps = []
         self._accepted.append(self.arch.snapshot())
@@ -177,15 +216,17 @@ class EquilibriumPath:
         self.arch.stage = Stage.RELAX
         verdict, holds = Verdict.TIMEOUT, 0
         while verdict == Verdict.TIMEOUT and holds < MAX_DESCENT_GOES:
-            fallen = float(np.linalg.norm(self.arch.positions() - origin, axis=1).max())
+            fallen = self._moved_from(origin)
             if fallen >= self.runaway:
                 verdict = Verdict.RUNAWAY
                 break
             verdict = stable_tangent(self.arch, self.arch.hold(runaway=self.runaway - fallen, from_rest=False))
+            if verdict == Verdict.STABLE and self._off_equilibrium():
+                verdict = Verdict.TIMEOUT  # not yet at rest where the static model is: the holds go on
             holds += 1
         self.arch.log(f"[{self.arch.case.name}] held on at {self._said(target)} for {holds} hold(s): {verdict}")
         self._at_accepted = False
-        fallen = float(np.linalg.norm(self.arch.positions() - origin, axis=1).max())
+        fallen = self._moved_from(origin)
         if verdict != Verdict.STABLE:
             self._failures[target] = self.arch.snapshot()
         elif fallen > self._snap_floor():
@@ -239,8 +280,11 @@ def criterion_text(n: NumericsConfig) -> str:
         "shorter ones slower in proportion, so that every move lasts as long), then "
         "a relaxation with the support held and the blocks started from rest. Equilibrium: after "
         f"{n.hold_min_s} s, unbalanced force < {n.equilibrium_tolerance} and all blocks slower "
-        f"than {n.still_speed_mm_per_s} mm/s, and the static tangent at the blocks' poses positive "
-        f"definite (else the hold goes on). No equilibrium: a block moves > {n.runaway_thickness_ratio} ring "
+        f"than {n.still_speed_mm_per_s} mm/s, the static tangent at the blocks' poses positive "
+        "definite, and Newton's method on the static model (the same blocks and joints, from the "
+        "blocks' poses and shear forces) moving no block more than 0.01 ring thickness to a stable "
+        f"equilibrium (else the hold goes on, up to {NEAR_EQUILIBRIUM_HOLDS} times). No equilibrium: a "
+        f"block moves > {n.runaway_thickness_ratio} ring "
         f"thickness. A hold that finds neither in {n.hold_max_s} s goes on once; then the increment is "
         "unresolved (no du, never a collapse). Relaxations run at local damping "
         f"{n.hold_damping}. After a failed increment the increment halves (bisection); du = "

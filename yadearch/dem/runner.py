@@ -24,6 +24,7 @@ from yadearch.dem.live_arch import settle_selfweight
 from yadearch.dem.recorder import Recorder, Records
 from yadearch.dem.scene import CALLBACK_NAME, body_states, build_scene, install_before_integrator, stop_voussoirs
 from yadearch.dem.scene_state import capture, put_back
+from yadearch.dem.static_check import StaticCheck
 from yadearch.dem.stepping import SteppingGate
 from yadearch.dem.timing import EngineClock
 from yadearch.errors import CANNOT_STAND, RunFailedError
@@ -53,6 +54,7 @@ class Runner:
         self.dead_loads = install_dead_loads(self.scene, case)  # the backfill (None without)
         self.recorder = Recorder(self.scene, self.driver, self.num)
         self.recorder.stiffness = self.smallest_stiffness
+        self.static_check = StaticCheck.of(case, self.scene)
         self.gate = SteppingGate()
         self.gate.install()
         self.driver.zero_here()
@@ -217,6 +219,11 @@ class Runner:
     def reach(self, increment: float) -> float:
         """A support increment moves the blocks it carries at most by as much (m)."""
         return abs(increment)
+
+    def static_distance(self) -> float | None:
+        """How far the static model moves the blocks to a stable equilibrium (m; inf: none there), None
+        where it is not the scene's model (`dem.static_check`)."""
+        return self.static_check.distance(self.delta()) if self.static_check else None
 
     def hold(
         self,

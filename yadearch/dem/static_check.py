@@ -1,0 +1,58 @@
+"""The static model's word on a DEM state (YADE layer): how far Newton's method on the same blocks and
+joints (`solve.newton`), from the blocks' poses and the joints' shear forces, moves them to a stable
+equilibrium. A hold's verdict rests on speeds and an unbalanced-force ratio, which a state near the
+end of a folded branch also passes; this distance tells an equilibrium from such a near-equilibrium
+(docs/numerics.md, "Collapse")."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import held_multiplier
+from yadearch.dem.joint_elements import JointElementContacts
+from yadearch.dem.live_arch import JOINT_CONTACTS
+from yadearch.dem.scene import ArchScene, body_states
+from yadearch.solve.stages import Verdict
+from yadearch.solve.static_path import StaticLoading
+
+
+class StaticCheck:
+    """The static model of a DEM scene's case, built once, and the distance of the scene's state to
+    its stable equilibria at the support's present displacement."""
+
+    def __init__(self, case: ArchCase, scene: ArchScene):
+        self.loading = StaticLoading.of(case)
+        self.scene = scene
+
+    @classmethod
+    def of(cls, case: ArchCase, scene: ArchScene) -> StaticCheck | None:
+        """The check of `scene`, or None where the static model is not the scene's: CGAL contacts (the
+        blocks' overlap, not the joint law), a live load held (its multiplier is not the path's), or
+        joints the static engine's banded tangent does not take."""
+        if case.numerics.contact_model != JOINT_CONTACTS or held_multiplier(case) > 0.0:
+            return None
+        try:
+            return cls(case, scene)
+        except ValueError:
+            return None
+
+    def distance(self, delta: float) -> float:
+        """The largest block move (m) from the scene's state to the stable equilibrium Newton finds with
+        the support at `delta` (m), or where Newton fails, the static descent (the hold's implicit
+        analogue); math.inf where neither ends in a stable equilibrium."""
+        loading = self.loading
+        positions, rotations = body_states(self.scene)
+        u0 = np.column_stack([positions[:, :2], rotations * loading.arch.length]).ravel()
+        placed = loading.place(u0, delta)
+        contacts = self.scene.contacts
+        assert isinstance(contacts, JointElementContacts)  # `of` checks the contact model
+        shear = contacts.shear.copy()
+        found = loading.solver.newton(placed, u0, shear)
+        if found is None:
+            found = loading.solver.descend(placed, u0, shear, loading.runaway)
+            if found.verdict != Verdict.STABLE:
+                return math.inf
+        return found.moved if found.stable() else math.inf
