@@ -1,6 +1,6 @@
 """Two engines, one model: the static engine and the DEM (real YADE) give the same du and hinges on a
 9-voussoir arch whose support settles, at three joint stiffnesses, the soft ones, whose DEM runs are
-the cheapest (docs/theory.md, "The static engine")."""
+the cheapest, and across a snap (docs/theory.md, "The static engine")."""
 
 from __future__ import annotations
 
@@ -29,3 +29,21 @@ def test_static_engine_meets_the_dem_on_a_coarse_arch(kn, tmp_path):
     assert dem.collapsed and static.collapsed
     assert static.du_mm == pytest.approx(dem.du_mm, rel=AGREEMENT)
     assert static.hinge_labels == dem.hinge_labels
+
+
+def test_the_dem_takes_the_static_paths_snap_not_a_branch_beyond_it(tmp_path):
+    """Set 1's arch with 9 voussoirs at kn 0.3 folds at 73.78 mm and snaps 2.5 mm to another hinge
+    (static). Without the static check the DEM crossed the fold on near-equilibria to a second branch
+    and collapsed at 105.63 mm on other hinges; with it (docs/numerics.md, "Collapse"), measured
+    99.43 mm, du_first 73.93, 1E 2I 5E 8I 10E (static 99.40 / 73.78, the same hinges; DEM 22 s)."""
+    from yadearch.dem.runner import Runner
+
+    case = preset("set1").with_overrides({**COARSE, "kn_N_per_mm3": 0.3})
+    dem = Runner(case, log=lambda line: None).run()
+    static = simulate_static(case.with_overrides({"numerics.engine": "static"}), tmp_path, log=lambda line: None)
+    assert dem.collapsed and static.collapsed
+    assert static.du_first_mm < 0.8 * static.du_mm  # the snap this test is about
+    assert dem.du_first_mm == pytest.approx(static.du_first_mm, rel=AGREEMENT)
+    assert dem.du_mm == pytest.approx(static.du_mm, rel=AGREEMENT)
+    assert static.hinge_labels == dem.hinge_labels
+    assert dem.relaxations and dem.relaxations["off_equilibrium"]  # states the hold alone accepted
