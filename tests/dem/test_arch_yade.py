@@ -34,7 +34,7 @@ def _overlaps(runner) -> tuple[dict, np.ndarray]:
 def settled(request):
     """A 15-voussoir version of the paper's arch after the self-weight stage, and what the same arch
     of voussoirs with dimension errors settled to before it (self-weight info, joint snapshot, overlaps;
-    one scene at a time, so it runs first)."""
+    one scene at a time, so it runs first), with the perfect arch's settled overlaps beside them."""
     from yadearch.dem.runner import Runner
 
     case = preset("set1").with_overrides({**COARSE, "contact_model": request.param})
@@ -45,7 +45,7 @@ def settled(request):
         imperfect.close()
     runner = Runner(case, log=lambda line: None)
     info = runner.selfweight()
-    yield runner, info, errors
+    yield runner, info, (*errors, _overlaps(runner)[1])
     runner.close()
 
 
@@ -58,8 +58,7 @@ def test_self_weight_is_carried_by_the_supports(settled):
 
 
 def test_voussoirs_with_dimension_errors_stand_in_contact_under_their_weight(settled):
-    runner, _, (info, snap, overlap) = settled
-    _, perfect = _overlaps(runner)
+    _, _, (info, snap, overlap, perfect) = settled
     assert info["vertical_reaction_sum_N"] == pytest.approx(info["arch_weight_N"], rel=0.005)
     assert (overlap > 0.0).all() and (snap["normal"] > 0.0).all()  # every joint touches and carries
     assert overlap.max() < OVERLAP_TOLERANCE * perfect.max()

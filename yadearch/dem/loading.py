@@ -3,6 +3,8 @@ increments, relaxations, acceptance and settling, played on the runner's live sc
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from yadearch.case.config import NumericsConfig
@@ -42,7 +44,7 @@ class EquilibriumPath:
             "delta_mm": [],
             "increment_mm": [],
             "move_mm": [],
-            # states a hold called equilibria that the static model moved: [delta_mm, move_mm (inf: no stable state)]
+            # states a hold called equilibria that the static model moved: [delta_mm, move_mm (None: no stable state)]
             "off_equilibrium": [],
         }
         self.snaps: list[dict] = []  # relaxations that carried the arch to another branch
@@ -124,7 +126,8 @@ class EquilibriumPath:
         distance = self.arch.static_distance()
         if distance is None or distance <= self._snap_floor():
             return False
-        self.relaxations["off_equilibrium"].append([units.to_mm(self.arch.delta()), units.to_mm(distance)])
+        landing = units.to_mm(distance) if math.isfinite(distance) else None  # JSON has no infinity
+        self.relaxations["off_equilibrium"].append([units.to_mm(self.arch.delta()), landing])
         self.arch.log(
             f"[{self.arch.case.name}] at {self._said(self.arch.delta())} the static model moves the blocks "
             f"{units.to_mm(distance):.3f} mm to a stable equilibrium: holding on"
