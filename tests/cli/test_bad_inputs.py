@@ -123,7 +123,7 @@ def probes() -> list[list[str]]:
         ["animate", f"{REPO}/reports/limit"],
         ["export", f"{REPO}/reports/set2"],
         ["export", "OUT/not-a-run", "--vtk"],
-        ["export", f"{REPO}/reports/kn-sweep/kn100", "--vtk"],
+        ["export", "RUNS/summary_only", "--vtk"],
     ]
     shapes = [
         ["shape=oval"],
@@ -259,7 +259,8 @@ VIEWS = [
 
 @pytest.fixture(scope="module")
 def damaged_runs(tmp_path_factory) -> Path:
-    """Copies of the committed set 2 run, each damaged in one way (the folders DAMAGED names)."""
+    """Copies of the committed set 2 run, each damaged in one way (the folders DAMAGED names), and one
+    with only its summary, case and log (a campaign's summary-only run)."""
     root = tmp_path_factory.mktemp("damaged")
     summary = json.loads((REPO / "reports/set2/summary.json").read_text())
     changes = {
@@ -280,6 +281,9 @@ def damaged_runs(tmp_path_factory) -> Path:
         (folder / "summary.json").write_text(json.dumps({**summary, **changes.get(name, {})}))
     data = (root / "states_cut" / "states.npz").read_bytes()
     (root / "states_cut" / "states.npz").write_bytes(data[: len(data) // 2])
+    (root / "summary_only").mkdir()  # a campaign's run, as its committed folders are: no states to view
+    for file in ("case.toml", "summary.json", "run.log"):
+        shutil.copy(REPO / "reports/set2" / file, root / "summary_only" / file)
     return root
 
 

@@ -116,9 +116,20 @@ class EquilibriumPath:
             if holds == NEAR_EQUILIBRIUM_HOLDS:
                 self.arch.log(f"[{self.arch.case.name}] still off after {holds} more holds: unresolved")
                 return Verdict.TIMEOUT
-            verdict = stable_tangent(self.arch, self.arch.hold(from_rest=False))
+            verdict = stable_tangent(self.arch, self._hold_on())
             holds += 1
         return verdict
+
+    def _hold_on(self, runaway: float | None = None) -> Verdict:
+        """Hold on, the blocks in their motion, until they are at rest by the settling test (blocks slower
+        than `settle_speed_mm_per_s`, the unbalanced force SETTLE_TOLERANCE_FACTOR x the tolerance): a
+        state creeping past a fold, slow where the fold was, is given the time to leave or to stop."""
+        return self.arch.hold(
+            runaway=runaway,
+            from_rest=False,
+            still_speed=units.mm(self.num.settle_speed_mm_per_s),
+            tolerance=SETTLE_TOLERANCE_FACTOR * self.num.equilibrium_tolerance,
+        )
 
     def _off_equilibrium(self) -> bool:
         """Whether the static model, from the blocks' poses and shear forces, moves a block further than
@@ -194,11 +205,7 @@ class EquilibriumPath:
         if not self._at_accepted:
             self.arch.restore(self._accepted[-1])
         self.arch.stage = Stage.SETTLE
-        verdict = self.arch.hold(
-            from_rest=False,
-            still_speed=units.mm(self.num.settle_speed_mm_per_s),
-            tolerance=SETTLE_TOLERANCE_FACTOR * self.num.equilibrium_tolerance,
-        )
+        verdict = self._hold_on()
         self.arch.log(f"[{self.arch.case.name}] settling the state at {self._said(self.arch.delta())}: {verdict}")
         if verdict == Verdict.RUNAWAY:
             self._failures[self.arch.delta()] = self.arch.snapshot()
@@ -217,15 +224,18 @@ class EquilibriumPath:
         origin = self.arch.positions()
         self.arch.restore(self._failures[target])
         self.arch.stage = Stage.RELAX
-        verdict, holds = Verdict.TIMEOUT, 0
+        verdict, holds, off = Verdict.TIMEOUT, 0, False
         while verdict == Verdict.TIMEOUT and holds < MAX_DESCENT_GOES:
             fallen = self._moved_from(origin)
             if fallen >= self.runaway:
                 verdict = Verdict.RUNAWAY
                 break
-            verdict = stable_tangent(self.arch, self.arch.hold(runaway=self.runaway - fallen, from_rest=False))
-            if verdict == Verdict.STABLE and self._off_equilibrium():
-                verdict = Verdict.TIMEOUT  # not yet at rest where the static model is: the holds go on
+            left = self.runaway - fallen
+            held = self._hold_on(left) if off else self.arch.hold(runaway=left, from_rest=False)
+            verdict = stable_tangent(self.arch, held)
+            off = verdict == Verdict.STABLE and self._off_equilibrium()
+            if off:
+                verdict = Verdict.TIMEOUT  # not at rest where the static model is: the holds go on
             holds += 1
         self.arch.log(f"[{self.arch.case.name}] held on at {self._said(target)} for {holds} hold(s): {verdict}")
         self._at_accepted = False
@@ -286,7 +296,8 @@ def criterion_text(n: NumericsConfig) -> str:
         f"than {n.still_speed_mm_per_s} mm/s, the static tangent at the blocks' poses positive "
         "definite, and Newton's method on the static model (the same blocks and joints, from the "
         "blocks' poses and shear forces) moving no block more than 0.01 ring thickness to a stable "
-        f"equilibrium (else the hold goes on, up to {NEAR_EQUILIBRIUM_HOLDS} times). No equilibrium: a "
+        f"equilibrium (else the hold goes on, up to {NEAR_EQUILIBRIUM_HOLDS} times, each until the blocks "
+        f"are slower than {n.settle_speed_mm_per_s} mm/s). No equilibrium: a "
         f"block moves > {n.runaway_thickness_ratio} ring "
         f"thickness. A hold that finds neither in {n.hold_max_s} s goes on once; then the increment is "
         "unresolved (no du, never a collapse). Relaxations run at local damping "
