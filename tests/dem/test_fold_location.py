@@ -143,3 +143,43 @@ def test_a_state_the_static_model_keeps_moving_is_unresolved_not_accepted():
     result = path.follow()
     assert result.unresolved and not result.collapsed
     assert max(path.relaxations["delta_mm"]) < FOLD * 1e3  # nothing past the fold was accepted
+
+
+SHORT_JUMP = 0.0012  # a short snap made during the move: 1.2 mm, more than 0.01 ring thickness (0.45 mm)
+
+
+class MoveSnappingArch(SnappingArch):
+    """Its blocks follow the support (CREEP x its position) and snap by SHORT_JUMP during the move that
+    crosses FOLD, so the hold that follows finds them at rest: only the branch's trend tells the snap."""
+
+    def positions(self) -> np.ndarray:
+        return np.array([[CREEP * self.position + self.branch * SHORT_JUMP, 0.0, 0.0]])
+
+    def move_support(self, target: float, speed_fraction: float) -> None:
+        super().move_support(target, speed_fraction)
+        if self.branch == 0 and self.position >= FOLD:
+            self.branch = 1
+            self.snaps_made_at.append(self.position)
+
+    def hold(self, **_: Any) -> Verdict:
+        self.hold_move = 0.0  # at rest already: the snap happened during the move
+        return Verdict.STABLE
+
+
+def test_a_snap_made_during_the_move_is_told_by_the_branchs_trend_and_located():
+    arch = MoveSnappingArch()
+    path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
+    path.follow()
+    assert len(path.snaps) == 1
+    low, high = (x / 1e3 for x in path.snaps[0]["fold_mm"])
+    assert low < FOLD <= high and high - low <= SETTINGS.tolerance  # not the increment that hid it
+    assert path.snaps[0]["move_mm"] == pytest.approx(SHORT_JUMP * 1e3, rel=1e-6)
+    assert path.first_loss == pytest.approx((low, high))
+
+
+def test_a_branch_followed_without_snaps_keeps_to_its_trend():
+    arch = MoveSnappingArch()
+    arch.branch = 1  # already on the last branch: the blocks follow the support smoothly
+    path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
+    result = path.follow()
+    assert path.snaps == [] and len(result.steps) == len(result.equilibria) < 25

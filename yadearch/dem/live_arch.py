@@ -53,9 +53,8 @@ class LiveArch(Protocol):
 
     def reach(self, increment: float) -> float: ...  # how far a path increment moves a block quasi-statically (m)
 
-    def static_distance(
-        self,
-    ) -> float | None: ...  # the static model's move to a stable equilibrium (m; `dem.static_check`)
+    # the static model's move to a stable equilibrium (m; `dem.static_check`), None where it has none
+    def static_distance(self) -> float | None: ...
 
     @property
     def total_steps(self) -> int: ...
@@ -95,6 +94,20 @@ def stable_tangent(arch: LiveArch, verdict: Verdict) -> Verdict:
     return verdict
 
 
+def hold_on(arch: LiveArch, runaway: float | None = None) -> Verdict:
+    """Hold on, the blocks in their motion, until they are at rest by the path's settling test (blocks
+    slower than `settle_speed_mm_per_s`, the unbalanced force SETTLE_TOLERANCE_FACTOR x the tolerance),
+    a block runs `runaway` (m) or `hold_max_s` passes: a state creeping past a fold, slow where the
+    fold was, is given the time to leave or to stop."""
+    num = arch.case.numerics
+    return arch.hold(
+        runaway=runaway,
+        from_rest=False,
+        still_speed=units.mm(num.settle_speed_mm_per_s),
+        tolerance=SETTLE_TOLERANCE_FACTOR * num.equilibrium_tolerance,
+    )
+
+
 def settle_selfweight(arch: LiveArch) -> None:
     """Settle the self-weight state by the path's own test (`settle_speed_mm_per_s`, a hundredth of
     the equilibrium tolerance) and until the static model calls it stable: a state still creeping or
@@ -102,17 +115,9 @@ def settle_selfweight(arch: LiveArch) -> None:
     that times out goes on (STABILITY_HOLDS times); with joint elements a state still creeping then is
     unresolved, with CGAL contacts (which never get that quiet) it is kept."""
     num = arch.case.numerics
-
-    def settle() -> Verdict:
-        return arch.hold(
-            from_rest=False,
-            still_speed=units.mm(num.settle_speed_mm_per_s),
-            tolerance=SETTLE_TOLERANCE_FACTOR * num.equilibrium_tolerance,
-        )
-
-    verdict, holds = settle(), 1
+    verdict, holds = hold_on(arch), 1
     while verdict == Verdict.TIMEOUT and holds <= STABILITY_HOLDS:
-        verdict, holds = settle(), holds + 1
+        verdict, holds = hold_on(arch), holds + 1
     arch.log(f"[{arch.case.name}] settling the self-weight state: {verdict} after {holds} hold(s)")
     if verdict == Verdict.RUNAWAY:
         raise RunFailedError(f"{CANNOT_STAND}: the self-weight state ran away while settling")

@@ -7,10 +7,10 @@ import math
 
 import numpy as np
 
-from yadearch.case.config import NumericsConfig
 from yadearch.case.mechanics import runaway_length
 from yadearch.case.support import path_end_mm
-from yadearch.dem.live_arch import SETTLE_TOLERANCE_FACTOR, LiveArch, stable_tangent
+from yadearch.dem.live_arch import LiveArch, hold_on, stable_tangent
+from yadearch.dem.trend import Trend
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.solve.falls import MAX_DESCENT_GOES
@@ -18,7 +18,6 @@ from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, 
 from yadearch.solve.stages import Stage, Verdict
 
 HOLD_RETRIES = 1  # a hold that finds neither equilibrium nor runaway goes on this many times more
-NEAR_EQUILIBRIUM_HOLDS = 8  # holds a state the static model moves (`_off_equilibrium`) goes on, then unresolved
 SNAP_THICKNESS_FRACTION = 0.01  # a relaxation moving a block this x the ring's thickness ...
 # ... and further than its increment moves a block quasi-statically (`LiveArch.reach`) is a snap
 
@@ -33,6 +32,8 @@ class EquilibriumPath:
         self.arch = arch
         self.num = arch.case.numerics
         self._accepted: list[dict] = []  # snapshots of the equilibrium states of the loading path
+        self._trends: list[Trend] = []  # each accepted state's branch trend (`dem.trend`), ending at it
+        self._trial_trend: Trend | None = None  # the trend of the state the last increment reached
         self._at_accepted = True  # the live scene is that state
         self._records: list[tuple[int, int, int]] = []  # where each accepted state's records begin
         self._failures: dict[float, dict] = {}  # support displacement -> state a failure ended in
@@ -54,42 +55,52 @@ class EquilibriumPath:
         # (in `unit`), the supports held
         self.moves_support = settings is None
         self._relax_move = 0.0  # how far the last relaxation moved a block, over all its holds (m)
+        self._off = False  # the last relaxation ended where the static model moves the blocks
         self.settings = settings or path_settings(self.num, path_end_mm(arch.case, arch.movement))
         self.unit = unit
 
     def try_increment(self, target: float) -> Verdict:
         """From the last accepted equilibrium state, move the support to `target` and relax there
         with the support held: 'stable', 'runaway' or 'timeout' (see `hold`). A relaxation that snaps
-        (`_snapped`) is not taken as it comes: its fold is located by bisection to the path's tolerance
-        and the snap made from just past it, as the static engine makes it, then the path goes on to
-        `target`. A failed state is kept for `collapse_state`."""
+        (`_snapped`), or ends where the static model moves the blocks (`_off_equilibrium`: a
+        near-equilibrium past a fold), is not taken as it comes: its fold is located by bisection to
+        the path's tolerance and the snap made from just past it, held on while the static model still
+        moves the blocks as the static engine's descent goes on (MAX_DESCENT_GOES), then the path goes
+        on to `target`. A failed state is kept for `collapse_state`."""
         if not self._at_accepted:
             self.arch.restore(self._accepted[-1])
         self._at_accepted = False
         start = self._start = self.arch.delta()
-        base = self._accepted[-1]
+        base, trend = self._accepted[-1], self._trends[-1]
         self._trial_snaps = []
         verdict = self._relax_at(start, target)
-        while verdict == Verdict.STABLE and self._snapped(target - start) and target - start > self.settings.tolerance:
-            low, low_state, high = self._locate_fold(base, start, target)
+        while (self._off or (verdict == Verdict.STABLE and self._snapped(trend, start, target))) and (
+            target - start > self.settings.tolerance
+        ):
+            low, low_state, high, trend = self._locate_fold(base, trend, start, target)
             self.arch.restore(low_state)
-            verdict = self._relax_at(low, high)  # the snap, from the last state before the fold
+            verdict = self._relax_at(low, high, MAX_DESCENT_GOES)  # the snap, from the last state before the fold
             if verdict != Verdict.STABLE:
                 break
-            if self._snapped(high - low):
-                self._record_snap(low, high, self._relax_move)
+            if self._snapped(trend, low, high):
+                self._record_snap(low, high, max(self._relax_move, trend.distance(high, self.arch.positions())))
+            start, base, trend = high, self.arch.snapshot(), Trend.start(high, self.arch.positions())
             if high >= target:
                 break
-            start, base = high, self.arch.snapshot()
             verdict = self._relax_at(start, target)
         if verdict != Verdict.STABLE:
             self._failures[target] = self.arch.snapshot()
+        elif start < target:
+            trend = trend.then(target, self.arch.positions())
+        self._trial_trend = trend
         return verdict
 
-    def _relax_at(self, start: float, target: float) -> Verdict:
+    def _relax_at(self, start: float, target: float, near_holds: int = 0) -> Verdict:
         """From the live state at `start`, move the support to `target` and hold it: the verdict, an
         equilibrium counted only where the static tangent at the poses is positive definite and the
-        static model does not move the blocks (`_on_equilibrium`)."""
+        static model does not move the blocks; a hold that finds neither equilibrium nor runaway goes
+        on, and so does one off the static model's equilibrium, up to `near_holds` times (at least
+        HOLD_RETRIES) and `_on_equilibrium`."""
         self.arch.stage = Stage.INCREMENT
         # every move lasts as long as the largest increment's: the short moves near collapse are
         # gentle, and the arch ends them close to its equilibrium configuration
@@ -99,37 +110,27 @@ class EquilibriumPath:
         origin = self.arch.positions()
         verdict = self.arch.hold()
         first_move = self.arch.hold_move
-        for _ in range(HOLD_RETRIES):
+        for _ in range(max(HOLD_RETRIES, near_holds)):  # the hold goes on before it is called unresolved
             if verdict != Verdict.TIMEOUT:
                 break
-            verdict = self.arch.hold(from_rest=False)  # the hold goes on before it is called unresolved
-        verdict = self._on_equilibrium(stable_tangent(self.arch, verdict))
+            left = self.runaway - self._moved_from(origin)
+            verdict = self.arch.hold(runaway=left, from_rest=False) if left > 0.0 else Verdict.RUNAWAY
+        verdict = self._on_equilibrium(stable_tangent(self.arch, verdict), near_holds)
         self._relax_move = max(first_move, self._moved_from(origin))
         return verdict
 
-    def _on_equilibrium(self, verdict: Verdict) -> Verdict:
+    def _on_equilibrium(self, verdict: Verdict, near_holds: int) -> Verdict:
         """A hold's 'stable' kept only where the static model does not move the blocks (`_off_equilibrium`):
         a near-equilibrium past a fold is slow and balanced to the tolerance but is not one. Such a
-        state is held on, up to NEAR_EQUILIBRIUM_HOLDS times, then unresolved (Verdict.TIMEOUT)."""
+        state is held on, the blocks in their motion, up to `near_holds` times (on while they creep);
+        one still off is not an equilibrium (Verdict.TIMEOUT, `_off` set)."""
         holds = 0
-        while verdict == Verdict.STABLE and self._off_equilibrium():
-            if holds == NEAR_EQUILIBRIUM_HOLDS:
-                self.arch.log(f"[{self.arch.case.name}] still off after {holds} more holds: unresolved")
-                return Verdict.TIMEOUT
-            verdict = stable_tangent(self.arch, self._hold_on())
+        self._off = verdict == Verdict.STABLE and self._off_equilibrium()
+        while (self._off or (holds and verdict == Verdict.TIMEOUT)) and holds < near_holds:
+            verdict = stable_tangent(self.arch, hold_on(self.arch))  # a creeping state goes on too
             holds += 1
-        return verdict
-
-    def _hold_on(self, runaway: float | None = None) -> Verdict:
-        """Hold on, the blocks in their motion, until they are at rest by the settling test (blocks slower
-        than `settle_speed_mm_per_s`, the unbalanced force SETTLE_TOLERANCE_FACTOR x the tolerance): a
-        state creeping past a fold, slow where the fold was, is given the time to leave or to stop."""
-        return self.arch.hold(
-            runaway=runaway,
-            from_rest=False,
-            still_speed=units.mm(self.num.settle_speed_mm_per_s),
-            tolerance=SETTLE_TOLERANCE_FACTOR * self.num.equilibrium_tolerance,
-        )
+            self._off = verdict == Verdict.STABLE and self._off_equilibrium()
+        return Verdict.TIMEOUT if self._off else verdict
 
     def _off_equilibrium(self) -> bool:
         """Whether the static model, from the blocks' poses and shear forces, moves a block further than
@@ -141,7 +142,7 @@ class EquilibriumPath:
         self.relaxations["off_equilibrium"].append([units.to_mm(self.arch.delta()), landing])
         self.arch.log(
             f"[{self.arch.case.name}] at {self._said(self.arch.delta())} the static model moves the blocks "
-            f"{units.to_mm(distance):.3f} mm to a stable equilibrium: holding on"
+            f"{units.to_mm(distance):.3f} mm to a stable equilibrium"
         )
         return True
 
@@ -149,10 +150,14 @@ class EquilibriumPath:
         """The largest block displacement from the voussoir centroids `origin` to now (m)."""
         return float(np.linalg.norm(self.arch.positions() - origin, axis=1).max())
 
-    def _snapped(self, increment: float) -> bool:
-        """Whether the last relaxation moved a block further than 0.01 ring thickness and than the
-        increment moves a block quasi-statically: a snap to another branch, not a step along one."""
-        return self._relax_move > max(self._snap_floor(), self.arch.reach(increment))
+    def _snapped(self, trend: Trend, start: float, target: float) -> bool:
+        """Whether the last relaxation, from `start` to `target` on `trend`'s branch, snapped to another
+        branch: it moved a block further than 0.01 ring thickness and than the increment moves a block
+        quasi-statically, or it left a block further than 0.01 ring thickness from where the branch's
+        trend puts it (a snap made during the move, as the static engine tells one)."""
+        floor = self._snap_floor()
+        moved = self._relax_move > max(floor, self.arch.reach(target - start))
+        return moved or trend.distance(target, self.arch.positions()) > floor
 
     def _snap_floor(self) -> float:
         """The smallest block move that counts as a snap: SNAP_THICKNESS_FRACTION x the ring's thickness (m)."""
@@ -167,19 +172,20 @@ class EquilibriumPath:
             f"moved {units.to_mm(move):.3f} mm"
         )
 
-    def _locate_fold(self, base: dict, start: float, target: float) -> tuple[float, dict, float]:
-        """Bisect [start, target] (the live state `base` at `start`) by increments relaxed without a
-        snap until the bracket is narrower than the path's tolerance: its lower end, the state there,
-        its upper end (the first position whose relaxation snaps, runs away or times out)."""
+    def _locate_fold(self, base: dict, trend: Trend, start: float, target: float) -> tuple[float, dict, float, Trend]:
+        """Bisect [start, target] (the live state `base` at `start`, the end of `trend`) by increments
+        relaxed without a snap until the bracket is narrower than the path's tolerance: its lower end,
+        the state there, its upper end (the first position whose relaxation snaps, runs away or times
+        out) and the trend extended to the lower end."""
         low, low_state, high = start, base, target
         while high - low > self.settings.tolerance:
             middle = 0.5 * (low + high)
             self.arch.restore(low_state)
-            if self._relax_at(low, middle) == Verdict.STABLE and not self._snapped(middle - low):
-                low, low_state = middle, self.arch.snapshot()
+            if self._relax_at(low, middle) == Verdict.STABLE and not self._snapped(trend, low, middle):
+                low, low_state, trend = middle, self.arch.snapshot(), trend.then(middle, self.arch.positions())
             else:
                 high = middle
-        return low, low_state, high
+        return low, low_state, high, trend
 
     def accept(self) -> None:
         """The state the last increment relaxed to is the new equilibrium state: keep and record it,
@@ -191,6 +197,8 @@ class EquilibriumPath:
         self.snaps += self._trial_snaps
         self._trial_snaps = []
         self._accepted.append(self.arch.snapshot())
+        assert self._trial_trend is not None  # set by the increment or the hold that reached this state
+        self._trends.append(self._trial_trend)
         self._at_accepted = True
         self.arch.stage = Stage.EQUILIBRIUM
         mark, hinges = self.arch.recorder.record_equilibrium()
@@ -205,13 +213,14 @@ class EquilibriumPath:
         if not self._at_accepted:
             self.arch.restore(self._accepted[-1])
         self.arch.stage = Stage.SETTLE
-        verdict = self._hold_on()
+        verdict = hold_on(self.arch)
         self.arch.log(f"[{self.arch.case.name}] settling the state at {self._said(self.arch.delta())}: {verdict}")
         if verdict == Verdict.RUNAWAY:
             self._failures[self.arch.delta()] = self.arch.snapshot()
             self._at_accepted = False
             return False
         self._accepted[-1] = self.arch.snapshot()
+        self._trends[-1] = self._trends[-1].with_last(self.arch.positions())
         self._at_accepted = True
         return True
 
@@ -231,7 +240,7 @@ class EquilibriumPath:
                 verdict = Verdict.RUNAWAY
                 break
             left = self.runaway - fallen
-            held = self._hold_on(left) if off else self.arch.hold(runaway=left, from_rest=False)
+            held = hold_on(self.arch, left) if off else self.arch.hold(runaway=left, from_rest=False)
             verdict = stable_tangent(self.arch, held)
             off = verdict == Verdict.STABLE and self._off_equilibrium()
             if off:
@@ -244,11 +253,13 @@ class EquilibriumPath:
             self._failures[target] = self.arch.snapshot()
         elif fallen > self._snap_floor():
             self._record_snap(self._start, target, fallen)
+        self._trial_trend = Trend.start(target, self.arch.positions())  # a branch reached by a slow failure
         return verdict
 
     def discard(self) -> None:
         """Drop the last accepted state (it did not settle): the one before is the accepted one."""
         self._accepted.pop()
+        self._trends.pop()
         self._at_accepted = False
         self.arch.recorder.discard_since(self._records.pop())
         discarded = self.relaxations["delta_mm"][-1]
@@ -265,6 +276,7 @@ class EquilibriumPath:
         """Load by increments relaxed to equilibrium until du is bracketed (`solve.path`), from the
         scene's equilibrium at support displacement `start` (m)."""
         self._accepted, self._at_accepted = [self.arch.snapshot()], True
+        self._trends = [Trend.start(start, self.arch.positions())]
         return follow_path(self, self.settings, on_step=self._log_increment, start=start)
 
     def _log_increment(self, step: PathStep) -> None:
@@ -283,25 +295,3 @@ class EquilibriumPath:
         self.arch.stage = Stage.COLLAPSE
         self.arch.restore(self._failures[min(self._failures, key=lambda d: abs(d - upper))])
         return self.arch.recorder.record_collapse()
-
-
-def criterion_text(n: NumericsConfig) -> str:
-    """The loading protocol and collapse criterion with this case's numbers, for summary.json."""
-    return (
-        "Loading by support increments (first {0} mm, growing x{1} up to {2} mm after each "
-        "equilibrium), each from the last equilibrium state: a move (the largest at the support speed, "
-        "shorter ones slower in proportion, so that every move lasts as long), then "
-        "a relaxation with the support held and the blocks started from rest. Equilibrium: after "
-        f"{n.hold_min_s} s, unbalanced force < {n.equilibrium_tolerance} and all blocks slower "
-        f"than {n.still_speed_mm_per_s} mm/s, the static tangent at the blocks' poses positive "
-        "definite, and Newton's method on the static model (the same blocks and joints, from the "
-        "blocks' poses and shear forces) moving no block more than 0.01 ring thickness to a stable "
-        f"equilibrium (else the hold goes on, up to {NEAR_EQUILIBRIUM_HOLDS} times, each until the blocks "
-        f"are slower than {n.settle_speed_mm_per_s} mm/s). No equilibrium: a "
-        f"block moves > {n.runaway_thickness_ratio} ring "
-        f"thickness. A hold that finds neither in {n.hold_max_s} s goes on once; then the increment is "
-        "unresolved (no du, never a collapse). Relaxations run at local damping "
-        f"{n.hold_damping}. After a failed increment the increment halves (bisection); du = "
-        "midpoint of the bracket [last support displacement in equilibrium; first without, "
-        f"reached from that state], narrowed to < {n.du_tolerance_mm} mm."
-    ).format(n.first_increment_mm, n.increment_growth, n.max_increment_mm)

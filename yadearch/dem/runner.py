@@ -1,14 +1,10 @@
-"""Run a case in YADE: self-weight, then the support movement along the equilibrium path to collapse.
-
-The support advances by increments, each from the last equilibrium state: a move at the support
-speed, then a relaxation with the support held (`hold`). An increment that ends in equilibrium is
-accepted and the next one grows; one that does not bounds du from above and the increments halve
-(`solve.path`). du is the midpoint of the final bracket, both ends reached from the same equilibrium
-state, so the loading rate, damping and time step decide only how fast it is found (docs: theory).
-"""
+"""Run a case in YADE: self-weight, then the support movement along the equilibrium path to collapse
+(`dem.loading`, `solve.path`). The runner is the live arch the path drives: it moves the support,
+holds it (`hold`), goes back to kept states and records (docs/theory.md)."""
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 from collections.abc import Callable
@@ -54,7 +50,6 @@ class Runner:
         self.dead_loads = install_dead_loads(self.scene, case)  # the backfill (None without)
         self.recorder = Recorder(self.scene, self.driver, self.num)
         self.recorder.stiffness = self.smallest_stiffness
-        self.static_check = StaticCheck.of(case, self.scene)
         self.gate = SteppingGate()
         self.gate.install()
         self.driver.zero_here()
@@ -220,6 +215,11 @@ class Runner:
         """A support increment moves the blocks it carries at most by as much (m)."""
         return abs(increment)
 
+    @functools.cached_property
+    def static_check(self) -> StaticCheck | None:
+        """The scene's static model (`dem.static_check`), built on its first use: most holds never ask."""
+        return StaticCheck.of(self.case, self.scene)
+
     def static_distance(self) -> float | None:
         """How far the static model moves the blocks to a stable equilibrium (m; inf: none there), None
         where it is not the scene's model (`dem.static_check`)."""
@@ -270,8 +270,7 @@ class Runner:
         return Verdict.TIMEOUT
 
     def _set_damping(self, damping: float) -> None:
-        """Local damping of the integrator: `damping` while the support moves, `hold_damping` while
-        a hold decides equilibrium (each stage sets its own)."""
+        """The integrator's local damping: each stage sets its own (the loading's, the holds')."""
         self.scene.newton.damping = damping
 
     def move_support(self, target: float, speed_fraction: float) -> None:

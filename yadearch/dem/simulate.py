@@ -14,7 +14,7 @@ import sys
 import time
 from pathlib import Path
 
-from yadearch.case.config import ArchCase, load_case
+from yadearch.case.config import ArchCase, NumericsConfig, load_case
 from yadearch.case.mechanics import held_load_text
 from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
@@ -32,7 +32,6 @@ INTERRUPTED_EXIT = 130  # the shell's code for a run stopped by a signal, not by
 
 def simulate(case: ArchCase, out: Path) -> RunSummary:
     """Run `case` to collapse and write its run folder to `out`; returns the summary."""
-    from yadearch.dem.loading import criterion_text
     from yadearch.dem.runner import Runner
     from yadearch.dem.yade_env import import_yade, scratch_folder
 
@@ -93,6 +92,35 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
     )
     log_file.close()
     return summary
+
+
+def criterion_text(n: NumericsConfig) -> str:
+    """The loading protocol and collapse criterion with this case's numbers, for summary.json."""
+    from yadearch.solve.falls import MAX_DESCENT_GOES
+
+    return (
+        "Loading by support increments (first {0} mm, growing x{1} up to {2} mm after each "
+        "equilibrium), each from the last equilibrium state: a move (the largest at the support speed, "
+        "shorter ones slower in proportion, so that every move lasts as long), then "
+        "a relaxation with the support held and the blocks started from rest. Equilibrium: after "
+        f"{n.hold_min_s} s, unbalanced force < {n.equilibrium_tolerance} and all blocks slower "
+        f"than {n.still_speed_mm_per_s} mm/s, the static tangent at the blocks' poses positive "
+        "definite, and Newton's method on the static model (the same blocks and joints, from the "
+        "blocks' poses and shear forces) moving no block more than 0.01 ring thickness to a stable "
+        "equilibrium. A relaxation that ends off that equilibrium, moves a block more than 0.01 ring "
+        "thickness beyond its increment's reach, or leaves one that far from the parabola through the "
+        "branch's last three equilibria has passed a fold: the fold is bisected to the tolerance by "
+        "relaxations that do none of these, and the snap made from just before it, held on while "
+        f"the static model still moves the blocks (up to {MAX_DESCENT_GOES} holds, each until the blocks "
+        f"are slower than {n.settle_speed_mm_per_s} mm/s). "
+        "No equilibrium: a "
+        f"block moves > {n.runaway_thickness_ratio} ring "
+        f"thickness. A hold that finds neither in {n.hold_max_s} s goes on once; then the increment is "
+        "unresolved (no du, never a collapse). Relaxations run at local damping "
+        f"{n.hold_damping}. After a failed increment the increment halves (bisection); du = "
+        "midpoint of the bracket [last support displacement in equilibrium; first without, "
+        f"reached from that state], narrowed to < {n.du_tolerance_mm} mm."
+    ).format(n.first_increment_mm, n.increment_growth, n.max_increment_mm)
 
 
 def die_with_parent() -> None:
