@@ -40,6 +40,7 @@ class EquilibriumPath:
         self.last_equilibrium_hinges: list[dict] = []
         # how far the relaxation of each accepted increment moved the blocks (mm), for summary.json
         self.runaway = runaway_length(arch.case)
+        self.snap_floor = SNAP_THICKNESS_FRACTION * units.mm(arch.case.geometry.thickness_mm)  # (m)
         self.relaxations: dict = {
             "runaway_mm": units.to_mm(self.runaway),
             "delta_mm": [],
@@ -82,8 +83,9 @@ class EquilibriumPath:
             verdict = self._relax_at(low, high, MAX_DESCENT_GOES)  # the snap, from the last state before the fold
             if verdict != Verdict.STABLE:
                 break
-            if self._snapped(trend, low, high):
-                self._record_snap(low, high, max(self._relax_move, trend.distance(high, self.arch.positions())))
+            landing = self._landing(trend, low, high)
+            if landing is not None:
+                self._record_snap(low, high, landing)
             start, base, trend = high, self.arch.snapshot(), Trend.start(high, self.arch.positions())
             if high >= target:
                 break
@@ -136,7 +138,7 @@ class EquilibriumPath:
         """Whether the static model, from the blocks' poses and shear forces, moves a block further than
         the snap floor to a stable equilibrium (`dem.static_check`); such a state is recorded and logged."""
         distance = self.arch.static_distance()
-        if distance is None or distance <= self._snap_floor():
+        if distance is None or distance <= self.snap_floor:
             return False
         landing = units.to_mm(distance) if math.isfinite(distance) else None  # JSON has no infinity
         self.relaxations["off_equilibrium"].append([units.to_mm(self.arch.delta()), landing])
@@ -155,13 +157,17 @@ class EquilibriumPath:
         branch: it moved a block further than 0.01 ring thickness and than the increment moves a block
         quasi-statically, or it left a block further than 0.01 ring thickness from where the branch's
         trend puts it (a snap made during the move, as the static engine tells one)."""
-        floor = self._snap_floor()
+        floor = self.snap_floor
         moved = self._relax_move > max(floor, self.arch.reach(target - start))
         return moved or trend.distance(target, self.arch.positions()) > floor
 
-    def _snap_floor(self) -> float:
-        """The smallest block move that counts as a snap: SNAP_THICKNESS_FRACTION x the ring's thickness (m)."""
-        return SNAP_THICKNESS_FRACTION * units.mm(self.arch.case.geometry.thickness_mm)
+    def _landing(self, trend: Trend, low: float, high: float) -> float | None:
+        """How far the snap from `low` to `high` took the blocks off `trend`'s branch (m; None: on it), as
+        the static engine measures it: from the trend's prediction, else by the relaxation's move."""
+        if trend.predicts():
+            off = trend.distance(high, self.arch.positions())
+            return off if off > self.snap_floor else None
+        return self._relax_move if self._snapped(trend, low, high) else None
 
     def _record_snap(self, low: float, high: float, move: float) -> None:
         """A snap between path positions `low` and `high` that moved a block `move` (m), on the way of
@@ -251,7 +257,7 @@ class EquilibriumPath:
         fallen = self._moved_from(origin)
         if verdict != Verdict.STABLE:
             self._failures[target] = self.arch.snapshot()
-        elif fallen > self._snap_floor():
+        elif fallen > self.snap_floor:
             self._record_snap(self._start, target, fallen)
         self._trial_trend = Trend.start(target, self.arch.positions())  # a branch reached by a slow failure
         return verdict

@@ -34,10 +34,14 @@ class Trend:
         """The trend with its last state's centroids replaced (a state settled further in place)."""
         return Trend(self.lams, (*self.positions[:-1], positions))
 
+    def predicts(self) -> bool:
+        """Whether the trend can say where the blocks go: two states or more, at distinct positions."""
+        return len(set(self.lams)) == len(self.lams) >= 2
+
     def distance(self, lam: float, positions: np.ndarray) -> float:
         """How far the block furthest from the trend's prediction at `lam` is (m); 0 where the trend
         cannot predict (one state, or two at one position)."""
-        if len(set(self.lams)) < max(2, len(self.lams)):
+        if not self.predicts():
             return 0.0
         predicted = extrapolate(list(self.lams), list(self.positions), lam)
         return float(np.linalg.norm(positions - predicted, axis=1).max())
