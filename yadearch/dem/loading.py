@@ -3,12 +3,11 @@ increments, relaxations, acceptance and settling, played on the runner's live sc
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from yadearch.case.mechanics import runaway_length
 from yadearch.case.support import path_end_mm
+from yadearch.dem.acceptance import StaticAcceptance
 from yadearch.dem.live_arch import LiveArch, hold_on, stable_tangent
 from yadearch.dem.trend import Trend
 from yadearch.model import units
@@ -18,6 +17,7 @@ from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, 
 from yadearch.solve.stages import Stage, Verdict
 
 HOLD_RETRIES = 1  # a hold that finds neither equilibrium nor runaway goes on this many times more
+NEAR_EQUILIBRIUM_HOLDS = 8  # holds an increment's state the static model moves goes on before it is a fold's
 SNAP_THICKNESS_FRACTION = 0.01  # a relaxation moving a block this x the ring's thickness ...
 # ... and further than its increment moves a block quasi-statically (`LiveArch.reach`) is a snap
 
@@ -56,14 +56,14 @@ class EquilibriumPath:
         # (in `unit`), the supports held
         self.moves_support = settings is None
         self._relax_move = 0.0  # how far the last relaxation moved a block, over all its holds (m)
-        self._off = False  # the last relaxation ended where the static model moves the blocks
         self.settings = settings or path_settings(self.num, path_end_mm(arch.case, arch.movement))
         self.unit = unit
+        self.static = StaticAcceptance(arch, self.snap_floor, self.relaxations["off_equilibrium"], self._said)
 
     def try_increment(self, target: float) -> Verdict:
         """From the last accepted equilibrium state, move the support to `target` and relax there
         with the support held: 'stable', 'runaway' or 'timeout' (see `hold`). A relaxation that snaps
-        (`_snapped`), or ends where the static model moves the blocks (`_off_equilibrium`: a
+        (`_snapped`), or ends where the static model moves the blocks (`dem.acceptance`: a
         near-equilibrium past a fold), is not taken as it comes: its fold is located by bisection to
         the path's tolerance and the snap made from just past it, held on while the static model still
         moves the blocks as the static engine's descent goes on (MAX_DESCENT_GOES), then the path goes
@@ -75,7 +75,7 @@ class EquilibriumPath:
         base, trend = self._accepted[-1], self._trends[-1]
         self._trial_snaps = []
         verdict = self._relax_at(start, target)
-        while (self._off or (verdict == Verdict.STABLE and self._snapped(trend, start, target))) and (
+        while (self.static.off or (verdict == Verdict.STABLE and self._snapped(trend, start, target))) and (
             target - start > self.settings.tolerance
         ):
             low, low_state, high, trend = self._locate_fold(base, trend, start, target)
@@ -97,12 +97,12 @@ class EquilibriumPath:
         self._trial_trend = trend
         return verdict
 
-    def _relax_at(self, start: float, target: float, near_holds: int = 0) -> Verdict:
+    def _relax_at(self, start: float, target: float, near_holds: int = NEAR_EQUILIBRIUM_HOLDS) -> Verdict:
         """From the live state at `start`, move the support to `target` and hold it: the verdict, an
         equilibrium counted only where the static tangent at the poses is positive definite and the
         static model does not move the blocks; a hold that finds neither equilibrium nor runaway goes
         on, and so does one off the static model's equilibrium, up to `near_holds` times (at least
-        HOLD_RETRIES) and `_on_equilibrium`."""
+        HOLD_RETRIES) and `StaticAcceptance.accept`."""
         self.arch.stage = Stage.INCREMENT
         # every move lasts as long as the largest increment's: the short moves near collapse are
         # gentle, and the arch ends them close to its equilibrium configuration
@@ -117,36 +117,9 @@ class EquilibriumPath:
                 break
             left = self.runaway - self._moved_from(origin)
             verdict = self.arch.hold(runaway=left, from_rest=False) if left > 0.0 else Verdict.RUNAWAY
-        verdict = self._on_equilibrium(stable_tangent(self.arch, verdict), near_holds)
+        verdict = self.static.accept(stable_tangent(self.arch, verdict), near_holds)
         self._relax_move = max(first_move, self._moved_from(origin))
         return verdict
-
-    def _on_equilibrium(self, verdict: Verdict, near_holds: int) -> Verdict:
-        """A hold's 'stable' kept only where the static model does not move the blocks (`_off_equilibrium`):
-        a near-equilibrium past a fold is slow and balanced to the tolerance but is not one. Such a
-        state is held on, the blocks in their motion, up to `near_holds` times (on while they creep);
-        one still off is not an equilibrium (Verdict.TIMEOUT, `_off` set)."""
-        holds = 0
-        self._off = verdict == Verdict.STABLE and self._off_equilibrium()
-        while (self._off or (holds and verdict == Verdict.TIMEOUT)) and holds < near_holds:
-            verdict = stable_tangent(self.arch, hold_on(self.arch))  # a creeping state goes on too
-            holds += 1
-            self._off = verdict == Verdict.STABLE and self._off_equilibrium()
-        return Verdict.TIMEOUT if self._off else verdict
-
-    def _off_equilibrium(self) -> bool:
-        """Whether the static model, from the blocks' poses and shear forces, moves a block further than
-        the snap floor to a stable equilibrium (`dem.static_check`); such a state is recorded and logged."""
-        distance = self.arch.static_distance()
-        if distance is None or distance <= self.snap_floor:
-            return False
-        landing = units.to_mm(distance) if math.isfinite(distance) else None  # JSON has no infinity
-        self.relaxations["off_equilibrium"].append([units.to_mm(self.arch.delta()), landing])
-        self.arch.log(
-            f"[{self.arch.case.name}] at {self._said(self.arch.delta())} the static model moves the blocks "
-            f"{units.to_mm(distance):.3f} mm to a stable equilibrium"
-        )
-        return True
 
     def _moved_from(self, origin: np.ndarray) -> float:
         """The largest block displacement from the voussoir centroids `origin` to now (m)."""
@@ -187,7 +160,8 @@ class EquilibriumPath:
         while high - low > self.settings.tolerance:
             middle = 0.5 * (low + high)
             self.arch.restore(low_state)
-            if self._relax_at(low, middle) == Verdict.STABLE and not self._snapped(trend, low, middle):
+            probe = self._relax_at(low, middle, near_holds=0)  # a state off the static model's is past the fold
+            if probe == Verdict.STABLE and not self._snapped(trend, low, middle):
                 low, low_state, trend = middle, self.arch.snapshot(), trend.then(middle, self.arch.positions())
             else:
                 high = middle
@@ -239,17 +213,17 @@ class EquilibriumPath:
         origin = self.arch.positions()
         self.arch.restore(self._failures[target])
         self.arch.stage = Stage.RELAX
-        verdict, holds, off = Verdict.TIMEOUT, 0, False
+        verdict, holds, off = Verdict.TIMEOUT, 0, None
         while verdict == Verdict.TIMEOUT and holds < MAX_DESCENT_GOES:
             fallen = self._moved_from(origin)
             if fallen >= self.runaway:
                 verdict = Verdict.RUNAWAY
                 break
             left = self.runaway - fallen
-            held = hold_on(self.arch, left) if off else self.arch.hold(runaway=left, from_rest=False)
+            held = self.static.hold(off, left) if off is not None else self.arch.hold(runaway=left, from_rest=False)
             verdict = stable_tangent(self.arch, held)
-            off = verdict == Verdict.STABLE and self._off_equilibrium()
-            if off:
+            off = self.static.next_distance(verdict, off)
+            if off is not None and verdict == Verdict.STABLE:
                 verdict = Verdict.TIMEOUT  # not at rest where the static model is: the holds go on
             holds += 1
         self.arch.log(f"[{self.arch.case.name}] held on at {self._said(target)} for {holds} hold(s): {verdict}")
