@@ -96,6 +96,7 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
 
 def criterion_text(n: NumericsConfig) -> str:
     """The loading protocol and collapse criterion with this case's numbers, for summary.json."""
+    from yadearch.dem.loading import NEAR_EQUILIBRIUM_HOLDS
     from yadearch.solve.falls import MAX_DESCENT_GOES
 
     return (
@@ -107,12 +108,13 @@ def criterion_text(n: NumericsConfig) -> str:
         f"than {n.still_speed_mm_per_s} mm/s, the static tangent at the blocks' poses positive "
         "definite, and Newton's method on the static model (the same blocks and joints, from the "
         "blocks' poses and shear forces) moving no block more than 0.01 ring thickness to a stable "
-        "equilibrium. A relaxation that ends off that equilibrium, moves a block more than 0.01 ring "
+        f"equilibrium (else held on, up to {NEAR_EQUILIBRIUM_HOLDS} times, each until the blocks are slower than "
+        f"{n.settle_speed_mm_per_s} mm/s, after the whole {n.hold_max_s} s where the static model finds no "
+        "stable equilibrium). A relaxation that ends off that equilibrium, moves a block more than 0.01 ring "
         "thickness beyond its increment's reach, or leaves one that far from the parabola through the "
         "branch's last three equilibria has passed a fold: the fold is bisected to the tolerance by "
         "relaxations that do none of these, and the snap made from just before it, held on while "
-        f"the static model still moves the blocks (up to {MAX_DESCENT_GOES} holds, each until the blocks "
-        f"are slower than {n.settle_speed_mm_per_s} mm/s). "
+        f"the static model still moves the blocks (up to {MAX_DESCENT_GOES} holds). "
         "No equilibrium: a "
         f"block moves > {n.runaway_thickness_ratio} ring "
         f"thickness. A hold that finds neither in {n.hold_max_s} s goes on once; then the increment is "
