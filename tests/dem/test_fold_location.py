@@ -183,3 +183,27 @@ def test_a_branch_followed_without_snaps_keeps_to_its_trend():
     path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
     result = path.follow()
     assert path.snaps == [] and len(result.steps) == len(result.equilibria) < 25
+
+
+class CreepingAwayArch(SnappingArch):
+    """Past FOLD no stable equilibrium is near (the static model's distance inf), yet every hold that may
+    end at rest finds the blocks slower than its test: they leave only in a hold that lasts its whole
+    time (still_speed 0), as a state past a fold leaves it exponentially slowly."""
+
+    def static_distance(self) -> float | None:
+        return float("inf") if self.position >= FOLD else 0.0
+
+    def hold(self, still_speed: float | None = None, **_: Any) -> Verdict:
+        self.hold_move = 0.0
+        if self.position >= FOLD and still_speed == 0.0:
+            return Verdict.RUNAWAY
+        return Verdict.STABLE
+
+
+def test_a_state_with_no_equilibrium_near_is_held_through_until_it_runs_away():
+    arch = CreepingAwayArch()
+    path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
+    result = path.follow()
+    assert result.collapsed and not result.unresolved
+    assert result.du == pytest.approx(FOLD, abs=SETTINGS.tolerance)
+    assert [delta for delta, move in path.relaxations["off_equilibrium"] if move is None]  # recorded as such
