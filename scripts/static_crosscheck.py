@@ -34,6 +34,7 @@ def dem_pairs() -> list[Pair]:
     groups = {
         "paper": [REPORTS / "set1", REPORTS / "set2"],
         "kn-sweep": dem_folders(REPORTS / "kn-sweep", "kn*"),
+        "kn-sweep-du-first": dem_folders(REPORTS / "kn-sweep-du-first", "kn*"),
         "robustness": dem_folders(REPORTS / "robustness", "*_base"),
         "stiff": dem_folders(REPORTS / "stiff", "kn*"),
         "imperfections": [
