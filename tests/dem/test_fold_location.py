@@ -83,16 +83,23 @@ class SnappingArch:
         return Verdict.STABLE
 
 
+def assert_one_snap_located(path: EquilibriumPath, move: float) -> tuple[float, float]:
+    """The path made one snap, of `move` (m), its fold bracketed across FOLD to the path's tolerance
+    (not the increment's 2.5 mm) and the first loss of stability there; the bracket (m)."""
+    assert len(path.snaps) == 1
+    low, high = (x / 1e3 for x in path.snaps[0]["fold_mm"])
+    assert low < FOLD <= high and high - low <= SETTINGS.tolerance
+    assert path.snaps[0]["move_mm"] == pytest.approx(move * 1e3, rel=1e-6)
+    assert path.first_loss == pytest.approx((low, high))
+    return low, high
+
+
 def test_a_snap_is_made_from_its_fold_located_to_the_paths_tolerance():
     arch = SnappingArch()
     path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
     path.follow()
-    assert len(path.snaps) == 1
-    low, high = (x / 1e3 for x in path.snaps[0]["fold_mm"])
-    assert low < FOLD <= high and high - low <= SETTINGS.tolerance  # not the increment's 2.5 mm
-    assert path.snaps[0]["move_mm"] == pytest.approx(JUMP * 1e3)
+    _, high = assert_one_snap_located(path, JUMP)
     assert arch.snaps_made_at[-1] == pytest.approx(high)  # the branch taken from just past the fold
-    assert path.first_loss == pytest.approx((low, high))
 
 
 def test_a_path_without_snaps_is_not_bisected():
@@ -130,11 +137,7 @@ def test_a_near_equilibrium_the_static_model_moves_is_held_on_and_its_snap_locat
     path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
     path.follow()
     assert path.relaxations["off_equilibrium"]  # held on where the hold alone said 'stable'
-    assert len(path.snaps) == 1
-    low, high = (x / 1e3 for x in path.snaps[0]["fold_mm"])
-    assert low < FOLD <= high and high - low <= SETTINGS.tolerance
-    assert path.snaps[0]["move_mm"] == pytest.approx(JUMP * 1e3)
-    assert path.first_loss == pytest.approx((low, high))
+    assert_one_snap_located(path, JUMP)
 
 
 def test_a_state_the_static_model_keeps_moving_is_unresolved_not_accepted():
@@ -170,11 +173,7 @@ def test_a_snap_made_during_the_move_is_told_by_the_branchs_trend_and_located():
     arch = MoveSnappingArch()
     path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
     path.follow()
-    assert len(path.snaps) == 1
-    low, high = (x / 1e3 for x in path.snaps[0]["fold_mm"])
-    assert low < FOLD <= high and high - low <= SETTINGS.tolerance  # not the increment that hid it
-    assert path.snaps[0]["move_mm"] == pytest.approx(SHORT_JUMP * 1e3, rel=1e-6)
-    assert path.first_loss == pytest.approx((low, high))
+    assert_one_snap_located(path, SHORT_JUMP)  # not the increment that hid it
 
 
 def test_a_branch_followed_without_snaps_keeps_to_its_trend():
