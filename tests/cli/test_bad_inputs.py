@@ -98,12 +98,18 @@ def probes() -> list[list[str]]:
         ["calibrate", "--preset", "set1", "--target-du", "48", "--kn-min", "5", "--kn-max", "1", "--out", "OUT/c.json"],
         ["report", "OUT/not-a-run", "--out", "OUT/r"],
         ["limit", "--set", "friction_deg=95"],
+        ["limit", "--preset", "set2", "--kn", "3"],
+        ["limit", "--preset", "set2", "--set", "numerics.damping=0.3"],
+        ["loads", "--preset", "set2", "--set", "kn_N_per_mm3=3"],
+        ["loads", "--preset", "set2", "--engine", "static", "--set", "damping=0.3"],
         ["run", "--preset", "set2", "--engine", "static", "--out", "OUT/" + "x" * 250],
         # campaigns: every run of a grid checked before the first starts (nothing runs)
         ["sweep", "--preset", "set2", "--param", "n_voussoirs=a,b", "--out", "OUT/s"],
+        ["sweep", "--preset", "set2", "--engine", "static", "--param", "damping=0.1,0.3", "--out", "OUT/s"],
         ["montecarlo", "--preset", "set2", "--samples", "2", "--param", "face_bump_mm=a,b", "--out", "OUT/m"],
         ["robustness", "--kn", "abc", "--out", "OUT/r"],
         ["robustness", "--kn", "-1", "--out", "OUT/r"],
+        ["robustness", "--engine", "static", "--variant", "timestep_x0.5", "--variant", "damping_x2", "--out", "OUT/r"],
         ["sweep", "--preset", "set2", "--kn", "-1:1:lin:3", "--out", "OUT/s"],
         ["sweep", "--preset", "set2", "--kn", "1,inf", "--out", "OUT/s"],
         ["sweep", "--preset", "set2", "--kn", "nan:1:log:3", "--out", "OUT/s"],
@@ -381,16 +387,17 @@ def test_the_whole_studied_kn_range_fits_the_default_step_budget(kn):
     assert plan.worst_case_steps < case_from_dict({}).numerics.max_steps
 
 
-def test_limit_says_when_kn_plays_no_part(tmp_path, capsys, monkeypatch):
-    """The note comes before the analysis (stood in for here: the message is what is tested)."""
+def test_limit_refuses_kn_without_compliant_before_the_analysis(tmp_path, capsys, monkeypatch):
+    """The rigid analysis reads no kn: --kn alone is refused in one line before anything runs."""
     from yadearch.solve import limit
 
     def analysis_started(*args, **kwargs):
-        raise YadearchError("analysis started")
+        raise AssertionError("the analysis started")
 
     monkeypatch.setattr(limit, "limit_analysis", analysis_started)
     assert main(["limit", "--preset", "set2", "--kn", "100", "--out", str(tmp_path)]) == 1
     err = capsys.readouterr().err
-    assert err.startswith("note: --kn 100 plays no part in the rigid-block analysis (rigid joints); add --compliant")
+    assert err.startswith("error: --kn 100 plays no part in the rigid-block analysis (rigid joints); add --compliant")
+    assert err.count("\n") == 1
     assert main(["limit", "--preset", "set2", "--kn", "100", "--compliant", "--out", str(tmp_path)]) == 1
     assert "note" not in capsys.readouterr().err

@@ -79,3 +79,28 @@ def test_the_load_collapse_figure_labels_its_hinges_clear_of_the_blocks(tmp_path
     assert {p.label for p in result.pivots} <= hinge_labels
     assert label_clashes(fig) == []
     assert (tmp_path / "set2_loads.json").is_file()
+
+
+@pytest.mark.parametrize("name", RUNS)
+def test_the_collapse_figure_labels_its_hinges_clear(name):
+    from yadearch.plotting.hinge_marks import HINGE_LABEL_PT
+    from yadearch.plotting.run_figures import collapse_figure
+
+    run = read_run(REPORTS / name)
+    analysis = analyse_run(run)
+    fig = collapse_figure(run, analysis)
+    assert len(texts(fig)) == len(analysis.tracks) >= 4
+    assert all(t.get_fontsize() >= HINGE_LABEL_PT for t in texts(fig))
+    assert label_clashes(fig) == []
+
+
+@pytest.mark.parametrize("name", RUNS)
+def test_the_thrust_line_figure_labels_its_hinges_clear(name, tmp_path):
+    import yadearch as ya
+    from yadearch.plotting.thrust_line import plot_thrust_line
+
+    case = ya.preset(name)
+    result = ya.limit(case, out=tmp_path)
+    fig = plot_thrust_line(result, case)
+    assert len(texts(fig)) >= 4  # the four hinges of the mechanism
+    assert label_clashes(fig) == []

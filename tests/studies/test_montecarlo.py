@@ -61,7 +61,7 @@ def test_the_summary_and_the_figures_describe_the_campaign(tmp_path):
     assert "| 0.5 | 20 |" in text and "| 1 | 19 |" in text
     assert "- A: 11: 74%, 12: 26%" in text
     for paths in (
-        du_distribution_figure(table, tmp_path / "du", reference_du_mm=70.0),
+        du_distribution_figure(table, tmp_path / "du", [(70.0, "perfect arch"), (48.9, "experiment")]),
         hinge_frequency_figure(table, tmp_path / "hinges"),
         du_amplitude_figure(table, "edge_radius_mm", tmp_path / "amp"),
     ):

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pandas as pd
+import pytest
 
 from yadearch.case.config import preset
 from yadearch.studies.robustness import VARIANTS, robustness_table, same_hinge_set, study_rows, verdicts
@@ -90,6 +91,24 @@ def test_the_static_engine_takes_only_the_variants_that_can_move_its_answer():
     }
     assert "support_acceleration_mm_per_s2" not in static["kn5.2_ramp"]
     assert len(study_rows(preset("set2"), (5.2,))) == len(VARIANTS)  # the DEM takes them all
+
+
+def test_variants_the_engine_ignores_are_named_and_a_study_of_none_is_refused():
+    """Asked for DEM-only variants, the static study says which it drops, runs the others against
+    base, and refuses in one line when nothing is left to test; base alone tests nothing."""
+    from yadearch.case.config import preset
+    from yadearch.errors import CampaignError
+    from yadearch.studies.robustness import study_rows
+
+    static = preset("set2").with_overrides({"engine": "static"})
+    said: list[str] = []
+    rows = study_rows(static, (5.2,), ("damping_x2", "increment_x2"), log=said.append)
+    assert [r["run"] for r in rows] == ["kn5.2_base", "kn5.2_increment_x2"]
+    assert said == ["variant damping_x2: only DEM numerics, which the static engine ignores: not run"]
+    with pytest.raises(CampaignError, match=r"timestep_x0.5, damping_x2: only DEM numerics.*choose among"):
+        study_rows(static, (5.2,), ("timestep_x0.5", "damping_x2"))
+    du = {"base": 88.0}
+    assert verdicts(robustness_table(results(du, {})))["verdict"].tolist() == ["NOT TESTED"]
 
 
 def test_the_mechanism_is_compared_by_its_hinges_a_to_d_not_every_joint_open_at_runaway():

@@ -123,6 +123,12 @@ def _resolve_key(key: str) -> tuple[str | None, str]:
     return owners[0], key
 
 
+def parameter_section(key: str) -> str | None:
+    """The section of parameter `key` (`section.name` or a bare name unique across sections; None for
+    the case's name); CaseError for an unknown or retired one."""
+    return _resolve_key(key)[0]
+
+
 def _refuse_retired(section: str, name: str) -> None:
     """A parameter of a former version set by a user: one line saying what replaced it."""
     if (section, name) in RETIRED:

@@ -3,6 +3,7 @@ du) and `yadearch robustness` (du against the numerics), as click commands for t
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import Any
 
@@ -277,6 +278,11 @@ def robustness(
             f"kn {row.kn_N_per_mm3:g}: base du {row.base_du_mm:.2f} mm ({row.base_hinges}), numerics "
             f"spread {row.numerics_spread:.2%} (du_first {row.du_first_spread:.2%}), "
             f"hinges {'kept' if row.hinges_kept else 'moved'}, "
-            f"friction moves du {row.friction_move:.2%}: {row.verdict}"
+            + (
+                f"friction moves du {row.friction_move:.2%}"
+                if not math.isnan(row.friction_move)
+                else "friction not run"
+            )
+            + f": {row.verdict}"
         )
     click.echo(f"-> {folder / 'robustness.csv'}, {folder / 'robustness.md'}")

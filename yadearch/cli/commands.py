@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 import click
 
 from yadearch.cli.lazy import LAZY_COMMANDS, LazyGroup
-from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, resolve_case
+from yadearch.cli.options import OUT_FOLDER, RIGID, argument_type, case_options, refuse_unread, resolve_case
 from yadearch.errors import YadearchError
 
 if TYPE_CHECKING:
@@ -167,13 +167,8 @@ def limit(
     from yadearch.case.imperfect import amplitudes
     from yadearch.solve.compliant import VALID_MARGIN_FRACTION
 
+    refuse_unread(settings, kn, RIGID, compliant)
     case = resolve_case(preset_name, case_file, kn, settings)
-    if kn is not None and not compliant:
-        click.echo(
-            f"note: --kn {kn:g} plays no part in the rigid-block analysis (rigid joints); add --compliant "
-            "for the du a run at that kn should find",
-            err=True,
-        )
     result = limit_analysis(
         case, compliant=compliant, max_snap_mm=max_snap_mm, out=out, start_hinges=start_hinges, start_mm=start_mm
     )

@@ -10,7 +10,7 @@ import click
 from yadearch import api
 from yadearch.api.live_loads import loads_file
 from yadearch.case.config import ArchCase
-from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, resolve_case
+from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, refuse_unread, resolve_case
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_lp import LoadCapacity
 from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath
@@ -79,6 +79,7 @@ def loads(
     """A live load's capacity: the load (N) or acceleration (g) at collapse with the self-weight held, and
     its mechanism ([loads] of the case, or --set live_load=...), by rigid-block limit analysis, on the
     static engine's path, or on the DEM's (YADE); --after-mm first moves the support."""
+    refuse_unread(settings, None, load_engine)
     case = resolve_case(preset_name, case_file, None, settings)
     if positions is not None:
         table = api.load_influence(case, positions, out=out, engine=load_engine)

@@ -20,6 +20,8 @@ if TYPE_CHECKING:
 
 PRESETS = ("set1", "set2")
 ENGINES = ("dem", "static")
+STATIC_ENGINE = "static"
+RIGID = "rigid"  # the rigid-block analyses (`limit`, `loads --engine rigid`): no joint stiffness, no numerics
 ENGINE_META = "yadearch_engine"  # where --engine leaves its choice for `resolve_case` (click's context)
 MOVEMENT_KEY = "movement"  # --set movement=NAME: a named support movement (case.support.MOVEMENT_PRESETS)
 
@@ -54,13 +56,44 @@ def resolve_case(
         overrides["numerics.engine"] = engine
     resolved = case.with_overrides(overrides) if overrides else case
     if resolved.numerics.engine == STATIC:
-        ignored = [k for k in overrides if k.split(".")[-1] in DEM_ONLY_NUMERICS]
-        if ignored:
-            raise click.UsageError(
-                f"--set {ignored[0]} is not used by the static engine (it solves each state as a static "
-                "equilibrium: no time step, damping, rate or contact model); drop it or use --engine dem"
-            )
+        _refuse_dem_numerics(list(overrides), DEM_ONLY_NUMERICS)
     return resolved
+
+
+def _refuse_dem_numerics(keys: list[str], dem_only: tuple[str, ...]) -> None:
+    """UsageError naming the first of `keys` that only the DEM reads."""
+    ignored = [k for k in keys if k.split(".")[-1] in dem_only]
+    if ignored:
+        raise click.UsageError(
+            f"--set {ignored[0]} is not used by the static engine (it solves each state as a static "
+            "equilibrium: no time step, damping, rate or contact model); drop it or use --engine dem"
+        )
+
+
+def refuse_unread(settings: tuple[str, ...], kn: float | None, engine: str, compliant: bool = False) -> None:
+    """UsageError in one line when --set (or --kn) names a parameter `engine` does not read: the
+    rigid-block analysis reads no numerics and, unless `compliant`, no joint stiffness; the static
+    engine reads no DEM numerics."""
+    from yadearch.case.config import parameter_section
+    from yadearch.static.records import DEM_ONLY_NUMERICS
+
+    if engine == STATIC_ENGINE:
+        _refuse_dem_numerics([item.split("=", 1)[0].strip() for item in settings], DEM_ONLY_NUMERICS)
+    if engine != RIGID:
+        return
+    if kn is not None and not compliant:
+        raise click.UsageError(
+            f"--kn {kn:g} plays no part in the rigid-block analysis (rigid joints); add --compliant for the du a "
+            "run at that kn should find, or drop it"
+        )
+    for item in settings:
+        key = item.split("=", 1)[0].strip()
+        if key == MOVEMENT_KEY:
+            continue
+        section = parameter_section(key)
+        if section == "numerics" or (section == "interface" and not compliant):
+            why = "a numerical setting of the engines" if section == "numerics" else "the joints are rigid"
+            raise click.UsageError(f"--set {key} plays no part in the rigid-block analysis ({why}); drop it")
 
 
 def _keep_engine(context: click.Context, _: click.Parameter, value: str | None) -> None:

@@ -11,8 +11,8 @@ import pandas as pd
 from matplotlib.figure import Figure
 
 from yadearch.case import reference
-from yadearch.plotting.house import save_figure
-from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
+from yadearch.plotting.house import hinge_colour, save_figure
+from yadearch.plotting.sweep import COLUMN_WIDTH_IN, HINGE_STYLE, SWEEP_STYLE
 
 FIGURE_HEIGHT_IN = 4.6
 
@@ -45,8 +45,11 @@ def kn_curve_figure(
         ax.set_ylabel(r"collapse displacement $d_u$ (mm)")
         ax.set_ylim(bottom=0.0)
         ax.legend(loc="lower right")
-        for column, marker, label in (("hinge_A", "o", "A (intrados)"), ("hinge_B", "s", "B (extrados)")):
-            ax_h.plot(runs["kn_N_per_mm3"], runs[column], marker, ms=1.8, label=f"hinge {label}")
+        for column in ("hinge_A", "hinge_B"):
+            letter, marker, label = HINGE_STYLE[column]
+            ax_h.plot(
+                runs["kn_N_per_mm3"], runs[column], marker, color=hinge_colour(letter), ms=1.8, label=f"hinge {label}"
+            )
         ax_h.set_ylabel("interface")
         ax_h.legend(loc="center right")
         ax_h.set_xscale("log")

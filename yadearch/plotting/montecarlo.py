@@ -5,6 +5,7 @@ imperfection amplitude (median and band per level)."""
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from pathlib import Path
 
 import matplotlib
@@ -14,13 +15,15 @@ from matplotlib.figure import Figure
 
 from yadearch.analysis.samples import BAND, du_statistics, hinge_frequencies
 from yadearch.model.hinges import PAPER_LABELS
-from yadearch.plotting.house import save_figure
+from yadearch.plotting.house import hinge_colour, save_figure
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 
 HINGE_SIDES = {"A": "intrados", "B": "extrados", "C": "extrados, moving support", "D": "extrados, fixed support"}
 BINS = 20  # histogram bins at most
 PANELS_PER_ROW = 3  # du against amplitude: panels side by side
 PANEL_HEIGHT_IN = 2.4
+DU_LABEL = "collapse displacement $d_u$ (mm)"
+REFERENCE_STYLES = ("--", ":", "-.")  # one reference du each, in black
 
 
 def _done(table: pd.DataFrame) -> pd.DataFrame:
@@ -30,11 +33,10 @@ def _done(table: pd.DataFrame) -> pd.DataFrame:
     return done
 
 
-def du_distribution_figure(
-    table: pd.DataFrame, stem: Path, reference_du_mm: float | None = None, reference_label: str = "perfect arch"
-) -> list[Path]:
-    """Histogram and empirical CDF of the samples' du with the median and the band marked (and a
-    reference du, e.g. the perfect arch's, when given): STEM.pdf and STEM.png."""
+def du_distribution_figure(table: pd.DataFrame, stem: Path, references: Sequence[tuple[float, str]] = ()) -> list[Path]:
+    """Histogram and empirical CDF of the samples' du with the median and the band marked, and each
+    reference du of `references` ((du in mm, what it is), e.g. the perfect arch's) as a line:
+    STEM.pdf and STEM.png. The title counts the samples drawn that have no du (stand or failed)."""
     du = _done(table)["du_mm"].to_numpy(dtype=float)
     stats = du_statistics(pd.Series(du))
     with matplotlib.rc_context(SWEEP_STYLE):
@@ -44,17 +46,17 @@ def du_distribution_figure(
         ax_hist.set_ylabel("samples")
         ordered = np.sort(du)
         ax_cdf.step(ordered, np.arange(1, du.size + 1) / du.size, where="post", color="C0")
-        ax_cdf.set_ylabel("share of samples with du below")
-        ax_cdf.set_xlabel("collapse displacement du (mm)")
+        ax_cdf.set_ylabel("share of samples with $d_u$ below")
+        ax_cdf.set_xlabel(DU_LABEL)
         for ax in (ax_hist, ax_cdf):
             ax.axvspan(stats["low"], stats["high"], color="C0", alpha=0.12, label=f"{BAND[0]:.0%}-{BAND[1]:.0%} band")
             ax.axvline(stats["median"], color="C3", lw=1, label=f"median {stats['median']:.1f} mm")
-            if reference_du_mm is not None:
-                ax.axvline(
-                    reference_du_mm, color="k", ls="--", lw=0.8, label=f"{reference_label} {reference_du_mm:.1f} mm"
-                )
-        ax_hist.legend(loc="upper left", frameon=False)
-        ax_hist.set_title(f"{du.size} samples", fontsize=8)
+            for (du_mm, label), style in zip(references, REFERENCE_STYLES):
+                ax.axvline(du_mm, color="k", ls=style, lw=0.8, label=f"{label} {du_mm:.1f} mm")
+        ax_cdf.legend(loc="lower right", frameon=True, framealpha=0.9)  # under the CDF, where nothing is drawn
+        without = len(table) - du.size
+        title = f"$d_u$ of {du.size} samples" + (f" ({without} more drawn: no $d_u$)" if without else "")
+        ax_hist.set_title(title, fontsize=8)
         return list(save_figure(fig, stem))
 
 
@@ -64,9 +66,15 @@ def hinge_frequency_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
         ax = fig.subplots()
-        for k, label in enumerate(PAPER_LABELS):
+        for label in PAPER_LABELS:
             rows = frequencies[frequencies["hinge"] == label]
-            ax.bar(rows["interface"], rows["share"], width=0.8, color=f"C{k}", label=f"{label} ({HINGE_SIDES[label]})")
+            ax.bar(
+                rows["interface"],
+                rows["share"],
+                width=0.8,
+                color=hinge_colour(label),
+                label=f"{label} ({HINGE_SIDES[label]})",
+            )
         ax.set_xlabel("interface (1 = left springing)")
         ax.set_ylabel("share of samples")
         ax.set_ylim(0, 1.3)
@@ -100,15 +108,17 @@ def du_amplitude_figure(table: pd.DataFrame, column: str, stem: Path, label: str
         ax = fig.subplots()
         _draw_du_against(ax, _done(table), column)
         ax.set_xlabel(label or column)
-        ax.set_ylabel("collapse displacement du (mm)")
+        ax.set_ylabel(DU_LABEL)
         ax.legend(frameon=False)
         return list(save_figure(fig, stem))
 
 
-def campaign_figures(table: pd.DataFrame, folder: Path, level_columns: list[str]) -> list[Path]:
-    """A campaign's figures in `folder`: du's distribution, the hinge positions and du against each
-    swept amplitude. ValueError if no sample finished."""
-    paths = du_distribution_figure(table, folder / "du_distribution")
+def campaign_figures(
+    table: pd.DataFrame, folder: Path, level_columns: list[str], references: Sequence[tuple[float, str]] = ()
+) -> list[Path]:
+    """A campaign's figures in `folder`: du's distribution (with the `references` lines), the hinge
+    positions and du against each swept amplitude. ValueError if no sample finished."""
+    paths = du_distribution_figure(table, folder / "du_distribution", references)
     paths += hinge_frequency_figure(table, folder / "hinge_positions")
     for column in level_columns:
         paths += du_amplitude_figure(table, column, folder / f"du_vs_{column}")
@@ -134,6 +144,6 @@ def amplitude_panels_figure(
         for ax in axes[len(panels) :]:
             ax.set_visible(False)
         for ax in grid[:, 0]:
-            ax.set_ylabel("collapse displacement du (mm)")
+            ax.set_ylabel(DU_LABEL)
         axes[0].legend(frameon=False, loc="lower left")
         return list(save_figure(fig, stem))

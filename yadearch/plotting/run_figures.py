@@ -18,7 +18,7 @@ from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outli
 from yadearch.analysis.run import RunAnalysis
 from yadearch.errors import RunFolderError
 from yadearch.plotting.blocks import block_legend_entries, draw_blocks
-from yadearch.plotting.hinge_marks import mark_hinge
+from yadearch.plotting.hinge_marks import mark_hinge, place_hinge_labels
 from yadearch.plotting.house import (
     AXIS_MARGINS_CM,
     COLUMN_CM,
@@ -116,15 +116,16 @@ def collapse_figure(
     undeformed = [vertices[: len(vertices) // 2, :2] * 1e3 for vertices in geometry.blocks]
     draw_blocks(ax, [moved * 1e3 for moved in outlines], undeformed)
     pivots = {side: joint_points(geometry, state, side) * 1e3 for side in ("I", "E")}
-    for k, track in enumerate(analysis.tracks):
-        point = pivots[track.side][track.interface - 1]
+    marks = [
         mark_hinge(
             ax,
-            point,
+            pivots[track.side][track.interface - 1],
             f"{track.paper_label} ({track.interface}{track.side})",
             track.side,
             hinge_colour(track.paper_label, k),
         )
+        for k, track in enumerate(analysis.tracks)
+    ]
     block_legend_entries(ax, rf"$\delta$ = {state['delta_mm']:.2f} mm")
     ax.legend(loc="lower center", ncols=1, handlelength=1.5)  # inside the arch, under the crown
     ax.set_aspect("equal")
@@ -132,6 +133,7 @@ def collapse_figure(
     ax.set_ylim(*ylim)
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
+    place_hinge_labels(ax, marks)
     return cast(Figure, ax.get_figure())
 
 

@@ -9,6 +9,7 @@ import matplotlib
 import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
+from matplotlib.ticker import LogLocator, NullFormatter, ScalarFormatter
 
 from yadearch.plotting.house import save_figure
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
@@ -17,6 +18,7 @@ ROW_HEIGHT_IN = 0.24  # one factor's bar
 MARGIN_HEIGHT_IN = 0.9  # axes labels and legend
 WIDTH_COLUMNS = 1.6  # of a journal column: room for the factors' labels
 BAR_HEIGHT = 0.38  # of a row, for each of the two bars (low and high end; S1 and ST)
+LOG_TICKS = (1.0, 2.0, 5.0)  # major ticks of a log axis in each decade
 
 
 def tornado_figure(tornado: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
@@ -104,6 +106,9 @@ def convergence_figure(table: pd.DataFrame, target: float, scale: float, stem: P
         ax.axhline(target, color="k", lw=0.8, ls=":", label=f"target {target:g}")
         ax.set_xscale("log", base=2)
         ax.set_xlabel("base points N of the Sobol sample")
-        ax.set_ylabel("Sobol index")
+        ax.set_ylabel("change or half-width of a Sobol index")
+        ax.yaxis.set_major_locator(LogLocator(base=10.0, subs=LOG_TICKS))  # a range under a decade still
+        ax.yaxis.set_major_formatter(ScalarFormatter())  # gets ticks, written as plain numbers
+        ax.yaxis.set_minor_formatter(NullFormatter())
         ax.legend(loc="upper right")
         return save_figure(fig, stem)

@@ -15,14 +15,14 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
 from yadearch.case import reference
-from yadearch.plotting.house import save_figure
+from yadearch.plotting.house import hinge_colour, save_figure
 
 COLUMN_WIDTH_IN = 3.5  # one journal column
 ENGINE_LABELS = {"dem": "DEM", "static": "static"}  # numerics.engine as a figure names it
-HINGE_STYLE = {
-    "hinge_A": ("o", "A (intrados)"),
-    "hinge_B": ("s", "B (extrados)"),
-    "hinge_C": ("^", "C (right support)"),
+HINGE_STYLE = {  # a column of hinge interfaces: its letter, marker and legend entry
+    "hinge_A": ("A", "o", "A (intrados)"),
+    "hinge_B": ("B", "s", "B (extrados)"),
+    "hinge_C": ("C", "^", "C (moving support)"),
 }
 LEGEND_HEADROOM = 1.45  # hinge panel's y range as a multiple of the last interface
 PAPER_MECHANISM = "E-I-E-E"  # hinges D, A, B, C from left to right (paper: collapse when D opens)
@@ -112,9 +112,17 @@ def _failed_marks(ax: Axes, failed: pd.DataFrame) -> None:
 def _hinge_panel(ax: Axes, runs: pd.DataFrame, paper: bool) -> None:
     """Hinge interfaces against kn; the paper's ranges as bars half an interface beyond each end,
     so that a single interface still shows."""
-    for column, (marker, label) in HINGE_STYLE.items():
+    for column, (letter, marker, label) in HINGE_STYLE.items():
         present = runs[runs[column].notna()]
-        ax.plot(present["kn_N_per_mm3"], present[column].astype(float), marker, ms=3.5, mfc="none", label=label)
+        ax.plot(
+            present["kn_N_per_mm3"],
+            present[column].astype(float),
+            marker,
+            color=hinge_colour(letter),
+            ms=3.5,
+            mfc="none",
+            label=label,
+        )
     if paper and set(runs["n_voussoirs"]) == {reference.GEOMETRY["n_voussoirs"]}:
         for s in reference.SETS.values():
             for column in HINGE_STYLE:

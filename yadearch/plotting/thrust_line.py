@@ -13,13 +13,14 @@ import matplotlib
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
+from matplotlib.text import Annotation
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.hinges import paper_labels
 from yadearch.plotting.blocks import block_legend_entries, draw_blocks
-from yadearch.plotting.hinge_marks import mark_hinge
+from yadearch.plotting.hinge_marks import mark_hinge, place_hinge_labels
 from yadearch.plotting.house import (
     AXIS_MARGINS_CM,
     COLUMN_CM,
@@ -72,7 +73,7 @@ def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchC
             axes_width = COLUMN_CM - AXIS_MARGINS_CM[0]
             fig = new_figure(height_cm=axes_width * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1] + 0.4)
             ax = fig.add_subplot()
-        _draw(ax, result, undeformed, outlines)
+        marks = _draw(ax, result, undeformed, outlines)
         ax.set_aspect("equal")
         ax.set_xlim(*xlim)
         ax.set_ylim(*ylim)
@@ -81,21 +82,32 @@ def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchC
         du = result.du_rigid_mm
         state = rf"$d_{{u,\mathrm{{rigid}}}}$ = {du:.2f} mm" if du is not None else "no collapse"
         ax.set_title(f"{result.name}: rigid blocks, {state}")
+        place_hinge_labels(ax, marks)
     return ax.figure
 
 
-def _draw(ax: Axes, result: LimitResult, undeformed: list[np.ndarray], outlines: list[np.ndarray]) -> None:
-    """Blocks, thrust line, hinges and legend."""
+def _draw(
+    ax: Axes, result: LimitResult, undeformed: list[np.ndarray], outlines: list[np.ndarray]
+) -> list[tuple[Annotation, np.ndarray]]:
+    """Blocks, thrust line, hinges and legend; the hinges' labels with their preferred sides."""
     draw_blocks(ax, outlines, undeformed)
     thrust = np.array([f.thrust_mm for f in result.forces])
     ax.plot(thrust[:, 0], thrust[:, 1], color=THRUST_COLOUR, lw=0.9, marker="o", ms=1.2, zorder=3, label="thrust line")
     points = hinge_points(result)
     letters = paper_labels([(int(h[:-1]), h[-1], 0.0) for h in points], len(result.forces))
-    for k, (label, point) in enumerate(points.items()):
-        text = f"{label} (new)" if label in result.new_at_collapse else label
-        mark_hinge(ax, point, text, label[-1], hinge_colour(letters.get((int(label[:-1]), label[-1]), ""), k))
+    marks = [
+        mark_hinge(
+            ax,
+            point,
+            f"{label} (new)" if label in result.new_at_collapse else label,
+            label[-1],
+            hinge_colour(letters.get((int(label[:-1]), label[-1]), ""), k),
+        )
+        for k, (label, point) in enumerate(points.items())
+    ]
     block_legend_entries(ax, "at the limit")
     ax.legend(loc="lower center", ncols=1, handlelength=1.5)
+    return marks
 
 
 def save_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchCase, stem: Path) -> tuple[Path, Path]:

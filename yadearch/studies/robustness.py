@@ -19,6 +19,7 @@ import pandas as pd
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
+from yadearch.errors import CampaignError
 from yadearch.results.summary import STATIC
 from yadearch.static.records import DEM_ONLY_NUMERICS
 from yadearch.studies.campaigns.executors import Pool
@@ -63,13 +64,24 @@ VARIANTS: dict[str, Variant] = {
 
 
 def study_rows(
-    base: ArchCase, kn_values: tuple[float, ...] = KN_VALUES, variants: tuple[str, ...] = tuple(VARIANTS)
+    base: ArchCase,
+    kn_values: tuple[float, ...] = KN_VALUES,
+    variants: tuple[str, ...] = tuple(VARIANTS),
+    log: Callable[[str], None] = print,
 ) -> list[dict[str, Any]]:
-    """The campaign rows: one run per kn and variant, named `kn<kn>_<variant>`."""
+    """The campaign rows: one run per kn and variant, named `kn<kn>_<variant>`; the variants the
+    engine cannot be moved by are named in `log` and not run (CampaignError if none is left)."""
     unknown = sorted(set(variants) - set(VARIANTS))
     if unknown:
-        raise ValueError(f"variant must be one of {', '.join(VARIANTS)}, got {', '.join(unknown)}")
-    chosen = applicable(base, variants)
+        raise CampaignError(f"variant must be one of {', '.join(VARIANTS)}, got {', '.join(unknown)}")
+    chosen = applicable(base, tuple(dict.fromkeys(("base", *variants))))  # every variant is read against base
+    dropped = [name for name in variants if name not in chosen]
+    if dropped:
+        said = f"variant {', '.join(dropped)}: only DEM numerics, which the {base.numerics.engine} engine ignores"
+        if len(chosen) == 1:
+            usable = ", ".join(name for name in applicable(base, tuple(VARIANTS)) if name != "base")
+            raise CampaignError(f"{said}; with it choose among {usable}")
+        log(f"{said}: not run")
     return [
         {"run": f"kn{kn:g}_{name}", "kn_N_per_mm3": kn, **overrides}
         for kn in kn_values
@@ -98,7 +110,7 @@ def run_study(
     progress: bool = True,
 ) -> pd.DataFrame:
     """Run (or resume) the study into `out`, then write robustness.csv and robustness.md there."""
-    rows = study_rows(base, kn_values, variants)
+    rows = study_rows(base, kn_values, variants, log=print if progress else lambda _: None)
     results = run_campaign(base, rows, out, pool, timeout_s=timeout_s, progress=progress)
     table = robustness_table(results)
     write_csv_atomically(out / ROBUSTNESS_FILE, table)
@@ -179,6 +191,7 @@ def verdicts(table: pd.DataFrame) -> pd.DataFrame:
         slid = bool((base["max_slip_mm"] > SLIDING_MM).any())
         friction_move = float(friction["du_rel_to_base"].abs().max()) if len(friction) else math.nan
         friction_ok = slid or not friction_move > TOLERANCE
+        tested = len(group) > len(base)  # a study of the base runs alone passes no test
         rows.append(
             {
                 "kn_N_per_mm3": kn,
@@ -192,7 +205,9 @@ def verdicts(table: pd.DataFrame) -> pd.DataFrame:
                 "hinges_kept": hinges_kept,
                 "friction_move": friction_move,
                 "base_max_slip_mm": float(base["max_slip_mm"].max()),
-                "verdict": "PASS"
+                "verdict": "NOT TESTED"
+                if not tested
+                else "PASS"
                 if done and spread <= TOLERANCE and not first_spread > TOLERANCE and hinges_kept and friction_ok
                 else "FAIL",
             }

@@ -27,6 +27,7 @@ from yadearch.launch.process import STATIC_ENGINE, check_yade_installed, run_cas
 from yadearch.results.lock import folder_lock
 from yadearch.results.reuse import case_differences, is_current
 from yadearch.results.rundir import is_complete
+from yadearch.static.records import DEM_ONLY_NUMERICS
 from yadearch.studies.campaigns.batches import BATCHES_DIR
 from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.failures import FAILED_FILE, failure_stands, record_failure
@@ -62,6 +63,7 @@ def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]
         name = str(row.get(RUN_COLUMN) or (run_tag(overrides) if overrides else base.name))
         try:
             case = base.with_overrides({**overrides, "name": name})
+            _check_engine_reads(case, overrides)
             spec = RunSpec(name, overrides, out / confined_folder_name(name), case)
             if is_complete(spec.folder):
                 _check_same_case(spec)
@@ -79,6 +81,16 @@ def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]
         more = f" and {len(duplicates) - SHOWN_DUPLICATES} more" if len(duplicates) > SHOWN_DUPLICATES else ""
         raise YadearchError(f"campaign has duplicate runs {duplicates[:SHOWN_DUPLICATES]}{more}")
     return specs
+
+
+def _check_engine_reads(case: ArchCase, overrides: dict[str, Any]) -> None:
+    """CaseError when a run sets a parameter its engine ignores (the static engine and the DEM's
+    numerics): two runs that differ only there would give one answer twice."""
+    if case.numerics.engine != STATIC_ENGINE:
+        return
+    ignored = [key for key in overrides if key.split(".")[-1] in DEM_ONLY_NUMERICS]
+    if ignored:
+        raise CaseError(f"{ignored[0]} is not used by the static engine (DEM numerics); drop it or use engine dem")
 
 
 def confined_folder_name(name: str) -> str:

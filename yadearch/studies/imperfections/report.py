@@ -117,6 +117,7 @@ SET1_RUN = Path("reports/set1")  # the paper's low-kn model of set 1
 REPORT = "imperfections.md"
 PANEL_NOTES = {"stiff": ", kn 100", "final": ", final (200 seeds)", "match": ", seeds 1-40"}  # tell like panels apart
 FIGURE = "du_vs_amplitude"
+HISTORY_FILE = "snapshots.json"  # a run folder's hinge history, which hinge_shifts reads (not committed)
 
 
 def run_study(study: Study, out: Path, jobs: int) -> pd.DataFrame:
@@ -129,9 +130,12 @@ def run_study(study: Study, out: Path, jobs: int) -> pd.DataFrame:
 
 
 def draw(table: pd.DataFrame, study: Study, out: Path) -> None:
-    """A campaign's figures (du distribution, hinge positions, du against the amplitude)."""
+    """A campaign's figures (du distribution against the perfect arch's du and set 1's experiment,
+    hinge positions, du against the amplitude)."""
+    perfect = read_summary(PERFECT_RUN).collapsed_du_mm() if study.perfect_du_mm is None else study.perfect_du_mm
+    references = [(perfect, "perfect arch"), (reference.SETS["set1"]["experimental"]["du_mm"], "set 1, experiment")]
     try:
-        campaign_figures(table, out / study.name, [study.parameter])
+        campaign_figures(table, out / study.name, [study.parameter], references)
     except ValueError as exc:
         print(f"{study.name}: no figure ({exc})")
 
@@ -250,6 +254,12 @@ def migration_lines(out: Path, table: pd.DataFrame) -> list[str]:
     """Which way hinge A moved between its formation and the collapse, in the final campaign and in
     the low-kn model (set 1's experiment: formed at 12, one voussoir toward the crown before collapse)."""
     folders = [out / FINAL.name / f for f in table.loc[table["status"] == "done", "folder"]]
+    if not all((folder / HISTORY_FILE).is_file() for folder in folders):
+        return [
+            "Hinge A between its formation and the collapse: not tabulated, the samples' histories "
+            f"({HISTORY_FILE}) are not committed (the campaign writes them; docs/validation-imperfections.md "
+            "has the shares measured when it ran)."
+        ]
     shifts = hinge_shifts(folders, "A")
     if shifts.empty:
         return []
