@@ -77,7 +77,7 @@ def test_dask_cluster_gives_the_same_results(local_sweep, tmp_path):
     from distributed import LocalCluster
 
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
-        result = run_sweep(tmp_path / "sweep", "--scheduler", cluster.scheduler_address, "--no-figure")
+        result = run_sweep(tmp_path / "sweep", "--scheduler", cluster.scheduler_address, "--no-figures")
     assert result.exit_code == 0, result.output
     local = pd.read_csv(local_sweep / RESULTS_FILE)
     remote = pd.read_csv(tmp_path / "sweep" / RESULTS_FILE)
@@ -92,7 +92,7 @@ def test_restart_redoes_nothing_finished_and_records_a_timeout(local_sweep, tmp_
         shutil.copytree(local_sweep / name, out / name)
     (out / "kn0.2" / "summary.json").unlink()  # killed while kn0.2 ran
     finished = {p: p.stat().st_mtime_ns for p in out.glob("kn0.1*/*")}
-    result = run_sweep(out, "--jobs", "1", "--timeout-min", str(1 / 60), "--no-figure")
+    result = run_sweep(out, "--jobs", "1", "--timeout-min", str(1 / 60), "--no-figures")
     assert "1 of 3 runs failed" in str(result.exception), result.output
     assert {p: p.stat().st_mtime_ns for p in out.glob("kn0.1*/*")} == finished
     table = pd.read_csv(out / RESULTS_FILE)
@@ -184,7 +184,7 @@ def test_a_sigkilled_campaign_leaves_no_orphan_and_resumes_where_it_stopped(tmp_
         str(out),
         "--jobs",
         "1",
-        "--no-figure",
+        "--no-figures",
     ]
     campaign = subprocess.Popen(argv, cwd=REPO, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.time() + 300

@@ -33,7 +33,7 @@ def perfect(tmp_path_factory) -> pd.DataFrame:
     """The perfect coarse arch, with the default seed and with another (no amplitude: no effect)."""
     out = tmp_path_factory.mktemp("perfect") / "campaign"
     result = CliRunner().invoke(
-        sweep, [*COARSE, "--param", "seed=0,9", "--out", str(out), "--jobs", "2", "--no-figure"]
+        sweep, [*COARSE, "--param", "seed=0,9", "--out", str(out), "--jobs", "2", "--no-figures"]
     )
     assert result.exit_code == 0, result.output
     return pd.read_csv(out / "results.csv")

@@ -190,20 +190,21 @@ def capacity(
     scheduler: str | None = None,
     timeout_s: float | None = None,
     rigid: bool = True,
+    figures: bool = True,
 ) -> pd.DataFrame:
     """The capacity map of `case`: du against the direction of the support movement every `step_deg`
     from spreading (0) to closing (-180), a resumable campaign in OUT/runs, with the rigid limit of
     each direction (unless not `rigid`); writes OUT/capacity.csv, capacity.md and the polar figure
-    and returns the table."""
+    (unless not `figures`) and returns the table."""
     from yadearch.studies.campaigns.executors import open_pool
     from yadearch.studies.capacity.campaign import run_capacity
     from yadearch.studies.capacity.directions import directions
 
-    check_arguments(step_deg=step_deg, jobs=jobs, timeout_s=timeout_s, rigid=rigid)
+    check_arguments(step_deg=step_deg, jobs=jobs, timeout_s=timeout_s, rigid=rigid, figures=figures)
     folder, case = output_path(out, "out"), with_engine(case, engine)
     directions(step_deg)  # refuses a step that does not divide 180 before anything starts
     with open_pool(jobs, scheduler) as pool:
-        return run_capacity(case, folder, pool, step_deg, rigid=rigid, timeout_s=timeout_s)
+        return run_capacity(case, folder, pool, step_deg, rigid=rigid, timeout_s=timeout_s, figures=figures)
 
 
 def sensitivity(
@@ -216,20 +217,21 @@ def sensitivity(
     scheduler: str | None = None,
     timeout_s: float | None = None,
     check_runs: int = 0,
+    figures: bool = True,
 ) -> SensitivityResult:
     """What du of `case` is sensitive to: each factor alone at the ends of its range (a tornado) and
     Sobol indices from Saltelli's sample of `base_points` (a power of two; default
     `sensitivity_campaign.DEFAULT_BASE_POINTS`, 128), both resumable campaigns in
     `out`; `factors` (`yadearch.studies.sensitivity.indices.Factor`s) default to the paper arch's plausible
     ranges; the `check_runs` one-at-a-time runs that move du most are made again on the other engine
-    (the DEM for a static study). Writes the tables, figures and sensitivity.md; returns the
+    (the DEM for a static study). Writes the tables, figures (unless not `figures`) and sensitivity.md; returns the
     `SensitivityResult`."""
     from yadearch.studies.campaigns.executors import open_pool
     from yadearch.studies.sensitivity.checks import check_count
     from yadearch.studies.sensitivity.indices import PAPER_FACTORS, check_base_points, check_factors
     from yadearch.studies.sensitivity.study import DEFAULT_BASE_POINTS, run_sensitivity
 
-    check_arguments(base_points=base_points, check_runs=check_runs, jobs=jobs, timeout_s=timeout_s)
+    check_arguments(base_points=base_points, check_runs=check_runs, jobs=jobs, timeout_s=timeout_s, figures=figures)
     folder, case = output_path(out, "out"), with_engine(case, engine)
     chosen = tuple(factors) if factors else PAPER_FACTORS
     base_points = DEFAULT_BASE_POINTS if base_points is None else base_points
@@ -238,4 +240,6 @@ def sensitivity(
     check_campaign_size(base_points * (len(chosen) + 2))  # Saltelli's N x (factors + 2) runs
     check_count(check_runs)
     with open_pool(jobs, scheduler) as pool:
-        return run_sensitivity(case, folder, pool, base_points, chosen, timeout_s=timeout_s, check_runs=check_runs)
+        return run_sensitivity(
+            case, folder, pool, base_points, chosen, timeout_s=timeout_s, check_runs=check_runs, figures=figures
+        )

@@ -34,13 +34,16 @@ from yadearch.studies.loads.rigid import influence_line
 from yadearch.studies.loads.static import static_influence_line
 
 
-def loads(case: ArchCase | str, out: str | Path | None = None, after_mm: float = 0.0) -> LoadCapacity:
+def loads(
+    case: ArchCase | str, out: str | Path | None = None, after_mm: float = 0.0, figures: bool = True
+) -> LoadCapacity:
     """The live load (`case.loads`) the rigid arch carries at collapse, its self-weight held: the
     multiplier in N (a vertical load) or g (a horizontal acceleration), the mechanism's hinges; no
     YADE, under a second. With `after_mm`, in the rigid march's state after the case's support
     movement to that point (the load that first moves the settled arch). With `out`, writes
-    OUT/NAME_loads.json (the result and the case) and the collapse's figure OUT/NAME_loads.pdf/.png."""
-    check_arguments(after_mm=after_mm)
+    OUT/NAME_loads.json (the result and the case) and (with `figures`) the collapse's figure
+    OUT/NAME_loads.pdf/.png."""
+    check_arguments(after_mm=after_mm, figures=figures)
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
@@ -48,7 +51,7 @@ def loads(case: ArchCase | str, out: str | Path | None = None, after_mm: float =
     if folder is not None:
         data = {**load_json(result, case), "after_mm": after_mm}
         write_text_atomically(loads_file(case, folder), json.dumps(data, indent=1) + "\n")
-        if math.isfinite(result.multiplier) and after_mm == 0.0:
+        if figures and math.isfinite(result.multiplier) and after_mm == 0.0:
             plot_load_collapse(case, arch_geometry(case), result, folder / f"{case.name}_loads")
     return result
 
@@ -62,6 +65,7 @@ def load_path(
     after_mm: float = 0.0,
     engine: str = "static",
     descend_to: float | None = DESCEND_TO,
+    figures: bool = True,
 ) -> LoadPath:
     """The live load grown to collapse on an engine's path after the case's support movement to
     `after_mm`: its first loss of stability, capacity and mechanism, its load-displacement curve, and the
@@ -69,9 +73,9 @@ def load_path(
     going on past the peak until the multiplier falls to `descend_to` x the capacity (None: it stops at
     the peak); 'dem': YADE's DEM by load ramps relaxed to equilibrium (a child process, minutes; needs
     `out`; its curve stops at the peak). With `out`, writes OUT/NAME_load_path.json, .csv (the curve),
-    its figure .pdf/.png and its states as the folder OUT/NAME_load_path/ (`open_run(...).animate()`,
+    its figure .pdf/.png (with `figures`) and its states as the folder OUT/NAME_load_path/ (`open_run(...).animate()`,
     `.export_vtk()`)."""
-    check_arguments(after_mm=after_mm, descend_to=descend_to)
+    check_arguments(after_mm=after_mm, descend_to=descend_to, figures=figures)
     if engine not in LOAD_PATH_ENGINES:
         raise CaseError(f"engine must be one of {', '.join(LOAD_PATH_ENGINES)}, got {engine!r}")
     case = as_case(case)
@@ -89,9 +93,8 @@ def load_path(
         if folder is not None:
             write_load_path(folder, result, case)
             _keep_states(folder, result, case)
-    if folder is not None:
-        stem = load_path_file(folder, case.name)
-        plot_load_path(result, stem)
+    if folder is not None and figures:
+        plot_load_path(result, load_path_file(folder, case.name))
     return result
 
 
@@ -144,18 +147,20 @@ def load_influence(
     out: str | Path | None = None,
     engine: str = "rigid",
     jobs: int | None = None,
+    figures: bool = True,
 ) -> pd.DataFrame:
     """The influence line of `case`'s arch: a concentrated vertical load's capacity (N) at `positions`
     points evenly across the span (k / (positions + 1)), with each mechanism's hinges, by `engine`:
     'rigid' blocks, or on the 'static' engine's or the 'dem''s path (their first loss and the rigid line
     beside it; the DEM's load paths in child processes, `jobs` at a time, under OUT/NAME_influence_runs,
-    so it needs `out`); with `out`, OUT/NAME_influence.csv and its figure OUT/NAME_influence.pdf/.png."""
+    so it needs `out`); with `out`, OUT/NAME_influence.csv and (with `figures`) its figure
+    OUT/NAME_influence.pdf/.png."""
     low, high = POSITIONS_RANGE
     if isinstance(positions, bool) or not isinstance(positions, int) or not low <= positions <= high:
         raise CaseError(f"positions must be an integer in [{low}, {high}], got {positions!r}")
     if engine not in INFLUENCE_ENGINES:
         raise CaseError(f"engine must be one of {', '.join(INFLUENCE_ENGINES)}, got {engine!r}")
-    check_arguments(jobs=jobs)
+    check_arguments(jobs=jobs, figures=figures)
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
@@ -169,6 +174,7 @@ def load_influence(
         table = static_influence_line(case, where) if engine == "static" else influence_line(case, where)
     if folder is not None:
         write_csv_atomically(folder / f"{case.name}_influence.csv", table)
-        weight = float(rigid_arch(case).weight[1:-1].sum())
-        plot_influence(table, weight, folder / f"{case.name}_influence", engine)
+        if figures:
+            weight = float(rigid_arch(case).weight[1:-1].sum())
+            plot_influence(table, weight, folder / f"{case.name}_influence", engine)
     return table

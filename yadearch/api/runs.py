@@ -105,12 +105,17 @@ def run(
     run_case_process(case, folder, timeout_s=timeout_s, quiet=quiet, single=True)
     result = open_run(folder)
     if figures:
+        if not quiet:  # a few seconds with nothing said otherwise
+            print(f"drawing the figures of {folder} ...", flush=True)
         result.write_figures(jobs=figure_jobs)
     return result
 
 
 def reproduce(
-    out: str | Path = "reports", jobs: int = 2, rerun: bool = False, on_reuse: Callable[[Path], None] | None = None
+    out: str | Path = "runs/reproduce",
+    jobs: int = 2,
+    rerun: bool = False,
+    on_reuse: Callable[[Path], None] | None = None,
 ) -> tuple[list[RunResult], Path]:
     """The paper's two cases (OUT/set1, OUT/set2, `jobs` at once) and OUT/report.md with figures; a
     finished run of exactly the same case in OUT is reused (`on_reuse` is told), unless `rerun`.
@@ -148,18 +153,20 @@ def limit(
     out: str | Path | None = None,
     start_hinges: str | Sequence[str] | None = None,
     start_mm: float = 0.0,
+    figures: bool = True,
 ) -> LimitResult:
     """Rigid-block limit analysis of `case` (no YADE, seconds): du_rigid and the hinge history;
     `compliant`: with the joints folding at the margin the case's kn allows (what a DEM run of that
     stiffness should find; docs/validation.md); `max_snap_mm`: a hinge snap moving a block further
     is collapse, as in a run; `start_hinges` ("1E 35I 56E"): leave rest on that linkage (another
-    engine's) instead of the LP's, placed `start_mm` along it. With `out`, writes OUT/NAME.json and the
-    thrust-line figure (NAME_compliant.* when compliant, NAME_start-1E-35I-56E.* from a named linkage)."""
+    engine's) instead of the LP's, placed `start_mm` along it. With `out`, writes OUT/NAME.json and
+    (with `figures`) the thrust-line figure (NAME_compliant.* when compliant, NAME_start-1E-35I-56E.*
+    from a named linkage)."""
     from yadearch.plotting.thrust_line import save_thrust_line
     from yadearch.solve.limit import limit_analysis
     from yadearch.solve.limit_result import write_result_json
 
-    check_arguments(compliant=compliant, max_snap_mm=max_snap_mm, start_mm=start_mm)
+    check_arguments(compliant=compliant, max_snap_mm=max_snap_mm, start_mm=start_mm, figures=figures)
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
@@ -169,7 +176,8 @@ def limit(
     if folder is not None:
         json_path, figure_stem = limit_files(case, compliant, folder, result.start_hinges, result.start_mm)
         write_result_json(result, case, json_path)
-        save_thrust_line(result, case, figure_stem)
+        if figures:
+            save_thrust_line(result, case, figure_stem)
     return result
 
 

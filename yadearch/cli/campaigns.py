@@ -17,6 +17,7 @@ from yadearch.cli.options import (
     OUT_FOLDER,
     argument_type,
     case_options,
+    figures_option,
     pool_options,
     resolve_case,
     timeout_s,
@@ -57,12 +58,7 @@ def _base_case(preset_name: str | None, case_file: str | None, settings: tuple[s
     help="campaign folder: one run folder per run, runs.csv, results.csv",
 )
 @pool_options
-@click.option(
-    "--figure/--no-figure",
-    default=True,
-    show_default=True,
-    help="draw du against each swept parameter (with the hinges when kn alone is swept)",
-)
+@figures_option("du against each swept parameter (with the hinges when kn alone is swept)")
 @click.option(
     "--retry-failed/--keep-failed",
     default=True,
@@ -80,7 +76,7 @@ def sweep(
     jobs: int | None,
     scheduler: str | None,
     timeout_min: float | None,
-    figure: bool,
+    figures: bool,
     retry_failed: bool,
 ) -> None:
     """Run a campaign (a grid or a table of cases), resuming a previous one in OUT."""
@@ -108,7 +104,7 @@ def sweep(
         timeout_s=timeout_s(timeout_min),
         table=table_file,
         retry_failed=retry_failed,
-        figures=figure,
+        figures=figures,
         log=note,
         **axes,
     )

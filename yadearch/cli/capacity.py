@@ -8,7 +8,15 @@ from pathlib import Path
 import click
 
 from yadearch import api
-from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, pool_options, resolve_case, timeout_s
+from yadearch.cli.options import (
+    OUT_FOLDER,
+    argument_type,
+    case_options,
+    figures_option,
+    pool_options,
+    resolve_case,
+    timeout_s,
+)
 from yadearch.studies.capacity.campaign import FIGURE, REPORT, TABLE
 
 
@@ -29,6 +37,7 @@ from yadearch.studies.capacity.campaign import FIGURE, REPORT, TABLE
     help="folder: runs/ (the campaign), capacity.csv, capacity.md, capacity_map.pdf/.png",
 )
 @pool_options
+@figures_option("the polar capacity map")
 def capacity(
     preset_name: str | None,
     case_file: str | None,
@@ -40,6 +49,7 @@ def capacity(
     jobs: int | None,
     scheduler: str | None,
     timeout_min: float | None,
+    figures: bool,
 ) -> None:
     """Run (or resume) the capacity map of a case: du for movements of its support in every direction
     of the half-plane below the horizontal, with the rigid-block limit of each."""
@@ -53,6 +63,7 @@ def capacity(
             scheduler=scheduler,
             timeout_s=timeout_s(timeout_min),
             rigid=not no_rigid,
+            figures=figures,
         )
     except ValueError as exc:
         raise click.BadParameter(str(exc), param_hint="--step-deg") from None

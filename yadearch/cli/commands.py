@@ -10,7 +10,15 @@ from typing import TYPE_CHECKING
 import click
 
 from yadearch.cli.lazy import LAZY_COMMANDS, LazyGroup
-from yadearch.cli.options import OUT_FOLDER, RIGID, argument_type, case_options, refuse_unread, resolve_case
+from yadearch.cli.options import (
+    OUT_FOLDER,
+    RIGID,
+    argument_type,
+    case_options,
+    figures_option,
+    refuse_unread,
+    resolve_case,
+)
 from yadearch.errors import YadearchError
 
 if TYPE_CHECKING:
@@ -46,12 +54,7 @@ def cli() -> None:
 @click.option("--out", type=OUT_FOLDER, help="run folder (default runs/NAME)")
 @click.option("--rerun", is_flag=True, help="run again even if OUT holds a finished run of this case")
 @click.option("--overwrite", is_flag=True, help="replace a finished run of another case in OUT")
-@click.option(
-    "--figures/--no-figures",
-    default=True,
-    show_default=True,
-    help="draw the run's figures (a static run's solver takes a fraction of their seconds)",
-)
+@figures_option("the run's figures (a static run's solver takes a fraction of their seconds)")
 def run(
     preset_name: str | None,
     case_file: str | None,
@@ -80,9 +83,9 @@ def run(
 @click.option(
     "--out",
     type=OUT_FOLDER,
-    default="reports",
+    default="runs/reproduce",
     show_default=True,
-    help="folder that receives set1/ and set2/",
+    help="folder that receives set1/ and set2/ (the committed evidence: --out reports)",
 )
 @click.option(
     "--jobs", type=argument_type("jobs"), default=2, show_default=True, help="cases run at once (one core each)"
@@ -150,6 +153,7 @@ def params() -> None:
     show_default=True,
     help="with --start-hinges: place the arch this far (mm) along those hinges from rest and march on from there",
 )
+@figures_option("the thrust-line figure")
 def limit(
     preset_name: str | None,
     case_file: str | None,
@@ -160,6 +164,7 @@ def limit(
     compliant: bool,
     start_hinges: str | None,
     start_mm: float,
+    figures: bool,
 ) -> None:
     """Rigid-block limit analysis, no YADE: du_rigid, hinges, thrust-line figure (kn only with --compliant)."""
     from yadearch.api.runs import limit as limit_analysis
@@ -170,7 +175,13 @@ def limit(
     refuse_unread(settings, kn, RIGID, compliant)
     case = resolve_case(preset_name, case_file, kn, settings)
     result = limit_analysis(
-        case, compliant=compliant, max_snap_mm=max_snap_mm, out=out, start_hinges=start_hinges, start_mm=start_mm
+        case,
+        compliant=compliant,
+        max_snap_mm=max_snap_mm,
+        out=out,
+        start_hinges=start_hinges,
+        start_mm=start_mm,
+        figures=figures,
     )
     path, _ = limit_files(case, compliant, out, result.start_hinges, result.start_mm)
     du = "no collapse" if result.du_rigid_mm is None else f"{result.du_rigid_mm:.2f} mm"

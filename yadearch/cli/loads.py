@@ -10,7 +10,7 @@ import click
 from yadearch import api
 from yadearch.api.live_loads import loads_file
 from yadearch.case.config import ArchCase
-from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, refuse_unread, resolve_case
+from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, figures_option, refuse_unread, resolve_case
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_lp import LoadCapacity
 from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath
@@ -65,6 +65,7 @@ ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
     help="also the influence line: a concentrated load's capacity at this many points across the span "
     "(2-200, by the --engine), written as NAME_influence.csv and its figure",
 )
+@figures_option("the collapse, the load path or the influence line")
 def loads(
     preset_name: str | None,
     case_file: str | None,
@@ -75,6 +76,7 @@ def loads(
     descending: bool,
     descend_to: float,
     positions: int | None,
+    figures: bool,
 ) -> None:
     """A live load's capacity: the load (N) or acceleration (g) at collapse with the self-weight held, and
     its mechanism ([loads] of the case, or --set live_load=...), by rigid-block limit analysis, on the
@@ -82,7 +84,7 @@ def loads(
     refuse_unread(settings, None, load_engine)
     case = resolve_case(preset_name, case_file, None, settings)
     if positions is not None:
-        table = api.load_influence(case, positions, out=out, engine=load_engine)
+        table = api.load_influence(case, positions, out=out, engine=load_engine, figures=figures)
         weakest = table.loc[table["collapse_load_N"].idxmin()]
         click.echo(
             f"{case.name}: influence line at {positions} positions: least {weakest.collapse_load_N:.4g} N at "
@@ -92,18 +94,20 @@ def loads(
             return
     what = _what(case) + (f" after {after_mm:g} mm of support movement" if after_mm else "")
     if load_engine in (STATIC, DEM):
-        _on_path(case, out, after_mm, what, load_engine, descend_to if descending else None)
+        _on_path(case, out, after_mm, what, load_engine, descend_to if descending else None, figures)
         return
-    result = api.loads(case, out=out, after_mm=after_mm)
+    result = api.loads(case, out=out, after_mm=after_mm, figures=figures)
     outcome = _rigid_outcome(result)
     if after_mm and math.isfinite(result.multiplier):  # the settled rigid arch's open hinges are pins
         outcome += " (the load that first moves the settled arch; --engine static follows it further)"
     click.echo(f"{case.name}: {what}: {outcome} -> {loads_file(case, out)}")
 
 
-def _on_path(case: ArchCase, out: str, after_mm: float, what: str, engine: str, descend_to: float | None) -> None:
+def _on_path(
+    case: ArchCase, out: str, after_mm: float, what: str, engine: str, descend_to: float | None, figures: bool
+) -> None:
     """An engine's load path, said in one line beside the rigid answer."""
-    path = api.load_path(case, out=out, after_mm=after_mm, engine=engine, descend_to=descend_to)
+    path = api.load_path(case, out=out, after_mm=after_mm, engine=engine, descend_to=descend_to, figures=figures)
     unit = path.unit
     if path.outcome == Outcome.COLLAPSE:
         first = f", first loss of stability at {path.first_loss:.4g} {unit}" if path.first_loss < path.capacity else ""

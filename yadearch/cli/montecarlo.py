@@ -10,7 +10,15 @@ import click
 from yadearch import api
 from yadearch.analysis.samples import du_statistics
 from yadearch.cli.campaigns import note, parse_axes
-from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, pool_options, resolve_case, timeout_s
+from yadearch.cli.options import (
+    OUT_FOLDER,
+    argument_type,
+    case_options,
+    figures_option,
+    pool_options,
+    resolve_case,
+    timeout_s,
+)
 from yadearch.errors import YadearchError
 from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE
 
@@ -39,6 +47,7 @@ from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE
     help="campaign folder: run folders, results.csv, montecarlo.csv, montecarlo.md, figures",
 )
 @pool_options
+@figures_option("the distribution of du, the hinge positions and du against each amplitude")
 def montecarlo(
     preset_name: str | None,
     case_file: str | None,
@@ -51,6 +60,7 @@ def montecarlo(
     jobs: int | None,
     scheduler: str | None,
     timeout_min: float | None,
+    figures: bool,
 ) -> None:
     """Run (or resume) seeded samples of the case's imperfections; write the distribution of du and
     of the hinges (montecarlo.csv, montecarlo.md, figures)."""
@@ -66,6 +76,7 @@ def montecarlo(
         scheduler=scheduler,
         timeout_s=timeout_s(timeout_min),
         log=note,
+        figures=figures,
         **axes,
     )
     stats = du_statistics(table.loc[table["status"] == "done", "du_mm"])

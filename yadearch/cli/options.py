@@ -96,6 +96,16 @@ def refuse_unread(settings: tuple[str, ...], kn: float | None, engine: str, comp
             raise click.UsageError(f"--set {key} plays no part in the rigid-block analysis ({why}); drop it")
 
 
+def figures_option(what: str) -> Callable[[Any], Any]:
+    """--figures/--no-figures (drawn by default), the same on every command that draws: `what` it draws."""
+    return click.option(
+        "--figures/--no-figures",
+        default=True,
+        show_default=True,
+        help=f"draw {what} (PDF and PNG); --no-figures writes the tables and reports only",
+    )
+
+
 def _keep_engine(context: click.Context, _: click.Parameter, value: str | None) -> None:
     if value is not None:
         context.meta[ENGINE_META] = value

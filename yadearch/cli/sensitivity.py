@@ -8,7 +8,15 @@ from pathlib import Path
 import click
 
 from yadearch import api
-from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, pool_options, resolve_case, timeout_s
+from yadearch.cli.options import (
+    OUT_FOLDER,
+    argument_type,
+    case_options,
+    figures_option,
+    pool_options,
+    resolve_case,
+    timeout_s,
+)
 from yadearch.studies.sensitivity.indices import STABLE_TO, parse_factor
 from yadearch.studies.sensitivity.study import DEFAULT_BASE_POINTS, INDICES_TABLE, REPORT, TORNADO_TABLE
 
@@ -46,6 +54,7 @@ from yadearch.studies.sensitivity.study import DEFAULT_BASE_POINTS, INDICES_TABL
     "checks.csv, figures, sensitivity.md",
 )
 @pool_options
+@figures_option("the tornado, the indices and their convergence")
 def sensitivity(
     preset_name: str | None,
     case_file: str | None,
@@ -58,6 +67,7 @@ def sensitivity(
     jobs: int | None,
     scheduler: str | None,
     timeout_min: float | None,
+    figures: bool,
 ) -> None:
     """Run (or resume) the sensitivity study of a case: du with each factor at the ends of its range,
     and Sobol's first-order and total indices over all ranges at once (SALib)."""
@@ -72,6 +82,7 @@ def sensitivity(
         scheduler=scheduler,
         timeout_s=timeout_s(timeout_min),
         check_runs=check_runs,
+        figures=figures,
     )
     top = result.indices[result.indices["base_points"] == base_points].sort_values("ST", ascending=False).iloc[0]
     folder = Path(out)

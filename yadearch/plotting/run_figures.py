@@ -223,7 +223,8 @@ def plot_stability(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[P
     ax.plot(path["delta_mm"], path[STIFFNESS_COLUMN], "o-", color=LEFT_COLOUR, ms=2.5, lw=0.8)
     ax.axhline(0.0, color="0.4", lw=0.6)
     _mark_du(ax, analysis.du_mm, legend=True)
-    ax.legend(loc="upper right")
+    if analysis.du_mm is not None:  # a run that stands has no du to name
+        ax.legend(loc="upper right")
     ax.set_xlabel(delta_label(run.case))
     ax.set_ylabel("smallest stiffness (N/m)")
     return save_figure(fig, stem)

@@ -91,10 +91,11 @@ def run_capacity(
     step_deg: float = 15.0,
     rigid: bool | dict[float, RigidLimit] = True,
     timeout_s: float | None = None,
+    figures: bool = True,
 ) -> pd.DataFrame:
     """du of `case` every `step_deg` from spreading to closing (a resumable campaign in OUT/runs), the
     rigid limit beside it (`rigid`: computed, False: none, or given by direction); writes
-    OUT/capacity.csv, capacity.md and capacity_map.pdf/.png and returns the table."""
+    OUT/capacity.csv, capacity.md and (with `figures`) capacity_map.pdf/.png and returns the table."""
     values = directions(step_deg)
     results = run_campaign(
         case, [{DIRECTION_PARAMETER: d} for d in values], Path(out) / RUNS, pool, timeout_s=timeout_s
@@ -103,7 +104,8 @@ def run_capacity(
     limits = rigid if isinstance(rigid, dict) else rigid_limits(case, values, cache) if rigid else {}
     table = map_table(case.name, results, limits)
     write_csv_atomically(Path(out) / TABLE, table)
-    capacity_polar_figure(table, Path(out) / FIGURE, engine=ENGINE_LABELS[case.numerics.engine])
+    if figures:
+        capacity_polar_figure(table, Path(out) / FIGURE, engine=ENGINE_LABELS[case.numerics.engine])
     write_text_atomically(Path(out) / REPORT, capacity_markdown(case, table, step_deg, FIGURE))
     return table
 

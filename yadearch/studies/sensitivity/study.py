@@ -88,6 +88,7 @@ def run_sensitivity(
     timeout_s: float | None = None,
     progress: bool = True,
     check_runs: int = 0,
+    figures: bool = True,
 ) -> SensitivityResult:
     """Run (or resume) the one-at-a-time runs in OUT/tornado_runs, Saltelli's sample of `base_points`
     in OUT/runs (its folders keep only their summaries, numerics.run_files; static runs keep no
@@ -125,9 +126,10 @@ def run_sensitivity(
     write_csv_atomically(out / INDICES_TABLE, indices)
     write_csv_atomically(out / CONVERGENCE_TABLE, result.convergence)
     write_csv_atomically(out / SAMPLES_TABLE, samples)
-    tornado_figure(tornado, out / TORNADO_FIGURE)
-    indices_figure(indices, {f.name: f.label for f in factors}, out / INDICES_FIGURE)
-    convergence_figure(result.convergence, STABLE_TO, change_scale(result.convergence), out / CONVERGENCE_FIGURE)
+    if figures:
+        tornado_figure(tornado, out / TORNADO_FIGURE)
+        indices_figure(indices, {f.name: f.label for f in factors}, out / INDICES_FIGURE)
+        convergence_figure(result.convergence, STABLE_TO, change_scale(result.convergence), out / CONVERGENCE_FIGURE)
     write_text_atomically(out / REPORT, sensitivity_markdown(base, factors, result, time.time() - started, pool.slots))
     return result
 
