@@ -138,7 +138,7 @@ def main() -> int:
             (
                 static.assign(du_mm=static["du_stat_mm"], status="done"),
                 LEVEL,
-                f"{kind.name} ({kind.amplitude_unit})",
+                kind.axis_label,
                 perfect,
             )
         )

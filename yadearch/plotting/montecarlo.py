@@ -16,6 +16,7 @@ from matplotlib.figure import Figure
 from yadearch.analysis.samples import BAND, du_statistics, hinge_frequencies
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.plotting.house import hinge_colour, save_figure
+from yadearch.plotting.parameter_labels import parameter_label
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 
 HINGE_SIDES = {"A": "intrados", "B": "extrados", "C": "extrados, moving support", "D": "extrados, fixed support"}
@@ -107,7 +108,7 @@ def du_amplitude_figure(table: pd.DataFrame, column: str, stem: Path, label: str
         fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
         ax = fig.subplots()
         _draw_du_against(ax, _done(table), column)
-        ax.set_xlabel(label or column)
+        ax.set_xlabel(label or parameter_label(column))
         ax.set_ylabel(DU_LABEL)
         ax.legend(frameon=False)
         return list(save_figure(fig, stem))

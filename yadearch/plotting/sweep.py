@@ -16,6 +16,7 @@ from matplotlib.ticker import MaxNLocator
 
 from yadearch.case import reference
 from yadearch.plotting.house import hinge_colour, save_figure
+from yadearch.plotting.parameter_labels import parameter_label, parameter_name, parameter_setting
 
 COLUMN_WIDTH_IN = 3.5  # one journal column
 ENGINE_LABELS = {"dem": "DEM", "static": "static"}  # numerics.engine as a figure names it
@@ -168,7 +169,7 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path, paramet
         values = runs[column].astype(float)
         if (values > 0).all() and values.max() > DECADE * values.min():
             ax.set_xscale("log")
-        ax.set_xlabel(column)
+        ax.set_xlabel(parameter_label(column))
         ax.set_ylabel(r"collapse displacement $d_u$ (mm)")
         if others:
             ax.legend(frameon=False)
@@ -188,8 +189,8 @@ def _lines(runs: pd.DataFrame, others: list[str]) -> list[tuple[object, pd.DataF
 def _setting(column: str, value: object) -> str:
     """A legend's "name = value" (the base case's value where the row left it empty)."""
     if value == BASE_CASE:
-        return f"{column} {BASE_CASE}"
-    return f"{column} = {value:g}" if isinstance(value, float) else f"{column} = {value}"
+        return f"{parameter_name(column)} {BASE_CASE}"
+    return parameter_setting(column, value)
 
 
 def swept_columns(table: pd.DataFrame, parameters: Sequence[str]) -> list[str]:

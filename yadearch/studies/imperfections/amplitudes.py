@@ -38,6 +38,13 @@ class Kind:
     levels: tuple[float, ...]
     amplitude_unit: str  # what the amplitude is measured in, e.g. "mm" or "x the combination"
 
+    @property
+    def axis_label(self) -> str:
+        """The amplitude as an axis label: "bump s.d. (mm)" from the unit "mm (sd)"."""
+        unit, _, measure = self.amplitude_unit.partition(" (")
+        measure = measure.rstrip(")").replace("sd", "s.d.")
+        return f"{self.name} {measure} ({unit})" if measure else f"{self.name} ({unit})"
+
     def overrides(self, level: float) -> dict[str, float]:
         """The case parameters at amplitude `level`."""
         return {f"imperfections.{key}": round_sig(level * value, AMPLITUDE_DIGITS) for key, value in self.unit.items()}
