@@ -11,6 +11,7 @@ SUMMARY_RUN_FILES = "summary"  # numerics.run_files: case.toml, summary.json and
 # a block moving half the ring's thickness at a fixed support has run away: far beyond any hinge snap
 # (a snap moves blocks by a few hundredths of the thickness), well short of a fallen arch
 RUNAWAY_THICKNESS_RATIO = 0.5
+SNAP_THICKNESS_RATIO = 0.01  # a state this x the ring's thickness off its branch's prediction is on another branch
 
 
 @dataclass
@@ -177,6 +178,18 @@ class NumericsConfig:
             ),
             "predates": None,
         },
+    )
+    snap_thickness_ratio: float = field(
+        default=SNAP_THICKNESS_RATIO,
+        metadata=number_meta(
+            0,
+            0.5,
+            low_open=True,
+            doc="a state that puts a block further than this many ring thicknesses from where its branch "
+            "predicts it (the static engine's continuation, the DEM's trend and static check) is on "
+            "another branch: the path snapped, and the fold before it is du_first; the resolution of "
+            "du_first, snaps smaller than it go uncounted (docs/numerics.md)",
+        ),
     )
     first_increment_mm: float = field(
         default=1.0,

@@ -18,8 +18,6 @@ from yadearch.solve.stages import Stage, Verdict
 
 HOLD_RETRIES = 1  # a hold that finds neither equilibrium nor runaway goes on this many times more
 NEAR_EQUILIBRIUM_HOLDS = 8  # holds an increment's state the static model moves goes on before it is a fold's
-SNAP_THICKNESS_FRACTION = 0.01  # a relaxation moving a block this x the ring's thickness ...
-# ... and further than its increment moves a block quasi-statically (`LiveArch.reach`) is a snap
 
 
 class EquilibriumPath:
@@ -40,7 +38,9 @@ class EquilibriumPath:
         self.last_equilibrium_hinges: list[dict] = []
         # how far the relaxation of each accepted increment moved the blocks (mm), for summary.json
         self.runaway = runaway_length(arch.case)
-        self.snap_floor = SNAP_THICKNESS_FRACTION * units.mm(arch.case.geometry.thickness_mm)  # (m)
+        # a relaxation moving a block this far (numerics.snap_thickness_ratio x the ring's thickness) and further
+        # than its increment moves it quasi-statically (`LiveArch.reach`) is a snap (m)
+        self.snap_floor = self.num.snap_thickness_ratio * units.mm(arch.case.geometry.thickness_mm)
         self.relaxations: dict = {
             "runaway_mm": units.to_mm(self.runaway),
             "delta_mm": [],
@@ -127,9 +127,9 @@ class EquilibriumPath:
 
     def _snapped(self, trend: Trend, start: float, target: float) -> bool:
         """Whether the last relaxation, from `start` to `target` on `trend`'s branch, snapped to another
-        branch: it moved a block further than 0.01 ring thickness and than the increment moves a block
-        quasi-statically, or it left a block further than 0.01 ring thickness from where the branch's
-        trend puts it (a snap made during the move, as the static engine tells one)."""
+        branch: it moved a block further than the snap floor (numerics.snap_thickness_ratio) and than
+        the increment moves a block quasi-statically, or it left a block further than the floor from
+        where the branch's trend puts it (a snap made during the move, as the static engine tells one)."""
         floor = self.snap_floor
         moved = self._relax_move > max(floor, self.arch.reach(target - start))
         return moved or trend.distance(target, self.arch.positions()) > floor

@@ -19,6 +19,7 @@ from typing import Protocol
 import numpy as np
 
 from yadearch.case.config import NumericsConfig
+from yadearch.case.numerics_section import SNAP_THICKNESS_RATIO
 from yadearch.model import units
 from yadearch.solve.stages import Outcome, Verdict
 
@@ -58,6 +59,7 @@ class PathSettings:
     growth: float
     tolerance: float
     max_displacement: float
+    snap_ratio: float = SNAP_THICKNESS_RATIO  # a snap moves a block this x the ring's thickness off its branch
 
     def __post_init__(self) -> None:
         if not 0 < self.tolerance < self.first_increment <= self.max_increment:
@@ -158,6 +160,7 @@ def path_settings(numerics: NumericsConfig, max_displacement_mm: float) -> PathS
         growth=numerics.increment_growth,
         tolerance=mm(numerics.du_tolerance_mm),
         max_displacement=mm(max_displacement_mm),
+        snap_ratio=numerics.snap_thickness_ratio,
     )
 
 

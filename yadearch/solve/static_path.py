@@ -37,8 +37,6 @@ GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
 SELFWEIGHT_FALL = 0.05  # a block falling this far (m) under self-weight means the arch cannot stand
 SUBSTEPS = 8  # an increment Newton cannot solve at once is marched in this many steps
 PREDICTOR_POINTS = 3  # accepted states the predictor extrapolates through (a parabola)
-SNAP_THICKNESS_FRACTION = 0.01  # a descent landing further than this x the ring's thickness from the
-# prediction at the fold is a snap, a new branch: a length of the arch, not of the bracket or the step
 
 
 @dataclass
@@ -65,7 +63,9 @@ class StaticLoading:
         self.snaps: list[dict] = []  # snaps survived on the accepted path: where, how far the blocks moved
         self.descents = 0  # descents made (Newton's continuation failed)
         self.retries = 0  # descents that found neither equilibrium nor runaway and went on
-        self.snap_floor = SNAP_THICKNESS_FRACTION * self.arch.length
+        # a descent landing further than this from the prediction at the fold is a snap, a new branch: a
+        # length of the arch (numerics.snap_thickness_ratio x its thickness), not of the bracket or the step
+        self.snap_floor = self.settings.snap_ratio * self.arch.length
         self._trial: StaticState | None = None
         self._trial_snaps: list[dict] = []
 

@@ -45,7 +45,7 @@ def criterion_text(case: ArchCase) -> str:
         "survived, one that finds neither is retried, then unresolved (no du). After a failed increment "
         "the increment halves (bisection); du = midpoint of the bracket [last support displacement in "
         f"equilibrium; first without], narrowed to < {n.du_tolerance_mm} mm; du_first = the first fold "
-        "or snap on the path."
+        f"or snap on the path (a state {n.snap_thickness_ratio} ring thickness off its branch's prediction)."
     )
 
 
