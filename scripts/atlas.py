@@ -3,6 +3,7 @@ joint stiffnesses in the static engine, the rigid march of every arch and moveme
 the DEM; du_first and du side by side with the targets of docs/atlas.md checked.
 
     .venv/bin/python scripts/atlas.py [--out reports/atlas] [--runs runs/atlas] [--jobs 2] [--no-dem]
+    .venv/bin/python scripts/atlas.py --invariance   # the static answers with each setting halved and doubled
 
 Each part resumes where it stopped (the campaigns' folders under RUNS, the rigid table in OUT), so a
 rerun only redoes what changed; --no-dem reuses the DEM runs already in RUNS/dem.
@@ -14,8 +15,10 @@ import argparse
 import sys
 from pathlib import Path
 
+from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import preset
 from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, geometries, static_rows
+from yadearch.studies.atlas.invariance import invariance_markdown, invariance_rows, invariance_table
 from yadearch.studies.atlas.report import write_atlas
 from yadearch.studies.atlas.rigid import compliant_table, rigid_table
 from yadearch.studies.campaigns.executors import open_pool
@@ -24,11 +27,24 @@ from yadearch.studies.campaigns.runner import run_campaign
 RUN_TIMEOUT_S = {"static": 600.0, "dem": 3600.0}
 
 
-def run_engine(engine: str, rows: list[dict], runs: Path, jobs: int):
-    """One engine's campaign of the atlas (summary-only run folders), resumed where it stopped."""
+def run_engine(engine: str, rows: list[dict], runs: Path, jobs: int, folder: str | None = None):
+    """One engine's campaign of the atlas (summary-only run folders) in RUNS/`folder` (default: the
+    engine's name), resumed where it stopped."""
     base = preset("set2").with_overrides({"numerics.engine": engine, "numerics.run_files": "summary"})
     with open_pool(jobs) as pool:
-        return run_campaign(base, rows, runs / engine, pool, timeout_s=RUN_TIMEOUT_S[engine], retry_failed=False)
+        return run_campaign(
+            base, rows, runs / (folder or engine), pool, timeout_s=RUN_TIMEOUT_S[engine], retry_failed=False
+        )
+
+
+def invariance(out: Path, runs: Path, jobs: int) -> None:
+    """The static answers of the atlas with each numerical setting halved and doubled:
+    OUT/invariance.csv and invariance.md."""
+    results = run_engine("static", invariance_rows(preset("set2")), runs, jobs, folder="invariance")
+    table = invariance_table(results)
+    write_csv_atomically(out / "invariance.csv", table)
+    write_text_atomically(out / "invariance.md", invariance_markdown(table))
+    print(f"invariance -> {out / 'invariance.md'}")
 
 
 def main() -> int:
@@ -43,8 +59,14 @@ def main() -> int:
         help="compute one part only (the report is written from what exists)",
     )
     parser.add_argument("--no-dem", action="store_true", help="do not run the DEM; use the runs in RUNS/dem")
+    parser.add_argument(
+        "--invariance", action="store_true", help="only the static answers with each setting halved and doubled"
+    )
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
+    if args.invariance:
+        invariance(args.out, args.runs, args.jobs)
+        return 0
     parts = ("static", "rigid", "dem") if args.engine == "all" else (args.engine,)
     static = run_engine("static", static_rows(), args.runs, args.jobs) if "static" in parts else None
     rigid = rigid_table(preset("set2"), geometries(), args.out, args.jobs) if "rigid" in parts else None

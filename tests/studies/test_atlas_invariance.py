@@ -1,0 +1,57 @@
+"""The atlas's invariance study (pure): each setting halved and doubled per arch, the largest move of
+du and du_first named by its variant, and changed outcomes listed."""
+
+from __future__ import annotations
+
+import math
+
+import pandas as pd
+
+from yadearch.case.config import preset
+from yadearch.studies.atlas.invariance import (
+    BASE,
+    SETTINGS,
+    invariance_markdown,
+    invariance_rows,
+    invariance_table,
+    variants,
+)
+
+
+def test_every_setting_is_halved_and_doubled_beside_the_default():
+    base = preset("set2")
+    chosen = variants(base)
+    assert len(chosen) == 1 + 2 * len(SETTINGS) and chosen[BASE] == {}
+    assert chosen["increments_x0.5"] == {"first_increment_mm": 0.5, "max_increment_mm": 1.25}
+    assert chosen["snap_floor_x2"] == {"snap_thickness_ratio": 0.02}
+    rows = invariance_rows(base)
+    assert len({r["run"] for r in rows}) == len(rows)
+
+
+def results(du: dict[str, float], first: dict[str, float], outcome: dict[str, str]) -> pd.DataFrame:
+    return pd.DataFrame(
+        [
+            {
+                "run": f"arch-kn5.2-{v}",
+                "kn_N_per_mm3": 5.2,
+                "du_mm": du[v],
+                "du_first_mm": first.get(v, first[BASE]),
+                "outcome": outcome.get(v, "collapse"),
+            }
+            for v in du
+        ]
+    )
+
+
+def test_the_largest_move_is_named_by_its_variant_and_a_changed_outcome_listed():
+    du = {BASE: 100.0, "bracket_x2": 100.5, "runaway_x2": 100.2, "snap_floor_x0.5": 100.0, "increments_x2": math.nan}
+    table = invariance_table(results(du, {BASE: 60.0, "snap_floor_x0.5": 40.0}, {"increments_x2": "stands"}))
+    row = table.iloc[0]
+    assert row["case"] == "arch-kn5.2" and row["du_mm_by"] == "bracket_x2"
+    assert math.isclose(row["du_mm_spread"], 0.005)
+    assert row["du_first_mm_by"] == "snap_floor_x0.5" and math.isclose(row["du_first_mm_spread"], 1 / 3)
+    assert row["outcome_changed_by"] == "increments_x2"
+    text = invariance_markdown(table)
+    assert "du within 1 % under every variant: 1 of 1" in text
+    assert "du_first within 1 %: 0 of 1" in text
+    assert "| arch-kn5.2 | 100.00 | 0.50% | bracket_x2 | 60.00 | 33.33% | snap_floor_x0.5 |" in text
