@@ -72,7 +72,7 @@ def invariance_table(results: pd.DataFrame) -> pd.DataFrame:
         for column in ("du_mm", "du_first_mm"):
             moves = {v: _relative(x, base[column]) for v, x in zip(others["variant"], others[column])}
             finite = {v: m for v, m in moves.items() if not math.isnan(m)}
-            worst = max(finite, key=finite.get) if finite else ""
+            worst = max(finite, key=lambda variant: finite[variant]) if finite else ""
             row[f"{column}_spread"] = finite.get(worst, math.nan)
             row[f"{column}_by"] = worst
         row["outcome_changed_by"] = " ".join(others.loc[others["outcome"] != base["outcome"], "variant"])
