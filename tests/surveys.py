@@ -30,3 +30,17 @@ def thicker_at_the_haunches(case: ArchCase) -> pd.DataFrame:
             joints[f"{axis}_extrados_mm"] - joints[f"{axis}_intrados_mm"]
         )
     return joints
+
+
+def surveyed_blocks(case: ArchCase, gap_mm: float = 0.0, seed: int = 0) -> dict:
+    """`case`'s blocks as a survey of blocks would give them (mm): each voussoir's four corners, the two
+    supports marked, in a shuffled order, each corner moved up to `gap_mm` at random (a survey's gaps)."""
+    rng = np.random.default_rng(seed)
+    polygons = [1e3 * b[: len(b) // 2, :2] for b in arch_geometry(case).blocks]
+    blocks = [
+        {"corners": (p + rng.uniform(-gap_mm, gap_mm, p.shape)).tolist()}
+        | ({"support": "left"} if k == 0 else {"support": "right"} if k == len(polygons) - 1 else {})
+        for k, p in enumerate(polygons)
+    ]
+    order = rng.permutation(len(blocks))
+    return {"blocks": [blocks[k] for k in order]}

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from surveys import surveyed_joints, thicker_at_the_haunches
+from surveys import surveyed_blocks, surveyed_joints, thicker_at_the_haunches
 
 from yadearch.api.measured import measured_case
 from yadearch.case.config import preset
@@ -69,3 +69,50 @@ def test_bad_surveys_are_refused_in_one_line(tmp_path, capsys):
     assert "15 voussoirs between 16 measured joints" in capsys.readouterr().out
     assert main(["run", "--case", str(tmp_path / "arch.toml"), "--engine", "static", "--no-figures",
                  "--out", str(tmp_path / "run")]) == 0  # fmt: skip
+
+
+def test_a_survey_of_blocks_is_the_arch_its_joints_make(tmp_path):
+    """The paper's arch given block by block (each voussoir's four corners, the supports marked, in any
+    order) is the same arch; with the corners off by up to 0.2 mm (a survey's gaps) each joint corner is
+    the mean of its two blocks' and the arch stays within those 0.2 mm; read from a JSON file too."""
+    import json
+
+    base = preset("set2").with_overrides(SMALL)
+    exact = measured_case(surveyed_blocks(base), base=base)
+    for a, b in zip(arch_geometry(base).blocks, arch_geometry(exact).blocks):
+        assert np.abs(a - b).max() < 1e-12
+    assert _du(exact) == _du(base)
+    path = tmp_path / "survey.json"
+    path.write_text(json.dumps(surveyed_blocks(base, gap_mm=0.2, seed=3)))
+    gapped = measured_case(path, base=base)
+    joints = np.array(gapped.geometry.joint_points_mm) - np.array(exact.geometry.joint_points_mm)
+    assert 0.0 < np.abs(joints).max() <= 0.2
+
+
+@pytest.mark.parametrize(
+    ("change", "said"),
+    [
+        (lambda s: _voussoir(s).update(corners=_voussoir(s)["corners"] + [[0.0, 500.0]]), "has 5 corners"),
+        (lambda s: [b.pop("support", None) for b in s["blocks"]], "mark exactly one block 'support': 'left'"),
+        (lambda s: s.update(joint_tolerance_mm=1e-9) or s.update(blocks=_gapped(s["blocks"])), "shares a joint"),
+        (lambda s: _voussoir(s).update(corners="abc"), "needs 'corners'"),
+    ],
+    ids=["five corners", "no supports", "gaps beyond the tolerance", "no corners"],
+)
+def test_a_survey_of_blocks_that_makes_no_ring_is_refused_in_one_line(change, said):
+    base = preset("set2").with_overrides(SMALL)
+    survey = surveyed_blocks(base)
+    change(survey)
+    with pytest.raises(CaseError, match=said) as error:
+        measured_case(survey, base=base)
+    assert "\n" not in str(error.value)
+
+
+def _voussoir(survey: dict) -> dict:
+    """The survey's first block that is not a support."""
+    return next(b for b in survey["blocks"] if "support" not in b)
+
+
+def _gapped(blocks: list) -> list:
+    """`blocks` with every corner moved 0.01 mm: no two neighbours share a corner to 1e-9 mm."""
+    return [{**b, "corners": (np.asarray(b["corners"]) + 0.01 * (k + 1)).tolist()} for k, b in enumerate(blocks)]

@@ -1,10 +1,12 @@
 """A surveyed arch as a case (`ya.measured_case`, `yadearch survey`): the joints' intrados and extrados
-corners read from a CSV into `geometry.joint_points_mm` of shape 'measured' (docs/movements.md,
-"A surveyed arch")."""
+corners read from a CSV, or the blocks' corners from a JSON survey (`case.survey_blocks`), into
+`geometry.joint_points_mm` of shape 'measured' (docs/movements.md, "A surveyed arch")."""
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -13,18 +15,22 @@ from yadearch.api.runs import as_case
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
 from yadearch.case.shape import MEASURED, MIN_MEASURED_JOINTS
+from yadearch.case.survey_blocks import joints_from_blocks
 from yadearch.errors import CaseError
 
 JOINT_COLUMNS = ("x_intrados_mm", "y_intrados_mm", "x_extrados_mm", "y_extrados_mm")
+JSON_SUFFIX = ".json"  # a survey of blocks (their corners, the supports marked) rather than of joints
 
 
 def measured_case(
-    joints: str | Path | pd.DataFrame, base: ArchCase | str = "set2", name: str | None = None
+    joints: str | Path | pd.DataFrame | dict[str, Any], base: ArchCase | str = "set2", name: str | None = None
 ) -> ArchCase:
     """`base` (a case or a preset's name: its material, joints, loading and numerics) with the arch of
-    the surveyed `joints` (a CSV file or table with the columns JOINT_COLUMNS, one row a joint, left to
-    right): voussoirs between consecutive joints, `thickness_mm` their mean joint length (the nominal
-    thickness the runaway bound and the snap floor scale with); CaseError for a table it cannot use."""
+    the surveyed `joints`: a CSV file or table with the columns JOINT_COLUMNS (one row a joint, left to
+    right), or a JSON file or dict of the blocks' corners with the supports marked
+    (`case.survey_blocks.joints_from_blocks`); voussoirs between consecutive joints, `thickness_mm`
+    their mean joint length (the nominal thickness the runaway bound and the snap floor scale with);
+    CaseError for a table it cannot use."""
     table = _read(joints)
     missing = [c for c in JOINT_COLUMNS if c not in table.columns]
     if missing:
@@ -48,11 +54,21 @@ def measured_case(
     return case
 
 
-def _read(joints: str | Path | pd.DataFrame) -> pd.DataFrame:
-    """The joints' table, from a file or as given; CaseError for a file that cannot be read."""
+def _read(joints: str | Path | pd.DataFrame | dict[str, Any]) -> pd.DataFrame:
+    """The joints' table, from a file (a JSON survey of blocks by its suffix) or as given; CaseError
+    for a file that cannot be read."""
     if isinstance(joints, pd.DataFrame):
         return joints
+    if isinstance(joints, dict):
+        return pd.DataFrame(joints_from_blocks(joints), columns=list(JOINT_COLUMNS))
     try:
+        if Path(joints).suffix.lower() == JSON_SUFFIX:
+            data = json.loads(Path(joints).read_text())
+            if not isinstance(data, dict):
+                raise ValueError("a JSON survey is an object with 'blocks'")
+            return _read(data)
         return pd.read_csv(joints)
+    except CaseError:
+        raise
     except (OSError, ValueError, pd.errors.ParserError) as exc:
         raise CaseError(f"joints: cannot read {joints}: {exc}") from None

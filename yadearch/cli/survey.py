@@ -1,12 +1,11 @@
-"""`yadearch survey`: a case TOML of a surveyed arch from its joints' corners in a CSV (a thin client of
-`ya.measured_case`)."""
+"""`yadearch survey`: a case TOML of a surveyed arch from its joints' corners in a CSV, or its blocks'
+corners in a JSON survey (a thin client of `ya.measured_case`)."""
 
 from __future__ import annotations
 
 import click
 
 from yadearch import api
-from yadearch.api.measured import JOINT_COLUMNS
 from yadearch.atomic import write_text_atomically
 from yadearch.case.names import FILE, output_path
 from yadearch.cli.options import OUT_FILE, case_options, resolve_case
@@ -27,13 +26,14 @@ def survey(
     name: str | None,
 ) -> None:
     """Write a case of the surveyed arch in JOINTS (a CSV with the columns x_intrados_mm, y_intrados_mm,
-    x_extrados_mm, y_extrados_mm, one row a joint, left to right) on the material, joints, loading and
-    numerics of --preset/--case/--set; run it with `yadearch run --case OUT`."""
+    x_extrados_mm, y_extrados_mm, one row a joint, left to right; or a .json survey of the blocks:
+    {"blocks": [{"corners": [[x, y], ...]}, ..., {"corners": ..., "support": "left"}, ...]}, in mm) on
+    the material, joints, loading and numerics of --preset/--case/--set; run it with `yadearch run --case OUT`."""
     case = api.measured_case(joints, base=resolve_case(preset_name, case_file, kn, settings), name=name)
     path = output_path(out, "--out", FILE)
     write_text_atomically(path, case.to_toml())
     geometry = case.geometry
     click.echo(
-        f"{case.name}: {geometry.n_voussoirs} voussoirs between {len(geometry.joint_points_mm)} measured joints "
-        f"({', '.join(JOINT_COLUMNS)}), mean joint length {geometry.thickness_mm:.2f} mm -> {path}"
+        f"{case.name}: {geometry.n_voussoirs} voussoirs between {len(geometry.joint_points_mm)} measured joints, "
+        f"mean joint length {geometry.thickness_mm:.2f} mm -> {path}"
     )
