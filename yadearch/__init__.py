@@ -2,7 +2,7 @@
 
 The public API (`yadearch.api`): `preset`, `movement`, `run`, `reproduce`, `report`, `open_run`, `sweep`,
 `montecarlo`, `calibrate`, `robustness`, `capacity`, `sensitivity`, `limit`, `loads`, `load_influence`,
-`load_path`, `measured_case`, imported on first use so that
+`load_path`, `residual_curve`, `measured_case`, imported on first use so that
 `import yadearch` stays light (no pandas, no YADE); type checkers and IDEs see them through the
 TYPE_CHECKING import below."""
 
@@ -27,6 +27,7 @@ if TYPE_CHECKING:
         preset,
         report,
         reproduce,
+        residual_curve,
         robustness,
         run,
         sensitivity,
@@ -51,6 +52,7 @@ __all__ = [
     "loads",
     "load_influence",
     "load_path",
+    "residual_curve",
     "measured_case",
     "RunResult",
     "HingeAtCollapse",

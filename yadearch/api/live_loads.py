@@ -57,6 +57,7 @@ def loads(
 
 
 LOAD_PATH_ENGINES = ("static", "dem")  # the engines that follow a live load's path
+RESIDUAL_POINTS_RANGE = (1, 50)  # settlements of a residual capacity curve
 
 
 def load_path(
@@ -177,4 +178,33 @@ def load_influence(
         if figures:
             weight = float(rigid_arch(case).weight[1:-1].sum())
             plot_influence(table, weight, folder / f"{case.name}_influence", engine)
+    return table
+
+
+def residual_curve(
+    case: ArchCase | str, points: int = 4, out: str | Path | None = None, figures: bool = True
+) -> pd.DataFrame:
+    """The live load's capacity after the case's support movement to `points` fractions of its static
+    du (k / points for k = 0 ... points - 1; 4: 0, 25, 50 and 75 %): the static path's first loss and
+    collapse and the load that first moves rigid blocks in the settled state, by settlement; with `out`,
+    OUT/NAME_residual.csv and (with `figures`) its figure OUT/NAME_residual.pdf/.png."""
+    from yadearch.plotting.loads import plot_residual
+    from yadearch.studies.loads.rigid import residual_capacities
+
+    low, high = RESIDUAL_POINTS_RANGE
+    if isinstance(points, bool) or not isinstance(points, int) or not low <= points <= high:
+        raise CaseError(f"points must be an integer in [{low}, {high}], got {points!r}")
+    check_arguments(figures=figures)
+    case = as_case(case)
+    check_name(case.name, "case.name")
+    if case.loads.live_load == "none":
+        raise CaseError(
+            "loads.live_load: the residual capacity needs a live load (vertical or horizontal_acceleration)"
+        )
+    folder = output_path(out, "out") if out is not None else None
+    table = residual_capacities(case, [k / points for k in range(points)])
+    if folder is not None:
+        write_csv_atomically(folder / f"{case.name}_residual.csv", table)
+        if figures:
+            plot_residual(table, str(table["unit"].iloc[0]), folder / f"{case.name}_residual")
     return table

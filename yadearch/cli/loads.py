@@ -46,6 +46,14 @@ ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
     help="apply the load after the case's support movement to this displacement (mm): the residual capacity",
 )
 @click.option(
+    "--residual",
+    type=int,
+    default=None,
+    help="instead: the residual capacity curve, the live load's capacity after the support movement to N "
+    "fractions of its static du (0, 1/N, ... ; 4: 0, 25, 50, 75 %), static and rigid, written as "
+    "NAME_residual.csv and its figure",
+)
+@click.option(
     "--descending/--no-descending",
     default=True,
     show_default=True,
@@ -76,6 +84,7 @@ def loads(
     descending: bool,
     descend_to: float,
     positions: int | None,
+    residual: int | None,
     figures: bool,
 ) -> None:
     """A live load's capacity: the load (N) or acceleration (g) at collapse with the self-weight held, and
@@ -83,6 +92,9 @@ def loads(
     static engine's path, or on the DEM's (YADE); --after-mm first moves the support."""
     refuse_unread(settings, None, load_engine)
     case = resolve_case(preset_name, case_file, None, settings)
+    if residual is not None:
+        _residual(case, residual, out, figures)
+        return
     if positions is not None:
         table = api.load_influence(case, positions, out=out, engine=load_engine, figures=figures)
         weakest = table.loc[table["collapse_load_N"].idxmin()]
@@ -101,6 +113,18 @@ def loads(
     if after_mm and math.isfinite(result.multiplier):  # the settled rigid arch's open hinges are pins
         outcome += " (the load that first moves the settled arch; --engine static follows it further)"
     click.echo(f"{case.name}: {what}: {outcome} -> {loads_file(case, out)}")
+
+
+def _residual(case: ArchCase, points: int, out: str, figures: bool) -> None:
+    """The residual capacity curve, said one settlement a line."""
+    table = api.residual_curve(case, points, out=out, figures=figures)
+    for row in table.itertuples():
+        click.echo(
+            f"after {row.settlement_mm:6.2f} mm ({row.settlement_over_du:.0%} of du): collapse "
+            f"{row.static_capacity:.4g} {row.unit} on {row.static_hinges} (first loss {row.static_first_loss:.4g}), "
+            f"rigid blocks move at {row.rigid_capacity:.4g}"
+        )
+    click.echo(f"-> {out}/{case.name}_residual.csv")
 
 
 def _on_path(

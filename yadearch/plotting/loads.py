@@ -15,9 +15,9 @@ from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath
 
 HEIGHT_CM = 15.0
 INFLUENCE_HEIGHT_CM = 6.0
+RESIDUAL_HEIGHT_CM = 8.0  # its legend sits above the axes
 ENGINES_ROW_CM = 0.45  # the engines figure's height per case
 ENGINE_LABELS = {"static": "static engine", "dem": "DEM (YADE)"}
-RESIDUAL_TOP_OVER_LARGEST = 4.0  # the residual panel's top over its largest point: the legend's room
 
 
 @house_style
@@ -32,19 +32,30 @@ def plot_loads(
     middle.set_xlabel("t/R of a semicircle (55 voussoirs)")
     middle.set_ylabel("collapse acceleration (g)")
     middle.set_ylim(bottom=0.0)
-    settled = residual["settlement_mm"]
-    bottom.plot(settled, residual["static_capacity"], "o-", ms=3.0, color="C0", label="collapse (static engine)")
-    bottom.plot(
-        settled, residual["static_first_loss"], "o", ms=3.0, mfc="none", color="C0", label="first loss (static)"
-    )
-    bottom.plot(settled, residual["rigid_capacity"], "^", ms=4.0, color="C2", label="rigid blocks: first motion")
-    # no line through the rigid points: their value drops at once when the hinges open, not along a slope
-    bottom.set_xlabel("settlement of the right support before loading (mm)")
-    bottom.set_ylabel("quarter-span load (N)")
-    bottom.set_yscale("log")
-    bottom.set_ylim(top=RESIDUAL_TOP_OVER_LARGEST * residual[["static_capacity", "rigid_capacity"]].max().max())
-    bottom.legend(loc="upper right", frameon=False)  # above the points: room made by the axis' top
+    _draw_residual(bottom, residual, "quarter-span load (N)")
     return save_figure(fig, stem)
+
+
+@house_style
+def plot_residual(residual: pd.DataFrame, unit: str, stem: Path) -> tuple[Path, Path]:
+    """STEM.pdf and .png: the live load's capacity after each support movement (one column wide)."""
+    fig = new_figure(height_cm=RESIDUAL_HEIGHT_CM, width_cm=COLUMN_CM)
+    _draw_residual(fig.add_subplot(), residual, f"live load at collapse ({unit})")
+    return save_figure(fig, stem)
+
+
+def _draw_residual(ax, residual: pd.DataFrame, ylabel: str) -> None:
+    """The residual capacity against the settlement before loading: the static path's collapse and
+    first loss, and the load that first moves rigid blocks in the settled state."""
+    settled = residual["settlement_mm"]
+    ax.plot(settled, residual["static_capacity"], "o-", ms=3.0, color="C0", label="collapse (static engine)")
+    ax.plot(settled, residual["static_first_loss"], "o", ms=3.0, mfc="none", color="C0", label="first loss (static)")
+    ax.plot(settled, residual["rigid_capacity"], "^", ms=4.0, color="C2", label="rigid blocks: first motion")
+    # no line through the rigid points: their value drops at once when the hinges open, not along a slope
+    ax.set_xlabel("support movement before loading (mm)")
+    ax.set_ylabel(ylabel)
+    ax.set_yscale("log")
+    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.0), frameon=False)  # above the axes: it hides no point
 
 
 @house_style

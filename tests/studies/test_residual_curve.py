@@ -1,0 +1,35 @@
+"""The residual capacity curve (`ya.residual_curve`, `yadearch loads --residual N`, issue 44 item 3):
+the live load an arch carries after its support has moved part of the way to its du; at no
+settlement it is the static load path's capacity, and a settled arch carries less; bad counts are
+refused in one line."""
+
+from __future__ import annotations
+
+import pytest
+
+import yadearch as ya
+from yadearch.errors import CaseError
+
+CASE = ya.preset("set2").replace(n_voussoirs=15, live_load="vertical")
+
+
+def test_a_settled_arch_carries_less_and_the_curve_starts_at_the_load_paths_capacity(tmp_path):
+    table = ya.residual_curve(CASE, 4, out=tmp_path)
+    assert table["settlement_over_du"].tolist() == [0.0, 0.25, 0.5, 0.75]
+    at_rest = ya.load_path(CASE, engine="static", descend_to=None)
+    assert table["static_capacity"].iloc[0] == pytest.approx(at_rest.capacity, rel=1e-9)
+    capacities = table["static_capacity"].to_numpy()
+    assert (capacities[1:] < capacities[:-1]).all()  # each settlement takes some of the capacity away
+    assert (table["static_first_loss"] <= table["static_capacity"] * (1 + 1e-12)).all()
+    assert {p.name for p in tmp_path.iterdir()} == {"set2_residual.csv", "set2_residual.pdf", "set2_residual.png"}
+
+
+@pytest.mark.parametrize("points", [0, 51, 2.5, True])
+def test_a_count_outside_its_range_is_refused(points):
+    with pytest.raises(CaseError, match=r"points must be an integer in \[1, 50\]"):
+        ya.residual_curve(CASE, points)
+
+
+def test_an_arch_without_a_live_load_is_refused():
+    with pytest.raises(CaseError, match="needs a live load"):
+        ya.residual_curve(ya.preset("set2"), 2)
