@@ -17,7 +17,7 @@ from yadearch.cli.options import (
     OUT_FOLDER,
     argument_type,
     case_options,
-    figures_option,
+    drawing_pool_options,
     pool_options,
     resolve_case,
     timeout_s,
@@ -57,8 +57,7 @@ def _base_case(preset_name: str | None, case_file: str | None, settings: tuple[s
     type=OUT_FOLDER,
     help="campaign folder: one run folder per run, runs.csv, results.csv",
 )
-@pool_options
-@figures_option("du against each swept parameter (with the hinges when kn alone is swept)")
+@drawing_pool_options("du against each swept parameter (with the hinges when kn alone is swept)")
 @click.option(
     "--retry-failed/--keep-failed",
     default=True,

@@ -8,15 +8,7 @@ from pathlib import Path
 import click
 
 from yadearch import api
-from yadearch.cli.options import (
-    OUT_FOLDER,
-    argument_type,
-    case_options,
-    figures_option,
-    pool_options,
-    resolve_case,
-    timeout_s,
-)
+from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, drawing_pool_options, resolve_case, timeout_s
 from yadearch.studies.capacity.campaign import FIGURE, REPORT, TABLE
 
 
@@ -36,8 +28,7 @@ from yadearch.studies.capacity.campaign import FIGURE, REPORT, TABLE
     type=OUT_FOLDER,
     help="folder: runs/ (the campaign), capacity.csv, capacity.md, capacity_map.pdf/.png",
 )
-@pool_options
-@figures_option("the polar capacity map")
+@drawing_pool_options("the polar capacity map")
 def capacity(
     preset_name: str | None,
     case_file: str | None,

@@ -10,15 +10,7 @@ import click
 from yadearch import api
 from yadearch.analysis.samples import du_statistics
 from yadearch.cli.campaigns import note, parse_axes
-from yadearch.cli.options import (
-    OUT_FOLDER,
-    argument_type,
-    case_options,
-    figures_option,
-    pool_options,
-    resolve_case,
-    timeout_s,
-)
+from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, drawing_pool_options, resolve_case, timeout_s
 from yadearch.errors import YadearchError
 from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE
 
@@ -46,8 +38,7 @@ from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE
     type=OUT_FOLDER,
     help="campaign folder: run folders, results.csv, montecarlo.csv, montecarlo.md, figures",
 )
-@pool_options
-@figures_option("the distribution of du, the hinge positions and du against each amplitude")
+@drawing_pool_options("the distribution of du, the hinge positions and du against each amplitude")
 def montecarlo(
     preset_name: str | None,
     case_file: str | None,

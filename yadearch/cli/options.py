@@ -167,6 +167,15 @@ def pool_options(func: Any) -> Any:
     )(func)
 
 
+def drawing_pool_options(what: str) -> Callable[[Any], Any]:
+    """`pool_options` and `figures_option(what)`: a campaign that runs cases and draws `what`."""
+
+    def decorate(func: Any) -> Any:
+        return pool_options(figures_option(what)(func))
+
+    return decorate
+
+
 def timeout_s(timeout_min: float | None) -> float | None:
     """--timeout-min in seconds (None: no limit)."""
     from yadearch.api.arguments import ARGUMENTS

@@ -8,15 +8,7 @@ from pathlib import Path
 import click
 
 from yadearch import api
-from yadearch.cli.options import (
-    OUT_FOLDER,
-    argument_type,
-    case_options,
-    figures_option,
-    pool_options,
-    resolve_case,
-    timeout_s,
-)
+from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, drawing_pool_options, resolve_case, timeout_s
 from yadearch.studies.sensitivity.indices import STABLE_TO, parse_factor
 from yadearch.studies.sensitivity.study import DEFAULT_BASE_POINTS, INDICES_TABLE, REPORT, TORNADO_TABLE
 
@@ -53,8 +45,7 @@ from yadearch.studies.sensitivity.study import DEFAULT_BASE_POINTS, INDICES_TABL
     help="folder: tornado_runs/, runs/, check_runs/, tornado.csv, indices.csv, convergence.csv, samples.csv, "
     "checks.csv, figures, sensitivity.md",
 )
-@pool_options
-@figures_option("the tornado, the indices and their convergence")
+@drawing_pool_options("the tornado, the indices and their convergence")
 def sensitivity(
     preset_name: str | None,
     case_file: str | None,
