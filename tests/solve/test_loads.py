@@ -124,3 +124,19 @@ def test_the_influence_line_is_symmetric_and_written(tmp_path):
     assert (tmp_path / "set2_influence.csv").is_file() and (tmp_path / "set2_influence.png").is_file()
     with pytest.raises(CaseError, match=r"positions must be an integer in \[2, 200\], got 1"):
         ya.load_influence(preset("set2"), 1)
+
+
+def test_a_load_over_a_voussoir_is_the_load_at_its_extrados_middle():
+    """load_voussoir k puts the load where its extrados's middle is: the same capacity as that
+    position given as a fraction of the span; a voussoir the arch does not have is refused in one line."""
+    from yadearch.case.mechanics import arch_geometry, load_position
+
+    case = small({"n_voussoirs": 15}, live_load="vertical", load_voussoir=4)
+    geometry = arch_geometry(case)
+    at = load_position(case, geometry)
+    joints = geometry.joints
+    assert at == pytest.approx(0.5 * (joints[3].extrados[0] + joints[4].extrados[0]) - joints[0].intrados[0])
+    same = case.with_overrides({"load_voussoir": 0, "load_position_over_span": at / geometry.span})
+    assert load_analysis(case).multiplier == pytest.approx(load_analysis(same).multiplier, rel=1e-12)
+    with pytest.raises(CaseError, match=r"loads.load_voussoir must be in \[0, 15\]"):
+        load_analysis(case.with_overrides({"load_voussoir": 16}))

@@ -37,6 +37,18 @@ class LoadsConfig:
             "predates": 0.25,
         },
     )
+    load_voussoir: int = field(
+        default=0,
+        metadata={
+            **number_meta(
+                0,
+                10000,
+                doc="put the vertical load's centre over voussoir k instead (its extrados's middle, voussoirs "
+                "counted from the left springing, 1 to n_voussoirs); 0: at load_position_over_span",
+            ),
+            "predates": 0,
+        },
+    )
     load_width_mm: float = field(
         default=0.0,
         metadata={

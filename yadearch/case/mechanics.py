@@ -150,7 +150,12 @@ def held_load_text(case: ArchCase) -> str:
     if held == 0.0:
         return ""
     loads = case.loads
-    where = f" at {loads.load_position_over_span:g} of the span" if loads.live_load == VERTICAL else ""
+    at = (
+        f"over voussoir {loads.load_voussoir}"
+        if loads.load_voussoir
+        else f"at {loads.load_position_over_span:g} of the span"
+    )
+    where = f" {at}" if loads.live_load == VERTICAL else ""
     return f"{held:g} {UNITS[loads.live_load]} {loads.live_load.replace('_', ' ')}{where}"
 
 
@@ -160,13 +165,26 @@ def require_live_load(case: ArchCase) -> None:
         raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
 
 
+def load_position(case: ArchCase, geometry: ArchGeometry) -> float:
+    """The vertical load's centre (m) from the left springing's intrados point: over voussoir
+    `load_voussoir` (its extrados's middle) when one is named, else the case's fraction of the span;
+    CaseError for a voussoir the arch does not have."""
+    loads, n = case.loads, len(geometry.joints) - 1
+    if loads.load_voussoir == 0:
+        return loads.load_position_over_span * geometry.span
+    if not 1 <= loads.load_voussoir <= n:
+        raise CaseError(f"loads.load_voussoir must be in [0, {n}] (the arch's voussoirs), got {loads.load_voussoir}")
+    ends = geometry.joints[loads.load_voussoir - 1 : loads.load_voussoir + 1]
+    return 0.5 * (ends[0].extrados[0] + ends[1].extrados[0]) - geometry.joints[0].intrados[0]
+
+
 def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:
-    """The case's live load in SI (model.loads): its centre's position from the left springing is the
-    case's fraction of the intrados span."""
+    """The case's live load in SI (model.loads): its centre's position from the left springing
+    (`load_position`)."""
     loads = case.loads
     return LiveLoad(
         loads.live_load,
-        position=loads.load_position_over_span * geometry.span,
+        position=load_position(case, geometry),
         width=units.mm(loads.load_width_mm),
         toward_right=loads.acceleration_toward == "right",
         shape=loads.load_shape,

@@ -168,7 +168,12 @@ def _what(case: ArchCase) -> str:
     what = case.loads.live_load.replace("_", " ")
     if case.loads.live_load == "vertical":
         width = f", spread over {case.loads.load_width_mm:g} mm" if case.loads.load_width_mm else ""
-        what += f" load at {case.loads.load_position_over_span:g} of the span{width}"
+        where = (
+            f"over voussoir {case.loads.load_voussoir}"
+            if case.loads.load_voussoir
+            else f"at {case.loads.load_position_over_span:g} of the span"
+        )
+        what += f" load {where}{width}"
     else:
         what += f" toward the {case.loads.acceleration_toward}"
     return what

@@ -10,6 +10,7 @@ import numpy as np
 from matplotlib.patches import FancyArrow
 
 from yadearch.case.config import ArchCase
+from yadearch.case.mechanics import load_position
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.loads import VERTICAL, extrados_segments, on_segment
 from yadearch.plotting.blocks import draw_blocks
@@ -79,7 +80,7 @@ def _draw_load(ax, case: ArchCase, geometry: ArchGeometry) -> None:
     top = max(float(b[:, 1].max()) for b in geometry.blocks) * MM
     length = 0.15 * span
     if case.loads.live_load == VERTICAL:
-        x = (geometry.joints[0].intrados[0] * MM) + case.loads.load_position_over_span * span
+        x = (geometry.joints[0].intrados[0] + load_position(case, geometry)) * MM
         half = case.loads.load_width_mm / 2.0
         if half > 0.0:
             ax.plot([x - half, x + half], [top + 0.02 * span] * 2, "-", color="k", lw=1.5)
