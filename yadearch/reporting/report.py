@@ -18,6 +18,7 @@ from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.paper import paper_mismatch
 from yadearch.plotting.run_figures import write_figures
+from yadearch.reporting.load_report import is_load_path_folder, load_overview, load_section, read_answer, report_load
 from yadearch.reporting.paper_match import (
     hinge_text,
     interface_difference,
@@ -25,7 +26,7 @@ from yadearch.reporting.paper_match import (
     match_reference,
 )
 from yadearch.results.rundir import FIGURES_DIR, RunFolder
-from yadearch.results.summary import DEM, RunSummary
+from yadearch.results.summary import DEM
 
 REPORT_FILE = "report.md"
 HINGE_ROWS = ("hinge_A", "hinge_B", "hinge_C")
@@ -254,9 +255,9 @@ def overview(reported: list[ReportedRun]) -> list[str]:
     return lines
 
 
-def _folder_name(summary: RunSummary, path: Path, taken: set[str]) -> str:
+def _folder_name(name: str, path: Path, taken: set[str]) -> str:
     """Sub-folder of the report for a run's figures: the run folder's own name (unique)."""
-    base = str(path.resolve().name or summary.name).replace("/", "_")
+    base = str(path.resolve().name or name).replace("/", "_")
     name, k = base, 2
     while name in taken:
         name, k = f"{base}-{k}", k + 1
@@ -265,25 +266,35 @@ def _folder_name(summary: RunSummary, path: Path, taken: set[str]) -> str:
 
 
 def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
-    """Analyse every run, write its figures and hinge table under `out`, and `out`/report.md."""
+    """Analyse every run (a support movement's run folder or a live load's path folder), write its
+    figures and hinge table under `out`, and `out`/report.md."""
     out = Path(out)
-    runs = [load_run(p) for p in run_paths]  # every path checked before anything is written
+    load_paths = [Path(p) for p in run_paths if is_load_path_folder(p)]
+    for path in load_paths:  # every path checked before anything is written
+        read_answer(path)
+    runs = [load_run(p) for p in run_paths if not is_load_path_folder(p)]
     taken: set[str] = set()
     reported = []
     for run in runs:
         analysis = analyse_run(run)
-        folder = _folder_name(run.summary, run.path, taken)
+        folder = _folder_name(run.summary.name, run.path, taken)
         figures = write_figures(run, analysis, out / folder / FIGURES_DIR)
         write_csv_atomically(out / folder / "hinges.csv", analysis.hinges)
         reported.append(ReportedRun(run, analysis, match_reference(run.case, run.summary), folder, list(figures)))
     names = [r.run.summary.name for r in reported]
     for r in reported:  # two runs of one name get two headings a reader can tell apart
         r.title = f"{r.run.summary.name} ({r.folder})" if names.count(r.run.summary.name) > 1 else ""
-    lines = ["# yadearch report", "", f"Reference: *{reference.PAPER}*.", ""] + overview(reported) + [""]
+    loads = [report_load(p, out, _folder_name(p.name, p, taken)) for p in load_paths]
+    lines = ["# yadearch report", "", f"Reference: *{reference.PAPER}*.", ""]
+    lines += overview(reported) + [""] if reported else []
+    lines += ["## Live loads", "", *load_overview(loads), ""] if loads else []
     for r in reported:
         lines += run_section(r)
+    for load in loads:
+        lines += load_section(load)
     cited = reference.references_for(
-        dem=any(r.run.summary.engine == DEM for r in reported), paper_case=any(r.reference_name for r in reported)
+        dem=any(r.run.summary.engine == DEM for r in reported) or any(x.answer["engine"] == DEM for x in loads),
+        paper_case=any(r.reference_name for r in reported),
     )
     lines += ["## References", ""] + [f"{k}. {text}" for k, text in enumerate(cited, start=1)] + [""]
     path = out / REPORT_FILE
