@@ -4,6 +4,7 @@ and the rigid march's du (the dotted level the curve should rise to)."""
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import matplotlib
@@ -17,7 +18,8 @@ from yadearch.plotting.sweep import SWEEP_STYLE
 
 PANEL_IN = (1.25, 1.05)  # width, height of one shape x movement panel
 KN_RANGE = (0.1, 3e4)  # N/mm3: the atlas's stiffnesses with a margin
-LEGEND_ROW = 0.18  # the key's row, relative to a panel's height
+LEGEND_ROW = 0.3  # the key's row (two lines of entries), relative to a panel's height
+TEXT_PT = 7  # every text at print size: the smallest a journal prints
 THICKNESS_COLORS = ("#0072B2", "#D55E00", "#009E73")  # Okabe-Ito: told apart in print and by the colour-blind
 
 
@@ -41,16 +43,17 @@ def atlas_figure(table: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
                 ax.set_xscale("log")
                 ax.set_xlim(KN_RANGE)
                 ax.set_ylim(bottom=0.0)
-                ax.tick_params(labelsize=6)
+                ax.tick_params(labelsize=TEXT_PT)
                 if i == 0:
-                    ax.set_title(movement.replace("_", " "), fontsize=7)
+                    ax.set_title(movement.replace("_", " "), fontsize=TEXT_PT)
                 if j == 0:
-                    ax.set_ylabel(f"{shape.replace('_', '-')}\n$\\delta_u$ (mm)", fontsize=7)
+                    ax.set_ylabel(f"{shape.replace('_', '-')}\n$d_u$ (mm)", fontsize=TEXT_PT)
                 if i == len(shapes) - 1:
-                    ax.set_xlabel("kn (N/mm$^3$)", fontsize=7)
+                    ax.set_xlabel("$k_n$ (N/mm³)", fontsize=TEXT_PT)
         key = fig.add_subplot(grid[len(shapes), :])
         key.axis("off")
-        key.legend(handles=_legend(thicknesses), loc="center", ncol=len(thicknesses) + 5, fontsize=6.5, frameon=False)
+        entries = _legend(thicknesses)
+        key.legend(handles=entries, loc="center", ncol=math.ceil(len(entries) / 2), fontsize=TEXT_PT, frameon=False)
         return save_figure(fig, stem)
 
 
@@ -75,9 +78,9 @@ def _legend(thicknesses: list[float]) -> list[Line2D]:
     handles = [Line2D([], [], color=c, lw=1.0, label=f"t = {t:g} mm") for c, t in zip(THICKNESS_COLORS, thicknesses)]
     grey = "0.3"
     return handles + [
-        Line2D([], [], color=grey, marker="o", ms=2.5, lw=1.0, label=r"static $\delta_u$"),
-        Line2D([], [], color=grey, marker="o", ms=3.5, mfc="none", ls="none", label=r"static $\delta_{first}$"),
-        Line2D([], [], color=grey, marker="D", ms=3.5, mfc="none", ls="none", label=r"DEM $\delta_u$"),
-        Line2D([], [], color=grey, ls=":", label=r"rigid march $\delta_u$"),
+        Line2D([], [], color=grey, marker="o", ms=2.5, lw=1.0, label=r"static $d_u$"),
+        Line2D([], [], color=grey, marker="o", ms=3.5, mfc="none", ls="none", label=r"static $d_{u,\mathrm{first}}$"),
+        Line2D([], [], color=grey, marker="D", ms=3.5, mfc="none", ls="none", label=r"DEM $d_u$"),
+        Line2D([], [], color=grey, ls=":", label=r"rigid march $d_u$"),
         Line2D([], [], color=grey, marker="x", ls="none", label="static unresolved (at 0)"),
     ]
