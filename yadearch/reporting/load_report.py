@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from yadearch.errors import RunFolderError
+from yadearch.markdown import markdown_table
 from yadearch.plotting.loads import plot_load_path
 from yadearch.results.load_path import LOAD_PATH_SUFFIX, read_load_path
 from yadearch.results.rundir import FIGURES_DIR, LOAD_PATH_FILE
@@ -63,19 +64,23 @@ def _load(value: Any, unit: str) -> str:
 def load_overview(loads: list[ReportedLoad]) -> list[str]:
     """One line per load path: the load, where it started, the load at the first loss and at collapse,
     the mechanism and the rigid blocks' load."""
-    lines = [
-        "| run | engine | live load | after (mm) | first loss | collapse | hinges | rigid blocks |",
-        "|---|---|---|---|---|---|---|---|",
+    columns = ["run", "engine", "live load", "after (mm)", "first loss", "collapse", "hinges", "rigid blocks"]
+    return markdown_table(columns, (_overview_cells(r) for r in loads))
+
+
+def _overview_cells(r: ReportedLoad) -> list[str]:
+    a, unit = r.answer, r.answer["unit"]
+    rigid = f"{_load(a['rigid_multiplier'], unit)} on {' '.join(a['rigid_hinges']) or '—'}"
+    return [
+        f"{a['name']} ({r.folder})",
+        a["engine"],
+        a["live_load"].replace("_", " "),
+        f"{a['after_mm']:g}",
+        _load(a["first_loss_multiplier"], unit),
+        _load(a["collapse_multiplier"], unit),
+        " ".join(a["hinges_at_collapse"]) or "—",
+        rigid,
     ]
-    for r in loads:
-        a, unit = r.answer, r.answer["unit"]
-        lines.append(
-            f"| {a['name']} ({r.folder}) | {a['engine']} | {a['live_load'].replace('_', ' ')} | {a['after_mm']:g} | "
-            f"{_load(a['first_loss_multiplier'], unit)} | {_load(a['collapse_multiplier'], unit)} | "
-            f"{' '.join(a['hinges_at_collapse']) or '—'} | {_load(a['rigid_multiplier'], unit)} on "
-            f"{' '.join(a['rigid_hinges']) or '—'} |"
-        )
-    return lines
 
 
 def load_section(r: ReportedLoad) -> list[str]:
