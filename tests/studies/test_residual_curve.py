@@ -31,5 +31,5 @@ def test_a_count_outside_its_range_is_refused(points):
 
 
 def test_an_arch_without_a_live_load_is_refused():
-    with pytest.raises(CaseError, match="needs a live load"):
+    with pytest.raises(CaseError, match="loads.live_load is .none.: say which load grows"):
         ya.residual_curve(ya.preset("set2"), 2)

@@ -15,7 +15,7 @@ from yadearch.api.arguments import check_arguments
 from yadearch.api.runs import as_case
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import arch_geometry
+from yadearch.case.mechanics import arch_geometry, require_live_load
 from yadearch.case.names import check_name, output_path
 from yadearch.errors import CaseError
 from yadearch.launch.load_process import run_load_process
@@ -156,9 +156,7 @@ def load_influence(
     beside it; the DEM's load paths in child processes, `jobs` at a time, under OUT/NAME_influence_runs,
     so it needs `out`); with `out`, OUT/NAME_influence.csv and (with `figures`) its figure
     OUT/NAME_influence.pdf/.png."""
-    low, high = POSITIONS_RANGE
-    if isinstance(positions, bool) or not isinstance(positions, int) or not low <= positions <= high:
-        raise CaseError(f"positions must be an integer in [{low}, {high}], got {positions!r}")
+    _check_count("positions", positions, POSITIONS_RANGE)
     if engine not in INFLUENCE_ENGINES:
         raise CaseError(f"engine must be one of {', '.join(INFLUENCE_ENGINES)}, got {engine!r}")
     check_arguments(jobs=jobs, figures=figures)
@@ -191,16 +189,11 @@ def residual_curve(
     from yadearch.plotting.loads import plot_residual
     from yadearch.studies.loads.rigid import residual_capacities
 
-    low, high = RESIDUAL_POINTS_RANGE
-    if isinstance(points, bool) or not isinstance(points, int) or not low <= points <= high:
-        raise CaseError(f"points must be an integer in [{low}, {high}], got {points!r}")
+    _check_count("points", points, RESIDUAL_POINTS_RANGE)
     check_arguments(figures=figures)
     case = as_case(case)
     check_name(case.name, "case.name")
-    if case.loads.live_load == "none":
-        raise CaseError(
-            "loads.live_load: the residual capacity needs a live load (vertical or horizontal_acceleration)"
-        )
+    require_live_load(case)
     folder = output_path(out, "out") if out is not None else None
     table = residual_capacities(case, [k / points for k in range(points)])
     if folder is not None:
@@ -208,3 +201,10 @@ def residual_curve(
         if figures:
             plot_residual(table, str(table["unit"].iloc[0]), folder / f"{case.name}_residual")
     return table
+
+
+def _check_count(name: str, value: object, bounds: tuple[int, int]) -> None:
+    """CaseError unless `value` is an integer within `bounds` (a count of points along a curve)."""
+    low, high = bounds
+    if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high:
+        raise CaseError(f"{name} must be an integer in [{low}, {high}], got {value!r}")

@@ -150,12 +150,7 @@ def held_load_text(case: ArchCase) -> str:
     if held == 0.0:
         return ""
     loads = case.loads
-    at = (
-        f"over voussoir {loads.load_voussoir}"
-        if loads.load_voussoir
-        else f"at {loads.load_position_over_span:g} of the span"
-    )
-    where = f" {at}" if loads.live_load == VERTICAL else ""
+    where = f" {load_place(case)}" if loads.live_load == VERTICAL else ""
     return f"{held:g} {UNITS[loads.live_load]} {loads.live_load.replace('_', ' ')}{where}"
 
 
@@ -163,6 +158,16 @@ def require_live_load(case: ArchCase) -> None:
     """CaseError for a case without a live load where one must grow."""
     if case.loads.live_load == NONE:
         raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
+
+
+def load_place(case: ArchCase) -> str:
+    """Where the vertical load stands, in words: "over voussoir 14" or "at 0.25 of the span"."""
+    loads = case.loads
+    return (
+        f"over voussoir {loads.load_voussoir}"
+        if loads.load_voussoir
+        else f"at {loads.load_position_over_span:g} of the span"
+    )
 
 
 def load_position(case: ArchCase, geometry: ArchGeometry) -> float:

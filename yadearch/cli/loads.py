@@ -10,13 +10,22 @@ import click
 from yadearch import api
 from yadearch.api.live_loads import loads_file
 from yadearch.case.config import ArchCase
-from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, figures_option, refuse_unread, resolve_case
+from yadearch.case.mechanics import load_place
+from yadearch.cli.options import (
+    OUT_FOLDER,
+    RIGID,
+    argument_type,
+    case_options,
+    figures_option,
+    refuse_unread,
+    resolve_case,
+)
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_lp import LoadCapacity
 from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath
 from yadearch.solve.stages import Outcome
 
-RIGID, STATIC, DEM = "rigid", "static", "dem"
+STATIC, DEM = "static", "dem"
 LOAD_ENGINES = (RIGID, STATIC, DEM)
 ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
 
@@ -168,12 +177,7 @@ def _what(case: ArchCase) -> str:
     what = case.loads.live_load.replace("_", " ")
     if case.loads.live_load == "vertical":
         width = f", spread over {case.loads.load_width_mm:g} mm" if case.loads.load_width_mm else ""
-        where = (
-            f"over voussoir {case.loads.load_voussoir}"
-            if case.loads.load_voussoir
-            else f"at {case.loads.load_position_over_span:g} of the span"
-        )
-        what += f" load {where}{width}"
+        what += f" load {load_place(case)}{width}"
     else:
         what += f" toward the {case.loads.acceleration_toward}"
     return what

@@ -20,7 +20,6 @@ if TYPE_CHECKING:
 
 PRESETS = ("set1", "set2")
 ENGINES = ("dem", "static")
-STATIC_ENGINE = "static"
 RIGID = "rigid"  # the rigid-block analyses (`limit`, `loads --engine rigid`): no joint stiffness, no numerics
 ENGINE_META = "yadearch_engine"  # where --engine leaves its choice for `resolve_case` (click's context)
 MOVEMENT_KEY = "movement"  # --set movement=NAME: a named support movement (case.support.MOVEMENT_PRESETS)
@@ -33,7 +32,6 @@ def resolve_case(
     from yadearch.case.config import load_case, preset
     from yadearch.case.support import movement_overrides
     from yadearch.results.summary import STATIC
-    from yadearch.static.records import DEM_ONLY_NUMERICS
     from yadearch.studies.campaigns.grid import parse_scalar
 
     if preset_name and case_file:
@@ -56,13 +54,15 @@ def resolve_case(
         overrides["numerics.engine"] = engine
     resolved = case.with_overrides(overrides) if overrides else case
     if resolved.numerics.engine == STATIC:
-        _refuse_dem_numerics(list(overrides), DEM_ONLY_NUMERICS)
+        _refuse_dem_numerics(list(overrides))
     return resolved
 
 
-def _refuse_dem_numerics(keys: list[str], dem_only: tuple[str, ...]) -> None:
+def _refuse_dem_numerics(keys: list[str]) -> None:
     """UsageError naming the first of `keys` that only the DEM reads."""
-    ignored = [k for k in keys if k.split(".")[-1] in dem_only]
+    from yadearch.static.records import dem_only_keys
+
+    ignored = dem_only_keys(keys)
     if ignored:
         raise click.UsageError(
             f"--set {ignored[0]} is not used by the static engine (it solves each state as a static "
@@ -75,10 +75,10 @@ def refuse_unread(settings: tuple[str, ...], kn: float | None, engine: str, comp
     rigid-block analysis reads no numerics and, unless `compliant`, no joint stiffness; the static
     engine reads no DEM numerics."""
     from yadearch.case.config import parameter_section
-    from yadearch.static.records import DEM_ONLY_NUMERICS
+    from yadearch.results.summary import STATIC
 
-    if engine == STATIC_ENGINE:
-        _refuse_dem_numerics([item.split("=", 1)[0].strip() for item in settings], DEM_ONLY_NUMERICS)
+    if engine == STATIC:
+        _refuse_dem_numerics([item.split("=", 1)[0].strip() for item in settings])
     if engine != RIGID:
         return
     if kn is not None and not compliant:

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -31,6 +32,14 @@ class ReportedLoad:
 def is_load_path_folder(path: str | Path) -> bool:
     """Whether `path` is a live load's path folder (it holds the load path's answer)."""
     return (Path(path) / LOAD_PATH_FILE).is_file()
+
+
+def checked_load_paths(paths: Sequence[str | Path]) -> list[Path]:
+    """The live load's path folders among `paths`, each answer checked readable (before anything is written)."""
+    found = [Path(p) for p in paths if is_load_path_folder(p)]
+    for path in found:
+        read_answer(path)
+    return found
 
 
 def read_answer(path: Path) -> dict[str, Any]:

@@ -18,7 +18,7 @@ from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.paper import paper_mismatch
 from yadearch.plotting.run_figures import write_figures
-from yadearch.reporting.load_report import is_load_path_folder, load_overview, load_section, read_answer, report_load
+from yadearch.reporting import load_report
 from yadearch.reporting.paper_match import (
     hinge_text,
     interface_difference,
@@ -269,10 +269,8 @@ def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
     """Analyse every run (a support movement's run folder or a live load's path folder), write its
     figures and hinge table under `out`, and `out`/report.md."""
     out = Path(out)
-    load_paths = [Path(p) for p in run_paths if is_load_path_folder(p)]
-    for path in load_paths:  # every path checked before anything is written
-        read_answer(path)
-    runs = [load_run(p) for p in run_paths if not is_load_path_folder(p)]
+    load_paths = load_report.checked_load_paths(run_paths)  # every path checked before anything is written
+    runs = [load_run(p) for p in run_paths if not load_report.is_load_path_folder(p)]
     taken: set[str] = set()
     reported = []
     for run in runs:
@@ -284,14 +282,14 @@ def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
     names = [r.run.summary.name for r in reported]
     for r in reported:  # two runs of one name get two headings a reader can tell apart
         r.title = f"{r.run.summary.name} ({r.folder})" if names.count(r.run.summary.name) > 1 else ""
-    loads = [report_load(p, out, _folder_name(p.name, p, taken)) for p in load_paths]
+    loads = [load_report.report_load(p, out, _folder_name(p.name, p, taken)) for p in load_paths]
     lines = ["# yadearch report", "", f"Reference: *{reference.PAPER}*.", ""]
     lines += overview(reported) + [""] if reported else []
-    lines += ["## Live loads", "", *load_overview(loads), ""] if loads else []
+    lines += ["## Live loads", "", *load_report.load_overview(loads), ""] if loads else []
     for r in reported:
         lines += run_section(r)
     for load in loads:
-        lines += load_section(load)
+        lines += load_report.load_section(load)
     cited = reference.references_for(
         dem=any(r.run.summary.engine == DEM for r in reported) or any(x.answer["engine"] == DEM for x in loads),
         paper_case=any(r.reference_name for r in reported),

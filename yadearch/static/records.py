@@ -4,6 +4,7 @@ the same records of a live load's path (its states' parameter the load's multipl
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -50,6 +51,11 @@ DEM_ONLY_NUMERICS = (
     "series_every_steps",
     "max_steps",
 )
+
+
+def dem_only_keys(keys: Iterable[str]) -> list[str]:
+    """The parameters of `keys` (bare or `section.name`) that only the DEM reads (DEM_ONLY_NUMERICS)."""
+    return [key for key in keys if key.split(".")[-1] in DEM_ONLY_NUMERICS]
 
 
 @dataclass

@@ -27,7 +27,7 @@ from yadearch.launch.process import STATIC_ENGINE, check_yade_installed, run_cas
 from yadearch.results.lock import folder_lock
 from yadearch.results.reuse import case_differences, is_current
 from yadearch.results.rundir import is_complete
-from yadearch.static.records import DEM_ONLY_NUMERICS
+from yadearch.static.records import dem_only_keys
 from yadearch.studies.campaigns.batches import BATCHES_DIR
 from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.failures import FAILED_FILE, failure_stands, record_failure
@@ -88,7 +88,7 @@ def _check_engine_reads(case: ArchCase, overrides: dict[str, Any]) -> None:
     numerics): two runs that differ only there would give one answer twice."""
     if case.numerics.engine != STATIC_ENGINE:
         return
-    ignored = [key for key in overrides if key.split(".")[-1] in DEM_ONLY_NUMERICS]
+    ignored = dem_only_keys(overrides)
     if ignored:
         raise CaseError(f"{ignored[0]} is not used by the static engine (DEM numerics); drop it or use engine dem")
 
