@@ -10,6 +10,7 @@ import pandas as pd
 from yadearch.case.config import preset
 from yadearch.studies.atlas.invariance import (
     BASE,
+    REFINED,
     SETTINGS,
     invariance_markdown,
     invariance_rows,
@@ -21,8 +22,9 @@ from yadearch.studies.atlas.invariance import (
 def test_every_setting_is_halved_and_doubled_beside_the_default():
     base = preset("set2")
     chosen = variants(base)
-    assert len(chosen) == 1 + 2 * len(SETTINGS) and chosen[BASE] == {}
+    assert len(chosen) == 1 + 2 * len(SETTINGS) + len(REFINED) and chosen[BASE] == {}
     assert chosen["increments_x0.5"] == {"first_increment_mm": 0.5, "max_increment_mm": 1.25}
+    assert chosen["increments_x0.125"] == {"first_increment_mm": 0.125, "max_increment_mm": 0.3125}
     assert chosen["snap_floor_x2"] == {"snap_thickness_ratio": 0.02}
     rows = invariance_rows(base)
     assert len({r["run"] for r in rows}) == len(rows)
@@ -55,3 +57,25 @@ def test_the_largest_move_is_named_by_its_variant_and_a_changed_outcome_listed()
     assert "du within 1 % under every variant: 1 of 1" in text
     assert "du_first within 1 %: 0 of 1" in text
     assert "| arch-kn5.2 | 100.00 | 0.50% | bracket_x2 | 60.00 | 33.33% | snap_floor_x0.5 |" in text
+
+
+def test_refined_increments_are_kept_apart_from_the_spread_and_compared_with_the_finest():
+    du = {BASE: 100.0, "bracket_x2": 100.2, "increments_x0.25": 90.0, "increments_x0.125": 90.5}
+    first = {BASE: 60.0, "increments_x0.25": 50.0, "increments_x0.125": 50.2}
+    row = invariance_table(results(du, first, {})).iloc[0]
+    assert row["du_mm_by"] == "bracket_x2" and math.isclose(row["du_mm_spread"], 0.002)  # refinement not in it
+    assert math.isclose(row["du_first_mm_x0.125"], 50.2) and math.isclose(row["du_first_mm_from_finest"], 9.8 / 50.2)
+    text = invariance_markdown(invariance_table(results(du, first, {})))
+    assert (
+        "- du_first: the default within 1 % of the increments x0.125 in 0 of 1; "
+        "x0.25 and x0.125 within 1 % of each other in 1." in text
+    )
+    assert "| arch-kn5.2 | 100.00 | 60.00 | 50.00 | 50.20 | 19.52% |" in text
+
+
+def test_a_refined_run_that_does_not_collapse_is_left_out_of_the_comparison():
+    du = {BASE: 100.0, "increments_x0.25": 90.0, "increments_x0.125": math.nan}
+    row = invariance_table(results(du, {BASE: 60.0}, {"increments_x0.125": "stands"})).iloc[0]
+    assert math.isnan(row["du_first_mm_x0.125"]) and math.isnan(row["du_first_mm_from_finest"])
+    assert row["outcome_changed_by"] == ""  # a refinement is not one of the halved and doubled settings
+    assert row["outcome_refined_by"] == "increments_x0.125"

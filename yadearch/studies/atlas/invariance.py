@@ -1,7 +1,9 @@
 """Whether the atlas's answers are facts of the arches (issue 41, docs/atlas.md): every arch of the
 atlas at the paper's set 2 stiffness and at a stiff one, on the static engine, with each numerical
 setting halved and doubled (the increments, the bracket, the runaway bound and the snap floor); the
-largest move of du and du_first from the default, its setting, and the outcomes that change."""
+largest move of du and du_first from the default, its setting, and the outcomes that change; and the
+increments refined further (x0.25, x0.125), to tell a default that has not converged from an answer
+that hangs on the path's branch."""
 
 from __future__ import annotations
 
@@ -23,6 +25,7 @@ SETTINGS = {  # a setting's name in the table: the numerics it scales together
     "runaway": ("runaway_thickness_ratio",),
     "snap_floor": ("snap_thickness_ratio",),
 }
+REFINED = (0.25, 0.125)  # the increments refined further: where does the answer go as they shrink?
 TOLERANCE = 0.01  # the standard: a result that moves by more than 1 % is not a result yet
 BASE = "base"
 
@@ -33,7 +36,14 @@ def variants(base: ArchCase) -> dict[str, dict[str, float]]:
     for setting, keys in SETTINGS.items():
         for factor in FACTORS:
             chosen[f"{setting}_x{factor:g}"] = {key: getattr(base.numerics, key) * factor for key in keys}
+    for factor in REFINED:
+        chosen[refined(factor)] = {key: getattr(base.numerics, key) * factor for key in SETTINGS["increments"]}
     return chosen
+
+
+def refined(factor: float) -> str:
+    """The name of the variant with the increments x `factor` (one of REFINED)."""
+    return f"increments_x{factor:g}"
 
 
 def invariance_rows(base: ArchCase) -> list[dict[str, Any]]:
@@ -61,7 +71,7 @@ def invariance_table(results: pd.DataFrame) -> pd.DataFrame:
     rows = []
     for case, group in runs.groupby("case", sort=False):
         base = group[group["variant"] == BASE].iloc[0]
-        others = group[group["variant"] != BASE]
+        others = group[~group["variant"].isin([BASE, *map(refined, REFINED)])]
         row: dict[str, Any] = {
             "case": case,
             "kn_N_per_mm3": base["kn_N_per_mm3"],
@@ -76,8 +86,25 @@ def invariance_table(results: pd.DataFrame) -> pd.DataFrame:
             row[f"{column}_spread"] = finite.get(worst, math.nan)
             row[f"{column}_by"] = worst
         row["outcome_changed_by"] = " ".join(others.loc[others["outcome"] != base["outcome"], "variant"])
+        row.update(_refinement(group, base))
+        refinements = group[group["variant"].isin(list(map(refined, REFINED)))]
+        row["outcome_refined_by"] = " ".join(refinements.loc[refinements["outcome"] != base["outcome"], "variant"])
         rows.append(row)
     return pd.DataFrame(rows)
+
+
+def _refinement(group: pd.DataFrame, base: pd.Series) -> dict[str, float]:
+    """du and du_first with the increments refined (NaN where that variant was not run or does not
+    collapse), and the default's relative distance from the finest."""
+    row: dict[str, float] = {}
+    by_variant = group.set_index("variant")
+    for column in ("du_mm", "du_first_mm"):
+        for factor in REFINED:
+            name = refined(factor)
+            collapsed = name in by_variant.index and by_variant.loc[name, "outcome"] == "collapse"
+            row[f"{column}_x{factor:g}"] = float(by_variant.loc[name, column]) if collapsed else math.nan
+        row[f"{column}_from_finest"] = _relative(base[column], row[f"{column}_x{min(REFINED):g}"])
+    return row
 
 
 def invariance_markdown(table: pd.DataFrame) -> str:
@@ -122,6 +149,7 @@ def invariance_markdown(table: pd.DataFrame) -> str:
                 for _, r in outside.iterrows()
             ],
         )
+    lines += _refinement_markdown(collapsed)
     if not changed.empty:
         lines += ["", "## Outcome changed", ""]
         lines += markdown_table(
@@ -129,3 +157,45 @@ def invariance_markdown(table: pd.DataFrame) -> str:
             [[r["case"], r["outcome"], r["outcome_changed_by"]] for _, r in changed.iterrows()],
         )
     return "\n".join(lines) + "\n"
+
+
+def _refinement_markdown(collapsed: pd.DataFrame) -> list[str]:
+    """The section on the refined increments: how many defaults are within 1 % of the finest, whether
+    the two finest agree (converged), and each default that is not."""
+    finest, next_finest = f"x{min(REFINED):g}", f"x{max(REFINED):g}"
+    lines = ["", f"## The increments refined ({', '.join(f'x{f:g}' for f in REFINED)})", ""]
+    for column, name in (("du_mm", "du"), ("du_first_mm", "du_first")):
+        both = collapsed.dropna(subset=[f"{column}_{finest}"])
+        near = int((both[f"{column}_from_finest"] <= TOLERANCE).sum())
+        settled = int(
+            (
+                both.apply(lambda r: _relative(r[f"{column}_{next_finest}"], r[f"{column}_{finest}"]), axis=1)
+                <= TOLERANCE
+            ).sum()
+        )
+        lines.append(
+            f"- {name}: the default within {TOLERANCE * 100:g} % of the increments {finest} in {near} of "
+            f"{len(both)}; {next_finest} and {finest} within {TOLERANCE * 100:g} % of each other in {settled}."
+        )
+    changed = collapsed[collapsed["outcome_refined_by"].fillna("") != ""]
+    names = ", ".join(changed["case"]) or "none"
+    lines.append(f"- collapses whose outcome the refined increments change: {len(changed)} ({names}).")
+    apart = collapsed[collapsed["du_first_mm_from_finest"] > TOLERANCE].sort_values(
+        "du_first_mm_from_finest", ascending=False
+    )
+    if not apart.empty:
+        lines += ["", f"du_first more than {TOLERANCE * 100:g} % from the increments {finest}:", ""]
+        lines += markdown_table(
+            ["case", "du (mm)", "du_first (mm)", *(f"du_first x{f:g}" for f in REFINED), "default from finest"],
+            [
+                [
+                    r["case"],
+                    f"{r['du_mm']:.2f}",
+                    f"{r['du_first_mm']:.2f}",
+                    *(f"{r[f'du_first_mm_x{f:g}']:.2f}" for f in REFINED),
+                    f"{r['du_first_mm_from_finest']:.2%}",
+                ]
+                for _, r in apart.iterrows()
+            ],
+        )
+    return lines
