@@ -10,6 +10,7 @@ import numpy as np
 
 from yadearch.analysis.tracking import HingeTrack, sequence
 from yadearch.case.paper import model_values_text
+from yadearch.results.check_text import unresolved_warning
 from yadearch.results.summary import STATIC, RunSummary
 from yadearch.solve.stages import Verdict
 
@@ -91,12 +92,14 @@ def collapse_by_timeout(summary: RunSummary) -> str | None:
 
 def run_warnings(summary: RunSummary) -> list[str]:
     """The warnings a finished run's summary.json calls for: the paper's model values on another arch,
-    slip during the moves, jumps in the path, a collapse read from a timeout."""
+    slip during the moves, jumps in the path, a collapse read from a timeout, an answer its increments
+    check moved."""
     warnings = (
         model_values_text(summary.paper_model_values) if summary.paper_model_values else None,
         slip_during_moves(summary.friction),
         relaxation_jump(summary),
         collapse_by_timeout(summary),
+        unresolved_warning(summary.increments_check),
     )
     return [w for w in warnings if w]
 

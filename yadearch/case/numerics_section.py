@@ -12,6 +12,8 @@ SUMMARY_RUN_FILES = "summary"  # numerics.run_files: case.toml, summary.json and
 # (a snap moves blocks by a few hundredths of the thickness), well short of a fallen arch
 RUNAWAY_THICKNESS_RATIO = 0.5
 SNAP_THICKNESS_RATIO = 0.01  # a state this x the ring's thickness off its branch's prediction is on another branch
+NO_INCREMENTS_CHECK = "none"  # numerics.increments_check: the path solved once
+HALVED_INCREMENTS_CHECK = "halved"  # ... and again with the increments halved (static engine)
 
 
 @dataclass
@@ -250,6 +252,18 @@ class NumericsConfig:
             "doc": "what the run folder keeps: 'full' = its tables, states and snapshots (figures, "
             "analysis, movies); 'summary' = case.toml, summary.json and run.log, for campaigns of "
             "thousands of runs (a twentieth of the disk, docs/speed.md); changes no result",
+        },
+    )
+
+    increments_check: str = field(
+        default=NO_INCREMENTS_CHECK,
+        metadata={
+            "choices": (NO_INCREMENTS_CHECK, HALVED_INCREMENTS_CHECK),
+            "predates": NO_INCREMENTS_CHECK,
+            "doc": "static engine only: 'halved' solves the path again from the same start with the "
+            "increments halved and reports how far du and du_first move (summary.json "
+            "increments_check; resolved within 1 %); twice the solver's time. `yadearch run` turns it "
+            "on for a static run (docs/numerics.md)",
         },
     )
 

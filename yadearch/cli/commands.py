@@ -38,6 +38,10 @@ def _report_summary(out: Path) -> None:
         f"hinges at collapse {summary.hinge_labels or '-'}, {summary.cost}, "
         f"{summary.wall_s:.0f} s -> {out}"
     )
+    if summary.increments_check and summary.increments_check.get("resolved", True):  # else a warning says it
+        from yadearch.results.check_text import check_line
+
+        click.echo(check_line(summary.increments_check))
     for warning in run_warnings(summary):
         click.echo(f"warning: {warning}")
 
@@ -55,6 +59,13 @@ def cli() -> None:
 @click.option("--rerun", is_flag=True, help="run again even if OUT holds a finished run of this case")
 @click.option("--overwrite", is_flag=True, help="replace a finished run of another case in OUT")
 @figures_option("the run's figures (a static run's solver takes a fraction of their seconds)")
+@click.option(
+    "--check/--no-check",
+    default=True,
+    show_default=True,
+    help="static engine: solve the path again with the increments halved and say whether du and "
+    "du_first move by more than 1 % (numerics.increments_check; twice the solver's time)",
+)
 def run(
     preset_name: str | None,
     case_file: str | None,
@@ -65,14 +76,20 @@ def run(
     rerun: bool,
     overwrite: bool,
     figures: bool,
+    check: bool,
 ) -> None:
     """Run one case to collapse and write its run folder (a finished run of the same case is reused)."""
     from yadearch.api.runs import run as run_case
     from yadearch.case.names import check_name
+    from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK, NO_INCREMENTS_CHECK
+    from yadearch.results.summary import STATIC
 
     case = resolve_case(preset_name, case_file, kn, settings)
     if name is not None:
         case = case.with_overrides({"name": check_name(name, "--name")})
+    if case.numerics.engine == STATIC:
+        chosen = HALVED_INCREMENTS_CHECK if check else NO_INCREMENTS_CHECK
+        case = case.with_overrides({"numerics.increments_check": chosen})
     result = run_case(case, out=out, rerun=rerun, overwrite=overwrite, figures=figures, figure_jobs=FIGURE_JOBS)
     _report_summary(result.path)
     if figures:

@@ -55,6 +55,12 @@ def resolve_case(
     resolved = case.with_overrides(overrides) if overrides else case
     if resolved.numerics.engine == STATIC:
         _refuse_dem_numerics(list(overrides))
+    else:
+        from yadearch.static.records import static_only_refusal
+
+        refused = static_only_refusal(resolved.numerics)
+        if refused:
+            raise click.UsageError(refused)
     return resolved
 
 

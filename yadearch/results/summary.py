@@ -39,6 +39,7 @@ OPTIONAL_KEYS = frozenset(
         "support_speed_mm_per_s",
         "imperfections",
         "unused_parameters",
+        "increments_check",
         "paper_model_values",
         "relaxations",
         "snaps",
@@ -136,6 +137,9 @@ class RunSummary:
     friction: dict[str, Any] = field(default_factory=dict)
     relaxations: dict[str, Any] | None = None
     snaps: list[Any] | None = None
+    # the static engine's path again with the increments halved (numerics.increments_check): its
+    # outcome, du and du_first, their relative moves and whether the answer is resolved
+    increments_check: dict[str, Any] | None = None
     descents: int | None = None
     descent_retries: int | None = None  # static: descents that found nothing and went on
     collapsed: bool = False

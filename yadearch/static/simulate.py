@@ -11,11 +11,13 @@ from typing import Any
 
 from yadearch.case.config import ArchCase, load_case
 from yadearch.case.mechanics import held_load_text, held_multiplier, runaway_length, standing_parameters
+from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK
 from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
 from yadearch.errors import CANNOT_STAND, YadearchError
 from yadearch.model import units
 from yadearch.model.loads import NONE, UNITS
+from yadearch.results.check_text import check_line
 from yadearch.results.provenance import provenance
 from yadearch.results.run_log import stamped_log
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
@@ -25,6 +27,7 @@ from yadearch.solve.path import PathStep
 from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.static_state import StaticEngineError
+from yadearch.static.increments_check import increments_check
 from yadearch.static.records import DEM_ONLY_NUMERICS, StaticRecords
 
 INTERRUPTED_EXIT = 130
@@ -86,6 +89,8 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
             f"wall {wall:.1f} s)"
         )
 
+    start = StaticLoading(arch, loading.settings, loading.runaway, loading.solver_settings, loading.parameter)
+    start.accepted = loading.accepted[:1]  # the path's starting state, for the increments check
     path = loading.follow(on_step=progress)
     for state in loading.accepted[1:]:
         records.add(state)
@@ -96,6 +101,10 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         records.add(collapse, label=Stage.COLLAPSE)
         hinges = records.hinges(collapse)
     mode = loading.fold_mode(path.upper) if path.collapsed else None
+    check = None
+    if num.increments_check == HALVED_INCREMENTS_CHECK:
+        check = increments_check(start, path, loading.first_loss)
+        log(f"[{case.name}] {check_line(check)}")
     summary = RunSummary(
         name=case.name,
         started=started,
@@ -125,6 +134,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
             "move_mm": [units.to_mm(s.move) for s in loading.accepted[1:]],
         },
         snaps=loading.snaps,
+        increments_check=check,
         descents=loading.descents,
         descent_retries=loading.retries,
         hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges) if path.collapsed else (),

@@ -27,7 +27,7 @@ from yadearch.launch.process import STATIC_ENGINE, check_yade_installed, run_cas
 from yadearch.results.lock import folder_lock
 from yadearch.results.reuse import case_differences, is_current
 from yadearch.results.rundir import is_complete
-from yadearch.static.records import dem_only_keys
+from yadearch.static.records import dem_only_keys, static_only_refusal
 from yadearch.studies.campaigns.batches import BATCHES_DIR
 from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.failures import FAILED_FILE, failure_stands, record_failure
@@ -87,6 +87,9 @@ def _check_engine_reads(case: ArchCase, overrides: dict[str, Any]) -> None:
     """CaseError when a run sets a parameter its engine ignores (the static engine and the DEM's
     numerics): two runs that differ only there would give one answer twice."""
     if case.numerics.engine != STATIC_ENGINE:
+        refused = static_only_refusal(case.numerics)
+        if refused:
+            raise CaseError(refused)
         return
     ignored = dem_only_keys(overrides)
     if ignored:

@@ -111,9 +111,23 @@ def done_row(spec: RunSpec, summary: RunSummary) -> dict[str, Any]:
         "max_slip_mm": friction.get("max_slip_mm", math.nan),
         "max_friction_use": friction.get("max_friction_use", math.nan),
         "friction_interface": friction.get("friction_interface"),
+        **_check_columns(summary),
         "engine": summary.engine,
         "status": "done",
         "reason": _reason(summary, case),
+    }
+
+
+def _check_columns(summary: RunSummary) -> dict[str, Any]:
+    """A static run's increments check (numerics.increments_check) as columns: du and du_first with the
+    increments halved, and whether both stayed within 1 % (none without a check)."""
+    check = summary.increments_check
+    if not check or "resolved" not in check:
+        return {}
+    return {
+        "du_halved_increments_mm": math.nan if check["du_mm"] is None else check["du_mm"],
+        "du_first_halved_increments_mm": math.nan if check["du_first_mm"] is None else check["du_first_mm"],
+        "resolved": check["resolved"],
     }
 
 

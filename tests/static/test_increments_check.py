@@ -1,0 +1,69 @@
+"""A static run's check of its own numerics (numerics.increments_check = 'halved', the default of
+`yadearch run` with the static engine): the path solved again with the increments halved. Set 2's du is
+resolved (within 1 %); the three-centred arch closing at t/R 0.25, whose path picks another branch near
+a critical state with shorter increments (docs/atlas.md), is not, and says so; the DEM refuses it."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from yadearch.case.config import preset
+from yadearch.cli.commands import main
+from yadearch.errors import CaseError
+from yadearch.results.check_text import check_line, unresolved_warning
+from yadearch.static.simulate import simulate_static
+from yadearch.studies.atlas.grid import Geometry
+from yadearch.studies.campaigns.grid import RUN_COLUMN
+from yadearch.studies.campaigns.runner import plan
+
+CHECKED = {"numerics.engine": "static", "numerics.increments_check": "halved", "numerics.run_files": "summary"}
+
+
+def _checked(case):
+    return simulate_static(case.with_overrides(CHECKED), None, log=lambda line: None)
+
+
+def test_set2_is_resolved_with_the_increments_halved():
+    summary = _checked(preset("set2"))
+    check = summary.increments_check
+    assert check is not None and check["resolved"] and check["outcome"] == summary.outcome
+    assert check["du_mm"] == pytest.approx(summary.du_mm, rel=0.01)  # 87.99 -> 88.04 mm
+    assert abs(check["du_mm_moved"]) <= 0.01 and "resolved" in check_line(check)
+    assert unresolved_warning(check) is None
+
+
+def test_a_branch_chosen_by_the_increments_is_reported_not_resolved():
+    row = {k: v for k, v in Geometry("three_centred", "closing", 0.25).row(5.2).items() if k != RUN_COLUMN}
+    summary = _checked(preset("set2").with_overrides(row))
+    check = summary.increments_check
+    assert summary.collapsed and check is not None and not check["resolved"]
+    assert abs(check["du_mm_moved"]) > 0.01  # 41.20 -> 39.68 mm in the atlas's invariance study
+    warning = unresolved_warning(check)
+    assert warning is not None and "NOT resolved" in warning and "du 39." in warning
+
+
+def test_a_check_whose_halved_increment_would_not_exceed_the_bracket_is_skipped():
+    case = preset("set2").with_overrides({"n_voussoirs": 15, "first_increment_mm": 0.15, "max_increment_mm": 0.3})
+    check = _checked(case).increments_check
+    assert check is not None and "skipped" in check and "du_tolerance_mm" in check_line(check)
+
+
+def test_the_command_line_checks_a_static_run_by_default_and_not_with_no_check(tmp_path, capsys):
+    common = ["run", "--preset", "set2", "--engine", "static", "--no-figures", "--set", "n_voussoirs=15"]
+    assert main([*common, "--out", str(tmp_path / "checked")]) == 0
+    assert "increments halved: collapse" in capsys.readouterr().out
+    assert json.loads((tmp_path / "checked" / "summary.json").read_text())["increments_check"]["resolved"] is True
+    assert main([*common, "--no-check", "--out", str(tmp_path / "once")]) == 0
+    assert "increments halved" not in capsys.readouterr().out
+    assert json.loads((tmp_path / "once" / "summary.json").read_text()).get("increments_check") is None
+
+
+def test_the_dem_refuses_the_check_in_one_line(tmp_path, capsys):
+    assert main(["run", "--preset", "set2", "--set", "numerics.increments_check=halved"]) != 0
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "increments_check" in err[0] and "static engine only" in err[0]
+    base = preset("set2").with_overrides({"numerics.increments_check": "halved"})
+    with pytest.raises(CaseError, match="static engine only"):
+        plan(base, [{RUN_COLUMN: "a", "kn_N_per_mm3": 5.2}], tmp_path)
