@@ -9,6 +9,7 @@ import json
 
 import pytest
 
+from yadearch.api.runs import with_engine
 from yadearch.case.config import preset
 from yadearch.cli.commands import main
 from yadearch.errors import CaseError
@@ -65,5 +66,8 @@ def test_the_dem_refuses_the_check_in_one_line(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "increments_check" in err[0] and "static engine only" in err[0]
     base = preset("set2").with_overrides({"numerics.increments_check": "halved"})
+    with pytest.raises(CaseError, match="static engine only"):
+        with_engine(base, "dem")  # the Python API's runs
+    assert with_engine(base, "static").numerics.increments_check == "halved"
     with pytest.raises(CaseError, match="static engine only"):
         plan(base, [{RUN_COLUMN: "a", "kn_N_per_mm3": 5.2}], tmp_path)

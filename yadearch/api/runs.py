@@ -12,6 +12,7 @@ from yadearch.api.results import RunResult, open_run
 from yadearch.case.config import ArchCase
 from yadearch.case.config import preset as _preset
 from yadearch.case.names import check_name, output_path
+from yadearch.case.numerics_section import static_only_refusal
 from yadearch.errors import ArgumentTypeError, CaseError, RunFolderError
 from yadearch.results.reuse import case_differences, is_current
 
@@ -54,13 +55,17 @@ def as_case(case: ArchCase | str) -> ArchCase:
 
 def with_engine(case: ArchCase | str, engine: str | None) -> ArchCase:
     """`case` (or a preset's name) solved by `engine` ('dem': YADE, 'static': Newton's method; None:
-    the case's own numerics.engine); ValueError naming the argument for another value."""
+        the case's own numerics.engine); ValueError naming the argument for another value, CaseError for a
+    static-only setting with the DEM."""
     case = as_case(case)
-    if engine is None:
-        return case
-    if engine not in ENGINES:
-        raise CaseError(f"engine must be one of {', '.join(ENGINES)}, got {engine!r}")
-    return case.with_overrides({"numerics.engine": engine})
+    if engine is not None:
+        if engine not in ENGINES:
+            raise CaseError(f"engine must be one of {', '.join(ENGINES)}, got {engine!r}")
+        case = case.with_overrides({"numerics.engine": engine})
+    refused = static_only_refusal(case.numerics)
+    if refused:
+        raise CaseError(refused)
+    return case
 
 
 def run(

@@ -12,6 +12,7 @@ SUMMARY_RUN_FILES = "summary"  # numerics.run_files: case.toml, summary.json and
 # (a snap moves blocks by a few hundredths of the thickness), well short of a fallen arch
 RUNAWAY_THICKNESS_RATIO = 0.5
 SNAP_THICKNESS_RATIO = 0.01  # a state this x the ring's thickness off its branch's prediction is on another branch
+STATIC_ENGINE = "static"  # numerics.engine: Newton's method on the same blocks and joints
 NO_INCREMENTS_CHECK = "none"  # numerics.increments_check: the path solved once
 HALVED_INCREMENTS_CHECK = "halved"  # ... and again with the increments halved (static engine)
 
@@ -23,7 +24,7 @@ class NumericsConfig:
     engine: str = field(
         default="dem",
         metadata={
-            "choices": ("dem", "static"),
+            "choices": ("dem", STATIC_ENGINE),
             "predates": "dem",
             "doc": "the solver: 'dem' = YADE's explicit dynamics with damping, relaxed to equilibrium after "
             "each support increment (the reference, and the only one for dynamics); 'static' = Newton's "
@@ -271,3 +272,14 @@ class NumericsConfig:
     def keeps_tables(self) -> bool:
         """True if the run folder keeps its tables, states and snapshots (run_files = 'full')."""
         return self.run_files == FULL_RUN_FILES
+
+
+def static_only_refusal(numerics: NumericsConfig) -> str | None:
+    """The one line refusing a static-only setting of `numerics` in a DEM run (None: nothing to refuse,
+    or the static engine): the increments check solves a static path twice, the DEM's path is not."""
+    if numerics.engine == STATIC_ENGINE or numerics.increments_check == NO_INCREMENTS_CHECK:
+        return None
+    return (
+        f"numerics.increments_check = {numerics.increments_check!r} is read by the static engine only (the DEM "
+        f"does not solve its path twice); use {NO_INCREMENTS_CHECK!r} or the static engine"
+    )

@@ -56,7 +56,7 @@ def resolve_case(
     if resolved.numerics.engine == STATIC:
         _refuse_dem_numerics(list(overrides))
     else:
-        from yadearch.static.records import static_only_refusal
+        from yadearch.case.numerics_section import static_only_refusal
 
         refused = static_only_refusal(resolved.numerics)
         if refused:

@@ -11,7 +11,6 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from yadearch.case.config import ArchCase
-from yadearch.case.numerics_section import NO_INCREMENTS_CHECK, NumericsConfig
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.model.joint_law import unbalanced_force
@@ -52,17 +51,6 @@ DEM_ONLY_NUMERICS = (
     "series_every_steps",
     "max_steps",
 )
-
-
-def static_only_refusal(numerics: NumericsConfig) -> str | None:
-    """The one line refusing a static-only numerics setting in a DEM run (None: nothing to refuse): the
-    increments check solves a static path twice, the DEM's path is not."""
-    if numerics.increments_check == NO_INCREMENTS_CHECK:
-        return None
-    return (
-        f"numerics.increments_check = {numerics.increments_check!r} is read by the static engine only (the DEM "
-        f"does not solve its path twice); use {NO_INCREMENTS_CHECK!r} or the static engine"
-    )
 
 
 def dem_only_keys(keys: Iterable[str]) -> list[str]:

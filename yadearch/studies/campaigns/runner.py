@@ -21,13 +21,14 @@ from tqdm import tqdm
 
 from yadearch.atomic import remove_stale_temporaries, write_atomically, write_csv_atomically
 from yadearch.case.config import ArchCase, preset
+from yadearch.case.numerics_section import static_only_refusal
 from yadearch.case.plan import plan_run
 from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, YadearchError
 from yadearch.launch.process import STATIC_ENGINE, check_yade_installed, run_case_process
 from yadearch.results.lock import folder_lock
 from yadearch.results.reuse import case_differences, is_current
 from yadearch.results.rundir import is_complete
-from yadearch.static.records import dem_only_keys, static_only_refusal
+from yadearch.static.records import dem_only_keys
 from yadearch.studies.campaigns.batches import BATCHES_DIR
 from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.failures import FAILED_FILE, failure_stands, record_failure
