@@ -61,6 +61,19 @@ class LoadsConfig:
             "predates": 0.0,
         },
     )
+    load_inclination_deg: float = field(
+        default=0.0,
+        metadata={
+            **number_meta(
+                -90,
+                90,
+                doc="the vertical load's angle from the downward vertical (degrees; positive leans it "
+                "toward the right, as a braking or a raking force would push; 0: vertical); its magnitude "
+                "grows, its capacity is in N along it",
+            ),
+            "predates": 0.0,
+        },
+    )
     acceleration_toward: str = field(
         default="right",
         metadata={"choices": ("right", "left"), "predates": "right", "doc": "the horizontal acceleration's direction"},

@@ -161,13 +161,18 @@ def require_live_load(case: ArchCase) -> None:
 
 
 def load_place(case: ArchCase) -> str:
-    """Where the vertical load stands, in words: "over voussoir 14" or "at 0.25 of the span"."""
+    """Where the vertical load stands, in words: "over voussoir 14" or "at 0.25 of the span", and how it
+    leans when it does ("leaning 20 deg toward the right")."""
     loads = case.loads
-    return (
+    place = (
         f"over voussoir {loads.load_voussoir}"
         if loads.load_voussoir
         else f"at {loads.load_position_over_span:g} of the span"
     )
+    if loads.load_inclination_deg:
+        side = "right" if loads.load_inclination_deg > 0 else "left"
+        place += f", leaning {abs(loads.load_inclination_deg):g} deg toward the {side}"
+    return place
 
 
 def load_position(case: ArchCase, geometry: ArchGeometry) -> float:
@@ -193,6 +198,7 @@ def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:
         width=units.mm(loads.load_width_mm),
         toward_right=loads.acceleration_toward == "right",
         shape=loads.load_shape,
+        inclination=math.radians(loads.load_inclination_deg),
     )
 
 

@@ -27,14 +27,15 @@ LOAD_SHAPES = (UNIFORM, RISING, FALLING)  # a spread load's intensity across its
 
 @dataclass(frozen=True)
 class LiveLoad:
-    """The live load of a case: its kind, and for a vertical load its position from the left
-    springing and the width it spreads over (m); an acceleration pushes toward +x or -x."""
+    """The live load of a case: its kind, and for a load on the extrados its position from the left
+    springing, the width it spreads over (m) and its inclination; an acceleration pushes toward +x or -x."""
 
     kind: str
     position: float = 0.0
     width: float = 0.0
     toward_right: bool = True
     shape: str = UNIFORM
+    inclination: float = 0.0  # a load on the extrados: its angle from the downward vertical (rad, + toward +x)
 
 
 @dataclass(frozen=True)
@@ -57,7 +58,8 @@ def live_load_points(geometry: ArchGeometry, centroids: np.ndarray, weight: np.n
         shares = _extrados_shares(geometry, load.position, load.width, load.shape)
         if shares:
             blocks, newtons, points = zip(*shares)
-            force = np.column_stack([np.zeros(len(newtons)), -np.array(newtons)])
+            along = np.array([np.sin(load.inclination), -np.cos(load.inclination)])  # 1 N down, leaning
+            force = np.outer(newtons, along)
             return LoadPoints(np.array(blocks), np.array(points), force)
     return LoadPoints(np.zeros(0, int), np.zeros((0, 2)), np.zeros((0, 2)))
 

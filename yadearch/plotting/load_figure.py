@@ -4,6 +4,7 @@ its position, or the acceleration's direction)."""
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -74,8 +75,8 @@ def _extrados_height(geometry: ArchGeometry, x: float) -> float:
 
 
 def _draw_load(ax, case: ArchCase, geometry: ArchGeometry) -> None:
-    """An arrow down onto the extrados at the vertical load's centre (its spread as a bar), or one
-    sideways above the crown for an acceleration."""
+    """An arrow onto the extrados at the vertical load's centre, leaning as the load does (its spread as a
+    bar), or one sideways above the crown for an acceleration."""
     span = geometry.span * MM
     top = max(float(b[:, 1].max()) for b in geometry.blocks) * MM
     length = 0.15 * span
@@ -84,9 +85,10 @@ def _draw_load(ax, case: ArchCase, geometry: ArchGeometry) -> None:
         half = case.loads.load_width_mm / 2.0
         if half > 0.0:
             ax.plot([x - half, x + half], [top + 0.02 * span] * 2, "-", color="k", lw=1.5)
-        ax.add_patch(
-            FancyArrow(x, top + length, 0.0, -length * 0.9, width=0.004 * span, color="k", length_includes_head=True)
-        )
+        lean = math.radians(case.loads.load_inclination_deg)
+        dx, dy = 0.9 * length * math.sin(lean), -0.9 * length * math.cos(lean)
+        tip = top + 0.1 * length  # the arrow's point, just above the crown's height
+        ax.add_patch(FancyArrow(x - dx, tip - dy, dx, dy, width=0.004 * span, color="k", length_includes_head=True))
     else:
         sign = 1.0 if case.loads.acceleration_toward == "right" else -1.0
         ax.add_patch(
