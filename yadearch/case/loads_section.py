@@ -74,6 +74,17 @@ class LoadsConfig:
             "predates": 0.0,
         },
     )
+    further_loads: list = field(
+        default_factory=list,
+        metadata={
+            "table_columns": ("offset_mm", "ratio"),
+            "predates": [],
+            "doc": "more loads on the extrados beside the vertical load, one row each: its centre's "
+            "horizontal offset from the load's (mm, + to the right) and its magnitude over the load's "
+            "(> 0); each spreads, leans and moves with it (a tandem axle 150 mm apart: [[150, 1]]); the "
+            "capacity is the first load's",
+        },
+    )
     acceleration_toward: str = field(
         default="right",
         metadata={"choices": ("right", "left"), "predates": "right", "doc": "the horizontal acceleration's direction"},

@@ -122,6 +122,7 @@ def runaway_length(case: ArchCase) -> float:
     return case.numerics.runaway_thickness_ratio * units.mm(case.geometry.thickness_mm)
 
 
+MAX_LOAD_RATIO = 100.0  # a further load at most this x the first (whose magnitude is the capacity)
 HELD_SETTINGS = {VERTICAL: "held_load_N", ACCELERATION: "held_acceleration_g"}  # each live load's held value
 
 
@@ -169,6 +170,9 @@ def load_place(case: ArchCase) -> str:
         if loads.load_voussoir
         else f"at {loads.load_position_over_span:g} of the span"
     )
+    if loads.further_loads:
+        rows = ", ".join(f"{ratio:g} x at {offset:+g} mm" for offset, ratio in loads.further_loads)
+        place += f", with {len(loads.further_loads)} more ({rows})"
     if loads.load_inclination_deg:
         side = "right" if loads.load_inclination_deg > 0 else "left"
         place += f", leaning {abs(loads.load_inclination_deg):g} deg toward the {side}"
@@ -199,7 +203,17 @@ def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:
         toward_right=loads.acceleration_toward == "right",
         shape=loads.load_shape,
         inclination=math.radians(loads.load_inclination_deg),
+        further=further_loads(case),
     )
+
+
+def further_loads(case: ArchCase) -> tuple[tuple[float, float], ...]:
+    """The case's further loads (`loads.further_loads`) as (offset (m), ratio); CaseError for a ratio
+    that is not positive."""
+    for k, ratio in enumerate((row[1] for row in case.loads.further_loads), start=1):
+        if not 0.0 < ratio <= MAX_LOAD_RATIO:
+            raise CaseError(f"loads.further_loads row {k}: ratio must be in (0, {MAX_LOAD_RATIO:g}], got {ratio:g}")
+    return tuple((units.mm(offset_mm), float(ratio)) for offset_mm, ratio in case.loads.further_loads)
 
 
 def backfill(case: ArchCase) -> Backfill:

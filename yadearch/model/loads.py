@@ -28,7 +28,8 @@ LOAD_SHAPES = (UNIFORM, RISING, FALLING)  # a spread load's intensity across its
 @dataclass(frozen=True)
 class LiveLoad:
     """The live load of a case: its kind, and for a load on the extrados its position from the left
-    springing, the width it spreads over (m) and its inclination; an acceleration pushes toward +x or -x."""
+    springing, the width it spreads over (m), its inclination and the loads that go with it (an axle's
+    others); an acceleration pushes toward +x or -x."""
 
     kind: str
     position: float = 0.0
@@ -36,6 +37,7 @@ class LiveLoad:
     toward_right: bool = True
     shape: str = UNIFORM
     inclination: float = 0.0  # a load on the extrados: its angle from the downward vertical (rad, + toward +x)
+    further: tuple[tuple[float, float], ...] = ()  # more such loads: (offset of its centre (m), magnitude ratio)
 
 
 @dataclass(frozen=True)
@@ -55,7 +57,11 @@ def live_load_points(geometry: ArchGeometry, centroids: np.ndarray, weight: np.n
         force = np.column_stack([push, np.zeros_like(push)])
         return LoadPoints(np.arange(1, len(weight) - 1), centroids[1:-1, :2].copy(), force)
     if load.kind == VERTICAL:
-        shares = _extrados_shares(geometry, load.position, load.width, load.shape)
+        shares = [
+            (block, ratio * newtons, point)
+            for offset, ratio in ((0.0, 1.0), *load.further)
+            for block, newtons, point in _extrados_shares(geometry, load.position + offset, load.width, load.shape)
+        ]
         if shares:
             blocks, newtons, points = zip(*shares)
             along = np.array([np.sin(load.inclination), -np.cos(load.inclination)])  # 1 N down, leaning

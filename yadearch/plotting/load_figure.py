@@ -75,20 +75,22 @@ def _extrados_height(geometry: ArchGeometry, x: float) -> float:
 
 
 def _draw_load(ax, case: ArchCase, geometry: ArchGeometry) -> None:
-    """An arrow onto the extrados at the vertical load's centre, leaning as the load does (its spread as a
-    bar), or one sideways above the crown for an acceleration."""
+    """An arrow onto the extrados at the vertical load's centre and at each further load's, leaning as
+    the load does (its spread as a bar), or one sideways above the crown for an acceleration."""
     span = geometry.span * MM
     top = max(float(b[:, 1].max()) for b in geometry.blocks) * MM
     length = 0.15 * span
     if case.loads.live_load == VERTICAL:
-        x = (geometry.joints[0].intrados[0] + load_position(case, geometry)) * MM
+        centre = (geometry.joints[0].intrados[0] + load_position(case, geometry)) * MM
         half = case.loads.load_width_mm / 2.0
-        if half > 0.0:
-            ax.plot([x - half, x + half], [top + 0.02 * span] * 2, "-", color="k", lw=1.5)
         lean = math.radians(case.loads.load_inclination_deg)
-        dx, dy = 0.9 * length * math.sin(lean), -0.9 * length * math.cos(lean)
-        tip = top + 0.1 * length  # the arrow's point, just above the crown's height
-        ax.add_patch(FancyArrow(x - dx, tip - dy, dx, dy, width=0.004 * span, color="k", length_includes_head=True))
+        tip = top + 0.1 * length  # the arrows' points, just above the crown's height
+        for offset_mm, ratio in [(0.0, 1.0), *case.loads.further_loads]:
+            x, arrow = centre + offset_mm, 0.9 * length * min(ratio, 1.0)  # a lighter load, a shorter arrow
+            if half > 0.0:
+                ax.plot([x - half, x + half], [top + 0.02 * span] * 2, "-", color="k", lw=1.5)
+            dx, dy = arrow * math.sin(lean), -arrow * math.cos(lean)
+            ax.add_patch(FancyArrow(x - dx, tip - dy, dx, dy, width=0.004 * span, color="k", length_includes_head=True))
     else:
         sign = 1.0 if case.loads.acceleration_toward == "right" else -1.0
         ax.add_patch(
