@@ -39,6 +39,7 @@ VALID_NEGATIVE = (
     "imperfections.left_support_angle_mrad",
     "imperfections.right_support_angle_mrad",
     "imperfections.voussoir_thickness_mm",
+    "loads.load_inclination_deg",  # a load leaning 1 deg toward the left
 )
 BAD_VALUES = ["-1", "nan", "inf", "-inf", "1e300", "'text'", "true"]
 DERIVED = [  # inside each value's range, absurd together: refused from the plan, before YADE
