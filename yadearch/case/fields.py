@@ -16,3 +16,9 @@ def number_meta(
 ) -> dict[str, Any]:
     """Field metadata: the accepted range of a number and a one-line description."""
     return {"low": low, "high": high, "low_open": low_open, "high_open": high_open, "doc": doc}
+
+
+def choice_meta(choices: tuple[str, ...], doc: str, predates: str | None = None) -> dict[str, Any]:
+    """Field metadata: the accepted words and a one-line description (and the value a case written
+    before the parameter existed takes, where it has one)."""
+    return {"choices": choices, "doc": doc, **({"predates": predates} if predates is not None else {})}

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from yadearch.case.fields import number_meta
+from yadearch.case.fields import choice_meta, number_meta
 
 FULL_RUN_FILES = "full"  # numerics.run_files: every table, state and snapshot of the run
 SUMMARY_RUN_FILES = "summary"  # numerics.run_files: case.toml, summary.json and run.log only
@@ -247,25 +247,24 @@ class NumericsConfig:
     )
     run_files: str = field(
         default=FULL_RUN_FILES,
-        metadata={
-            "choices": (FULL_RUN_FILES, SUMMARY_RUN_FILES),
-            "predates": FULL_RUN_FILES,
-            "doc": "what the run folder keeps: 'full' = its tables, states and snapshots (figures, "
-            "analysis, movies); 'summary' = case.toml, summary.json and run.log, for campaigns of "
-            "thousands of runs (a twentieth of the disk, docs/speed.md); changes no result",
-        },
+        metadata=choice_meta(
+            (FULL_RUN_FILES, SUMMARY_RUN_FILES),
+            "what the run folder keeps: 'full' = its tables, states and snapshots (figures, analysis, "
+            "movies); 'summary' = case.toml, summary.json and run.log, for campaigns of thousands of "
+            "runs (a twentieth of the disk, docs/speed.md); changes no result",
+            predates=FULL_RUN_FILES,
+        ),
     )
-
     increments_check: str = field(
         default=NO_INCREMENTS_CHECK,
-        metadata={
-            "choices": (NO_INCREMENTS_CHECK, HALVED_INCREMENTS_CHECK),
-            "predates": NO_INCREMENTS_CHECK,
-            "doc": "static engine only: 'halved' solves the path again from the same start with the "
-            "increments halved and reports how far du and du_first move (summary.json "
-            "increments_check; resolved within 1 %); twice the solver's time. `yadearch run` turns it "
-            "on for a static run (docs/numerics.md)",
-        },
+        metadata=choice_meta(
+            (NO_INCREMENTS_CHECK, HALVED_INCREMENTS_CHECK),
+            "static engine only: 'halved' solves the path again from the same start with the increments "
+            "halved and reports how far du and du_first move (summary.json increments_check; resolved "
+            "within 1 %); twice the solver's time. `yadearch run` turns it on for a static run "
+            "(docs/numerics.md)",
+            predates=NO_INCREMENTS_CHECK,
+        ),
     )
 
     @property
