@@ -4,6 +4,7 @@ the three solvers' answers line up by run, and the targets are read on the right
 from __future__ import annotations
 
 import math
+import re
 
 import pandas as pd
 import pytest
@@ -116,3 +117,19 @@ def test_a_stiff_gap_the_compliant_march_explains_is_said_to_be_compliance():
     text = atlas_markdown(table)
     assert f"Of the {len(geometries())} outside, {len(geometries())} are within 1 % of the compliant march" in text
     assert "| compliant du | gap to compliant |" in text
+
+
+def test_the_static_answers_the_halved_increments_move_are_counted_listed_and_starred():
+    static, rigid, dem = _synthetic()
+    moved = static[RUN_COLUMN].iloc[0]
+    static = static.assign(
+        du_halved_increments_mm=static["du_mm"], du_first_halved_increments_mm=static["du_first_mm"], resolved=True
+    )
+    static.loc[static[RUN_COLUMN] == moved, ["du_halved_increments_mm", "resolved"]] = [40.0, False]
+    table = atlas_table(static, rigid, dem)
+    text = atlas_markdown(table)
+    assert f"{len(static) - 1} of {len(static)} collapses keep their outcome" in text and "1 do not:" in text
+    assert f"| {moved} | 40.50 | 40.00 |" in text  # listed with the halved du beside its own
+    assert "40.50 (30.00)*" in text  # starred in the du table
+    unchecked = atlas_markdown(atlas_table(_synthetic()[0], rigid, dem))
+    assert "Not checked" in unchecked and not re.search(r"\d\*", unchecked)

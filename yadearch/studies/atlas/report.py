@@ -89,7 +89,11 @@ def atlas_markdown(table: pd.DataFrame) -> str:
         "",
         *_unresolved_section(table),
         "",
+        *_check_section(table),
+        "",
         "## du of every arch (static, mm) against kn, and the rigid march",
+        "",
+        "du (du_first where it differs); * the answer moves more than 1 % with the increments halved.",
         "",
         *_du_table(table),
         "",
@@ -223,6 +227,41 @@ def _unresolved_section(table: pd.DataFrame) -> list[str]:
     )
 
 
+def _check_section(table: pd.DataFrame) -> list[str]:
+    """How many static collapses hold within 1 % with the increments halved (`numerics.increments_check`),
+    and each one that does not."""
+    collapses = table[table["static_outcome"].eq("collapse")]
+    checked = collapses[collapses["static_resolved"].notna()]
+    moved = checked[~checked["static_resolved"].astype(bool)]
+    lines = ["## The static answers with the increments halved", ""]
+    if checked.empty:
+        return lines + ["Not checked (the static runs ran without numerics.increments_check)."]
+    lines += [
+        "Every static run is solved again from its self-weight with the increments halved: "
+        f"{len(checked) - len(moved)} of {len(checked)} collapses keep their outcome, du and du_first "
+        "within 1 % (resolved); "
+        f"{len(moved)} do not{':' if len(moved) else '.'}",
+    ]
+    if moved.empty:
+        return lines
+    return lines + [
+        "",
+        *markdown_table(
+            ["run", "du", "halved", "du_first", "halved"],
+            [
+                [
+                    r.run,
+                    _mm(r.static_du_mm),
+                    _mm(r.static_du_halved_increments_mm),
+                    _mm(r.static_du_first_mm),
+                    _mm(r.static_du_first_halved_increments_mm),
+                ]
+                for r in moved.itertuples()
+            ],
+        ),
+    ]
+
+
 def _du_table(table: pd.DataFrame) -> list[str]:
     columns = ["arch", *(f"kn {k:g}" for k in KNS_N_PER_MM3), "rigid", "rigid hinges"]
     rows = []
@@ -240,4 +279,5 @@ def _cell(row: pd.Series) -> str:
     if row["static_outcome"] != "collapse":
         return _text(row["static_outcome"]) or "pending"
     first, du = row["static_du_first_mm"], row["static_du_mm"]
-    return _mm(du) if abs(first - du) < 0.01 else f"{_mm(du)} ({_mm(first)})"
+    moved = "*" if row.get("static_resolved") is False or row.get("static_resolved") == 0 else ""
+    return (_mm(du) if abs(first - du) < 0.01 else f"{_mm(du)} ({_mm(first)})") + moved

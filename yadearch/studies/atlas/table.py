@@ -17,6 +17,7 @@ STIFF_TARGET_PCT = 2.0  # static at the stiffest kn against the rigid march
 ENGINES_TARGET_PCT = 1.0  # static against the DEM, on du and on du_first
 RISE_TOLERANCE_PCT = 1.0  # du may fall this much from one kn to the next stiffer and still count as rising
 ENGINE_COLUMNS = ("outcome", "du_first_mm", "du_mm", "collapse_kind", "hinges", "reason")
+CHECK_COLUMNS = ("du_halved_increments_mm", "du_first_halved_increments_mm", "resolved")  # the static check's
 
 
 def _engine_part(results: pd.DataFrame | None, prefix: str) -> pd.DataFrame:
@@ -29,6 +30,15 @@ def _engine_part(results: pd.DataFrame | None, prefix: str) -> pd.DataFrame:
     part.loc[part["status"].eq("pending"), "outcome"] = math.nan  # not run yet
     part = part.drop(columns="status")
     return part.rename(columns={c: f"{prefix}_{c}" for c in ENGINE_COLUMNS})
+
+
+def _check_part(static: pd.DataFrame | None) -> pd.DataFrame:
+    """The static runs' increments check (`numerics.increments_check`) as static_ columns keyed by run
+    name: du and du_first with the increments halved, and whether both held within 1 %."""
+    columns = {name: f"static_{name}" for name in CHECK_COLUMNS}
+    if static is None or static.empty:
+        return pd.DataFrame(columns=[RUN_COLUMN, *columns.values()])
+    return static.reindex(columns=[RUN_COLUMN, *CHECK_COLUMNS]).rename(columns=columns)
 
 
 def gap_pct(value: float, reference: float) -> float:
@@ -58,6 +68,7 @@ def atlas_table(
             keys.append(_key(geometry, kn))
     table = pd.DataFrame(keys)
     table = table.merge(_engine_part(static, "static"), on=RUN_COLUMN, how="left")
+    table = table.merge(_check_part(static), on=RUN_COLUMN, how="left")
     table = table.merge(_engine_part(dem, "dem"), on=RUN_COLUMN, how="left")
     table = table.merge(rigid, on=KEY, how="left")
     if compliant is not None:
