@@ -11,7 +11,9 @@ import pytest
 
 from yadearch.case.config import ArchCase, preset
 from yadearch.case.mechanics import runaway_length
+from yadearch.case.plan import plan_run
 from yadearch.cli.commands import main
+from yadearch.errors import CaseError
 from yadearch.solve.limit_lp import weight_load
 from yadearch.solve.load_lp import live_forces, load_analysis, load_capacity
 from yadearch.solve.load_path import load_settings, load_the_live_load
@@ -74,3 +76,11 @@ def test_a_ratio_out_of_range_is_refused_in_one_line(capsys):
     assert main(args) != 0
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "further_loads row 1" in err[0] and "(0, 100]" in err[0]
+
+
+def test_a_further_load_off_the_span_or_beside_an_acceleration_is_refused_in_one_line(tmp_path):
+    static = {"numerics.engine": "static"}
+    with pytest.raises(CaseError, match=r"further_loads row 1: its centre at [0-9.]+ mm .* off the span"):
+        plan_run(_case([[5000.0, 1.0]], **static))
+    with pytest.raises(CaseError, match="read with loads.live_load = 'vertical' only"):
+        plan_run(_case(TANDEM, live_load="horizontal_acceleration", **static))

@@ -123,13 +123,15 @@ def test_the_static_answers_the_halved_increments_move_are_counted_listed_and_st
     static, rigid, dem = _synthetic()
     moved = static[RUN_COLUMN].iloc[0]
     static = static.assign(
-        du_halved_increments_mm=static["du_mm"], du_first_halved_increments_mm=static["du_first_mm"], resolved=True
+        du_halved_increments_mm=static["du_mm"],
+        du_first_halved_increments_mm=static["du_first_mm"],
+        increments_resolved=True,
     )
-    static.loc[static[RUN_COLUMN] == moved, ["du_halved_increments_mm", "resolved"]] = [40.0, False]
+    static.loc[static[RUN_COLUMN] == moved, ["du_halved_increments_mm", "increments_resolved"]] = [40.0, False]
     table = atlas_table(static, rigid, dem)
     text = atlas_markdown(table)
-    assert f"{len(static) - 1} of {len(static)} collapses keep their outcome" in text and "1 do not:" in text
-    assert f"| {moved} | 40.50 | 40.00 |" in text  # listed with the halved du beside its own
+    assert f"{len(static) - 1} of {len(static)} keep their outcome" in text and "1 do not:" in text
+    assert f"| {moved} | collapse | 40.50 | 40.00 |" in text  # listed with the halved du beside its own
     assert "40.50 (30.00)*" in text  # starred in the du table
     unchecked = atlas_markdown(atlas_table(_synthetic()[0], rigid, dem))
     assert "Not checked" in unchecked and not re.search(r"\d\*", unchecked)

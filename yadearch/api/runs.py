@@ -12,7 +12,7 @@ from yadearch.api.results import RunResult, open_run
 from yadearch.case.config import ArchCase
 from yadearch.case.config import preset as _preset
 from yadearch.case.names import check_name, output_path
-from yadearch.case.numerics_section import static_only_refusal
+from yadearch.case.numerics_section import NO_INCREMENTS_CHECK, static_only_refusal
 from yadearch.errors import ArgumentTypeError, CaseError, RunFolderError
 from yadearch.results.reuse import case_differences, is_current
 
@@ -54,9 +54,9 @@ def as_case(case: ArchCase | str) -> ArchCase:
 
 
 def with_engine(case: ArchCase | str, engine: str | None) -> ArchCase:
-    """`case` (or a preset's name) solved by `engine` ('dem': YADE, 'static': Newton's method; None:
-        the case's own numerics.engine); ValueError naming the argument for another value, CaseError for a
-    static-only setting with the DEM."""
+    """`case` (or a preset's name) solved by `engine` ('dem': YADE, 'static': Newton's method; None: the
+    case's own numerics.engine); CaseError naming the argument for another value, or for a static-only
+    setting with the DEM."""
     case = as_case(case)
     if engine is not None:
         if engine not in ENGINES:
@@ -66,6 +66,12 @@ def with_engine(case: ArchCase | str, engine: str | None) -> ArchCase:
     if refused:
         raise CaseError(refused)
     return case
+
+
+def _lacks_its_check(folder: Path, case: ArchCase) -> bool:
+    """Whether `case` asks for the increments check and the finished run in `folder` did not make one
+    (it is run again rather than reused without it)."""
+    return case.numerics.increments_check != NO_INCREMENTS_CHECK and open_run(folder).summary.increments_check is None
 
 
 def run(
@@ -99,9 +105,9 @@ def run(
         )
     if is_current(folder) and not rerun:
         differences = case_differences(folder, case)
-        if not differences:
+        if not differences and not _lacks_its_check(folder, case):
             return open_run(folder)
-        if not overwrite:
+        if differences and not overwrite:  # the same case without its check is run again
             raise RunFolderError(
                 f"{folder} holds a finished run of another case ({differences[0]}"
                 f"{', ...' if len(differences) > 1 else ''}); choose another output "

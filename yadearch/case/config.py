@@ -241,7 +241,8 @@ def as_ran(data: dict[str, Any]) -> dict[str, Any]:
     predates takes the value that reproduces the behaviour it had ("predates" in its metadata, else
     its default), and the support speed and acceleration replace the parameters they derive from,
     so that a run whose speed or acceleration they do not change stays comparable; what the folder
-    keeps (`numerics.run_files`) is left out."""
+    keeps (`numerics.run_files`) and whether a static run checked itself (`numerics.increments_check`,
+    which leaves its answer alone) are left out."""
     filled: dict[str, Any] = {"name": data.get("name", "custom")}
     for section_name, cls in SECTIONS.items():
         stored, defaults = current_names(section_name, data.get(section_name, {})), cls()
@@ -253,7 +254,7 @@ def as_ran(data: dict[str, Any]) -> dict[str, Any]:
         numerics["support_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"], filled["interface"]["kn_N_per_mm3"]
     )
     del numerics["support_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"]
-    del numerics["run_files"]  # what the folder keeps, not what the run computes
+    del numerics["run_files"], numerics["increments_check"]  # what the folder keeps, a check beside the answer
     loading = filled["loading"]  # the acceleration a run used; a turn or a path counted as horizontal
     share = (
         abs(math.cos(math.radians(loading["support_direction_deg"])))

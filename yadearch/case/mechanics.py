@@ -194,26 +194,38 @@ def load_position(case: ArchCase, geometry: ArchGeometry) -> float:
 
 def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:
     """The case's live load in SI (model.loads): its centre's position from the left springing
-    (`load_position`)."""
+    (`load_position`) and the loads that go with it; CaseError for what the load cannot take."""
     loads = case.loads
+    if loads.live_load != VERTICAL and (loads.further_loads or loads.load_inclination_deg):
+        name = "further_loads" if loads.further_loads else "load_inclination_deg"
+        raise CaseError(f"loads.{name} is read with loads.live_load = 'vertical' only, got {loads.live_load!r}")
+    position = load_position(case, geometry)
     return LiveLoad(
         loads.live_load,
-        position=load_position(case, geometry),
+        position=position,
         width=units.mm(loads.load_width_mm),
         toward_right=loads.acceleration_toward == "right",
         shape=loads.load_shape,
         inclination=math.radians(loads.load_inclination_deg),
-        further=further_loads(case),
+        further=further_loads(case, position, geometry.span),
     )
 
 
-def further_loads(case: ArchCase) -> tuple[tuple[float, float], ...]:
-    """The case's further loads (`loads.further_loads`) as (offset (m), ratio); CaseError for a ratio
-    that is not positive."""
-    for k, ratio in enumerate((row[1] for row in case.loads.further_loads), start=1):
+def further_loads(case: ArchCase, position: float, span: float) -> tuple[tuple[float, float], ...]:
+    """The case's further loads (`loads.further_loads`) as (offset (m), ratio), the first load's centre at
+    `position` on a `span` (m); CaseError for a ratio out of (0, MAX_LOAD_RATIO] or a centre off the span."""
+    found = []
+    for k, (offset_mm, ratio) in enumerate(case.loads.further_loads, start=1):
         if not 0.0 < ratio <= MAX_LOAD_RATIO:
             raise CaseError(f"loads.further_loads row {k}: ratio must be in (0, {MAX_LOAD_RATIO:g}], got {ratio:g}")
-    return tuple((units.mm(offset_mm), float(ratio)) for offset_mm, ratio in case.loads.further_loads)
+        centre = position + units.mm(offset_mm)
+        if not 0.0 <= centre <= span:
+            raise CaseError(
+                f"loads.further_loads row {k}: its centre at {units.to_mm(centre):g} mm from the left springing "
+                f"is off the span (0 to {units.to_mm(span):g} mm); offset_mm must keep it on the arch"
+            )
+        found.append((units.mm(offset_mm), float(ratio)))
+    return tuple(found)
 
 
 def backfill(case: ArchCase) -> Backfill:

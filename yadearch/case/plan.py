@@ -16,6 +16,7 @@ from yadearch.case.mechanics import (
     contact_stiffness,
     critical_timestep,
     held_multiplier,
+    live_load,
     require_live_load,
 )
 from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
@@ -69,6 +70,7 @@ def plan_run(case: ArchCase) -> RunPlan:
             f"{case.loads.fill_depth_mm:g}) needs the joint elements (numerics.contact_model = 'joint')"
         )
     geometry = arch_geometry(case)  # refuses an arch that cannot be built (case/shape.py)
+    live_load(case, geometry)  # refuses further loads off the arch or with a load that takes none
     _check_imperfections(case, geometry)
     movement = case_movement(case, geometry)  # refuses a movement that cannot be followed (a pivot on the path's point)
     if num.engine == "static":

@@ -61,10 +61,10 @@ def cli() -> None:
 @figures_option("the run's figures (a static run's solver takes a fraction of their seconds)")
 @click.option(
     "--check/--no-check",
-    default=True,
-    show_default=True,
+    default=None,
     help="static engine: solve the path again with the increments halved and say whether du and "
-    "du_first move by more than 1 % (numerics.increments_check; twice the solver's time)",
+    "du_first move by more than 1 % (numerics.increments_check; twice the solver's time)  [default: "
+    "check, unless the case file or --set says numerics.increments_check]",
 )
 def run(
     preset_name: str | None,
@@ -76,7 +76,7 @@ def run(
     rerun: bool,
     overwrite: bool,
     figures: bool,
-    check: bool,
+    check: bool | None,
 ) -> None:
     """Run one case to collapse and write its run folder (a finished run of the same case is reused)."""
     from yadearch.api.runs import run as run_case
@@ -87,13 +87,26 @@ def run(
     case = resolve_case(preset_name, case_file, kn, settings)
     if name is not None:
         case = case.with_overrides({"name": check_name(name, "--name")})
-    if case.numerics.engine == STATIC:
+    if check is None and case.numerics.engine == STATIC and not _states_the_check(case_file, settings):
+        check = True
+    if check is not None and case.numerics.engine == STATIC:
         chosen = HALVED_INCREMENTS_CHECK if check else NO_INCREMENTS_CHECK
         case = case.with_overrides({"numerics.increments_check": chosen})
     result = run_case(case, out=out, rerun=rerun, overwrite=overwrite, figures=figures, figure_jobs=FIGURE_JOBS)
     _report_summary(result.path)
     if figures:
         click.echo(f"figures -> {result.path / 'figures'}")
+
+
+def _states_the_check(case_file: str | None, settings: tuple[str, ...]) -> bool:
+    """Whether the case file or a --set names numerics.increments_check (then `run` keeps its value)."""
+    import tomllib
+
+    if any(setting.split("=", 1)[0].split(".")[-1] == "increments_check" for setting in settings):
+        return True
+    if case_file is None:
+        return False
+    return "increments_check" in tomllib.loads(Path(case_file).read_text()).get("numerics", {})
 
 
 @cli.command()

@@ -14,6 +14,7 @@ import threading
 from pathlib import Path
 
 from yadearch.case.config import ArchCase
+from yadearch.case.numerics_section import STATIC_ENGINE  # a run solved by the static engine (no YADE)
 from yadearch.case.plan import plan_run
 from yadearch.dem.simulate import SCRATCH_RECORD
 from yadearch.dem.yade_env import yade_problem
@@ -22,7 +23,6 @@ from yadearch.results.lock import LOCK_SUFFIX, folder_lock
 from yadearch.results.rundir import CASE_FILE, LOG_FILE, STAGING_PREFIX, STAGING_SUFFIX, is_complete, staging_folder
 from yadearch.static.pool import run_static, stop_workers
 
-STATIC_ENGINE = "static"  # numerics.engine of a run solved by the static engine (no YADE)
 REPLACED_SUFFIX = ".replaced"  # the previous folder NAME, for the moment of the swap
 INTERRUPTED_CODES = (130, -signal.SIGINT, -signal.SIGTERM)  # the child's own exit code, or the signal
 _children: set[subprocess.Popen] = set()  # the simulations this process waits on, from any thread

@@ -8,6 +8,7 @@ import dataclasses
 from dataclasses import dataclass, field
 from typing import Any
 
+from yadearch.case.numerics_section import STATIC_ENGINE
 from yadearch.case.sections import LoadingConfig
 from yadearch.errors import RunFolderError
 from yadearch.model import units
@@ -16,7 +17,7 @@ from yadearch.model.movement import Movement
 from yadearch.solve.path import PathResult
 from yadearch.solve.stages import Outcome
 
-DEM, STATIC = "dem", "static"  # the engines that write run folders
+DEM, STATIC = "dem", STATIC_ENGINE  # the engines that write run folders
 # The static engine's revision, raised with every change of its results: a static run made by another
 # one is made again instead of reused (`reuse.outdated`). 2: the joints' shear is carried from one
 # self-weight load step to the next (1: each step counted the sliding from the blocks at rest).

@@ -89,8 +89,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
             f"wall {wall:.1f} s)"
         )
 
-    start = StaticLoading(arch, loading.settings, loading.runaway, loading.solver_settings, loading.parameter)
-    start.accepted = loading.accepted[:1]  # the path's starting state, for the increments check
+    start = loading.accepted[0]  # the path's first state, where the increments check starts again
     path = loading.follow(on_step=progress)
     for state in loading.accepted[1:]:
         records.add(state)
@@ -101,9 +100,10 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         records.add(collapse, label=Stage.COLLAPSE)
         hinges = records.hinges(collapse)
     mode = loading.fold_mode(path.upper) if path.collapsed else None
+    solver_wall = time.time() - solver_start
     check = None
     if num.increments_check == HALVED_INCREMENTS_CHECK:
-        check = increments_check(start, path, loading.first_loss)
+        check = increments_check(loading, start, path, loading.first_loss)
         log(f"[{case.name}] {check_line(check)}")
     summary = RunSummary(
         name=case.name,
@@ -142,7 +142,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         iterations=loading.iterations,
         steps=loading.iterations,
         joint_evaluations=loading.solver.evaluations,
-        solver_wall_s=time.time() - solver_start,
+        solver_wall_s=solver_wall,  # the path's (the increments check has its own)
         wall_s=time.time() - wall0,
         **provenance(None),
     )

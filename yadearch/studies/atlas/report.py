@@ -228,29 +228,29 @@ def _unresolved_section(table: pd.DataFrame) -> list[str]:
 
 
 def _check_section(table: pd.DataFrame) -> list[str]:
-    """How many static collapses hold within 1 % with the increments halved (`numerics.increments_check`),
-    and each one that does not."""
-    collapses = table[table["static_outcome"].eq("collapse")]
-    checked = collapses[collapses["static_resolved"].notna()]
-    moved = checked[~checked["static_resolved"].astype(bool)]
+    """How many static runs keep their answer with the increments halved (`numerics.increments_check`):
+    their outcome, du and du_first within 1 %; and each one that does not, with both answers."""
+    checked = table[table["static_increments_resolved"].notna()]
+    moved = checked[~checked["static_increments_resolved"].astype(bool)]
     lines = ["## The static answers with the increments halved", ""]
     if checked.empty:
         return lines + ["Not checked (the static runs ran without numerics.increments_check)."]
-    lines += [
+    lines.append(
         "Every static run is solved again from its self-weight with the increments halved: "
-        f"{len(checked) - len(moved)} of {len(checked)} collapses keep their outcome, du and du_first "
-        "within 1 % (resolved); "
-        f"{len(moved)} do not{':' if len(moved) else '.'}",
-    ]
+        f"{len(checked) - len(moved)} of {len(checked)} keep their outcome, du and du_first within 1 % "
+        f"(resolved; {int(checked['static_outcome'].eq('collapse').sum())} of them collapse); {len(moved)} do not"
+        + (":" if len(moved) else ".")
+    )
     if moved.empty:
         return lines
     return lines + [
         "",
         *markdown_table(
-            ["run", "du", "halved", "du_first", "halved"],
+            ["run", "outcome", "du", "halved", "du_first", "halved"],
             [
                 [
                     r.run,
+                    _text(r.static_outcome),
                     _mm(r.static_du_mm),
                     _mm(r.static_du_halved_increments_mm),
                     _mm(r.static_du_first_mm),
@@ -279,5 +279,5 @@ def _cell(row: pd.Series) -> str:
     if row["static_outcome"] != "collapse":
         return _text(row["static_outcome"]) or "pending"
     first, du = row["static_du_first_mm"], row["static_du_mm"]
-    moved = "*" if row.get("static_resolved") is False or row.get("static_resolved") == 0 else ""
+    moved = "*" if row.get("static_increments_resolved") is False or row.get("static_increments_resolved") == 0 else ""
     return (_mm(du) if abs(first - du) < 0.01 else f"{_mm(du)} ({_mm(first)})") + moved

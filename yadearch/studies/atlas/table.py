@@ -17,7 +17,11 @@ STIFF_TARGET_PCT = 2.0  # static at the stiffest kn against the rigid march
 ENGINES_TARGET_PCT = 1.0  # static against the DEM, on du and on du_first
 RISE_TOLERANCE_PCT = 1.0  # du may fall this much from one kn to the next stiffer and still count as rising
 ENGINE_COLUMNS = ("outcome", "du_first_mm", "du_mm", "collapse_kind", "hinges", "reason")
-CHECK_COLUMNS = ("du_halved_increments_mm", "du_first_halved_increments_mm", "resolved")  # the static check's
+CHECK_COLUMNS = (
+    "du_halved_increments_mm",
+    "du_first_halved_increments_mm",
+    "increments_resolved",
+)  # the static check's
 
 
 def _engine_part(results: pd.DataFrame | None, prefix: str) -> pd.DataFrame:

@@ -53,7 +53,19 @@ def static_measurement(
         folder = runs / name
         start = time.time()
         subprocess.run(
-            [cli, "run", "--preset", "set2", *extra, "--engine", "static", "--out", str(folder), "--rerun"],
+            [
+                cli,
+                "run",
+                "--preset",
+                "set2",
+                *extra,
+                "--engine",
+                "static",
+                "--no-check",
+                "--out",
+                str(folder),
+                "--rerun",
+            ],
             check=True,
             capture_output=True,
         )

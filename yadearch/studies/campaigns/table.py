@@ -127,7 +127,7 @@ def _check_columns(summary: RunSummary) -> dict[str, Any]:
     return {
         "du_halved_increments_mm": math.nan if check["du_mm"] is None else check["du_mm"],
         "du_first_halved_increments_mm": math.nan if check["du_first_mm"] is None else check["du_first_mm"],
-        "resolved": check["resolved"],
+        "increments_resolved": check["resolved"],
     }
 
 
