@@ -14,8 +14,8 @@ from yadearch.case.config import preset
 from yadearch.cli.commands import main
 from yadearch.errors import CaseError
 from yadearch.results.check_text import check_line, unresolved_warning
-from yadearch.static import increments_check
-from yadearch.static.increments_check import resolved
+from yadearch.solve import refined
+from yadearch.solve.refined import resolved
 from yadearch.static.simulate import simulate_static
 from yadearch.studies.atlas.grid import Geometry
 from yadearch.studies.campaigns.grid import RUN_COLUMN
@@ -78,7 +78,7 @@ def test_the_dem_refuses_the_check_in_one_line(tmp_path, capsys):
 @pytest.mark.parametrize("held", [{}, {"live_load": "vertical", "held_load_N": 1.0, "further_loads": [[60.0, 0.5]]}])
 def test_the_check_starts_where_the_path_started(monkeypatch, held):
     """With the increments x1 the check is the run itself: not a hair moved, a held load too."""
-    monkeypatch.setattr(increments_check, "CHECK_FACTOR", 1.0)
+    monkeypatch.setattr(refined, "CHECK_FACTOR", 1.0)
     check = _checked(preset("set2").with_overrides({"n_voussoirs": 15, **held})).increments_check
     assert check is not None and check["resolved"]
     assert check["du_mm_moved"] == 0.0 and check["du_first_mm_moved"] == 0.0
@@ -86,10 +86,12 @@ def test_the_check_starts_where_the_path_started(monkeypatch, held):
 
 def test_a_snap_one_path_makes_and_the_other_does_not_is_a_moved_answer():
     stands = {"outcome": "stands", "du_mm": None, "du_first_mm": None}
-    assert resolved(stands, dict(stands))
-    assert not resolved(stands, {**stands, "du_first_mm": 41.0})  # the halved path snaps, the run's did not
+    keys = ("du_mm", "du_first_mm")
+    assert resolved(stands, dict(stands), keys)
+    assert not resolved(stands, {**stands, "du_first_mm": 41.0}, keys)  # the halved path snaps, the run's did not
     collapse = {"outcome": "collapse", "du_mm": 50.0, "du_first_mm": 40.0}
-    assert resolved(collapse, {**collapse, "du_mm": 50.4}) and not resolved(collapse, {**collapse, "du_mm": 50.6})
+    assert resolved(collapse, {**collapse, "du_mm": 50.4}, keys)
+    assert not resolved(collapse, {**collapse, "du_mm": 50.6}, keys)
 
 
 def test_the_command_keeps_a_check_the_user_set_and_runs_an_unchecked_folder_again(tmp_path, capsys):

@@ -1,21 +1,22 @@
-"""The words for a static run's increments check (summary.json `increments_check`, made by
-`static.increments_check`): one line for the log, the command line, the warnings and the report."""
+"""The words for a static path's increments check (summary.json's or a load path's `increments_check`,
+made by `solve.refined`): one line for the log, the command line, the warnings and the report."""
 
 from __future__ import annotations
 
 from typing import Any
 
-ANSWERS = ("du", "du_first")
+RUN_ANSWERS = (("du", "du_mm", "mm"), ("du_first", "du_first_mm", "mm"))  # (said as, key, unit) of a run's
 
 
-def check_line(check: dict[str, Any]) -> str:
-    """One line for the log and the command line: the check's answers and its verdict."""
+def check_line(check: dict[str, Any], answers: tuple[tuple[str, str, str], ...] = RUN_ANSWERS) -> str:
+    """One line for the log and the command line: the check's `answers` (said as, key, unit) and its
+    verdict."""
     if "skipped" in check:
         return f"increments check skipped: {check['skipped']}"
     moved = ", ".join(
-        f"{name} {check[f'{name}_mm']:.2f} mm ({check[f'{name}_mm_moved']:+.2%})"
-        for name in ANSWERS
-        if check[f"{name}_mm_moved"] is not None
+        f"{said} {check[key]:{'.2f' if unit == 'mm' else '.4g'}} {unit} ({check[f'{key}_moved']:+.2%})"
+        for said, key, unit in answers
+        if check[f"{key}_moved"] is not None
     )
     verdict = (
         "resolved"
