@@ -102,3 +102,14 @@ def test_the_command_keeps_a_check_the_user_set_and_runs_an_unchecked_folder_aga
     assert main([*common, "--out", out]) == 0  # the same case, now checked: run again, not refused nor reused
     assert json.loads((tmp_path / "r" / "summary.json").read_text())["increments_check"]["resolved"] is True
     assert "increments halved" in capsys.readouterr().out
+
+
+def test_a_static_load_path_checks_its_capacity_with_the_increments_halved(tmp_path, capsys):
+    common = ["loads", "--preset", "set2", "--set", "live_load=vertical", "--set", "n_voussoirs=15"]
+    common += ["--engine", "static", "--no-figures", "--no-descending"]
+    assert main([*common, "--out", str(tmp_path / "checked")]) == 0
+    assert "increments halved: collapse, capacity" in capsys.readouterr().out
+    check = json.loads((tmp_path / "checked" / "set2_load_path.json").read_text())["increments_check"]
+    assert check["resolved"] and abs(check["capacity_moved"]) <= 0.01  # set 2's quarter-span capacity
+    assert main([*common, "--no-check", "--out", str(tmp_path / "once")]) == 0
+    assert "increments_check" not in json.loads((tmp_path / "once" / "set2_load_path.json").read_text())

@@ -15,9 +15,11 @@ from yadearch.cli.options import (
     RIGID,
     argument_type,
     case_options,
+    check_option,
     figures_option,
     refuse_unread,
     resolve_case,
+    with_increments_check,
 )
 from yadearch.errors import YadearchError
 
@@ -59,13 +61,7 @@ def cli() -> None:
 @click.option("--rerun", is_flag=True, help="run again even if OUT holds a finished run of this case")
 @click.option("--overwrite", is_flag=True, help="replace a finished run of another case in OUT")
 @figures_option("the run's figures (a static run's solver takes a fraction of their seconds)")
-@click.option(
-    "--check/--no-check",
-    default=None,
-    help="static engine: solve the path again with the increments halved and say whether du and "
-    "du_first move by more than 1 % (numerics.increments_check; twice the solver's time)  [default: "
-    "check, unless the case file or --set says numerics.increments_check]",
-)
+@check_option
 def run(
     preset_name: str | None,
     case_file: str | None,
@@ -81,32 +77,15 @@ def run(
     """Run one case to collapse and write its run folder (a finished run of the same case is reused)."""
     from yadearch.api.runs import run as run_case
     from yadearch.case.names import check_name
-    from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK, NO_INCREMENTS_CHECK
-    from yadearch.results.summary import STATIC
 
     case = resolve_case(preset_name, case_file, kn, settings)
     if name is not None:
         case = case.with_overrides({"name": check_name(name, "--name")})
-    if check is None and case.numerics.engine == STATIC and not _states_the_check(case_file, settings):
-        check = True
-    if check is not None and case.numerics.engine == STATIC:
-        chosen = HALVED_INCREMENTS_CHECK if check else NO_INCREMENTS_CHECK
-        case = case.with_overrides({"numerics.increments_check": chosen})
+    case = with_increments_check(case, check, case_file, settings)
     result = run_case(case, out=out, rerun=rerun, overwrite=overwrite, figures=figures, figure_jobs=FIGURE_JOBS)
     _report_summary(result.path)
     if figures:
         click.echo(f"figures -> {result.path / 'figures'}")
-
-
-def _states_the_check(case_file: str | None, settings: tuple[str, ...]) -> bool:
-    """Whether the case file or a --set names numerics.increments_check (then `run` keeps its value)."""
-    import tomllib
-
-    if any(setting.split("=", 1)[0].split(".")[-1] == "increments_check" for setting in settings):
-        return True
-    if case_file is None:
-        return False
-    return "increments_check" in tomllib.loads(Path(case_file).read_text()).get("numerics", {})
 
 
 @cli.command()

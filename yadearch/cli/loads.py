@@ -16,10 +16,13 @@ from yadearch.cli.options import (
     RIGID,
     argument_type,
     case_options,
+    check_option,
     figures_option,
     refuse_unread,
     resolve_case,
+    with_increments_check,
 )
+from yadearch.results.check_text import check_line
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_lp import LoadCapacity
 from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath
@@ -83,6 +86,7 @@ ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
     "(2-200, by the --engine), written as NAME_influence.csv and its figure",
 )
 @figures_option("the collapse, the load path or the influence line")
+@check_option
 def loads(
     preset_name: str | None,
     case_file: str | None,
@@ -95,6 +99,7 @@ def loads(
     positions: int | None,
     residual: int | None,
     figures: bool,
+    check: bool | None,
 ) -> None:
     """A live load's capacity: the load (N) or acceleration (g) at collapse with the self-weight held, and
     its mechanism ([loads] of the case, or --set live_load=...), by rigid-block limit analysis, on the
@@ -115,6 +120,8 @@ def loads(
             return
     what = _what(case) + (f" after {after_mm:g} mm of support movement" if after_mm else "")
     if load_engine in (STATIC, DEM):
+        if load_engine == STATIC:  # one path: checked with the increments halved unless told otherwise
+            case = with_increments_check(case.with_overrides({"numerics.engine": STATIC}), check, case_file, settings)
         _on_path(case, out, after_mm, what, load_engine, descend_to if descending else None, figures)
         return
     result = api.loads(case, out=out, after_mm=after_mm, figures=figures)
@@ -158,6 +165,10 @@ def _on_path(
         f"{case.name}: {what}: {ENGINE_NAMES[engine]}: {outcome}; rigid blocks: {rigid} "
         f"-> {out}/{case.name}_load_path.json{states}"
     )
+    if path.increments_check is not None:
+        answers = (("capacity", "capacity", unit), ("first loss", "first_loss", unit))
+        said = check_line(path.increments_check, answers)
+        click.echo(said if path.increments_check.get("resolved", True) else f"warning: {said}")
 
 
 def _descent(path: LoadPath) -> str:

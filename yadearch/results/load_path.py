@@ -58,6 +58,7 @@ def load_path_json(result: LoadPath, case: ArchCase) -> dict[str, Any]:
         "rigid_note": result.rigid_note or None,
         "iterations" if result.engine == "static" else "steps": result.iterations,
         **(_descent_json(result) if result.engine == "static" else {}),
+        **({"increments_check": result.increments_check} if result.increments_check is not None else {}),
         "case": case.to_dict(),
     }
 
@@ -152,6 +153,7 @@ def read_load_path(folder: Path, name: str) -> LoadPath:
         engine=data["engine"],
         descent_end=data.get("descending_branch_end") or "",
         descent_hinges=tuple(data.get("descending_branch_hinges", ())),
+        increments_check=data.get("increments_check"),
     )
 
 

@@ -10,19 +10,22 @@ Load control up to the limit point; past it, the descending branch by arc length
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import HELD_SETTINGS, held_multiplier
+from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK
 from yadearch.errors import CaseError, RunFailedError
 from yadearch.model import units
 from yadearch.model.loads import UNITS, VERTICAL, load_displacement
 from yadearch.solve.descending import DESCEND_TO, descend
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
 from yadearch.solve.path import PathResult, PathSettings, first_snap, follow_path, path_settings
+from yadearch.solve.refined import SKIPPED, check_record, halved_loading
 from yadearch.solve.rigid import LimitError
 from yadearch.solve.stages import Outcome
 from yadearch.solve.static_path import StaticLoading
@@ -66,6 +69,8 @@ class LoadPath:
     # the static engine's states in the path's order: its start (the self-weight's or the movement's end),
     # each accepted state, the descending branch's, the collapse's; none from the DEM or read from disk
     states: tuple[StaticState, ...] = field(default=(), repr=False, compare=False)
+    # the static path again with the increments halved (numerics.increments_check; None: not checked)
+    increments_check: dict | None = None
 
 
 def load_settings(scale: float, growth: float) -> PathSettings:
@@ -104,6 +109,7 @@ def static_load_path(
     mode = loading.fold_mode(path.upper) if path.collapsed else None
     collapse = [loading.collapse_state(path.upper)] if path.collapsed else []
     first = first_snap(loading.snaps)
+    check = _load_check(loading, start, path, first) if num.increments_check == HALVED_INCREMENTS_CHECK else None
     descent = descend(loading, path.du, descend_to) if path.collapsed and descend_to is not None else None
     branches = loading.accepted + (descent.states if descent is not None else [])
     return LoadPath(
@@ -121,7 +127,32 @@ def static_load_path(
         descent_end=str(descent.end) if descent is not None else "",
         descent_hinges=descent.hinges if descent is not None else (),
         states=tuple(branches + collapse),
+        increments_check=check,
     )
+
+
+LOAD_ANSWERS = ("capacity", "first_loss")  # a load path's answers in its increments check (N or g)
+
+
+def _load_check(
+    loading: StaticLoading, start: StaticState, path: PathResult, first: tuple[float, float] | None
+) -> dict[str, Any]:
+    """The load path solved again from `start` with its increments halved (`solve.refined`): its outcome,
+    capacity and first loss of stability (N or g), their moves and whether the answer is resolved."""
+    wall0 = time.time()
+    again = halved_loading(loading, start)
+    if again is None:
+        return {"skipped": SKIPPED}
+    checked = follow_path(again, again.settings)
+    ours, theirs = _load_answers(path, first), _load_answers(checked, first_snap(again.snaps))
+    return check_record(ours, theirs, LOAD_ANSWERS, again.iterations, time.time() - wall0)
+
+
+def _load_answers(path: PathResult, first: tuple[float, float] | None) -> dict[str, Any]:
+    """A load path's outcome, capacity and first loss of stability (None where it has none)."""
+    capacity = path.du if path.collapsed else None
+    loss = first_loss_multiplier(path, first)
+    return {"outcome": path.outcome, "capacity": capacity, "first_loss": loss if math.isfinite(loss) else None}
 
 
 def rigid_answer(case: ArchCase, after_mm: float, at_rest: LoadCapacity) -> dict:
