@@ -25,26 +25,18 @@ def _wall(command: list[str]) -> float:
     return time.perf_counter() - start
 
 
+def static_run_command(out: Path, *extra: str) -> list[str]:
+    """`yadearch run --preset set2 --engine static` into `out` (run again), the path solved once
+    (--no-check), with `extra` options."""
+    cli = str(Path(sys.executable).with_name("yadearch"))
+    return [cli, "run", "--preset", "set2", *extra, "--engine", "static", "--no-check", "--out", str(out), "--rerun"]
+
+
 def cli_run_measurement(repeats: int, runs: Path) -> dict[str, Any]:
     """The best wall time of `repeats` runs of each variant, alternated so that a drift of the machine's
     speed falls on all (one warm-up run of each first: numba's cache and the page cache loaded)."""
-    cli = str(Path(sys.executable).with_name("yadearch"))
     commands = {
-        name: [sys.executable, "-c", "pass"]
-        if extra is None
-        else [
-            cli,
-            "run",
-            "--preset",
-            "set2",
-            "--engine",
-            "static",
-            "--no-check",
-            "--out",
-            str(runs / name),
-            "--rerun",
-            *extra,
-        ]
+        name: [sys.executable, "-c", "pass"] if extra is None else static_run_command(runs / name, *extra)
         for name, extra in VARIANTS.items()
     }
     for command in commands.values():

@@ -7,7 +7,6 @@ from __future__ import annotations
 import math
 import shutil
 import subprocess
-import sys
 import time
 from collections.abc import Callable
 from pathlib import Path
@@ -20,6 +19,7 @@ from yadearch.case.config import preset
 from yadearch.results.rundir import read_summary
 from yadearch.results.summary import RunSummary
 from yadearch.static.cost import TARGET_FLOOR_RATIO, solver_cost
+from yadearch.studies.benchmark.cli_run import static_run_command
 from yadearch.studies.benchmark.verdicts import CAMPAIGN_CORES, TARGET_DU_REL, Verdict
 
 MONTECARLO_BUMP_SD_MM = 0.18  # the imperfection study's final case
@@ -46,26 +46,13 @@ def static_measurement(
 ) -> tuple[dict[str, Any], list[Verdict]]:
     """The static engine's costs (runs in `runs`) and their ratios to the DEM runs `dem_set2` and
     `dem_stiff` of the same invocation, with their verdicts."""
-    cli = str(Path(sys.executable).with_name("yadearch"))
     summaries: dict[str, RunSummary] = {}
     cli_wall: dict[str, float] = {}
     for name, extra in (("set2", []), ("kn100", ["--kn", "100"])):
         folder = runs / name
         start = time.time()
         subprocess.run(
-            [
-                cli,
-                "run",
-                "--preset",
-                "set2",
-                *extra,
-                "--engine",
-                "static",
-                "--no-check",
-                "--out",
-                str(folder),
-                "--rerun",
-            ],
+            static_run_command(folder, *extra),
             check=True,
             capture_output=True,
         )
