@@ -235,11 +235,11 @@ def _check_section(table: pd.DataFrame) -> list[str]:
     lines = ["## The static answers with the increments halved", ""]
     if checked.empty:
         return lines + ["Not checked (the static runs ran without numerics.increments_check)."]
+    collapses = int(checked["static_outcome"].eq("collapse").sum())
     lines.append(
-        "Every static run is solved again from its self-weight with the increments halved: "
-        f"{len(checked) - len(moved)} of {len(checked)} keep their outcome, du and du_first within 1 % "
-        f"(resolved; {int(checked['static_outcome'].eq('collapse').sum())} of them collapse); {len(moved)} do not"
-        + (":" if len(moved) else ".")
+        "Every static run is solved again from its self-weight with the increments halved: of the "
+        f"{len(checked)} with an answer ({collapses} collapse), {len(checked) - len(moved)} keep their outcome, du "
+        f"and du_first within 1 % (resolved); {len(moved)} do not" + (":" if len(moved) else ".")
     )
     if moved.empty:
         return lines
