@@ -28,7 +28,7 @@ from yadearch.studies.campaigns.runner import run_campaign
 RUN_TIMEOUT_S = {"static": 600.0, "dem": 3600.0}
 
 
-def run_engine(engine: str, rows: list[dict], runs: Path, jobs: int, folder: str | None = None, **numerics):
+def run_engine(engine: str, rows: list[dict], runs: Path, jobs: int, folder: str | None = None, **numerics: str):
     """One engine's campaign of the atlas (summary-only run folders, with `numerics` besides) in
     RUNS/`folder` (default: the engine's name), resumed where it stopped."""
     settings = {"engine": engine, "run_files": "summary", **numerics}
