@@ -13,7 +13,9 @@ import pytest
 
 from yadearch.case.config import ArchCase, preset
 from yadearch.case.mechanics import runaway_length
+from yadearch.case.plan import check_dem_load
 from yadearch.cli.commands import main
+from yadearch.errors import CaseError
 from yadearch.solve.limit_lp import weight_load
 from yadearch.solve.load_lp import live_forces, load_analysis, load_capacity
 from yadearch.solve.load_path import load_settings, load_the_live_load, static_load_path
@@ -83,3 +85,12 @@ def test_a_lean_beyond_the_horizontal_is_refused_in_one_line(capsys):
     assert main(["loads", "--preset", "set2", "--set", "live_load=vertical", "--set", "load_inclination_deg=95"]) != 0
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "load_inclination_deg" in err[0] and "95" in err[0]
+
+
+def test_the_dem_takes_a_leaning_load_and_a_tandem_before_yade_starts():
+    """The DEM's load path checks its case with the live load set apart (`case.plan.check_dem_load`):
+    a lean and further loads pass, a further load off the arch is refused there."""
+    check_dem_load(_case(LEAN_DEG))
+    check_dem_load(_case(0.0, further_loads=[[60.0, 1.0]]))
+    with pytest.raises(CaseError, match="off the span"):
+        check_dem_load(_case(0.0, further_loads=[[5000.0, 1.0]]))

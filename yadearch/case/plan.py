@@ -115,7 +115,9 @@ def check_dem_load(case: ArchCase) -> None:
             f"numerics.contact_model = {case.numerics.contact_model!r}: the DEM's load path needs the joint "
             "elements (numerics.contact_model = 'joint')"
         )
-    plan_run(case.with_overrides({"live_load": NONE}))  # the time step and the run's other checks
+    live_load(case, arch_geometry(case))  # refuses further loads off the arch
+    unloaded = {"live_load": NONE, "further_loads": [], "load_inclination_deg": 0.0}  # the load grows apart
+    plan_run(case.with_overrides(unloaded))  # the time step and the run's other checks
 
 
 def _check_imperfections(case: ArchCase, geometry: ArchGeometry) -> None:
