@@ -89,8 +89,8 @@ def test_a_lean_beyond_the_horizontal_is_refused_in_one_line(capsys):
 
 def test_the_dem_takes_a_leaning_load_and_a_tandem_before_yade_starts():
     """The DEM's load path checks its case with the live load set apart (`case.plan.check_dem_load`):
-    a lean and further loads pass, a further load off the arch is refused there."""
+    a lean and further loads pass, a further load that could never stand on the arch is refused there."""
     check_dem_load(_case(LEAN_DEG))
     check_dem_load(_case(0.0, further_loads=[[60.0, 1.0]]))
-    with pytest.raises(CaseError, match="off the span"):
+    with pytest.raises(CaseError, match="longer than the span"):
         check_dem_load(_case(0.0, further_loads=[[5000.0, 1.0]]))

@@ -199,30 +199,29 @@ def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:
     if loads.live_load != VERTICAL and (loads.further_loads or loads.load_inclination_deg):
         name = "further_loads" if loads.further_loads else "load_inclination_deg"
         raise CaseError(f"loads.{name} is read with loads.live_load = 'vertical' only, got {loads.live_load!r}")
-    position = load_position(case, geometry)
     return LiveLoad(
         loads.live_load,
-        position=position,
+        position=load_position(case, geometry),
         width=units.mm(loads.load_width_mm),
         toward_right=loads.acceleration_toward == "right",
         shape=loads.load_shape,
         inclination=math.radians(loads.load_inclination_deg),
-        further=further_loads(case, position, geometry.span),
+        further=further_loads(case, geometry.span),
     )
 
 
-def further_loads(case: ArchCase, position: float, span: float) -> tuple[tuple[float, float], ...]:
-    """The case's further loads (`loads.further_loads`) as (offset (m), ratio), the first load's centre at
-    `position` on a `span` (m); CaseError for a ratio out of (0, MAX_LOAD_RATIO] or a centre off the span."""
+def further_loads(case: ArchCase, span: float) -> tuple[tuple[float, float], ...]:
+    """The case's further loads (`loads.further_loads`) as (offset (m), ratio) on a `span` (m); CaseError
+    for a ratio out of (0, MAX_LOAD_RATIO] or an offset longer than the span (one beyond a springing at
+    this position goes to the support, as an axle on the approach does)."""
     found = []
     for k, (offset_mm, ratio) in enumerate(case.loads.further_loads, start=1):
         if not 0.0 < ratio <= MAX_LOAD_RATIO:
             raise CaseError(f"loads.further_loads row {k}: ratio must be in (0, {MAX_LOAD_RATIO:g}], got {ratio:g}")
-        centre = position + units.mm(offset_mm)
-        if not 0.0 <= centre <= span:
+        if abs(units.mm(offset_mm)) > span:  # beyond a springing it stands on the approach (the support)
             raise CaseError(
-                f"loads.further_loads row {k}: its centre at {units.to_mm(centre):g} mm from the left springing "
-                f"is off the span (0 to {units.to_mm(span):g} mm); offset_mm must keep it on the arch"
+                f"loads.further_loads row {k}: offset_mm {offset_mm:g} is longer than the span "
+                f"({units.to_mm(span):g} mm): that load could never stand on the arch"
             )
         found.append((units.mm(offset_mm), float(ratio)))
     return tuple(found)
