@@ -64,15 +64,25 @@ def test_the_live_load_adds_its_own_stiffness_to_the_tangent():
     assert np.abs(stiffness - differences).max() < 1e-5 * np.abs(stiffness).max()  # ... and exact
 
 
-def test_the_supports_carry_the_weights_and_the_load_at_every_state():
-    loading = _loaded({**SMALL, **QUARTER})
+LEAN = math.radians(30.0)
+CARRIED = {  # the loads' total per unit multiplier, as the supports take it (x, y up): 1 N down, ...
+    "quarter-span load": (QUARTER, (0.0, 1.0)),
+    "leaning 30 deg": ({**QUARTER, "load_inclination_deg": 30.0}, (-math.sin(LEAN), math.cos(LEAN))),
+    "tandem and a half": ({**QUARTER, "further_loads": [[60.0, 1.0], [120.0, 0.5]]}, (0.0, 2.5)),
+}
+
+
+@pytest.mark.parametrize("name", CARRIED)
+def test_the_supports_carry_the_weights_and_the_load_at_every_state(name):
+    overrides, per_multiplier = CARRIED[name]
+    loading = _loaded({**SMALL, **overrides})
     follow_path(loading, loading.settings)
     arch = loading.arch
     weight = arch.weight[1:-1].sum()
     assert len(loading.accepted) >= 5
     for state in loading.accepted:
         onto_supports = state.forces.block_force[[0, -1]].sum(axis=0)  # the arch's push on its supports
-        expected = np.array([0.0, weight]) + state.lam * np.array([0.0, 1.0])  # 1 N down, x the multiplier
+        expected = np.array([0.0, weight]) + state.lam * np.array(per_multiplier)
         assert np.allclose(-onto_supports, expected, atol=1e-7 * weight), (state.lam, onto_supports)
 
 

@@ -30,10 +30,14 @@ CASES = [
     small({"embrace_deg": 180.0, "n_voussoirs": 13, "thickness_mm": 80.0}, live_load="horizontal_acceleration"),
     small({"n_voussoirs": 15}, live_load="vertical", load_position_over_span=0.25),
     small({"n_voussoirs": 15}, live_load="vertical", load_position_over_span=0.4, load_width_mm=50.0),
+    small({"n_voussoirs": 15}, live_load="vertical", load_inclination_deg=-30.0),  # leaning (a raking force)
+    small({"n_voussoirs": 15}, live_load="vertical", load_inclination_deg=30.0),
+    small({"n_voussoirs": 15}, live_load="vertical", further_loads=[[60.0, 1.0]]),  # a tandem axle
 ]
+CASE_IDS = ["semicircle-t40-acc", "semicircle-t80-acc", "point-0.25", "spread", "lean-30", "lean+30", "tandem"]
 
 
-@pytest.mark.parametrize("case", CASES, ids=["semicircle-t40-acc", "semicircle-t80-acc", "point-0.25", "spread"])
+@pytest.mark.parametrize("case", CASES, ids=CASE_IDS)
 def test_the_lp_multiplier_is_the_least_mechanism_multiplier(case):
     arch = rigid_arch(case)
     live = live_forces(case, arch)
