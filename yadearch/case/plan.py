@@ -70,7 +70,7 @@ def plan_run(case: ArchCase) -> RunPlan:
             f"{case.loads.fill_depth_mm:g}) needs the joint elements (numerics.contact_model = 'joint')"
         )
     geometry = arch_geometry(case)  # refuses an arch that cannot be built (case/shape.py)
-    live_load(case, geometry)  # refuses further loads off the arch or with a load that takes none
+    live_load(case, geometry)  # refuses further loads that could never stand on the arch, or beside no vertical load
     _check_imperfections(case, geometry)
     movement = case_movement(case, geometry)  # refuses a movement that cannot be followed (a pivot on the path's point)
     if num.engine == "static":
@@ -115,7 +115,7 @@ def check_dem_load(case: ArchCase) -> None:
             f"numerics.contact_model = {case.numerics.contact_model!r}: the DEM's load path needs the joint "
             "elements (numerics.contact_model = 'joint')"
         )
-    live_load(case, arch_geometry(case))  # refuses further loads off the arch
+    live_load(case, arch_geometry(case))  # refuses further loads that could never stand on the arch
     unloaded = {"live_load": NONE, "further_loads": [], "load_inclination_deg": 0.0}  # the load grows apart
     plan_run(case.with_overrides(unloaded))  # the time step and the run's other checks
 

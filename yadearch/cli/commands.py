@@ -9,17 +9,16 @@ from typing import TYPE_CHECKING
 
 import click
 
+from yadearch.cli.check import check_option, with_increments_check
 from yadearch.cli.lazy import LAZY_COMMANDS, LazyGroup
 from yadearch.cli.options import (
     OUT_FOLDER,
     RIGID,
     argument_type,
     case_options,
-    check_option,
     figures_option,
     refuse_unread,
     resolve_case,
-    with_increments_check,
 )
 from yadearch.errors import YadearchError
 

@@ -11,16 +11,15 @@ from yadearch import api
 from yadearch.api.live_loads import loads_file
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import load_place
+from yadearch.cli.check import check_option, with_increments_check
 from yadearch.cli.options import (
     OUT_FOLDER,
     RIGID,
     argument_type,
     case_options,
-    check_option,
     figures_option,
     refuse_unread,
     resolve_case,
-    with_increments_check,
 )
 from yadearch.results.check_text import check_line
 from yadearch.solve.descending import DESCEND_TO

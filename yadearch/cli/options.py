@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import click
@@ -26,23 +25,12 @@ ENGINE_META = "yadearch_engine"  # where --engine leaves its choice for `resolve
 MOVEMENT_KEY = "movement"  # --set movement=NAME: a named support movement (case.support.MOVEMENT_PRESETS)
 
 
-CHECK_HELP = (
-    "static engine: solve the path again with the increments halved and say whether the answer moves by "
-    "more than 1 % (numerics.increments_check; twice the solver's time)  [default: check, unless the case "
-    "file or --set says numerics.increments_check]"
-)
-
-
-def check_option(function: Callable) -> Callable:
-    """--check/--no-check: the static engine's increments check (`with_increments_check`)."""
-    return click.option("--check/--no-check", default=None, help=CHECK_HELP)(function)
-
-
 def resolve_case(
     preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...]
 ) -> ArchCase:
     """The case from a preset or a TOML file, with `--kn` and `--set key=value` overrides applied."""
     from yadearch.case.config import load_case, preset
+    from yadearch.case.numerics_section import static_only_refusal
     from yadearch.case.support import movement_overrides
     from yadearch.results.summary import STATIC
     from yadearch.studies.campaigns.grid import parse_scalar
@@ -68,12 +56,9 @@ def resolve_case(
     resolved = case.with_overrides(overrides) if overrides else case
     if resolved.numerics.engine == STATIC:
         _refuse_dem_numerics(list(overrides))
-    else:
-        from yadearch.case.numerics_section import static_only_refusal
-
-        refused = static_only_refusal(resolved.numerics)
-        if refused:
-            raise click.UsageError(refused)
+    refused = static_only_refusal(resolved.numerics)  # none with the static engine
+    if refused:
+        raise click.UsageError(refused)
     return resolved
 
 
@@ -278,31 +263,3 @@ class OutputPath(click.ParamType):
 
 
 OUT_FOLDER, OUT_FILE = OutputPath(FOLDER), OutputPath(FILE)
-
-
-def with_increments_check(
-    case: ArchCase, check: bool | None, case_file: str | None, settings: tuple[str, ...]
-) -> ArchCase:
-    """`case` with the static engine's increments check as --check/--no-check asks; without either, on
-    unless the case file or a --set names numerics.increments_check (its value is kept). Other engines:
-    `case` as it is."""
-    from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK, NO_INCREMENTS_CHECK, STATIC_ENGINE
-
-    if case.numerics.engine != STATIC_ENGINE:
-        return case
-    if check is None:
-        if _states_the_check(case_file, settings):
-            return case
-        check = True
-    return case.with_overrides({"numerics.increments_check": HALVED_INCREMENTS_CHECK if check else NO_INCREMENTS_CHECK})
-
-
-def _states_the_check(case_file: str | None, settings: tuple[str, ...]) -> bool:
-    """Whether the case file or a --set names numerics.increments_check (then `run` keeps its value)."""
-    import tomllib
-
-    if any(setting.split("=", 1)[0].split(".")[-1] == "increments_check" for setting in settings):
-        return True
-    if case_file is None:
-        return False
-    return "increments_check" in tomllib.loads(Path(case_file).read_text()).get("numerics", {})
