@@ -2,7 +2,8 @@
 
 The same arithmetic as `joint_law._joint_kernel`, term for term, carried in dual numbers
 (`model.dual`): each joint's force on its right block and the torques on both blocks come with their
-exact derivatives with respect to the six degrees of freedom of its two blocks. Shear is the same
+exact derivatives with respect to the six degrees of freedom of its two blocks (an imperfect joint's
+overlap with its derivatives in closed form, `model.gapped_overlap`). Shear is the same
 incremental law, the slip being the blocks' motion since the last accepted equilibrium state
 (backward Euler: the return to the Coulomb cap is made once per load increment, whatever the
 Newton iterations in between), so that the DEM's `dt` x velocity becomes that motion.
@@ -15,7 +16,8 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from yadearch.model.dual import add, const, dabs, dcos, div, dmax, dmin, dsin, dtan, mul, scale, shift, sub, var
+from yadearch.model.dual import add, const, dabs, dcos, div, dsin, dtan, mul, scale, shift, sub, var
+from yadearch.model.gapped_overlap import gapped_overlap
 from yadearch.model.joint_law import JointForces, JointLaw
 from yadearch.model.joint_table import JointTable
 
@@ -85,34 +87,6 @@ def _perfect_overlap(p0, p1, start, shared):
 
 
 @njit(cache=True)
-def _gapped_overlap(p0, slope, start, shared, fraction, gap, projected_length):
-    """`joint_law._gapped_overlap` in dual numbers."""
-    area, moment, touching = const(0.0), const(0.0), const(0.0)
-    end = add(start, shared)
-    for k in range(fraction.shape[0] - 1):
-        t0, t1 = mul(const(fraction[k]), projected_length), mul(const(fraction[k + 1]), projected_length)
-        a, b = dmax(t0, start), dmin(t1, end)
-        if b[0] <= a[0]:
-            continue
-        rate = div(const(gap[k + 1] - gap[k]), sub(t1, t0))
-        ua = sub(sub(p0, mul(slope, sub(a, start))), shift(mul(rate, sub(a, t0)), gap[k]))
-        ub = sub(sub(p0, mul(slope, sub(b, start))), shift(mul(rate, sub(b, t0)), gap[k]))
-        if ua[0] <= 0.0 and ub[0] <= 0.0:
-            continue
-        if ua[0] < 0.0:
-            a, ua = add(a, div(mul(sub(b, a), ua), sub(ua, ub))), const(0.0)
-        elif ub[0] < 0.0:
-            b, ub = add(a, div(mul(sub(b, a), ua), sub(ua, ub))), const(0.0)
-        width = sub(b, a)
-        area = add(area, scale(mul(width, add(ua, ub)), 0.5))
-        weighted = add(mul(ua, add(scale(a, 2.0), b)), mul(ub, add(a, scale(b, 2.0))))
-        moment = add(moment, scale(mul(width, weighted), 1.0 / 6.0))
-        touching = add(touching, width)
-    centroid = div(moment, area) if area[0] > 0.0 else const(0.0)
-    return area, centroid, touching
-
-
-@njit(cache=True)
 def tangent_kernel(
     left,
     right,
@@ -165,7 +139,7 @@ def tangent_kernel(
         if not (shared[0] > 0.0 and (p0[0] > 0.0 or p1[0] > 0.0)):
             continue
         if imperfect[j]:
-            area, centroid, touching = _gapped_overlap(p0, slope, start, shared, gap_fraction[j], gap[j], projected)
+            area, centroid, touching = gapped_overlap(p0, slope, start, shared, gap_fraction[j], gap[j], projected)
             if area[0] <= 0.0:
                 continue
         else:

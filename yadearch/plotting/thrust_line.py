@@ -19,6 +19,7 @@ from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.hinges import paper_labels
+from yadearch.model.joints import rotate
 from yadearch.plotting.blocks import block_legend_entries, draw_blocks
 from yadearch.plotting.hinge_marks import mark_hinge, place_hinge_labels
 from yadearch.plotting.house import (
@@ -32,7 +33,6 @@ from yadearch.plotting.house import (
     save_figure,
 )
 from yadearch.solve.limit_result import LimitResult
-from yadearch.solve.rigid import rotate
 
 M_TO_MM = 1e3
 

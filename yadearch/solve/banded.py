@@ -3,8 +3,8 @@ its two neighbours, so with three degrees of freedom a block K is banded, five d
 and is kept in LAPACK's general band storage (ab[BAND + i - j, j] = K[i, j]; a principal block of K
 is a slice of its columns). Solves are LAPACK's banded LU with partial pivoting (dgbtf2, dgbtrs)
 compiled with numba, called thousands of times a run without scipy's checks and copies; the stability
-test by a banded Cholesky factorisation and the softest mode by a banded eigensolver (scipy) run once
-an accepted state."""
+test by a banded Cholesky factorisation (compiled too) and the softest mode by a banded eigensolver
+(scipy) where a state's tables or a saddle's kick need it."""
 
 from __future__ import annotations
 
@@ -103,12 +103,28 @@ def band_solve(ab, b, shift):
     return x, False
 
 
-def positive_definite(ab: np.ndarray) -> bool:
-    """Whether the symmetric part of K is positive definite (its Cholesky factor exists)."""
-    try:
-        scipy.linalg.cholesky_banded(symmetric_upper(ab), check_finite=False)
-    except np.linalg.LinAlgError:
-        return False
+@njit(cache=True)
+def positive_definite(ab):
+    """Whether the symmetric part of K is positive definite: its banded Cholesky factorisation (LAPACK's
+    dpbtf2 on the upper band, compiled) meets no pivot that is not positive."""
+    n = ab.shape[1]
+    upper = np.zeros((BAND + 1, n))
+    for k in range(min(BAND, n - 1) + 1):
+        for c in range(k, n):
+            upper[BAND - k, c] = 0.5 * (ab[BAND - k, c] + ab[BAND + k, c - k])
+    for j in range(n):
+        pivot = upper[BAND, j]
+        if not pivot > 0.0:
+            return False
+        pivot = np.sqrt(pivot)
+        upper[BAND, j] = pivot
+        below = min(BAND, n - 1 - j)
+        for c in range(1, below + 1):  # row j of the factor
+            upper[BAND - c, j + c] /= pivot
+        for q in range(1, below + 1):  # the trailing block less the row's outer product
+            row_q = upper[BAND - q, j + q]
+            for p in range(1, q + 1):
+                upper[BAND - (q - p), j + q] -= upper[BAND - p, j + p] * row_q
     return True
 
 

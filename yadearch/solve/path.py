@@ -144,7 +144,7 @@ def extrapolate(lams: list[float], values: list[np.ndarray], target: float) -> n
     """The Lagrange polynomial through `values` at the distinct path positions `lams`, at `target`:
     where the path's last states put the next (a line through two, a parabola through three)."""
     weights = [
-        np.prod([(target - lams[m]) / (lams[k] - lams[m]) for m in range(len(lams)) if m != k])
+        math.prod((target - lams[m]) / (lams[k] - lams[m]) for m in range(len(lams)) if m != k)
         for k in range(len(lams))
     ]
     return sum(w * v for w, v in zip(weights, values))

@@ -20,6 +20,7 @@ from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.model.backfill import backfill_points
 from yadearch.model.geometry import ArchGeometry, block_volume
+from yadearch.model.joints import rotate
 from yadearch.model.loads import LoadPoints, live_load_points
 from yadearch.model.movement import Motion, Movement, SupportMotion
 
@@ -30,13 +31,6 @@ TOUCH_FRACTION = 1e-7  # corners closer than this fraction of the thickness touc
 
 class LimitError(YadearchError):
     """The arch admits no equilibrium at rest, or moves in a way the limit analysis does not follow."""
-
-
-def rotate(vectors: np.ndarray, angles: np.ndarray | float) -> np.ndarray:
-    """Rotate 2-D `vectors` (..., 2) about z by `angles` (rad), broadcast over the leading axes."""
-    c, s = np.cos(angles), np.sin(angles)
-    x, y = vectors[..., 0], vectors[..., 1]
-    return np.stack([c * x - s * y, s * x + c * y], axis=-1)
 
 
 def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:

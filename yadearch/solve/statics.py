@@ -24,11 +24,12 @@ from yadearch.model.geometry import ArchGeometry, block_volume
 from yadearch.model.joint_law import JointLaw
 from yadearch.model.joint_table import JointTable, joint_table
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, joint_tangent
+from yadearch.model.joints import rotate
 from yadearch.model.loads import block_loads, live_load_points, turned_moments
 from yadearch.model.movement import Movement
 from yadearch.solve import banded
 from yadearch.solve.newton_kernel import descent_kernel, newton_kernel
-from yadearch.solve.rigid import polygon_centroid, rotate
+from yadearch.solve.rigid import polygon_centroid
 
 WARM_UP_VOUSSOIRS = 3  # the smallest arch that compiles every kernel
 
