@@ -35,8 +35,8 @@ def rotate(vectors: np.ndarray, angles: np.ndarray | float) -> np.ndarray:
     """Rotate 2-D `vectors` (..., 2) about z by `angles` (rad), element by element (broadcast over the
     leading axes)."""
     if isinstance(angles, float) and np.ndim(vectors) == 1:  # one point: the path places supports so
-        c, s = math.cos(angles), math.sin(angles)  # hundreds of times a run
-        return np.array([c * vectors[0] - s * vectors[1], s * vectors[0] + c * vectors[1]])
+        cos, sin = math.cos(angles), math.sin(angles)  # hundreds of times a run
+        return np.array([cos * vectors[0] - sin * vectors[1], sin * vectors[0] + cos * vectors[1]])
     c, s = np.cos(angles), np.sin(angles)
     x, y = vectors[..., 0], vectors[..., 1]
     return np.stack([c * x - s * y, s * x + c * y], axis=-1)

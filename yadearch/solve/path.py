@@ -147,7 +147,7 @@ def extrapolate(lams: list[float], values: list[np.ndarray], target: float) -> n
         math.prod((target - lams[m]) / (lams[k] - lams[m]) for m in range(len(lams)) if m != k)
         for k in range(len(lams))
     ]
-    return sum(w * v for w, v in zip(weights, values))
+    return np.asarray(sum(w * v for w, v in zip(weights, values)))
 
 
 def path_settings(numerics: NumericsConfig, max_displacement_mm: float) -> PathSettings:
