@@ -1,7 +1,8 @@
 """The compiled banded LU (solve.banded.band_solve) against LAPACK's through scipy: the same solution
 (to round-off: bitwise on Debian's stack, within an ulp or two where PyPI's OpenBLAS orders its sums
 otherwise), pivoting where the diagonal is small, singular matrices told, and the shift added to the
-diagonal."""
+diagonal; the compiled Cholesky's verdict and the inverse iteration's smallest eigenvalue against
+LAPACK's factorisation and eigensolver."""
 
 from __future__ import annotations
 
@@ -46,3 +47,39 @@ def test_a_singular_tangent_is_told():
         banded.solve(banded.from_dense(dense), np.ones(3))
     _, singular = banded.band_solve(banded.from_dense(dense), np.ones(3), 0.0)
     assert singular
+
+
+def symmetric_part(dense: np.ndarray) -> np.ndarray:
+    return 0.5 * (dense + dense.T)
+
+
+@pytest.mark.parametrize("n", [3, 16, 159])
+def test_the_stability_verdict_is_lapacks_cholesky(n):
+    rng = np.random.default_rng(100 + n)
+    verdicts = []
+    for _ in range(40):
+        dense = random_band(n, rng) + rng.normal(3.0, 2.0) * np.eye(n)  # about half positive definite
+        try:
+            scipy.linalg.cholesky(symmetric_part(dense))
+            expected = True
+        except np.linalg.LinAlgError:
+            expected = False
+        assert banded.positive_definite(banded.from_dense(dense)) == expected
+        verdicts.append(expected)
+    assert any(verdicts) and not all(verdicts)
+
+
+@pytest.mark.parametrize("n", [3, 16, 159])
+def test_the_smallest_eigenvalue_is_the_eigensolvers(n):
+    """Stable matrices by inverse iteration, others by the eigensolver: the same value to round-off of the
+    matrix's norm."""
+    rng = np.random.default_rng(200 + n)
+    iterated = 0
+    for shift in (12.0, 0.0):  # positive definite (inverse iteration), then mostly indefinite
+        for _ in range(10):
+            dense = random_band(n, rng) + shift * np.eye(n)
+            expected = np.linalg.eigvalsh(symmetric_part(dense))[0]
+            found = banded.smallest_eigenvalue(banded.from_dense(dense))
+            assert found == pytest.approx(expected, rel=1e-9, abs=1e-12 * np.abs(dense).max() * n)
+            iterated += expected > 0.0
+    assert iterated >= 10

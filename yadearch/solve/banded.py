@@ -9,7 +9,6 @@ test by a banded Cholesky factorisation (compiled too) and the softest mode by a
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg
 from numba import njit
 
 BAND = 5  # diagonals either side of the main one: 3 degrees of freedom a block, neighbours only
@@ -104,9 +103,9 @@ def band_solve(ab, b, shift):
 
 
 @njit(cache=True)
-def positive_definite(ab):
-    """Whether the symmetric part of K is positive definite: its banded Cholesky factorisation (LAPACK's
-    dpbtf2 on the upper band, compiled) meets no pivot that is not positive."""
+def cholesky_upper(ab):
+    """(U, success): the banded Cholesky factor S = U^T U of the symmetric part S of K (LAPACK's dpbtf2
+    on the upper band, compiled), success False at the first pivot that is not positive."""
     n = ab.shape[1]
     upper = np.zeros((BAND + 1, n))
     for k in range(min(BAND, n - 1) + 1):
@@ -115,7 +114,7 @@ def positive_definite(ab):
     for j in range(n):
         pivot = upper[BAND, j]
         if not pivot > 0.0:
-            return False
+            return upper, False
         pivot = np.sqrt(pivot)
         upper[BAND, j] = pivot
         below = min(BAND, n - 1 - j)
@@ -125,18 +124,68 @@ def positive_definite(ab):
             row_q = upper[BAND - q, j + q]
             for p in range(1, q + 1):
                 upper[BAND - (q - p), j + q] -= upper[BAND - p, j + p] * row_q
-    return True
+    return upper, True
+
+
+@njit(cache=True)
+def positive_definite(ab):
+    """Whether the symmetric part of K is positive definite (its Cholesky factor exists)."""
+    return cholesky_upper(ab)[1]
+
+
+INVERSE_ITERATIONS = 400  # inverse iterations before the eigensolver is asked instead
+INVERSE_RESIDUAL = 1e-9  # |S x - value x| below this x |value| ends them: the value's error is of its square
 
 
 def smallest_eigenvalue(ab: np.ndarray) -> float:
-    """The smallest eigenvalue of the symmetric part of K (N/m for a stiffness): > 0 when stable."""
+    """The smallest eigenvalue of the symmetric part of K (N/m for a stiffness): > 0 when stable. Where K
+    is stable, by inverse iteration on its Cholesky factor (solves of 1-2 us); elsewhere, or if that does
+    not settle, by LAPACK's banded eigensolver."""
+    factor, stable = cholesky_upper(ab)
+    if stable:
+        value, settled = _inverse_iteration(ab, factor, INVERSE_ITERATIONS, INVERSE_RESIDUAL)
+        if settled:
+            return float(value)
+    import scipy.linalg  # here: a static run from the command line need not import it (docs/speed.md)
+
     values = scipy.linalg.eig_banded(
         symmetric_upper(ab), eigvals_only=True, select="i", select_range=(0, 0), check_finite=False
     )
     return float(values[0])
 
 
+@njit(cache=True)
+def _inverse_iteration(ab, factor, iterations, residual):
+    """(the smallest eigenvalue of the symmetric part S = U^T U of K, settled): x <- S^-1 x from a fixed
+    start and its Rayleigh quotient, until |S x - value x| is below `residual` x |value|."""
+    n = factor.shape[1]
+    x = 1.0 + 0.5 * np.sin(np.arange(1.0, n + 1.0))  # a fixed start no eigenvector is orthogonal to in practice
+    x /= np.sqrt(x @ x)
+    for _ in range(iterations):
+        y = x.copy()
+        for j in range(n):  # U^T z = x
+            for i in range(max(0, j - BAND), j):
+                y[j] -= factor[BAND + i - j, j] * y[i]
+            y[j] /= factor[BAND, j]
+        for i in range(n - 1, -1, -1):  # U y = z
+            for j in range(i + 1, min(n, i + BAND + 1)):
+                y[i] -= factor[BAND + i - j, j] * y[j]
+            y[i] /= factor[BAND, i]
+        x = y / np.sqrt(y @ y)
+        sx = np.zeros(n)  # S x = (K x + K^T x) / 2 from the general band
+        for j in range(n):
+            for i in range(max(0, j - BAND), min(n, j + BAND + 1)):
+                sx[i] += 0.5 * ab[BAND + i - j, j] * x[j]
+                sx[j] += 0.5 * ab[BAND + i - j, j] * x[i]
+        value = x @ sx
+        if np.sqrt(((sx - value * x) ** 2).sum()) <= residual * abs(value):
+            return value, True
+    return np.nan, False
+
+
 def softest_mode(ab: np.ndarray) -> tuple[float, np.ndarray]:
     """The smallest eigenvalue of the symmetric part of K and its eigenvector."""
+    import scipy.linalg
+
     values, vectors = scipy.linalg.eig_banded(symmetric_upper(ab), select="i", select_range=(0, 0), check_finite=False)
     return float(values[0]), vectors[:, 0]

@@ -1,4 +1,4 @@
-"""Equilibrium of the blocks at a fixed support position (pure numpy/scipy): Newton's method with the
+"""Equilibrium of the blocks at a fixed support position (numpy and numba): Newton's method with the
 consistent tangent and a backtracking line search, and a descent for where Newton cannot go.
 
 The descent takes damped Newton steps (K + mu I) d = R and keeps a step only where it releases
@@ -10,11 +10,9 @@ timeout.
 
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass, replace
 
 import numpy as np
-import scipy.linalg
 
 from yadearch.model.block_state import as_joints
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent
@@ -68,10 +66,6 @@ class Equilibrium:
         """This state with `slip` (m, per joint) added to its joints' sliding (that of earlier goes)."""
         forces = replace(self.joints.forces, plastic_slip=self.joints.forces.plastic_slip + slip)
         return replace(self, joints=replace(self.joints, forces=forces))
-
-
-# near a fold the tangent is nearly singular by nature: the line search and the descent judge the step
-warnings.filterwarnings("ignore", category=scipy.linalg.LinAlgWarning, module=__name__)
 
 
 class Solver:
@@ -137,7 +131,8 @@ class Solver:
     ) -> Equilibrium | None:
         """Newton from `u0` (supports already placed); None if it does not converge. The iterations
         run compiled (`solve.newton_kernel`): Newton's step capped at `max_step`, halved up to
-        BACKTRACKS times until |R|^2 falls by SUFFICIENT_DECREASE x the step's fraction."""
+        BACKTRACKS times (INDEFINITE_BACKTRACKS from an indefinite tangent) until |R|^2 falls by
+        SUFFICIENT_DECREASE x the step's fraction."""
         u, loops, evaluations, success, state = NEWTON_KERNEL(
             self._problem(u_before, shear_before, gravity, multiplier),
             u0,

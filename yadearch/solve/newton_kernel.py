@@ -10,14 +10,19 @@ from numba import njit
 
 from yadearch.model.block_state import free_state_kernel
 from yadearch.model.joint_tangent import BLOCK_DOFS
-from yadearch.solve.banded import band_solve
+from yadearch.solve.banded import band_solve, positive_definite
+
+INDEFINITE_BACKTRACKS = 3  # halvings of a step from an indefinite tangent before Newton gives up: past
+# a fold it stalls in the fold's ghost (|R| stuck near 1e-4 N for 4-20 iterations of 12 halvings each),
+# and an equilibrium it reached there would be unstable, which continuation rejects (docs/speed.md)
 
 
 @njit(cache=True)
 def newton_kernel(problem, u0, iterations, backtracks, sufficient_decrease):
     """Newton from `u0` with a backtracking line search on `problem` (`_evaluate`): (u, loops,
     evaluations, success, state), the state being `free_state_kernel`'s outputs at u; loops counts
-    the iterations begun, as the interpreted loop counts them."""
+    the iterations begun, as the interpreted loop counts them. A step whose line search has halved it
+    INDEFINITE_BACKTRACKS times from an indefinite tangent fails the solve."""
     u = u0.copy()
     state = _evaluate(problem, u)
     converged, max_step = problem[7], problem[8]
@@ -36,7 +41,9 @@ def newton_kernel(problem, u0, iterations, backtracks, sufficient_decrease):
         merit, alpha = residual @ residual, 1.0
         accepted = False
         trial = u.copy()
-        for _ in range(backtracks):
+        for halvings in range(backtracks):
+            if halvings == INDEFINITE_BACKTRACKS and not positive_definite(stiffness):
+                break  # past a fold: no stable equilibrium that Newton's steps could reach
             trial = u.copy()
             trial[first : first + d.shape[0]] += alpha * d
             trial_state = _evaluate(problem, trial)
