@@ -21,7 +21,7 @@ from yadearch.studies.loads.static import PAPER_LOADS, QUARTER_SPAN
 
 ENGINES_KN = 5.2  # N/mm3: the paper's set 2, where both engines are quick
 SET1_KN = 0.25  # N/mm3: the paper's set 1, the softest joints
-SETTLED_MM = 22.0  # a settlement before the load: about a quarter of set 2's static du (87.99 mm)
+SETTLEMENTS_MM = (22.0, 44.0, 66.0)  # before the load: about 1/4, 1/2 and 3/4 of set 2's static du (87.99 mm)
 FILLS_MM = (20.0, 50.0)  # backfill over the paper arch's crown under its quarter-span load
 FILL_K = 0.3  # the fill's lateral pressure coefficient there
 PAPER_NAMES = ("paper_quarter_span", "paper_mid_span", "paper_acceleration")  # of PAPER_LOADS, in order
@@ -38,7 +38,7 @@ NUMERICS_VARIANTS = (  # (setting, factor): the loading rate (it follows the sup
 def engine_cases() -> list[tuple[ArchCase, float]]:
     """The cases of the comparison and the settlement (mm) each is loaded after: the ten small arches of
     the rigid check and the paper's arch under its three loads at kn 5.2, the quarter-span load at kn
-    0.25, after a settlement of SETTLED_MM and under each backfill of FILLS_MM."""
+    0.25, after each settlement of SETTLEMENTS_MM and under each backfill of FILLS_MM."""
     cases = [(case.with_overrides({"interface.kn_N_per_mm3": ENGINES_KN}), 0.0) for case in check_cases()]
     paper = paper_arch()
     for overrides, name in zip(PAPER_LOADS.values(), PAPER_NAMES):
@@ -46,7 +46,8 @@ def engine_cases() -> list[tuple[ArchCase, float]]:
     quarter = {**PAPER_LOADS[QUARTER_SPAN], "interface.kn_N_per_mm3": ENGINES_KN}
     set1 = paper.with_overrides({**quarter, "name": "paper_quarter_span_set1", "interface.kn_N_per_mm3": SET1_KN})
     cases.append((set1, 0.0))
-    cases.append((paper.with_overrides({**quarter, "name": f"paper_quarter_span_after_{SETTLED_MM:g}mm"}), SETTLED_MM))
+    for settled in SETTLEMENTS_MM:
+        cases.append((paper.with_overrides({**quarter, "name": f"paper_quarter_span_after_{settled:g}mm"}), settled))
     for depth in FILLS_MM:
         filled = {**quarter, "fill_depth_mm": depth, "fill_lateral_coefficient": FILL_K}
         cases.append((paper.with_overrides({**filled, "name": f"paper_quarter_span_fill_{depth:g}mm"}), 0.0))
