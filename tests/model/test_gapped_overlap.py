@@ -87,3 +87,24 @@ def test_closed_form_matches_the_dual_numbers_oracle(profiles, pressing):
             scale_ = np.abs(want[1:]).max()
             np.testing.assert_allclose(got[1:], want[1:], rtol=0.0, atol=DERIVATIVE_TOLERANCE * scale_)
     assert compared > TRIALS // 2
+
+
+def _finite_difference(inputs: tuple, fraction: np.ndarray, gap: np.ndarray, which: int, step: float) -> np.ndarray:
+    """Central differences of (area, centroid, touching) along input `which`'s own direction."""
+    values = []
+    for sign in (1.0, -1.0):
+        moved = tuple((x[0] + sign * step if i == which else x[0], *x[1:]) for i, x in enumerate(inputs))
+        found = gapped_overlap(*moved[:4], fraction, gap, moved[4])
+        values.append(np.array([found[0][0], found[1][0], found[2][0]]))
+    return (values[0] - values[1]) / (2.0 * step)
+
+
+def test_a_face_that_opens_exactly_at_a_node():
+    """The overlap 0 exactly at the profile's middle node, rising to the right: the touching part's left
+    end is that node, and it moves with every input as finite differences say."""
+    fraction, gap = np.array([0.0, 0.5, 1.0]), np.array([0.2, 0.0, -0.2])
+    unit = (0.0,) * 6
+    inputs = ((0.0, 1.0, *unit[1:]), (0.0, *unit), (0.1, *unit), (0.8, *unit), (1.0, *unit))
+    derivative = gapped_overlap(*inputs[:4], fraction, gap, inputs[4])[2][1]  # d touching / d p0
+    assert derivative == pytest.approx(_finite_difference(inputs, fraction, gap, 0, 1e-7)[2], rel=1e-6)
+    assert derivative == pytest.approx(2.5)  # 1 / (the overlap's slope along the face, 0.4 / 0.5)

@@ -50,11 +50,13 @@ def test_a_singular_tangent_is_told():
 
 
 def symmetric_part(dense: np.ndarray) -> np.ndarray:
+    """The symmetric part of a matrix, whose definiteness decides stability."""
     return 0.5 * (dense + dense.T)
 
 
 @pytest.mark.parametrize("n", [3, 16, 159])
 def test_the_stability_verdict_is_lapacks_cholesky(n):
+    """The compiled Cholesky says positive definite exactly where LAPACK's factorisation exists."""
     rng = np.random.default_rng(100 + n)
     verdicts = []
     for _ in range(40):
@@ -69,17 +71,44 @@ def test_the_stability_verdict_is_lapacks_cholesky(n):
     assert any(verdicts) and not all(verdicts)
 
 
+def _settles(ab: np.ndarray) -> bool:
+    """Whether inverse iteration on a stable matrix settles (the eigensolver is not asked)."""
+    factor, stable = banded.cholesky_upper(ab)
+    floor = banded.ROUNDOFF_RESIDUAL * float(np.abs(ab).sum(axis=0).max())
+    settled = banded._inverse_iteration(ab, factor, banded.INVERSE_ITERATIONS, banded.INVERSE_RESIDUAL, floor)[1]
+    return stable and settled
+
+
+def soft_mode(dense: np.ndarray, ratio: float) -> np.ndarray:
+    """The symmetric part of `dense` shifted so that its smallest eigenvalue is `ratio` of the gap to the
+    next: a stable state with one soft mode, as an arch's tangent has one near a fold."""
+    symmetric = symmetric_part(dense)
+    values = np.linalg.eigvalsh(symmetric)
+    return symmetric + (ratio * (values[1] - values[0]) - values[0]) * np.eye(len(dense))
+
+
 @pytest.mark.parametrize("n", [3, 16, 159])
 def test_the_smallest_eigenvalue_is_the_eigensolvers(n):
-    """Stable matrices by inverse iteration, others by the eigensolver: the same value to round-off of the
-    matrix's norm."""
+    """Stable states with a soft mode by inverse iteration, which settles; others (stable ones with a
+    crowded bottom, unstable ones) by the eigensolver: the same value to round-off of the matrix's norm."""
     rng = np.random.default_rng(200 + n)
-    iterated = 0
-    for shift in (12.0, 0.0):  # positive definite (inverse iteration), then mostly indefinite
+    for make in (lambda d: soft_mode(d, 0.2), lambda d: d + 12.0 * np.eye(n), lambda d: d):
         for _ in range(10):
-            dense = random_band(n, rng) + shift * np.eye(n)
+            dense = make(random_band(n, rng))
             expected = np.linalg.eigvalsh(symmetric_part(dense))[0]
             found = banded.smallest_eigenvalue(banded.from_dense(dense))
             assert found == pytest.approx(expected, rel=1e-9, abs=1e-12 * np.abs(dense).max() * n)
-            iterated += expected > 0.0
-    assert iterated >= 10
+    assert all(_settles(banded.from_dense(soft_mode(random_band(n, rng), 0.2))) for _ in range(10))
+
+
+def test_a_nearly_singular_stable_state_settles():
+    """A stable state next to a fold (smallest eigenvalue 1e-9 of the largest) settles by inverse
+    iteration at the round-off of its product with a vector, with the eigensolver's value."""
+    n = 60
+    dense = symmetric_part(random_band(n, np.random.default_rng(5)))
+    values = np.linalg.eigvalsh(dense)
+    dense += (1e-9 * np.abs(values).max() - values[0]) * np.eye(n)
+    ab = banded.from_dense(dense)
+    assert _settles(ab)
+    expected = np.linalg.eigvalsh(dense)[0]
+    assert banded.smallest_eigenvalue(ab) == pytest.approx(expected, abs=1e-12 * np.abs(values).max())

@@ -9,6 +9,7 @@ test by a banded Cholesky factorisation (compiled too) and the softest mode by a
 from __future__ import annotations
 
 import numpy as np
+import scipy.linalg
 from numba import njit
 
 BAND = 5  # diagonals either side of the main one: 3 degrees of freedom a block, neighbours only
@@ -133,8 +134,11 @@ def positive_definite(ab):
     return cholesky_upper(ab)[1]
 
 
-INVERSE_ITERATIONS = 400  # inverse iterations before the eigensolver is asked instead
-INVERSE_RESIDUAL = 1e-9  # |S x - value x| below this x |value| ends them: the value's error is of its square
+INVERSE_ITERATIONS = 60  # inverse iterations before the eigensolver is asked instead (set 2's states: 7-19)
+INVERSE_RESIDUAL = 1e-9  # |S x - value x| below this x |value| ends them (the value's error is about the
+# residual's square over the gap to the next eigenvalue), ...
+ROUNDOFF_RESIDUAL = 100.0 * np.finfo(float).eps  # ... or below this x |S| (1-norm): round-off of S x, which
+# a nearly singular state's |value| / |S| of 1e-8 would never pass
 
 
 def smallest_eigenvalue(ab: np.ndarray) -> float:
@@ -143,11 +147,10 @@ def smallest_eigenvalue(ab: np.ndarray) -> float:
     not settle, by LAPACK's banded eigensolver."""
     factor, stable = cholesky_upper(ab)
     if stable:
-        value, settled = _inverse_iteration(ab, factor, INVERSE_ITERATIONS, INVERSE_RESIDUAL)
+        floor = ROUNDOFF_RESIDUAL * float(np.abs(ab).sum(axis=0).max())
+        value, settled = _inverse_iteration(ab, factor, INVERSE_ITERATIONS, INVERSE_RESIDUAL, floor)
         if settled:
             return float(value)
-    import scipy.linalg  # here: a static run from the command line need not import it (docs/speed.md)
-
     values = scipy.linalg.eig_banded(
         symmetric_upper(ab), eigvals_only=True, select="i", select_range=(0, 0), check_finite=False
     )
@@ -155,9 +158,9 @@ def smallest_eigenvalue(ab: np.ndarray) -> float:
 
 
 @njit(cache=True)
-def _inverse_iteration(ab, factor, iterations, residual):
+def _inverse_iteration(ab, factor, iterations, residual, floor):
     """(the smallest eigenvalue of the symmetric part S = U^T U of K, settled): x <- S^-1 x from a fixed
-    start and its Rayleigh quotient, until |S x - value x| is below `residual` x |value|."""
+    start and its Rayleigh quotient, until |S x - value x| is below `residual` x |value| or `floor`."""
     n = factor.shape[1]
     x = 1.0 + 0.5 * np.sin(np.arange(1.0, n + 1.0))  # a fixed start no eigenvector is orthogonal to in practice
     x /= np.sqrt(x @ x)
@@ -178,14 +181,12 @@ def _inverse_iteration(ab, factor, iterations, residual):
                 sx[i] += 0.5 * ab[BAND + i - j, j] * x[j]
                 sx[j] += 0.5 * ab[BAND + i - j, j] * x[i]
         value = x @ sx
-        if np.sqrt(((sx - value * x) ** 2).sum()) <= residual * abs(value):
+        if np.sqrt(((sx - value * x) ** 2).sum()) <= max(residual * abs(value), floor):
             return value, True
     return np.nan, False
 
 
 def softest_mode(ab: np.ndarray) -> tuple[float, np.ndarray]:
     """The smallest eigenvalue of the symmetric part of K and its eigenvector."""
-    import scipy.linalg
-
     values, vectors = scipy.linalg.eig_banded(symmetric_upper(ab), select="i", select_range=(0, 0), check_finite=False)
     return float(values[0]), vectors[:, 0]

@@ -12,9 +12,10 @@ from yadearch.model.block_state import free_state_kernel
 from yadearch.model.joint_tangent import BLOCK_DOFS
 from yadearch.solve.banded import band_solve, positive_definite
 
-INDEFINITE_BACKTRACKS = 3  # halvings of a step from an indefinite tangent before Newton gives up: past
-# a fold it stalls in the fold's ghost (|R| stuck near 1e-4 N for 4-20 iterations of 12 halvings each),
-# and an equilibrium it reached there would be unstable, which continuation rejects (docs/speed.md)
+INDEFINITE_BACKTRACKS = 3  # halvings of a step from an indefinite tangent before Newton gives up, a
+# heuristic: past a fold a solve stalled in the fold's ghost (|R| stuck near 1e-4 N for 4-20 iterations,
+# the last line search spending all 12 halvings); a solve near the fold that would still have reached a
+# stable state is given up too, and the fold's bracket falls one step lower (docs/speed.md)
 
 
 @njit(cache=True)
