@@ -7,6 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import matplotlib
+import pandas as pd
 import pytest
 
 matplotlib.use("Agg")
@@ -15,10 +16,9 @@ from yadearch.analysis.blocks import case_geometry  # noqa: E402
 from yadearch.analysis.run import analyse_run  # noqa: E402
 from yadearch.plotting.animation import FRAME_CM  # noqa: E402
 from yadearch.plotting.blocks import BLOCKS_GID  # noqa: E402
-from yadearch.plotting.house import new_figure  # noqa: E402
+from yadearch.plotting.house import MIN_TEXT_PT, new_figure  # noqa: E402
 from yadearch.plotting.labels import label_clashes  # noqa: E402
 from yadearch.plotting.states import (  # noqa: E402
-    TEXT_PT,
     draw_state,
     drawing_limits,
     place_texts,
@@ -40,7 +40,7 @@ def texts(fig):
 def test_the_strips_labels_are_readable_and_clear(name):
     run = read_run(REPORTS / name)
     fig = strip_figure(run, analyse_run(run))
-    assert all(t.get_fontsize() >= TEXT_PT for t in texts(fig))
+    assert all(t.get_fontsize() >= MIN_TEXT_PT for t in texts(fig))
     assert label_clashes(fig) == []
 
 
@@ -63,7 +63,7 @@ def test_a_label_on_a_block_is_found():
     ax = fig.axes[0]
     (blocks,) = [c for c in ax.collections if c.get_gid() == BLOCKS_GID]  # the deformed arch's blocks
     block = blocks.get_paths()[len(blocks.get_paths()) // 2].vertices
-    ax.annotate("on a block", block.mean(axis=0), fontsize=TEXT_PT)
+    ax.annotate("on a block", block.mean(axis=0), fontsize=MIN_TEXT_PT)
     assert any("on a block" in clash for clash in label_clashes(fig))
 
 
@@ -83,14 +83,13 @@ def test_the_load_collapse_figure_labels_its_hinges_clear_of_the_blocks(tmp_path
 
 @pytest.mark.parametrize("name", RUNS)
 def test_the_collapse_figure_labels_its_hinges_clear(name):
-    from yadearch.plotting.hinge_marks import HINGE_LABEL_PT
     from yadearch.plotting.run_figures import collapse_figure
 
     run = read_run(REPORTS / name)
     analysis = analyse_run(run)
     fig = collapse_figure(run, analysis)
     assert len(texts(fig)) == len(analysis.tracks) >= 4
-    assert all(t.get_fontsize() >= HINGE_LABEL_PT for t in texts(fig))
+    assert all(t.get_fontsize() >= MIN_TEXT_PT for t in texts(fig))
     assert label_clashes(fig) == []
 
 
@@ -104,3 +103,30 @@ def test_the_thrust_line_figure_labels_its_hinges_clear(name, tmp_path):
     fig = plot_thrust_line(result, case)
     assert len(texts(fig)) >= 4  # the four hinges of the mechanism
     assert label_clashes(fig) == []
+
+
+def every_text(fig) -> list:
+    """Every text a drawn figure prints: labels, titles, tick labels, legends, annotations."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    FigureCanvasAgg(fig).draw()
+    found = fig.findobj(lambda artist: hasattr(artist, "get_fontsize") and hasattr(artist, "get_text"))
+    return [t for t in found if t.get_text().strip() and t.get_visible()]
+
+
+def test_the_sweep_figures_print_no_text_below_the_house_minimum(monkeypatch, tmp_path):
+    """A kn sweep, the kn curve and a campaign's hinge positions (the sweep style): every text at least
+    MIN_TEXT_PT at print size (their legends were 6.5 pt)."""
+    from test_figure_colours import captured, sweep_table
+
+    from yadearch.plotting import kn_curve, montecarlo, sweep
+
+    drawn = [captured(monkeypatch, module) for module in (sweep, kn_curve, montecarlo)]
+    sweep.kn_sweep_figure(sweep_table(), tmp_path / "du_vs_kn")
+    kn_curve.kn_curve_figure(sweep_table(), None, pd.DataFrame(), 113.5, tmp_path / "curve")
+    montecarlo.hinge_frequency_figure(sweep_table(), tmp_path / "hinges")
+    figures = [fig for figs in drawn for fig in figs]
+    assert len(figures) == 3
+    for fig in figures:
+        small = [(t.get_text(), t.get_fontsize()) for t in every_text(fig) if t.get_fontsize() < MIN_TEXT_PT]
+        assert small == []

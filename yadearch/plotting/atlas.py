@@ -13,13 +13,12 @@ import pandas as pd
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
-from yadearch.plotting.house import save_figure
+from yadearch.plotting.house import MIN_TEXT_PT, save_figure
 from yadearch.plotting.sweep import SWEEP_STYLE
 
 PANEL_IN = (1.25, 1.05)  # width, height of one shape x movement panel
 KN_RANGE = (0.1, 3e4)  # N/mm3: the atlas's stiffnesses with a margin
 LEGEND_ROW = 0.3  # the key's row (two lines of entries), relative to a panel's height
-TEXT_PT = 7  # every text at print size: the smallest a journal prints
 THICKNESS_COLORS = ("#0072B2", "#D55E00", "#009E73")  # Okabe-Ito: told apart in print and by the colour-blind
 
 
@@ -43,17 +42,17 @@ def atlas_figure(table: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
                 ax.set_xscale("log")
                 ax.set_xlim(KN_RANGE)
                 ax.set_ylim(bottom=0.0)
-                ax.tick_params(labelsize=TEXT_PT)
+                ax.tick_params(labelsize=MIN_TEXT_PT)
                 if i == 0:
-                    ax.set_title(movement.replace("_", " "), fontsize=TEXT_PT)
+                    ax.set_title(movement.replace("_", " "), fontsize=MIN_TEXT_PT)
                 if j == 0:
-                    ax.set_ylabel(f"{shape.replace('_', '-')}\n$d_u$ (mm)", fontsize=TEXT_PT)
+                    ax.set_ylabel(f"{shape.replace('_', '-')}\n$d_u$ (mm)", fontsize=MIN_TEXT_PT)
                 if i == len(shapes) - 1:
-                    ax.set_xlabel("$k_n$ (N/mm³)", fontsize=TEXT_PT)
+                    ax.set_xlabel("$k_n$ (N/mm³)", fontsize=MIN_TEXT_PT)
         key = fig.add_subplot(grid[len(shapes), :])
         key.axis("off")
         entries = _legend(thicknesses)
-        key.legend(handles=entries, loc="center", ncol=math.ceil(len(entries) / 2), fontsize=TEXT_PT, frameon=False)
+        key.legend(handles=entries, loc="center", ncol=math.ceil(len(entries) / 2), fontsize=MIN_TEXT_PT, frameon=False)
         return save_figure(fig, stem)
 
 

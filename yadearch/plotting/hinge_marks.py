@@ -8,10 +8,10 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.text import Annotation
 
+from yadearch.plotting.house import MIN_TEXT_PT
 from yadearch.plotting.labels import layout, place_label
 
 HINGE_LABEL_OFFSET_PT = 5  # a hinge's label from its dot (points)
-HINGE_LABEL_PT = 7  # a hinge's label at print size (points): the smallest a journal prints
 
 
 def mark_hinge(ax: Axes, point: np.ndarray, text: str, side: str, colour: str) -> tuple[Annotation, np.ndarray]:
@@ -26,7 +26,7 @@ def mark_hinge(ax: Axes, point: np.ndarray, text: str, side: str, colour: str) -
         xytext=direction * HINGE_LABEL_OFFSET_PT,
         textcoords="offset points",
         color=colour,
-        fontsize=HINGE_LABEL_PT,
+        fontsize=MIN_TEXT_PT,
         fontweight="bold",
         zorder=5,
     )

@@ -16,13 +16,14 @@ from yadearch.plotting.pdf_fonts import lean_pdf_fonts
 CM = 1 / 2.54  # inches
 COLUMN_CM = 8.5
 PNG_DPI = 300
+MIN_TEXT_PT = 7  # the smallest text at print size: the smallest a journal prints legibly
 STYLE = {
     "font.size": 8,
     "axes.labelsize": 8,
     "axes.titlesize": 8,
-    "legend.fontsize": 7,
-    "xtick.labelsize": 7,
-    "ytick.labelsize": 7,
+    "legend.fontsize": MIN_TEXT_PT,
+    "xtick.labelsize": MIN_TEXT_PT,
+    "ytick.labelsize": MIN_TEXT_PT,
     "lines.linewidth": 1.0,
     "axes.linewidth": 0.6,
     "xtick.major.width": 0.6,

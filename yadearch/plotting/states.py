@@ -20,7 +20,7 @@ from yadearch.errors import RunFolderError
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.hinges import Hinge, hinge_rotation, hinges_at
 from yadearch.plotting.blocks import draw_blocks
-from yadearch.plotting.house import THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
+from yadearch.plotting.house import MIN_TEXT_PT, THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
 from yadearch.plotting.labels import layout, place_corner, place_label
 from yadearch.results.rundir import RunFolder
 from yadearch.results.states import RunStates
@@ -30,7 +30,6 @@ UNDEFORMED_COLOUR = "0.7"
 UNLABELLED_COLOUR = "0.3"  # a hinge that is not one of the collapse mechanism's A-D
 MARGIN = 0.1  # of the arch's span, above the drawing
 SIDE_MARGIN = 0.15  # of the arch's span, either side: room for the labels of hinges at the springings
-TEXT_PT = 7  # labels and the corner text: the smallest size a journal prints
 LABEL_OFFSET_PT = 5  # a hinge label's distance from its pivot, away from the ring
 STRIP_FRACTIONS = (0.0, 1 / 3, 2 / 3, 1.0)  # of du: the strip's four states
 STRIP_CM = (17.0, 9.0)  # two columns wide
@@ -121,13 +120,13 @@ def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple,
         label = ax.annotate(
             f"{letter} {interface}{side}".strip(), point, xytext=(0, 0), textcoords="offset points", color=colour
         )
-        label.set_fontsize(TEXT_PT)
+        label.set_fontsize(MIN_TEXT_PT)
         label.away = across if side == "E" else -across  # off the ring: out at the extrados, in at the intrados
     if corner:
         text = f"{view.place} ({view.stage})"
         if view.reaction_N is not None:
             text += f"\n{view.support} on the arch:\nRx {view.reaction_N[0]:.2f} N, Ry {view.reaction_N[1]:.2f} N"
-        ax.text(0.01, 0.02, text, transform=ax.transAxes, va="bottom", ha="left", fontsize=TEXT_PT)
+        ax.text(0.01, 0.02, text, transform=ax.transAxes, va="bottom", ha="left", fontsize=MIN_TEXT_PT)
     ax.set_aspect("equal")
     ax.set_xlim(*limits[0])
     ax.set_ylim(*limits[1])

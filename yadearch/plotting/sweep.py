@@ -15,7 +15,7 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
 from yadearch.case import reference
-from yadearch.plotting.house import hinge_colour, save_figure
+from yadearch.plotting.house import MIN_TEXT_PT, hinge_colour, save_figure
 from yadearch.plotting.parameter_labels import parameter_label, parameter_name, parameter_setting
 
 COLUMN_WIDTH_IN = 3.5  # one journal column
@@ -30,7 +30,13 @@ PAPER_MECHANISM = "E-I-E-E"  # hinges D, A, B, C from left to right (paper: coll
 DECADE = 10.0
 BASE_CASE = "as the base case"  # a parameter a sweep's row leaves empty
 LEGEND_SETTINGS = 2  # more parameters differing between a sweep's lines: each line named by its runs
-SWEEP_STYLE = {"font.size": 8, "axes.labelsize": 8, "legend.fontsize": 6.5, "xtick.labelsize": 7, "ytick.labelsize": 7}
+SWEEP_STYLE = {
+    "font.size": 8,
+    "axes.labelsize": 8,
+    "legend.fontsize": MIN_TEXT_PT,
+    "xtick.labelsize": MIN_TEXT_PT,
+    "ytick.labelsize": MIN_TEXT_PT,
+}
 
 
 def kn_sweep_figure(
