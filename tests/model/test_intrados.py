@@ -326,3 +326,10 @@ def test_limit_command_takes_the_shape_from_the_command_line(tmp_path, capsys):
     data = json.loads((out / "pointed.json").read_text())
     assert data["case"]["geometry"]["shape"] == "pointed" and data["du_rigid_mm"] > 0
     assert "du_rigid" in capsys.readouterr().out
+
+
+def test_a_rise_a_rounding_below_half_the_span_is_refused_in_one_line():
+    """Found by the property test above: rise 0.49999999999999994 x span 63 mm is below half the span
+    in mm and equal to it in metres, where the three-centred builder compares; refused as a case error."""
+    with pytest.raises(CaseError, match="geometry.rise_mm"):
+        build(shape="three_centred", span_mm=63.0, rise_mm=0.49999999999999994 * 63.0, n_voussoirs=2, thickness_mm=31.5)

@@ -43,12 +43,14 @@ def checked_intrados(g: GeometryConfig) -> Intrados:
     """The intrados of `g` (m), once the rise fits the span, the ring is thinner than the intrados's
     tightest radius and every joint crosses the ring at MIN_JOINT_ANGLE_DEG or more; else CaseError."""
     half_span = MAX_RISE_OVER_SPAN * g.span_mm
-    if g.shape == "elliptical" and g.rise_mm > half_span:
+    rise, half_span_m = units.mm(g.rise_mm), MAX_RISE_OVER_SPAN * units.mm(g.span_mm)  # as the builders
+    # compare them (m): a rise a rounding below half the span in mm may reach it in metres
+    if g.shape == "elliptical" and rise > half_span_m:
         raise CaseError(
             f"geometry.rise_mm = {g.rise_mm:g} must be at most {half_span:g} mm (half of "
             f"geometry.span_mm = {g.span_mm:g}) for an elliptical arch"
         )
-    if g.shape == "three_centred" and g.rise_mm >= half_span:
+    if g.shape == "three_centred" and rise >= half_span_m:
         raise CaseError(
             f"geometry.rise_mm = {g.rise_mm:g} must be below {half_span:g} mm (half of "
             f"geometry.span_mm = {g.span_mm:g}) for a three-centred arch"
