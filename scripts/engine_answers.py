@@ -27,11 +27,9 @@ from yadearch.atomic import write_text_atomically
 from yadearch.case.config import ArchCase, preset
 from yadearch.errors import YadearchError
 from yadearch.static.simulate import simulate_static
+from yadearch.studies.benchmark.static_engine import MONTECARLO_BUMP_SD_MM, MONTECARLO_SAMPLES, SWEEP_KN
 from yadearch.studies.sensitivity.indices import PAPER_FACTORS, sobol_rows
 
-MONTECARLO_SAMPLES = 200
-MONTECARLO_BUMP_SD_MM = 0.18  # the imperfection study's final case
-SWEEP_KN = np.logspace(np.log10(0.05), 4, 100)  # N/mm3
 SALTELLI_BASE_POINTS, SALTELLI_RUNS = 16, 224
 ANSWERS = ("du_mm", "du_first_mm", "outcome", "hinges", "kind", "error")
 GROUPS = {"mc": "Monte Carlo", "kn": "kn sweep", "b": "Saltelli"}  # by the cases' name prefixes

@@ -34,7 +34,8 @@ def to_dense(ab: np.ndarray) -> np.ndarray:
     return a
 
 
-def symmetric_upper(ab: np.ndarray) -> np.ndarray:
+@njit(cache=True)
+def symmetric_upper(ab):
     """The symmetric part of a band matrix in upper band storage (LAPACK's, for Cholesky and eigen)."""
     n = ab.shape[1]
     upper = np.zeros((BAND + 1, n))
@@ -108,10 +109,7 @@ def cholesky_upper(ab):
     """(U, success): the banded Cholesky factor S = U^T U of the symmetric part S of K (LAPACK's dpbtf2
     on the upper band, compiled), success False at the first pivot that is not positive."""
     n = ab.shape[1]
-    upper = np.zeros((BAND + 1, n))
-    for k in range(min(BAND, n - 1) + 1):
-        for c in range(k, n):
-            upper[BAND - k, c] = 0.5 * (ab[BAND - k, c] + ab[BAND + k, c - k])
+    upper = symmetric_upper(ab)
     for j in range(n):
         pivot = upper[BAND, j]
         if not pivot > 0.0:

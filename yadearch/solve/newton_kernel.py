@@ -44,7 +44,7 @@ def newton_kernel(problem, u0, iterations, backtracks, sufficient_decrease):
         trial = u.copy()
         for halvings in range(backtracks):
             if halvings == INDEFINITE_BACKTRACKS and not positive_definite(stiffness):
-                break  # past a fold: no stable equilibrium that Newton's steps could reach
+                break  # past a fold, most likely: give the solve up (INDEFINITE_BACKTRACKS)
             trial = u.copy()
             trial[first : first + d.shape[0]] += alpha * d
             trial_state = _evaluate(problem, trial)

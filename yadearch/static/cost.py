@@ -6,7 +6,9 @@ process; their ratio says how far the solver is from the cost of its arithmetic.
 from __future__ import annotations
 
 import time
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 from numba import njit
@@ -51,13 +53,9 @@ def solver_cost(case: ArchCase, repeats: int = FLOOR_REPEATS) -> SolverCost:
     the best CPU time, then time `repeats` evaluations and solves of each accepted state in the
     compiled floor loop (best of the same number of rounds)."""
     compile_kernels()
-    solver_cpu = float("inf")
-    for _ in range(SOLVER_REPEATS):
-        loading = StaticLoading.of(case)
-        start = time.process_time()
-        loading.selfweight()
-        loading.follow()
-        solver_cpu = min(solver_cpu, time.process_time() - start)
+    loadings = [StaticLoading.of(case) for _ in range(SOLVER_REPEATS)]  # each path solved afresh
+    solver_cpu = _best_cpu_s([partial(_solve, loading) for loading in loadings])
+    loading = loadings[-1]
     arch = loading.arch
     states = np.array([s.u for s in loading.accepted])
     shears = np.array([s.forces.shear_force for s in loading.accepted])
@@ -65,17 +63,29 @@ def solver_cost(case: ArchCase, repeats: int = FLOOR_REPEATS) -> SolverCost:
     per_state: list[float] = []
     for solve in (False, True):
         _floor_loop(*args, 1, solve)  # compiled before it is timed
-        best = float("inf")
-        for _ in range(SOLVER_REPEATS):
-            start = time.process_time()
-            _floor_loop(*args, repeats, solve)
-            best = min(best, time.process_time() - start)
-        per_state.append(best / (repeats * len(states)))
+        rounds = [partial(_floor_loop, *args, repeats, solve)] * SOLVER_REPEATS
+        per_state.append(_best_cpu_s(rounds) / (repeats * len(states)))
     evaluation, both = per_state
     solver = loading.solver
     return SolverCost(
         case.name, solver_cpu, solver.evaluations, solver.iterations, evaluation, max(both - evaluation, 0.0)
     )
+
+
+def _solve(loading: StaticLoading) -> None:
+    """A path's self-weight and loading, as the engine solves them."""
+    loading.selfweight()
+    loading.follow()
+
+
+def _best_cpu_s(calls: Sequence[Callable[[], object]]) -> float:
+    """The least CPU time (s) of the `calls`, each timed on its own."""
+    best = float("inf")
+    for call in calls:
+        start = time.process_time()
+        call()
+        best = min(best, time.process_time() - start)
+    return best
 
 
 @njit(cache=True)
