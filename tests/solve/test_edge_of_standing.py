@@ -11,8 +11,9 @@ from conftest import REPO
 
 from yadearch.case.config import load_case
 from yadearch.solve import banded
+from yadearch.solve.gravity_ramp import SELFWEIGHT_FALL
 from yadearch.solve.path import path_settings
-from yadearch.solve.static_path import SELFWEIGHT_FALL, StaticLoading
+from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.static_state import StaticEngineError
 from yadearch.solve.statics import static_arch
 

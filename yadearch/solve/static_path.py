@@ -27,14 +27,13 @@ from yadearch.model.joint_law import JointForces
 from yadearch.solve import banded
 from yadearch.solve.collapse_mode import FoldMode, fold_mode
 from yadearch.solve.falls import fall
+from yadearch.solve.gravity_ramp import CONFIRMING_STEPS, GRAVITY_STEPS, SELFWEIGHT_FALL, gravity_ramp, ramp_text
 from yadearch.solve.newton import Equilibrium, Solver, SolverSettings
 from yadearch.solve.path import PathResult, PathSettings, PathStep, extrapolate, first_snap, follow_path, path_settings
 from yadearch.solve.stages import Stage, Verdict
 from yadearch.solve.static_state import PathParameter, StaticEngineError, StaticState
 from yadearch.solve.statics import StaticArch, static_arch
 
-GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps
-SELFWEIGHT_FALL = 0.05  # a block falling this far (m) under self-weight means the arch cannot stand
 SUBSTEPS = 8  # an increment Newton cannot solve at once is marched in this many steps
 PREDICTOR_POINTS = 3  # accepted states the predictor extrapolates through (a parabola)
 
@@ -68,36 +67,30 @@ class StaticLoading:
         self.snap_floor = self.settings.snap_ratio * self.arch.length
         self._trial: StaticState | None = None
         self._trial_snaps: list[dict] = []
+        self.ramps: list[dict] = []  # the self-weight's gravity ramps: steps, verdict, gravity reached, move
 
     # ---- self-weight ------------------------------------------------------------------------
     def selfweight(self) -> StaticState:
-        """Gravity in GRAVITY_STEPS load steps from the blocks exactly touching: the first solved by the
-        descent (the joints have no stiffness before they are pressed), the others by Newton from the
-        last (by the descent where Newton fails); the joints' shear is carried from step to step, as
-        the DEM carries it, so that a joint counts only the sliding it makes while it touches (a change of
-        the engine's results raises `results.summary.STATIC_REVISION`)."""
-        u = self.arch.with_supports(self.arch.at_rest(), 0.0)
-        shear = np.zeros(len(self.arch.table.left))
-        slip = np.zeros_like(shear)
-        for k in range(1, GRAVITY_STEPS + 1):
-            gravity = k / GRAVITY_STEPS
-            pressed = self.solver.newton(u, u, shear, gravity=gravity) if k > 1 else None
-            found = (
-                pressed
-                if pressed is not None and pressed.stable()
-                else self._fall(u, u, shear, SELFWEIGHT_FALL, gravity=gravity)
+        """Gravity in GRAVITY_STEPS load steps from the blocks exactly touching (`gravity_ramp`); a ramp
+        that falls or fails is tried again in CONFIRMING_STEPS finer steps, and the arch stands if either
+        reaches a stable state under its whole weight (an equilibrium found is the proof that it can
+        stand: the first descent, from faces exactly touching, can take another way); both ramps are
+        recorded in `ramps`."""
+        self.ramps = []
+        for steps in (GRAVITY_STEPS, CONFIRMING_STEPS):
+            found, slip, ramp = gravity_ramp(self.arch, self.solver, self._fall, steps)
+            self.ramps.append(ramp)
+            if found.verdict == Verdict.STABLE:
+                break
+        if found.verdict != Verdict.STABLE:
+            said = "; ".join(ramp_text(ramp) for ramp in self.ramps)
+            if found.verdict == Verdict.RUNAWAY:
+                raise StaticEngineError(f"{CANNOT_STAND} ({said})")
+            raise StaticEngineError(
+                f"{UNRESOLVED}: the self-weight descent found neither an equilibrium nor a fall of "
+                f"{1e3 * SELFWEIGHT_FALL:.0f} mm after its retries ({said}): the solver's failure, "
+                "not an arch that cannot stand"
             )
-            if found.verdict != Verdict.STABLE:
-                said = f"at {k}/{GRAVITY_STEPS} of gravity, a block moved {1e3 * found.moved:.1f} mm"
-                if found.verdict == Verdict.RUNAWAY:
-                    raise StaticEngineError(f"{CANNOT_STAND} (it fell {said})")
-                raise StaticEngineError(
-                    f"{UNRESOLVED}: the self-weight descent found neither an equilibrium nor a fall of "
-                    f"{1e3 * SELFWEIGHT_FALL:.0f} mm after its retries ({said}): the solver's failure, "
-                    "not an arch that cannot stand"
-                )
-            u, shear = found.u, found.joints.forces.shear_force
-            slip = slip + found.joints.forces.plastic_slip
         state = self._state(Stage.SELFWEIGHT, 0.0, found, slip, found.joints.forces)
         self.accepted = [state]
         return state

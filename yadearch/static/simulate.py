@@ -196,6 +196,7 @@ def _selfweight(
         "horizontal_reaction_sum_N": row["left_Rx_N"] + row["right_Rx_N"],
         "thrust_N": abs(row["left_Rx_N"]),
         "crown_settlement_mm": -row["crown_dy_mm"],
+        "gravity_ramps": loading.ramps,
         **({"fill_weight_N": fill} if fill else {}),
     }
     log(

@@ -1,0 +1,47 @@
+"""The self-weight's verdict is not the first descent's: the sensitivity study's sample b01372_01
+(65 voussoirs, kn 0.27 N/mm3, face bumps s.d. 0.19 mm; tests/data/exact_contact_kink.toml) starts with
+faces exactly touching, where the joint law has a kink; the descent of a tenth of gravity from there
+fell 50 mm, while ramps of a fifth, a twentieth and a fortieth stand (docs/theory.md, "The static engine")."""
+
+from __future__ import annotations
+
+import pytest
+from conftest import REPO
+
+import yadearch.solve.static_path as static_path
+from yadearch.case.config import load_case
+from yadearch.solve import banded
+from yadearch.solve.stages import Verdict
+from yadearch.solve.static_path import StaticLoading
+from yadearch.static.records import StaticRecords
+
+CASE = REPO / "tests" / "data" / "exact_contact_kink.toml"
+HINGE_ROTATION = 1e-3  # rad; the records need one, the reactions do not depend on it
+
+
+@pytest.fixture(scope="module")
+def case():
+    return load_case(CASE)
+
+
+@pytest.mark.parametrize("steps", [5, 10, 20, 40])
+def test_the_arch_stands_whatever_the_gravity_ramp(case, steps, monkeypatch):
+    """Whatever the first ramp's step count, the arch reaches a stable equilibrium under its whole weight:
+    the tangent positive definite and the supports carrying the weight (to 1e-6 of it)."""
+    monkeypatch.setattr(static_path, "GRAVITY_STEPS", steps)
+    loading = StaticLoading.of(case)
+    state = loading.selfweight()
+    assert loading.ramps[-1]["verdict"] == Verdict.STABLE and loading.ramps[-1]["gravity"] == 1.0
+    assert banded.positive_definite(state.stiffness)
+    row = StaticRecords(loading.arch, HINGE_ROTATION).series_columns(state)
+    weight = float(loading.arch.weight[1:-1].sum())
+    assert row["left_Ry_N"] + row["right_Ry_N"] == pytest.approx(weight, rel=1e-6)
+
+
+def test_a_ramp_that_falls_is_confirmed_by_a_finer_one(case):
+    """The engine's own ramp of ten steps falls at the first (the descent from the kink takes another
+    way); the finer ramp of twenty stands, and both are on record."""
+    loading = StaticLoading.of(case)
+    loading.selfweight()
+    assert [(r["gravity_steps"], r["verdict"]) for r in loading.ramps] == [(10, Verdict.RUNAWAY), (20, Verdict.STABLE)]
+    assert loading.ramps[0]["gravity"] == pytest.approx(0.1) and loading.ramps[0]["moved_mm"] >= 50.0
