@@ -20,7 +20,8 @@ import pandas as pd
 from yadearch.atomic import write_text_atomically
 from yadearch.results.rundir import read_summary
 from yadearch.studies.campaigns.runner import RESULTS_FILE
-from yadearch.studies.imperfections.report import PERFECT_RUN, REPORT, STUDIES, draw, report, run_study
+from yadearch.studies.imperfections.plan import STUDIES
+from yadearch.studies.imperfections.report import PERFECT_RUN, REPORT, draw, report, run_study
 from yadearch.studies.montecarlo import write_montecarlo
 
 

@@ -99,19 +99,19 @@ def test_a_snapshot_puts_the_arch_back_where_it_was(settled):
     runner.move_to(runner.delta() + units.mm(2.0))
     assert runner.hold() == "stable"
     snapshot, delta = runner.snapshot(), runner.delta()
-    positions, shear = runner._voussoir_positions(), runner.scene.contacts.joint_contacts()[2]
+    positions, shear = runner.positions(), runner.scene.contacts.joint_contacts()[2]
     speeds = runner.recorder.voussoir_speeds()
     runner.move_to(delta + units.mm(3.0))
     runner._run_steps(50)  # caught moving: the restore must bring back the saved velocities too
-    assert abs(runner._voussoir_positions() - positions).max() > units.mm(0.5)  # it did move
+    assert abs(runner.positions() - positions).max() > units.mm(0.5)  # it did move
     assert abs(runner.recorder.voussoir_speeds() - speeds).max() > units.mm(1.0)
     runner.restore(snapshot)
     assert runner.delta() == pytest.approx(delta, abs=1e-12)
-    assert abs(runner._voussoir_positions() - positions).max() < 1e-12
+    assert abs(runner.positions() - positions).max() < 1e-12
     assert abs(runner.recorder.voussoir_speeds() - speeds).max() < 1e-12
     assert (runner.scene.contacts.joint_contacts()[2] == shear).all()
     assert runner.hold() == "stable"
-    assert abs(runner._voussoir_positions() - positions).max() < units.mm(0.05)
+    assert abs(runner.positions() - positions).max() < units.mm(0.05)
 
 
 def test_holds_run_at_hold_damping_and_moves_at_the_loading_damping(settled):

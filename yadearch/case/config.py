@@ -17,6 +17,7 @@ from typing import Any
 import tomli_w
 
 from yadearch.case.names import check_name
+from yadearch.case.numerics_section import capped_acceleration
 from yadearch.case.sections import (
     RENAMED,
     RETIRED,
@@ -92,14 +93,6 @@ def support_speed(rate: float, reference_kn: float, kn: float) -> float:
     """Support speed (mm/s): `rate`, slowed by sqrt(reference_kn / kn) for joints stiffer than
     `reference_kn` (0 = no scaling)."""
     return rate * math.sqrt(reference_kn / kn) if 0 < reference_kn < kn else rate
-
-
-def capped_acceleration(accel: float, horizontal_cap: float, horizontal_share: float) -> float:
-    """The support's acceleration along its path (mm/s^2, 0 = instantaneous) lowered so that its
-    horizontal component, `horizontal_share` of it, stays within `horizontal_cap` (0 = no cap)."""
-    if horizontal_cap <= 0.0 or horizontal_share * (accel if accel > 0.0 else math.inf) <= horizontal_cap:
-        return accel
-    return horizontal_cap / horizontal_share
 
 
 def _resolve_key(key: str) -> tuple[str | None, str]:

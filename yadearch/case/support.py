@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from yadearch.case.config import ArchCase, capped_acceleration
+from yadearch.case.config import ArchCase
+from yadearch.case.numerics_section import capped_acceleration
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry

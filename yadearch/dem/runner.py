@@ -130,11 +130,7 @@ class Runner:
         self.recorder.series()
 
     def positions(self) -> np.ndarray:
-        """The voussoirs' centroids now (n, 3; m)."""
-        return self._voussoir_positions()
-
-    def _voussoir_positions(self) -> np.ndarray:
-        """Current voussoir centroids (n, 3); a NaN ends the run (the law calls exit(1) on NaN)."""
+        """The voussoirs' centroids now (n, 3; m); a NaN ends the run (the law calls exit(1) on NaN)."""
         from yade import O
 
         pos = np.array([(p[0], p[1], p[2]) for p in (state.pos for state in self.scene.voussoir_states)])
@@ -165,7 +161,7 @@ class Runner:
             fraction = min(1.0, (O.iter - start) / ramp_steps)
             newton.gravity = tuple(gravity * fraction)
             self._run_steps(CHECK_EVERY_STEPS)
-            self._voussoir_positions()  # raises on a NaN
+            self.positions()  # raises on a NaN
             unbalanced = self._unbalanced()
             self.progress(f"gravity {fraction:.0%}, unbalanced {unbalanced:.2e}")
             sag = float(np.max(np.abs(body_states(self.scene)[0] - self.scene.pos0)))
@@ -251,12 +247,12 @@ class Runner:
         min_steps = int(self.num.hold_min_s / O.dt)
         still_speed = still_speed if still_speed is not None else units.mm(self.num.still_speed_mm_per_s)
         tolerance = tolerance if tolerance is not None else self.num.equilibrium_tolerance
-        start_pos = self._voussoir_positions()
+        start_pos = self.positions()
         start = O.iter
         self.hold_move = 0.0
         while O.iter - start < max_steps:
             self._run_steps(CHECK_EVERY_STEPS)
-            moved = np.linalg.norm(self._voussoir_positions() - start_pos, axis=1).max()
+            moved = np.linalg.norm(self.positions() - start_pos, axis=1).max()
             self.hold_move = max(self.hold_move, moved)
             self.progress(f"holding: max block move {units.to_mm(moved):.3f} mm")
             if moved > runaway:
@@ -288,7 +284,7 @@ class Runner:
         self._set_damping(self.num.damping)
         while not done():
             self._run_steps(CHECK_EVERY_STEPS // 5)
-            self._voussoir_positions()  # raises on a NaN
+            self.positions()  # raises on a NaN
 
     def run(self) -> RunSummary:
         """All stages (`dem.stages.run_stages`), then YADE's simulation thread stopped; returns what the

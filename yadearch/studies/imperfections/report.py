@@ -32,64 +32,9 @@ from yadearch.studies.imperfections.matching import (
     paired_medians,
     table_markdown,
 )
+from yadearch.studies.imperfections.plan import BASE_PRESET, FINAL, MATCH, SEED, STUDIES
 from yadearch.studies.montecarlo import MONTECARLO_FILE, run_montecarlo
 
-BASE_PRESET = "set2"  # accurate voussoirs: the CNC set's kn
-SEED = 1
-STIFF_KN_N_PER_MM3 = 100.0
-STIFF_PERFECT_DU_MM = 109.09  # reports/stiff/kn100: the perfect arch at kn 100
-FINAL = Study(
-    "final", "faces not flat, at the level that matches set 1 (the final campaign)", "face_bump_sd_mm", (0.18,), 200
-)
-MATCH = Study(
-    "match",
-    "faces not flat, above the final level, on the final campaign's first seeds",
-    "face_bump_sd_mm",
-    (0.22,),
-    40,
-)
-STUDIES = (
-    Study("edge", "rounded edges, every edge alike", "edge_radius_mm", (1.0, 2.0, 3.0, 4.0, 6.0), 1),
-    Study("angle", "faces not parallel, random per joint (mean 0)", "face_angle_sd_mrad", (1.0, 2.0, 4.0, 8.0), 3),
-    Study("bump", "faces not flat, random per joint (mean 0)", "face_bump_sd_mm", (0.02, 0.05, 0.1, 0.2), 3),
-    Study("keystone", "keystone set lower", "keystone_offset_mm", (-0.25, -0.5, -1.0, -2.0), 1),
-    Study(
-        "offset",
-        "voussoirs set off their neighbours, random per voussoir (mean 0)",
-        "voussoir_offset_sd_mm",
-        (0.1, 0.2, 0.5),
-        3,
-    ),
-    Study(
-        "support",
-        "moving support set askew (gaping toward the extrados)",
-        "right_support_angle_mrad",
-        (2.0, 5.0, 10.0, 20.0),
-        1,
-    ),
-    Study(
-        "length",
-        "voussoirs longer or shorter along the arch, random per voussoir (about the set's mean)",
-        "voussoir_length_sd_mm",
-        (0.5,),
-        3,
-    ),
-    Study(
-        "thickness", "voussoirs thicker or thinner, random per voussoir (mean 0)", "voussoir_thickness_sd_mm", (1.0,), 3
-    ),
-    Study(
-        "stiff",
-        f"faces not flat on stiff joints (kn {STIFF_KN_N_PER_MM3:g} N/mm³, the stiff limit; the perfect "
-        f"arch gives {STIFF_PERFECT_DU_MM} mm)",
-        "face_bump_sd_mm",
-        (0.18,),
-        2,
-        {"kn_N_per_mm3": STIFF_KN_N_PER_MM3},
-        STIFF_PERFECT_DU_MM,
-    ),
-    FINAL,
-    MATCH,
-)
 SET1_EXPERIMENT_HINGES = {"A": 13, "B": 32, "C": 56, "D": 1}  # the paper's Table 1 (docs/validation.md)
 SET1_A_FORMED = 12  # set 1's experiment: A formed at 12, then moved to 13 before collapse
 UNITS = {
