@@ -16,9 +16,9 @@ from conftest import REPO
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from yadearch.case.config import case_from_dict, parameter_docs
+from yadearch.case.config import case_from_dict
 from yadearch.case.plan import plan_run
-from yadearch.case.sections import SECTIONS
+from yadearch.case.sections import SECTIONS, parameter_docs
 from yadearch.cli.commands import main
 from yadearch.errors import YadearchError
 
@@ -79,6 +79,8 @@ def probes() -> list[list[str]]:
         ["run", "--set", "edge_radius_mm=1", "--set", "contact_model=cgal"],
         ["run", "--set", "edge_shape=square"],
         ["run", "--set", "movement=wobble"],
+        ["run", "--set", "material=basalt"],
+        ["run", "--set", "material.preset=basalt"],
         ["run", "--set", "moving_support=middle"],
         ["limit", "--set", "moving_support=both"],
         [

@@ -16,6 +16,7 @@ from typing import Any
 
 import tomli_w
 
+from yadearch.case.materials import MATERIAL_KEY, PRESET_FIELD, fill_from_preset
 from yadearch.case.names import check_name
 from yadearch.case.numerics_section import capped_acceleration
 from yadearch.case.sections import (
@@ -80,12 +81,18 @@ class ArchCase:
     def with_overrides(self, overrides: dict[str, Any]) -> ArchCase:
         """A copy with `{"section.key": value}` (or bare unique keys such as `kn_N_per_mm3`) replaced."""
         data = self.to_dict()
+        given = set()
         for key, value in overrides.items():
             section, name = _resolve_key(key)
             if section is None:
                 data[name] = value
             else:
                 data[section][name] = value
+                given.add((section, name))
+        if (MATERIAL_KEY, PRESET_FIELD) in given:  # a material named here replaces the values not set beside it
+            data[MATERIAL_KEY] = fill_from_preset(
+                data[MATERIAL_KEY], {name for section, name in given if section == MATERIAL_KEY}
+            )
         return case_from_dict(data)
 
 
@@ -198,6 +205,8 @@ def case_from_dict(data: dict[str, Any]) -> ArchCase:
                 f"got {type(section).__name__} {section!r:.40}"
             )
         values = current_names(section_name, section)
+        if section_name == MATERIAL_KEY:  # a named material gives the values the case does not
+            values = fill_from_preset(values, given=set(values))
         names = {f.name for f in fields(cls)}
         bad = set(values) - names
         if bad:
@@ -248,6 +257,7 @@ def as_ran(data: dict[str, Any]) -> dict[str, Any]:
     )
     del numerics["support_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"]
     del numerics["run_files"], numerics["increments_check"]  # what the folder keeps, a check beside the answer
+    del filled[MATERIAL_KEY][PRESET_FIELD]  # a material's name: its values are in the case
     loading = filled["loading"]  # the acceleration a run used; a turn or a path counted as horizontal
     share = (
         abs(math.cos(math.radians(loading["support_direction_deg"])))
@@ -287,13 +297,3 @@ def preset(name: str) -> ArchCase:
     if name not in PRESETS:
         raise CaseError(f"preset must be one of {sorted(PRESETS)}, got {name!r}")
     return case_from_dict(PRESETS[name])
-
-
-def parameter_docs() -> list[tuple[str, str, str]]:
-    """(qualified name, default, description) of every parameter, for `yadearch params`."""
-    rows = []
-    for section_name, cls in SECTIONS.items():
-        for f in fields(cls):
-            default = f.default_factory() if f.default_factory is not dataclasses.MISSING else f.default
-            rows.append((f"{section_name}.{f.name}", repr(default), f.metadata.get("doc", "")))
-    return rows

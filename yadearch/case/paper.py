@@ -8,6 +8,7 @@ from typing import Any
 
 from yadearch.case import reference
 from yadearch.case.config import ArchCase, as_ran, preset
+from yadearch.case.materials import MATERIAL_KEY, MATERIALS, PRESET_FIELD
 
 PAPER_SECTIONS = ("geometry", "material", "loading", "imperfections", "loads")  # what makes a run the paper's case
 NOT_PHYSICAL = {"max_support_displacement_mm"}  # a run's stopping point, not part of the arch or its loading
@@ -44,10 +45,11 @@ def paper_model_values(case: ArchCase) -> dict[str, Any] | None:
     ran, model = case.to_dict(), ArchCase().to_dict()
     if ran["geometry"] == model["geometry"]:
         return None
+    named = MATERIALS[ran[MATERIAL_KEY][PRESET_FIELD]].values() if ran[MATERIAL_KEY][PRESET_FIELD] else {}
     taken = {
         f"{section}.{key}": ran[section][key]
         for section, key in MODEL_VALUES
-        if ran[section][key] == model[section][key]
+        if ran[section][key] == model[section][key] and not (section == MATERIAL_KEY and key in named)
     }
     return taken or None
 
@@ -55,7 +57,9 @@ def paper_model_values(case: ArchCase) -> dict[str, Any] | None:
 def model_values_text(taken: dict[str, Any]) -> str:
     """The warning for `paper_model_values`' answer, one line."""
     values = ", ".join(f"{name} {value:g}" for name, value in taken.items())
+    named = any(name.startswith(f"{MATERIAL_KEY}.") for name in taken)
     return (
         f"this arch is not the paper's but takes the paper's 1:10 model's values (the defaults): {values}; "
         "give your arch's own in the case file ([material], [interface]) or with --set"
+        + (", or name a material (--set material=NAME, docs/materials.md)" if named else "")
     )

@@ -4,11 +4,13 @@ one-line description (the metadata `yadearch params` prints and validation reads
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+import dataclasses
+from dataclasses import dataclass, field, fields
 
-from yadearch.case.fields import number_meta
+from yadearch.case.fields import choice_meta, number_meta
 from yadearch.case.imperfections_section import ImperfectionsConfig
 from yadearch.case.loads_section import LoadsConfig
+from yadearch.case.materials import PRESET_CHOICES
 from yadearch.case.numerics_section import NumericsConfig
 
 
@@ -110,6 +112,14 @@ class MaterialConfig:
     block_elasticity: bool = field(
         default=False,
         metadata={"doc": "fold the block's axial stiffness young/width in series into kn (off: rigid blocks)"},
+    )
+    preset: str = field(
+        default="",
+        metadata=choice_meta(
+            PRESET_CHOICES,
+            "a named material (docs/materials.md): its density and friction, unless the case gives them; "
+            "'' for the case's own values",
+        ),
     )
 
 
@@ -233,3 +243,13 @@ RENAMED: dict[tuple[str, str], str] = {
     ("loading", "max_settlement_mm"): "max_support_displacement_mm",
     ("numerics", "settlement_rate_mm_per_s"): "support_rate_mm_per_s",
 }
+
+
+def parameter_docs() -> list[tuple[str, str, str]]:
+    """(qualified name, default, description) of every parameter, for `yadearch params`."""
+    rows = []
+    for section_name, cls in SECTIONS.items():
+        for f in fields(cls):
+            default = f.default_factory() if f.default_factory is not dataclasses.MISSING else f.default
+            rows.append((f"{section_name}.{f.name}", repr(default), f.metadata.get("doc", "")))
+    return rows

@@ -118,7 +118,7 @@ def reproduce(out: str, jobs: int, rerun: bool) -> None:
 @cli.command()
 def params() -> None:
     """List every case parameter with its default and meaning."""
-    from yadearch.case.config import parameter_docs
+    from yadearch.case.sections import parameter_docs
 
     for qualified, default, doc in parameter_docs():
         click.echo(f"{qualified:40s} {default:>10s}  {doc}")

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
+from yadearch.case.materials import MATERIAL_KEY, MATERIALS, PRESET_FIELD
 from yadearch.case.names import FILE, FOLDER, output_path
 from yadearch.errors import CaseError
 
@@ -45,6 +46,9 @@ def resolve_case(
         key, value = item.split("=", 1)
         if key.strip() == MOVEMENT_KEY:  # a named movement stands for its [loading] parameters
             overrides.update(movement_overrides(value.strip()))
+            continue
+        if key.strip() == MATERIAL_KEY:  # a named material stands for its [material] values
+            overrides[f"{MATERIAL_KEY}.{PRESET_FIELD}"] = value.strip()
             continue
         overrides[key.strip()] = parse_scalar(value)
     if kn is not None:
@@ -133,7 +137,8 @@ def case_options(with_kn: bool, with_engine: bool = True) -> Callable[[Any], Any
             metavar="KEY=VALUE",
             help="override any parameter, e.g. --set numerics.damping=0.3 (see `yadearch params`); "
             "--set movement=NAME picks a named support movement (settlement, spreading, closing, "
-            "inclined, symmetric_spreading, abutment_tilt, settle_then_spread)",
+            "inclined, symmetric_spreading, abutment_tilt, settle_then_spread), --set material=NAME a named "
+            f"material's density and friction ({', '.join(MATERIALS)}; docs/materials.md)",
         ),
     ]
     if with_kn:

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from yadearch.case.bounds import MAX_RUNS
-from yadearch.case.config import parameter_docs
+from yadearch.case.sections import parameter_docs
 from yadearch.errors import ArgumentTypeError, CampaignError, CaseError, YadearchError
 
 TEXT_ENCODING = "utf-8-sig"  # UTF-8, with or without the byte-order mark Excel's "CSV UTF-8" writes
