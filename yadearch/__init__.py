@@ -2,7 +2,7 @@
 
 The public API (`yadearch.api`): `preset`, `movement`, `run`, `reproduce`, `report`, `open_run`, `sweep`,
 `montecarlo`, `calibrate`, `robustness`, `capacity`, `sensitivity`, `limit`, `loads`, `load_influence`,
-`load_path`, `residual_curve`, `measured_case`, imported on first use so that
+`load_path`, `residual_curve`, `measured_case`, `on_piers`, imported on first use so that
 `import yadearch` stays light (no pandas, no YADE); type checkers and IDEs see them through the
 TYPE_CHECKING import below."""
 
@@ -23,6 +23,7 @@ if TYPE_CHECKING:
         measured_case,
         montecarlo,
         movement,
+        on_piers,
         open_run,
         preset,
         report,
@@ -54,6 +55,7 @@ __all__ = [
     "load_path",
     "residual_curve",
     "measured_case",
+    "on_piers",
     "RunResult",
     "HingeAtCollapse",
 ]

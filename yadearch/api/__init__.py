@@ -17,14 +17,14 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:
     from yadearch.api.campaigns import calibrate, capacity, montecarlo, robustness, sensitivity, sweep
     from yadearch.api.live_loads import load_influence, load_path, loads, residual_curve
-    from yadearch.api.measured import measured_case
+    from yadearch.api.measured import measured_case, on_piers
     from yadearch.api.results import HingeAtCollapse, RunResult, open_run
     from yadearch.api.runs import as_case, limit, movement, preset, report, reproduce, run, with_engine
 
 _MODULES = {  # the module of each name
     "campaigns": ("calibrate", "capacity", "montecarlo", "robustness", "sensitivity", "sweep"),
     "live_loads": ("load_influence", "load_path", "loads", "residual_curve"),
-    "measured": ("measured_case",),
+    "measured": ("measured_case", "on_piers"),
     "results": ("HingeAtCollapse", "RunResult", "open_run"),
     "runs": ("as_case", "limit", "movement", "preset", "report", "reproduce", "run", "with_engine"),
 }
@@ -45,6 +45,7 @@ __all__ = [
     "load_path",
     "residual_curve",
     "measured_case",
+    "on_piers",
     "sweep",
     "montecarlo",
     "calibrate",

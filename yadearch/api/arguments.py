@@ -19,6 +19,7 @@ MAX_TIMEOUT_S = 30 * 24 * 3600.0  # 30 days: longer is no limit (and overflows t
 MAX_CALIBRATION_RUNS = 100  # a root search that needs more runs has no root to find
 SEED_MAX = 2**32 - 1  # numpy's seeds
 SECONDS_PER_MINUTE = 60.0
+MAX_PIER_MM = 1e5  # 100 m: each arch then bounds its piers by its span (`case.piers.on_piers`)
 _KN = next(f.metadata for f in fields(InterfaceConfig) if f.name == "kn_N_per_mm3")
 
 
@@ -107,6 +108,8 @@ ARGUMENTS = {
         Argument("after_mm", float, 0, MAX_TARGET_DU_MM, option="--after-mm"),
         Argument("start_mm", float, 0, MAX_TARGET_DU_MM, option="--start-mm"),
         Argument("descend_to", float, 0, 1, optional=True, option="--descend-to"),
+        Argument("pier_height_mm", float, 0, MAX_PIER_MM, low_open=True, option="--height-mm"),
+        Argument("pier_width_mm", float, 0, MAX_PIER_MM, low_open=True, option="--width-mm"),
         Argument("compliant", bool),
         Argument("rerun", bool),
         Argument("overwrite", bool),

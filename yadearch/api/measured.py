@@ -1,6 +1,7 @@
 """A surveyed arch as a case (`ya.measured_case`, `yadearch survey`): the joints' intrados and extrados
 corners read from a CSV, or the blocks' corners from a JSON survey (`case.survey_blocks`), into
-`geometry.joint_points_mm` of shape 'measured' (docs/movements.md, "A surveyed arch")."""
+`geometry.joint_points_mm` of shape 'measured' (docs/movements.md, "A surveyed arch"); and any arch
+on its piers (`ya.on_piers`, `yadearch piers`)."""
 
 from __future__ import annotations
 
@@ -11,9 +12,11 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from yadearch.api.arguments import check_arguments
 from yadearch.api.runs import as_case
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
+from yadearch.case.piers import pier_case
 from yadearch.case.shape import MEASURED, MIN_MEASURED_JOINTS
 from yadearch.case.survey_blocks import joints_from_blocks
 from yadearch.errors import CaseError
@@ -72,3 +75,11 @@ def _read(joints: str | Path | pd.DataFrame | dict[str, Any]) -> pd.DataFrame:
         raise
     except (OSError, ValueError, pd.errors.ParserError) as exc:
         raise CaseError(f"joints: cannot read {joints}: {exc}") from None
+
+
+def on_piers(case: ArchCase | str, pier_height_mm: float, pier_width_mm: float, name: str | None = None) -> ArchCase:
+    """`case` (or a preset's name) with its arch on two piers, real abutments that can slide or overturn
+    on their base joints, the supports moving the ground under them (`case.piers.pier_case`)."""
+    check_arguments(pier_height_mm=pier_height_mm, pier_width_mm=pier_width_mm)
+    on = pier_case(as_case(case), pier_height_mm, pier_width_mm)
+    return on.with_overrides({"name": name}) if name is not None else on

@@ -106,20 +106,19 @@ def measured_arch(g: GeometryConfig) -> ArchGeometry:
         )
     points = units.mm(rows)
     intrados, extrados = points[:, 0:2], points[:, 2:4]
-    backward = np.flatnonzero(np.diff(intrados[:, 0]) <= 0.0)
+    backward = np.flatnonzero(np.diff(intrados[:, 0]) < 0.0)  # equal: a pier's vertical face
     if backward.size:
         raise CaseError(
-            f"geometry.joint_points_mm: joint {backward[0] + 2}'s intrados corner is not right of joint "
+            f"geometry.joint_points_mm: joint {backward[0] + 2}'s intrados corner is left of joint "
             f"{backward[0] + 1}'s; give the joints left to right"
         )
-    lengths = np.linalg.norm(extrados - intrados, axis=1)
     springing = 0.5 * (intrados[0, 1] + intrados[-1, 1])
     try:
         return arch_from_joints(
             list(zip(intrados, extrados)),
             units.mm(g.depth_mm),
             units.mm(g.support_length_mm),
-            thickness=float(lengths.mean()),
+            thickness=units.mm(g.thickness_mm),  # the nominal ring thickness (the joints' mean, `ya.measured_case`)
             span=float(intrados[-1, 0] - intrados[0, 0]),
             rise=float(intrados[:, 1].max() - springing),
         )

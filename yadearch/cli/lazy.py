@@ -22,6 +22,7 @@ LAZY_COMMANDS = {
     "capacity": "yadearch.cli.capacity",
     "loads": "yadearch.cli.loads",
     "survey": "yadearch.cli.survey",
+    "piers": "yadearch.cli.survey",
     "sensitivity": "yadearch.cli.sensitivity",
     "animate": "yadearch.cli.views",
     "export": "yadearch.cli.views",

@@ -1,5 +1,6 @@
 """`yadearch survey`: a case TOML of a surveyed arch from its joints' corners in a CSV, or its blocks'
-corners in a JSON survey (a thin client of `ya.measured_case`)."""
+corners in a JSON survey (a thin client of `ya.measured_case`); `yadearch piers`: any arch on its
+piers (of `ya.on_piers`)."""
 
 from __future__ import annotations
 
@@ -8,7 +9,7 @@ import click
 from yadearch import api
 from yadearch.atomic import write_text_atomically
 from yadearch.case.names import FILE, output_path
-from yadearch.cli.options import OUT_FILE, case_options, resolve_case
+from yadearch.cli.options import OUT_FILE, argument_type, case_options, resolve_case
 
 
 @click.command()
@@ -36,4 +37,31 @@ def survey(
     click.echo(
         f"{case.name}: {geometry.n_voussoirs} voussoirs between {len(geometry.joint_points_mm)} measured joints, "
         f"mean joint length {geometry.thickness_mm:.2f} mm -> {path}"
+    )
+
+
+@click.command()
+@case_options(with_kn=True, with_engine=False)
+@click.option("--height-mm", "height_mm", type=argument_type("pier_height_mm"), required=True, help="pier height (mm)")
+@click.option("--width-mm", "width_mm", type=argument_type("pier_width_mm"), required=True, help="pier base width (mm)")
+@click.option("--out", type=OUT_FILE, required=True, help="the case TOML to write (e.g. on_piers.toml)")
+@click.option("--name", default=None, help="the case's name (default: the base case's)")
+def piers(
+    preset_name: str | None,
+    case_file: str | None,
+    kn: float | None,
+    settings: tuple[str, ...],
+    height_mm: float,
+    width_mm: float,
+    out: str,
+    name: str | None,
+) -> None:
+    """Write a case of the arch of --preset/--case/--set on two piers (real abutments that can slide or
+    overturn on their base joints, the supports moving the ground under them): each pier --height-mm
+    tall below its springing, --width-mm wide at its base; run it with `yadearch run --case OUT`."""
+    case = api.on_piers(resolve_case(preset_name, case_file, kn, settings), height_mm, width_mm, name=name)
+    path = output_path(out, "--out", FILE)
+    write_text_atomically(path, case.to_toml())
+    click.echo(
+        f"{case.name}: {case.geometry.n_voussoirs - 2} voussoirs on two piers {height_mm:g} x {width_mm:g} mm -> {path}"
     )

@@ -1,0 +1,63 @@
+"""An arch on its piers (case/piers.py, `ya.on_piers`; docs/movements.md, "An arch on its piers"): the
+paper's arch on piers 100 mm tall. Wide piers do not move, so the rigid du is that of the arch on fixed
+supports; narrow piers overturn about their outer toe under the arch's thrust, and du falls; the static
+engine rises toward the rigid answer as the joints stiffen, and its supports carry arch and piers."""
+
+from __future__ import annotations
+
+import pytest
+
+import yadearch as ya
+from yadearch.case.config import preset
+from yadearch.errors import CampaignError, CaseError
+from yadearch.solve.limit import limit_analysis
+from yadearch.solve.static_path import StaticLoading
+from yadearch.static.records import StaticRecords
+from yadearch.static.simulate import simulate_static
+
+HEIGHT_MM = 100.0
+WIDE_MM, NARROW_MM = 200.0, 60.0
+HINGE_ROTATION = 1e-3  # rad; the records need one, the reactions do not depend on it
+
+
+def quiet(_: str) -> None:
+    """A run's progress lines, unwanted here."""
+
+
+@pytest.fixture(scope="module")
+def narrow():
+    return ya.on_piers("set2", HEIGHT_MM, NARROW_MM)
+
+
+def test_wide_piers_are_fixed_supports():
+    """The rigid march on wide piers: the arch's du on fixed supports to 1e-6, on the same joints of the
+    ring (each label one further: the pier's base joint is joint 1)."""
+    fixed, wide = limit_analysis(preset("set2")), limit_analysis(ya.on_piers("set2", HEIGHT_MM, WIDE_MM))
+    assert wide.du_mm == pytest.approx(fixed.du_mm, rel=1e-6)
+    shifted = [f"{int(label[:-1]) + 1}{label[-1]}" for label in fixed.collapse_hinges]
+    assert list(wide.collapse_hinges) == shifted
+
+
+def test_narrow_piers_overturn_and_the_static_engine_rises_toward_the_rigid_du(narrow):
+    """Narrow piers: the left pier turns about its outer toe (hinge 1E) and du falls to about a third of
+    the fixed supports'; the static du rises with kn and ends within 3 % of the rigid march at 10 000."""
+    rigid = limit_analysis(narrow)
+    assert "1E" in rigid.collapse_hinges and rigid.du_mm < 0.5 * limit_analysis(preset("set2")).du_mm
+    static = [simulate_static(narrow.replace(kn_N_per_mm3=kn), None, log=quiet).du_mm for kn in (5.2, 100.0, 10_000.0)]
+    assert static[0] < static[1] < static[2] < rigid.du_mm
+    assert static[2] == pytest.approx(rigid.du_mm, rel=0.03)
+
+
+def test_the_supports_carry_the_arch_and_its_piers(narrow):
+    loading = StaticLoading.of(narrow)
+    row = StaticRecords(loading.arch, HINGE_ROTATION).series_columns(loading.selfweight())
+    weight = float(loading.arch.weight[1:-1].sum())
+    assert row["left_Ry_N"] + row["right_Ry_N"] == pytest.approx(weight, rel=1e-6)
+    assert narrow.geometry.thickness_mm == preset("set2").geometry.thickness_mm  # the ring's, not the piers'
+
+
+def test_piers_too_narrow_or_out_of_range_are_refused_in_one_line():
+    with pytest.raises(CaseError, match=r"^pier_width_mm must be more than 21.29 mm for this arch .*got 10.0$"):
+        ya.on_piers("set2", HEIGHT_MM, 10.0)
+    with pytest.raises(CampaignError, match=r"^pier_height_mm must be a number in \(0, 100000\], got -1.0$"):
+        ya.on_piers("set2", -1.0, NARROW_MM)
