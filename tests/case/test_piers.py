@@ -6,9 +6,11 @@ engine rises toward the rigid answer as the joints stiffen, and its supports car
 from __future__ import annotations
 
 import pytest
+from click.testing import CliRunner
 
 import yadearch as ya
-from yadearch.case.config import preset
+from yadearch.case.config import load_case, preset
+from yadearch.cli.commands import cli
 from yadearch.errors import CampaignError, CaseError
 from yadearch.solve.limit import limit_analysis
 from yadearch.solve.static_path import StaticLoading
@@ -61,3 +63,13 @@ def test_piers_too_narrow_or_out_of_range_are_refused_in_one_line():
         ya.on_piers("set2", HEIGHT_MM, 10.0)
     with pytest.raises(CampaignError, match=r"^pier_height_mm must be a number in \(0, 100000\], got -1.0$"):
         ya.on_piers("set2", -1.0, NARROW_MM)
+
+
+def test_the_command_line_writes_the_case_on_its_piers(tmp_path):
+    """`yadearch piers` writes the case file that `ya.on_piers` makes, in one line of output."""
+    out = tmp_path / "on_piers.toml"
+    result = CliRunner().invoke(
+        cli, ["piers", "--preset", "set2", "--height-mm", "100", "--width-mm", "60", "--out", str(out)]
+    )
+    assert result.exit_code == 0 and len(result.output.strip().splitlines()) == 1
+    assert load_case(out) == ya.on_piers("set2", HEIGHT_MM, NARROW_MM)
