@@ -9,10 +9,13 @@ import pytest
 from conftest import REPO
 
 import yadearch.solve.static_path as static_path
-from yadearch.case.config import load_case
+from yadearch.case.config import load_case, preset
+from yadearch.errors import CANNOT_STAND
 from yadearch.solve import banded
+from yadearch.solve.limit import stands
 from yadearch.solve.stages import Verdict
 from yadearch.solve.static_path import StaticLoading
+from yadearch.solve.static_state import StaticEngineError
 from yadearch.static.records import StaticRecords
 
 CASE = REPO / "tests" / "data" / "exact_contact_kink.toml"
@@ -45,3 +48,17 @@ def test_a_ramp_that_falls_is_confirmed_by_a_finer_one(case):
     loading.selfweight()
     assert [(r["gravity_steps"], r["verdict"]) for r in loading.ramps] == [(10, Verdict.RUNAWAY), (20, Verdict.STABLE)]
     assert loading.ramps[0]["gravity"] == pytest.approx(0.1) and loading.ramps[0]["moved_mm"] >= 50.0
+
+
+def test_a_fall_that_a_finer_ramp_does_not_finish_is_an_arch_that_cannot_stand():
+    """The atlas's three-centred arch 24 mm thick at kn 10 000, which rigid blocks of its shape cannot
+    hold up either: ten steps fall at the first, the finer ramp's descent stops 48 mm down at its
+    budget; a fall seen and no equilibrium found is an arch that cannot stand, not a solver's failure."""
+    case = preset("set2").with_overrides(
+        {"shape": "three_centred", "span_mm": 600.0, "rise_mm": 200.0, "thickness_mm": 24.0, "kn_N_per_mm3": 1e4}
+    )
+    loading = StaticLoading.of(case)
+    with pytest.raises(StaticEngineError, match=f"^{CANNOT_STAND} "):
+        loading.selfweight()
+    assert [r["verdict"] for r in loading.ramps] == [Verdict.RUNAWAY, Verdict.TIMEOUT]
+    assert not stands(case)  # rigid blocks of this shape do not stand

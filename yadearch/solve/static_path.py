@@ -74,8 +74,9 @@ class StaticLoading:
         """Gravity in GRAVITY_STEPS load steps from the blocks exactly touching (`gravity_ramp`); a ramp
         that falls or fails is tried again in CONFIRMING_STEPS finer steps, and the arch stands if either
         reaches a stable state under its whole weight (an equilibrium found is the proof that it can
-        stand: the first descent, from faces exactly touching, can take another way); both ramps are
-        recorded in `ramps`."""
+        stand: the first descent, from faces exactly touching, can take another way); else it cannot
+        stand if either fell (a block falling is the arch's motion, an unfinished descent is not), and
+        is unresolved if both stopped. Both ramps are recorded in `ramps`."""
         self.ramps = []
         for steps in (GRAVITY_STEPS, CONFIRMING_STEPS):
             found, slip, ramp = gravity_ramp(self.arch, self.solver, self._fall, steps)
@@ -84,7 +85,7 @@ class StaticLoading:
                 break
         if found.verdict != Verdict.STABLE:
             said = "; ".join(ramp_text(ramp) for ramp in self.ramps)
-            if found.verdict == Verdict.RUNAWAY:
+            if any(ramp["verdict"] == Verdict.RUNAWAY for ramp in self.ramps):
                 raise StaticEngineError(f"{CANNOT_STAND} ({said})")
             raise StaticEngineError(
                 f"{UNRESOLVED}: the self-weight descent found neither an equilibrium nor a fall of "
