@@ -11,7 +11,7 @@ import pytest
 from conftest import REPO
 
 PACKAGE = REPO / "yadearch"
-# top to bottom; the modules at the bottom (errors, atomic, markdown) and the version serve every layer
+# top to bottom; the modules at the bottom (errors, atomic, markdown, children) and the version serve every layer
 LAYERS = (
     "cli",
     "api",
@@ -29,6 +29,7 @@ LAYERS = (
     "errors",
     "atomic",
     "markdown",
+    "children",
 )
 ENTRY_POINTS = ("__init__", "__main__")  # the package's own surface: `import yadearch` reaches the API
 

@@ -7,12 +7,12 @@ from __future__ import annotations
 import os
 import shutil
 import subprocess
-import sys
 import tempfile
 from pathlib import Path
 
 from yadearch.case.config import ArchCase
 from yadearch.case.plan import check_dem_load
+from yadearch.children import child_command, child_environment
 from yadearch.errors import RunFailedError
 from yadearch.launch.process import check_yade_installed, exit_reason, run_child, swap_into_place
 from yadearch.results.load_path import load_path_file, read_load_path
@@ -35,8 +35,8 @@ def run_load_process(
     try:
         case_file = staging / CASE_FILE
         case_file.write_text(case.to_toml())
-        cmd = [sys.executable, "-m", "yadearch.dem.load_simulate", str(case_file), str(staging), repr(after_mm)]
-        env = dict(os.environ, OMP_NUM_THREADS=str(case.numerics.threads))
+        cmd = child_command("yadearch.dem.load_simulate", str(case_file), str(staging), repr(after_mm))
+        env = child_environment(case.numerics.threads)
         try:
             returncode, stderr = run_child(cmd, env, timeout_s, quiet)
         except subprocess.TimeoutExpired:

@@ -9,13 +9,13 @@ import os
 import shutil
 import signal
 import subprocess
-import sys
 import threading
 from pathlib import Path
 
 from yadearch.case.config import ArchCase
 from yadearch.case.numerics_section import STATIC_ENGINE  # a run solved by the static engine (no YADE)
 from yadearch.case.plan import plan_run
+from yadearch.children import child_command, child_environment
 from yadearch.dem.simulate import SCRATCH_RECORD
 from yadearch.dem.yade_env import yade_problem
 from yadearch.errors import RunFailedError, RunInterruptedError, YadearchError, YadeMissingError
@@ -125,8 +125,8 @@ def _run_locked(
     staging.mkdir(parents=True)
     case_file = staging / CASE_FILE
     case_file.write_text(case.to_toml())
-    env = dict(os.environ, OMP_NUM_THREADS=str(case.numerics.threads))
-    cmd = [sys.executable, "-m", "yadearch.dem.simulate", str(case_file), str(staging)]
+    env = child_environment(case.numerics.threads)
+    cmd = child_command("yadearch.dem.simulate", str(case_file), str(staging))
     try:
         try:
             if static:

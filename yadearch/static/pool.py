@@ -21,6 +21,8 @@ import time
 from pathlib import Path
 from typing import Any
 
+from yadearch.children import child_command, child_environment
+
 WORKER_ENDED = "the static engine's worker process ended"
 PROC_UTIME, PROC_STIME = 11, 12  # /proc/PID/stat's CPU ticks, counted after the command's name
 STOPPED = (-signal.SIGTERM, -signal.SIGINT)  # a worker stopped by `stop_workers` or a Ctrl-C: runs left pending
@@ -37,9 +39,9 @@ def _worker() -> subprocess.Popen:
             return worker
     except queue.Empty:
         pass
-    env = dict(os.environ, OMP_NUM_THREADS="1")  # one BLAS thread a worker: the cores go to the workers
+    env = child_environment(threads=1)  # one BLAS thread a worker: the cores go to the workers
     worker = subprocess.Popen(
-        [sys.executable, "-m", "yadearch.static.pool"],
+        child_command("yadearch.static.pool"),
         stdin=subprocess.PIPE,
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
