@@ -19,8 +19,8 @@ def pier_case(case: ArchCase, pier_height_mm: float, pier_width_mm: float) -> Ar
     """`case`'s arch on two piers `pier_height_mm` tall, from the springing's intrados corner down, and
     `pier_width_mm` wide at the base, from the span side outward: each pier's span-side face is vertical,
     its outer face runs from its base to the springing joint's extrados corner, and its base is a joint
-    on the ground (the support); the ring's nominal thickness is kept (the runaway bound and the snap
-    floor scale with it). CaseError in one line for a size outside its range."""
+    on the ground (the support); the case's nominal ring thickness stays (the runaway bound and the
+    snap floor scale with it). CaseError in one line for a size outside its range."""
     geometry = arch_geometry(case)
     span_mm = units.to_mm(geometry.span)
     for name, value in (("pier_height_mm", pier_height_mm), ("pier_width_mm", pier_width_mm)):
@@ -43,6 +43,5 @@ def pier_case(case: ArchCase, pier_height_mm: float, pier_width_mm: float) -> Ar
             "geometry.shape": MEASURED,
             "geometry.joint_points_mm": np.asarray(rows, float).tolist(),
             "geometry.n_voussoirs": len(rows) - 1,
-            "geometry.thickness_mm": case.geometry.thickness_mm,
         }
     )

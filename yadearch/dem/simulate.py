@@ -15,7 +15,7 @@ import time
 from pathlib import Path
 
 from yadearch.case.config import ArchCase, NumericsConfig, load_case
-from yadearch.case.materials import MATERIAL_KEY, material_text
+from yadearch.case.materials import material_text
 from yadearch.case.mechanics import held_load_text
 from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
@@ -50,7 +50,7 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
         f"support speed={case.support_speed_mm_per_s:.4g} mm/s, damping={case.numerics.damping}, "
         f"contacts={case.numerics.contact_model}"
     )
-    log(f"[{case.name}] {material_text(case.to_dict()[MATERIAL_KEY])}")
+    log(f"[{case.name}] {material_text(dataclasses.asdict(case.material))}")
     taken = paper_model_values(case)
     if taken:
         log(f"[{case.name}] warning: {model_values_text(taken)}")

@@ -3,6 +3,7 @@ folder written exactly as a DEM run writes it (no YADE). Exit code 0: complete; 
 
 from __future__ import annotations
 
+import dataclasses
 import sys
 import time
 from collections.abc import Callable
@@ -10,7 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from yadearch.case.config import ArchCase, load_case
-from yadearch.case.materials import MATERIAL_KEY, material_text
+from yadearch.case.materials import material_text
 from yadearch.case.mechanics import held_load_text, held_multiplier, runaway_length, standing_parameters
 from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK
 from yadearch.case.paper import model_values_text, paper_model_values
@@ -70,7 +71,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         f"[{case.name}] static engine: kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
         f"{arch.n_blocks} blocks; not used by this engine: {', '.join(unused)}"
     )
-    log(f"[{case.name}] {material_text(case.to_dict()[MATERIAL_KEY])}")
+    log(f"[{case.name}] {material_text(dataclasses.asdict(case.material))}")
     taken = paper_model_values(case)
     if taken:
         log(f"[{case.name}] warning: {model_values_text(taken)}")
