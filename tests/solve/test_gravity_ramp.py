@@ -1,9 +1,12 @@
 """The self-weight's verdict is not the first descent's: the sensitivity study's sample b01372_01
 (65 voussoirs, kn 0.27 N/mm3, face bumps s.d. 0.19 mm; tests/data/exact_contact_kink.toml) starts with
 faces exactly touching, where the joint law has a kink; the descent of a tenth of gravity from there
-fell 50 mm, while ramps of a fifth, a twentieth and a fortieth stand (docs/theory.md, "The static engine")."""
+fell 50 mm on the machine that found it (and stands on another), while ramps of a fifth, a twentieth and
+a fortieth stand (docs/theory.md, "The static engine")."""
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 import pytest
 from conftest import REPO
@@ -41,13 +44,25 @@ def test_the_arch_stands_whatever_the_gravity_ramp(case, steps, monkeypatch):
     assert row["left_Ry_N"] + row["right_Ry_N"] == pytest.approx(weight, rel=1e-6)
 
 
-def test_a_ramp_that_falls_is_confirmed_by_a_finer_one(case):
-    """The engine's own ramp of ten steps falls at the first (the descent from the kink takes another
-    way); the finer ramp of twenty stands, and both are on record."""
+def test_a_ramp_that_falls_is_confirmed_by_a_finer_one(case, monkeypatch):
+    """Where the first ramp falls (this sample's ten steps did on the machine that found it, and stand on
+    another: which side of the kink the first descent takes is round-off), the finer ramp of twenty
+    decides and both are on record. The first ramp's fall is imposed here, so that the rule is tested
+    on every machine, not one machine's rounding."""
+    real = static_path.gravity_ramp
+
+    def first_ramp_falls(arch, solver, fall, steps):
+        found, slip, ramp = real(arch, solver, fall, steps)
+        if steps != static_path.GRAVITY_STEPS:
+            return found, slip, ramp
+        fell = {**ramp, "verdict": str(Verdict.RUNAWAY), "gravity": 0.1, "moved_mm": 50.1}
+        return replace(found, verdict=Verdict.RUNAWAY), slip, fell
+
+    monkeypatch.setattr(static_path, "gravity_ramp", first_ramp_falls)
     loading = StaticLoading.of(case)
-    loading.selfweight()
+    state = loading.selfweight()
     assert [(r["gravity_steps"], r["verdict"]) for r in loading.ramps] == [(10, Verdict.RUNAWAY), (20, Verdict.STABLE)]
-    assert loading.ramps[0]["gravity"] == pytest.approx(0.1) and loading.ramps[0]["moved_mm"] >= 50.0
+    assert banded.positive_definite(state.stiffness)
 
 
 def test_a_fall_that_a_finer_ramp_does_not_finish_is_an_arch_that_cannot_stand():
