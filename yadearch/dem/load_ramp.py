@@ -22,6 +22,7 @@ from yadearch.dem.scene import install_before_integrator
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
+from yadearch.model.joint_tangent import BLOCK_DOFS
 from yadearch.model.loads import UNITS, block_loads, live_load_points, load_displacement
 from yadearch.model.movement import Movement
 from yadearch.results.summary import HingeRef
@@ -103,8 +104,11 @@ class LoadedArch:
         return abs(increment) * self.force_norm / softest if softest > 0.0 else math.inf
 
     def static_distance(self) -> float | None:
-        """None: a live load's states are not put in the static model (its multiplier is not wired)."""
-        return None
+        """How far the static model, the live load at the scene's multiplier, moves the blocks to a stable
+        equilibrium (m; inf: none there), None where it is not the scene's model (`dem.static_check`):
+        a hold is taken for an equilibrium only near one, as on a support's path."""
+        check = self.runner.static_check
+        return check.distance(self.runner.delta(), self.driver.multiplier) if check else None
 
     def delta(self) -> float:
         return self.driver.multiplier
@@ -122,7 +126,18 @@ class LoadedArch:
         self.runner.drive(self.driver.reached)
 
     def positions(self) -> np.ndarray:
-        return self.runner.positions()
+        """The voussoirs' centroids (n, 3; m) at the static model's stable equilibrium that the scene's state
+        sits in, the scene's own where there is none: the path's trend and snap test compare equilibria,
+        not holds within their force tolerance, which over the path's smallest stiffness near the peak is
+        the snap floor's order (docs/loads.md, "The DEM against the static engine")."""
+        scene = self.runner.positions()
+        check = self.runner.static_check
+        found = check.equilibrium(self.runner.delta(), self.driver.multiplier) if check else None
+        if found is None:
+            return scene
+        settled = scene.copy()
+        settled[:, 0:2] = found.u.reshape(-1, BLOCK_DOFS)[1:-1, 0:2]
+        return settled
 
     def hold(
         self,

@@ -15,6 +15,7 @@ from yadearch.case.mechanics import held_multiplier
 from yadearch.dem.joint_elements import JointElementContacts
 from yadearch.dem.live_arch import JOINT_CONTACTS
 from yadearch.dem.scene import ArchScene, body_states
+from yadearch.solve.newton import Equilibrium
 from yadearch.solve.stages import Verdict
 from yadearch.solve.static_path import StaticLoading
 
@@ -39,10 +40,16 @@ class StaticCheck:
         except ValueError:
             return None
 
-    def distance(self, delta: float) -> float:
+    def distance(self, delta: float, multiplier: float = 0.0) -> float:
         """The largest block move (m) from the scene's state to the stable equilibrium Newton finds with
-        the support at `delta` (m), or where Newton fails, the static descent (the hold's implicit
-        analogue); math.inf where neither ends in a stable equilibrium."""
+        the support at `delta` (m) and the live load at `multiplier`, or where Newton fails, the static
+        descent (the hold's implicit analogue); math.inf where neither ends in a stable equilibrium."""
+        found = self.equilibrium(delta, multiplier)
+        return found.moved if found is not None else math.inf
+
+    def equilibrium(self, delta: float, multiplier: float = 0.0) -> Equilibrium | None:
+        """The stable equilibrium of the static model that the scene's state sits in (`distance`'s), None
+        where neither Newton nor the descent from it ends in one."""
         loading = self.loading
         positions, rotations = body_states(self.scene)
         u0 = np.column_stack([positions[:, :2], rotations * loading.arch.length]).ravel()
@@ -50,9 +57,9 @@ class StaticCheck:
         contacts = self.scene.contacts
         assert isinstance(contacts, JointElementContacts)  # `of` checks the contact model
         shear = contacts.shear.copy()
-        found = loading.solver.newton(placed, u0, shear)
+        found = loading.solver.newton(placed, u0, shear, multiplier=multiplier)
         if found is None:
-            found = loading.solver.descend(placed, u0, shear, loading.runaway)
+            found = loading.solver.descend(placed, u0, shear, loading.runaway, multiplier=multiplier)
             if found.verdict != Verdict.STABLE:
-                return math.inf
-        return found.moved if found.stable() else math.inf
+                return None
+        return found if found.stable() else None
