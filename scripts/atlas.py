@@ -4,6 +4,7 @@ the DEM; du_first and du side by side with the targets of docs/atlas.md checked.
 
     .venv/bin/python scripts/atlas.py [--out reports/atlas] [--runs runs/atlas] [--jobs 2] [--no-dem]
     .venv/bin/python scripts/atlas.py --invariance   # the static answers with each setting halved and doubled
+    .venv/bin/python scripts/atlas.py --snap-refinement   # the snaps the floor moves, against a refined bracket
 
 Each part resumes where it stopped (the campaigns' folders under RUNS, the rigid table in OUT), so a
 rerun only redoes what changed; --no-dem reuses the DEM runs already in RUNS/dem.
@@ -22,6 +23,7 @@ from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, geometries, sta
 from yadearch.studies.atlas.invariance import invariance_markdown, invariance_rows, invariance_table
 from yadearch.studies.atlas.report import write_atlas
 from yadearch.studies.atlas.rigid import compliant_table, rigid_table
+from yadearch.studies.atlas.snap_refinement import refinement_markdown, refinement_rows, snap_cases, verdicts
 from yadearch.studies.campaigns.executors import open_pool
 from yadearch.studies.campaigns.runner import run_campaign
 
@@ -49,6 +51,23 @@ def invariance(out: Path, runs: Path, jobs: int) -> None:
     print(f"invariance -> {out / 'invariance.md'}")
 
 
+def snap_refinement(out: Path) -> None:
+    """The first snaps that move du_first with the floor (OUT/invariance.csv's), solved again with the
+    bracket refined: OUT/snap_refinement.csv (every run) and snap_refinement.md (the verdicts)."""
+    import pandas as pd
+
+    base = preset("set2")
+    cases = snap_cases(pd.read_csv(out / "invariance.csv"))
+    rows = []
+    for k, (name, kn, floor) in enumerate(cases, 1):
+        print(f"[{k}/{len(cases)}] {name} kn {kn:g}, floor x{floor:g}", flush=True)
+        rows += refinement_rows(base, name, kn, floor)
+    table = pd.DataFrame(rows)
+    write_csv_atomically(out / "snap_refinement.csv", table)
+    write_text_atomically(out / "snap_refinement.md", refinement_markdown(verdicts(table)))
+    print(f"snap refinement -> {out / 'snap_refinement.md'}")
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", type=Path, default=Path("reports/atlas"))
@@ -64,10 +83,18 @@ def main() -> int:
     parser.add_argument(
         "--invariance", action="store_true", help="only the static answers with each setting halved and doubled"
     )
+    parser.add_argument(
+        "--snap-refinement",
+        action="store_true",
+        help="only the snaps that move du_first with the floor, against a refined bracket (reads OUT/invariance.csv)",
+    )
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
     if args.invariance:
         invariance(args.out, args.runs, args.jobs)
+        return 0
+    if args.snap_refinement:
+        snap_refinement(args.out)
         return 0
     parts = ("static", "rigid", "dem") if args.engine == "all" else (args.engine,)
     static = (  # each static answer checked with the increments halved (docs/numerics.md)
