@@ -265,7 +265,8 @@ def hold_the_live_load(runner: Runner) -> float:
         raise CaseError(f"loads.{HELD_SETTINGS[case.loads.live_load]}: the held load's state ran away while settling")
     runner.position = moving_position
     runner.recorder.turning = arch.driver.turning  # the stability test and series.csv count its stiffness
-    return held_multiplier(case)
+    runner.live_multiplier = held_multiplier(case)  # ... and the static check its load
+    return runner.live_multiplier
 
 
 def _move_supports(runner: Runner, after_mm: float) -> None:

@@ -60,6 +60,7 @@ class Runner:
         self._last_progress = time.time()
         self.weight = 0.0
         self.hold_move = 0.0  # the largest block displacement of the last hold (m)
+        self.live_multiplier = 0.0  # the live load the scene holds while its support moves (N or g; 0: none)
         # where the loading stands, as the progress lines say it (a live load's path says its multiplier)
         self.position: Callable[[], str] = lambda: f"delta={units.to_mm(self.delta()):7.2f} mm"
 
@@ -219,7 +220,7 @@ class Runner:
     def static_distance(self) -> float | None:
         """How far the static model moves the blocks to a stable equilibrium (m; inf: none there), None
         where it is not the scene's model (`dem.static_check`)."""
-        return self.static_check.distance(self.delta()) if self.static_check else None
+        return self.static_check.distance(self.delta(), self.live_multiplier) if self.static_check else None
 
     def hold(
         self,

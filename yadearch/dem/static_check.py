@@ -11,7 +11,6 @@ import math
 import numpy as np
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import held_multiplier
 from yadearch.dem.joint_elements import JointElementContacts
 from yadearch.dem.live_arch import JOINT_CONTACTS
 from yadearch.dem.scene import ArchScene, body_states
@@ -31,9 +30,8 @@ class StaticCheck:
     @classmethod
     def of(cls, case: ArchCase, scene: ArchScene) -> StaticCheck | None:
         """The check of `scene`, or None where the static model is not the scene's: CGAL contacts (the
-        blocks' overlap, not the joint law), a live load held (its multiplier is not the path's), or
-        joints the static engine's banded tangent does not take."""
-        if case.numerics.contact_model != JOINT_CONTACTS or held_multiplier(case) > 0.0:
+        blocks' overlap, not the joint law), or joints the static engine's banded tangent does not take."""
+        if case.numerics.contact_model != JOINT_CONTACTS:
             return None
         try:
             return cls(case, scene)
