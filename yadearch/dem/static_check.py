@@ -21,7 +21,7 @@ from yadearch.solve.static_path import StaticLoading
 
 class StaticCheck:
     """The static model of a DEM scene's case, built once, and the distance of the scene's state to
-    its stable equilibria at the support's present displacement."""
+    its stable equilibria at the support's present displacement and the live load the scene carries."""
 
     def __init__(self, case: ArchCase, scene: ArchScene):
         self.loading = StaticLoading.of(case)
