@@ -1,6 +1,6 @@
 """Speed benchmark (docs/speed.md): set 1, set 2 (and kn 100) run or read, set 2's du against a slow
 reference, the limit analysis, the contact models' and the driver's speeds, the campaigns' wall times
-and (--static) the static engine's; --run-files N, --static-floor, --campaign-runs N and --cli-run N
+and (--static) the static engine's; --run-files N, --static-floor, --campaign-runs N, --run-profile N and --cli-run N
 measure only that (no YADE).
 Prints a verdict line per target and writes the figures to --out (`yadearch.studies.benchmark`).
 """
@@ -17,6 +17,7 @@ from yadearch.studies.benchmark.campaign_runs import campaign_runs_measurement, 
 from yadearch.studies.benchmark.cli_run import cli_run_measurement, cli_run_verdicts
 from yadearch.studies.benchmark.report import BenchmarkPlan, run_benchmark
 from yadearch.studies.benchmark.run_files import run_files_measurement, run_files_verdicts
+from yadearch.studies.benchmark.run_profile import run_profile_measurement
 from yadearch.studies.benchmark.static_engine import StaticCampaigns, static_floor_measurement, static_floor_verdicts
 from yadearch.studies.benchmark.verdicts import measured_at, print_verdicts, write_report
 
@@ -84,6 +85,13 @@ def parser() -> argparse.ArgumentParser:
         "with and without figures, against the bare interpreter, and write them to --out",
     )
     add(
+        "--run-profile",
+        type=int,
+        default=0,
+        help="only profile this many of the sensitivity study's Saltelli runs in one process (where a "
+        "campaign run's CPU goes: the compiled loops against the rest) and write it to --out",
+    )
+    add(
         "--campaign-runs",
         type=int,
         default=0,
@@ -100,7 +108,12 @@ def main() -> int:
         options.error(f"--campaign-runs must be >= 1 (0: not measured), got {args.campaign_runs}")
     if args.cli_run < 0:
         options.error(f"--cli-run must be >= 1 (0: not measured), got {args.cli_run}")
+    if args.run_profile < 0:
+        options.error(f"--run-profile must be >= 1 (0: not measured), got {args.run_profile}")
     out, runs = Path(args.out), Path(args.runs)
+    if args.run_profile:
+        write_report(out, {**run_profile_measurement(args.run_profile), "measured": measured_at()})
+        return 0
     if args.cli_run:
         figures = cli_run_measurement(args.cli_run, runs / "cli_run")
         write_report(out, {**figures, "measured": measured_at()})
