@@ -1,7 +1,8 @@
 """scripts/benchmark.py runs end to end in its quick modes (a benchmark nothing runs breaks unseen): a
 summary-only run folder solves the same arches as a whole one and weighs a tenth or less; the static
-solver is judged against its floor; a run from the command line against its two targets; and the
-DEM report, from the committed run folders, has the committed report's figures without YADE."""
+solver is judged against its floor; a campaign run is split between the compiled loops and the rest; a
+run from the command line against its two targets; and the DEM report, from the committed run folders,
+has the committed report's figures without YADE."""
 
 from __future__ import annotations
 
@@ -61,6 +62,17 @@ def test_the_command_line_benchmark_judges_both_targets_against_their_times(tmp_
     verdicts = [s for s in lines if s.startswith(("PASS", "FAIL"))]
     for line, key, target in zip(verdicts, ("cli_no_figures_wall_s", "cli_figures_wall_s"), (1.0, 3.0)):
         assert line.startswith("PASS" if measured[key] <= target else "FAIL") and f"{measured[key]:.2f} s" in line
+
+
+def test_the_run_profile_splits_a_run_between_the_compiled_loops_and_the_rest(tmp_path):
+    """Two Saltelli runs profiled: each kernel was called, and the shares of the profiled time add to one."""
+    measured, lines = _benchmark(tmp_path, "--run-profile", "2")
+    assert list(measured) == list(json.loads((REPORTS / "benchmark_run_profile.json").read_text()))
+    kernels = ("descent_kernel", "newton_kernel")
+    assert all(measured[f"profile_{k}_calls_a_run"] >= 1 for k in kernels)
+    shares = [measured[f"profile_{k}_share"] for k in kernels] + [measured["profile_rest_share"]]
+    assert all(0.0 <= share <= 1.0 for share in shares) and sum(shares) == pytest.approx(1.0)
+    assert 0 < measured["profile_run_cpu_s"] and lines[0].startswith("a Saltelli run, 2 in one process")
 
 
 def test_the_dem_report_from_stored_runs_needs_no_yade_and_keeps_the_committed_keys(tmp_path):
