@@ -30,7 +30,7 @@ def test_a_snap_that_stays_as_the_bracket_shrinks_is_confirmed():
     assert verdict["verdict"] == CONFIRMED
     landings = rows["landing_mm"]
     assert landings.min() > rows["floor_mm"].iloc[0] and landings.max() / landings.min() < 1.2
-    assert rows["du_first_mm"].iloc[-1] == pytest.approx(rows["du_first_mm"].iloc[0], rel=0.01)
+    assert rows["first_snap_mm"].iloc[-1] == pytest.approx(rows["first_snap_mm"].iloc[0], rel=0.01)
 
 
 def test_a_landing_that_a_finer_bracket_does_not_find_vanishes():

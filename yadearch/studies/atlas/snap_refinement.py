@@ -13,13 +13,15 @@ import pandas as pd
 
 from yadearch.case.config import ArchCase
 from yadearch.model import units
+from yadearch.results.summary import collapse_fields
 from yadearch.solve.static_path import StaticLoading
 from yadearch.studies.atlas.grid import geometries
 
 SNAP_FLOOR = "snap_floor"  # the invariance table's name of the floor's variants
 BRACKET_REFINEMENTS = (1.0, 0.25, 0.0625)  # du_tolerance_mm x these
-SAME_FOLD = 0.01  # du_first within 1 % at the finest bracket: the same first loss
+SAME_FOLD = 0.01  # du_first within 1 % at the finest bracket (or inside the default one): the same first loss
 CONFIRMED, VANISHED, MOVED = "confirmed", "vanished", "moved"
+FIRST_BRACKET = ("du_first_low_mm", "du_first_high_mm")  # the bracket du_first is the middle of
 
 
 def snap_cases(invariance: pd.DataFrame) -> list[tuple[str, float, float]]:
@@ -53,16 +55,16 @@ def refinement_rows(base: ArchCase, name: str, kn: float, floor_factor: float) -
         loading.selfweight()
         path = loading.follow()
         first = loading.snaps[0] if loading.snaps else None
-        du = units.to_mm(path.lower) if path.collapsed else math.nan
+        answer = collapse_fields(path, loading.arch.movement, loading.first_loss)  # as the summaries give them
         rows.append(
             {
                 "case": f"{name}-kn{kn:g}",
                 "floor_x": floor_factor,
                 "floor_mm": units.to_mm(loading.snap_floor),
                 "bracket_x": refinement,
-                "du_mm": du,
-                # no loss of stability before the collapse: du_first is du, as the summaries give it
-                "du_first_mm": units.to_mm(loading.first_loss[0]) if loading.first_loss else du,
+                "du_mm": answer["du_mm"] if answer["du_mm"] is not None else math.nan,
+                "du_first_mm": answer.get("du_first_mm", math.nan),
+                **dict(zip(FIRST_BRACKET, answer.get("du_first_bracket_mm", (math.nan, math.nan)))),
                 "first_snap_mm": first["fold_mm"][0] if first else math.nan,
                 "landing_mm": first["move_mm"] if first else math.nan,
             }
@@ -72,15 +74,17 @@ def refinement_rows(base: ArchCase, name: str, kn: float, floor_factor: float) -
 
 def verdicts(rows: pd.DataFrame) -> pd.DataFrame:
     """Per arch and floor: the first snap at the default bracket and at the finest, and whether it is
-    `confirmed` (the same du_first within SAME_FOLD and a snap there), `vanished` (no snap there any
-    more: du_first moves later) or `moved`."""
+    `confirmed` (a snap there, du_first within SAME_FOLD or inside the default bracket), `vanished` (no
+    snap there any more: du_first moves later) or `moved`."""
     out = []
     for (case, floor_x), group in rows.groupby(["case", "floor_x"], sort=False):
         coarse, fine = group.iloc[0], group.iloc[-1]
         if math.isnan(coarse["first_snap_mm"]):
             continue
-        same = not math.isnan(fine["first_snap_mm"]) and math.isclose(
-            fine["du_first_mm"], coarse["du_first_mm"], rel_tol=SAME_FOLD
+        low, high = coarse[list(FIRST_BRACKET)]
+        same = not math.isnan(fine["first_snap_mm"]) and (
+            math.isclose(fine["du_first_mm"], coarse["du_first_mm"], rel_tol=SAME_FOLD)
+            or low <= fine["du_first_mm"] <= high
         )
         verdict = CONFIRMED if same else (VANISHED if fine["du_first_mm"] > coarse["du_first_mm"] else MOVED)
         out.append(
