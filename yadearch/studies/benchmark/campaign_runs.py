@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from yadearch.case.config import preset
+from yadearch.case.config import ArchCase, preset
 from yadearch.case.numerics_section import SUMMARY_RUN_FILES
 from yadearch.errors import YadearchError
 from yadearch.static.pool import workers_cpu_s
@@ -28,14 +28,23 @@ TARGET_STUDY_S = 20 * 60.0  # ... in this long on CAMPAIGN_CORES cores
 ANSWERS = ["du_mm", "du_first_mm", "hinges", "outcome", "status"]
 
 
+def saltelli_rows(runs: int) -> list[dict[str, Any]]:
+    """The sensitivity study's first `runs` Saltelli rows (the paper's factors)."""
+    base_points = max(MIN_BASE_POINTS, 2 ** math.ceil(math.log2(math.ceil(runs / (len(PAPER_FACTORS) + 2)))))
+    return sobol_rows(PAPER_FACTORS, base_points)[:runs]
+
+
+def saltelli_base() -> ArchCase:
+    """The case those rows vary: set 2 on the static engine, its runs kept to their summaries."""
+    return preset("set2").with_overrides({"numerics.engine": "static", "numerics.run_files": SUMMARY_RUN_FILES})
+
+
 def campaign_runs_measurement(runs: int, folder: Path) -> dict[str, Any]:
     """The first `runs` runs of the Saltelli sample (static, set 2's base) as a campaign with run
     folders and as a lean one, each on one worker warmed first; CPU a run of the parent and worker."""
     if runs < 1:
         raise YadearchError(f"--campaign-runs must be >= 1, got {runs}")
-    base_points = max(MIN_BASE_POINTS, 2 ** math.ceil(math.log2(math.ceil(runs / (len(PAPER_FACTORS) + 2)))))
-    rows = sobol_rows(PAPER_FACTORS, base_points)[:runs]
-    base = preset("set2").with_overrides({"numerics.engine": "static", "numerics.run_files": SUMMARY_RUN_FILES})
+    rows, base = saltelli_rows(runs), saltelli_base()
     figures: dict[str, Any] = {"campaign_runs": runs}
     tables = {}
     with local_pool(1) as pool:

@@ -10,22 +10,19 @@ import pstats
 import time
 from typing import Any
 
-from yadearch.case.config import ArchCase, preset
-from yadearch.case.numerics_section import SUMMARY_RUN_FILES
+from yadearch.case.config import ArchCase
 from yadearch.errors import YadearchError
 from yadearch.static.simulate import simulate_static
+from yadearch.studies.benchmark.campaign_runs import saltelli_base, saltelli_rows
 from yadearch.studies.campaigns.grid import RUN_COLUMN
-from yadearch.studies.sensitivity.indices import MIN_BASE_POINTS, PAPER_FACTORS, sobol_rows
 
 KERNELS = ("descent_kernel", "newton_kernel")  # the compiled loops of the descent and of Newton
 
 
 def saltelli_cases(runs: int) -> list[ArchCase]:
     """The sensitivity study's first `runs` Saltelli runs as static cases (set 2's base)."""
-    base_points = max(MIN_BASE_POINTS, 2 ** math.ceil(math.log2(math.ceil(runs / (len(PAPER_FACTORS) + 2)))))
-    base = preset("set2").with_overrides({"numerics.engine": "static", "numerics.run_files": SUMMARY_RUN_FILES})
-    rows = sobol_rows(PAPER_FACTORS, base_points)[:runs]
-    return [base.with_overrides({k: v for k, v in row.items() if k != RUN_COLUMN}) for row in rows]
+    base = saltelli_base()
+    return [base.with_overrides({k: v for k, v in row.items() if k != RUN_COLUMN}) for row in saltelli_rows(runs)]
 
 
 def _solve(case: ArchCase) -> None:
