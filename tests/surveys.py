@@ -44,3 +44,22 @@ def surveyed_blocks(case: ArchCase, gap_mm: float = 0.0, seed: int = 0) -> dict:
     ]
     order = rng.permutation(len(blocks))
     return {"blocks": [blocks[k] for k in order]}
+
+
+def curved_extrados(case: ArchCase, corners_per_voussoir: int) -> dict:
+    """`case`'s segmental arch as a survey of blocks whose voussoirs' extrados are arcs: each voussoir
+    its four joint corners and `corners_per_voussoir` more on the extrados circle between them (mm), in
+    order round the block (a curved extrados drawn as a polygon), the supports marked."""
+    polygons = [1e3 * b[: len(b) // 2, :2] for b in arch_geometry(case).blocks]
+    blocks = []
+    for k, polygon in enumerate(polygons):
+        if k in (0, len(polygons) - 1):
+            blocks.append({"corners": polygon.tolist(), "support": "left" if k == 0 else "right"})
+            continue
+        a_in, b_in, b_out, a_out = polygon  # counter-clockwise, the extrados from right to left
+        radius = np.linalg.norm(a_out)
+        start, end = np.arctan2(b_out[1], b_out[0]), np.arctan2(a_out[1], a_out[0])
+        angles = start + (end - start) * np.arange(1, corners_per_voussoir + 1) / (corners_per_voussoir + 1)
+        arc = radius * np.column_stack([np.cos(angles), np.sin(angles)])
+        blocks.append({"corners": [a_in.tolist(), b_in.tolist(), b_out.tolist(), *arc.tolist(), a_out.tolist()]})
+    return {"blocks": blocks}

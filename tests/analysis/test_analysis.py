@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 from synthetic_runs import BuiltHinge, BuiltRun, paper_like_run
 
-from yadearch.analysis.blocks import block_centroids, polygon_centroid, tangential_slip_mm
+from yadearch.analysis.blocks import block_centroids, tangential_slip_mm
 from yadearch.analysis.run import Thresholds
 from yadearch.analysis.tracking import format_interfaces
-from yadearch.model.geometry import segmental_arch
+from yadearch.model.geometry import polygon_centroid, segmental_arch
 from yadearch.results.summary import RunSummary
 
 

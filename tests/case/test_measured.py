@@ -92,12 +92,12 @@ def test_a_survey_of_blocks_is_the_arch_its_joints_make(tmp_path):
 @pytest.mark.parametrize(
     ("change", "said"),
     [
-        (lambda s: _voussoir(s).update(corners=_voussoir(s)["corners"] + [[0.0, 500.0]]), "has 5 corners"),
+        (lambda s: _voussoir(s).update(corners=_out_of_order(_voussoir(s)["corners"])), "not a convex polygon of 5"),
         (lambda s: [b.pop("support", None) for b in s["blocks"]], "mark exactly one block 'support': 'left'"),
         (lambda s: s.update(joint_tolerance_mm=1e-9) or s.update(blocks=_gapped(s["blocks"])), "shares a joint"),
         (lambda s: _voussoir(s).update(corners="abc"), "needs 'corners'"),
     ],
-    ids=["five corners", "no supports", "gaps beyond the tolerance", "no corners"],
+    ids=["corners out of order", "no supports", "gaps beyond the tolerance", "no corners"],
 )
 def test_a_survey_of_blocks_that_makes_no_ring_is_refused_in_one_line(change, said):
     base = preset("set2").with_overrides(SMALL)
@@ -116,3 +116,10 @@ def _voussoir(survey: dict) -> dict:
 def _gapped(blocks: list) -> list:
     """`blocks` with every corner moved 0.01 mm: no two neighbours share a corner to 1e-9 mm."""
     return [{**b, "corners": (np.asarray(b["corners"]) + 0.01 * (k + 1)).tolist()} for k, b in enumerate(blocks)]
+
+
+def _out_of_order(corners: list) -> list:
+    """A voussoir's four corners with a fifth, beyond its extrados, listed between its intrados corners."""
+    a_in, b_in, b_out, a_out = np.asarray(corners)
+    beyond = (b_out + a_out) / 2.0 + (b_out + a_out - a_in - b_in) / 2.0
+    return [a_in.tolist(), beyond.tolist(), b_in.tolist(), b_out.tolist(), a_out.tolist()]

@@ -137,6 +137,32 @@ def test_the_paraview_series_reads_back_with_vtk(run, tmp_path):
     assert joints.GetNumberOfPoints() == len(geometry.joints) and hinge.sum() == len(run.hinges) == 4
 
 
+def test_polygon_blocks_export_as_polyhedra_of_their_volume(tmp_path):
+    """Voussoirs of seven corners (a curved extrados, tests/surveys.py) export as VTK polyhedra: every
+    block's volume, as VTK measures it after the collapse, is its prism's (rigid motion, outward faces);
+    the supports stay hexahedra."""
+    pytest.importorskip("vtkmodules")
+    from surveys import curved_extrados
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_POLYHEDRON
+    from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
+
+    base = ya.preset("set2").with_overrides(COARSE)
+    polygon_run = ya.run(ya.measured_case(curved_extrados(base, 3), base=base), out=tmp_path / "run")
+    pvd = polygon_run.export_vtk(tmp_path / "vtk")
+    datasets = ElementTree.parse(pvd).getroot().find("Collection").findall("DataSet")
+    last = _read(tmp_path / "vtk" / datasets[-2].get("file"))
+    types = [last.GetCellType(k) for k in range(last.GetNumberOfCells())]
+    assert types == [VTK_HEXAHEDRON] + [VTK_POLYHEDRON] * 15 + [VTK_HEXAHEDRON]
+    sizes = vtkCellSizeFilter()
+    sizes.SetInputData(last)
+    sizes.Update()
+    volumes = vtk_to_numpy(sizes.GetOutput().GetCellData().GetArray("Volume"))
+    geometry = case_geometry(polygon_run.folder.case)
+    prisms = [abs(_area(b[: len(b) // 2, :2])) * np.ptp(b[:, 2]) for b in geometry.blocks]
+    assert volumes == pytest.approx(prisms, rel=VOLUME_TOLERANCE)
+
+
 def _area(xy):
     """Signed area of a polygon (shoelace)."""
     return 0.5 * np.sum(xy[:, 0] * np.roll(xy[:, 1], -1) - np.roll(xy[:, 0], -1) * xy[:, 1])

@@ -8,7 +8,7 @@ import numpy as np
 
 from yadearch.case.config import case_from_dict
 from yadearch.case.mechanics import arch_geometry
-from yadearch.model.geometry import ArchGeometry
+from yadearch.model.geometry import ArchGeometry, front_face, polygon_centroid
 from yadearch.model.joints import block_outlines
 
 MM = 1e-3
@@ -20,17 +20,9 @@ def case_geometry(case: dict[str, Any]) -> ArchGeometry:
     return arch_geometry(case_from_dict({key: case[key] for key in ("geometry", "imperfections") if key in case}))
 
 
-def polygon_centroid(xy: np.ndarray) -> np.ndarray:
-    """Area centroid of a simple polygon given in order (not the vertex mean)."""
-    x, y = xy[:, 0], xy[:, 1]
-    cross = x * np.roll(y, -1) - np.roll(x, -1) * y
-    area = cross.sum() / 2.0
-    return np.array([((x + np.roll(x, -1)) * cross).sum(), ((y + np.roll(y, -1)) * cross).sum()]) / (6.0 * area)
-
-
 def block_centroids(geometry: ArchGeometry) -> np.ndarray:
     """(n_blocks, 2) centroids of the prisms: YADE's body positions before anything moves."""
-    return np.array([polygon_centroid(b[: len(b) // 2, :2]) for b in geometry.blocks])
+    return np.array([polygon_centroid(front_face(b)) for b in geometry.blocks])
 
 
 def snapshot_outlines(geometry: ArchGeometry, snapshot: dict[str, Any]) -> list[np.ndarray]:

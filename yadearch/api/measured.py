@@ -18,7 +18,7 @@ from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
 from yadearch.case.piers import pier_case
 from yadearch.case.shape import MEASURED, MIN_MEASURED_JOINTS
-from yadearch.case.survey_blocks import joints_from_blocks
+from yadearch.case.survey_blocks import ring_from_blocks
 from yadearch.errors import CaseError
 
 JOINT_COLUMNS = ("x_intrados_mm", "y_intrados_mm", "x_extrados_mm", "y_extrados_mm")
@@ -31,10 +31,11 @@ def measured_case(
     """`base` (a case or a preset's name: its material, joints, loading and numerics) with the arch of
     the surveyed `joints`: a CSV file or table with the columns JOINT_COLUMNS (one row a joint, left to
     right), or a JSON file or dict of the blocks' corners with the supports marked
-    (`case.survey_blocks.joints_from_blocks`); voussoirs between consecutive joints, `thickness_mm`
+    (`case.survey_blocks.ring_from_blocks`: a voussoir may have more than four corners, its faces' other
+    corners kept); voussoirs between consecutive joints, `thickness_mm`
     their mean joint length (the nominal thickness the runaway bound and the snap floor scale with);
     CaseError for a table it cannot use."""
-    table = _read(joints)
+    table, faces = _read(joints)
     missing = [c for c in JOINT_COLUMNS if c not in table.columns]
     if missing:
         raise CaseError(f"joints: the table needs the columns {', '.join(JOINT_COLUMNS)}; missing {', '.join(missing)}")
@@ -49,6 +50,8 @@ def measured_case(
         "geometry.joint_points_mm": rows.tolist(),
         "geometry.n_voussoirs": len(rows) - 1,
         "geometry.thickness_mm": float(lengths.mean()),
+        "geometry.intrados_points_mm": faces.get("intrados", []),
+        "geometry.extrados_points_mm": faces.get("extrados", []),
     }
     if name is not None:
         overrides["name"] = name
@@ -57,20 +60,23 @@ def measured_case(
     return case
 
 
-def _read(joints: str | Path | pd.DataFrame | dict[str, Any]) -> pd.DataFrame:
-    """The joints' table, from a file (a JSON survey of blocks by its suffix) or as given; CaseError
-    for a file that cannot be read."""
+def _read(joints: str | Path | pd.DataFrame | dict[str, Any]) -> tuple[pd.DataFrame, dict[str, list]]:
+    """The joints' table and the faces' other corners (rows [voussoir, x, y] by face, from a survey of
+    blocks), from a file (a JSON survey of blocks by its suffix) or as given; CaseError for a file that
+    cannot be read."""
     if isinstance(joints, pd.DataFrame):
-        return joints
+        return joints, {}
     if isinstance(joints, dict):
-        return pd.DataFrame(joints_from_blocks(joints), columns=list(JOINT_COLUMNS))
+        ring = ring_from_blocks(joints)
+        table = pd.DataFrame(ring.joints, columns=list(JOINT_COLUMNS))
+        return table, {"intrados": ring.intrados_points, "extrados": ring.extrados_points}
     try:
         if Path(joints).suffix.lower() == JSON_SUFFIX:
             data = json.loads(Path(joints).read_text())
             if not isinstance(data, dict):
                 raise ValueError("a JSON survey is an object with 'blocks'")
             return _read(data)
-        return pd.read_csv(joints)
+        return pd.read_csv(joints), {}
     except CaseError:
         raise
     except (OSError, ValueError, pd.errors.ParserError) as exc:

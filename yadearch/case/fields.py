@@ -3,6 +3,7 @@ description, which `yadearch params` prints and validation reads."""
 
 from __future__ import annotations
 
+from dataclasses import field
 from typing import Any
 
 
@@ -22,3 +23,22 @@ def choice_meta(choices: tuple[str, ...], doc: str, predates: str | None = None)
     """Field metadata: the accepted words and a one-line description (and the value a case written
     before the parameter existed takes, where it has one)."""
     return {"choices": choices, "doc": doc, **({"predates": predates} if predates is not None else {})}
+
+
+def table_meta(columns: tuple[str, ...], doc: str) -> dict[str, Any]:
+    """Field metadata: a table parameter's columns (rows of numbers) and a one-line description; a case
+    written before it existed has no rows."""
+    return {"table_columns": columns, "predates": [], "doc": doc}
+
+
+def face_points_field(face: str, example: str) -> Any:
+    """A measured voussoir's corners on its `face` ('intrados' or 'extrados') between its joints: a table
+    of rows [voussoir, x_mm, y_mm]."""
+    return field(
+        default_factory=list,
+        metadata=table_meta(
+            ("voussoir", "x_mm", "y_mm"),
+            f"shape 'measured': a voussoir's corners on its {face} face between its two joints (mm), left "
+            f"to right, one row a corner ({example}); none: a straight face",
+        ),
+    )

@@ -13,7 +13,7 @@ from yadearch.case.config import ArchCase
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.dimensions import DimensionErrors, draw_dimension_errors, with_dimension_errors
-from yadearch.model.geometry import ArchGeometry
+from yadearch.model.geometry import QUADRILATERAL_PRISM, ArchGeometry
 from yadearch.model.imperfections import (
     GapProfiles,
     ImperfectionAmplitudes,
@@ -137,6 +137,13 @@ def imperfect_geometry(case: ArchCase, geometry: ArchGeometry) -> ArchGeometry:
     if errors is None:
         return geometry
     g = case.geometry
+    polygons = [k for k, block in enumerate(geometry.voussoirs, start=1) if len(block) != QUADRILATERAL_PRISM]
+    if polygons:
+        raise CaseError(
+            f"imperfections.voussoir_length_sd_mm, voussoir_thickness_mm and voussoir_thickness_sd_mm must be 0 "
+            f"for voussoirs of more than four corners (voussoir {polygons[0]}, geometry.extrados_points_mm or "
+            "intrados_points_mm): a measured polygon is the voussoir as it is"
+        )
     if g.shape == "pointed" and g.n_voussoirs % 2 == 0 and case.imperfections.voussoir_length_sd_mm > 0:
         raise CaseError(
             f"imperfections.voussoir_length_sd_mm = {case.imperfections.voussoir_length_sd_mm:g} "

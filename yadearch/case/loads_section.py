@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from yadearch.case.fields import number_meta
+from yadearch.case.fields import number_meta, table_meta
 from yadearch.model.loads import LIVE_LOADS, LOAD_SHAPES
 
 
@@ -76,14 +76,13 @@ class LoadsConfig:
     )
     further_loads: list = field(
         default_factory=list,
-        metadata={
-            "table_columns": ("offset_mm", "ratio"),
-            "predates": [],
-            "doc": "more loads on the extrados beside the vertical load, one row each: its centre's "
+        metadata=table_meta(
+            ("offset_mm", "ratio"),
+            "more loads on the extrados beside the vertical load, one row each: its centre's "
             "horizontal offset from the load's (mm, + to the right) and its magnitude over the load's "
             "(> 0); each spreads, leans and moves with it (a tandem axle 150 mm apart: [[150, 1]]); the "
             "capacity is the first load's",
-        },
+        ),
     )
     acceleration_toward: str = field(
         default="right",

@@ -8,7 +8,7 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
-from yadearch.case.shape import MEASURED
+from yadearch.case.shape import FACE_POINTS, MEASURED
 from yadearch.errors import CaseError
 from yadearch.model import units
 
@@ -43,5 +43,7 @@ def pier_case(case: ArchCase, pier_height_mm: float, pier_width_mm: float) -> Ar
             "geometry.shape": MEASURED,
             "geometry.joint_points_mm": np.asarray(rows, float).tolist(),
             "geometry.n_voussoirs": len(rows) - 1,
+            # a measured voussoir's face corners: its number one further, the left pier first
+            **{f"geometry.{face}": [[v + 1, x, y] for v, x, y in getattr(case.geometry, face)] for face in FACE_POINTS},
         }
     )

@@ -7,7 +7,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass, field, fields
 
-from yadearch.case.fields import choice_meta, number_meta
+from yadearch.case.fields import choice_meta, face_points_field, number_meta, table_meta
 from yadearch.case.imperfections_section import ImperfectionsConfig
 from yadearch.case.loads_section import LoadsConfig
 from yadearch.case.materials import PRESET_CHOICES
@@ -31,14 +31,15 @@ class GeometryConfig:
     )
     joint_points_mm: list = field(
         default_factory=list,
-        metadata={
-            "table_columns": ("x_intrados_mm", "y_intrados_mm", "x_extrados_mm", "y_extrados_mm"),
-            "predates": [],
-            "doc": "shape 'measured': each joint's intrados and extrados corners (mm), left springing to "
+        metadata=table_meta(
+            ("x_intrados_mm", "y_intrados_mm", "x_extrados_mm", "y_extrados_mm"),
+            "shape 'measured': each joint's intrados and extrados corners (mm), left springing to "
             "right springing, one row a joint (voussoirs = rows - 1); a surveyed arch, its thickness "
             "varying as the corners do (`ya.measured_case` reads them from a CSV)",
-        },
+        ),
     )
+    intrados_points_mm: list = face_points_field("intrados", "a springer's bed")
+    extrados_points_mm: list = face_points_field("extrados", "a curved extrados, a springer's back")
     n_voussoirs: int = field(default=55, metadata=number_meta(2, 1000, doc="number of voussoirs"))
     embrace_deg: float = field(
         default=125.0, metadata=number_meta(0, 180, low_open=True, doc="angle of embrace (deg; segmental)")
@@ -204,14 +205,13 @@ class LoadingConfig:
     )
     path_mm_mrad: list = field(
         default_factory=list,
-        metadata={
-            "table_columns": ("dx_mm", "dy_mm", "rotation_mrad"),
-            "predates": [],
-            "doc": "support_motion 'path': rows [dx_mm, dy_mm, rotation_mrad] of the right support's "
+        metadata=table_meta(
+            ("dx_mm", "dy_mm", "rotation_mrad"),
+            "support_motion 'path': rows [dx_mm, dy_mm, rotation_mrad] of the right support's "
             "springing point displacement and rotation (counter-clockwise), each reached in a straight "
             "line from the previous row (the first from rest); du is the distance along it and the run "
             "stops at its end",
-        },
+        ),
     )
     max_support_displacement_mm: float = field(
         default=150.0,

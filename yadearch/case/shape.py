@@ -10,7 +10,7 @@ import numpy as np
 from yadearch.case.sections import GeometryConfig
 from yadearch.errors import CaseError
 from yadearch.model import units
-from yadearch.model.geometry import ArchGeometry, arch_from_joints, arch_on_intrados, segmental_arch
+from yadearch.model.geometry import ArchGeometry, FacePoints, arch_from_joints, arch_on_intrados, segmental_arch
 from yadearch.model.intrados import (
     MAX_RISE_OVER_SPAN,
     HalfEllipse,
@@ -23,6 +23,7 @@ from yadearch.model.intrados import (
 
 MEASURED = "measured"  # geometry.shape of a surveyed arch (geometry.joint_points_mm)
 MIN_MEASURED_JOINTS = 3  # two voussoirs at least
+FACE_POINTS = ("intrados_points_mm", "extrados_points_mm")  # a measured voussoir's corners between its joints
 MIN_JOINT_ANGLE_DEG = 20.0  # a joint nearer the intrados tangent makes a sliver voussoir (joint > 2.9 t)
 
 INTRADOS: dict[str, Callable[[GeometryConfig], Intrados]] = {
@@ -78,6 +79,9 @@ def build_arch(g: GeometryConfig) -> ArchGeometry:
     (= radial) joints is the paper's construction, bit for bit."""
     if g.shape == MEASURED:
         return measured_arch(g)
+    given = [name for name in FACE_POINTS if getattr(g, name)]
+    if given:
+        raise CaseError(f"geometry.{given[0]} is for shape 'measured' only, got shape {g.shape!r}")
     intrados = checked_intrados(g)
     thickness, depth, support = units.mm(g.thickness_mm), units.mm(g.depth_mm), units.mm(g.support_length_mm)
     try:
@@ -113,6 +117,7 @@ def measured_arch(g: GeometryConfig) -> ArchGeometry:
             f"{backward[0] + 1}'s; give the joints left to right"
         )
     springing = 0.5 * (intrados[0, 1] + intrados[-1, 1])
+    faces = face_points(g)
     try:
         return arch_from_joints(
             list(zip(intrados, extrados)),
@@ -121,9 +126,31 @@ def measured_arch(g: GeometryConfig) -> ArchGeometry:
             thickness=units.mm(g.thickness_mm),  # the nominal ring thickness (the joints' mean, `ya.measured_case`)
             span=float(intrados[-1, 0] - intrados[0, 0]),
             rise=float(intrados[:, 1].max() - springing),
+            faces=faces,
         )
     except ValueError as exc:
+        if "polygon" in str(exc):
+            raise CaseError(
+                f"geometry.{' / '.join(FACE_POINTS)}: {exc} (each face's corners left to right, between its "
+                "joints' corners, the voussoir convex)"
+            ) from None
         raise CaseError(
             f"geometry.joint_points_mm: {exc} (is each row [x, y] of the intrados corner then of the extrados "
             "corner, the extrados above?)"
         ) from None
+
+
+def face_points(g: GeometryConfig) -> dict[int, FacePoints]:
+    """The measured voussoirs' corners between their joints (m), by voussoir number (1..n): the rows of
+    `intrados_points_mm` and `extrados_points_mm`, in the order given; CaseError for a row that names
+    no voussoir of the arch."""
+    by_face = []
+    for name in FACE_POINTS:
+        rows = np.asarray(getattr(g, name), float).reshape(-1, 3)
+        wrong = [v for v in rows[:, 0] if v != int(v) or not 1 <= v <= g.n_voussoirs]
+        if wrong:
+            raise CaseError(f"geometry.{name}: voussoir {wrong[0]:g} must be a whole number from 1 to {g.n_voussoirs}")
+        by_face.append({int(v): units.mm(rows[rows[:, 0] == v, 1:3]) for v in np.unique(rows[:, 0])})
+    inner, outer = by_face
+    none = np.zeros((0, 2))
+    return {v: FacePoints(inner.get(v, none), outer.get(v, none)) for v in sorted(set(inner) | set(outer))}

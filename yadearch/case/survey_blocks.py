@@ -1,11 +1,13 @@
-"""A surveyed arch given block by block (pure): each voussoir a polygon of its four corners and the two
-supports marked, as a survey or a drawing gives them, turned into the joints' intrados and extrados
-corners that geometry.joint_points_mm holds (docs/movements.md, "A surveyed arch"). Corners of
-neighbouring blocks within a tolerance are one joint corner (a survey never closes a dry joint to the
-micron); the intrados is the shorter of the ring's two chains of corners."""
+"""A surveyed arch given block by block (pure): each voussoir a convex polygon of its corners (two on each
+joint, any more on its faces) and the two supports marked, as a survey or a drawing gives them, turned
+into the joints' intrados and extrados corners that geometry.joint_points_mm holds and the faces' other
+corners (geometry.intrados_points_mm, extrados_points_mm; docs/movements.md, "A surveyed arch").
+Corners of neighbouring blocks within a tolerance are one joint corner (a survey never closes a dry
+joint to the micron); the intrados is the shorter of the ring's two chains of joint corners."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -13,15 +15,24 @@ import numpy as np
 from yadearch.errors import CaseError
 
 SUPPORTS = ("left", "right")  # a block's "support" mark: the fixed or moving abutment on that side
-VOUSSOIR_CORNERS = 4  # two on each of its joints
+VOUSSOIR_CORNERS = 4  # at least: two on each of its joints
 DEFAULT_JOINT_TOLERANCE_MM = 0.5  # corners of two neighbours closer than this are one joint corner
 
 
-def joints_from_blocks(data: dict[str, Any]) -> np.ndarray:
-    """(joints, 4) [x_i, y_i, x_e, y_e] (mm), left springing to right, from a survey's blocks:
-    `data["blocks"]` a list of {"corners": [[x, y], ...] (mm), "support": "left" | "right" (the two
-    abutments only)}, in any order; `data["joint_tolerance_mm"]` optional. CaseError in one line for a
-    survey that makes no ring."""
+@dataclass(frozen=True)
+class SurveyedRing:
+    """A survey of blocks as the measured arch's parameters (mm): the joints (joints, 4) [x_i, y_i, x_e,
+    y_e] left to right, and each face's other corners as rows [voussoir, x, y], left to right."""
+
+    joints: np.ndarray
+    intrados_points: list[list[float]]
+    extrados_points: list[list[float]]
+
+
+def ring_from_blocks(data: dict[str, Any]) -> SurveyedRing:
+    """The ring of a survey's blocks: `data["blocks"]` a list of {"corners": [[x, y], ...] (mm), in
+    order round the block, "support": "left" | "right" (the two abutments only)}, in any order;
+    `data["joint_tolerance_mm"]` optional. CaseError in one line for a survey that makes no ring."""
     blocks = data.get("blocks")
     if not isinstance(blocks, list) or not blocks:
         raise CaseError("survey: 'blocks' must be a list of blocks, each {'corners': [[x, y], ...]}")
@@ -40,17 +51,35 @@ def joints_from_blocks(data: dict[str, Any]) -> np.ndarray:
     order = _chain(corners, ends["left"][0], ends["right"][0], tolerance)
     joints = [_shared(corners[a], corners[b], tolerance) for a, b in zip(order, order[1:])]
     for k, index in enumerate(order[1:-1]):
-        if len(corners[index]) != VOUSSOIR_CORNERS:
+        if len(corners[index]) < VOUSSOIR_CORNERS:
             raise CaseError(
                 f"survey: voussoir {k + 1} (block {index}) has {len(corners[index])} corners; a voussoir has "
-                f"{VOUSSOIR_CORNERS}, two on each joint"
+                f"{VOUSSOIR_CORNERS} at least, two on each joint"
             )
     first, second = _chains(joints)
     intrados_first = (
         np.linalg.norm(np.diff(first, axis=0), axis=1).sum() <= np.linalg.norm(np.diff(second, axis=0), axis=1).sum()
     )
     intrados, extrados = (first, second) if intrados_first else (second, first)
-    return np.hstack([intrados, extrados])
+    inner, outer = [], []
+    for k, index in enumerate(order[1:-1], start=1):
+        ring = corners[index]
+        inner += [[k, *p] for p in _between(ring, intrados[k - 1], intrados[k], (extrados[k - 1], extrados[k]), k)]
+        outer += [[k, *p] for p in _between(ring, extrados[k - 1], extrados[k], (intrados[k - 1], intrados[k]), k)]
+    return SurveyedRing(np.hstack([intrados, extrados]), inner, outer)
+
+
+def _between(ring: np.ndarray, start: np.ndarray, end: np.ndarray, other: tuple[np.ndarray, ...], k: int) -> list:
+    """A voussoir's corners on one face: those met going round its polygon `ring` from the corner at
+    its left joint `start` to the one at its right joint `end` the way that passes neither corner of the
+    `other` face, in that order (left to right)."""
+    at = [int(np.argmin(np.linalg.norm(ring - p, axis=1))) for p in (start, end, *other)]
+    for step in (1, -1):
+        walk = [(at[0] + step * i) % len(ring) for i in range(1, len(ring))]
+        inside = walk[: walk.index(at[1])]
+        if not set(inside) & set(at[2:]):
+            return [ring[i].tolist() for i in inside]
+    raise CaseError(f"survey: voussoir {k}'s corners are not in order round the block")
 
 
 def _corners(block: Any, k: int) -> np.ndarray:

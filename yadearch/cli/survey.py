@@ -28,15 +28,18 @@ def survey(
 ) -> None:
     """Write a case of the surveyed arch in JOINTS (a CSV with the columns x_intrados_mm, y_intrados_mm,
     x_extrados_mm, y_extrados_mm, one row a joint, left to right; or a .json survey of the blocks:
-    {"blocks": [{"corners": [[x, y], ...]}, ..., {"corners": ..., "support": "left"}, ...]}, in mm) on
-    the material, joints, loading and numerics of --preset/--case/--set; run it with `yadearch run --case OUT`."""
+    {"blocks": [{"corners": [[x, y], ...]}, ..., {"corners": ..., "support": "left"}, ...]}, in mm, each
+    voussoir's corners in order round it, two on each joint and any more on its faces) on the material,
+    joints, loading and numerics of --preset/--case/--set; run it with `yadearch run --case OUT`."""
     case = api.measured_case(joints, base=resolve_case(preset_name, case_file, kn, settings), name=name)
     path = output_path(out, "--out", FILE)
     write_text_atomically(path, case.to_toml())
     geometry = case.geometry
+    faces = {int(row[0]) for row in geometry.intrados_points_mm + geometry.extrados_points_mm}
+    polygons = f", {len(faces)} of more than four corners" if faces else ""
     click.echo(
-        f"{case.name}: {geometry.n_voussoirs} voussoirs between {len(geometry.joint_points_mm)} measured joints, "
-        f"mean joint length {geometry.thickness_mm:.2f} mm -> {path}"
+        f"{case.name}: {geometry.n_voussoirs} voussoirs between {len(geometry.joint_points_mm)} measured joints"
+        f"{polygons}, mean joint length {geometry.thickness_mm:.2f} mm -> {path}"
     )
 
 

@@ -32,7 +32,7 @@ class Backfill:
 
 def fill_surface(geometry: ArchGeometry, fill: Backfill) -> float:
     """The fill's level (m): `depth` above the extrados' highest point."""
-    return max(float(j.extrados[1]) for j in geometry.joints) + fill.depth
+    return max(max(float(a[1]), float(b[1])) for _, a, b in extrados_segments(geometry)) + fill.depth
 
 
 def backfill_points(geometry: ArchGeometry, centroids: np.ndarray, fill: Backfill) -> LoadPoints:

@@ -15,6 +15,8 @@ import numpy as np
 
 from yadearch.model.intrados import Intrados, extrados_end, joint_direction, stations
 
+QUADRILATERAL_PRISM = 8  # corners of a block on a quadrilateral: 4 in front, 4 behind
+
 
 @dataclass(frozen=True)
 class Joint:
@@ -141,6 +143,15 @@ def arch_on_intrados(
     return arch_from_joints(ends, depth, support_length, thickness, intrados.span, intrados.rise)
 
 
+@dataclass(frozen=True)
+class FacePoints:
+    """A voussoir's corners between its two joints (m, left to right, each (k, 2)): on its intrados
+    face and on its extrados face (a curved extrados, a springer's bed and back); none: a quadrilateral."""
+
+    intrados: np.ndarray
+    extrados: np.ndarray
+
+
 def arch_from_joints(
     ends: list[tuple[np.ndarray, np.ndarray]],
     depth: float,
@@ -148,19 +159,24 @@ def arch_from_joints(
     thickness: float,
     span: float,
     rise: float,
+    faces: dict[int, FacePoints] | None = None,
 ) -> ArchGeometry:
-    """An arch from its joints' (intrados, extrados) end points, left to right: convex quadrilateral
-    voussoirs between consecutive joints, on two support blocks whose faces lie on the end joints
-    (ValueError where a voussoir is not convex)."""
+    """An arch from its joints' (intrados, extrados) end points, left to right: convex voussoirs between
+    consecutive joints (quadrilaterals, or polygons with the `faces` corners of voussoir k = 1..n), on
+    two support blocks whose faces lie on the end joints (ValueError where a voussoir is not convex)."""
     joints = []
     for k, (inner, outer) in enumerate(ends):
         along = (outer - inner) / np.linalg.norm(outer - inner)
         joints.append(Joint(k + 1, k, k + 1, inner, outer, np.array([along[1], -along[0]])))
     blocks = [_support_prism(*ends[0], -joints[0].normal, support_length, depth)]
     for (a_in, a_out), (b_in, b_out) in zip(ends[:-1], ends[1:]):
-        polygon = [a_in, b_in, b_out, a_out]
+        face = (faces or {}).get(len(blocks))
+        on_intrados = [] if face is None else list(face.intrados)
+        on_extrados = [] if face is None else list(face.extrados[::-1])  # counter-clockwise: right to left
+        polygon = [a_in, *on_intrados, b_in, b_out, *on_extrados, a_out]
         if not is_convex_polygon(np.array(polygon)):
-            raise ValueError(f"voussoir {len(blocks)} of this arch is not a convex quadrilateral")
+            shape = "quadrilateral" if face is None else f"polygon of {len(polygon)} corners"
+            raise ValueError(f"voussoir {len(blocks)} of this arch is not a convex {shape}")
         blocks.append(prism(polygon, depth))
     blocks.append(_support_prism(*ends[-1], joints[-1].normal, support_length, depth))
     middles = np.array([(inner + outer) / 2.0 for inner, outer in ends])
@@ -193,6 +209,18 @@ def polygon_area(xy: np.ndarray) -> float:
     """Area of a simple polygon given in order (shoelace formula)."""
     x, y = xy[:, 0], xy[:, 1]
     return 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+
+
+def polygon_centroid(xy: np.ndarray) -> np.ndarray:
+    """Area centroid of a simple polygon given in order (where the weight acts; not the vertex mean)."""
+    nxt = np.roll(xy, -1, axis=0)
+    c = xy[:, 0] * nxt[:, 1] - xy[:, 1] * nxt[:, 0]
+    return ((xy + nxt) * c[:, None]).sum(axis=0) / (3.0 * c.sum())
+
+
+def front_face(vertices: np.ndarray) -> np.ndarray:
+    """The x-y polygon of a prism built by `prism` (its front face, counter-clockwise)."""
+    return vertices[: len(vertices) // 2, :2]
 
 
 def block_volume(vertices: np.ndarray) -> float:

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from yadearch.model.geometry import ArchGeometry
+from yadearch.model.geometry import ArchGeometry, front_face
 
 
 @dataclass(frozen=True)
@@ -95,6 +95,6 @@ def block_outlines(geometry: ArchGeometry, pos0: np.ndarray, pos: np.ndarray, ro
     """Current x-y outline (front face) of every block, for drawing the deformed arch."""
     outlines = []
     for b, vertices in enumerate(geometry.blocks):
-        front = vertices[: len(vertices) // 2, :2]
+        front = front_face(vertices)
         outlines.append(pos[b, :2] + rotate(front - pos0[b, :2], np.full(len(front), rot[b])))
     return outlines

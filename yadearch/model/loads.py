@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from yadearch.model.geometry import ArchGeometry
+from yadearch.model.geometry import QUADRILATERAL_PRISM, ArchGeometry, front_face
 
 NONE, VERTICAL, ACCELERATION = "none", "vertical", "horizontal_acceleration"
 LIVE_LOADS = (NONE, VERTICAL, ACCELERATION)
@@ -157,12 +157,30 @@ def _part(low: float, width: float, start: float, end: float, shape: str) -> tup
 
 
 def extrados_segments(geometry: ArchGeometry) -> list[tuple[int, np.ndarray, np.ndarray]]:
-    """Each voussoir's extrados as a segment: (block, its left end, its right end), in m."""
+    """Each voussoir's extrados face as segments, left to right: (block, a segment's left end, its right
+    end), in m; one segment between its joints' extrados corners, or one between each two of a measured
+    voussoir's extrados corners (`geometry.extrados_points_mm`)."""
     segments = []
     for block in range(1, len(geometry.blocks) - 1):
-        a, b = geometry.joints[block - 1].extrados[:2], geometry.joints[block].extrados[:2]
-        segments.append((block, *((a, b) if a[0] <= b[0] else (b, a))))
+        chain = extrados_chain(geometry, block)
+        for a, b in zip(chain[:-1], chain[1:]):
+            segments.append((block, *((a, b) if a[0] <= b[0] else (b, a))))
     return segments
+
+
+def extrados_chain(geometry: ArchGeometry, block: int) -> np.ndarray:
+    """(k, 2) voussoir `block`'s extrados corners from its left joint's to its right joint's (m): the
+    joints' corners, and between them a polygon voussoir's own (its front face counter-clockwise runs
+    from the right joint's extrados corner to the left one's)."""
+    left, right = geometry.joints[block - 1].extrados[:2], geometry.joints[block].extrados[:2]
+    polygon = geometry.blocks[block]
+    if len(polygon) == QUADRILATERAL_PRISM:
+        return np.array([left, right])
+    face = front_face(polygon)
+    start = int(np.argmin(np.linalg.norm(face - right, axis=1)))
+    end = int(np.argmin(np.linalg.norm(face - left, axis=1)))
+    between = np.roll(face, -start, axis=0)[1 : (end - start) % len(face)]
+    return np.vstack([left, between[::-1], right])
 
 
 def on_segment(left: np.ndarray, right: np.ndarray, x: float) -> np.ndarray:

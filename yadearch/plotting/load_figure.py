@@ -12,7 +12,7 @@ from matplotlib.patches import FancyArrow
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import load_position
-from yadearch.model.geometry import ArchGeometry
+from yadearch.model.geometry import ArchGeometry, front_face
 from yadearch.model.loads import VERTICAL, extrados_segments, on_segment
 from yadearch.plotting.blocks import draw_blocks
 from yadearch.plotting.house import COLUMN_CM, THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
@@ -39,7 +39,7 @@ def plot_load_collapse(case: ArchCase, geometry: ArchGeometry, result: LoadCapac
     """STEM.pdf and .png: the arch, the thrust line at collapse, the hinges and the load."""
     fig = new_figure(height_cm=HEIGHT_CM, width_cm=COLUMN_CM)
     ax = fig.add_subplot()
-    draw_blocks(ax, [vertices[: len(vertices) // 2, :2] * MM for vertices in geometry.blocks], edge="0.2")
+    draw_blocks(ax, [front_face(vertices) * MM for vertices in geometry.blocks], edge="0.2")
     points = thrust_points(geometry, result)
     ax.plot(points[:, 0], points[:, 1], "-", color=THRUST_COLOUR, lw=0.9, label="thrust line at collapse")
     labels = []

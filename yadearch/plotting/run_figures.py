@@ -17,6 +17,7 @@ from matplotlib.figure import Figure
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
 from yadearch.analysis.run import RunAnalysis
 from yadearch.errors import RunFolderError
+from yadearch.model.geometry import front_face
 from yadearch.plotting.blocks import block_legend_entries, draw_blocks
 from yadearch.plotting.hinge_marks import mark_hinge, place_hinge_labels
 from yadearch.plotting.house import (
@@ -105,7 +106,7 @@ def collapse_figure(
     if state is None:
         raise RunFolderError(f"{run.path} has no {snapshot!r} or 'end' snapshot to draw")
     outlines = snapshot_outlines(geometry, state)
-    all_xy = np.vstack([b[: len(b) // 2, :2] for b in geometry.blocks] + outlines) * 1e3
+    all_xy = np.vstack([front_face(b) for b in geometry.blocks] + outlines) * 1e3
     span = np.ptp(all_xy[:, 0])
     xlim = (all_xy[:, 0].min() - LABEL_ROOM * span, all_xy[:, 0].max() + LABEL_ROOM * span)
     ylim = (all_xy[:, 1].min() - 0.03 * span, all_xy[:, 1].max() + 0.07 * span)
@@ -113,7 +114,7 @@ def collapse_figure(
         axes_width_cm = width_cm - AXIS_MARGINS_CM[0]
         height_cm = axes_width_cm * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1]
         ax = new_figure(height_cm=height_cm, width_cm=width_cm).add_subplot()
-    undeformed = [vertices[: len(vertices) // 2, :2] * 1e3 for vertices in geometry.blocks]
+    undeformed = [front_face(vertices) * 1e3 for vertices in geometry.blocks]
     draw_blocks(ax, [moved * 1e3 for moved in outlines], undeformed)
     pivots = {side: joint_points(geometry, state, side) * 1e3 for side in ("I", "E")}
     marks = [

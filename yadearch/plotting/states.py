@@ -17,7 +17,7 @@ from matplotlib.text import Annotation
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
 from yadearch.analysis.run import RunAnalysis, default_thresholds
 from yadearch.errors import RunFolderError
-from yadearch.model.geometry import ArchGeometry
+from yadearch.model.geometry import ArchGeometry, front_face
 from yadearch.model.hinges import Hinge, hinge_rotation, hinges_at
 from yadearch.plotting.blocks import draw_blocks
 from yadearch.plotting.house import MIN_TEXT_PT, THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
@@ -99,7 +99,7 @@ def state_view(run: RunFolder, geometry: ArchGeometry, analysis: RunAnalysis, in
 
 def drawing_limits(geometry: ArchGeometry) -> tuple[tuple[float, float], tuple[float, float]]:
     """Axis limits (mm) that hold the arch and its supports with a margin: one frame for every state."""
-    xy = np.vstack([b[: len(b) // 2, :2] for b in geometry.blocks]) * MM_PER_M
+    xy = np.vstack([front_face(b) for b in geometry.blocks]) * MM_PER_M
     span = float(np.ptp(xy[:, 0]))
     return (
         (xy[:, 0].min() - SIDE_MARGIN * span, xy[:, 0].max() + SIDE_MARGIN * span),
@@ -110,7 +110,7 @@ def drawing_limits(geometry: ArchGeometry) -> tuple[tuple[float, float], tuple[f
 def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple, corner: bool = True) -> None:
     """Draw `view` into `ax` to scale, over the undeformed outline, with its place on the path (the
     support displacement, or the load) and the reaction in the lower left corner (`corner`)."""
-    undeformed = [vertices[: len(vertices) // 2, :2] * MM_PER_M for vertices in geometry.blocks]
+    undeformed = [front_face(vertices) * MM_PER_M for vertices in geometry.blocks]
     draw_blocks(ax, view.outlines, undeformed, undeformed_colour=UNDEFORMED_COLOUR)
     if len(view.thrust):
         ax.plot(view.thrust[:, 0], view.thrust[:, 1], "-", color=THRUST_COLOUR, lw=0.8, zorder=3)

@@ -17,7 +17,7 @@ from matplotlib.text import Annotation
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
-from yadearch.model.geometry import ArchGeometry
+from yadearch.model.geometry import ArchGeometry, front_face
 from yadearch.model.hinges import paper_labels
 from yadearch.model.joints import rotate
 from yadearch.plotting.blocks import block_legend_entries, draw_blocks
@@ -41,7 +41,7 @@ def placed_outlines(result: LimitResult, geometry: ArchGeometry) -> list[np.ndar
     """Front-face outline (mm) of every block as the result places it at du_rigid."""
     outlines = []
     for vertices, rot, shift in zip(geometry.blocks, result.rotation_rad, result.shift_mm):
-        front = vertices[: len(vertices) // 2, :2] * M_TO_MM
+        front = front_face(vertices) * M_TO_MM
         outlines.append(rotate(front, rot) + np.asarray(shift))
     return outlines
 
@@ -64,7 +64,7 @@ def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchC
         geometry = arch_geometry(geometry)
     with matplotlib.rc_context(STYLE):
         outlines = placed_outlines(result, geometry)
-        undeformed = [b[: len(b) // 2, :2] * M_TO_MM for b in geometry.blocks]
+        undeformed = [front_face(b) * M_TO_MM for b in geometry.blocks]
         all_xy = np.vstack(undeformed + outlines)
         width = np.ptp(all_xy[:, 0])
         xlim = (all_xy[:, 0].min() - LABEL_ROOM * width, all_xy[:, 0].max() + LABEL_ROOM * width)

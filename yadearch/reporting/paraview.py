@@ -1,6 +1,7 @@
 """A run for ParaView: every recorded state of its loading path as a time series (NAME.pvd) of VTK
-XML unstructured grids written by VTK itself, in metres: part 0 the blocks as hexahedra (cell data:
-block id, support flag, displacement, rotation), part 1 the joints as points at their centres
+XML unstructured grids written by VTK itself, in metres: part 0 the blocks as hexahedra (polyhedra
+where a block is a prism on another polygon; cell data: block id, support flag, displacement,
+rotation), part 1 the joints as points at their centres
 (point data: interface, normal and shear force, openings, hinge flag). ParaView's time is the
 support displacement delta in mm; the file names carry the state's index and delta. On a live load's
 path the time is the state's index along it (its load rises, then falls past the peak), the load in
@@ -17,50 +18,71 @@ import numpy as np
 from yadearch.analysis.blocks import block_centroids, case_geometry, joint_points
 from yadearch.atomic import write_atomically
 from yadearch.errors import YadearchError
-from yadearch.model.geometry import ArchGeometry
+from yadearch.model.geometry import QUADRILATERAL_PRISM, ArchGeometry
 from yadearch.plotting.states import run_states, state_hinges, state_joints
 from yadearch.results.rundir import RunFolder
 from yadearch.results.states import LOAD_COLUMN, LOAD_DIGITS, RunStates
 
 PARTS = ("blocks", "joints")
-HEX_CORNERS = 8  # a block is a prism on a quadrilateral: 4 front and 4 back corners
 
 
-def placed_corners(geometry: ArchGeometry, pos: np.ndarray, rot: np.ndarray) -> np.ndarray:
-    """(n_blocks, 8, 3) block corners (m) as placed: each prism turned by its rotation about z and moved
-    from its undeformed centroid to `pos`; ordered as a VTK hexahedron (the first face's normal,
-    right-handed, toward the second face)."""
+def placed_corners(geometry: ArchGeometry, pos: np.ndarray, rot: np.ndarray) -> list[np.ndarray]:
+    """Each block's (2k, 3) corners (m) as placed: its prism turned by its rotation about z and moved
+    from its undeformed centroid to `pos`; its front face first, ordered so that its normal (right-handed)
+    points toward the back face, as a VTK hexahedron's (and a polyhedron's faces) want."""
     centroids = block_centroids(geometry)
     corners = []
     for b, prism in enumerate(geometry.blocks):
-        if len(prism) != HEX_CORNERS:
-            raise ValueError(f"block {b} has {len(prism)} corners; the export takes quadrilateral prisms")
         c, s = np.cos(rot[b]), np.sin(rot[b])
         d = prism[:, :2] - centroids[b]
         xy = pos[b] + np.column_stack([c * d[:, 0] - s * d[:, 1], s * d[:, 0] + c * d[:, 1]])
         placed = np.column_stack([xy, prism[:, 2]])
-        front, back = placed[:4], placed[4:]
+        half = len(placed) // 2
+        front, back = placed[:half], placed[half:]
         normal = np.cross(front[1] - front[0], front[2] - front[0])
         if normal @ (back[0] - front[0]) < 0:  # the front face turns the other way: reverse both faces
             front, back = front[::-1], back[::-1]
         corners.append(np.vstack([front, back]))
-    return np.array(corners)
+    return corners
 
 
-def _grid(points: np.ndarray, cell_type: int, cells: np.ndarray, data: dict[str, np.ndarray], on_cells: bool) -> Any:
-    """A vtkUnstructuredGrid of `cells` (rows of point indices) with `data` arrays on its cells or points."""
-    from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
-    from vtkmodules.vtkCommonCore import vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkUnstructuredGrid
+def _block_cells(corners: list[np.ndarray]) -> list[tuple[int, list[int]]]:
+    """The blocks as VTK cells over their stacked corners: a hexahedron for a prism on a quadrilateral,
+    a polyhedron (its face stream: front, back and side faces, each outward) on any other polygon."""
+    from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_POLYHEDRON
+
+    cells, first = [], 0
+    for block in corners:
+        half = len(block) // 2
+        front = list(range(first, first + half))
+        back = [i + half for i in front]
+        if len(block) == QUADRILATERAL_PRISM:
+            cells.append((VTK_HEXAHEDRON, front + back))
+        else:
+            sides = [[front[i], front[(i + 1) % half], back[(i + 1) % half], back[i]] for i in range(half)]
+            faces = [front[::-1], back, *sides]  # the front face's normal points inward: reversed
+            cells.append((VTK_POLYHEDRON, [len(faces)] + [v for face in faces for v in (len(face), *face)]))
+        first += len(block)
+    return cells
+
+
+def _grid(points: np.ndarray, cells: list[tuple[int, list[int]]], data: dict[str, np.ndarray], on_cells: bool) -> Any:
+    """A vtkUnstructuredGrid of `cells` (a VTK cell type and its point ids, or a polyhedron's face
+    stream, a cell) with `data` arrays on its cells or points."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid
 
     grid = vtkUnstructuredGrid()
     vtk_points = vtkPoints()
     vtk_points.SetData(numpy_to_vtk(np.ascontiguousarray(points, dtype=float), deep=True))
     grid.SetPoints(vtk_points)
-    connectivity = np.hstack([np.full((len(cells), 1), cells.shape[1]), cells]).ravel()
-    cell_array = vtkCellArray()
-    cell_array.SetCells(len(cells), numpy_to_vtkIdTypeArray(connectivity.astype(np.int64), deep=True))
-    grid.SetCells(cell_type, cell_array)
+    grid.Allocate(len(cells))
+    for cell_type, stream in cells:
+        ids = vtkIdList()
+        for v in stream:
+            ids.InsertNextId(v)
+        grid.InsertNextCell(cell_type, ids)
     target = grid.GetCellData() if on_cells else grid.GetPointData()
     for name, values in data.items():
         array = numpy_to_vtk(np.ascontiguousarray(values), deep=True)
@@ -104,7 +126,7 @@ def export_run(run: RunFolder, out: Path) -> Path:
     `out`/RUN.pvd (RUN: the run folder's name) that lists them by time; returns the .pvd's path."""
     states = run_states(run)
     try:
-        from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_VERTEX
+        from vtkmodules.vtkCommonDataModel import VTK_VERTEX
     except ImportError:
         raise YadearchError(
             "the ParaView export needs VTK: Debian's python3-vtk9 (scripts/setup.sh) or `pip install vtk`"
@@ -121,10 +143,10 @@ def export_run(run: RunFolder, out: Path) -> Path:
         time, tag = _time_and_tag(states, index)
         stem = f"{index:04d}_{tag}"
         displacement = np.column_stack([pos - centroids, np.zeros(n_blocks)])  # from the unloaded arch
+        corners = placed_corners(geometry, pos, rot)
         blocks = _grid(
-            placed_corners(geometry, pos, rot).reshape(-1, 3),
-            VTK_HEXAHEDRON,
-            np.arange(n_blocks * HEX_CORNERS).reshape(n_blocks, HEX_CORNERS),
+            np.vstack(corners),
+            _block_cells(corners),
             {
                 "block_id": ids,
                 "support": np.isin(ids, (0, n_blocks - 1)).astype(np.int8),
@@ -142,8 +164,7 @@ def export_run(run: RunFolder, out: Path) -> Path:
         centres = (joint_points(geometry, snapshot, "I") + joint_points(geometry, snapshot, "E")) / 2
         joint_grid = _grid(
             np.column_stack([centres, np.full(n_joints, depth_mid)]),
-            VTK_VERTEX,
-            np.arange(n_joints).reshape(-1, 1),
+            [(VTK_VERTEX, [k]) for k in range(n_joints)],
             {
                 "interface": np.arange(1, n_joints + 1),
                 "normal_force_N": rows["normal_force_N"].to_numpy(),

@@ -19,7 +19,7 @@ from yadearch.case.support import case_movement
 from yadearch.errors import YadearchError
 from yadearch.model import units
 from yadearch.model.backfill import backfill_points
-from yadearch.model.geometry import ArchGeometry, block_volume
+from yadearch.model.geometry import ArchGeometry, block_volume, front_face, polygon_centroid
 from yadearch.model.joints import rotate
 from yadearch.model.loads import LoadPoints, live_load_points
 from yadearch.model.movement import Motion, Movement, SupportMotion
@@ -36,13 +36,6 @@ class LimitError(YadearchError):
 def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """z component of the cross product of 2-D vectors (..., 2)."""
     return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
-
-
-def polygon_centroid(xy: np.ndarray) -> np.ndarray:
-    """Area centroid of a simple polygon given in order (where the weight acts; not the vertex mean)."""
-    nxt = np.roll(xy, -1, axis=0)
-    c = cross(xy, nxt)
-    return ((xy + nxt) * c[:, None]).sum(axis=0) / (3.0 * c.sum())
 
 
 @dataclass(frozen=True)
@@ -77,7 +70,7 @@ def rigid_arch(case: ArchCase) -> RigidArch:
     geometry = arch_geometry(case)
     unit_weight = units.density(case.material.density_g_per_cm3) * case.loading.gravity_m_per_s2
     weight = np.array([unit_weight * block_volume(b) for b in geometry.blocks])
-    centroid0 = np.array([polygon_centroid(b[: len(b) // 2, :2]) for b in geometry.blocks])
+    centroid0 = np.array([polygon_centroid(front_face(b)) for b in geometry.blocks])
     fill = backfill_points(geometry, centroid0, backfill(case))
     live = live_load_points(geometry, centroid0, weight, live_load(case, geometry))
     held = held_multiplier(case)

@@ -20,7 +20,7 @@ from yadearch.case.support import case_movement
 from yadearch.model import units
 from yadearch.model.backfill import backfill_points
 from yadearch.model.block_state import assemble_band, free_state, kernel_table
-from yadearch.model.geometry import ArchGeometry, block_volume
+from yadearch.model.geometry import ArchGeometry, block_volume, front_face, polygon_centroid
 from yadearch.model.joint_law import JointLaw
 from yadearch.model.joint_table import JointTable, joint_table
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, joint_tangent
@@ -29,7 +29,6 @@ from yadearch.model.loads import block_loads, live_load_points, turned_moments
 from yadearch.model.movement import Movement
 from yadearch.solve import banded
 from yadearch.solve.newton_kernel import descent_kernel, newton_kernel
-from yadearch.solve.rigid import polygon_centroid
 
 WARM_UP_VOUSSOIRS = 3  # the smallest arch that compiles every kernel
 
@@ -169,7 +168,7 @@ def static_arch(case: ArchCase) -> StaticArch:
         raise ValueError("the static engine's banded tangent needs every joint between consecutive blocks")
     imperfections = arch_imperfections(case, geometry)
     stiffness = contact_stiffness(case, geometry)
-    centroid0 = np.array([polygon_centroid(b[: len(b) // 2, :2]) for b in geometry.blocks])
+    centroid0 = np.array([polygon_centroid(front_face(b)) for b in geometry.blocks])
     profiles = imperfections.profiles if imperfections is not None else None
     unit_weight = units.density(case.material.density_g_per_cm3) * case.loading.gravity_m_per_s2
     weight = np.array([unit_weight * block_volume(b) for b in geometry.blocks])
