@@ -6,6 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from yadearch.case.fields import number_meta, table_meta
+from yadearch.model.dispersal import DISPERSALS
 from yadearch.model.loads import LIVE_LOADS, LOAD_SHAPES
 
 
@@ -131,6 +132,29 @@ class LoadsConfig:
                 "its weight and lateral pressure are dead loads on the voussoirs (docs/loads.md)",
             ),
             "predates": 0.0,
+        },
+    )
+    load_dispersal: str = field(
+        default="none",
+        metadata={
+            "choices": DISPERSALS,
+            "predates": "none",
+            "doc": "with backfill, a vertical live load stands on the fill's surface and reaches the extrados "
+            "'spread' uniformly at load_dispersal_deg either side, or as 'boussinesq' (an elastic "
+            "half-plane's stress under a line load, cut at load_dispersal_deg); 'none': on the extrados",
+        },
+    )
+    load_dispersal_deg: float = field(
+        default=30.0,
+        metadata={
+            **number_meta(
+                0,
+                60,
+                low_open=True,
+                doc="the dispersal's angle from the vertical (deg): the spread's slope (26.57: 2 vertical to "
+                "1 horizontal) or where Boussinesq's stress is cut",
+            ),
+            "predates": 30.0,
         },
     )
     fill_density_g_per_cm3: float = field(

@@ -17,7 +17,9 @@ from yadearch.case.imperfect import amplitudes, imperfect_geometry
 from yadearch.case.shape import build_arch
 from yadearch.errors import CaseError
 from yadearch.model import units
-from yadearch.model.backfill import Backfill
+from yadearch.model.backfill import Backfill, fill_surface
+from yadearch.model.dispersal import NONE as NOT_DISPERSED
+from yadearch.model.dispersal import Dispersal
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.loads import ACCELERATION, NONE, UNITS, VERTICAL, LiveLoad
 
@@ -201,6 +203,7 @@ def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:
         raise CaseError(f"loads.{name} is read with loads.live_load = 'vertical' only, got {loads.live_load!r}")
     return LiveLoad(
         loads.live_load,
+        dispersal=load_dispersal(case, geometry),
         position=load_position(case, geometry),
         width=units.mm(loads.load_width_mm),
         toward_right=loads.acceleration_toward == "right",
@@ -208,6 +211,23 @@ def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:
         inclination=math.radians(loads.load_inclination_deg),
         further=further_loads(case, geometry.span),
     )
+
+
+def load_dispersal(case: ArchCase, geometry: ArchGeometry) -> Dispersal | None:
+    """How the case's vertical load reaches the extrados through its fill (None: it stands on the
+    extrados); CaseError for a dispersal without fill or without a vertical load."""
+    loads = case.loads
+    if loads.load_dispersal == NOT_DISPERSED:
+        return None
+    if loads.live_load != VERTICAL:
+        raise CaseError(f"loads.load_dispersal is read with loads.live_load = 'vertical' only, got {loads.live_load!r}")
+    fill = backfill(case)
+    if not fill.present:
+        raise CaseError(
+            f"loads.load_dispersal = {loads.load_dispersal!r} needs a fill to disperse through: loads.fill_depth_mm "
+            f"and fill_density_g_per_cm3 > 0, got {loads.fill_depth_mm:g} mm"
+        )
+    return Dispersal(loads.load_dispersal, math.radians(loads.load_dispersal_deg), fill_surface(geometry, fill))
 
 
 def further_loads(case: ArchCase, span: float) -> tuple[tuple[float, float], ...]:

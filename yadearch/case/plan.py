@@ -116,7 +116,8 @@ def check_dem_load(case: ArchCase) -> None:
             "elements (numerics.contact_model = 'joint')"
         )
     live_load(case, arch_geometry(case))  # refuses further loads that could never stand on the arch
-    unloaded = {"live_load": NONE, "further_loads": [], "load_inclination_deg": 0.0}  # the load grows apart
+    # the load grows apart
+    unloaded = {"live_load": NONE, "further_loads": [], "load_inclination_deg": 0.0, "load_dispersal": "none"}
     plan_run(case.with_overrides(unloaded))  # the time step and the run's other checks
 
 

@@ -16,6 +16,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from yadearch.model.dispersal import NONE as NOT_DISPERSED
+from yadearch.model.dispersal import STRIP_POINTS, Dispersal, dispersed_share
 from yadearch.model.geometry import QUADRILATERAL_PRISM, ArchGeometry, front_face
 
 NONE, VERTICAL, ACCELERATION = "none", "vertical", "horizontal_acceleration"
@@ -38,6 +40,7 @@ class LiveLoad:
     shape: str = UNIFORM
     inclination: float = 0.0  # a load on the extrados: its angle from the downward vertical (rad, + toward +x)
     further: tuple[tuple[float, float], ...] = ()  # more such loads: (offset of its centre (m), magnitude ratio)
+    dispersal: Dispersal | None = None  # a load on the fill's surface, spread through it (None: on the extrados)
 
 
 @dataclass(frozen=True)
@@ -60,7 +63,7 @@ def live_load_points(geometry: ArchGeometry, centroids: np.ndarray, weight: np.n
         shares = [
             (block, ratio * newtons, point)
             for offset, ratio in ((0.0, 1.0), *load.further)
-            for block, newtons, point in _extrados_shares(geometry, load.position + offset, load.width, load.shape)
+            for block, newtons, point in _shares(geometry, load, load.position + offset)
         ]
         if shares:
             blocks, newtons, points = zip(*shares)
@@ -118,6 +121,51 @@ def load_displacement(
     # the turned moment integrated over the turn: m0 (sin t - sin t0) + d0 (cos t - cos t0)
     turning = loads[:, 2] * (np.sin(turn) - np.sin(turn0)) + loads[:, 3] * (np.cos(turn) - np.cos(turn0))
     return float((work.sum() + turning.sum()) / magnitude)
+
+
+def _shares(geometry: ArchGeometry, load: LiveLoad, position: float) -> list[tuple[int, float, np.ndarray]]:
+    """(block, newtons, point) of a unit vertical `load` centred `position` m from the left springing: on
+    the extrados, or from the fill's surface through the fill (`model.dispersal`)."""
+    if load.dispersal is None or load.dispersal.kind == NOT_DISPERSED:
+        return _extrados_shares(geometry, position, load.width, load.shape)
+    return _dispersed_shares(geometry, load.dispersal, position, load.width, load.shape)
+
+
+def _dispersed_shares(
+    geometry: ArchGeometry, dispersal: Dispersal, position: float, width: float, shape: str
+) -> list[tuple[int, float, np.ndarray]]:
+    """(block, newtons, point) of a unit load on the fill's surface centred `position` m from the left
+    springing, spread over `width` m with the intensity `shape` (as STRIP_POINTS point loads), each
+    dispersed through the fill above the extrados under it: each voussoir's part at its resultant on the
+    extrados (parallel forces: their weighted mean point). The parts beyond the springings stand on the
+    supports."""
+    centre = geometry.joints[0].intrados[0] + position
+    low = centre - width / 2.0
+    step = width / STRIP_POINTS
+    surface = (
+        [(1.0, centre)]
+        if width == 0.0
+        else [_part(low, width, low + k * step, low + (k + 1) * step, shape) for k in range(STRIP_POINTS)]
+    )
+    segments = extrados_segments(geometry)
+    parts: dict[int, tuple[float, np.ndarray]] = {}
+    for newtons, x in surface:
+        depth = dispersal.level - extrados_height(segments, x)
+        for block, left, right in segments:
+            share, at = dispersed_share(dispersal, x, depth, float(left[0]), float(right[0]))
+            if share > 0.0:
+                total, moment = parts.get(block, (0.0, np.zeros(2)))
+                parts[block] = (total + newtons * share, moment + newtons * share * on_segment(left, right, at))
+    return [(block, total, moment / total) for block, (total, moment) in sorted(parts.items())]
+
+
+def extrados_height(segments: list[tuple[int, np.ndarray, np.ndarray]], x: float) -> float:
+    """The extrados's height (m) at abscissa `x` (`extrados_segments`); beyond its ends, the nearer end's."""
+    for _, left, right in segments:
+        if left[0] <= x <= right[0] and right[0] > left[0]:
+            return float(on_segment(left, right, x)[1])
+    ends = [point for _, left, right in segments for point in (left, right)]
+    return float(min(ends, key=lambda point: abs(point[0] - x))[1])
 
 
 def _extrados_shares(

@@ -11,9 +11,10 @@ import numpy as np
 from matplotlib.patches import FancyArrow
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import load_position
+from yadearch.case.mechanics import backfill, load_position
+from yadearch.model.backfill import fill_surface
 from yadearch.model.geometry import ArchGeometry, front_face
-from yadearch.model.loads import VERTICAL, extrados_segments, on_segment
+from yadearch.model.loads import VERTICAL
 from yadearch.plotting.blocks import draw_blocks
 from yadearch.plotting.house import COLUMN_CM, THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
 from yadearch.plotting.labels import layout, place_label
@@ -64,22 +65,17 @@ def plot_load_collapse(case: ArchCase, geometry: ArchGeometry, result: LoadCapac
     return save_figure(fig, stem)
 
 
-def _extrados_height(geometry: ArchGeometry, x: float) -> float:
-    """The highest extrados point (mm) of the voussoirs over abscissa `x` (mm)."""
-    heights = [
-        float(on_segment(left, right, x / MM)[1]) * MM
-        for _, left, right in extrados_segments(geometry)
-        if left[0] * MM <= x <= right[0] * MM
-    ]
-    return max(heights, default=max(float(b[:, 1].max()) for b in geometry.blocks) * MM)
-
-
 def _draw_load(ax, case: ArchCase, geometry: ArchGeometry) -> None:
     """An arrow onto the extrados at the vertical load's centre and at each further load's, leaning as
     the load does (its spread as a bar), or one sideways above the crown for an acceleration."""
     span = geometry.span * MM
     top = max(float(b[:, 1].max()) for b in geometry.blocks) * MM
     length = 0.15 * span
+    fill = backfill(case)
+    if fill.present:  # the fill's level surface, where a dispersed load stands
+        top = fill_surface(geometry, fill) * MM
+        ends = [geometry.joints[0].extrados[0] * MM, geometry.joints[-1].extrados[0] * MM]
+        ax.plot(ends, [top, top], "--", color="0.45", lw=0.8)
     if case.loads.live_load == VERTICAL:
         centre = (geometry.joints[0].intrados[0] + load_position(case, geometry)) * MM
         half = case.loads.load_width_mm / 2.0
