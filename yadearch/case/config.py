@@ -270,6 +270,19 @@ def as_ran(data: dict[str, Any]) -> dict[str, Any]:
     return filled
 
 
+def fingerprinted(data: dict[str, Any]) -> dict[str, Any]:
+    """`as_ran(data)` without the parameters at the value a case written before them takes ("predates"
+    in their metadata): what a fingerprint of a case hashes, so that a later version's new parameter
+    leaves the fingerprints of the cases it does not change as they were."""
+    filled = as_ran(data)
+    for section_name, cls in SECTIONS.items():
+        section = filled[section_name]
+        for f in fields(cls):
+            if "predates" in f.metadata and f.name in section and section[f.name] == f.metadata["predates"]:
+                del section[f.name]
+    return filled
+
+
 def load_case(path: str | Path) -> ArchCase:
     """Read a case from a TOML file (missing keys take the defaults of the `set2` arch)."""
     path = Path(path)

@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from yadearch.atomic import write_text_atomically
-from yadearch.case.config import as_ran
+from yadearch.case.config import fingerprinted
 from yadearch.errors import YadearchError
 from yadearch.results.summary import STATIC_REVISION
 from yadearch.studies.campaigns.grid import RUN_COLUMN
@@ -23,8 +23,9 @@ OUTDATED = "made by another revision of the static engine: to be run again"
 
 
 def case_key(spec: RunSpec) -> str:
-    """A short fingerprint of what the run computes (`as_ran`: the name and the files kept aside)."""
-    return hashlib.sha1(json.dumps(as_ran(spec.case.to_dict()), sort_keys=True).encode()).hexdigest()[:16]
+    """A short fingerprint of what the run computes (`fingerprinted`: the name and the files kept aside,
+    the parameters a later version added at their former behaviour left out)."""
+    return hashlib.sha1(json.dumps(fingerprinted(spec.case.to_dict()), sort_keys=True).encode()).hexdigest()[:16]
 
 
 def read_batches(out: Path) -> dict[str, dict[str, Any]]:

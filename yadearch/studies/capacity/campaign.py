@@ -13,8 +13,7 @@ import pandas as pd
 from tqdm import tqdm
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
-from yadearch.case.config import ArchCase
-from yadearch.case.materials import MATERIAL_KEY, PRESET_FIELD
+from yadearch.case.config import ArchCase, fingerprinted
 from yadearch.errors import YadearchError
 from yadearch.plotting.capacity import capacity_polar_figure
 from yadearch.plotting.sweep import ENGINE_LABELS
@@ -68,11 +67,11 @@ RIGID_COLUMNS = ("arch", "direction_deg", "solved", "du_mm", "hinges", "other_du
 
 def rigid_key(case: ArchCase) -> str:
     """What the rigid limits depend on (the arch, its material's values, loading and defects; not kn,
-    the numerics, the direction or a material's name), as a short fingerprint."""
-    data = case.to_dict()
+    the numerics, the direction or a material's name; `fingerprinted`: a parameter a later version adds
+    leaves it alone), as a short fingerprint."""
+    data = fingerprinted(case.to_dict())
     arch = {k: data[k] for k in ("geometry", "material", "loading", "imperfections")}
     arch["loading"] = {k: v for k, v in arch["loading"].items() if k != DIRECTION_PARAMETER}
-    arch[MATERIAL_KEY] = {k: v for k, v in arch[MATERIAL_KEY].items() if k != PRESET_FIELD}  # its values count
     return hashlib.sha1(json.dumps(arch, sort_keys=True, default=str).encode()).hexdigest()[:12]
 
 
