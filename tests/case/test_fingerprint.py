@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import json
 
-from yadearch.case.config import fingerprinted, preset
+from yadearch.case.comparison import fingerprinted
+from yadearch.case.config import preset
 from yadearch.studies.capacity.campaign import rigid_key
 
 ADDED_LATER = {

@@ -6,7 +6,8 @@ from __future__ import annotations
 
 import pytest
 
-from yadearch.case.config import as_ran, case_from_dict, preset
+from yadearch.case.comparison import as_ran
+from yadearch.case.config import case_from_dict, preset
 from yadearch.case.materials import MATERIALS, material_text
 from yadearch.case.paper import paper_model_values
 from yadearch.errors import CaseError

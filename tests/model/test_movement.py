@@ -139,7 +139,7 @@ def test_the_support_accelerates_gently_where_it_moves_sideways(loading, expecte
 
 def test_runs_the_cap_does_not_change_stay_comparable_with_older_ones():
     """A settlement run from before the cap ran as a settlement runs now; a spreading one did not."""
-    from yadearch.case.config import as_ran
+    from yadearch.case.comparison import as_ran
 
     for direction, same in ((-90.0, True), (0.0, False)):
         old = preset("set2").replace(support_direction_deg=direction).to_dict()

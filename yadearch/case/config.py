@@ -18,7 +18,6 @@ import tomli_w
 
 from yadearch.case.materials import MATERIAL_KEY, PRESET_FIELD, fill_from_preset
 from yadearch.case.names import check_name
-from yadearch.case.numerics_section import capped_acceleration
 from yadearch.case.sections import (
     RENAMED,
     RETIRED,
@@ -236,51 +235,6 @@ def with_current_names(data: Mapping[str, Any]) -> dict[str, Any]:
         key: current_names(key, value) if key in SECTIONS and isinstance(value, Mapping) else value
         for key, value in data.items()
     }
-
-
-def as_ran(data: dict[str, Any]) -> dict[str, Any]:
-    """What a stored case.toml (`data`) ran with, comparable across versions: a parameter the run
-    predates takes the value that reproduces the behaviour it had ("predates" in its metadata, else
-    its default), and the support speed and acceleration replace the parameters they derive from,
-    so that a run whose speed or acceleration they do not change stays comparable; what the folder
-    keeps (`numerics.run_files`) and whether a static run checked itself (`numerics.increments_check`,
-    which leaves its answer alone) are left out."""
-    filled: dict[str, Any] = {"name": data.get("name", "custom")}
-    for section_name, cls in SECTIONS.items():
-        stored, defaults = current_names(section_name, data.get(section_name, {})), cls()
-        filled[section_name] = {
-            f.name: stored.get(f.name, f.metadata.get("predates", getattr(defaults, f.name))) for f in fields(cls)
-        }
-    numerics = filled["numerics"]
-    numerics["support_speed_mm_per_s"] = support_speed(
-        numerics["support_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"], filled["interface"]["kn_N_per_mm3"]
-    )
-    del numerics["support_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"]
-    del numerics["run_files"], numerics["increments_check"]  # what the folder keeps, a check beside the answer
-    del filled[MATERIAL_KEY][PRESET_FIELD]  # a material's name: its values are in the case
-    loading = filled["loading"]  # the acceleration a run used; a turn or a path counted as horizontal
-    share = (
-        abs(math.cos(math.radians(loading["support_direction_deg"])))
-        if loading["support_motion"] == "translation"
-        else 1.0
-    )
-    numerics["support_acceleration_mm_per_s2"] = capped_acceleration(
-        numerics["support_acceleration_mm_per_s2"], numerics.pop("support_horizontal_acceleration_mm_per_s2"), share
-    )
-    return filled
-
-
-def fingerprinted(data: dict[str, Any]) -> dict[str, Any]:
-    """`as_ran(data)` without the parameters at the value a case written before them takes ("predates"
-    in their metadata): what a fingerprint of a case hashes, so that a later version's new parameter
-    leaves the fingerprints of the cases it does not change as they were."""
-    filled = as_ran(data)
-    for section_name, cls in SECTIONS.items():
-        section = filled[section_name]
-        for f in fields(cls):
-            if "predates" in f.metadata and f.name in section and section[f.name] == f.metadata["predates"]:
-                del section[f.name]
-    return filled
 
 
 def load_case(path: str | Path) -> ArchCase:

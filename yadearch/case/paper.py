@@ -7,7 +7,8 @@ from __future__ import annotations
 from typing import Any
 
 from yadearch.case import reference
-from yadearch.case.config import ArchCase, as_ran, preset
+from yadearch.case.comparison import as_ran
+from yadearch.case.config import ArchCase, preset
 from yadearch.case.materials import MATERIAL_KEY, MATERIALS, PRESET_FIELD
 
 PAPER_SECTIONS = ("geometry", "material", "loading", "imperfections", "loads")  # what makes a run the paper's case

@@ -7,7 +7,8 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
-from yadearch.case.config import ArchCase, as_ran, with_current_names
+from yadearch.case.comparison import as_ran
+from yadearch.case.config import ArchCase, with_current_names
 from yadearch.case.numerics_section import FULL_RUN_FILES, SUMMARY_RUN_FILES
 from yadearch.results.rundir import CASE_FILE, finished_summary, kept_only_summary
 from yadearch.results.summary import STATIC, STATIC_REVISION, RunSummary

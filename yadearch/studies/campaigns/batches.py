@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from yadearch.atomic import write_text_atomically
-from yadearch.case.config import fingerprinted
+from yadearch.case.comparison import fingerprinted
 from yadearch.errors import YadearchError
 from yadearch.results.summary import STATIC_REVISION
 from yadearch.studies.campaigns.grid import RUN_COLUMN

@@ -13,7 +13,8 @@ import pandas as pd
 from tqdm import tqdm
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
-from yadearch.case.config import ArchCase, fingerprinted
+from yadearch.case.comparison import fingerprinted
+from yadearch.case.config import ArchCase
 from yadearch.errors import YadearchError
 from yadearch.plotting.capacity import capacity_polar_figure
 from yadearch.plotting.sweep import ENGINE_LABELS
