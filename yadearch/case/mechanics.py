@@ -164,8 +164,8 @@ def require_live_load(case: ArchCase) -> None:
 
 
 def load_place(case: ArchCase) -> str:
-    """Where the vertical load stands, in words: "over voussoir 14" or "at 0.25 of the span", and how it
-    leans when it does ("leaning 20 deg toward the right")."""
+    """Where the vertical load stands, in words: "over voussoir 14" or "at 0.25 of the span", how it
+    leans when it does ("leaning 20 deg toward the right") and the fill it disperses through."""
     loads = case.loads
     place = (
         f"over voussoir {loads.load_voussoir}"
@@ -178,6 +178,9 @@ def load_place(case: ArchCase) -> str:
     if loads.load_inclination_deg:
         side = "right" if loads.load_inclination_deg > 0 else "left"
         place += f", leaning {abs(loads.load_inclination_deg):g} deg toward the {side}"
+    if loads.load_dispersal != NOT_DISPERSED:
+        rule = f"{loads.load_dispersal}, {loads.load_dispersal_deg:g} deg"
+        place += f", through {loads.fill_depth_mm:g} mm of fill ({rule})"
     return place
 
 

@@ -13,8 +13,9 @@ from matplotlib.patches import FancyArrow
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import backfill, load_position
 from yadearch.model.backfill import fill_surface
+from yadearch.model.dispersal import NONE as NOT_DISPERSED
 from yadearch.model.geometry import ArchGeometry, front_face
-from yadearch.model.loads import VERTICAL
+from yadearch.model.loads import VERTICAL, extrados_height, extrados_segments
 from yadearch.plotting.blocks import draw_blocks
 from yadearch.plotting.house import COLUMN_CM, THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
 from yadearch.plotting.labels import layout, place_label
@@ -65,9 +66,21 @@ def plot_load_collapse(case: ArchCase, geometry: ArchGeometry, result: LoadCapac
     return save_figure(fig, stem)
 
 
+def _draw_dispersal(ax, case: ArchCase, geometry: ArchGeometry, x: float, half: float, surface: float) -> None:
+    """The load's spread through the fill (mm): from its edges on the surface to the extrados as far as
+    the dispersal reaches, the fill's depth under the load x the tangent of its angle either side."""
+    segments = extrados_segments(geometry)
+    depth = surface - extrados_height(segments, x / MM) * MM
+    reach = half + depth * math.tan(math.radians(case.loads.load_dispersal_deg))
+    for side in (-1.0, 1.0):
+        end = x + side * reach
+        ax.plot([x + side * half, end], [surface, extrados_height(segments, end / MM) * MM], "-", color="0.3", lw=0.6)
+
+
 def _draw_load(ax, case: ArchCase, geometry: ArchGeometry) -> None:
-    """An arrow onto the extrados at the vertical load's centre and at each further load's, leaning as
-    the load does (its spread as a bar), or one sideways above the crown for an acceleration."""
+    """An arrow onto the extrados (or the fill dispersing it) at the vertical load's centre and at each
+    further load's, leaning as the load does (its spread as a bar), or one sideways above the crown for
+    an acceleration."""
     span = geometry.span * MM
     top = max(float(b[:, 1].max()) for b in geometry.blocks) * MM
     length = 0.15 * span
@@ -80,13 +93,16 @@ def _draw_load(ax, case: ArchCase, geometry: ArchGeometry) -> None:
         centre = (geometry.joints[0].intrados[0] + load_position(case, geometry)) * MM
         half = case.loads.load_width_mm / 2.0
         lean = math.radians(case.loads.load_inclination_deg)
-        tip = top + 0.1 * length  # the arrows' points, just above the crown's height
+        dispersed = case.loads.load_dispersal != NOT_DISPERSED
+        tip = top if dispersed else top + 0.1 * length  # on the fill it disperses through, or above the crown
         for offset_mm, ratio in [(0.0, 1.0), *case.loads.further_loads]:
             x, arrow = centre + offset_mm, 0.9 * length * min(ratio, 1.0)  # a lighter load, a shorter arrow
             if half > 0.0:
                 ax.plot([x - half, x + half], [top + 0.02 * span] * 2, "-", color="k", lw=1.5)
             dx, dy = arrow * math.sin(lean), -arrow * math.cos(lean)
             ax.add_patch(FancyArrow(x - dx, tip - dy, dx, dy, width=0.004 * span, color="k", length_includes_head=True))
+            if case.loads.load_dispersal != NOT_DISPERSED:
+                _draw_dispersal(ax, case, geometry, x, half, top)
     else:
         sign = 1.0 if case.loads.acceleration_toward == "right" else -1.0
         ax.add_patch(
