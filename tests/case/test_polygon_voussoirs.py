@@ -10,6 +10,7 @@ import math
 
 import numpy as np
 import pytest
+from conftest import REPO
 from surveys import curved_extrados, surveyed_blocks
 
 from yadearch.api.measured import measured_case, on_piers
@@ -184,3 +185,17 @@ def _springer_with_a_back(case):
     a_in, b_in, b_out, a_out = np.array(springer["corners"])
     springer["corners"] = [a_in.tolist(), b_in.tolist(), b_out.tolist(), [a_out[0], b_out[1]], a_out.tolist()]
     return measured_case(survey, base=case)
+
+
+def test_the_example_survey_settles_toward_its_rigid_limit_as_its_joints_stiffen():
+    """examples/surveyed_arch.json (nine voussoirs with arcs for extrados between two springers with a
+    level bed and a vertical back): every block keeps its corners; the static du grows with kn toward the
+    rigid march's, within 3 % of it at kn 10 000 (measured: 21.82, 37.60 and 38.60 mm, docs/movements.md)."""
+    case = measured_case(REPO / "examples" / "surveyed_arch.json", base=preset("set2"))
+    geometry = arch_geometry(case)
+    assert [len(b) // 2 for b in geometry.voussoirs] == [5] + [6] * 9 + [5]
+    assert geometry.joints[0].normal == pytest.approx([0.0, 1.0])  # the springer's level bed
+    soft, _ = _du(case.with_overrides({"numerics.engine": "static"}))
+    stiff, _ = _du(case.with_overrides({"numerics.engine": "static", "kn_N_per_mm3": 10_000.0}))
+    rigid = limit_analysis(case).du_rigid_mm
+    assert 1e3 * soft < 1e3 * stiff < rigid and 1e3 * stiff == pytest.approx(rigid, rel=0.03)
