@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from yadearch.case.fields import number_meta, table_meta
+from yadearch.case.fields import choice_meta, number_meta, table_meta
 from yadearch.model.dispersal import DISPERSALS
 from yadearch.model.loads import LIVE_LOADS, LOAD_SHAPES
 
@@ -18,13 +18,13 @@ class LoadsConfig:
 
     live_load: str = field(
         default="none",
-        metadata={
-            "choices": LIVE_LOADS,
-            "predates": "none",
-            "doc": "'vertical' (a load on the extrados at load_position_over_span, spread over "
+        metadata=choice_meta(
+            LIVE_LOADS,
+            "'vertical' (a load on the extrados at load_position_over_span, spread over "
             "load_width_mm; its capacity in N) or 'horizontal_acceleration' (each voussoir pushed by "
             "its weight x the multiplier toward acceleration_toward; its capacity in g); 'none'",
-        },
+            predates="none",
+        ),
     )
     load_position_over_span: float = field(
         default=0.25,
@@ -91,12 +91,12 @@ class LoadsConfig:
     )
     load_shape: str = field(
         default="uniform",
-        metadata={
-            "choices": LOAD_SHAPES,
-            "predates": "uniform",
-            "doc": "how a spread vertical load is distributed over load_width_mm: 'uniform', 'rising' "
+        metadata=choice_meta(
+            LOAD_SHAPES,
+            "how a spread vertical load is distributed over load_width_mm: 'uniform', 'rising' "
             "(a triangle from zero at its left edge) or 'falling' (from its peak at the left edge to zero)",
-        },
+            predates="uniform",
+        ),
     )
     held_load_N: float = field(
         default=0.0,
@@ -136,13 +136,13 @@ class LoadsConfig:
     )
     load_dispersal: str = field(
         default="none",
-        metadata={
-            "choices": DISPERSALS,
-            "predates": "none",
-            "doc": "with backfill, a vertical live load stands on the fill's surface and reaches the extrados "
+        metadata=choice_meta(
+            DISPERSALS,
+            "with backfill, a vertical live load stands on the fill's surface and reaches the extrados "
             "'spread' uniformly at load_dispersal_deg either side, or as 'boussinesq' (an elastic "
             "half-plane's stress under a line load, cut at load_dispersal_deg); 'none': on the extrados",
-        },
+            predates="none",
+        ),
     )
     load_dispersal_deg: float = field(
         default=30.0,
