@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 from conftest import REPO
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from yadearch.case.config import case_from_dict
@@ -361,6 +361,8 @@ SECTION_VALUES = st.one_of(
 
 @settings(max_examples=300, deadline=None)
 @given(st.dictionaries(SECTION_NAMES, SECTION_VALUES, max_size=4))
+@example({"material": {"preset": [False]}})  # a named material that is not a name (found by this test)
+@example({"geometry": {"shape": "measured", "extrados_points_mm": [[0.5, 1.0, 2.0]]}})
 def test_any_case_structure_is_a_valid_case_or_one_clean_error(data):
     try:
         case = case_from_dict(data)

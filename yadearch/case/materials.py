@@ -42,7 +42,7 @@ PRESET_CHOICES = ("", *MATERIALS)  # "" : no named material, the case's own valu
 
 def material_preset(name: str) -> MaterialPreset:
     """The named material, or a one-line refusal naming the accepted names."""
-    if name not in MATERIALS:
+    if not isinstance(name, str) or name not in MATERIALS:
         raise CaseError(f"material.preset must be one of {', '.join(MATERIALS)}, got {name!r}")
     return MATERIALS[name]
 
