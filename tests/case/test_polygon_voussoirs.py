@@ -199,3 +199,30 @@ def test_the_example_survey_settles_toward_its_rigid_limit_as_its_joints_stiffen
     stiff, _ = _du(case.with_overrides({"numerics.engine": "static", "kn_N_per_mm3": 10_000.0}))
     rigid = limit_analysis(case).du_rigid_mm
     assert 1e3 * soft < 1e3 * stiff < rigid and 1e3 * stiff == pytest.approx(rigid, rel=0.03)
+
+
+def test_a_table_of_the_blocks_corners_is_the_same_survey(tmp_path):
+    """The example survey as a CSV, a row a corner (block, x_mm, y_mm, support), the blocks' rows in order
+    round each: the same joints and face corners as the JSON; a block marked twice or a table of neither
+    form is refused in one line, naming the block by its label."""
+    import json
+
+    import pandas as pd
+
+    survey = REPO / "examples" / "surveyed_arch.json"
+    rows = []
+    for k, block in enumerate(json.loads(survey.read_text())["blocks"]):
+        rows += [
+            {"block": f"B{k}", "x_mm": x, "y_mm": y, "support": block.get("support", "")} for x, y in block["corners"]
+        ]
+    table = tmp_path / "corners.csv"
+    pd.DataFrame(rows).to_csv(table, index=False)
+    from_json, from_csv = measured_case(survey), measured_case(table)
+    for key in ("joint_points_mm", "intrados_points_mm", "extrados_points_mm"):
+        assert getattr(from_csv.geometry, key) == getattr(from_json.geometry, key)
+    rows[0]["support"], rows[1]["support"] = "left", "right"
+    with pytest.raises(CaseError, match="block B0 is marked left and right") as error:
+        measured_case(pd.DataFrame(rows))
+    assert "\n" not in str(error.value)
+    with pytest.raises(CaseError, match=r"or block, x_mm, y_mm \(a row a block's corner\); missing"):
+        measured_case(pd.DataFrame({"x": [1.0]}))

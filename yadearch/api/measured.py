@@ -22,6 +22,8 @@ from yadearch.case.survey_blocks import ring_from_blocks
 from yadearch.errors import CaseError
 
 JOINT_COLUMNS = ("x_intrados_mm", "y_intrados_mm", "x_extrados_mm", "y_extrados_mm")
+BLOCK_COLUMNS = ("block", "x_mm", "y_mm")  # a survey of blocks as a table: a row a corner, in order round it
+SUPPORT_COLUMN = "support"  # 'left' or 'right' on an abutment's rows (any of them), empty elsewhere
 JSON_SUFFIX = ".json"  # a survey of blocks (their corners, the supports marked) rather than of joints
 
 
@@ -30,7 +32,8 @@ def measured_case(
 ) -> ArchCase:
     """`base` (a case or a preset's name: its material, joints, loading and numerics) with the arch of
     the surveyed `joints`: a CSV file or table with the columns JOINT_COLUMNS (one row a joint, left to
-    right), or a JSON file or dict of the blocks' corners with the supports marked
+    right), or one of the blocks' corners (BLOCK_COLUMNS, `blocks_from_table`), or a JSON file or dict of
+    the blocks' corners with the supports marked
     (`case.survey_blocks.ring_from_blocks`: a voussoir may have more than four corners, its faces' other
     corners kept); voussoirs between consecutive joints, `thickness_mm`
     their mean joint length (the nominal thickness the runaway bound and the snap floor scale with);
@@ -38,7 +41,10 @@ def measured_case(
     table, faces = _read(joints)
     missing = [c for c in JOINT_COLUMNS if c not in table.columns]
     if missing:
-        raise CaseError(f"joints: the table needs the columns {', '.join(JOINT_COLUMNS)}; missing {', '.join(missing)}")
+        raise CaseError(
+            f"joints: the table needs the columns {', '.join(JOINT_COLUMNS)} (a row a joint) or "
+            f"{', '.join(BLOCK_COLUMNS)} (a row a block's corner); missing {', '.join(missing)}"
+        )
     rows = table[list(JOINT_COLUMNS)].to_numpy(float)
     if len(rows) < MIN_MEASURED_JOINTS:
         raise CaseError(
@@ -62,9 +68,11 @@ def measured_case(
 
 def _read(joints: str | Path | pd.DataFrame | dict[str, Any]) -> tuple[pd.DataFrame, dict[str, list]]:
     """The joints' table and the faces' other corners (rows [voussoir, x, y] by face, from a survey of
-    blocks), from a file (a JSON survey of blocks by its suffix) or as given; CaseError for a file that
-    cannot be read."""
+    blocks: a JSON file by its suffix, a dict, or a table of the blocks' corners), from a file or as
+    given; CaseError for a file that cannot be read."""
     if isinstance(joints, pd.DataFrame):
+        if all(c in joints.columns for c in BLOCK_COLUMNS) and not all(c in joints.columns for c in JOINT_COLUMNS):
+            return _read(blocks_from_table(joints))
         return joints, {}
     if isinstance(joints, dict):
         ring = ring_from_blocks(joints)
@@ -76,11 +84,27 @@ def _read(joints: str | Path | pd.DataFrame | dict[str, Any]) -> tuple[pd.DataFr
             if not isinstance(data, dict):
                 raise ValueError("a JSON survey is an object with 'blocks'")
             return _read(data)
-        return pd.read_csv(joints), {}
+        return _read(pd.read_csv(joints))
     except CaseError:
         raise
     except (OSError, ValueError, pd.errors.ParserError) as exc:
         raise CaseError(f"joints: cannot read {joints}: {exc}") from None
+
+
+def blocks_from_table(table: pd.DataFrame) -> dict[str, Any]:
+    """A survey of blocks given as a table (BLOCK_COLUMNS, a row a corner, each block's rows in order
+    round it; SUPPORT_COLUMN marking the abutments) as `case.survey_blocks.ring_from_blocks` takes it,
+    each block named by its label; CaseError for a block marked twice."""
+    blocks = []
+    for label, rows in table.groupby("block", sort=False):
+        block: dict[str, Any] = {"name": str(label), "corners": rows[["x_mm", "y_mm"]].to_numpy(float).tolist()}
+        marks = set(rows[SUPPORT_COLUMN].dropna().astype(str).str.strip()) - {""} if SUPPORT_COLUMN in rows else set()
+        if len(marks) > 1:
+            raise CaseError(f"survey: block {label} is marked {' and '.join(sorted(marks))}; mark one support a block")
+        if marks:
+            block["support"] = marks.pop()
+        blocks.append(block)
+    return {"blocks": blocks}
 
 
 def on_piers(case: ArchCase | str, pier_height_mm: float, pier_width_mm: float, name: str | None = None) -> ArchCase:

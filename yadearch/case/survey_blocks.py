@@ -31,15 +31,17 @@ class SurveyedRing:
 
 def ring_from_blocks(data: dict[str, Any]) -> SurveyedRing:
     """The ring of a survey's blocks: `data["blocks"]` a list of {"corners": [[x, y], ...] (mm), in
-    order round the block, "support": "left" | "right" (the two abutments only)}, in any order;
-    `data["joint_tolerance_mm"]` optional. CaseError in one line for a survey that makes no ring."""
+    order round the block, "support": "left" | "right" (the two abutments only), "name" (optional: what
+    the messages call it)}, in any order; `data["joint_tolerance_mm"]` optional. CaseError in one line
+    for a survey that makes no ring."""
     blocks = data.get("blocks")
     if not isinstance(blocks, list) or not blocks:
         raise CaseError("survey: 'blocks' must be a list of blocks, each {'corners': [[x, y], ...]}")
     tolerance = float(data.get("joint_tolerance_mm", DEFAULT_JOINT_TOLERANCE_MM))
     if not tolerance > 0.0:
         raise CaseError(f"survey: joint_tolerance_mm must be > 0 mm, got {tolerance:g}")
-    corners = [_corners(block, k) for k, block in enumerate(blocks)]
+    names = [str(b.get("name", k)) if isinstance(b, dict) else str(k) for k, b in enumerate(blocks)]
+    corners = [_corners(block, name) for block, name in zip(blocks, names)]
     marks = [block.get("support") for block in blocks]
     ends = {side: [k for k, mark in enumerate(marks) if mark == side] for side in SUPPORTS}
     unknown = sorted({str(m) for m in marks if m is not None and m not in SUPPORTS})
@@ -48,12 +50,12 @@ def ring_from_blocks(data: dict[str, Any]) -> SurveyedRing:
             "survey: mark exactly one block 'support': 'left' and one 'support': 'right'"
             + (f" (got {', '.join(unknown)})" if unknown else "")
         )
-    order = _chain(corners, ends["left"][0], ends["right"][0], tolerance)
+    order = _chain(corners, ends["left"][0], ends["right"][0], tolerance, names)
     joints = [_shared(corners[a], corners[b], tolerance) for a, b in zip(order, order[1:])]
     for k, index in enumerate(order[1:-1]):
         if len(corners[index]) < VOUSSOIR_CORNERS:
             raise CaseError(
-                f"survey: voussoir {k + 1} (block {index}) has {len(corners[index])} corners; a voussoir has "
+                f"survey: voussoir {k + 1} (block {names[index]}) has {len(corners[index])} corners; a voussoir has "
                 f"{VOUSSOIR_CORNERS} at least, two on each joint"
             )
     first, second = _chains(joints)
@@ -82,7 +84,7 @@ def _between(ring: np.ndarray, start: np.ndarray, end: np.ndarray, other: tuple[
     raise CaseError(f"survey: voussoir {k}'s corners are not in order round the block")
 
 
-def _corners(block: Any, k: int) -> np.ndarray:
+def _corners(block: Any, name: str) -> np.ndarray:
     """A block's corners as an (n, 2) array; CaseError naming the block otherwise."""
     points = block.get("corners") if isinstance(block, dict) else None
     try:
@@ -90,7 +92,7 @@ def _corners(block: Any, k: int) -> np.ndarray:
     except (TypeError, ValueError):
         array = np.empty((0,))
     if array.ndim != 2 or array.shape[1] != 2 or len(array) < 3 or not np.isfinite(array).all():
-        raise CaseError(f"survey: block {k} needs 'corners', at least 3 finite [x, y] points (mm)")
+        raise CaseError(f"survey: block {name} needs 'corners', at least 3 finite [x, y] points (mm)")
     return array
 
 
@@ -100,22 +102,23 @@ def _touching(a: np.ndarray, b: np.ndarray, tolerance: float) -> list[tuple[int,
     return [(int(i), int(j)) for i, j in zip(*np.nonzero(distance < tolerance))]
 
 
-def _chain(corners: list[np.ndarray], left: int, right: int, tolerance: float) -> list[int]:
-    """The blocks from the left support to the right one, each sharing two corners with the next."""
+def _chain(corners: list[np.ndarray], left: int, right: int, tolerance: float, names: list[str]) -> list[int]:
+    """The blocks from the left support to the right one, each sharing two corners with the next
+    (`names`: what the messages call them)."""
     order, remaining = [left], set(range(len(corners))) - {left}
     while order[-1] != right:
         after = [k for k in remaining if len(_touching(corners[order[-1]], corners[k], tolerance)) == 2]
         if len(after) != 1:
-            said = "no block" if not after else f"blocks {', '.join(map(str, sorted(after)))}"
+            said = "no block" if not after else f"blocks {', '.join(names[k] for k in sorted(after))}"
             raise CaseError(
-                f"survey: block {order[-1]} shares a joint (two corners within {tolerance:g} mm) with {said}; "
+                f"survey: block {names[order[-1]]} shares a joint (two corners within {tolerance:g} mm) with {said}; "
                 "each block must share one with the next only (set joint_tolerance_mm to the survey's gaps)"
             )
         order.append(after[0])
         remaining.discard(after[0])
     if remaining:
         raise CaseError(
-            f"survey: blocks {', '.join(map(str, sorted(remaining)))} are not on the ring between the supports"
+            f"survey: blocks {', '.join(names[k] for k in sorted(remaining))} are not on the ring between the supports"
         )
     return order
 

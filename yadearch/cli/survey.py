@@ -27,7 +27,9 @@ def survey(
     name: str | None,
 ) -> None:
     """Write a case of the surveyed arch in JOINTS (a CSV with the columns x_intrados_mm, y_intrados_mm,
-    x_extrados_mm, y_extrados_mm, one row a joint, left to right; or a .json survey of the blocks:
+    x_extrados_mm, y_extrados_mm, one row a joint, left to right; or a CSV of the blocks' corners, the
+    columns block, x_mm, y_mm and support ('left'/'right' on the abutments), one row a corner; or a .json
+    survey of the blocks:
     {"blocks": [{"corners": [[x, y], ...]}, ..., {"corners": ..., "support": "left"}, ...]}, in mm, each
     voussoir's corners in order round it, two on each joint and any more on its faces) on the material,
     joints, loading and numerics of --preset/--case/--set; run it with `yadearch run --case OUT`."""
