@@ -38,7 +38,7 @@ class GeometryConfig:
             "varying as the corners do (`ya.measured_case` reads them from a CSV)",
         ),
     )
-    intrados_points_mm: list = face_points_field("intrados", "a springer's bed")
+    intrados_points_mm: list = face_points_field("intrados", "a springer's upright face below the curve")
     extrados_points_mm: list = face_points_field("extrados", "a curved extrados, a springer's back")
     n_voussoirs: int = field(default=55, metadata=number_meta(2, 1000, doc="number of voussoirs"))
     embrace_deg: float = field(
