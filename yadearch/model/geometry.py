@@ -145,8 +145,9 @@ def arch_on_intrados(
 
 @dataclass(frozen=True)
 class FacePoints:
-    """A voussoir's corners between its two joints (m, left to right, each (k, 2)): on its intrados
-    face and on its extrados face (a curved extrados, a springer's bed and back); none: a quadrilateral."""
+    """A voussoir's corners between its two joints (m, left to right, each (k, 2)): on its intrados face
+    (a springer's upright face) and on its extrados face (a curved extrados, a springer's back); none:
+    a quadrilateral."""
 
     intrados: np.ndarray
     extrados: np.ndarray
