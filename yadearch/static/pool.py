@@ -55,12 +55,14 @@ def _worker() -> subprocess.Popen:
 
 
 def _answer(worker: subprocess.Popen, timeout_s: float | None) -> str:
-    """The worker's one-line answer, waited for at most `timeout_s` (TimeoutExpired)."""
+    """The worker's one-line answer, waited for at most `timeout_s` (TimeoutExpired): one that came
+    later is over the timeout too, though a busy machine woke the waiting thread after it came."""
     box: list[str] = []
     reader = threading.Thread(target=lambda: box.append(worker.stdout.readline() if worker.stdout else ""), daemon=True)
+    start = time.monotonic()
     reader.start()
     reader.join(timeout_s)
-    if reader.is_alive():
+    if reader.is_alive() or (timeout_s is not None and time.monotonic() - start > timeout_s):
         raise subprocess.TimeoutExpired(["static engine"], timeout_s or 0.0)
     return box[0]
 
