@@ -3,7 +3,6 @@ description, which `yadearch params` prints and validation reads."""
 
 from __future__ import annotations
 
-from dataclasses import field
 from typing import Any
 
 
@@ -29,16 +28,3 @@ def table_meta(columns: tuple[str, ...], doc: str) -> dict[str, Any]:
     """Field metadata: a table parameter's columns (rows of numbers) and a one-line description; a case
     written before it existed has no rows."""
     return {"table_columns": columns, "predates": [], "doc": doc}
-
-
-def face_points_field(face: str, example: str) -> Any:
-    """A measured voussoir's corners on its `face` ('intrados' or 'extrados') between its joints: a table
-    of rows [voussoir, x_mm, y_mm]."""
-    return field(
-        default_factory=list,
-        metadata=table_meta(
-            ("voussoir", "x_mm", "y_mm"),
-            f"shape 'measured': a voussoir's corners on its {face} face between its two joints (mm), left "
-            f"to right, one row a corner ({example}); none: a straight face",
-        ),
-    )

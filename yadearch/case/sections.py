@@ -6,12 +6,26 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass, field, fields
+from typing import Any
 
-from yadearch.case.fields import choice_meta, face_points_field, number_meta, table_meta
+from yadearch.case.fields import choice_meta, number_meta, table_meta
 from yadearch.case.imperfections_section import ImperfectionsConfig
 from yadearch.case.loads_section import LoadsConfig
 from yadearch.case.materials import PRESET_CHOICES
 from yadearch.case.numerics_section import NumericsConfig
+
+
+def _face_points(face: str, example: str) -> Any:
+    """A measured voussoir's corners on its `face` ('intrados' or 'extrados') between its joints: a table
+    of rows [voussoir, x_mm, y_mm]."""
+    return field(
+        default_factory=list,
+        metadata=table_meta(
+            ("voussoir", "x_mm", "y_mm"),
+            f"shape 'measured': a voussoir's corners on its {face} face between its two joints (mm), left "
+            f"to right, one row a corner ({example}); none: a straight face",
+        ),
+    )
 
 
 @dataclass
@@ -38,8 +52,8 @@ class GeometryConfig:
             "varying as the corners do (`ya.measured_case` reads them from a CSV)",
         ),
     )
-    intrados_points_mm: list = face_points_field("intrados", "a springer's upright face below the curve")
-    extrados_points_mm: list = face_points_field("extrados", "a curved extrados, a springer's back")
+    intrados_points_mm: list = _face_points("intrados", "a springer's upright face below the curve")
+    extrados_points_mm: list = _face_points("extrados", "a curved extrados, a springer's back")
     n_voussoirs: int = field(default=55, metadata=number_meta(2, 1000, doc="number of voussoirs"))
     embrace_deg: float = field(
         default=125.0, metadata=number_meta(0, 180, low_open=True, doc="angle of embrace (deg; segmental)")

@@ -16,7 +16,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from yadearch.model.dispersal import NONE as NOT_DISPERSED
 from yadearch.model.dispersal import STRIP_POINTS, Dispersal, dispersed_share
 from yadearch.model.geometry import QUADRILATERAL_PRISM, ArchGeometry, front_face
 
@@ -126,7 +125,7 @@ def load_displacement(
 def _shares(geometry: ArchGeometry, load: LiveLoad, position: float) -> list[tuple[int, float, np.ndarray]]:
     """(block, newtons, point) of a unit vertical `load` centred `position` m from the left springing: on
     the extrados, or from the fill's surface through the fill (`model.dispersal`)."""
-    if load.dispersal is None or load.dispersal.kind == NOT_DISPERSED:
+    if load.dispersal is None:
         return _extrados_shares(geometry, position, load.width, load.shape)
     return _dispersed_shares(geometry, load.dispersal, position, load.width, load.shape)
 

@@ -101,7 +101,7 @@ def _draw_load(ax, case: ArchCase, geometry: ArchGeometry) -> None:
                 ax.plot([x - half, x + half], [top + 0.02 * span] * 2, "-", color="k", lw=1.5)
             dx, dy = arrow * math.sin(lean), -arrow * math.cos(lean)
             ax.add_patch(FancyArrow(x - dx, tip - dy, dx, dy, width=0.004 * span, color="k", length_includes_head=True))
-            if case.loads.load_dispersal != NOT_DISPERSED:
+            if dispersed:
                 _draw_dispersal(ax, case, geometry, x, half, top)
     else:
         sign = 1.0 if case.loads.acceleration_toward == "right" else -1.0
