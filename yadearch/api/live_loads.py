@@ -19,6 +19,7 @@ from yadearch.case.mechanics import arch_geometry, require_live_load
 from yadearch.case.names import check_name, output_path
 from yadearch.errors import CaseError
 from yadearch.launch.load_process import run_load_process
+from yadearch.model.load_control import DisplacementControl
 from yadearch.plotting.load_figure import plot_load_collapse
 from yadearch.plotting.loads import plot_influence, plot_load_path
 from yadearch.results.load_path import load_path_file, write_load_path, write_load_path_folder
@@ -68,14 +69,14 @@ def load_path(
     descend_to: float | None = DESCEND_TO,
     figures: bool = True,
 ) -> LoadPath:
-    """The live load grown to collapse on an engine's path after the case's support movement to
-    `after_mm`: its first loss of stability, capacity and mechanism, its load-displacement curve, and the
-    rigid capacity of the same state. `engine` 'static': the static engine (seconds, no YADE), its curve
-    going on past the peak until the multiplier falls to `descend_to` x the capacity (None: it stops at
-    the peak); 'dem': YADE's DEM by load ramps relaxed to equilibrium (a child process, minutes; needs
-    `out`; its curve stops at the peak). With `out`, writes OUT/NAME_load_path.json, .csv (the curve),
-    its figure .pdf/.png (with `figures`) and its states as the folder OUT/NAME_load_path/ (`open_run(...).animate()`,
-    `.export_vtk()`)."""
+    """The live load grown to collapse on an engine's path after the case's support movement to `after_mm`: its
+    first loss of stability, capacity and mechanism, its load-displacement curve, and the rigid capacity
+    of the same state. `engine` 'static': the static engine (seconds, no YADE), its curve going on past
+    the peak until the multiplier falls to `descend_to` x the capacity (None: it stops at the peak);
+    'dem': YADE's DEM by load ramps relaxed to equilibrium (a child process, minutes; needs `out`), past
+    the peak the load driven by its displacement through a stiff spring (`dem.load_descent`). With
+    `out`, writes OUT/NAME_load_path.json, .csv (the curve), its figure .pdf/.png (with `figures`) and
+    its states as the folder OUT/NAME_load_path/ (`open_run(...).animate()`, `.export_vtk()`)."""
     check_arguments(after_mm=after_mm, descend_to=descend_to, figures=figures)
     if engine not in LOAD_PATH_ENGINES:
         raise CaseError(f"engine must be one of {', '.join(LOAD_PATH_ENGINES)}, got {engine!r}")
@@ -85,7 +86,8 @@ def load_path(
     if engine == "dem":
         if folder is None:
             raise CaseError("out: the DEM's load path is written to a folder; give out")
-        result = run_load_process(case, folder, after_mm)
+        descent = DisplacementControl(descend_to) if descend_to is not None else None
+        result = run_load_process(case, folder, after_mm, descent=descent)
     else:
         try:
             result = static_load_path(case, after_mm, descend_to=descend_to)

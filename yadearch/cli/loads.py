@@ -47,7 +47,8 @@ ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
     "static engine's path (the DEM's blocks and joints, seconds): first loss of stability, collapse, the "
     "load-displacement curve (NAME_load_path.csv/.json and figure; its states in NAME_load_path/ for `yadearch "
     "animate` and `export`), beside the rigid answer; dem: the same "
-    "path in YADE by load ramps relaxed to equilibrium (minutes; its states too, no descending branch)",
+    "path in YADE by load ramps relaxed to equilibrium, past the peak the load driven by its displacement "
+    "through a stiff spring (minutes; its states too)",
 )
 @click.option(
     "--after-mm",
@@ -68,14 +69,15 @@ ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
     "--descending/--no-descending",
     default=True,
     show_default=True,
-    help="static engine: follow the load-displacement curve past its peak (arc length; docs/loads.md)",
+    help="follow the load-displacement curve past its peak (static engine: arc length; DEM: displacement "
+    "control; docs/loads.md)",
 )
 @click.option(
     "--descend-to",
     type=argument_type("descend_to"),
     default=DESCEND_TO,
     show_default=True,
-    help="static engine: the descending branch ends when the load has fallen to this fraction of the capacity",
+    help="the descending branch ends when the load has fallen to this fraction of the capacity",
 )
 @click.option(
     "--positions",

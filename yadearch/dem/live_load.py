@@ -11,6 +11,7 @@ import numpy as np
 from yadearch.dem.joint_elements import JointElementContacts
 from yadearch.dem.scene import CALLBACK_NAME, ArchScene
 from yadearch.errors import CaseError
+from yadearch.model.load_control import LoadSpring
 from yadearch.model.loads import turned_moments, turning_stiffness
 
 LOAD_DRIVER_LABEL = "yadearch_live_load"
@@ -32,6 +33,7 @@ class LoadDriver:
         self.multiplier = 0.0
         self.target = 0.0
         self.rate = 0.0  # multiplier per second
+        self.spring: LoadSpring | None = None  # past the peak the load is the spring's (`drive_by`)
 
     def engine(self) -> Any:
         """The PyRunner that calls `step` every step (before the integrator)."""
@@ -44,18 +46,28 @@ class LoadDriver:
         self.target, self.rate = target, rate
 
     def set(self, multiplier: float) -> None:
-        """Put the multiplier at `multiplier` at once (a restored state's)."""
+        """Put the multiplier at `multiplier` at once (a restored state's), the spring let go."""
+        self.spring = None
         self.multiplier = self.target = multiplier
         self.contacts.external = multiplier * self.loads[:, 0:2]
 
     def reached(self) -> bool:
         return self.multiplier == self.target
 
+    def drive_by(self, spring: LoadSpring) -> None:
+        """From the next step on, the multiplier is `spring`'s on the blocks' poses: the load's
+        displacement drives it (`model.load_control`)."""
+        self.spring = spring
+
     def step(self) -> None:
         """This step's multiplier, and the load's forces and turned moments added to the blocks."""
         from yade import O
 
-        if self.multiplier != self.target:
+        if self.spring is not None:
+            self.spring.advance(O.dt)
+            self.multiplier = self.target = self.spring.multiplier(self.contacts.poses)
+            self.contacts.external = self.multiplier * self.loads[:, 0:2]
+        elif self.multiplier != self.target:
             change = self.rate * O.dt
             if abs(self.target - self.multiplier) <= change:
                 self.multiplier = self.target

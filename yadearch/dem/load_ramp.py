@@ -1,11 +1,11 @@
 """A live load grown to collapse in YADE, the DEM's answer to `yadearch loads --engine dem`: the
 self-weight, optionally the support movement to `after_mm`, then the live load's multiplier as the
 equilibrium path's parameter with the supports held, by ramps each relaxed to equilibrium
-(`dem.loading`), with the static engine's increments, bracket and definitions (`solve.load_path`)."""
+(`dem.loading`), with the static engine's increments, bracket and definitions (`solve.load_path`);
+past the limit point, optionally, the descending branch under displacement control (`dem.load_descent`)."""
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from typing import Any
 
@@ -14,21 +14,20 @@ import pandas as pd
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import HELD_SETTINGS, held_multiplier, live_load
-from yadearch.dem.live_load import LOAD_CALLBACK, LoadDriver
+from yadearch.dem.load_descent import dem_descent
+from yadearch.dem.loaded_arch import LoadedArch
 from yadearch.dem.loading import EquilibriumPath
 from yadearch.dem.recorder import Records
 from yadearch.dem.runner import Runner
-from yadearch.dem.scene import install_before_integrator
 from yadearch.errors import CaseError
-from yadearch.model import units
-from yadearch.model.hinges import Hinge
-from yadearch.model.joint_tangent import BLOCK_DOFS
-from yadearch.model.loads import UNITS, block_loads, live_load_points, load_displacement
-from yadearch.model.movement import Movement
+from yadearch.model.load_control import DisplacementControl
+from yadearch.model.loads import UNITS, block_loads, live_load_points
 from yadearch.results.summary import HingeRef
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import (
+    BRANCH,
     LoadPath,
+    branches,
     check_carried,
     check_held,
     first_loss_multiplier,
@@ -38,143 +37,9 @@ from yadearch.solve.load_path import (
     rigid_answer,
 )
 from yadearch.solve.path import PathSettings, first_snap, path_settings
-from yadearch.solve.stages import Stage, Verdict
+from yadearch.solve.stages import Stage
 
 DEM = "dem"
-NOT_RECORDED = (0, 0, 0)  # the mark of an equilibrium the run's tables do not keep
-
-
-class LoadedArch:
-    """A live DEM scene whose path parameter is the live load's multiplier, the supports held (the
-    `dem.loading.LiveArch` the equilibrium path drives); it records the load-displacement curve."""
-
-    def __init__(self, runner: Runner, loads: np.ndarray, full_rate: float, recorded: bool = True):
-        self.runner = runner
-        self.driver = LoadDriver(runner.scene, loads)
-        install_before_integrator(LOAD_CALLBACK, self.driver, self.driver.engine())
-        self.full_rate = full_rate  # multiplier per second of the largest increment's ramp
-        self.recorded = recorded  # its equilibria recorded in the run's tables (not while a run's load is set)
-        self.loads = loads
-        length = runner.scene.geometry.thickness  # the rotations' lever in the tangent (`model.stability`)
-        self.force_norm = float(np.linalg.norm(np.column_stack([loads[:, 0:2], loads[:, 2] / length])))
-        self._start = self.driver.contacts.poses.copy()
-        self.curve: list[dict[str, float]] = [self._point()]  # the path's start, then each equilibrium
-
-    # ---- the live scene, as the path sees it ----------------------------------------------
-    @property
-    def stage(self) -> Stage:
-        return self.runner.stage
-
-    @stage.setter
-    def stage(self, value: Stage) -> None:
-        self.runner.stage = value
-
-    @property
-    def case(self) -> ArchCase:
-        return self.runner.case
-
-    @property
-    def movement(self) -> Movement:
-        return self.runner.movement
-
-    @property
-    def recorder(self) -> LoadedArch:
-        return self
-
-    @property
-    def hold_move(self) -> float:
-        return self.runner.hold_move
-
-    @property
-    def total_steps(self) -> int:
-        return self.runner.total_steps
-
-    @property
-    def log(self) -> Callable[[str], None]:
-        return self.runner.log
-
-    def smallest_stiffness(self) -> float:
-        """The static tangent's smallest eigenvalue at the poses, the load's own stiffness included."""
-        return self.runner.smallest_stiffness(self.driver.turning())
-
-    def reach(self, increment: float) -> float:
-        """A load increment moves the blocks quasi-statically at most by its generalised force over the
-        last equilibrium's smallest stiffness (m; unbounded where that was not positive)."""
-        softest = self.curve[-1]["min_stiffness_N_per_m"]
-        return abs(increment) * self.force_norm / softest if softest > 0.0 else math.inf
-
-    def static_distance(self) -> float | None:
-        """How far the static model, the live load at the scene's multiplier, moves the blocks to a stable
-        equilibrium (m; inf: none there), None where it is not the scene's model (`dem.static_check`):
-        a hold is taken for an equilibrium only near one, as on a support's path."""
-        check = self.runner.static_check
-        return check.distance(self.runner.delta(), self.driver.multiplier) if check else None
-
-    def delta(self) -> float:
-        return self.driver.multiplier
-
-    def snapshot(self) -> dict[str, Any]:
-        return {"scene": self.runner.snapshot(), "multiplier": self.driver.multiplier}
-
-    def restore(self, snapshot: dict[str, Any]) -> None:
-        self.runner.restore(snapshot["scene"])
-        self.driver.set(snapshot["multiplier"])
-
-    def move_support(self, target: float, speed_fraction: float) -> None:
-        """Ramp the live load to `target` (the supports held) at `speed_fraction` of the full rate."""
-        self.driver.ramp_to(target, self.full_rate * speed_fraction)
-        self.runner.drive(self.driver.reached)
-
-    def positions(self) -> np.ndarray:
-        """The voussoirs' centroids (n, 3; m) at the static model's stable equilibrium that the scene's state
-        sits in, the scene's own where there is none: the path's trend and snap test compare equilibria,
-        not holds within their force tolerance, which over the path's smallest stiffness near the peak is
-        the snap floor's order (docs/loads.md, "The DEM against the static engine")."""
-        scene = self.runner.positions()
-        check = self.runner.static_check
-        found = check.equilibrium(self.runner.delta(), self.driver.multiplier) if check else None
-        if found is None:
-            return scene
-        settled = scene.copy()
-        settled[:, 0:2] = found.u.reshape(-1, BLOCK_DOFS)[1:-1, 0:2]
-        return settled
-
-    def hold(
-        self,
-        runaway: float | None = None,
-        max_s: float | None = None,
-        from_rest: bool = True,
-        still_speed: float | None = None,
-        tolerance: float | None = None,
-    ) -> Verdict:
-        return self.runner.hold(runaway, max_s, from_rest, still_speed, tolerance)
-
-    # ---- records: the runner's, and a point of the curve for each equilibrium ------------
-    def record_equilibrium(self) -> tuple[tuple[int, int, int], list[Hinge]]:
-        self.curve.append(self._point())
-        return self.runner.recorder.record_equilibrium() if self.recorded else (NOT_RECORDED, [])
-
-    def _point(self) -> dict[str, float]:
-        """The load-displacement curve's point of the scene now (the static engine's columns, and the sums
-        of the supports' reactions, which balance the weights and the live load in equilibrium)."""
-        poses = self.driver.contacts.poses
-        moved = load_displacement(self.loads, self._start[:, 0:2], self._start[:, 2], poses[:, 0:2], poses[:, 2])
-        left, right = self.runner.recorder.reactions()
-        return {
-            "multiplier": self.driver.multiplier,
-            "load_displacement_mm": units.to_mm(moved),
-            "min_stiffness_N_per_m": self.smallest_stiffness(),
-            "horizontal_reactions_N": float(left[0] + right[0]),  # the supports on the arch: its loads' balance
-            "vertical_reactions_N": float(left[1] + right[1]),
-        }
-
-    def discard_since(self, mark: tuple[int, int, int]) -> None:
-        if self.recorded:
-            self.runner.recorder.discard_since(mark)
-        self.curve.pop()
-
-    def record_collapse(self) -> list[Hinge]:
-        return self.runner.recorder.record_collapse()
 
 
 def scene_live_loads(runner: Runner) -> np.ndarray:
@@ -194,12 +59,17 @@ def ramp_rate(case: ArchCase, settings: PathSettings) -> float:
 
 
 def dem_load_path(
-    case: ArchCase, after_mm: float = 0.0, log: Callable[[str], None] = print
+    case: ArchCase,
+    after_mm: float = 0.0,
+    log: Callable[[str], None] = print,
+    descent: DisplacementControl | None = None,
 ) -> tuple[LoadPath, Records, dict[str, Any] | None]:
-    """The live load of `case` grown to collapse in YADE after the support movement to `after_mm`: the
-    same answer as `solve.load_path.static_load_path` (its `iterations` the DEM's steps), the load
-    path's records (series, joints, snapshots and states from the load's start, each with its load) and
-    the arch's imperfections table (None for a perfect arch). CaseError as the static engine raises it."""
+    """The live load of `case` grown to collapse in YADE after the support movement to `after_mm`: the same
+    answer as `solve.load_path.static_load_path` (its `iterations` the DEM's steps), past a collapse's
+    limit point the descending branch under `descent`'s displacement control (None: not traced), the
+    load path's records (series, joints, snapshots and states from the load's start, each with its load)
+    and the arch's imperfections table (None for a perfect arch). CaseError as the static engine raises
+    it."""
     at_rest = load_analysis(case)  # refuses a case without a live load
     scale = load_scale(at_rest)
     settings = load_settings(scale, case.numerics.increment_growth)
@@ -216,11 +86,15 @@ def dem_load_path(
         _record_from_here(runner, lambda: (arch.driver.multiplier, unit), start)
         loading = EquilibriumPath(arch, settings, unit)
         path = loading.follow()
+        past = dem_descent(loading, arch, path.du, descent) if path.collapsed and descent is not None else None
         hinges = loading.collapse_state(path.upper) if path.collapsed else []
     finally:
         runner.close()
     log(f"[{case.name}] {path.outcome} at {path.du if path.collapsed else path.lower:.5g} {unit}")
     labels = tuple(HingeRef.of(h).label for h in hinges)
+    curve = pd.DataFrame(arch.curve)
+    if past is not None:
+        curve[BRANCH] = branches(curve["multiplier"].to_numpy())
     result = LoadPath(
         capacity=path.du if path.collapsed else float("nan"),
         first_loss=first_loss_multiplier(path, first_snap(loading.snaps)),
@@ -228,12 +102,14 @@ def dem_load_path(
         unit=unit,
         hinges=labels,
         kind=None,
-        curve=pd.DataFrame(arch.curve),
+        curve=curve,
         after_mm=after_mm,
         reach=path.lower,
         iterations=runner.total_steps,
         engine=DEM,
         **rigid_answer(case, after_mm, at_rest),
+        descent_end=str(past.end) if past is not None else "",
+        descent_hinges=past.hinges if past is not None else (),
     )
     defects = runner.scene.imperfections
     return result, runner.records, defects.table() if defects is not None else None

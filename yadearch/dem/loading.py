@@ -185,6 +185,11 @@ class EquilibriumPath:
         self._records.append(mark)
         self.last_equilibrium_hinges = [h.to_json() for h in hinges]
 
+    def back_to_accepted(self) -> None:
+        """The live scene at the last accepted state (the path's lower end)."""
+        self.arch.restore(self._accepted[-1])
+        self._at_accepted = True
+
     def settle(self) -> bool:
         """Relax the accepted state, support held and blocks in their motion, until every block is
         slower than `settle_speed_mm_per_s` and the unbalanced force below SETTLE_TOLERANCE_FACTOR x

@@ -45,12 +45,16 @@ class StaticCheck:
         found = self.equilibrium(delta, multiplier)
         return found.moved if found is not None else math.inf
 
+    def scene_u(self) -> np.ndarray:
+        """The scene's blocks as the static model's state vector (x, y, turn x thickness a block)."""
+        positions, rotations = body_states(self.scene)
+        return np.column_stack([positions[:, :2], rotations * self.loading.arch.length]).ravel()
+
     def equilibrium(self, delta: float, multiplier: float = 0.0) -> Equilibrium | None:
         """The stable equilibrium of the static model that the scene's state sits in (`distance`'s), None
         where neither Newton nor the descent from it ends in one."""
         loading = self.loading
-        positions, rotations = body_states(self.scene)
-        u0 = np.column_stack([positions[:, :2], rotations * loading.arch.length]).ravel()
+        u0 = self.scene_u()
         placed = loading.place(u0, delta)
         contacts = self.scene.contacts
         assert isinstance(contacts, JointElementContacts)  # `of` checks the contact model

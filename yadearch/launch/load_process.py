@@ -4,17 +4,21 @@ moved into OUT only once complete."""
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import subprocess
 import tempfile
+from dataclasses import asdict
 from pathlib import Path
 
 from yadearch.case.config import ArchCase
 from yadearch.case.plan import check_dem_load
 from yadearch.children import child_command, child_environment
+from yadearch.dem.load_simulate import NOT_TRACED
 from yadearch.errors import RunFailedError
 from yadearch.launch.process import check_yade_installed, exit_reason, run_child, swap_into_place
+from yadearch.model.load_control import DisplacementControl
 from yadearch.results.load_path import load_path_file, read_load_path
 from yadearch.results.rundir import CASE_FILE
 from yadearch.solve.load_path import LoadPath
@@ -23,10 +27,16 @@ LOAD_PATH_FILES = (".csv", ".log", ".json")  # the JSON last: it marks the resul
 
 
 def run_load_process(
-    case: ArchCase, out: Path, after_mm: float = 0.0, timeout_s: float | None = None, quiet: bool = True
+    case: ArchCase,
+    out: Path,
+    after_mm: float = 0.0,
+    timeout_s: float | None = None,
+    quiet: bool = True,
+    descent: DisplacementControl | None = None,
 ) -> LoadPath:
-    """The DEM's path of `case`'s live load after its support movement to `after_mm`, computed in a
-    child process and written to `out`; RunFailedError with the reason if it fails (its log is kept)."""
+    """The DEM's path of `case`'s live load after its support movement to `after_mm`, past its limit point
+    under `descent`'s displacement control (None: it stops there), computed in a child process and written
+    to `out`; RunFailedError with the reason if it fails (its log is kept)."""
     check_dem_load(case)
     check_yade_installed()
     out = Path(out)
@@ -35,7 +45,8 @@ def run_load_process(
     try:
         case_file = staging / CASE_FILE
         case_file.write_text(case.to_toml())
-        cmd = child_command("yadearch.dem.load_simulate", str(case_file), str(staging), repr(after_mm))
+        past = NOT_TRACED if descent is None else json.dumps(asdict(descent))
+        cmd = child_command("yadearch.dem.load_simulate", str(case_file), str(staging), repr(after_mm), past)
         env = child_environment(case.numerics.threads)
         try:
             returncode, stderr = run_child(cmd, env, timeout_s, quiet)

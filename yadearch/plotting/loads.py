@@ -17,6 +17,7 @@ HEIGHT_CM = 15.0
 INFLUENCE_HEIGHT_CM = 6.0
 RESIDUAL_HEIGHT_CM = 8.0  # its legend sits above the axes
 ENGINES_ROW_CM = 0.45  # the engines figure's height per case
+DESCENT_ROW_CM = 6.0  # the descent figure's height per row of panels
 ENGINE_LABELS = {"static": "static engine", "dem": "DEM (YADE)"}
 
 
@@ -128,4 +129,35 @@ def plot_engines(table: pd.DataFrame, tolerance: float, stem: Path) -> tuple[Pat
     ax.invert_yaxis()
     ax.set_xlabel("DEM \u2212 static capacity (%)")
     ax.legend(loc="lower right", frameon=False, ncols=3, bbox_to_anchor=(1.0, 1.0))
+    return save_figure(fig, stem)
+
+
+@house_style
+def plot_descent(paths: dict[str, tuple[LoadPath, LoadPath | None]], stem: Path) -> tuple[Path, Path]:
+    """STEM.pdf and .png: each case's load-displacement curve on the static engine (a line, past the peak
+    by arc length) and the DEM's states (markers, past the peak under displacement control), a panel each."""
+    columns = 2
+    rows = math.ceil(len(paths) / columns)
+    fig = new_figure(height_cm=DESCENT_ROW_CM * rows, width_cm=2 * COLUMN_CM)
+    for k, (name, (static, dem)) in enumerate(paths.items()):
+        ax = fig.add_subplot(rows, columns, k + 1)
+        curve = static.curve
+        ax.plot(
+            curve["load_displacement_mm"], curve["multiplier"], "-", lw=0.9, color="C0", label=ENGINE_LABELS["static"]
+        )
+        if dem is not None:
+            past = (
+                (dem.curve[BRANCH] == DESCENDING).to_numpy() if BRANCH in dem.curve else np.zeros(len(dem.curve), bool)
+            )
+            for mask, marker, label in ((~past, "o", "DEM, load control"), (past, "s", "DEM, past the peak")):
+                shown = dem.curve[mask]
+                ax.plot(shown["load_displacement_mm"], shown["multiplier"], marker, ms=2.5, mfc="none", mew=0.6,
+                        color="C3" if marker == "s" else "C1", label=label)  # fmt: skip
+        ax.set_title(name.replace("_", " "))
+        ax.set_xlabel("displacement of the load (mm)")
+        ax.set_ylabel(f"live load ({static.unit})")
+        ax.set_xlim(left=0.0)
+        ax.set_ylim(bottom=0.0)
+        if k == 0:
+            ax.legend(loc="lower center", frameon=False)
     return save_figure(fig, stem)

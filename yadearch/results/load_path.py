@@ -57,14 +57,14 @@ def load_path_json(result: LoadPath, case: ArchCase) -> dict[str, Any]:
         "rigid_hinges": result.rigid_hinges.split(),
         "rigid_note": result.rigid_note or None,
         "iterations" if result.engine == "static" else "steps": result.iterations,
-        **(_descent_json(result) if result.engine == "static" else {}),
+        **_descent_json(result),
         **({"increments_check": result.increments_check} if result.increments_check is not None else {}),
         "case": case.to_dict(),
     }
 
 
 def _descent_json(result: LoadPath) -> dict[str, Any]:
-    """The static engine's descending branch: why it ended and the hinges its last step turns."""
+    """The descending branch: why it ended (None: not traced) and the hinges its last step turns."""
     hinges = list(result.descent_hinges)
     return {"descending_branch_end": result.descent_end or None, "descending_branch_hinges": hinges}
 
@@ -158,7 +158,7 @@ def read_load_path(folder: Path, name: str) -> LoadPath:
 
 
 def read_curve(file: Path) -> pd.DataFrame:
-    """A load-displacement curve as written: every column a number but the static engine's `branch`."""
+    """A load-displacement curve as written: every column a number but `branch`."""
     curve = pd.read_csv(file)
     return curve.astype({c: float for c in curve.columns if c != BRANCH})
 

@@ -54,6 +54,18 @@ def fold_mode(arch: StaticArch, u: np.ndarray, stiffness: np.ndarray, failed: np
         _, mode = banded.softest_mode(stiffness)
         if float(arch.loads()[arch.free_dofs] @ mode) < 0.0:
             mode = -mode  # an eigenvector's sign: the way the weights go down
+    hinges, sliding = motion_hinges(arch, u, mode)
+    if sliding:
+        kind = CollapseKind.SLIDING
+    else:
+        kind = CollapseKind.MECHANISM if len(hinges) >= MECHANISM_HINGES else CollapseKind.SNAP_THROUGH
+    return FoldMode(banded.smallest_eigenvalue(stiffness), hinges, kind)
+
+
+def motion_hinges(arch: StaticArch, u: np.ndarray, mode: np.ndarray) -> tuple[tuple[Hinge, ...], bool]:
+    """The joints that turn when the free blocks at `u` move along `mode` (free dofs; MODE_HINGE_FRACTION
+    of the largest turn, probed at MODE_PROBE), and whether the motion slides the joints more than it
+    opens them: a collapse's hinges, or those of a branch's last step."""
     moved = u.copy()
     translations = mode.reshape(-1, BLOCK_DOFS)[:, 0:2]
     moved[arch.free_dofs] += MODE_PROBE / float(np.hypot(*translations.T).max() or 1.0) * mode
@@ -64,11 +76,7 @@ def fold_mode(arch: StaticArch, u: np.ndarray, stiffness: np.ndarray, failed: np
     turn = np.where(parted, np.abs(turn) * np.sign(open_now), turn)
     largest = float(np.abs(turn).max())
     hinges = tuple(hinges_at(turn / largest, MODE_HINGE_FRACTION)) if largest > 0.0 else ()
-    if float(np.abs(slide).max()) > float(np.abs(opening).max()):
-        kind = CollapseKind.SLIDING
-    else:
-        kind = CollapseKind.MECHANISM if len(hinges) >= MECHANISM_HINGES else CollapseKind.SNAP_THROUGH
-    return FoldMode(banded.smallest_eigenvalue(stiffness), hinges, kind)
+    return hinges, float(np.abs(slide).max()) > float(np.abs(opening).max())
 
 
 def _joint_motion(arch: StaticArch, u: np.ndarray, moved: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

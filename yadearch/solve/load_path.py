@@ -234,19 +234,24 @@ def load_curve(arch: StaticArch, start: StaticState, states: list[StaticState]) 
     own direction (mm; weighted by its forces, the work it does per unit multiplier), the tangent's
     smallest eigenvalue (N/m, zero at the limit point, negative past it) and its branch: `descending`
     past the row of the largest multiplier, `ascending` up to it."""
-    peak = int(np.argmax([s.lam for s in states])) if states else 0
     rows = [
         {
             "multiplier": s.lam,
             "load_displacement_mm": units.to_mm(live_work(arch, start.u, s.u)),
             "min_stiffness_N_per_m": s.min_stiffness,
-            BRANCH: DESCENDING if k > peak else ASCENDING,
+            BRANCH: branch,
         }
-        for k, s in enumerate(states)
+        for s, branch in zip(states, branches(np.array([s.lam for s in states])))
     ]
     import pandas as pd  # a live load's curve only: a support movement's run does not import pandas
 
     return pd.DataFrame(rows)
+
+
+def branches(multipliers: np.ndarray) -> list[str]:
+    """Each state's branch along a load path: `ascending` up to the largest multiplier, `descending` past it."""
+    peak = int(np.argmax(multipliers)) if len(multipliers) else 0
+    return [DESCENDING if k > peak else ASCENDING for k in range(len(multipliers))]
 
 
 def live_work(arch: StaticArch, u0: np.ndarray, u: np.ndarray) -> float:

@@ -62,12 +62,12 @@ def numerics_cases(cases: Iterable[tuple[ArchCase, float]]) -> list[tuple[ArchCa
             for setting, factor in NUMERICS_VARIANTS:
                 name = f"{case.name}_{setting.split('.')[-1]}_x{factor:g}"
                 varied.append(
-                    (case.with_overrides({setting: _setting(case, setting) * factor, "name": name}), after_mm)
+                    (case.with_overrides({setting: setting_value(case, setting) * factor, "name": name}), after_mm)
                 )
     return varied
 
 
-def _setting(case: ArchCase, dotted: str) -> float:
+def setting_value(case: ArchCase, dotted: str) -> float:
     """The value of a case's setting named as `with_overrides` names it."""
     holder: object = case
     for part in dotted.split("."):

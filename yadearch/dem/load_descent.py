@@ -1,0 +1,107 @@
+"""The descending branch of a live load's path in YADE (`yadearch loads --engine dem`): from the last
+stable state before the limit point the load is driven by its own displacement through a stiff spring
+(`model.load_control`), the anchor moved by steps each held to rest, as a displacement-controlled test
+follows a specimen's softening. It ends as the static engine's arc length does (`solve.descending`):
+fallen to a fraction of the capacity, a runaway, a state that does not come to rest, or MAX_STEPS."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from yadearch.dem.live_arch import hold_on
+from yadearch.dem.loaded_arch import LoadedArch
+from yadearch.dem.loading import HOLD_RETRIES, EquilibriumPath
+from yadearch.dem.static_check import StaticCheck
+from yadearch.model import units
+from yadearch.model.load_control import DisplacementControl
+from yadearch.solve.collapse_mode import motion_hinges
+from yadearch.solve.descending import MAX_STEPS, RISE_FRACTION, DescentEnd
+from yadearch.solve.stages import Stage, Verdict
+
+
+@dataclass(frozen=True)
+class DemDescent:
+    """How many states the DEM traced past its last stable one, why the branch ends, and the hinges its
+    last step turns."""
+
+    states: int
+    end: DescentEnd
+    hinges: tuple[str, ...]
+
+
+def dem_descent(
+    loading: EquilibriumPath, arch: LoadedArch, capacity: float, control: DisplacementControl
+) -> DemDescent:
+    """The branch past the limit point from `loading`'s last accepted state until the load falls to
+    `control.descend_to` x `capacity`; each state held at rest is recorded (`arch.curve`, the run's tables)."""
+    loading.back_to_accepted()
+    runner = arch.runner
+    origin = runner.positions()
+    spring = arch.drive_by_displacement(control.spring_ratio, units.mm(arch.case.support_speed_mm_per_s))
+    if spring is None:
+        return DemDescent(0, DescentEnd.LOST, ())
+    step = control.step_thickness_ratio * units.mm(arch.case.geometry.thickness_mm)
+    runaway = loading.runaway
+    check = runner.static_check
+    before = after = check.scene_u() if check is not None else None
+    states, end = 0, DescentEnd.STEPS
+    while states < MAX_STEPS:
+        spring.target = spring.anchor + step
+        arch.stage = Stage.INCREMENT
+        runner.drive(spring.reached)
+        arch.stage = Stage.RELAX
+        verdict = _held(arch, runaway - _moved(runner.positions(), origin))
+        if verdict == Verdict.RUNAWAY or _moved(runner.positions(), origin) >= runaway:
+            end = DescentEnd.RUNAWAY
+            break
+        if verdict != Verdict.STABLE:
+            end = DescentEnd.LOST
+            break
+        arch.stage = Stage.EQUILIBRIUM
+        arch.record_equilibrium()
+        states += 1
+        if check is not None:
+            before, after = after, check.scene_u()
+        load = arch.driver.multiplier
+        arch.log(
+            f"[{arch.case.name}] past the peak: {load:.4g} at {arch.curve[-1]['load_displacement_mm']:.3f} mm "
+            f"of the load's displacement (step {arch.total_steps})"
+        )
+        if load > (1.0 + RISE_FRACTION) * capacity:
+            end = DescentEnd.ROSE
+            break
+        if load <= control.descend_to * capacity:
+            end = DescentEnd.FALLEN
+            break
+    hinges = _turning(check, before, after) if states and check is not None else ()
+    return DemDescent(states, end, hinges)
+
+
+def _held(arch: LoadedArch, runaway: float) -> Verdict:
+    """The anchor held still: the blocks brought to rest from rest, the hold going on HOLD_RETRIES times
+    where it finds neither rest nor runaway, then settled by the path's settling test (`dem.live_arch.
+    hold_on`): the branch's states are read off the curve, so they are held as a bracket's lower end is."""
+    if runaway <= 0.0:
+        return Verdict.RUNAWAY
+    verdict = arch.hold(runaway=runaway)
+    for _ in range(HOLD_RETRIES):
+        if verdict != Verdict.TIMEOUT:
+            break
+        verdict = arch.hold(runaway=runaway, from_rest=False)
+    return hold_on(arch, runaway) if verdict == Verdict.STABLE else verdict
+
+
+def _moved(positions: np.ndarray, origin: np.ndarray) -> float:
+    """The largest block displacement from `origin` (m)."""
+    return float(np.linalg.norm(positions - origin, axis=1).max())
+
+
+def _turning(check: StaticCheck, before: np.ndarray | None, after: np.ndarray | None) -> tuple[str, ...]:
+    """The joints the last step turns (`solve.collapse_mode.motion_hinges`, as the static branch names them)."""
+    if before is None or after is None:
+        return ()
+    arch = check.loading.arch
+    hinges, _ = motion_hinges(arch, before, (after - before)[arch.free_dofs])
+    return tuple(f"{h.interface}{h.side}" for h in hinges)

@@ -1,0 +1,179 @@
+"""A live DEM scene whose path parameter is the live load's multiplier, the supports held (YADE layer):
+what the equilibrium path (`dem.loading`) drives for a load path, and the load-displacement curve it
+records; past the peak the load can be driven by its own displacement (`drive_by_displacement`)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from yadearch.case.config import ArchCase
+from yadearch.dem.live_load import LOAD_CALLBACK, LoadDriver
+from yadearch.dem.runner import Runner
+from yadearch.dem.scene import install_before_integrator
+from yadearch.model import units
+from yadearch.model.hinges import Hinge
+from yadearch.model.joint_tangent import BLOCK_DOFS
+from yadearch.model.load_control import LoadSpring
+from yadearch.model.loads import load_displacement
+from yadearch.model.movement import Movement
+from yadearch.solve.stages import Stage, Verdict
+
+NOT_RECORDED = (0, 0, 0)  # the mark of an equilibrium the run's tables do not keep
+
+
+class LoadedArch:
+    """A live DEM scene whose path parameter is the live load's multiplier, the supports held (the
+    `dem.loading.LiveArch` the equilibrium path drives); it records the load-displacement curve."""
+
+    def __init__(self, runner: Runner, loads: np.ndarray, full_rate: float, recorded: bool = True):
+        self.runner = runner
+        self.driver = LoadDriver(runner.scene, loads)
+        install_before_integrator(LOAD_CALLBACK, self.driver, self.driver.engine())
+        self.full_rate = full_rate  # multiplier per second of the largest increment's ramp
+        self.recorded = recorded  # its equilibria recorded in the run's tables (not while a run's load is set)
+        self.loads = loads
+        length = runner.scene.geometry.thickness  # the rotations' lever in the tangent (`model.stability`)
+        self.force_norm = float(np.linalg.norm(np.column_stack([loads[:, 0:2], loads[:, 2] / length])))
+        self._start = self.driver.contacts.poses.copy()
+        self.curve: list[dict[str, float]] = [self._point()]  # the path's start, then each equilibrium
+
+    # ---- the live scene, as the path sees it ----------------------------------------------
+    @property
+    def stage(self) -> Stage:
+        return self.runner.stage
+
+    @stage.setter
+    def stage(self, value: Stage) -> None:
+        self.runner.stage = value
+
+    @property
+    def case(self) -> ArchCase:
+        return self.runner.case
+
+    @property
+    def movement(self) -> Movement:
+        return self.runner.movement
+
+    @property
+    def recorder(self) -> LoadedArch:
+        return self
+
+    @property
+    def hold_move(self) -> float:
+        return self.runner.hold_move
+
+    @property
+    def total_steps(self) -> int:
+        return self.runner.total_steps
+
+    @property
+    def log(self) -> Callable[[str], None]:
+        return self.runner.log
+
+    def smallest_stiffness(self) -> float:
+        """The static tangent's smallest eigenvalue at the poses, the load's own stiffness included."""
+        return self.runner.smallest_stiffness(self.driver.turning())
+
+    def reach(self, increment: float) -> float:
+        """A load increment moves the blocks quasi-statically at most by its generalised force over the
+        last equilibrium's smallest stiffness (m; unbounded where that was not positive)."""
+        softest = self.curve[-1]["min_stiffness_N_per_m"]
+        return abs(increment) * self.force_norm / softest if softest > 0.0 else math.inf
+
+    def static_distance(self) -> float | None:
+        """How far the static model, the live load at the scene's multiplier, moves the blocks to a stable
+        equilibrium (m; inf: none there), None where it is not the scene's model (`dem.static_check`):
+        a hold is taken for an equilibrium only near one, as on a support's path."""
+        check = self.runner.static_check
+        return check.distance(self.runner.delta(), self.driver.multiplier) if check else None
+
+    def delta(self) -> float:
+        return self.driver.multiplier
+
+    def snapshot(self) -> dict[str, Any]:
+        return {"scene": self.runner.snapshot(), "multiplier": self.driver.multiplier}
+
+    def restore(self, snapshot: dict[str, Any]) -> None:
+        self.runner.restore(snapshot["scene"])
+        self.driver.set(snapshot["multiplier"])
+
+    def move_support(self, target: float, speed_fraction: float) -> None:
+        """Ramp the live load to `target` (the supports held) at `speed_fraction` of the full rate."""
+        self.driver.ramp_to(target, self.full_rate * speed_fraction)
+        self.runner.drive(self.driver.reached)
+
+    def drive_by_displacement(self, secant_ratio: float, rate: float) -> LoadSpring | None:
+        """From now on the load is driven by its displacement through a spring `secant_ratio` x the path's
+        secant stiffness here, its anchor moving at `rate` (m/s), placed so that nothing changes until
+        the anchor moves (`model.load_control`); None where the load has not moved its points yet."""
+        poses = self.driver.contacts.poses
+        moved = load_displacement(self.loads, self._start[:, 0:2], self._start[:, 2], poses[:, 0:2], poses[:, 2])
+        if not (moved > 0.0 and self.driver.multiplier > 0.0):
+            return None
+        stiffness = secant_ratio * self.driver.multiplier / moved
+        spring = LoadSpring.holding(
+            self.loads,
+            self._start[:, 0:2],
+            self._start[:, 2],
+            poses,
+            self.driver.multiplier,
+            stiffness=stiffness,
+            rate=rate,
+        )
+        self.driver.drive_by(spring)
+        return spring
+
+    def positions(self) -> np.ndarray:
+        """The voussoirs' centroids (n, 3; m) at the static model's stable equilibrium that the scene's state
+        sits in, the scene's own where there is none: the path's trend and snap test compare equilibria,
+        not holds within their force tolerance, which over the path's smallest stiffness near the peak is
+        the snap floor's order (docs/loads.md, "The DEM against the static engine")."""
+        scene = self.runner.positions()
+        check = self.runner.static_check
+        found = check.equilibrium(self.runner.delta(), self.driver.multiplier) if check else None
+        if found is None:
+            return scene
+        settled = scene.copy()
+        settled[:, 0:2] = found.u.reshape(-1, BLOCK_DOFS)[1:-1, 0:2]
+        return settled
+
+    def hold(
+        self,
+        runaway: float | None = None,
+        max_s: float | None = None,
+        from_rest: bool = True,
+        still_speed: float | None = None,
+        tolerance: float | None = None,
+    ) -> Verdict:
+        return self.runner.hold(runaway, max_s, from_rest, still_speed, tolerance)
+
+    # ---- records: the runner's, and a point of the curve for each equilibrium ------------
+    def record_equilibrium(self) -> tuple[tuple[int, int, int], list[Hinge]]:
+        self.curve.append(self._point())
+        return self.runner.recorder.record_equilibrium() if self.recorded else (NOT_RECORDED, [])
+
+    def _point(self) -> dict[str, float]:
+        """The load-displacement curve's point of the scene now (the static engine's columns, and the sums
+        of the supports' reactions, which balance the weights and the live load in equilibrium)."""
+        poses = self.driver.contacts.poses
+        moved = load_displacement(self.loads, self._start[:, 0:2], self._start[:, 2], poses[:, 0:2], poses[:, 2])
+        left, right = self.runner.recorder.reactions()
+        return {
+            "multiplier": self.driver.multiplier,
+            "load_displacement_mm": units.to_mm(moved),
+            "min_stiffness_N_per_m": self.smallest_stiffness(),
+            "horizontal_reactions_N": float(left[0] + right[0]),  # the supports on the arch: its loads' balance
+            "vertical_reactions_N": float(left[1] + right[1]),
+        }
+
+    def discard_since(self, mark: tuple[int, int, int]) -> None:
+        if self.recorded:
+            self.runner.recorder.discard_since(mark)
+        self.curve.pop()
+
+    def record_collapse(self) -> list[Hinge]:
+        return self.runner.recorder.record_collapse()
