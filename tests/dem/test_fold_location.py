@@ -62,6 +62,9 @@ class SnappingArch:
     def reach(self, increment: float) -> float:
         return abs(increment)
 
+    def slope(self) -> np.ndarray | None:
+        return None  # a support movement's: no prediction from one state
+
     def delta(self) -> float:
         return self.position
 
@@ -182,6 +185,48 @@ def test_a_branch_followed_without_snaps_keeps_to_its_trend():
     path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
     result = path.follow()
     assert path.snaps == [] and len(result.steps) == len(result.equilibria) < 25
+
+
+EARLY_FOLD = 0.0004  # a fold inside the first increment (1 mm), where a branch is known by one state
+
+
+class SoftFirstSnapArch(MoveSnappingArch):
+    """A live load's path on a soft arch: the blocks follow the parameter (CREEP), snap by SHORT_JUMP at
+    EARLY_FOLD during the first move, and a relaxation may move them as far as its increment allows over
+    a small stiffness (reach unbounded), so only a prediction from the first state tells the snap: the
+    static model's tangent (`slope`, CREEP), or none (`tangent` false)."""
+
+    def __init__(self, tangent: bool) -> None:
+        super().__init__()
+        self.tangent = tangent
+
+    def reach(self, increment: float) -> float:
+        return float("inf")
+
+    def slope(self) -> np.ndarray | None:
+        return np.array([[CREEP, 0.0, 0.0]]) if self.tangent else None
+
+    def move_support(self, target: float, speed_fraction: float) -> None:
+        SnappingArch.move_support(self, target, speed_fraction)
+        if self.branch == 0 and self.position >= EARLY_FOLD:
+            self.branch = 1
+            self.snaps_made_at.append(self.position)
+
+
+@pytest.mark.parametrize("tangent", [True, False])
+def test_a_snap_in_the_first_increment_is_told_by_the_tangent_at_the_first_state(tangent):
+    """Without a prediction from the first state the snap hides in the first increment (the DEM's live-load
+    path before the static model's tangent gave its trends a slope, docs/loads.md); with it, located."""
+    arch = SoftFirstSnapArch(tangent)
+    path = EquilibriumPath(arch, SETTINGS)  # type: ignore[arg-type]
+    path.follow()
+    if not tangent:
+        assert path.snaps == []
+        return
+    assert len(path.snaps) == 1
+    low, high = (x / 1e3 for x in path.snaps[0]["fold_mm"])
+    assert low < EARLY_FOLD <= high and high - low <= SETTINGS.tolerance
+    assert path.snaps[0]["move_mm"] == pytest.approx(SHORT_JUMP * 1e3, rel=1e-6)
 
 
 class CreepingAwayArch(SnappingArch):

@@ -10,7 +10,14 @@ import numpy as np
 from yadearch.case.sections import GeometryConfig
 from yadearch.errors import CaseError
 from yadearch.model import units
-from yadearch.model.geometry import ArchGeometry, FacePoints, arch_from_joints, arch_on_intrados, segmental_arch
+from yadearch.model.geometry import (
+    ArchGeometry,
+    FacePoints,
+    NotConvexError,
+    arch_from_joints,
+    arch_on_intrados,
+    segmental_arch,
+)
 from yadearch.model.intrados import (
     MAX_RISE_OVER_SPAN,
     HalfEllipse,
@@ -129,7 +136,7 @@ def measured_arch(g: GeometryConfig) -> ArchGeometry:
             faces=faces,
         )
     except ValueError as exc:
-        if "polygon" in str(exc):
+        if isinstance(exc, NotConvexError) and exc.face_corners:
             raise CaseError(
                 f"geometry.{' / '.join(FACE_POINTS)}: {exc} (each face's corners left to right, between its "
                 "joints' corners, the voussoir convex)"

@@ -20,6 +20,7 @@ from yadearch.model.joint_tangent import BLOCK_DOFS
 from yadearch.model.load_control import LoadSpring
 from yadearch.model.loads import load_displacement
 from yadearch.model.movement import Movement
+from yadearch.solve import banded
 from yadearch.solve.stages import Stage, Verdict
 
 NOT_RECORDED = (0, 0, 0)  # the mark of an equilibrium the run's tables do not keep
@@ -105,6 +106,24 @@ class LoadedArch:
         """Ramp the live load to `target` (the supports held) at `speed_fraction` of the full rate."""
         self.driver.ramp_to(target, self.full_rate * speed_fraction)
         self.runner.drive(self.driver.reached)
+
+    def slope(self) -> np.ndarray | None:
+        """How the voussoirs' centroids move per unit of the load's multiplier from the static model's
+        stable equilibrium the scene sits in (n, 3): its tangent's response K^-1 f, from which the static
+        engine predicts a branch known by one state; None without that equilibrium or where K is singular."""
+        check = self.runner.static_check
+        found = check.equilibrium(self.runner.delta(), self.driver.multiplier) if check else None
+        if check is None or found is None:
+            return None
+        try:
+            growth = banded.solve(found.stiffness, check.loading.arch.live_forces(found.u))
+        except (np.linalg.LinAlgError, ValueError):
+            return None
+        moved = np.zeros_like(found.u)
+        moved[check.loading.arch.free_dofs] = growth
+        slope = np.zeros((len(moved) // BLOCK_DOFS - 2, 3))
+        slope[:, 0:2] = moved.reshape(-1, BLOCK_DOFS)[1:-1, 0:2]
+        return slope
 
     def drive_by_displacement(self, secant_ratio: float, rate: float) -> LoadSpring | None:
         """From now on the load is driven by its displacement through a spring `secant_ratio` x the path's

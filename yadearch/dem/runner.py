@@ -212,6 +212,10 @@ class Runner:
         """A support increment moves the blocks it carries at most by as much (m)."""
         return abs(increment)
 
+    def slope(self) -> np.ndarray | None:
+        """None: a support's path known by one state does not predict (its reach does; docs/numerics.md)."""
+        return None
+
     @functools.cached_property
     def static_check(self) -> StaticCheck | None:
         """The scene's static model (`dem.static_check`), built on its first use: most holds never ask."""

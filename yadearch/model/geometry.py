@@ -153,6 +153,15 @@ class FacePoints:
     extrados: np.ndarray
 
 
+class NotConvexError(ValueError):
+    """A voussoir whose corners do not make a convex polygon; `face_corners`: it has corners between its
+    joints' (the faces' fault, or the joints')."""
+
+    def __init__(self, message: str, face_corners: bool):
+        super().__init__(message)
+        self.face_corners = face_corners
+
+
 def arch_from_joints(
     ends: list[tuple[np.ndarray, np.ndarray]],
     depth: float,
@@ -164,7 +173,7 @@ def arch_from_joints(
 ) -> ArchGeometry:
     """An arch from its joints' (intrados, extrados) end points, left to right: convex voussoirs between
     consecutive joints (quadrilaterals, or polygons with the `faces` corners of voussoir k = 1..n), on
-    two support blocks whose faces lie on the end joints (ValueError where a voussoir is not convex)."""
+    two support blocks whose faces lie on the end joints (NotConvexError where a voussoir is not convex)."""
     joints = []
     for k, (inner, outer) in enumerate(ends):
         along = (outer - inner) / np.linalg.norm(outer - inner)
@@ -177,7 +186,7 @@ def arch_from_joints(
         polygon = [a_in, *on_intrados, b_in, b_out, *on_extrados, a_out]
         if not is_convex_polygon(np.array(polygon)):
             shape = "quadrilateral" if face is None else f"polygon of {len(polygon)} corners"
-            raise ValueError(f"voussoir {len(blocks)} of this arch is not a convex {shape}")
+            raise NotConvexError(f"voussoir {len(blocks)} of this arch is not a convex {shape}", face is not None)
         blocks.append(prism(polygon, depth))
     blocks.append(_support_prism(*ends[-1], joints[-1].normal, support_length, depth))
     middles = np.array([(inner + outer) / 2.0 for inner, outer in ends])

@@ -47,6 +47,12 @@ class DescentRun:
     case: ArchCase
     control: DisplacementControl
     variant: str = DEFAULT
+    name: str = ""  # the case varied (its own name where "")
+
+    @property
+    def label(self) -> str:
+        """The case the run varies, by name."""
+        return self.name or self.case.name
 
 
 def descent_runs() -> list[DescentRun]:
@@ -58,7 +64,7 @@ def descent_runs() -> list[DescentRun]:
     varied = chosen[VARIED_CASE]
     for setting, factor in CONTROL_VARIANTS:
         changed = replace(control, **{setting: getattr(control, setting) * factor})
-        runs.append(DescentRun(varied, changed, f"{setting}_x{factor:g}"))
+        runs.append(DescentRun(varied, changed, f"{setting}_x{factor:g}", VARIED_CASE))
     for setting, factor in NUMERICS_VARIANTS:
         variant = f"{setting.split('.')[-1]}_x{factor:g}"
         changed_case = varied.with_overrides(
@@ -85,7 +91,7 @@ def descent_tables(
         except YadearchError as exc:
             return _row(run, static, None, pd.DataFrame(), str(exc)), pd.DataFrame(), None
         states = _states(run, static, dem)
-        log(f"{run.case.name} ({run.variant}): past the peak {len(states)} DEM states, ends {dem.descent_end}")
+        log(f"{run.label} ({run.variant}): past the peak {len(states)} DEM states, ends {dem.descent_end}")
         return _row(run, static, dem, states, ""), states, dem
 
     with ThreadPoolExecutor(max_workers=jobs) as pool:
@@ -110,7 +116,7 @@ def _states(run: DescentRun, static: LoadPath, dem: LoadPath) -> pd.DataFrame:
     on_static = static_branch_at(static.curve, displacement)
     return pd.DataFrame(
         {
-            "case": run.case.name,
+            "case": run.label,
             "variant": run.variant,
             "load_displacement_mm": displacement,
             "dem_load": past["multiplier"].to_numpy(),
@@ -138,7 +144,7 @@ def _row(run: DescentRun, static: LoadPath, dem: LoadPath | None, states: pd.Dat
     off = states["dem_over_static"].abs() if len(states) else pd.Series(dtype=float)
     compared = off.dropna()
     return {
-        "case": run.case.name,
+        "case": run.label,
         "variant": run.variant,
         "unit": static.unit,
         "static_capacity": static.capacity,
