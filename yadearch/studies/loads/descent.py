@@ -70,7 +70,7 @@ def descent_runs() -> list[DescentRun]:
         changed_case = varied.with_overrides(
             {setting: setting_value(varied, setting) * factor, "name": f"{varied.name}_{variant}"}
         )
-        runs.append(DescentRun(changed_case, control, variant))
+        runs.append(DescentRun(changed_case, control, variant, VARIED_CASE))
     return runs
 
 
