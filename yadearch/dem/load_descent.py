@@ -23,10 +23,8 @@ from yadearch.solve.stages import Stage, Verdict
 
 @dataclass(frozen=True)
 class DemDescent:
-    """How many states the DEM traced past its last stable one, why the branch ends, and the hinges its
-    last step turns."""
+    """Why the DEM's branch past the peak ends, and the hinges its last step turns."""
 
-    states: int
     end: DescentEnd
     hinges: tuple[str, ...]
 
@@ -41,7 +39,8 @@ def dem_descent(
     origin = runner.positions()
     spring = arch.drive_by_displacement(control.spring_ratio, units.mm(arch.case.support_speed_mm_per_s))
     if spring is None:
-        return DemDescent(0, DescentEnd.LOST, ())
+        arch.log(f"[{arch.case.name}] past the peak: the load has not moved its points, nothing to drive it by")
+        return DemDescent(DescentEnd.LOST, ())
     step = control.step_thickness_ratio * units.mm(arch.case.geometry.thickness_mm)
     runaway = loading.runaway
     check = runner.static_check
@@ -76,7 +75,7 @@ def dem_descent(
             end = DescentEnd.FALLEN
             break
     hinges = _turning(check, before, after) if states and check is not None else ()
-    return DemDescent(states, end, hinges)
+    return DemDescent(end, hinges)
 
 
 def _held(arch: LoadedArch, runaway: float) -> Verdict:
