@@ -13,7 +13,7 @@ from yadearch.analysis.blocks import case_geometry
 from yadearch.analysis.run import RunAnalysis
 from yadearch.atomic import write_atomically
 from yadearch.errors import CaseError, YadearchError
-from yadearch.plotting.house import house_style, new_figure
+from yadearch.plotting.house import ENGINE_NAMES, house_style, new_figure
 from yadearch.plotting.states import draw_state, drawing_limits, place_texts, run_states, state_view
 from yadearch.results.rundir import RunFolder
 from yadearch.results.states import LOAD_DIGITS
@@ -38,7 +38,8 @@ def check_format(fmt: str) -> None:
 
 def movie_title(run: RunFolder) -> str:
     """The run's name and engine and its answer: du, or on a live load's path the load at collapse."""
-    title = f"{run.summary.name or run.path.name}: {run.summary.engine} engine"
+    engine = ENGINE_NAMES.get(run.summary.engine, f"{run.summary.engine} engine")
+    title = f"{run.summary.name or run.path.name}: {engine}"
     answer = run.load_path
     if answer is None:
         return title + (f", du = {run.summary.du_mm:.2f} mm" if run.summary.du_mm is not None else ", no collapse")

@@ -14,6 +14,7 @@ from yadearch.model.hinges import PAPER_LABELS
 from yadearch.plotting.pdf_fonts import lean_pdf_fonts
 
 CM = 1 / 2.54  # inches
+ENGINE_NAMES = {"static": "static engine", "dem": "DEM (YADE)"}  # an engine as a figure's legend or title names it
 COLUMN_CM = 8.5
 PNG_DPI = 300
 MIN_TEXT_PT = 7  # the smallest text at print size: the smallest a journal prints legibly

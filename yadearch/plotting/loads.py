@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from yadearch.plotting.house import COLUMN_CM, house_style, new_figure, save_figure
+from yadearch.plotting.house import COLUMN_CM, ENGINE_NAMES, house_style, new_figure, save_figure
 from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath
 
 HEIGHT_CM = 15.0
@@ -18,7 +18,6 @@ INFLUENCE_HEIGHT_CM = 6.0
 RESIDUAL_HEIGHT_CM = 8.0  # its legend sits above the axes
 ENGINES_ROW_CM = 0.45  # the engines figure's height per case
 DESCENT_ROW_CM = 6.0  # the descent figure's height per row of panels
-ENGINE_LABELS = {"static": "static engine", "dem": "DEM (YADE)"}
 
 
 @house_style
@@ -71,7 +70,7 @@ def plot_influence(
 
 def _draw_influence(ax, influence: pd.DataFrame, arch_weight_N: float, engine: str = "rigid") -> None:
     """The influence line of the capacity, in N and (right axis) in arch weights."""
-    label = ENGINE_LABELS.get(engine, "rigid blocks")
+    label = ENGINE_NAMES.get(engine, "rigid blocks")
     ax.plot(influence["position_over_span"], influence["collapse_load_N"], "o-", ms=2.5, color="C0", label=label)
     if "rigid_load_N" in influence:  # an engine's line, with rigid blocks' for scale
         ax.plot(
@@ -95,7 +94,7 @@ def plot_load_path(path: LoadPath, stem: Path) -> tuple[Path, Path]:
     curve, unit, capacity, first_loss, rigid = path.curve, path.unit, path.capacity, path.first_loss, path.rigid
     past = (curve[BRANCH] == DESCENDING).to_numpy() if BRANCH in curve else np.zeros(len(curve), bool)
     up = curve[~past]
-    ax.plot(up["load_displacement_mm"], up["multiplier"], "o-", ms=2.0, color="C0", label=ENGINE_LABELS[path.engine])
+    ax.plot(up["load_displacement_mm"], up["multiplier"], "o-", ms=2.0, color="C0", label=ENGINE_NAMES[path.engine])
     if past.any():  # from the peak on, so that the two branches join
         down = curve.iloc[len(up) - 1 :]
         ax.plot(
@@ -143,7 +142,7 @@ def plot_descent(paths: dict[str, tuple[LoadPath, LoadPath | None]], stem: Path)
         ax = fig.add_subplot(rows, columns, k + 1)
         curve = static.curve
         ax.plot(
-            curve["load_displacement_mm"], curve["multiplier"], "-", lw=0.9, color="C0", label=ENGINE_LABELS["static"]
+            curve["load_displacement_mm"], curve["multiplier"], "-", lw=0.9, color="C0", label=ENGINE_NAMES["static"]
         )
         if dem is not None:
             past = (
