@@ -2,7 +2,8 @@
 stable state before the limit point the load is driven by its own displacement through a stiff spring
 (`model.load_control`), the anchor moved by steps each held to rest, as a displacement-controlled test
 follows a specimen's softening. It ends as the static engine's arc length does (`solve.descending`):
-fallen to a fraction of the capacity, a runaway, a state that does not come to rest, or MAX_STEPS."""
+fallen to a fraction of the capacity, risen past it, a runaway, a state that does not come to rest, or
+MAX_STEPS."""
 
 from __future__ import annotations
 
@@ -39,7 +40,7 @@ def dem_descent(
     origin = runner.positions()
     spring = arch.drive_by_displacement(control.spring_ratio, units.mm(arch.case.support_speed_mm_per_s))
     if spring is None:
-        arch.log(f"[{arch.case.name}] past the peak: the load has not moved its points, nothing to drive it by")
+        arch.log(f"[{arch.case.name}] past the peak: the last stable state carries no load that has moved its points")
         return DemDescent(DescentEnd.LOST, ())
     step = control.step_thickness_ratio * units.mm(arch.case.geometry.thickness_mm)
     runaway = loading.runaway
@@ -52,11 +53,10 @@ def dem_descent(
         runner.drive(spring.reached)
         arch.stage = Stage.RELAX
         verdict = _held(arch, runaway - _moved(runner.positions(), origin))
-        if verdict == Verdict.RUNAWAY or _moved(runner.positions(), origin) >= runaway:
-            end = DescentEnd.RUNAWAY
-            break
+        if verdict == Verdict.RUNAWAY and check is not None:  # the hinges of the step that ran away
+            before, after = after, check.scene_u()
         if verdict != Verdict.STABLE:
-            end = DescentEnd.LOST
+            end = DescentEnd.RUNAWAY if verdict == Verdict.RUNAWAY else DescentEnd.LOST
             break
         arch.stage = Stage.EQUILIBRIUM
         arch.record_equilibrium()
@@ -68,14 +68,23 @@ def dem_descent(
             f"[{arch.case.name}] past the peak: {load:.4g} at {arch.curve[-1]['load_displacement_mm']:.3f} mm "
             f"of the load's displacement (step {arch.total_steps})"
         )
-        if load > (1.0 + RISE_FRACTION) * capacity:
-            end = DescentEnd.ROSE
+        ended = _ended(load, capacity, control.descend_to, _moved(runner.positions(), origin) >= runaway)
+        if ended is not None:
+            end = ended
             break
-        if load <= control.descend_to * capacity:
-            end = DescentEnd.FALLEN
-            break
-    hinges = _turning(check, before, after) if states and check is not None else ()
+    loading.moved_on()
+    hinges = _turning(check, before, after) if check is not None and after is not before else ()
     return DemDescent(end, hinges)
+
+
+def _ended(load: float, capacity: float, descend_to: float, ran_away: bool) -> DescentEnd | None:
+    """Why the branch ends at a state held at `load`, in the static branch's order (`solve.descending`):
+    risen past the capacity, fallen to `descend_to` of it, a block `ran_away` from the last stable state."""
+    if load > (1.0 + RISE_FRACTION) * capacity:
+        return DescentEnd.ROSE
+    if load <= descend_to * capacity:
+        return DescentEnd.FALLEN
+    return DescentEnd.RUNAWAY if ran_away else None
 
 
 def _held(arch: LoadedArch, runaway: float) -> Verdict:

@@ -14,15 +14,16 @@ import pandas as pd
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import HELD_SETTINGS, held_multiplier, live_load
-from yadearch.dem.load_descent import dem_descent
+from yadearch.dem.load_descent import DemDescent, dem_descent
 from yadearch.dem.loaded_arch import LoadedArch
 from yadearch.dem.loading import EquilibriumPath
 from yadearch.dem.recorder import Records
 from yadearch.dem.runner import Runner
-from yadearch.errors import CaseError
+from yadearch.errors import CaseError, YadearchError
 from yadearch.model.load_control import DisplacementControl
 from yadearch.model.loads import UNITS, block_loads, live_load_points
 from yadearch.results.summary import HingeRef
+from yadearch.solve.descending import DescentEnd
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import (
     BRANCH,
@@ -86,7 +87,7 @@ def dem_load_path(
         _record_from_here(runner, lambda: (arch.driver.multiplier, unit), start)
         loading = EquilibriumPath(arch, settings, unit)
         path = loading.follow()
-        past = dem_descent(loading, arch, path.du, descent) if path.collapsed and descent is not None else None
+        past = _descent(loading, arch, path.du, descent) if path.collapsed and descent is not None else None
         hinges = loading.collapse_state(path.upper) if path.collapsed else []
     finally:
         runner.close()
@@ -113,6 +114,16 @@ def dem_load_path(
     )
     defects = runner.scene.imperfections
     return result, runner.records, defects.table() if defects is not None else None
+
+
+def _descent(loading: EquilibriumPath, arch: LoadedArch, capacity: float, control: DisplacementControl) -> DemDescent:
+    """The branch past the peak (`dem.load_descent`); one the run cannot go on with ends `lost`, logged,
+    and the capacity already bracketed stands."""
+    try:
+        return dem_descent(loading, arch, capacity, control)
+    except YadearchError as exc:
+        arch.log(f"[{arch.case.name}] past the peak: {exc}")
+        return DemDescent(DescentEnd.LOST, ())
 
 
 def _record_from_here(runner: Runner, load: Callable[[], tuple[float, str]], stage: Stage) -> None:

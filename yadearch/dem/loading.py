@@ -190,6 +190,10 @@ class EquilibriumPath:
         self.arch.restore(self._accepted[-1])
         self._at_accepted = True
 
+    def moved_on(self) -> None:
+        """The live scene has left the accepted state by other means (a branch driven past the peak)."""
+        self._at_accepted = False
+
     def settle(self) -> bool:
         """Relax the accepted state, support held and blocks in their motion, until every block is
         slower than `settle_speed_mm_per_s` and the unbalanced force below SETTLE_TOLERANCE_FACTOR x

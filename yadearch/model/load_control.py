@@ -7,7 +7,7 @@ control cannot reach (docs/loads.md, "The DEM past the peak")."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -52,7 +52,7 @@ class LoadSpring:
     stiffness: float
     anchor: float
     rate: float
-    target: float = 0.0
+    target: float = field(init=False, default=0.0)  # where the anchor is going (m): where it is, at first
 
     def __post_init__(self) -> None:
         if not (self.stiffness > 0.0 and self.rate > 0.0):
