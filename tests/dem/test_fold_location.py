@@ -62,8 +62,8 @@ class SnappingArch:
     def reach(self, increment: float) -> float:
         return abs(increment)
 
-    def slope(self) -> np.ndarray | None:
-        return None  # a support movement's: no prediction from one state
+    def branch_start(self) -> tuple[np.ndarray, np.ndarray | None]:
+        return self.positions(), None  # a support movement's: no prediction from one state
 
     def delta(self) -> float:
         return self.position
@@ -194,7 +194,7 @@ class SoftFirstSnapArch(MoveSnappingArch):
     """A live load's path on a soft arch: the blocks follow the parameter (CREEP), snap by SHORT_JUMP at
     EARLY_FOLD during the first move, and a relaxation may move them as far as its increment allows over
     a small stiffness (reach unbounded), so only a prediction from the first state tells the snap: the
-    static model's tangent (`slope`, CREEP), or none (`tangent` false)."""
+    static model's tangent (`branch_start`'s slope, CREEP), or none (`tangent` false)."""
 
     def __init__(self, tangent: bool) -> None:
         super().__init__()
@@ -203,8 +203,8 @@ class SoftFirstSnapArch(MoveSnappingArch):
     def reach(self, increment: float) -> float:
         return float("inf")
 
-    def slope(self) -> np.ndarray | None:
-        return np.array([[CREEP, 0.0, 0.0]]) if self.tangent else None
+    def branch_start(self) -> tuple[np.ndarray, np.ndarray | None]:
+        return self.positions(), np.array([[CREEP, 0.0, 0.0]]) if self.tangent else None
 
     def move_support(self, target: float, speed_fraction: float) -> None:
         SnappingArch.move_support(self, target, speed_fraction)

@@ -53,9 +53,9 @@ class LiveArch(Protocol):
 
     def reach(self, increment: float) -> float: ...  # how far a path increment moves a block quasi-statically (m)
 
-    # how the voussoirs' centroids move per unit of the path's parameter from the state now (n, 3), the
-    # static model's tangent, where a branch known by one state predicts from; None: it does not predict
-    def slope(self) -> np.ndarray | None: ...
+    # a branch's first state: the voussoirs' centroids as `positions` gives them, and how they move per unit
+    # of the path's parameter from there (n, 3; the static model's tangent; None: it does not predict)
+    def branch_start(self) -> tuple[np.ndarray, np.ndarray | None]: ...
 
     # the static model's move to a stable equilibrium (m; `dem.static_check`), None where it has none
     def static_distance(self) -> float | None: ...

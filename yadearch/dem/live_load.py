@@ -48,7 +48,12 @@ class LoadDriver:
     def set(self, multiplier: float) -> None:
         """Put the multiplier at `multiplier` at once (a restored state's), the spring let go."""
         self.spring = None
-        self.multiplier = self.target = multiplier
+        self.target = multiplier
+        self._put(multiplier)
+
+    def _put(self, multiplier: float) -> None:
+        """The multiplier now, and the load's forces the unbalanced force counts (`contacts.external`)."""
+        self.multiplier = multiplier
         self.contacts.external = multiplier * self.loads[:, 0:2]
 
     def reached(self) -> bool:
@@ -65,15 +70,14 @@ class LoadDriver:
 
         if self.spring is not None:
             self.spring.advance(O.dt)
-            self.multiplier = self.target = self.spring.multiplier(self.contacts.poses)
-            self.contacts.external = self.multiplier * self.loads[:, 0:2]
+            self.target = self.spring.multiplier(self.contacts.poses)
+            self._put(self.target)
         elif self.multiplier != self.target:
             change = self.rate * O.dt
             if abs(self.target - self.multiplier) <= change:
-                self.multiplier = self.target
+                self._put(self.target)
             else:
-                self.multiplier += change if self.target > self.multiplier else -change
-            self.contacts.external = self.multiplier * self.loads[:, 0:2]
+                self._put(self.multiplier + (change if self.target > self.multiplier else -change))
         if self.multiplier != 0.0:
             add_block_loads(self.body_ids, self.multiplier * self._loaded_loads, self.contacts.poses[self.loaded, 2])
 

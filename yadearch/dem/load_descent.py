@@ -18,7 +18,7 @@ from yadearch.dem.static_check import StaticCheck
 from yadearch.model import units
 from yadearch.model.load_control import DisplacementControl
 from yadearch.solve.collapse_mode import motion_hinges
-from yadearch.solve.descending import MAX_STEPS, RISE_FRACTION, DescentEnd
+from yadearch.solve.descending import MAX_STEPS, DescentEnd, branch_end
 from yadearch.solve.stages import Stage, Verdict
 
 
@@ -68,23 +68,13 @@ def dem_descent(
             f"[{arch.case.name}] past the peak: {load:.4g} at {arch.curve[-1]['load_displacement_mm']:.3f} mm "
             f"of the load's displacement (step {arch.total_steps})"
         )
-        ended = _ended(load, capacity, control.descend_to, _moved(runner.positions(), origin) >= runaway)
+        ended = branch_end(load, capacity, control.descend_to, _moved(runner.positions(), origin) >= runaway)
         if ended is not None:
             end = ended
             break
     loading.moved_on()
     hinges = _turning(check, before, after) if check is not None and after is not before else ()
     return DemDescent(end, hinges)
-
-
-def _ended(load: float, capacity: float, descend_to: float, ran_away: bool) -> DescentEnd | None:
-    """Why the branch ends at a state held at `load`, in the static branch's order (`solve.descending`):
-    risen past the capacity, fallen to `descend_to` of it, a block `ran_away` from the last stable state."""
-    if load > (1.0 + RISE_FRACTION) * capacity:
-        return DescentEnd.ROSE
-    if load <= descend_to * capacity:
-        return DescentEnd.FALLEN
-    return DescentEnd.RUNAWAY if ran_away else None
 
 
 def _held(arch: LoadedArch, runaway: float) -> Verdict:
@@ -112,4 +102,4 @@ def _turning(check: StaticCheck, before: np.ndarray | None, after: np.ndarray | 
         return ()
     arch = check.loading.arch
     hinges, _ = motion_hinges(arch, before, (after - before)[arch.free_dofs])
-    return tuple(f"{h.interface}{h.side}" for h in hinges)
+    return tuple(h.label for h in hinges)

@@ -21,6 +21,7 @@ from yadearch.model.load_control import LoadSpring
 from yadearch.model.loads import load_displacement
 from yadearch.model.movement import Movement
 from yadearch.solve import banded
+from yadearch.solve.newton import Equilibrium
 from yadearch.solve.stages import Stage, Verdict
 
 NOT_RECORDED = (0, 0, 0)  # the mark of an equilibrium the run's tables do not keep
@@ -107,30 +108,31 @@ class LoadedArch:
         self.driver.ramp_to(target, self.full_rate * speed_fraction)
         self.runner.drive(self.driver.reached)
 
-    def slope(self) -> np.ndarray | None:
-        """How the voussoirs' centroids move per unit of the load's multiplier from the static model's
-        stable equilibrium the scene sits in (n, 3): its tangent's response K^-1 f, from which the static
-        engine predicts a branch known by one state; None without that equilibrium or where K is singular."""
+    def branch_start(self) -> tuple[np.ndarray, np.ndarray | None]:
+        """A branch's first state: the centroids as `positions` gives them, and how they move per unit of
+        the load's multiplier from the static equilibrium the scene sits in (n, 3), its tangent's
+        response K^-1 f, from which the static engine predicts a branch known by one state; no slope
+        without that equilibrium or where K is singular. One static solve serves both."""
+        found = self._equilibrium()
+        if found is None:
+            return self.runner.positions(), None
         check = self.runner.static_check
-        found = check.equilibrium(self.runner.delta(), self.driver.multiplier) if check else None
-        if check is None or found is None:
-            return None
+        assert check is not None  # an equilibrium is the check's
+        arch = check.loading.arch
         try:
-            growth = banded.solve(found.stiffness, check.loading.arch.live_forces(found.u))
+            growth = banded.solve(found.stiffness, arch.live_forces(found.u))
         except (np.linalg.LinAlgError, ValueError):
-            return None
+            return self._settled(found), None
         moved = np.zeros_like(found.u)
-        moved[check.loading.arch.free_dofs] = growth
-        slope = np.zeros((len(moved) // BLOCK_DOFS - 2, 3))
-        slope[:, 0:2] = moved.reshape(-1, BLOCK_DOFS)[1:-1, 0:2]
-        return slope
+        moved[arch.free_dofs] = growth
+        return self._settled(found), _centroid_rows(moved, np.zeros((len(moved) // BLOCK_DOFS - 2, 3)))
 
     def drive_by_displacement(self, secant_ratio: float, rate: float) -> LoadSpring | None:
         """From now on the load is driven by its displacement through a spring `secant_ratio` x the path's
         secant stiffness here, its anchor moving at `rate` (m/s), placed so that nothing changes until
         the anchor moves (`model.load_control`); None where the load has not moved its points yet."""
         poses = self.driver.contacts.poses
-        moved = load_displacement(self.loads, self._start[:, 0:2], self._start[:, 2], poses[:, 0:2], poses[:, 2])
+        moved = self._load_displacement(poses)
         if not (moved > 0.0 and self.driver.multiplier > 0.0):
             return None
         stiffness = secant_ratio * self.driver.multiplier / moved
@@ -151,14 +153,17 @@ class LoadedArch:
         sits in, the scene's own where there is none: the path's trend and snap test compare equilibria,
         not holds within their force tolerance, which over the path's smallest stiffness near the peak is
         the snap floor's order (docs/loads.md, "The DEM against the static engine")."""
-        scene = self.runner.positions()
+        found = self._equilibrium()
+        return self.runner.positions() if found is None else self._settled(found)
+
+    def _equilibrium(self) -> Equilibrium | None:
+        """The static model's stable equilibrium the scene sits in, with the live load at its multiplier."""
         check = self.runner.static_check
-        found = check.equilibrium(self.runner.delta(), self.driver.multiplier) if check else None
-        if found is None:
-            return scene
-        settled = scene.copy()
-        settled[:, 0:2] = found.u.reshape(-1, BLOCK_DOFS)[1:-1, 0:2]
-        return settled
+        return check.equilibrium(self.runner.delta(), self.driver.multiplier) if check else None
+
+    def _settled(self, found: Equilibrium) -> np.ndarray:
+        """The scene's centroids (n, 3) moved to the equilibrium `found`."""
+        return _centroid_rows(found.u, self.runner.positions().copy())
 
     def hold(
         self,
@@ -178,8 +183,7 @@ class LoadedArch:
     def _point(self) -> dict[str, float]:
         """The load-displacement curve's point of the scene now (the static engine's columns, and the sums
         of the supports' reactions, which balance the weights and the live load in equilibrium)."""
-        poses = self.driver.contacts.poses
-        moved = load_displacement(self.loads, self._start[:, 0:2], self._start[:, 2], poses[:, 0:2], poses[:, 2])
+        moved = self._load_displacement(self.driver.contacts.poses)
         left, right = self.runner.recorder.reactions()
         return {
             "multiplier": self.driver.multiplier,
@@ -189,6 +193,10 @@ class LoadedArch:
             "vertical_reactions_N": float(left[1] + right[1]),
         }
 
+    def _load_displacement(self, poses: np.ndarray) -> float:
+        """The live load's displacement along its forces from the path's start to `poses` (m)."""
+        return load_displacement(self.loads, self._start[:, 0:2], self._start[:, 2], poses[:, 0:2], poses[:, 2])
+
     def discard_since(self, mark: tuple[int, int, int]) -> None:
         if self.recorded:
             self.runner.recorder.discard_since(mark)
@@ -196,3 +204,9 @@ class LoadedArch:
 
     def record_collapse(self) -> list[Hinge]:
         return self.runner.recorder.record_collapse()
+
+
+def _centroid_rows(u: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """`rows` (n, 3: the voussoirs' centroids) with x and y from the state vector `u` (the supports too)."""
+    rows[:, 0:2] = u.reshape(-1, BLOCK_DOFS)[1:-1, 0:2]
+    return rows

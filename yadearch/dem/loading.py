@@ -86,7 +86,7 @@ class EquilibriumPath:
             landing = self._landing(trend, low, high)
             if landing is not None:
                 self._record_snap(low, high, landing)
-            start, base, trend = high, self.arch.snapshot(), Trend.start(high, self.arch.positions(), self.arch.slope())
+            start, base, trend = high, self.arch.snapshot(), Trend.start(high, *self.arch.branch_start())
             if high >= target:
                 break
             verdict = self._relax_at(start, target)
@@ -242,9 +242,7 @@ class EquilibriumPath:
             self._failures[target] = self.arch.snapshot()
         elif fallen > self.snap_floor:
             self._record_snap(self._start, target, fallen)
-        self._trial_trend = Trend.start(
-            target, self.arch.positions(), self.arch.slope()
-        )  # a branch reached by a slow failure
+        self._trial_trend = Trend.start(target, *self.arch.branch_start())  # a branch reached by a slow failure
         return verdict
 
     def discard(self) -> None:
@@ -267,7 +265,7 @@ class EquilibriumPath:
         """Load by increments relaxed to equilibrium until du is bracketed (`solve.path`), from the
         scene's equilibrium at support displacement `start` (m)."""
         self._accepted, self._at_accepted = [self.arch.snapshot()], True
-        self._trends = [Trend.start(start, self.arch.positions(), self.arch.slope())]
+        self._trends = [Trend.start(start, *self.arch.branch_start())]
         return follow_path(self, self.settings, on_step=self._log_increment, start=start)
 
     def _log_increment(self, step: PathStep) -> None:

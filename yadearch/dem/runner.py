@@ -212,9 +212,9 @@ class Runner:
         """A support increment moves the blocks it carries at most by as much (m)."""
         return abs(increment)
 
-    def slope(self) -> np.ndarray | None:
-        """None: a support's path known by one state does not predict (its reach does; docs/numerics.md)."""
-        return None
+    def branch_start(self) -> tuple[np.ndarray, None]:
+        """The centroids now, no slope: a support's path does not predict from one state (docs/numerics.md)."""
+        return self.positions(), None
 
     @functools.cached_property
     def static_check(self) -> StaticCheck | None:

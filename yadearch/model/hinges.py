@@ -23,6 +23,11 @@ class Hinge:
     side: str
     rotation: float
 
+    @property
+    def label(self) -> str:
+        """The hinge as the paper names it: its peak interface and pivot side ("12I")."""
+        return f"{self.interface}{self.side}"
+
     def to_json(self) -> dict:
         return {
             "interface": self.interface,

@@ -40,7 +40,7 @@ class FoldMode:
     @property
     def labels(self) -> list[str]:
         """The mode's hinges as "12I"."""
-        return [f"{h.interface}{h.side}" for h in self.hinges]
+        return [h.label for h in self.hinges]
 
 
 def fold_mode(arch: StaticArch, u: np.ndarray, stiffness: np.ndarray, failed: np.ndarray | None = None) -> FoldMode:

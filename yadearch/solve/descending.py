@@ -101,15 +101,22 @@ def descend(loading: StaticLoading, capacity: float, descend_to: float = DESCEND
         )  # fmt: skip
         descent.states.append(reached)
         history = (history + [(done + float(np.linalg.norm((u - last.u)[free])), reached)])[-PREDICTOR_POINTS:]
-        if lam > (1.0 + RISE_FRACTION) * capacity:
-            return _ended(descent, DescentEnd.ROSE, loading)
-        if lam <= descend_to * capacity:
-            return _ended(descent, DescentEnd.FALLEN, loading)
-        if largest_move(u, stable.u) >= loading.runaway:
-            return _ended(descent, DescentEnd.RUNAWAY, loading)
+        end = branch_end(lam, capacity, descend_to, largest_move(u, stable.u) >= loading.runaway)
+        if end is not None:
+            return _ended(descent, end, loading)
         if iterations <= QUICK_ITERATIONS:
             step = min(step * STEP_GROWTH, LARGEST_STEP * thickness)
     return _ended(descent, DescentEnd.STEPS, loading)
+
+
+def branch_end(load: float, capacity: float, descend_to: float, ran_away: bool) -> DescentEnd | None:
+    """Why a branch past the peak ends at a state of multiplier `load`, in this order: risen past the
+    `capacity`, fallen to `descend_to` x it, a block `ran_away` from the last stable state; None: on."""
+    if load > (1.0 + RISE_FRACTION) * capacity:
+        return DescentEnd.ROSE
+    if load <= descend_to * capacity:
+        return DescentEnd.FALLEN
+    return DescentEnd.RUNAWAY if ran_away else None
 
 
 def _ended(descent: Descent, end: DescentEnd, loading: StaticLoading) -> Descent:
