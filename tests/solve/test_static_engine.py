@@ -22,6 +22,7 @@ from yadearch.model.joint_law import JointLaw, joint_forces
 from yadearch.model.joint_table import joint_table
 from yadearch.model.joint_tangent import joint_tangent
 from yadearch.model.movement import Movement
+from yadearch.model.passive_fill import SPRING_COLUMNS
 from yadearch.results.rundir import is_complete, read_run, read_summary
 from yadearch.results.summary import HingeRef
 from yadearch.solve.limit import limit_analysis
@@ -244,6 +245,7 @@ def _inclines(alpha: float) -> StaticArch:
         None,
         np.zeros((len(weight), 4)),  # no live load
         np.zeros((len(weight), 4)),  # no backfill
+        np.zeros((0, SPRING_COLUMNS)),  # nor its passive resistance
     )
 
 

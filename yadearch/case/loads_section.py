@@ -173,3 +173,29 @@ class LoadsConfig:
             "predates": 0.0,
         },
     )
+    fill_passive_coefficient: float = field(
+        default=0.0,
+        metadata={
+            **number_meta(
+                0,
+                50,
+                doc="the backfill's passive coefficient Kp: where the arch sways into the fill, the fill pushes "
+                "back up to Kp x its unit weight x depth (RING's passive restraint, e.g. a third of "
+                "(1 + sin(phi)) / (1 - sin(phi)) mobilised); 0: none, else larger than fill_lateral_coefficient",
+            ),
+            "predates": 0.0,
+        },
+    )
+    fill_passive_displacement_mm: float = field(
+        default=1.0,
+        metadata={
+            **number_meta(
+                0,
+                1e4,
+                low_open=True,
+                doc="how far a face moves into the fill to mobilise its whole passive pressure (mm): the "
+                "static engine's and the DEM's fill spring (the rigid analysis mobilises it at once)",
+            ),
+            "predates": 1.0,
+        },
+    )

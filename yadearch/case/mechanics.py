@@ -252,10 +252,23 @@ def further_loads(case: ArchCase, span: float) -> tuple[tuple[float, float], ...
 
 def backfill(case: ArchCase) -> Backfill:
     """The case's backfill in SI (model.backfill): its depth over the crown's extrados, unit weight
-    (density x g) and lateral pressure coefficient."""
+    (density x g), lateral and passive pressure coefficients; CaseError for a passive coefficient that
+    is not above the lateral one or that has no fill to push back."""
     loads = case.loads
+    passive = loads.fill_passive_coefficient
+    if passive > 0.0 and not passive > loads.fill_lateral_coefficient:
+        raise CaseError(
+            f"loads.fill_passive_coefficient must be 0 or larger than fill_lateral_coefficient "
+            f"({loads.fill_lateral_coefficient:g}), got {passive:g}"
+        )
+    if passive > 0.0 and not loads.fill_depth_mm > 0.0:
+        raise CaseError(
+            f"loads.fill_passive_coefficient = {passive:g} needs a fill to push back: loads.fill_depth_mm > 0, got 0"
+        )
     return Backfill(
         depth=units.mm(loads.fill_depth_mm),
         unit_weight=units.density(loads.fill_density_g_per_cm3) * case.loading.gravity_m_per_s2,
         lateral_coefficient=loads.fill_lateral_coefficient,
+        passive_coefficient=passive,
+        passive_displacement=units.mm(loads.fill_passive_displacement_mm),
     )

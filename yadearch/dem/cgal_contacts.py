@@ -10,6 +10,7 @@ import numpy as np
 from yadearch.case.mechanics import ContactStiffness
 from yadearch.dem.shear import PerContactShear
 from yadearch.model.geometry import ArchGeometry
+from yadearch.model.passive_fill import SpringTangent
 
 # Joint j sets bit j % JOINT_MASK_BITS of the collision masks of its two blocks, so the collider only
 # pairs blocks sharing a joint (or JOINT_MASK_BITS - 1 or more joints apart, which never touch).
@@ -78,7 +79,7 @@ class CgalContacts:
         """Not tracked by this model: NaN for every joint."""
         return np.full(len(self.geometry.joints), np.nan)
 
-    def smallest_stiffness(self, turning: np.ndarray | None = None) -> float:
+    def smallest_stiffness(self, turning: np.ndarray | None = None, springs: SpringTangent | None = None) -> float:
         """Not available from CGAL's contacts (the joint elements compute it): NaN."""
         return float("nan")
 

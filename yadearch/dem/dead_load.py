@@ -1,7 +1,8 @@
 """The dead loads on the DEM's blocks (YADE layer): the backfill's equivalent loads (`model.backfill`),
-held with the weights. They grow with gravity while the self-weight ramps and are applied every step at
-their points on the blocks with the arms turned by the blocks' rotations, as the static engine takes
-them (gravity x the dead loads, `solve.statics`)."""
+held with the weights, and its passive resistance (`model.passive_fill`). They grow with gravity while
+the self-weight ramps and are applied every step at their points on the blocks with the arms turned by
+the blocks' rotations, the passive springs from the blocks' poses that step, as the static engine
+takes them (gravity x the dead loads, `solve.statics`)."""
 
 from __future__ import annotations
 
@@ -10,11 +11,12 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import backfill
 from yadearch.dem.joint_elements import JointElementContacts
-from yadearch.dem.live_load import add_block_loads
+from yadearch.dem.live_load import add_block_loads, add_block_pushes
 from yadearch.dem.scene import CALLBACK_NAME, ArchScene, install_before_integrator
 from yadearch.errors import CaseError
 from yadearch.model.backfill import backfill_points
 from yadearch.model.loads import block_loads, turning_stiffness
+from yadearch.model.passive_fill import block_forces, block_stiffness, passive_springs, scaled
 
 DEAD_LOAD_LABEL = "yadearch_dead_load"
 DEAD_CALLBACK = f"{CALLBACK_NAME}_dead"  # the driver's name in __main__, which its PyRunner calls
@@ -22,9 +24,10 @@ DEAD_CALLBACK = f"{CALLBACK_NAME}_dead"  # the driver's name in __main__, which 
 
 class DeadLoadDriver:
     """Applies `loads` (n_blocks, 4: force x, force y and the arm terms m0, d0 at full gravity,
-    `model.loads.block_loads`) x gravity's share of `full_gravity` (m/s^2) in the scene now."""
+    `model.loads.block_loads`) and the fill's `passive` springs (at full gravity) x gravity's share of
+    `full_gravity` (m/s^2) in the scene now."""
 
-    def __init__(self, scene: ArchScene, loads: np.ndarray, full_gravity: float):
+    def __init__(self, scene: ArchScene, loads: np.ndarray, full_gravity: float, passive: np.ndarray):
         if not isinstance(scene.contacts, JointElementContacts):
             raise CaseError(
                 "loads.fill_depth_mm: backfill in the DEM needs the joint elements (numerics.contact_model = 'joint')"
@@ -36,6 +39,9 @@ class DeadLoadDriver:
         self.loaded = np.flatnonzero(np.any(loads != 0.0, axis=1))
         self._loaded_loads = loads[self.loaded]  # read every step
         self.body_ids = [scene.body_ids[b] for b in self.loaded]
+        self.passive = passive
+        self.pushed = np.unique(passive[:, 0].astype(int))  # the blocks the passive springs act on
+        self.pushed_ids = [scene.body_ids[b] for b in self.pushed]
         self.share = 0.0  # gravity's share of its full value at the last step
 
     def install(self) -> None:
@@ -48,15 +54,26 @@ class DeadLoadDriver:
     def step(self) -> None:
         """This step's share of the loads: forces and turned moments added to the blocks."""
         share = -float(self.scene.newton.gravity[1]) / self.full_gravity
-        if share != self.share:
+        if share != self.share or len(self.pushed):
             self.share = share
             self.contacts.dead_external = share * self.loads[:, 0:2]
-        if share != 0.0:
-            add_block_loads(self.body_ids, share * self._loaded_loads, self.contacts.poses[self.loaded, 2])
+        if share == 0.0:
+            return
+        poses = self.contacts.poses
+        add_block_loads(self.body_ids, share * self._loaded_loads, poses[self.loaded, 2])
+        if len(self.pushed):
+            pushes = block_forces(scaled(self.passive, share), poses)[self.pushed]
+            self.contacts.dead_external[self.pushed, 0] += pushes[:, 0]
+            add_block_pushes(self.pushed_ids, pushes)
 
     def turning(self) -> np.ndarray:
         """The loads' own rotational stiffness on each block now (N m/rad), for the stability test."""
         return self.share * turning_stiffness(self.loads, self.contacts.poses[:, 2])
+
+    def passive_stiffness(self, poses: np.ndarray, lever: float) -> np.ndarray | None:
+        """The passive springs' tangent at `poses` on every block's x, y and rotation x `lever` (N/m; None
+        without springs), for the stability test."""
+        return block_stiffness(scaled(self.passive, self.share), poses, lever) if len(self.pushed) else None
 
     @property
     def vertical(self) -> float:
@@ -71,6 +88,7 @@ def install_dead_loads(scene: ArchScene, case: ArchCase) -> DeadLoadDriver | Non
         return None
     centroids = scene.pos0[:, 0:2]
     loads = block_loads(backfill_points(scene.geometry, centroids, fill), centroids, len(scene.body_ids))
-    driver = DeadLoadDriver(scene, loads, case.loading.gravity_m_per_s2)
+    passive = passive_springs(scene.geometry, centroids, fill)
+    driver = DeadLoadDriver(scene, loads, case.loading.gravity_m_per_s2, passive)
     driver.install()
     return driver

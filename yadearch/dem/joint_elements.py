@@ -14,6 +14,7 @@ from yadearch.model.imperfections import GapProfiles
 from yadearch.model.joint_law import JointForces, JointLaw, joint_forces, unbalanced_force
 from yadearch.model.joint_table import joint_table
 from yadearch.model.joints import pair_rotation
+from yadearch.model.passive_fill import SpringTangent
 from yadearch.model.stability import smallest_stiffness, tangent_stiffness
 
 
@@ -112,15 +113,21 @@ class JointElementContacts:
         forces = self.last if self.last is not None else self._evaluate()
         return forces.point, forces.normal_force, forces.shear_force
 
-    def smallest_stiffness(self, turning: np.ndarray | None = None) -> float:
+    def smallest_stiffness(self, turning: np.ndarray | None = None, springs: SpringTangent | None = None) -> float:
         """The smallest eigenvalue of the free blocks' tangent stiffness now (N/m; `model.stability`), with
-        the loads' own rotational stiffness `turning` (n_blocks, N m/rad; `model.loads.turning_stiffness`)."""
+        the loads' own rotational stiffness `turning` (n_blocks, N m/rad; `model.loads.turning_stiffness`)
+        and the tangent of springs on the blocks (`springs(poses, length)`: every block's x, y and rotation
+        x length, N/m; None: none)."""
         poses = self.read_poses()
         length = self.geometry.thickness
         stiffness = tangent_stiffness(self.table, self.law, poses[:, 0:2], poses[:, 2], self.shear, self._free, length)
         if turning is not None:
             rotations = np.arange(2, stiffness.shape[0], 3)  # each free block's x, y, rotation x length
             stiffness[rotations, rotations] += turning[self._free] / length**2
+        extra = springs(poses, length) if springs is not None else None
+        if extra is not None:
+            free = np.flatnonzero(np.repeat(self._free, 3))
+            stiffness += extra[np.ix_(free, free)]
         return smallest_stiffness(stiffness)
 
     @property

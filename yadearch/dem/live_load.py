@@ -86,6 +86,16 @@ class LoadDriver:
         return self.multiplier * turning_stiffness(self.loads, self.contacts.poses[:, 2])
 
 
+def add_block_pushes(body_ids: list[int], pushes: np.ndarray) -> None:
+    """Add `pushes` (k, 3: force x, force y and moment about the centroid) to the bodies `body_ids`."""
+    from yade import O
+
+    add_force, add_torque = O.forces.addF, O.forces.addT
+    for body_id, (fx, fy, tz) in zip(body_ids, pushes.tolist()):
+        add_force(body_id, (fx, fy, 0.0))
+        add_torque(body_id, (0.0, 0.0, tz))
+
+
 def add_block_loads(body_ids: list[int], loads: np.ndarray, turn: np.ndarray) -> None:
     """Add `loads` (k, 4; `model.loads.block_loads`) to the bodies `body_ids` in YADE's force container:
     the forces, and their moments about the centroids with the arms turned by the blocks' rotations `turn`."""

@@ -206,7 +206,8 @@ class Runner:
         or the one the run holds, `recorder.turning`)."""
         held, dead = self.recorder.turning, self.dead_loads
         parts = [t for t in (live, held() if held else None, dead.turning() if dead else None) if t is not None]
-        return self.scene.contacts.smallest_stiffness(np.sum(parts, axis=0) if parts else None)
+        springs = dead.passive_stiffness if dead else None
+        return self.scene.contacts.smallest_stiffness(np.sum(parts, axis=0) if parts else None, springs)
 
     def reach(self, increment: float) -> float:
         """A support increment moves the blocks it carries at most by as much (m)."""

@@ -4,7 +4,8 @@ each voussoir carries the weight of the fill column standing on its extrados fac
 pressure K x unit weight x depth below the surface acting horizontally on the face's vertical
 projection, toward the arch (K the at-rest or active coefficient the user chooses, e.g. 1 - sin(phi)
 at rest). Both intensities grow linearly along a face, so both resultants act at the same point of
-it. Fill beyond the springings stands on the supports (docs/loads.md, "Backfill")."""
+it. Fill beyond the springings stands on the supports (docs/loads.md, "Backfill"). The fill's passive
+resistance to a face pushed into it is `model.passive_fill`'s."""
 
 from __future__ import annotations
 
@@ -24,10 +25,17 @@ class Backfill:
     depth: float
     unit_weight: float
     lateral_coefficient: float
+    passive_coefficient: float = 0.0  # Kp the fill mobilises against a face pushed into it (0: none)
+    passive_displacement: float = 0.0  # how far a face moves into the fill to mobilise it whole (m)
 
     @property
     def present(self) -> bool:
         return self.depth > 0.0 and self.unit_weight > 0.0
+
+    @property
+    def resists(self) -> bool:
+        """The fill pushes back harder than its at-rest pressure where the arch sways into it."""
+        return self.present and self.passive_coefficient > self.lateral_coefficient
 
 
 def fill_surface(geometry: ArchGeometry, fill: Backfill) -> float:
@@ -36,24 +44,47 @@ def fill_surface(geometry: ArchGeometry, fill: Backfill) -> float:
 
 
 def backfill_points(geometry: ArchGeometry, centroids: np.ndarray, fill: Backfill) -> LoadPoints:
-    """The fill's loads on the voussoirs as point forces (none without fill): for each extrados face
-    between its joints' extrados corners a and b, with fill heights h_a and h_b above them, the weight
-    unit_weight x depth x (h_a + h_b) / 2 x |b_x - a_x| down and the pressure resultant
-    K unit_weight x depth x (h_a + h_b) / 2 x |b_y - a_y| toward the voussoir, both at the fraction
-    (h_a + 2 h_b) / (3 (h_a + h_b)) of the face from a (the centroid of a trapezoid)."""
-    if not fill.present:
-        return LoadPoints(np.zeros(0, int), np.zeros((0, 2)), np.zeros((0, 2)))
-    surface = fill_surface(geometry, fill)
+    """The fill's loads on the voussoirs as point forces (none without fill): on each face of
+    `fill_faces`, its weight down and K x its pressure resultant toward the voussoir."""
     blocks, points, forces = [], [], []
+    for face in fill_faces(geometry, centroids, fill):
+        forces.append((face.inward * fill.lateral_coefficient * face.mean * face.height, -face.mean * face.width))
+        blocks.append(face.block)
+        points.append(face.point)
+    if not blocks:
+        return LoadPoints(np.zeros(0, int), np.zeros((0, 2)), np.zeros((0, 2)))
+    return LoadPoints(np.array(blocks, int), np.array(points, float), np.array(forces, float))
+
+
+@dataclass(frozen=True)
+class FillFace:
+    """One extrados face under the fill: its block, the resultants' point (the trapezoid's centroid on
+    the face), unit weight x ring depth x the fill's mean height over it (N/m), the face's horizontal
+    and vertical projections (m), and the sign of the horizontal direction toward its block (+1: +x)."""
+
+    block: int
+    point: np.ndarray
+    mean: float
+    width: float
+    height: float
+    inward: float
+
+
+def fill_faces(geometry: ArchGeometry, centroids: np.ndarray, fill: Backfill) -> list[FillFace]:
+    """The extrados faces the fill stands on (none without fill): for each face between its joints'
+    extrados corners a and b, with fill heights h_a and h_b above them, the weight unit_weight x depth
+    x (h_a + h_b) / 2 x |b_x - a_x| and the pressure resultant per unit K, unit_weight x depth x
+    (h_a + h_b) / 2 x |b_y - a_y|, both at the fraction (h_a + 2 h_b) / (3 (h_a + h_b)) of the face from a."""
+    if not fill.present:
+        return []
+    surface = fill_surface(geometry, fill)
+    faces = []
     for block, a, b in extrados_segments(geometry):
         h_a, h_b = max(surface - float(a[1]), 0.0), max(surface - float(b[1]), 0.0)
         if h_a + h_b == 0.0:
             continue
         mean = 0.5 * (h_a + h_b) * fill.unit_weight * geometry.depth
-        along = (h_a + 2.0 * h_b) / (3.0 * (h_a + h_b))
-        point = a + along * (b - a)
-        inward = -np.sign(point[0] - centroids[block, 0])  # the fill pushes the face toward the block
-        forces.append((inward * fill.lateral_coefficient * mean * abs(b[1] - a[1]), -mean * abs(b[0] - a[0])))
-        blocks.append(block)
-        points.append(point)
-    return LoadPoints(np.array(blocks, int), np.array(points, float), np.array(forces, float))
+        point = a + (h_a + 2.0 * h_b) / (3.0 * (h_a + h_b)) * (b - a)
+        inward = -float(np.sign(point[0] - centroids[block, 0]))  # the fill pushes the face toward the block
+        faces.append(FillFace(block, point, mean, abs(b[0] - a[0]), abs(b[1] - a[1]), inward))
+    return faces

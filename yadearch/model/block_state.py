@@ -12,6 +12,7 @@ from yadearch.model.joint_law import JointForces, JointLaw
 from yadearch.model.joint_table import JointTable
 from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, tangent_kernel
 from yadearch.model.kernel_call import KernelCall
+from yadearch.model.passive_fill import add_passive
 
 
 def kernel_table(table: JointTable, law: JointLaw) -> tuple:
@@ -30,13 +31,17 @@ def free_state(
     length: float,
     band: int,
     loads: np.ndarray,
-    factor: float = 0.0,
+    factor: float,
+    passive: np.ndarray,
 ) -> tuple[JointTangent, np.ndarray, np.ndarray]:
     """In one compiled call: the joints at generalised coordinates `u` (x, y, rotation x `length`
     per block) having moved from `u_before`, the residual R = joint forces + `gravity` x the weights
-    + `factor` x the point loads `loads` (`model.loads.block_loads`) on the free blocks (all but the
-    first and last) and their tangent K in band storage; `kernel` is `kernel_table`'s tuple."""
-    return as_joints(FREE_STATE_KERNEL(kernel, u, u_before, shear_before, weight, gravity, length, band, loads, factor))
+    + `factor` x the point loads `loads` (`model.loads.block_loads`) + the fill's `passive` springs
+    (`model.passive_fill`) on the free blocks (all but the first and last) and their tangent K in band
+    storage; `kernel` is `kernel_table`'s tuple."""
+    return as_joints(
+        FREE_STATE_KERNEL(kernel, u, u_before, shear_before, weight, gravity, length, band, loads, factor, passive)
+    )
 
 
 def as_joints(state: tuple) -> tuple[JointTangent, np.ndarray, np.ndarray]:
@@ -46,10 +51,11 @@ def as_joints(state: tuple) -> tuple[JointTangent, np.ndarray, np.ndarray]:
 
 
 @njit(cache=True)
-def free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, lever, band, loads, factor):
+def free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, lever, band, loads, factor, passive):
     """`tangent_kernel` at the poses of `u`, then the free blocks' residual and band tangent, with
     `factor` x the point loads `loads` (per block: force x, y, and the moment m0 and dot product d0
-    of their arms from the centroid with them, unturned; the arms turn with the block)."""
+    of their arms from the centroid with them, unturned; the arms turn with the block) and the fill's
+    `passive` springs (`model.passive_fill`; none: an empty table)."""
     (left, right, left_intrados, right_intrados, normal0, along0, length, handedness, n_blocks,
      kn_depth, ks_depth, tan_friction, gap_fraction, gap, imperfect) = kernel  # fmt: skip
     placed, before = u.reshape(-1, BLOCK_DOFS), u_before.reshape(-1, BLOCK_DOFS)
@@ -70,6 +76,8 @@ def free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, lever,
     stiffness = np.ascontiguousarray(whole[:, BLOCK_DOFS : BLOCK_DOFS * (n_blocks - 1)])
     if factor != 0.0:
         _add_point_loads(residual, stiffness, loads, factor, rot, lever, band)
+    if passive.shape[0]:
+        add_passive(residual, stiffness, passive, pos, rot, lever, band)
     return (
         outputs[0],
         outputs[1],

@@ -18,6 +18,13 @@ INFLUENCE_HEIGHT_CM = 6.0
 RESIDUAL_HEIGHT_CM = 8.0  # its legend sits above the axes
 ENGINES_ROW_CM = 0.45  # the engines figure's height per case
 DESCENT_ROW_CM = 6.0  # the descent figure's height per row of panels
+PASSIVE_HEIGHT_CM = 8.0
+PASSIVE_SERIES = (  # column of the passive study's capacities, colour, legend
+    ("rigid_N", "k", "rigid LP"),
+    ("stiff_static_N", "C2", "static, kn 1e5"),
+    ("static_N", "C0", "static, kn 5.2"),
+    ("dem_N", "C1", "DEM, kn 5.2"),
+)
 
 
 @house_style
@@ -159,4 +166,31 @@ def plot_descent(paths: dict[str, tuple[LoadPath, LoadPath | None]], stem: Path)
         ax.set_ylim(bottom=0.0)
         if k == 0:
             ax.legend(loc="lower center", frameon=False)
+    return save_figure(fig, stem)
+
+
+@house_style
+def plot_passive(capacities: pd.DataFrame, mobilisation: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
+    """STEM.pdf and .png: (a) each arch's capacity against the fill's passive coefficient Kp in the rigid
+    LP, the static engine nearly rigid and at kn 5.2, and the DEM; (b) the paper's arch's static capacity
+    against the spring's mobilisation displacement, beside the rigid LP's."""
+    fig = new_figure(height_cm=PASSIVE_HEIGHT_CM, width_cm=2 * COLUMN_CM)
+    ax, swept = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
+    for arch, marker in (("small", "o"), ("paper", "s")):
+        rows = capacities[capacities["case"].str.startswith(arch)]
+        for column, colour, label in PASSIVE_SERIES:
+            shown = rows.dropna(subset=[column])
+            ax.plot(shown["kp"], shown[column], f"{marker}{'' if column == 'dem_N' else '-'}", ms=3, mfc="none",
+                    mew=0.7, lw=0.8, color=colour, label=f"{label}, {arch} arch")  # fmt: skip
+    ax.set_xlabel("passive coefficient Kp (-)")
+    ax.set_ylabel("collapse load (N)")
+    ax.set_ylim(bottom=0.0)
+    ax.legend(loc="upper left", frameon=False, fontsize=7, ncol=1)
+    swept.semilogx(mobilisation["u_p_mm"], mobilisation["static_N"], "o-", ms=3, lw=0.8, color="C0",
+                   label=f"{ENGINE_NAMES['static']}, kn 5.2 N/mm³")  # fmt: skip
+    swept.axhline(float(mobilisation["rigid_N"].iloc[0]), color="k", lw=0.8, ls="--", label="rigid LP")
+    swept.set_xlabel("mobilisation displacement u_p (mm)")
+    swept.set_ylabel("collapse load (N)")
+    swept.set_ylim(bottom=0.0)
+    swept.legend(loc="lower left", frameon=False)
     return save_figure(fig, stem)

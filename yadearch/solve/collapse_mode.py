@@ -12,6 +12,7 @@ import numpy as np
 from yadearch.model.hinges import Hinge, hinges_at
 from yadearch.model.joint_tangent import BLOCK_DOFS
 from yadearch.model.joints import joint_states, rotate
+from yadearch.model.passive_fill import BLOCK, spring_state
 from yadearch.solve import banded
 from yadearch.solve.statics import StaticArch
 
@@ -26,6 +27,7 @@ class CollapseKind(StrEnum):
 
     MECHANISM = "four-hinge mechanism"  # four joints turn: the classical mechanism
     SNAP_THROUGH = "snap-through"  # fewer joints turn: the ring's geometry folds (a shallow arch)
+    FILL_HELD = "mechanism held by the fill"  # fewer joints turn, the fill's passive springs holding the rest
     SLIDING = "sliding"  # joints slide more than they open
 
 
@@ -57,9 +59,26 @@ def fold_mode(arch: StaticArch, u: np.ndarray, stiffness: np.ndarray, failed: np
     hinges, sliding = motion_hinges(arch, u, mode)
     if sliding:
         kind = CollapseKind.SLIDING
+    elif len(hinges) >= MECHANISM_HINGES:
+        kind = CollapseKind.MECHANISM
     else:
-        kind = CollapseKind.MECHANISM if len(hinges) >= MECHANISM_HINGES else CollapseKind.SNAP_THROUGH
+        kind = CollapseKind.FILL_HELD if _fill_holds(arch, u, mode) else CollapseKind.SNAP_THROUGH
     return FoldMode(banded.smallest_eigenvalue(stiffness), hinges, kind)
+
+
+def _fill_holds(arch: StaticArch, u: np.ndarray, mode: np.ndarray) -> bool:
+    """Some passive spring of the fill (`model.passive_fill`), still elastic at `u`, is pushed by `mode`:
+    the mode's other segments lean on the fill, whose yielding adds the mechanism's other hinges."""
+    pos, rot = arch.poses(u)
+    moved = np.zeros(arch.n_blocks * BLOCK_DOFS)
+    moved[arch.free_dofs] = mode
+    for spring in arch.passive:
+        block = int(spring[BLOCK])
+        _, _, arm_y, tangent = spring_state(spring, pos[block, 0], rot[block])
+        motion = moved[BLOCK_DOFS * block] - arm_y * moved[BLOCK_DOFS * block + 2] / arch.length
+        if tangent > 0.0 and abs(motion) > MODE_HINGE_FRACTION * np.abs(mode).max():
+            return True
+    return False
 
 
 def motion_hinges(arch: StaticArch, u: np.ndarray, mode: np.ndarray) -> tuple[tuple[Hinge, ...], bool]:

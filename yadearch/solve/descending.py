@@ -86,7 +86,7 @@ def descend(loading: StaticLoading, capacity: float, descend_to: float = DESCEND
         u, lam, iterations, success, state = bordered_kernel(
             arch.kernel, last.u, last.forces.shear_force, arch.weight, thickness, banded.BAND,
             solver.converged, solver.settings.max_step, np.ascontiguousarray(arch.dead),
-            np.ascontiguousarray(arch.live), normal, guess_u, guess_lam, ITERATIONS,
+            np.ascontiguousarray(arch.live), arch.passive, normal, guess_u, guess_lam, ITERATIONS,
         )  # fmt: skip
         if not success or largest_move(u, guess_u) > loading.snap_floor or _turned_back(history, u, free):
             step *= HALVING
@@ -189,7 +189,7 @@ def _live_forces(live, u, lever):
 @njit(cache=True)
 def bordered_kernel(
     kernel, u_before, shear_before, weight, lever, band, converged, max_step,
-    dead, live, normal, u_guess, lam_guess, iterations,
+    dead, live, passive, normal, u_guess, lam_guess, iterations,
 ):  # fmt: skip
     """Newton on R(u, lam) = 0 (joint forces + weights + dead loads + lam x live load on the free
     blocks) on the plane through `u_guess` normal to `normal` (a unit vector of the free blocks'
@@ -197,7 +197,8 @@ def bordered_kernel(
     d lam b, which stays on the plane; capped at `max_step` and halved until |R|^2 falls. (u, lam,
     iterations, success, state at u)."""
     u, lam = u_guess.copy(), lam_guess
-    state = free_state_kernel(kernel, u, u_before, shear_before, weight, 1.0, lever, band, dead + lam * live, 1.0)
+    loads = dead + lam * live
+    state = free_state_kernel(kernel, u, u_before, shear_before, weight, 1.0, lever, band, loads, 1.0, passive)
     first = BLOCK_DOFS
     for iteration in range(iterations):
         residual, stiffness = state[8], state[9]
@@ -218,7 +219,9 @@ def bordered_kernel(
             trial = u.copy()
             trial[first : first + d.shape[0]] += alpha * d
             loads = dead + (lam + alpha * more) * live
-            trial_state = free_state_kernel(kernel, trial, u_before, shear_before, weight, 1.0, lever, band, loads, 1.0)
+            trial_state = free_state_kernel(
+                kernel, trial, u_before, shear_before, weight, 1.0, lever, band, loads, 1.0, passive
+            )
             if trial_state[8] @ trial_state[8] <= (1.0 - SUFFICIENT_DECREASE * alpha) * merit:
                 accepted = True
                 break
@@ -240,5 +243,5 @@ def compile_kernel() -> None:
     normal = np.ones(len(arch.free_dofs)) / np.sqrt(len(arch.free_dofs))
     bordered_kernel(
         arch.kernel, u, shear, arch.weight, arch.length, banded.BAND, 1e-9, 1e-4,
-        np.ascontiguousarray(arch.dead), np.ascontiguousarray(arch.live), normal, u, 0.0, 2,
+        np.ascontiguousarray(arch.dead), np.ascontiguousarray(arch.live), arch.passive, normal, u, 0.0, 2,
     )  # fmt: skip

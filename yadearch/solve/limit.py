@@ -142,6 +142,12 @@ def _solve(
     the rigid arch it solved."""
     start = time.perf_counter()
     arch = rigid_arch(case)
+    if len(arch.passive):
+        raise LimitError(
+            f"loads.fill_passive_coefficient = {case.loads.fill_passive_coefficient:g}: the rigid march under a "
+            "support movement does not take the fill's passive resistance (the load capacity, the static "
+            "engine and the DEM do); set it to 0 for the rigid march"
+        )
     snap_cap = math.inf if max_snap_mm is None else max_snap_mm
     kn = units.stiffness_per_volume(case.interface.kn_N_per_mm3) if compliant else None
     if not runaway_thicknesses > 0.0:

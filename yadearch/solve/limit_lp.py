@@ -16,7 +16,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from yadearch.model.loads import generalised
+from yadearch.model.loads import LoadPoints, generalised
+from yadearch.model.passive_fill import BLOCK, CAPACITY, OUTWARD, spring_points
 from yadearch.solve.rigid import EXTRADOS, INTRADOS, Contacts, LimitError, Pivot, Placement, RigidArch, contacts, cross
 
 LP_METHOD = "highs-ds"  # dual simplex: vertex solutions, i.e. mechanisms with the fewest hinges
@@ -73,6 +74,23 @@ def equilibrium_matrix(arch: RigidArch, c: Contacts) -> np.ndarray:
     return matrix
 
 
+def passive_columns(arch: RigidArch, placement: Placement) -> np.ndarray:
+    """(3 n_blocks, k) generalised forces on every block of a unit push of each of the fill's passive
+    springs (`arch.passive`): horizontal, toward its block, at its point where `placement` carries it."""
+    springs = arch.passive
+    columns = np.zeros((3 * arch.n_blocks, len(springs)))
+    for k, (spring, point) in enumerate(zip(springs, spring_points(springs, arch.centroid0))):
+        block = int(spring[BLOCK])
+        unit = LoadPoints(np.array([block]), point[None, :], np.array([[-spring[OUTWARD], 0.0]]))
+        columns[:, k] = generalised(unit, arch.n_blocks, placement.place(unit.point, unit.block)).ravel()
+    return columns
+
+
+def passive_bounds(arch: RigidArch, scale: float) -> list[tuple[float | None, float | None]]:
+    """Each passive spring's push between nothing and its capacity, in the programmes' force `scale`."""
+    return [(0.0, float(capacity) / scale) for capacity in arch.passive[:, CAPACITY]]
+
+
 def weight_load(arch: RigidArch, placement: Placement) -> np.ndarray:
     """(3 n_blocks,) what the contacts must supply to each block: the opposite of its weight, i.e.
     force (0, W) and moment W x_centroid about the origin, and of the forces held on it (`arch.fixed`,
@@ -108,7 +126,12 @@ def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True, 
     m = arch.n_joints
     a_v, load, support = _split(arch, equilibrium_matrix(arch, c), weight_load(arch, placement), placement)
     scale, rows, bounds, a_ub, b_ub = static_constraints(arch, c, friction)
-    objective = support
+    passive = passive_columns(arch, placement)[3 : 3 * (arch.n_blocks - 1)]
+    a_v = np.column_stack([a_v, passive])  # the fill's passive pushes, bounded unknowns (none: no columns)
+    bounds = bounds + passive_bounds(arch, scale)
+    if a_ub is not None:
+        a_ub = np.column_stack([a_ub, np.zeros((a_ub.shape[0], passive.shape[1]))])
+    objective = np.concatenate([support, np.zeros(passive.shape[1])])
     problem = {
         "A_ub": a_ub,
         "b_ub": b_ub,
@@ -131,7 +154,7 @@ def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True, 
     if refine:
         free = np.array([hi is None for _, hi in bounds])
         x[free] += np.linalg.lstsq(a_v[:, free], load - a_v @ x, rcond=None)[0]
-    return Statics(True, np.column_stack([x[:m], x[m : 2 * m]]), x[2 * m :], c)
+    return Statics(True, np.column_stack([x[:m], x[m : 2 * m]]), x[2 * m : 3 * m], c)
 
 
 def static_constraints(

@@ -24,6 +24,8 @@ from yadearch.solve.limit_lp import (
     STATUS_UNBOUNDED,
     equilibrium_matrix,
     mechanism_pivots,
+    passive_bounds,
+    passive_columns,
     static_constraints,
     weight_load,
 )
@@ -88,12 +90,13 @@ def load_capacity(
     a_v = equilibrium_matrix(arch, c)[voussoirs]
     held = weight_load(arch, placement)[voussoirs]  # what the contacts supply against the held loads
     scale, rows, bounds, a_ub, b_ub = static_constraints(arch, c, friction)
-    a_eq = np.column_stack([a_v, np.ravel(live)[voussoirs]]) * rows[:, None]  # ... and the live load
-    objective = np.zeros(3 * m + 1)
+    passive = passive_columns(arch, placement)[voussoirs]  # the fill's passive pushes, bounded unknowns
+    a_eq = np.column_stack([a_v, passive, np.ravel(live)[voussoirs]]) * rows[:, None]  # ... and the live load
+    objective = np.zeros(a_eq.shape[1])
     objective[-1] = -1.0
-    bounds = bounds + [(0.0, None)]  # the multiplier
+    bounds = bounds + passive_bounds(arch, scale) + [(0.0, None)]  # the multiplier
     if a_ub is not None:
-        a_ub = np.column_stack([a_ub, np.zeros(2 * m)])
+        a_ub = np.column_stack([a_ub, np.zeros((2 * m, passive.shape[1] + 1))])
     from scipy.optimize import linprog  # here, not at import: scipy.optimize costs a run ~50 ms
 
     result = linprog(
@@ -115,7 +118,8 @@ def load_capacity(
     x = result.x[:-1] * scale
     velocity = result.eqlin.marginals * rows  # the dual: the voussoirs' virtual velocities
     pivots = _hinges(arch, a_v, velocity, c.touching)
-    return LoadCapacity(float(result.x[-1] * scale), pivots, np.column_stack([x[:m], x[m : 2 * m]]), x[2 * m :])
+    normal = np.column_stack([x[:m], x[m : 2 * m]])
+    return LoadCapacity(float(result.x[-1] * scale), pivots, normal, x[2 * m : 3 * m])
 
 
 def _hinges(arch: RigidArch, a_v: np.ndarray, velocity: np.ndarray, touching: np.ndarray) -> tuple[Pivot, ...]:

@@ -5,8 +5,10 @@ programme, so it checks `solve.load_lp` independently).
 Four hinges at joints h1 < h2 < h3 < h4, each about one corner, split the arch into three moving
 bodies: the first turns about hinge 1, the third about hinge 4, the middle one about the
 intersection of the lines through hinges 1-2 and 4-3. A mechanism is admissible when every hinge's
-other corner opens; its multiplier is minus the dead loads' power over the live load's. Sliding is
-not considered (enough friction), and the search is C(joints, 4) x 16: for arches of tens of blocks.
+other corner opens; its multiplier is minus the dead loads' power over the live load's, plus the
+power the fill's passive resistance dissipates where a face moves into it (each spring at its capacity,
+`model.passive_fill`) over the live load's. Sliding is not considered (enough friction), and the search
+is C(joints, 4) x 16: for arches of tens of blocks.
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ import math
 
 import numpy as np
 
+from yadearch.model.passive_fill import BLOCK, CAPACITY, OUTWARD, spring_points
 from yadearch.solve.rigid import Pivot, RigidArch
 
 OPENING_TOLERANCE = 1e-9  # of the largest corner speed: an "opening" rate below this is closed
@@ -25,7 +28,8 @@ PARALLEL = 1e-12  # a determinant below this: hinge lines that do not meet (no s
 def mechanism_multiplier(arch: RigidArch, dead: np.ndarray, live: np.ndarray) -> tuple[float, tuple[Pivot, ...]]:
     """The least multiplier of the live load over the admissible four-hinge mechanisms, with its
     hinges; `dead` and `live` are (n_blocks, 3) generalised applied forces (Fx, Fy, moment about the
-    origin). (inf, ()) if no mechanism lets the live load do work."""
+    origin), the arch's passive springs (`arch.passive`) resist at their capacity. (inf, ()) if no
+    mechanism lets the live load do work."""
     best: tuple[float, tuple[Pivot, ...]] = (math.inf, ())
     for joints in itertools.combinations(range(arch.n_joints), 4):
         for sides in itertools.product((0, 1), repeat=4):
@@ -55,7 +59,17 @@ def _multiplier(arch: RigidArch, pivots: tuple[Pivot, ...], dead: np.ndarray, li
     sign = 1.0 if power_live > 0.0 else -1.0  # the direction in which the live load does work
     if not _admissible(arch, pivots, sign * omega, centres):
         return None
-    return -power_dead / power_live
+    return -power_dead / power_live + _passive_power(arch, sign * omega, centres) / abs(power_live)
+
+
+def _passive_power(arch: RigidArch, omega: np.ndarray, centres: np.ndarray) -> float:
+    """The power the passive springs dissipate: each at its capacity where its point moves into the fill."""
+    total = 0.0
+    for spring, point in zip(arch.passive, spring_points(arch.passive, arch.centroid0)):
+        block = int(spring[BLOCK])
+        outward_rate = spring[OUTWARD] * omega[block] * _turned(point - centres[block])[0]
+        total += spring[CAPACITY] * max(outward_rate, 0.0)
+    return total
 
 
 def _meeting(a: np.ndarray, b: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray | None:

@@ -122,10 +122,11 @@ def descent_kernel(
 @njit(cache=True)
 def _evaluate(problem, u):
     """`free_state_kernel` at `u` for a `problem`: (kernel table, u_before, shear_before, weights,
-    gravity, lever, band, converged residual, largest step, live load, its multiplier), as
-    `solve.newton.Solver` packs it."""
+    gravity, lever, band, converged residual, largest step, the loads besides the weights, their
+    factor, the fill's passive springs), as `solve.newton.Solver` packs it."""
     kernel, u_before, shear_before, weight, gravity, lever, band = problem[:7]
-    return free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, lever, band, problem[9], problem[10])
+    loads, factor, passive = problem[9], problem[10], problem[11]
+    return free_state_kernel(kernel, u, u_before, shear_before, weight, gravity, lever, band, loads, factor, passive)
 
 
 @njit(cache=True)

@@ -23,6 +23,7 @@ from yadearch.model.geometry import ArchGeometry, block_volume, front_face, poly
 from yadearch.model.joints import rotate
 from yadearch.model.loads import LoadPoints, live_load_points
 from yadearch.model.movement import Motion, Movement, SupportMotion
+from yadearch.model.passive_fill import passive_springs
 
 INTRADOS, EXTRADOS = 0, 1
 SIDES = "IE"  # hinge label of a pivot corner: I = intrados pivot, E = extrados pivot
@@ -54,6 +55,7 @@ class RigidArch:
     tan_phi: float
     touch_tol: float
     fixed: LoadPoints  # forces held besides the weights (the backfill, a held live load), undeformed arch
+    passive: np.ndarray  # the fill's passive springs (`model.passive_fill`), whose forces are bounded unknowns
 
     @property
     def n_blocks(self) -> int:
@@ -71,7 +73,8 @@ def rigid_arch(case: ArchCase) -> RigidArch:
     unit_weight = units.density(case.material.density_g_per_cm3) * case.loading.gravity_m_per_s2
     weight = np.array([unit_weight * block_volume(b) for b in geometry.blocks])
     centroid0 = np.array([polygon_centroid(front_face(b)) for b in geometry.blocks])
-    fill = backfill_points(geometry, centroid0, backfill(case))
+    fill_case = backfill(case)
+    fill = backfill_points(geometry, centroid0, fill_case)
     live = live_load_points(geometry, centroid0, weight, live_load(case, geometry))
     held = held_multiplier(case)
     joints = geometry.joints
@@ -98,6 +101,7 @@ def rigid_arch(case: ArchCase) -> RigidArch:
             np.concatenate([fill.point, live.point]),
             np.concatenate([fill.force, held * live.force]),
         ),
+        passive=passive_springs(geometry, centroid0, fill_case),
     )
 
 

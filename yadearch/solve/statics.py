@@ -27,6 +27,7 @@ from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, joint_tangent
 from yadearch.model.joints import rotate
 from yadearch.model.loads import block_loads, live_load_points, turned_moments
 from yadearch.model.movement import Movement
+from yadearch.model.passive_fill import passive_springs, scaled
 from yadearch.solve import banded
 from yadearch.solve.newton_kernel import descent_kernel, newton_kernel
 
@@ -47,6 +48,7 @@ class StaticArch:
     imperfections: ArchImperfections | None
     live: np.ndarray  # the live load of 1 N (or 1 g) on each block (`model.loads.block_loads`)
     dead: np.ndarray  # the dead loads besides the weights (the backfill), in the same form, x gravity
+    passive: np.ndarray  # the fill's passive springs at full gravity (`model.passive_fill`; none: empty)
 
     @property
     def n_blocks(self) -> int:
@@ -135,11 +137,12 @@ class StaticArch:
             *self.external(gravity, multiplier),
         )  # fmt: skip
 
-    def external(self, gravity: float, multiplier: float) -> tuple[np.ndarray, float]:
+    def external(self, gravity: float, multiplier: float) -> tuple[np.ndarray, float, np.ndarray]:
         """The loads besides the weights as the kernels take them: `gravity` x the dead loads +
-        `multiplier` x the live load, and the factor on them (0 where there are none: skipped)."""
+        `multiplier` x the live load, the factor on them (0 where there are none: skipped), and the
+        fill's passive springs at `gravity`'s share."""
         loads = gravity * self.dead + multiplier * self.live
-        return loads, (1.0 if loads.any() else 0.0)
+        return loads, (1.0 if loads.any() else 0.0), scaled(self.passive, gravity)
 
     @functools.cached_property
     def kernel(self) -> tuple:
@@ -173,6 +176,7 @@ def static_arch(case: ArchCase) -> StaticArch:
     unit_weight = units.density(case.material.density_g_per_cm3) * case.loading.gravity_m_per_s2
     weight = np.array([unit_weight * block_volume(b) for b in geometry.blocks])
     points = live_load_points(geometry, centroid0, weight, live_load(case, geometry))
+    fill = backfill(case)
     return StaticArch(
         geometry=geometry,
         table=joint_table(geometry, centroid0, profiles),
@@ -182,7 +186,8 @@ def static_arch(case: ArchCase) -> StaticArch:
         movement=case_movement(case, geometry),
         imperfections=imperfections,
         live=block_loads(points, centroid0, len(weight)),
-        dead=block_loads(backfill_points(geometry, centroid0, backfill(case)), centroid0, len(weight)),
+        dead=block_loads(backfill_points(geometry, centroid0, fill), centroid0, len(weight)),
+        passive=passive_springs(geometry, centroid0, fill),
     )
 
 

@@ -59,7 +59,7 @@ def solver_cost(case: ArchCase, repeats: int = FLOOR_REPEATS) -> SolverCost:
     arch = loading.arch
     states = np.array([s.u for s in loading.accepted])
     shears = np.array([s.forces.shear_force for s in loading.accepted])
-    args = (arch.kernel, states, shears, arch.weight, arch.length, banded.BAND, arch.live)
+    args = (arch.kernel, states, shears, arch.weight, arch.length, banded.BAND, arch.live, arch.passive)
     per_state: list[float] = []
     for solve in (False, True):
         _floor_loop(*args, 1, solve)  # compiled before it is timed
@@ -89,13 +89,15 @@ def _best_cpu_s(calls: Sequence[Callable[[], object]]) -> float:
 
 
 @njit(cache=True)
-def _floor_loop(kernel, states, shears, weight, lever, band, live, repeats, solve):
+def _floor_loop(kernel, states, shears, weight, lever, band, live, passive, repeats, solve):
     """Evaluate the joints at every state (and solve the tangent, with `solve`), `repeats` times (a
     checksum returned so that nothing is optimised away)."""
     total = 0.0
     for _ in range(repeats):
         for k in range(states.shape[0]):
-            state = free_state_kernel(kernel, states[k], states[k], shears[k], weight, 1.0, lever, band, live, 0.0)
+            state = free_state_kernel(
+                kernel, states[k], states[k], shears[k], weight, 1.0, lever, band, live, 0.0, passive
+            )
             total += state[8][0]
             if solve:
                 d, _singular = band_solve(state[9], state[8], 0.0)

@@ -1,0 +1,32 @@
+"""The fill's passive resistance in the three solvers (reports/loads/passive; docs/loads.md).
+
+    .venv/bin/python scripts/loads_passive.py [--out reports/loads/passive] [--jobs 2]
+
+Runs each case's load on the rigid LP, the static engine and the DEM (in child processes, --jobs at a time;
+those whose files OUT/runs holds already are read back), the mobilisation sweep and the settling arch, and
+writes passive.md, capacities.csv, mobilisation.csv, settlement.csv and passive.pdf/.png.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+from yadearch.reporting.loads_passive import write_passive_report
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", type=Path, default=Path("reports/loads/passive"))
+    parser.add_argument("--jobs", type=int, default=2, choices=(1, 2, 3, 4))
+    args = parser.parse_args()
+    start = time.time()
+    print(write_passive_report(args.out, args.jobs))
+    print(f"{time.time() - start:.0f} s")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

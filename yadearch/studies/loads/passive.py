@@ -1,0 +1,121 @@
+"""The fill's passive resistance measured (reports/loads/passive; docs/loads.md): a small arch and the
+paper's under a point load through their fill at Kp 0, 1 and 3 in the three solvers (the rigid LP,
+its independent mechanism check, the static engine at the DEM's stiffness and nearly rigid, the DEM),
+the static capacity against the spring's mobilisation displacement, and the paper's arch settling under
+its fill with and without the passive resistance in both engines."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import pandas as pd
+
+from yadearch.case.config import ArchCase, preset
+from yadearch.errors import YadearchError
+from yadearch.launch.load_process import run_load_process
+from yadearch.results.load_path import stored_load_path
+from yadearch.solve.load_lp import load_analysis
+from yadearch.solve.load_path import static_load_path
+from yadearch.studies.loads.engines import ENGINES_KN
+from yadearch.studies.loads.held import SMALL
+from yadearch.studies.loads.rigid import mechanism_check
+
+PASSIVE_COEFFICIENTS = (0.0, 1.0, 3.0)  # Kp: none, about a third of a loose sand's, a dense sand's third
+LATERAL_COEFFICIENT = 0.3  # K at rest, about 1 - sin(45 deg)
+FILLS_MM = {"small": 20.0, "paper": 50.0}  # over each arch's crown
+STIFF = {"interface.kn_N_per_mm3": 100_000.0, "fill_passive_displacement_mm": 0.001}  # nearly rigid-plastic
+MOBILISATION_MM = (0.01, 0.1, 0.5, 1.0, 2.0, 5.0, 10.0)  # the spring's u_p swept on the paper's arch
+SWEPT_KP = 1.0
+SMALL_VOUSSOIRS = 15  # the mechanism method's search (C(joints, 4) x 16 mechanisms) on arches this small
+
+
+def passive_case(arch: str, kp: float, **more: object) -> ArchCase:
+    """The `arch` ('small': 15 voussoirs, a point at 0.3 of the span; 'paper': set 2 at the quarter span)
+    under its fill (K 0.3) with the passive coefficient `kp`, at the DEM's stiffness unless `more` says."""
+    loads = {"live_load": "vertical", "fill_depth_mm": FILLS_MM[arch], "fill_lateral_coefficient": LATERAL_COEFFICIENT}
+    base = ArchCase(name="small").with_overrides(SMALL) if arch == "small" else preset("set2")
+    overrides = {**loads, "load_position_over_span": 0.3 if arch == "small" else 0.25, "fill_passive_coefficient": kp}
+    name = f"{arch}_fill_kp{kp:g}"
+    return base.with_overrides({**overrides, "interface.kn_N_per_mm3": ENGINES_KN, "name": name, **more})
+
+
+def capacity_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> pd.DataFrame:
+    """A row an arch and Kp: the rigid LP's capacity and hinges, the mechanism method's (the small arch),
+    the static engine's at kn 5.2 and nearly rigid, and the DEM's at kn 5.2 (its files under `out`, `jobs`
+    at a time; those there already read back; a failure is its reason)."""
+    cases = [passive_case(arch, kp) for arch in FILLS_MM for kp in PASSIVE_COEFFICIENTS]
+
+    def row(case: ArchCase) -> dict:
+        rigid = load_analysis(case)
+        static = static_load_path(case, descend_to=None)
+        stiff = static_load_path(case.with_overrides(STIFF), descend_to=None)
+        found = {
+            "case": case.name,
+            "kp": case.loads.fill_passive_coefficient,
+            "rigid_N": rigid.multiplier,
+            "rigid_hinges": rigid.hinge_labels,
+            "mechanism_N": _mechanism(case),
+            "stiff_static_N": stiff.capacity,
+            "static_N": static.capacity,
+            "static_first_loss_N": static.first_loss,
+            "static_hinges": " ".join(static.hinges),
+            "static_kind": static.kind,
+        }
+        try:
+            dem = stored_load_path(out, case, 0.0) or run_load_process(case, out)
+        except YadearchError as exc:
+            return {**found, "dem_failure": str(exc)}
+        log(f"{case.name}: static {static.capacity:.3f} N, DEM {dem.capacity:.3f} N")
+        return {**found, "dem_N": dem.capacity, "dem_hinges": " ".join(dem.hinges), "dem_failure": ""}
+
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        return pd.DataFrame(list(pool.map(row, cases)))
+
+
+def mobilisation_table() -> pd.DataFrame:
+    """The paper's arch at Kp SWEPT_KP: the static capacity (kn 5.2) for each u_p, beside the rigid LP's."""
+    rigid = load_analysis(passive_case("paper", SWEPT_KP)).multiplier
+    rows = []
+    for u_p in MOBILISATION_MM:
+        path = static_load_path(passive_case("paper", SWEPT_KP, fill_passive_displacement_mm=u_p), descend_to=None)
+        rows.append({"u_p_mm": u_p, "static_N": path.capacity, "hinges": " ".join(path.hinges), "rigid_N": rigid})
+    return pd.DataFrame(rows)
+
+
+def _mechanism(case: ArchCase) -> float | None:
+    """The mechanism method's multiplier (`solve.mechanisms`), on arches small enough for its search."""
+    if case.geometry.n_voussoirs > SMALL_VOUSSOIRS:
+        return None
+    return float(mechanism_check([case]).iloc[0]["mechanism_multiplier"])
+
+
+def settlement_table(out: Path, log: Callable[[str], None] = print) -> pd.DataFrame:
+    """The paper's arch under its fill settling to collapse, without and with the passive resistance
+    (Kp SWEPT_KP), on both engines (run folders under `out`; finished ones read back): a row a run."""
+    from yadearch.api.runs import run
+
+    rows = []
+    for kp in (0.0, SWEPT_KP):
+        case = passive_case("paper", kp, live_load="none", name=f"paper_settling_kp{kp:g}")
+        for engine in ("static", "dem"):
+            try:
+                summary = run(case, out / f"{case.name}_{engine}", figures=False, quiet=True, engine=engine).summary
+            except YadearchError as exc:
+                rows.append({"case": case.name, "kp": kp, "engine": engine, "failure": str(exc)})
+                continue
+            log(f"{case.name} ({engine}): du {summary.du_mm} mm")
+            rows.append(
+                {
+                    "case": case.name,
+                    "kp": kp,
+                    "engine": engine,
+                    "outcome": summary.path_outcome,
+                    "du_mm": summary.du_mm,
+                    "du_first_mm": summary.du_first_mm,
+                    "hinges": summary.hinge_labels,
+                    "failure": "",
+                }
+            )
+    return pd.DataFrame(rows)
