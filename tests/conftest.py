@@ -57,3 +57,17 @@ def stacked_pairs(offsets_x: list[float], width: float, height: float, depth: fl
         voussoir_width=height,
         longest_joint=width,
     )
+
+
+def differenced_tangent(arch, u: np.ndarray, u_before: np.ndarray, shear: np.ndarray, step: float, **loads):
+    """K = -dR/du of a static arch's free blocks at `u` by central differences of its residual (`loads`:
+    free_state's gravity and multiplier), the oracle of the compiled tangent."""
+    columns = []
+    for k in arch.free_dofs:
+        up, down = u.copy(), u.copy()
+        up[k] += step
+        down[k] -= step
+        forward = arch.free_state(up, u_before, shear, **loads)[1]
+        backward = arch.free_state(down, u_before, shear, **loads)[1]
+        columns.append(-(forward - backward) / (2.0 * step))
+    return np.column_stack(columns)

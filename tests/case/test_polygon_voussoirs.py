@@ -19,7 +19,7 @@ from yadearch.case.mechanics import arch_geometry, backfill, live_load
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.backfill import backfill_points, fill_surface
-from yadearch.model.loads import extrados_chain, live_load_points
+from yadearch.model.loads import extrados_chain, extrados_segments, live_load_points
 from yadearch.solve import banded
 from yadearch.solve.limit import limit_analysis
 from yadearch.solve.static_path import StaticLoading
@@ -123,7 +123,7 @@ def test_the_fill_presses_a_springers_vertical_back(base):
     bottom, top = extrados_chain(geometry, 1)[:2]
     assert bottom[0] == pytest.approx(top[0], abs=1e-12) and top[1] > bottom[1]
     fill = backfill(case)
-    points = backfill_points(geometry, static_arch(case).centroid0, fill)
+    points = backfill_points(geometry, fill)
     surface = fill_surface(geometry, fill)
     on_back = [k for k in range(len(points.block)) if points.block[k] == 1 and points.force[k, 1] == 0.0]
     assert len(on_back) == 1
@@ -226,3 +226,23 @@ def test_a_table_of_the_blocks_corners_is_the_same_survey(tmp_path):
     assert "\n" not in str(error.value)
     with pytest.raises(CaseError, match=r"or block, x_mm, y_mm \(a row a block's corner\); missing"):
         measured_case(pd.DataFrame({"x": [1.0]}))
+
+
+def test_the_fill_pushes_every_face_of_a_curved_extrados_toward_the_ring(base):
+    """Each extrados face drawn as several segments takes the fill's pressure toward the ring (the side its
+    chain leaves on its right), so each half's horizontal thrust is Rankine's K gamma d (H^2 - h^2) / 2,
+    whatever side of the voussoir's centroid a segment lies."""
+    case = measured_case(curved_extrados(base, 2), base=base).with_overrides(
+        {"loads.fill_depth_mm": 50.0, "loads.fill_lateral_coefficient": 0.3}
+    )
+    geometry = arch_geometry(case)
+    fill = backfill(case)
+    points = backfill_points(geometry, fill)
+    surface = fill_surface(geometry, fill)
+    crest = max(float(p[1]) for _, a, b in extrados_segments(geometry) for p in (a, b))
+    springing = surface - float(geometry.joints[0].extrados[1])
+    side = fill.lateral_coefficient * fill.unit_weight * geometry.depth * (springing**2 - (surface - crest) ** 2) / 2
+    middle = 0.5 * (geometry.joints[0].extrados[0] + geometry.joints[-1].extrados[0])
+    left, right = points.force[points.point[:, 0] < middle, 0], points.force[points.point[:, 0] > middle, 0]
+    assert (left >= 0.0).all() and (right <= 0.0).all()
+    assert left.sum() == pytest.approx(side, rel=1e-9) and -right.sum() == pytest.approx(side, rel=1e-9)

@@ -6,23 +6,29 @@ it within 2 %; the supports carry the weights, the fill and the pushes; bad inpu
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
+from conftest import differenced_tangent
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import arch_geometry, backfill
+from yadearch.case.mechanics import arch_geometry, backfill, runaway_length
 from yadearch.errors import CaseError
 from yadearch.model.backfill import fill_faces
 from yadearch.model.loads import generalised, live_load_points
-from yadearch.model.passive_fill import CAPACITY, OUTWARD, STIFFNESS, block_forces, spring_state
+from yadearch.model.passive_fill import CAPACITY, OUTWARD, STIFFNESS, block_forces, block_stiffness, spring_state
 from yadearch.solve import banded
+from yadearch.solve.collapse_mode import CollapseKind
 from yadearch.solve.limit import limit_analysis
 from yadearch.solve.load_lp import load_analysis
-from yadearch.solve.load_path import static_load_path
+from yadearch.solve.load_path import load_settings, load_the_live_load, static_load_path
 from yadearch.solve.mechanisms import mechanism_multiplier
+from yadearch.solve.path import path_settings
 from yadearch.solve.rigid import LimitError, rigid_arch
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.statics import static_arch
+from yadearch.studies.loads.passive import passive_case
 
 SMALL = {"n_voussoirs": 15, "live_load": "vertical", "load_position_over_span": 0.3, "friction_deg": 80.0}
 FILL = {"fill_depth_mm": 20.0, "fill_lateral_coefficient": 0.3, "fill_passive_coefficient": 1.0}
@@ -38,7 +44,7 @@ def test_a_spring_mobilises_its_share_linearly_up_to_its_capacity_and_nothing_mo
     case = _case()
     arch = static_arch(case)
     springs = arch.passive
-    faces = [f for f in fill_faces(arch_geometry(case), arch.centroid0, backfill(case)) if f.height > 0.0]
+    faces = [f for f in fill_faces(arch_geometry(case), backfill(case)) if f.height > 0.0]
     assert len(springs) == len(faces) > 0  # every face but a level one (the keystone's)
     expected = (1.0 - 0.3) * np.array([f.mean * f.height for f in faces])
     assert np.allclose(springs[:, CAPACITY], expected, rtol=1e-12)
@@ -53,28 +59,50 @@ def test_a_spring_mobilises_its_share_linearly_up_to_its_capacity_and_nothing_mo
 
 
 def test_the_springs_tangent_in_the_static_engine_is_exact():
-    """K = -dR/du with the springs against central differences of the residual, at a state that pushes
-    some faces into the fill within u_p (their spring elastic) and turns every voussoir."""
+    """The springs' part of K = -dR/du (K less the same arch's without springs) against central
+    differences of their part of the residual, at a state that pushes some faces into the fill within
+    u_p (their spring elastic) and turns every voussoir."""
     case = _case(fill_passive_displacement_mm=5.0)
     loading = StaticLoading.of(case)
     loading.selfweight()
     arch, state = loading.arch, loading.accepted[0]
+    bare = replace(arch, passive=arch.passive[:0])
     u = state.u.copy()
     u[arch.free_dofs[0::3]] += np.linspace(-2e-3, 2e-3, len(arch.free_dofs) // 3)  # the ring swayed
     u[arch.free_dofs[2::3]] += 0.02 * arch.length
-    forces = block_forces(arch.passive, np.column_stack([arch.poses(u)[0], arch.poses(u)[1]]))
-    assert np.count_nonzero(forces[:, 0]) >= 2  # some springs pushed ...
+    pushes = arch.passive_forces(u)[:, 0]
+    assert np.count_nonzero(pushes) >= 2 and np.abs(pushes).max() < arch.passive[:, CAPACITY].max()  # elastic
     shear = state.forces.shear_force
-    _, _, band = arch.free_state(u, state.u, shear)
-    stiffness = banded.to_dense(band)
-    differences = np.empty_like(stiffness)
-    for column, k in enumerate(arch.free_dofs):
-        up, down = u.copy(), u.copy()
-        up[k] += FD_STEP
-        down[k] -= FD_STEP
-        forward, backward = arch.free_state(up, state.u, shear)[1], arch.free_state(down, state.u, shear)[1]
-        differences[:, column] = -(forward - backward) / (2.0 * FD_STEP)
-    assert np.abs(stiffness - differences).max() < 1e-5 * np.abs(stiffness).max()
+    springs = banded.to_dense(arch.free_state(u, state.u, shear)[2] - bare.free_state(u, state.u, shear)[2])
+    differences = differenced_tangent(arch, u, state.u, shear, FD_STEP) - differenced_tangent(
+        bare, u, state.u, shear, FD_STEP
+    )
+    assert np.abs(springs).max() > 0.0
+    assert np.abs(springs - differences).max() < 1e-6 * np.abs(springs).max()
+
+
+def test_the_dems_stability_tangent_of_the_springs_is_their_forces_derivative():
+    """`block_stiffness` (the DEM's stability test) against central differences of `block_forces`."""
+    arch = static_arch(_case(fill_passive_displacement_mm=5.0))
+    rng = np.random.default_rng(7)
+    poses = np.column_stack([arch.centroid0, np.zeros(arch.n_blocks)])
+    poses[:, 0] += rng.uniform(-2e-3, 2e-3, arch.n_blocks)
+    poses[:, 2] += rng.uniform(-0.02, 0.02, arch.n_blocks)
+    lever = arch.length
+    stiffness = block_stiffness(arch.passive, poses, lever)
+    differences = np.zeros_like(stiffness)
+    for column in range(stiffness.shape[0]):
+        block, dof = divmod(column, 3)
+        up, down = poses.copy(), poses.copy()
+        step = FD_STEP / lever if dof == 2 else FD_STEP
+        up[block, dof] += step
+        down[block, dof] -= step
+        forward, backward = block_forces(arch.passive, up), block_forces(arch.passive, down)
+        forward[:, 2] /= lever
+        backward[:, 2] /= lever
+        differences[:, column] = -(forward - backward).ravel() / (2.0 * FD_STEP)
+    assert np.abs(stiffness).max() > 0.0
+    assert np.abs(stiffness - differences).max() < 1e-6 * np.abs(stiffness).max()
 
 
 def test_the_lp_with_passive_resistance_is_the_least_mechanism_and_above_the_lp_without():
@@ -99,15 +127,28 @@ def test_stiff_joints_and_a_short_mobilisation_carry_the_rigid_capacity():
     assert -RIGID_TOLERANCE < path.capacity / rigid - 1.0 < 0.0
 
 
-def test_the_supports_carry_the_weights_the_fill_and_the_pushes():
-    loading = StaticLoading.of(_case(fill_passive_displacement_mm=0.01))
+def test_the_supports_carry_the_weights_the_fill_the_load_and_the_pushes():
+    """At the last stable state of the load path, where the pushes are tens of newtons."""
+    case = _case()
+    loading = StaticLoading(static_arch(case), path_settings(case.numerics, 10.0), runaway_length(case))
     loading.selfweight()
-    arch, state = loading.arch, loading.accepted[0]
+    load_the_live_load(loading, load_settings(load_analysis(case).multiplier, case.numerics.increment_growth))
+    loading.follow()
+    arch, state = loading.arch, loading.accepted[-1]
+    pushes = arch.passive_forces(state.u)[1:-1, 0].sum()
+    assert abs(pushes) > 1.0  # newtons
     pressing = -state.forces.block_force[[0, -1]].sum(axis=0)
-    poses = np.column_stack([arch.poses(state.u)[0], arch.poses(state.u)[1]])
-    pushes = block_forces(arch.passive, poses)[1:-1, 0].sum()
-    assert pressing[1] == pytest.approx(arch.weight[1:-1].sum() - arch.dead[1:-1, 1].sum(), rel=1e-9)
-    assert pressing[0] == pytest.approx(arch.dead[1:-1, 0].sum() + pushes, abs=1e-9 * pressing[1])
+    loads = arch.dead[1:-1, 0:2].sum(axis=0) + state.lam * arch.live[1:-1, 0:2].sum(axis=0)
+    assert pressing[1] == pytest.approx(arch.weight[1:-1].sum() - loads[1], rel=1e-9)
+    assert pressing[0] == pytest.approx(-(loads[0] + pushes), abs=1e-9 * pressing[1])  # what the supports push with
+
+
+def test_a_fold_that_leans_on_the_fills_springs_is_named_so():
+    """The paper's arch at Kp 1: the fold's softest mode turns two joints, the segments beyond held by
+    the fill's springs still elastic (the DEM's run-away state shows four hinges)."""
+    path = static_load_path(passive_case("paper", 1.0), descend_to=None)
+    assert path.kind == CollapseKind.FILL_HELD and len(path.hinges) < 4
+    assert static_load_path(passive_case("paper", 0.0), descend_to=None).kind == CollapseKind.MECHANISM
 
 
 @pytest.mark.parametrize(

@@ -34,8 +34,7 @@ def test_the_fills_weight_is_its_volume_above_the_extrados_and_its_thrust_rankin
     case = _filled()
     geometry = arch_geometry(case)
     fill = backfill(case)
-    centroids = static_arch(case).centroid0
-    points = backfill_points(geometry, centroids, fill)
+    points = backfill_points(geometry, fill)
     surface = fill_surface(geometry, fill)
     # the region between the level surface and the extrados polyline, by the shoelace formula
     extrados = np.array([j.extrados[:2] for j in geometry.joints[:-1]] + [geometry.joints[-1].extrados[:2]])

@@ -10,6 +10,7 @@ import math
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import differenced_tangent
 
 from yadearch.case.config import preset
 from yadearch.case.mechanics import runaway_length
@@ -50,14 +51,7 @@ def test_the_live_load_adds_its_own_stiffness_to_the_tangent():
     multiplier = 5.0
     _, _, band = arch.free_state(u, state.u, shear, multiplier=multiplier)
     stiffness = banded.to_dense(band)
-    differences = np.empty_like(stiffness)
-    for column, k in enumerate(arch.free_dofs):
-        up, down = u.copy(), u.copy()
-        up[k] += FD_STEP
-        down[k] -= FD_STEP
-        forward = arch.free_state(up, state.u, shear, multiplier=multiplier)[1]
-        backward = arch.free_state(down, state.u, shear, multiplier=multiplier)[1]
-        differences[:, column] = -(forward - backward) / (2.0 * FD_STEP)
+    differences = differenced_tangent(arch, u, state.u, shear, FD_STEP, multiplier=multiplier)
     _, _, unloaded = arch.free_state(u, state.u, shear)
     load_part = stiffness - banded.to_dense(unloaded)
     assert np.abs(load_part).max() > 0.0  # the load's own stiffness is there ...

@@ -40,8 +40,7 @@ class DeadLoadDriver:
         self._loaded_loads = loads[self.loaded]  # read every step
         self.body_ids = [scene.body_ids[b] for b in self.loaded]
         self.passive = passive
-        self.pushed = np.unique(passive[:, 0].astype(int))  # the blocks the passive springs act on
-        self.pushed_ids = [scene.body_ids[b] for b in self.pushed]
+        self.resists = len(passive) > 0  # the fill has passive springs on the blocks
         self.share = 0.0  # gravity's share of its full value at the last step
 
     def install(self) -> None:
@@ -54,17 +53,18 @@ class DeadLoadDriver:
     def step(self) -> None:
         """This step's share of the loads: forces and turned moments added to the blocks."""
         share = -float(self.scene.newton.gravity[1]) / self.full_gravity
-        if share != self.share or len(self.pushed):
+        if share != self.share or self.resists:
             self.share = share
             self.contacts.dead_external = share * self.loads[:, 0:2]
         if share == 0.0:
             return
         poses = self.contacts.poses
         add_block_loads(self.body_ids, share * self._loaded_loads, poses[self.loaded, 2])
-        if len(self.pushed):
-            pushes = block_forces(scaled(self.passive, share), poses)[self.pushed]
-            self.contacts.dead_external[self.pushed, 0] += pushes[:, 0]
-            add_block_pushes(self.pushed_ids, pushes)
+        if self.resists:
+            pushes = block_forces(scaled(self.passive, share), poses)
+            pushing = np.flatnonzero(pushes[:, 0])  # a face not pushed into the fill takes nothing
+            self.contacts.dead_external[pushing, 0] += pushes[pushing, 0]
+            add_block_pushes([self.scene.body_ids[b] for b in pushing], pushes[pushing])
 
     def turning(self) -> np.ndarray:
         """The loads' own rotational stiffness on each block now (N m/rad), for the stability test."""
@@ -73,7 +73,7 @@ class DeadLoadDriver:
     def passive_stiffness(self, poses: np.ndarray, lever: float) -> np.ndarray | None:
         """The passive springs' tangent at `poses` on every block's x, y and rotation x `lever` (N/m; None
         without springs), for the stability test."""
-        return block_stiffness(scaled(self.passive, self.share), poses, lever) if len(self.pushed) else None
+        return block_stiffness(scaled(self.passive, self.share), poses, lever) if self.resists else None
 
     @property
     def vertical(self) -> float:
@@ -87,7 +87,7 @@ def install_dead_loads(scene: ArchScene, case: ArchCase) -> DeadLoadDriver | Non
     if not fill.present:
         return None
     centroids = scene.pos0[:, 0:2]
-    loads = block_loads(backfill_points(scene.geometry, centroids, fill), centroids, len(scene.body_ids))
+    loads = block_loads(backfill_points(scene.geometry, fill), centroids, len(scene.body_ids))
     passive = passive_springs(scene.geometry, centroids, fill)
     driver = DeadLoadDriver(scene, loads, case.loading.gravity_m_per_s2, passive)
     driver.install()

@@ -202,12 +202,12 @@ class Runner:
 
     def smallest_stiffness(self, live: np.ndarray | None = None) -> float:
         """The smallest eigenvalue of the free blocks' tangent stiffness at the scene's poses (N/m), with
-        the rotational stiffness of the loads on the blocks: the dead loads' and the live load's (`live`,
-        or the one the run holds, `recorder.turning`)."""
+        the rotational stiffness of the loads on the blocks (the dead loads', the live load's: `live`, or
+        the one the run holds, `recorder.turning`) and the fill's passive springs'."""
         held, dead = self.recorder.turning, self.dead_loads
         parts = [t for t in (live, held() if held else None, dead.turning() if dead else None) if t is not None]
-        springs = dead.passive_stiffness if dead else None
-        return self.scene.contacts.smallest_stiffness(np.sum(parts, axis=0) if parts else None, springs)
+        turning = np.sum(parts, axis=0) if parts else None
+        return self.scene.contacts.smallest_stiffness(turning, dead.passive_stiffness if dead else None)
 
     def reach(self, increment: float) -> float:
         """A support increment moves the blocks it carries at most by as much (m)."""

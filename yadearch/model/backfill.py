@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from yadearch.model.geometry import ArchGeometry
-from yadearch.model.loads import LoadPoints, extrados_segments
+from yadearch.model.loads import LoadPoints, extrados_chain, extrados_segments
 
 
 @dataclass(frozen=True)
@@ -43,11 +43,11 @@ def fill_surface(geometry: ArchGeometry, fill: Backfill) -> float:
     return max(max(float(a[1]), float(b[1])) for _, a, b in extrados_segments(geometry)) + fill.depth
 
 
-def backfill_points(geometry: ArchGeometry, centroids: np.ndarray, fill: Backfill) -> LoadPoints:
+def backfill_points(geometry: ArchGeometry, fill: Backfill) -> LoadPoints:
     """The fill's loads on the voussoirs as point forces (none without fill): on each face of
     `fill_faces`, its weight down and K x its pressure resultant toward the voussoir."""
     blocks, points, forces = [], [], []
-    for face in fill_faces(geometry, centroids, fill):
+    for face in fill_faces(geometry, fill):
         forces.append((face.inward * fill.lateral_coefficient * face.mean * face.height, -face.mean * face.width))
         blocks.append(face.block)
         points.append(face.point)
@@ -70,7 +70,7 @@ class FillFace:
     inward: float
 
 
-def fill_faces(geometry: ArchGeometry, centroids: np.ndarray, fill: Backfill) -> list[FillFace]:
+def fill_faces(geometry: ArchGeometry, fill: Backfill) -> list[FillFace]:
     """The extrados faces the fill stands on (none without fill): for each face between its joints'
     extrados corners a and b, with fill heights h_a and h_b above them, the weight unit_weight x depth
     x (h_a + h_b) / 2 x |b_x - a_x| and the pressure resultant per unit K, unit_weight x depth x
@@ -79,12 +79,15 @@ def fill_faces(geometry: ArchGeometry, centroids: np.ndarray, fill: Backfill) ->
         return []
     surface = fill_surface(geometry, fill)
     faces = []
-    for block, a, b in extrados_segments(geometry):
-        h_a, h_b = max(surface - float(a[1]), 0.0), max(surface - float(b[1]), 0.0)
-        if h_a + h_b == 0.0:
-            continue
-        mean = 0.5 * (h_a + h_b) * fill.unit_weight * geometry.depth
-        point = a + (h_a + 2.0 * h_b) / (3.0 * (h_a + h_b)) * (b - a)
-        inward = -float(np.sign(point[0] - centroids[block, 0]))  # the fill pushes the face toward the block
-        faces.append(FillFace(block, point, mean, abs(b[0] - a[0]), abs(b[1] - a[1]), inward))
+    for block in range(1, len(geometry.blocks) - 1):
+        chain = extrados_chain(geometry, block)  # from the left joint's corner to the right one's, the ring below
+        for p, q in zip(chain[:-1], chain[1:]):
+            a, b = (p, q) if p[0] <= q[0] else (q, p)
+            h_a, h_b = max(surface - float(a[1]), 0.0), max(surface - float(b[1]), 0.0)
+            if h_a + h_b == 0.0:
+                continue
+            mean = 0.5 * (h_a + h_b) * fill.unit_weight * geometry.depth
+            point = a + (h_a + 2.0 * h_b) / (3.0 * (h_a + h_b)) * (b - a)
+            inward = float(np.sign(q[1] - p[1]))  # the fill faces the chain's left side: a rise is pushed to +x
+            faces.append(FillFace(block, point, mean, abs(b[0] - a[0]), abs(b[1] - a[1]), inward))
     return faces

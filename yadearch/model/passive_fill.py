@@ -34,7 +34,7 @@ def passive_springs(geometry: ArchGeometry, centroids: np.ndarray, fill: Backfil
         return np.zeros((0, SPRING_COLUMNS))
     extra = fill.passive_coefficient - fill.lateral_coefficient
     rows = []
-    for face in fill_faces(geometry, centroids, fill):
+    for face in fill_faces(geometry, fill):
         capacity = extra * face.mean * face.height
         if capacity == 0.0:
             continue
@@ -104,13 +104,14 @@ def add_passive(residual, stiffness, springs, pos, rot, lever, band):
         stiffness[band, row + 2] += turning
 
 
-def block_forces(springs: np.ndarray, poses: np.ndarray) -> np.ndarray:
+@njit(cache=True)
+def block_forces(springs, poses):
     """(n_blocks, 3) the springs' force x, force y (none) and moment about each centroid at `poses`
-    (n_blocks, 3: x, y, rotation), as the DEM puts them on its bodies."""
+    (n_blocks, 3: x, y, rotation), as the DEM puts them on its bodies every step (compiled whole)."""
     out = np.zeros((poses.shape[0], 3))
-    for spring in springs:
-        b = int(spring[BLOCK])
-        force, moment, *_ = spring_terms(spring, poses[b, 0], poses[b, 2], 1.0)
+    for k in range(springs.shape[0]):
+        b = int(springs[k, BLOCK])
+        force, moment, _, _, _ = spring_terms(springs[k], poses[b, 0], poses[b, 2], 1.0)
         out[b, 0] += force
         out[b, 2] += moment
     return out

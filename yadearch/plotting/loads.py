@@ -19,6 +19,8 @@ RESIDUAL_HEIGHT_CM = 8.0  # its legend sits above the axes
 ENGINES_ROW_CM = 0.45  # the engines figure's height per case
 DESCENT_ROW_CM = 6.0  # the descent figure's height per row of panels
 PASSIVE_HEIGHT_CM = 8.0
+LEGEND_ROOM = 1.45  # panel (a)'s height over its largest capacity: the legend sits above the curves
+PASSIVE_ARCHES = (("small", "o"), ("paper", "s"))  # the passive study's arches by case prefix, and their markers
 PASSIVE_SERIES = (  # column of the passive study's capacities, colour, legend
     ("rigid_N", "k", "rigid LP"),
     ("stiff_static_N", "C2", "static, kn 1e5"),
@@ -170,25 +172,37 @@ def plot_descent(paths: dict[str, tuple[LoadPath, LoadPath | None]], stem: Path)
 
 
 @house_style
-def plot_passive(capacities: pd.DataFrame, mobilisation: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
+def plot_passive(
+    capacities: pd.DataFrame, mobilisation: pd.DataFrame, without_N: float, stem: Path
+) -> tuple[Path, Path]:
     """STEM.pdf and .png: (a) each arch's capacity against the fill's passive coefficient Kp in the rigid
-    LP, the static engine nearly rigid and at kn 5.2, and the DEM; (b) the paper's arch's static capacity
-    against the spring's mobilisation displacement, beside the rigid LP's."""
+    LP, the static engine nearly rigid and at kn 5.2, and the DEM (colour: solver, marker: arch); (b) the
+    paper's arch's static capacity against the spring's mobilisation displacement, between the rigid LP's
+    and the static engine's without passive resistance (`without_N`)."""
+    from matplotlib.lines import Line2D
+
     fig = new_figure(height_cm=PASSIVE_HEIGHT_CM, width_cm=2 * COLUMN_CM)
     ax, swept = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
-    for arch, marker in (("small", "o"), ("paper", "s")):
+    for arch, marker in PASSIVE_ARCHES:
         rows = capacities[capacities["case"].str.startswith(arch)]
-        for column, colour, label in PASSIVE_SERIES:
+        for column, colour, _ in PASSIVE_SERIES:
             shown = rows.dropna(subset=[column])
-            ax.plot(shown["kp"], shown[column], f"{marker}{'' if column == 'dem_N' else '-'}", ms=3, mfc="none",
-                    mew=0.7, lw=0.8, color=colour, label=f"{label}, {arch} arch")  # fmt: skip
+            style = marker if column == "dem_N" else f"{marker}-"
+            ax.plot(shown["kp"], shown[column], style, ms=3.5, mfc="none", mew=0.7, lw=0.8, color=colour)
+    handles = [Line2D([], [], color=colour, lw=0.8, label=label) for _, colour, label in PASSIVE_SERIES]
+    handles += [
+        Line2D([], [], color="0.4", ls="none", marker=m, mfc="none", label=f"{a} arch") for a, m in PASSIVE_ARCHES
+    ]
+    ax.legend(handles=handles, loc="upper left", ncol=2, frameon=False)
+    ax.set_ylim(0.0, LEGEND_ROOM * float(np.nanmax(capacities[[c for c, _, _ in PASSIVE_SERIES]].to_numpy(float))))
+    ax.set_title("(a) capacity against Kp", loc="left")
     ax.set_xlabel("passive coefficient Kp (-)")
     ax.set_ylabel("collapse load (N)")
-    ax.set_ylim(bottom=0.0)
-    ax.legend(loc="upper left", frameon=False, fontsize=7, ncol=1)
     swept.semilogx(mobilisation["u_p_mm"], mobilisation["static_N"], "o-", ms=3, lw=0.8, color="C0",
-                   label=f"{ENGINE_NAMES['static']}, kn 5.2 N/mm³")  # fmt: skip
-    swept.axhline(float(mobilisation["rigid_N"].iloc[0]), color="k", lw=0.8, ls="--", label="rigid LP")
+                   label="static, kn 5.2, Kp 1")  # fmt: skip
+    swept.axhline(float(mobilisation["rigid_N"].iloc[0]), color="k", lw=0.8, ls="--", label="rigid LP, Kp 1")
+    swept.axhline(without_N, color="C0", lw=0.8, ls=":", label="static, kn 5.2, no passive push")
+    swept.set_title("(b) the paper's arch against u_p", loc="left")
     swept.set_xlabel("mobilisation displacement u_p (mm)")
     swept.set_ylabel("collapse load (N)")
     swept.set_ylim(bottom=0.0)

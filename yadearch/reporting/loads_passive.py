@@ -13,11 +13,14 @@ from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.markdown import markdown_table
 from yadearch.plotting.loads import plot_passive
 from yadearch.studies.loads.passive import (
+    FILLS_MM,
     LATERAL_COEFFICIENT,
     STIFF,
     SWEPT_KP,
     capacity_table,
+    dem_numerics_table,
     mobilisation_table,
+    passive_case,
     settlement_table,
 )
 
@@ -28,22 +31,33 @@ RUNS_FOLDER = "runs"  # the DEM's load paths and the settling runs, under the re
 
 def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> Path:
     """Run the study (the DEM `jobs` at a time; what OUT/runs holds is read back) and write capacities.csv,
-    mobilisation.csv, settlement.csv, passive.pdf/.png and passive.md into `out`; the report's path."""
+    dem_numerics.csv, mobilisation.csv, settlement.csv, passive.pdf/.png and passive.md into `out`; the
+    report's path."""
     out.mkdir(parents=True, exist_ok=True)
     capacities = capacity_table(out / RUNS_FOLDER, jobs, log)
+    numerics = dem_numerics_table(out / RUNS_FOLDER, jobs, log)
     mobilisation = mobilisation_table()
     settlement = settlement_table(out / RUNS_FOLDER, log)
-    write_csv_atomically(out / "capacities.csv", capacities)
-    write_csv_atomically(out / "mobilisation.csv", mobilisation)
-    write_csv_atomically(out / "settlement.csv", settlement)
-    plot_passive(capacities, mobilisation, out / "passive")
+    tables = {
+        "capacities": capacities,
+        "dem_numerics": numerics,
+        "mobilisation": mobilisation,
+        "settlement": settlement,
+    }
+    for name, table in tables.items():
+        write_csv_atomically(out / f"{name}.csv", table)
+    without = capacities.loc[capacities["case"] == passive_case("paper", 0.0).name, "static_N"].iloc[0]
+    plot_passive(capacities, mobilisation, float(without), out / "passive")
     path = out / "passive.md"
-    write_text_atomically(path, passive_markdown(capacities, mobilisation, settlement))
+    write_text_atomically(path, passive_markdown(capacities, numerics, mobilisation, settlement))
     return path
 
 
-def passive_markdown(capacities: pd.DataFrame, mobilisation: pd.DataFrame, settlement: pd.DataFrame) -> str:
-    """The report: the capacities in the three solvers, the mobilisation sweep, the settling arch."""
+def passive_markdown(
+    capacities: pd.DataFrame, numerics: pd.DataFrame, mobilisation: pd.DataFrame, settlement: pd.DataFrame
+) -> str:
+    """The report: the capacities in the three solvers, the DEM's numerics varied, the mobilisation sweep,
+    the settling arch."""
     capacities = capacities.fillna({"dem_failure": "", "dem_hinges": ""})
     engines = capacities.dropna(subset=["dem_N"])
     within = int(((engines["dem_N"] / engines["static_N"] - 1.0).abs() <= ENGINES_TOLERANCE).sum())
@@ -53,11 +67,15 @@ def passive_markdown(capacities: pd.DataFrame, mobilisation: pd.DataFrame, settl
     lines = [
         "# The fill's passive resistance in the three solvers",
         "",
-        f"A point load through the fill (K {LATERAL_COEFFICIENT:g} at rest) on a 15-voussoir segmental arch (20 mm",
-        "of fill, the load at 0.3 of the span, friction 80 deg) and on the paper's arch (50 mm, the quarter span),",
+        f"A point load through the fill (K {LATERAL_COEFFICIENT:g} at rest) on a 15-voussoir segmental arch "
+        f"({FILLS_MM['small']:g} mm",
+        "of fill, the load at 0.3 of the span, friction 80 deg) and on the paper's arch "
+        f"({FILLS_MM['paper']:g} mm, the quarter span),",
         "with the fill's passive coefficient Kp 0 (none), 1 and 3 (docs/loads.md, \"The fill's passive",
         "resistance\"). The rigid LP mobilises each face's passive push up to its capacity; the static engine",
-        "and the DEM push with a spring that reaches it after u_p = 1 mm of the face's movement into the fill.",
+        "and the DEM push with a spring that reaches it after u_p = "
+        f"{passive_case('paper', SWEPT_KP).loads.fill_passive_displacement_mm:g} mm of the face's movement into "
+        "the fill.",
         "Regenerate with `.venv/bin/python scripts/loads_passive.py --out reports/loads/passive` (minutes of",
         f"two cores; the DEM's files are kept in {RUNS_FOLDER}/ and read back by a rerun).",
         "",
@@ -96,6 +114,26 @@ def passive_markdown(capacities: pd.DataFrame, mobilisation: pd.DataFrame, settl
             ),
         ),
         "",
+        f"## The DEM's numerics halved and doubled (the small arch, Kp {SWEPT_KP:g})",
+        "",
+        f"Largest move from the default: {_percent(numerics['relative_to_default'].abs().max())} "
+        "(dem_numerics.csv). The DEM's capacity is the middle of its last bracket, from the largest load it",
+        f"held to the first it lost ({_percent(_bracket(numerics))} of it wide at the default): a variant",
+        "that holds and loses the same increments gives it to the bit.",
+        "",
+        *markdown_table(
+            ["variant", "DEM (N)", "against the default", "hinges"],
+            (
+                [
+                    r.variant.replace("_", " "),
+                    _number(r.dem_N),
+                    _percent(r.relative_to_default),
+                    r.dem_hinges or r.dem_failure,
+                ]  # fmt: skip
+                for r in numerics.itertuples()
+            ),
+        ),
+        "",
         f"## The mobilisation displacement (the paper's arch, Kp {SWEPT_KP:g}, static engine at kn 5.2)",
         "",
         "u_p is the fill's, not the solver's: how far a face moves into the fill to mobilise its whole passive",
@@ -127,6 +165,12 @@ def passive_markdown(capacities: pd.DataFrame, mobilisation: pd.DataFrame, settl
         "",
     ]
     return "\n".join(lines)
+
+
+def _bracket(numerics: pd.DataFrame) -> float:
+    """The default DEM run's last bracket over its capacity: twice the gap from its largest held load."""
+    default = numerics.iloc[0]
+    return 2.0 * (default["dem_N"] - default["dem_held_N"]) / default["dem_N"]
 
 
 def _number(value: float | None) -> str:

@@ -157,7 +157,7 @@ class RunSummary:
     du_first_mm: float | None = None  # the first loss of stability on the path (a fold or a snap)
     du_first_bracket_mm: tuple[float, float] | None = None
     collapse_verdict: str | None = None
-    collapse_kind: str | None = None  # analysis.collapse_kind: four-hinge mechanism, snap-through, sliding
+    collapse_kind: str | None = None  # solve.collapse_mode.CollapseKind: mechanism, snap-through, fill-held, sliding
     collapse_mode_hinges: list[str] | None = None  # joints that turn in the fold's softest mode
     du_components_mm: tuple[float, float] | None = None
     du_rotation_mrad: float | None = None

@@ -25,6 +25,8 @@ def rigid_softening(case: ArchCase, hinges: tuple[str, ...], turns: np.ndarray) 
     mechanism `hinges` (four labels, e.g. ("3I", "6E", "12I", "16E")) at each of the first segment's
     `turns` (rad, >= 0, taken the way the live load does work). LimitError where the chain cannot close."""
     rigid, arch = rigid_arch(case), static_arch(case)
+    if len(rigid.passive):
+        raise LimitError("the rigid mechanism's softening counts the weights' work only, not the fill's passive pushes")
     pivots = tuple(parse_pivot(h) for h in hinges)
     magnitude = float(np.hypot(arch.live[:, 0], arch.live[:, 1]).sum())
 

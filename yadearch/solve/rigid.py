@@ -74,7 +74,7 @@ def rigid_arch(case: ArchCase) -> RigidArch:
     weight = np.array([unit_weight * block_volume(b) for b in geometry.blocks])
     centroid0 = np.array([polygon_centroid(front_face(b)) for b in geometry.blocks])
     fill_case = backfill(case)
-    fill = backfill_points(geometry, centroid0, fill_case)
+    fill = backfill_points(geometry, fill_case)
     live = live_load_points(geometry, centroid0, weight, live_load(case, geometry))
     held = held_multiplier(case)
     joints = geometry.joints

@@ -27,7 +27,7 @@ from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, joint_tangent
 from yadearch.model.joints import rotate
 from yadearch.model.loads import block_loads, live_load_points, turned_moments
 from yadearch.model.movement import Movement
-from yadearch.model.passive_fill import passive_springs, scaled
+from yadearch.model.passive_fill import block_forces, passive_springs, scaled
 from yadearch.solve import banded
 from yadearch.solve.newton_kernel import descent_kernel, newton_kernel
 
@@ -144,6 +144,11 @@ class StaticArch:
         loads = gravity * self.dead + multiplier * self.live
         return loads, (1.0 if loads.any() else 0.0), scaled(self.passive, gravity)
 
+    def passive_forces(self, u: np.ndarray) -> np.ndarray:
+        """(n_blocks, 3) the fill's passive pushes on every block at `u` (force x, y, moment; full gravity)."""
+        pos, rot = self.poses(u)
+        return block_forces(self.passive, np.column_stack([pos, rot]))
+
     @functools.cached_property
     def kernel(self) -> tuple:
         """The joint table and law as the compiled kernels take them (`model.block_state.kernel_table`)."""
@@ -186,7 +191,7 @@ def static_arch(case: ArchCase) -> StaticArch:
         movement=case_movement(case, geometry),
         imperfections=imperfections,
         live=block_loads(points, centroid0, len(weight)),
-        dead=block_loads(backfill_points(geometry, centroid0, fill), centroid0, len(weight)),
+        dead=block_loads(backfill_points(geometry, fill), centroid0, len(weight)),
         passive=passive_springs(geometry, centroid0, fill),
     )
 

@@ -15,10 +15,13 @@ import pandas as pd
 from yadearch.case.config import ArchCase, preset
 from yadearch.errors import YadearchError
 from yadearch.launch.load_process import run_load_process
+from yadearch.launch.process import run_case_process
 from yadearch.results.load_path import stored_load_path
+from yadearch.results.reuse import case_differences
+from yadearch.results.rundir import is_complete, read_summary
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import static_load_path
-from yadearch.studies.loads.engines import ENGINES_KN
+from yadearch.studies.loads.engines import ENGINES_KN, NUMERICS_VARIANTS, setting_value
 from yadearch.studies.loads.held import SMALL
 from yadearch.studies.loads.rigid import mechanism_check
 
@@ -74,6 +77,38 @@ def capacity_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print)
         return pd.DataFrame(list(pool.map(row, cases)))
 
 
+def dem_numerics_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> pd.DataFrame:
+    """The small arch at Kp SWEPT_KP in the DEM with each of its numerics halved and doubled (the loading
+    rate, damping, time step: `studies.loads.engines.NUMERICS_VARIANTS`): a row a variant, its capacity
+    against the default's (files under `out`, read back when there)."""
+    default = passive_case("small", SWEPT_KP)
+    variants = [("default", default)]
+    for setting, factor in NUMERICS_VARIANTS:
+        variant = f"{setting.split('.')[-1]}_x{factor:g}"
+        changed = {setting: setting_value(default, setting) * factor, "name": f"{default.name}_{variant}"}
+        variants.append((variant, default.with_overrides(changed)))
+
+    def row(item: tuple[str, ArchCase]) -> dict:
+        variant, case = item
+        try:
+            dem = stored_load_path(out, case, 0.0) or run_load_process(case, out)
+        except YadearchError as exc:
+            return {"variant": variant, "dem_N": None, "dem_hinges": "", "dem_failure": str(exc)}
+        log(f"{case.name}: DEM {dem.capacity:.3f} N")
+        return {
+            "variant": variant,
+            "dem_N": dem.capacity,
+            "dem_held_N": dem.reach,
+            "dem_hinges": " ".join(dem.hinges),
+            "dem_failure": "",
+        }
+
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        table = pd.DataFrame(list(pool.map(row, variants)))
+    table["relative_to_default"] = table["dem_N"] / table["dem_N"].iloc[0] - 1.0
+    return table
+
+
 def mobilisation_table() -> pd.DataFrame:
     """The paper's arch at Kp SWEPT_KP: the static capacity (kn 5.2) for each u_p, beside the rigid LP's."""
     rigid = load_analysis(passive_case("paper", SWEPT_KP)).multiplier
@@ -94,14 +129,16 @@ def _mechanism(case: ArchCase) -> float | None:
 def settlement_table(out: Path, log: Callable[[str], None] = print) -> pd.DataFrame:
     """The paper's arch under its fill settling to collapse, without and with the passive resistance
     (Kp SWEPT_KP), on both engines (run folders under `out`; finished ones read back): a row a run."""
-    from yadearch.api.runs import run
-
     rows = []
     for kp in (0.0, SWEPT_KP):
-        case = passive_case("paper", kp, live_load="none", name=f"paper_settling_kp{kp:g}")
         for engine in ("static", "dem"):
+            case = passive_case("paper", kp, live_load="none", name=f"paper_settling_kp{kp:g}")
+            case = case.with_overrides({"numerics.engine": engine})
+            folder = out / f"{case.name}_{engine}"
             try:
-                summary = run(case, out / f"{case.name}_{engine}", figures=False, quiet=True, engine=engine).summary
+                if not (is_complete(folder) and not case_differences(folder, case)):
+                    run_case_process(case, folder, quiet=True)
+                summary = read_summary(folder)
             except YadearchError as exc:
                 rows.append({"case": case.name, "kp": kp, "engine": engine, "failure": str(exc)})
                 continue
