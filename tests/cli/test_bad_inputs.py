@@ -409,3 +409,13 @@ def test_limit_refuses_kn_without_compliant_before_the_analysis(tmp_path, capsys
     assert err.count("\n") == 1
     assert main(["limit", "--preset", "set2", "--kn", "100", "--compliant", "--out", str(tmp_path)]) == 1
     assert capsys.readouterr().err.startswith("error: the analysis started")
+
+
+def test_the_rigid_load_capacity_refuses_the_fills_spring_in_one_line(capsys):
+    """Rigid blocks mobilise the fill's passive pressure at once: u_p is the static engine's and the DEM's."""
+    args = ["loads", "--preset", "set2", "--set", "live_load=vertical", "--set", "fill_depth_mm=50"]
+    args += ["--set", "fill_passive_coefficient=1", "--set", "fill_passive_displacement_mm=2"]
+    assert main(args) == 1
+    err = capsys.readouterr().err
+    assert err.startswith("error: --set fill_passive_displacement_mm plays no part in the rigid-block analysis")
+    assert err.count("\n") == 1

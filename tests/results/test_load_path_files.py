@@ -3,6 +3,7 @@ answer, and a study resumes only from the files of the very same case and settle
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -90,6 +91,17 @@ def test_a_study_resumes_only_from_the_same_case_and_settlement(tmp_path):
     assert stored_load_path(tmp_path, CASE.with_overrides({"interface.kn_N_per_mm3": 0.25}), 0.0) is None
     load_path_file(tmp_path, CASE.name, ".csv").unlink()
     assert stored_load_path(tmp_path, CASE, 0.0) is None  # half a result is no result
+
+
+def test_a_study_resumes_from_a_path_stored_before_a_parameter_was_added(tmp_path):
+    """A stored case without a parameter added since is the case with that parameter at its old value."""
+    write_load_path(tmp_path, _path("dem"), CASE)
+    file = load_path_file(tmp_path, CASE.name, ".json")
+    data = json.loads(file.read_text())
+    del data["case"]["loads"]["fill_passive_coefficient"]  # a path written before the fill's passive push
+    file.write_text(json.dumps(data))
+    assert stored_load_path(tmp_path, CASE, 0.0) is not None
+    assert stored_load_path(tmp_path, CASE.with_overrides({"fill_passive_coefficient": 1.0}), 0.0) is None
 
 
 def _states(load: tuple[float, str] | None) -> list[dict]:

@@ -78,10 +78,13 @@ def _refuse_dem_numerics(keys: list[str]) -> None:
         )
 
 
+PASSIVE_DISPLACEMENT_KEY = "fill_passive_displacement_mm"  # the fill's spring, which rigid blocks do not have
+
+
 def refuse_unread(settings: tuple[str, ...], kn: float | None, engine: str, compliant: bool = False) -> None:
     """UsageError in one line when --set (or --kn) names a parameter `engine` does not read: the
-    rigid-block analysis reads no numerics and, unless `compliant`, no joint stiffness; the static
-    engine reads no DEM numerics."""
+    rigid-block analysis reads no numerics, no fill spring and, unless `compliant`, no joint stiffness;
+    the static engine reads no DEM numerics."""
     from yadearch.case.config import parameter_section
     from yadearch.results.summary import STATIC
 
@@ -102,6 +105,11 @@ def refuse_unread(settings: tuple[str, ...], kn: float | None, engine: str, comp
         if section == "numerics" or (section == "interface" and not compliant):
             why = "a numerical setting of the engines" if section == "numerics" else "the joints are rigid"
             raise click.UsageError(f"--set {key} plays no part in the rigid-block analysis ({why}); drop it")
+        if key.split(".")[-1] == PASSIVE_DISPLACEMENT_KEY:
+            raise click.UsageError(
+                f"--set {key} plays no part in the rigid-block analysis (it mobilises the fill's passive "
+                "pressure at once); drop it, or use --engine static or dem for the fill's spring"
+            )
 
 
 def figures_option(what: str) -> Callable[[Any], Any]:

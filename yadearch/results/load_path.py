@@ -14,6 +14,7 @@ from typing import Any
 import pandas as pd
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
+from yadearch.case.comparison import as_ran
 from yadearch.case.config import ArchCase
 from yadearch.errors import RunFolderError
 from yadearch.results.rundir import (
@@ -164,13 +165,16 @@ def read_curve(file: Path) -> pd.DataFrame:
 
 
 def stored_load_path(folder: Path, case: ArchCase, after_mm: float, engine: str = "dem") -> LoadPath | None:
-    """The load path `folder` already holds for this very case, settlement and engine (a study
-    resumed), or None."""
+    """The load path `folder` already holds for this very case (as it ran: `case.comparison.as_ran`),
+    settlement and engine (a study resumed), or None."""
     try:
         data = json.loads(load_path_file(folder, case.name, ".json").read_text())
     except (OSError, ValueError):
         return None
-    if data.get("case") != case.to_dict() or data.get("after_mm") != after_mm or data.get("engine") != engine:
+    stored = data.get("case")
+    if not isinstance(stored, dict) or data.get("after_mm") != after_mm or data.get("engine") != engine:
+        return None
+    if as_ran(stored) != as_ran(case.to_dict()):  # what each runs with: a parameter added since at its old value
         return None
     if not load_path_file(folder, case.name, ".csv").is_file():
         return None

@@ -29,6 +29,7 @@ DESCENT_CASES = (  # of `studies.loads.engines.engine_cases`: a small arch, the 
     "paper_quarter_span",
     "paper_quarter_span_set1",
     "semicircle_t60_acceleration",
+    "paper_quarter_span_after_44mm",  # movement, then load: half the paper's du (87.99 mm) settled first
 )
 VARIED_CASE = DESCENT_CASES[0]  # the numerics halved and doubled on this one
 CONTROL_VARIANTS = (
@@ -48,6 +49,7 @@ class DescentRun:
     control: DisplacementControl
     variant: str = DEFAULT
     name: str = ""  # the case varied (its own name where "")
+    after_mm: float = 0.0  # the support's movement before the load
 
     @property
     def label(self) -> str:
@@ -58,10 +60,10 @@ class DescentRun:
 def descent_runs() -> list[DescentRun]:
     """DESCENT_CASES at the default control, then VARIED_CASE with each control setting and each of the
     DEM's numerics (`studies.loads.engines.NUMERICS_VARIANTS`) halved and doubled."""
-    chosen = {case.name: case for case, after_mm in engine_cases() if after_mm == 0.0}
+    chosen = {case.name: (case, after_mm) for case, after_mm in engine_cases()}
     control = DisplacementControl(DESCEND_TO)
-    runs = [DescentRun(chosen[name], control) for name in DESCENT_CASES]
-    varied = chosen[VARIED_CASE]
+    runs = [DescentRun(chosen[name][0], control, after_mm=chosen[name][1]) for name in DESCENT_CASES]
+    varied = chosen[VARIED_CASE][0]
     for setting, factor in CONTROL_VARIANTS:
         changed = replace(control, **{setting: getattr(control, setting) * factor})
         runs.append(DescentRun(varied, changed, f"{setting}_x{factor:g}", VARIED_CASE))
@@ -81,13 +83,17 @@ def descent_tables(
     those already there are read back): a row a run, a row a DEM state past the peak with the static
     branch's load at its displacement, and the two engines' paths of each default run by case. A DEM
     run that fails is a row with its reason."""
-    statics = {run.case.name: static_load_path(run.case, descend_to=run.control.descend_to) for run in runs}
+    statics = {
+        run.case.name: static_load_path(run.case, run.after_mm, descend_to=run.control.descend_to) for run in runs
+    }
 
     def both(run: DescentRun) -> tuple[dict, pd.DataFrame, LoadPath | None]:
         static = statics[run.case.name]
         folder = out / _folder(run.control)
         try:
-            dem = stored_load_path(folder, run.case, 0.0) or run_load_process(run.case, folder, descent=run.control)
+            dem = stored_load_path(folder, run.case, run.after_mm) or run_load_process(
+                run.case, folder, run.after_mm, descent=run.control
+            )
         except YadearchError as exc:
             return _row(run, static, None, pd.DataFrame(), str(exc)), pd.DataFrame(), None
         states = _states(run, static, dem)
