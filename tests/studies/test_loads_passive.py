@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from yadearch.reporting.loads_passive import passive_markdown
+from yadearch.reporting.loads_passive import grid_markdown, passive_markdown
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import static_load_path
 from yadearch.studies.loads.passive import mobilisation_table, passive_case
@@ -69,3 +69,15 @@ def test_the_report_counts_the_engines_within_one_per_cent():
     assert "Static and DEM within 1 % in 1 of 2 cases" in text
     assert "within 2 % of the rigid LP in 1 of 2" in text
     assert "Largest move from the default: 0.50 %" in text and "(0.25 % of it wide" in text
+
+
+def test_the_grid_report_counts_outcomes_and_names_each_error():
+    grid = pd.DataFrame(
+        [
+            {"kp": 1.0, "u_p_mm": 1.0, "kn_N_per_mm3": 5.2, "test": "load", "outcome": "collapse", "error": ""},
+            {"kp": 3.0, "u_p_mm": 1.0, "kn_N_per_mm3": 5.2, "test": "settlement", "outcome": "error", "error": "boom"},
+        ]
+    )
+    text = grid_markdown(grid)
+    assert "load collapse 1; settlement error 1; errors 1." in text
+    assert "- settlement Kp 3 u_p 1 kn 5.2: boom" in text

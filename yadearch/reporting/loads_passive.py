@@ -19,6 +19,7 @@ from yadearch.studies.loads.passive import (
     SWEPT_KP,
     capacity_table,
     dem_numerics_table,
+    grid_table,
     mobilisation_table,
     passive_case,
     settlement_table,
@@ -31,25 +32,27 @@ RUNS_FOLDER = "runs"  # the DEM's load paths and the settling runs, under the re
 
 def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> Path:
     """Run the study (the DEM `jobs` at a time; what OUT/runs holds is read back) and write capacities.csv,
-    dem_numerics.csv, mobilisation.csv, settlement.csv, passive.pdf/.png and passive.md into `out`; the
-    report's path."""
+    dem_numerics.csv, mobilisation.csv, settlement.csv, grid.csv, passive.pdf/.png and passive.md into
+    `out`; the report's path."""
     out.mkdir(parents=True, exist_ok=True)
     capacities = capacity_table(out / RUNS_FOLDER, jobs, log)
     numerics = dem_numerics_table(out / RUNS_FOLDER, jobs, log)
     mobilisation = mobilisation_table()
     settlement = settlement_table(out / RUNS_FOLDER, log)
+    grid = grid_table()
     tables = {
         "capacities": capacities,
         "dem_numerics": numerics,
         "mobilisation": mobilisation,
         "settlement": settlement,
+        "grid": grid,
     }
     for name, table in tables.items():
         write_csv_atomically(out / f"{name}.csv", table)
     without = capacities.loc[capacities["case"] == passive_case("paper", 0.0).name, "static_N"].iloc[0]
     plot_passive(capacities, mobilisation, float(without), out / "passive")
     path = out / "passive.md"
-    write_text_atomically(path, passive_markdown(capacities, numerics, mobilisation, settlement))
+    write_text_atomically(path, passive_markdown(capacities, numerics, mobilisation, settlement) + grid_markdown(grid))
     return path
 
 
@@ -162,6 +165,26 @@ def passive_markdown(
         ),
         "",
         "![passive](passive.png)",
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def grid_markdown(grid: pd.DataFrame) -> str:
+    """The static engine's grid over Kp, u_p and kn: how each test ended, and any error."""
+    counts = grid.groupby(["test", "outcome"]).size()
+    errors = grid[grid["outcome"] == "error"]
+    lines = [
+        "",
+        "## The static engine over Kp, u_p and kn (grid.csv)",
+        "",
+        f"The paper's arch under its fill, Kp {', '.join(f'{k:g}' for k in sorted(grid['kp'].unique()))}, u_p "
+        f"{', '.join(f'{u:g}' for u in sorted(grid['u_p_mm'].unique()))} mm, kn "
+        f"{', '.join(f'{k:g}' for k in sorted(grid['kn_N_per_mm3'].unique()))} N/mm³, loaded at the quarter span and",
+        "settling: "
+        + "; ".join(f"{test} {outcome} {n}" for (test, outcome), n in counts.items())
+        + f"; errors {len(errors)}.",
+        *(f"- {r.test} Kp {r.kp:g} u_p {r.u_p_mm:g} kn {r.kn_N_per_mm3:g}: {r.error}" for r in errors.itertuples()),
         "",
     ]
     return "\n".join(lines)

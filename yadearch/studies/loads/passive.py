@@ -6,6 +6,7 @@ its fill with and without the passive resistance in both engines."""
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
@@ -21,6 +22,7 @@ from yadearch.results.reuse import case_differences
 from yadearch.results.rundir import is_complete, read_summary
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import static_load_path
+from yadearch.static.simulate import simulate_static
 from yadearch.studies.loads.engines import ENGINES_KN, NUMERICS_VARIANTS, setting_value
 from yadearch.studies.loads.held import SMALL
 from yadearch.studies.loads.rigid import mechanism_check
@@ -31,6 +33,9 @@ FILLS_MM = {"small": 20.0, "paper": 50.0}  # over each arch's crown
 STIFF = {"interface.kn_N_per_mm3": 100_000.0, "fill_passive_displacement_mm": 0.001}  # nearly rigid-plastic
 MOBILISATION_MM = (0.01, 0.1, 0.5, 1.0, 2.0, 5.0, 10.0)  # the spring's u_p swept on the paper's arch
 SWEPT_KP = 1.0
+GRID_KP = (0.5, 1.0, 3.0, 10.0)  # the static engine's grid over the fill's and the joints' parameters
+GRID_UP_MM = (0.001, 0.1, 1.0, 10.0)
+GRID_KN = (0.25, 5.2, 10_000.0)
 SMALL_VOUSSOIRS = 15  # the mechanism method's search (C(joints, 4) x 16 mechanisms) on arches this small
 
 
@@ -155,4 +160,28 @@ def settlement_table(out: Path, log: Callable[[str], None] = print) -> pd.DataFr
                     "failure": "",
                 }
             )
+    return pd.DataFrame(rows)
+
+
+def grid_table() -> pd.DataFrame:
+    """The static engine on the paper's arch under its fill over GRID_KP x GRID_UP_MM x GRID_KN, loaded at
+    the quarter span and settling (no run folder): a row a run, its outcome, answer, first loss and kind,
+    or the error that stopped it (none should: a failure is never a collapse)."""
+    rows = []
+    for kp, u_p, kn in itertools.product(GRID_KP, GRID_UP_MM, GRID_KN):
+        numbers = {"fill_passive_displacement_mm": u_p, "interface.kn_N_per_mm3": kn}
+        found = {"kp": kp, "u_p_mm": u_p, "kn_N_per_mm3": kn}
+        try:
+            path = static_load_path(passive_case("paper", kp, **numbers), descend_to=None)
+            rows.append({**found, "test": "load", "outcome": path.outcome, "answer": path.capacity,
+                         "first_loss": path.first_loss, "kind": path.kind, "error": ""})  # fmt: skip
+        except YadearchError as exc:
+            rows.append({**found, "test": "load", "outcome": "error", "error": str(exc)})
+        settling = passive_case("paper", kp, live_load="none", **numbers)
+        try:
+            summary = simulate_static(settling, None, log=lambda _line: None)
+            rows.append({**found, "test": "settlement", "outcome": summary.path_outcome, "answer": summary.du_mm,
+                         "first_loss": summary.du_first_mm, "kind": summary.collapse_kind, "error": ""})  # fmt: skip
+        except YadearchError as exc:
+            rows.append({**found, "test": "settlement", "outcome": "error", "error": str(exc)})
     return pd.DataFrame(rows)
