@@ -27,6 +27,7 @@ def test_the_report_counts_the_engines_within_one_per_cent():
         {
             "case": ["small_fill_kp1", "paper_fill_kp1"],
             "kp": [1.0, 1.0],
+            "u_p_mm": [1.0, 1.0],
             "rigid_N": [10.0, 20.0],
             "rigid_hinges": ["1I", "2I"],
             "mechanism_N": [10.0, None],

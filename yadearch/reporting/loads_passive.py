@@ -50,7 +50,8 @@ def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = 
     for name, table in tables.items():
         write_csv_atomically(out / f"{name}.csv", table)
     without = capacities.loc[capacities["case"] == passive_case("paper", 0.0).name, "static_N"].iloc[0]
-    plot_passive(capacities, mobilisation, float(without), out / "passive")
+    default_up = passive_case("paper", SWEPT_KP).loads.fill_passive_displacement_mm
+    plot_passive(capacities[capacities["u_p_mm"] == default_up], mobilisation, float(without), out / "passive")
     path = out / "passive.md"
     write_text_atomically(path, passive_markdown(capacities, numerics, mobilisation, settlement) + grid_markdown(grid))
     return path
@@ -93,6 +94,7 @@ def passive_markdown(
             [
                 "case",
                 "Kp",
+                "u_p (mm)",
                 "rigid LP (N)",
                 "hinges",
                 "static nearly rigid (N)",
@@ -105,6 +107,7 @@ def passive_markdown(
                 [
                     r.case.replace("_", " "),
                     f"{r.kp:g}",
+                    f"{r.u_p_mm:g}",
                     f"{r.rigid_N:.3f}",
                     r.rigid_hinges,
                     f"{r.stiff_static_N:.3f}",

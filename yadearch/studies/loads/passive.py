@@ -33,6 +33,7 @@ FILLS_MM = {"small": 20.0, "paper": 50.0}  # over each arch's crown
 STIFF = {"interface.kn_N_per_mm3": 100_000.0, "fill_passive_displacement_mm": 0.001}  # nearly rigid-plastic
 MOBILISATION_MM = (0.01, 0.1, 0.5, 1.0, 2.0, 5.0, 10.0)  # the spring's u_p swept on the paper's arch
 SWEPT_KP = 1.0
+SHORT_UP_MM = 0.1  # a short mobilisation: the pushes reach their capacity early (a case of each kind, both engines)
 GRID_KP = (0.5, 1.0, 3.0, 10.0)  # the static engine's grid over the fill's and the joints' parameters
 GRID_UP_MM = (0.001, 0.1, 1.0, 10.0)
 GRID_KN = (0.25, 5.2, 10_000.0)
@@ -54,6 +55,7 @@ def capacity_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print)
     the static engine's at kn 5.2 and nearly rigid, and the DEM's at kn 5.2 (its files under `out`, `jobs`
     at a time; those there already read back; a failure is its reason)."""
     cases = [passive_case(arch, kp) for arch in FILLS_MM for kp in PASSIVE_COEFFICIENTS]
+    cases.append(passive_case("paper", 3.0, fill_passive_displacement_mm=SHORT_UP_MM, name="paper_fill_kp3_short"))
 
     def row(case: ArchCase) -> dict:
         rigid = load_analysis(case)
@@ -62,6 +64,7 @@ def capacity_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print)
         found = {
             "case": case.name,
             "kp": case.loads.fill_passive_coefficient,
+            "u_p_mm": case.loads.fill_passive_displacement_mm,
             "rigid_N": rigid.multiplier,
             "rigid_hinges": rigid.hinge_labels,
             "mechanism_N": _mechanism(case),
@@ -133,12 +136,19 @@ def _mechanism(case: ArchCase) -> float | None:
 
 def settlement_table(out: Path, log: Callable[[str], None] = print) -> pd.DataFrame:
     """The paper's arch under its fill settling to collapse, without and with the passive resistance
-    (Kp SWEPT_KP), on both engines (run folders under `out`; finished ones read back): a row a run."""
+    (Kp SWEPT_KP; and with u_p SHORT_UP_MM, the pushes at their capacity), on both engines (run folders
+    under `out`; finished ones read back): a row a run."""
     rows = []
-    for kp in (0.0, SWEPT_KP):
+    settlings = [passive_case("paper", kp, live_load="none", name=f"paper_settling_kp{kp:g}") for kp in (0.0, SWEPT_KP)]
+    settlings.append(
+        passive_case(
+            "paper", SWEPT_KP, live_load="none", fill_passive_displacement_mm=SHORT_UP_MM, name="paper_settling_short"
+        )
+    )
+    for settling in settlings:
+        kp = settling.loads.fill_passive_coefficient
         for engine in ("static", "dem"):
-            case = passive_case("paper", kp, live_load="none", name=f"paper_settling_kp{kp:g}")
-            case = case.with_overrides({"numerics.engine": engine})
+            case = settling.with_overrides({"numerics.engine": engine})
             folder = out / f"{case.name}_{engine}"
             try:
                 if not (is_complete(folder) and not case_differences(folder, case)):
