@@ -99,10 +99,4 @@ def add_block_pushes(body_ids: list[int], pushes: np.ndarray) -> None:
 def add_block_loads(body_ids: list[int], loads: np.ndarray, turn: np.ndarray) -> None:
     """Add `loads` (k, 4; `model.loads.block_loads`) to the bodies `body_ids` in YADE's force container:
     the forces, and their moments about the centroids with the arms turned by the blocks' rotations `turn`."""
-    from yade import O
-
-    torque = turned_moments(loads, turn)
-    add_force, add_torque = O.forces.addF, O.forces.addT
-    for body_id, (fx, fy), tz in zip(body_ids, loads[:, 0:2].tolist(), torque.tolist()):
-        add_force(body_id, (fx, fy, 0.0))
-        add_torque(body_id, (0.0, 0.0, tz))
+    add_block_pushes(body_ids, np.column_stack([loads[:, 0:2], turned_moments(loads, turn)]))

@@ -86,9 +86,22 @@ def passive_columns(arch: RigidArch, placement: Placement) -> np.ndarray:
     return columns
 
 
-def passive_bounds(arch: RigidArch, scale: float) -> list[tuple[float | None, float | None]]:
-    """Each passive spring's push between nothing and its capacity, in the programmes' force `scale`."""
-    return [(0.0, float(capacity) / scale) for capacity in arch.passive[:, CAPACITY]]
+def with_passive(
+    arch: RigidArch,
+    placement: Placement,
+    a_v: np.ndarray,
+    bounds: list[tuple[float | None, float | None]],
+    a_ub: np.ndarray | None,
+    scale: float,
+) -> tuple[np.ndarray, list[tuple[float | None, float | None]], np.ndarray | None]:
+    """A static programme's voussoir equilibrium `a_v`, bounds and Coulomb rows `a_ub` (None: none) with
+    the fill's passive pushes appended as unknowns between nothing and their capacity, in its force
+    `scale` (`passive_columns`; no columns without passive resistance)."""
+    passive = passive_columns(arch, placement)[3 : 3 * (arch.n_blocks - 1)]
+    bounds = bounds + [(0.0, float(capacity) / scale) for capacity in arch.passive[:, CAPACITY]]
+    if a_ub is not None:
+        a_ub = np.column_stack([a_ub, np.zeros((a_ub.shape[0], passive.shape[1]))])
+    return np.column_stack([a_v, passive]), bounds, a_ub
 
 
 def weight_load(arch: RigidArch, placement: Placement) -> np.ndarray:
@@ -126,12 +139,8 @@ def solve_statics(arch: RigidArch, placement: Placement, friction: bool = True, 
     m = arch.n_joints
     a_v, load, support = _split(arch, equilibrium_matrix(arch, c), weight_load(arch, placement), placement)
     scale, rows, bounds, a_ub, b_ub = static_constraints(arch, c, friction)
-    passive = passive_columns(arch, placement)[3 : 3 * (arch.n_blocks - 1)]
-    a_v = np.column_stack([a_v, passive])  # the fill's passive pushes, bounded unknowns (none: no columns)
-    bounds = bounds + passive_bounds(arch, scale)
-    if a_ub is not None:
-        a_ub = np.column_stack([a_ub, np.zeros((a_ub.shape[0], passive.shape[1]))])
-    objective = np.concatenate([support, np.zeros(passive.shape[1])])
+    a_v, bounds, a_ub = with_passive(arch, placement, a_v, bounds, a_ub, scale)
+    objective = np.concatenate([support, np.zeros(a_v.shape[1] - len(support))])  # the pushes cost nothing
     problem = {
         "A_ub": a_ub,
         "b_ub": b_ub,

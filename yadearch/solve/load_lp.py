@@ -24,10 +24,9 @@ from yadearch.solve.limit_lp import (
     STATUS_UNBOUNDED,
     equilibrium_matrix,
     mechanism_pivots,
-    passive_bounds,
-    passive_columns,
     static_constraints,
     weight_load,
+    with_passive,
 )
 from yadearch.solve.pose import march_placement
 from yadearch.solve.rigid import LimitError, Pivot, Placement, RigidArch, at_rest, contacts, rigid_arch
@@ -90,13 +89,13 @@ def load_capacity(
     a_v = equilibrium_matrix(arch, c)[voussoirs]
     held = weight_load(arch, placement)[voussoirs]  # what the contacts supply against the held loads
     scale, rows, bounds, a_ub, b_ub = static_constraints(arch, c, friction)
-    passive = passive_columns(arch, placement)[voussoirs]  # the fill's passive pushes, bounded unknowns
-    a_eq = np.column_stack([a_v, passive, np.ravel(live)[voussoirs]]) * rows[:, None]  # ... and the live load
+    pushed, bounds, a_ub = with_passive(arch, placement, a_v, bounds, a_ub, scale)  # the fill's passive pushes
+    a_eq = np.column_stack([pushed, np.ravel(live)[voussoirs]]) * rows[:, None]  # ... and the live load
     objective = np.zeros(a_eq.shape[1])
     objective[-1] = -1.0
-    bounds = bounds + passive_bounds(arch, scale) + [(0.0, None)]  # the multiplier
+    bounds = bounds + [(0.0, None)]  # the multiplier
     if a_ub is not None:
-        a_ub = np.column_stack([a_ub, np.zeros((2 * m, passive.shape[1] + 1))])
+        a_ub = np.column_stack([a_ub, np.zeros(2 * m)])
     from scipy.optimize import linprog  # here, not at import: scipy.optimize costs a run ~50 ms
 
     result = linprog(

@@ -18,10 +18,10 @@ from yadearch.errors import YadearchError
 from yadearch.launch.load_process import run_load_process
 from yadearch.launch.process import run_case_process
 from yadearch.results.load_path import stored_load_path
-from yadearch.results.reuse import case_differences
-from yadearch.results.rundir import is_complete, read_summary
+from yadearch.results.reuse import holds_case
+from yadearch.results.rundir import read_summary
 from yadearch.solve.load_lp import load_analysis
-from yadearch.solve.load_path import static_load_path
+from yadearch.solve.load_path import LoadPath, static_load_path
 from yadearch.static.simulate import simulate_static
 from yadearch.studies.loads.engines import ENGINES_KN, NUMERICS_VARIANTS, setting_value
 from yadearch.studies.loads.held import SMALL
@@ -74,10 +74,9 @@ def capacity_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print)
             "static_hinges": " ".join(static.hinges),
             "static_kind": static.kind,
         }
-        try:
-            dem = stored_load_path(out, case, 0.0) or run_load_process(case, out)
-        except YadearchError as exc:
-            return {**found, "dem_failure": str(exc)}
+        dem, failure = _dem_load_path(case, out)
+        if dem is None:
+            return {**found, "dem_failure": failure}
         log(f"{case.name}: static {static.capacity:.3f} N, DEM {dem.capacity:.3f} N")
         return {**found, "dem_N": dem.capacity, "dem_hinges": " ".join(dem.hinges), "dem_failure": ""}
 
@@ -98,10 +97,9 @@ def dem_numerics_table(out: Path, jobs: int = 2, log: Callable[[str], None] = pr
 
     def row(item: tuple[str, ArchCase]) -> dict:
         variant, case = item
-        try:
-            dem = stored_load_path(out, case, 0.0) or run_load_process(case, out)
-        except YadearchError as exc:
-            return {"variant": variant, "dem_N": None, "dem_hinges": "", "dem_failure": str(exc)}
+        dem, failure = _dem_load_path(case, out)
+        if dem is None:
+            return {"variant": variant, "dem_N": None, "dem_hinges": "", "dem_failure": failure}
         log(f"{case.name}: DEM {dem.capacity:.3f} N")
         return {
             "variant": variant,
@@ -125,6 +123,15 @@ def mobilisation_table() -> pd.DataFrame:
         path = static_load_path(passive_case("paper", SWEPT_KP, fill_passive_displacement_mm=u_p), descend_to=None)
         rows.append({"u_p_mm": u_p, "static_N": path.capacity, "hinges": " ".join(path.hinges), "rigid_N": rigid})
     return pd.DataFrame(rows)
+
+
+def _dem_load_path(case: ArchCase, out: Path) -> tuple[LoadPath | None, str]:
+    """The DEM's load path of `case` (read back from `out` where it is there already, else run into it),
+    or None and why it failed."""
+    try:
+        return stored_load_path(out, case, 0.0) or run_load_process(case, out), ""
+    except YadearchError as exc:
+        return None, str(exc)
 
 
 def _mechanism(case: ArchCase) -> float | None:
@@ -151,7 +158,7 @@ def settlement_table(out: Path, log: Callable[[str], None] = print) -> pd.DataFr
             case = settling.with_overrides({"numerics.engine": engine})
             folder = out / f"{case.name}_{engine}"
             try:
-                if not (is_complete(folder) and not case_differences(folder, case)):
+                if not holds_case(folder, case):
                     run_case_process(case, folder, quiet=True)
                 summary = read_summary(folder)
             except YadearchError as exc:
