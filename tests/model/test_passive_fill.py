@@ -1,5 +1,7 @@
 """The fill's passive resistance (model/passive_fill.py): a face pushed into the fill mobilises (Kp - K) x
-its pressure resultant over u_p and no more, one moving away nothing; the static engine's tangent with
+its pressure resultant over u_p and no more, one moving away nothing; a face pushed past u_p has
+yielded the fill for good (moving back, its push falls off over u_p, in the static engine's path too);
+the static engine's tangent with
 the springs is exact; the rigid LP's multiplier is the least of the four-hinge mechanisms by virtual work
 with each spring dissipating its capacity (the independent check), stiff joints and a short u_p carry
 it within 2 %; the supports carry the weights, the fill and the pushes; bad input is one line."""
@@ -17,7 +19,15 @@ from yadearch.case.mechanics import arch_geometry, backfill, runaway_length
 from yadearch.errors import CaseError
 from yadearch.model.backfill import fill_faces
 from yadearch.model.loads import generalised, live_load_points
-from yadearch.model.passive_fill import CAPACITY, OUTWARD, STIFFNESS, block_forces, block_stiffness, spring_state
+from yadearch.model.passive_fill import (
+    CAPACITY,
+    OUTWARD,
+    STIFFNESS,
+    block_forces,
+    block_stiffness,
+    spring_state,
+    yielded,
+)
 from yadearch.solve import banded
 from yadearch.solve.collapse_mode import CollapseKind
 from yadearch.solve.limit import limit_analysis
@@ -56,6 +66,53 @@ def test_a_spring_mobilises_its_share_linearly_up_to_its_capacity_and_nothing_mo
     for moved, share in ((-0.5, 0.0), (0.0, 0.0), (0.25, 0.25), (0.5, 0.5), (2.0, 1.0)):
         force, *_ = spring_state(spring, x0 + outward * moved * u_p, 0.0)
         assert force == pytest.approx(-outward * share * spring[CAPACITY], rel=1e-12, abs=1e-15)
+
+
+def test_a_face_pushed_past_u_p_has_yielded_the_fill_and_moving_back_loses_its_push_over_u_p():
+    """Pushed 3 u_p into the fill the spring carries its capacity (the same before and after the
+    yielding's update); moved back by u_p / 2 it pushes half of it, by u_p and more nothing, where an
+    elastic spring would still push its whole capacity. A spring that never went past u_p keeps its
+    reference: unloading it retraces its loading."""
+    arch = static_arch(_case())
+    springs = arch.passive
+    spring = springs[0]
+    block, outward = int(spring[0]), spring[OUTWARD]
+    u_p = spring[CAPACITY] / spring[STIFFNESS]
+    rest = np.column_stack([arch.centroid0, np.zeros(arch.n_blocks)])
+
+    def pushed_to(reach: float) -> np.ndarray:
+        poses = rest.copy()
+        poses[block, 0] += outward * reach * u_p
+        return poses
+
+    def push(table: np.ndarray, reach: float) -> float:
+        return -outward * block_forces(table, pushed_to(reach))[block, 0] / spring[CAPACITY]
+
+    after = yielded(springs, pushed_to(3.0))
+    assert push(springs, 3.0) == pytest.approx(1.0, rel=1e-12) and push(after, 3.0) == pytest.approx(1.0, rel=1e-12)
+    for back, share in ((0.5, 0.5), (1.0, 0.0), (2.0, 0.0)):
+        assert push(after, 3.0 - back) == pytest.approx(share, rel=1e-9, abs=1e-12)
+        assert push(springs, 3.0 - back) == pytest.approx(1.0, rel=1e-12)  # the unyielded spring, elastic
+    within = yielded(springs, pushed_to(0.6))
+    assert np.array_equal(within, springs)
+    assert push(within, 0.3) == pytest.approx(0.3, rel=1e-9)
+
+
+def test_each_state_of_the_static_path_is_in_equilibrium_with_the_yielded_springs_it_hands_on():
+    """The paper's arch settling under its fill (Kp 1, u_p 0.1 mm): every accepted state balances its
+    weights, joints and pushes with the springs as it leaves them (yielding changes no push where it
+    happens); a spring's reference only ever moves into the fill; by collapse some faces have yielded."""
+    case = passive_case("paper", 1.0, live_load="none", fill_passive_displacement_mm=0.1)
+    loading = StaticLoading.of(case)
+    loading.selfweight()
+    assert loading.follow().collapsed
+    arch, converged = loading.arch, loading.solver.converged
+    for before, state in zip(loading.accepted, loading.accepted[1:]):
+        residual = arch.free_state(state.u, state.u, state.forces.shear_force, springs=state.springs)[1]
+        assert np.abs(residual).max() <= 2.0 * converged
+        assert np.all(state.springs[:, OUTWARD] * (state.springs[:, 4] - before.springs[:, 4]) >= 0.0)
+    yielded_faces = loading.accepted[-1].springs[:, 4] != arch.passive[:, 4]  # REFERENCE_X moved
+    assert np.count_nonzero(yielded_faces) > 0
 
 
 def test_the_springs_tangent_in_the_static_engine_is_exact():

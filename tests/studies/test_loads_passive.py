@@ -1,13 +1,14 @@
 """The passive-fill study (studies/loads/passive.py, reporting/loads_passive.py): a stiffer fill (a shorter
 mobilisation u_p) carries more, below the rigid LP's capacity and above the arch without passive
-resistance; the report counts the engines' agreement from its table."""
+resistance; the report counts the engines' agreement from its table, and each engine's largest move of
+the settling arch's du under its numerics from that engine's own default."""
 
 from __future__ import annotations
 
 import numpy as np
 import pandas as pd
 
-from yadearch.reporting.loads_passive import grid_markdown, passive_markdown
+from yadearch.reporting.loads_passive import grid_markdown, passive_markdown, settling_numerics_markdown
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import static_load_path
 from yadearch.studies.loads.passive import mobilisation_table, passive_case
@@ -82,3 +83,22 @@ def test_the_grid_report_counts_outcomes_and_names_each_error():
     text = grid_markdown(grid)
     assert "load collapse 1; settlement error 1; errors 1." in text
     assert "- settlement Kp 3 u_p 1 kn 5.2: boom" in text
+
+
+def test_the_settling_numerics_are_measured_against_each_engines_own_default():
+    rows = [
+        ("static", "default", 50.0, 40.0),
+        ("static", "runaway_thickness_ratio x2", 50.2, 40.0),
+        ("dem", "default", 52.0, 42.0),
+        ("dem", "damping x0.5", 54.6, 54.6),
+    ]
+    table = pd.DataFrame(
+        [
+            {"variant": v, "case": "c", "kp": 1.0, "engine": e, "outcome": "collapse", "du_mm": du,
+             "du_first_mm": first, "hinges": "1I", "failure": ""}
+            for e, v, du, first in rows
+        ]
+    )  # fmt: skip
+    text = settling_numerics_markdown(table)
+    assert "static 0.40 %, dem 5.00 %" in text
+    assert "| dem | damping x0.5 | 54.600 | 5.00 % | 54.600 | 30.00 % | 1I |" in text

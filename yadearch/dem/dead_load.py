@@ -2,7 +2,12 @@
 held with the weights, and its passive resistance (`model.passive_fill`). They grow with gravity while
 the self-weight ramps and are applied every step at their points on the blocks with the arms turned by
 the blocks' rotations, the passive springs from the blocks' poses that step, as the static engine
-takes them (gravity x the dead loads, `solve.statics`)."""
+takes them (gravity x the dead loads, `solve.statics`). The springs yield for good at each equilibrium
+the DEM holds (`yield_fill`, as the static engine's at each equilibrium it solves), between them they
+load and unload from the last one's reference; that history is the contacts'
+(`JointElementContacts.fill_springs`), snapshot and restored with the joints' shear. Yielding at every
+step instead let the moves' and holds' transients yield the fill, and du moved 5 % with the support's
+acceleration halved (docs/loads.md)."""
 
 from __future__ import annotations
 
@@ -16,7 +21,7 @@ from yadearch.dem.scene import CALLBACK_NAME, ArchScene, install_before_integrat
 from yadearch.errors import CaseError
 from yadearch.model.backfill import backfill_points
 from yadearch.model.loads import block_loads, turning_stiffness
-from yadearch.model.passive_fill import block_forces, block_stiffness, passive_springs, scaled
+from yadearch.model.passive_fill import block_forces, block_stiffness, passive_springs, scaled, yielded
 
 DEAD_LOAD_LABEL = "yadearch_dead_load"
 DEAD_CALLBACK = f"{CALLBACK_NAME}_dead"  # the driver's name in __main__, which its PyRunner calls
@@ -39,7 +44,7 @@ class DeadLoadDriver:
         self.loaded = np.flatnonzero(np.any(loads != 0.0, axis=1))
         self._loaded_loads = loads[self.loaded]  # read every step
         self.body_ids = [scene.body_ids[b] for b in self.loaded]
-        self.passive = passive
+        self.contacts.fill_springs = passive
         self.resists = len(passive) > 0  # the fill has passive springs on the blocks
         self.share = 0.0  # gravity's share of its full value at the last step
 
@@ -61,10 +66,16 @@ class DeadLoadDriver:
         poses = self.contacts.poses
         add_block_loads(self.body_ids, share * self._loaded_loads, poses[self.loaded, 2])
         if self.resists:
-            pushes = block_forces(scaled(self.passive, share), poses)
+            pushes = block_forces(scaled(self.contacts.fill_springs, share), poses)
             pushing = np.flatnonzero(pushes[:, 0])  # a face not pushed into the fill takes nothing
             self.contacts.dead_external[pushing, 0] += pushes[pushing, 0]
             add_block_pushes([self.scene.body_ids[b] for b in pushing], pushes[pushing])
+
+    def yield_fill(self) -> None:
+        """The blocks are at rest in equilibrium: the fill yields for good where their faces pushed it
+        further than u_p (`model.passive_fill.yielded`)."""
+        if self.resists:
+            self.contacts.fill_springs = yielded(self.contacts.fill_springs, self.contacts.read_poses())
 
     def turning(self) -> np.ndarray:
         """The loads' own rotational stiffness on each block now (N m/rad), for the stability test."""
@@ -73,7 +84,8 @@ class DeadLoadDriver:
     def passive_stiffness(self, poses: np.ndarray, lever: float) -> np.ndarray | None:
         """The passive springs' tangent at `poses` on every block's x, y and rotation x `lever` (N/m; None
         without springs), for the stability test."""
-        return block_stiffness(scaled(self.passive, self.share), poses, lever) if self.resists else None
+        springs = self.contacts.fill_springs
+        return block_stiffness(scaled(springs, self.share), poses, lever) if self.resists else None
 
     @property
     def vertical(self) -> float:

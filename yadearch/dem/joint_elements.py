@@ -14,7 +14,7 @@ from yadearch.model.imperfections import GapProfiles
 from yadearch.model.joint_law import JointForces, JointLaw, joint_forces, unbalanced_force
 from yadearch.model.joint_table import joint_table
 from yadearch.model.joints import pair_rotation
-from yadearch.model.passive_fill import SpringTangent
+from yadearch.model.passive_fill import SpringTangent, no_springs
 from yadearch.model.stability import smallest_stiffness, tangent_stiffness
 
 
@@ -40,6 +40,7 @@ class JointElementContacts:
         self.last: JointForces | None = None
         self.external = np.zeros((len(geometry.blocks), 2))  # a live load now (N), for `unbalanced`
         self.dead_external = np.zeros((len(geometry.blocks), 2))  # the dead loads now (N), for `unbalanced`
+        self.fill_springs = no_springs()  # the fill's passive springs as the path has yielded them (`dem.dead_load`)
 
     def bind(self, pos0: np.ndarray, ori0: np.ndarray, callback: str) -> list[Any]:
         """Keep the block states and weights at hand and return the one engine this model needs."""
@@ -142,12 +143,19 @@ class JointElementContacts:
     def snapshot(self) -> dict:
         """The joints' history (shear forces, slip, the last step's poses) and last evaluation, for
         `restore`."""
-        return {"shear": self.shear.copy(), "slip": self.slip.copy(), "last": self.last, "previous": self._previous}
+        return {
+            "shear": self.shear.copy(),
+            "slip": self.slip.copy(),
+            "last": self.last,
+            "previous": self._previous,
+            "fill_springs": self.fill_springs.copy(),
+        }
 
     def restore(self, snapshot: dict) -> None:
         """Back to a `snapshot` (the bodies are restored by the runner)."""
         self.shear = snapshot["shear"].copy()
         self.slip = snapshot["slip"].copy()
+        self.fill_springs = snapshot["fill_springs"].copy()
         self.last = snapshot["last"]
         self._previous = snapshot["previous"]
 

@@ -268,6 +268,8 @@ class Runner:
                 and self._unbalanced() < tolerance
                 and self.recorder.voussoir_speeds().max() < still_speed
             ):
+                if self.dead_loads is not None:  # at rest: the fill yields for good here (`dem.dead_load`)
+                    self.dead_loads.yield_fill()
                 return Verdict.STABLE
         return Verdict.TIMEOUT
 

@@ -58,10 +58,10 @@ class StaticCheck:
         placed = loading.place(u0, delta)
         contacts = self.scene.contacts
         assert isinstance(contacts, JointElementContacts)  # `of` checks the contact model
-        shear = contacts.shear.copy()
-        found = loading.solver.newton(placed, u0, shear, multiplier=multiplier)
+        shear, springs = contacts.shear.copy(), contacts.fill_springs
+        found = loading.solver.newton(placed, u0, shear, multiplier=multiplier, springs=springs)
         if found is None:
-            found = loading.solver.descend(placed, u0, shear, loading.runaway, multiplier=multiplier)
+            found = loading.solver.descend(placed, u0, shear, loading.runaway, multiplier=multiplier, springs=springs)
             if found.verdict != Verdict.STABLE:
                 return None
         return found if found.stable() else None

@@ -7,8 +7,11 @@ where its at-rest pressure acts: the face's outward displacement u there (from t
 mobilises q = (Kp - K) x the face's pressure resultant per K x min(u / u_p, 1), nothing where it moves
 away (the at-rest pressure stays), u_p being how far the face must move for the whole of it. The
 rigid-block analysis takes the limit (q anywhere between 0 and its capacity, the spring rigid-plastic);
-the static engine and the DEM take the spring, whose force is a function of the pose alone (a
-potential: the tangent stays symmetric)."""
+the static engine and the DEM take the spring, elastic-plastic: a face pushed further than u_p has
+compressed the fill for good (`yielded` moves its reference with it, the history each state carries,
+as a joint carries its shear), so that moving back its push falls off over u_p instead of returning
+along the loading line. Within a step the force is a function of the pose alone (the tangent stays
+symmetric)."""
 
 from __future__ import annotations
 
@@ -23,7 +26,15 @@ from yadearch.model.joint_tangent import BLOCK_DOFS
 
 BLOCK, ARM_X, ARM_Y, OUTWARD, REFERENCE_X, CAPACITY, STIFFNESS = range(7)  # a spring's columns
 SPRING_COLUMNS = 7
+YIELDING = 1.0 - 1e-9  # a spring mobilised to this fraction of its capacity is yielding: one a state has
+# just yielded (`yielded`) sits on its cap to round-off, and its tangent is the plastic one (pushed on,
+# the fill gives) whichever side the last bit falls
 SpringTangent = Callable[[np.ndarray, float], "np.ndarray | None"]  # poses, lever -> every block's tangent or None
+
+
+def no_springs() -> np.ndarray:
+    """A springs table without springs: a fill that does not resist, or no fill."""
+    return np.zeros((0, SPRING_COLUMNS))
 
 
 def passive_springs(geometry: ArchGeometry, centroids: np.ndarray, fill: Backfill) -> np.ndarray:
@@ -31,7 +42,7 @@ def passive_springs(geometry: ArchGeometry, centroids: np.ndarray, fill: Backfil
     block, arm from the block's centroid (x, y, unturned), outward sign (+1: the face looks toward +x),
     the point's x in the undeformed arch, the capacity (N) and the stiffness capacity / u_p (N/m)."""
     if not fill.resists:
-        return np.zeros((0, SPRING_COLUMNS))
+        return no_springs()
     extra = fill.passive_coefficient - fill.lateral_coefficient
     rows = []
     for face in fill_faces(geometry, fill):
@@ -62,17 +73,39 @@ def scaled(springs: np.ndarray, share: float) -> np.ndarray:
 def spring_state(spring, x, turn):
     """One spring on its block at centroid x `x` (m) and rotation `turn` (rad): (force x on the block,
     the turned arm's x and y, the spring's tangent stiffness dq/du)."""
-    c, s = np.cos(turn), np.sin(turn)
-    arm_x = c * spring[ARM_X] - s * spring[ARM_Y]
-    arm_y = s * spring[ARM_X] + c * spring[ARM_Y]
+    arm_x, arm_y = _turned_arm(spring, turn)
     outward = spring[OUTWARD]
     pushed = outward * (x + arm_x - spring[REFERENCE_X])  # the face's displacement into the fill
     mobilised = spring[STIFFNESS] * pushed
     if pushed <= 0.0:
         return 0.0, arm_x, arm_y, 0.0
-    if mobilised >= spring[CAPACITY]:
+    if mobilised >= YIELDING * spring[CAPACITY]:
         return -outward * spring[CAPACITY], arm_x, arm_y, 0.0
     return -outward * mobilised, arm_x, arm_y, spring[STIFFNESS]
+
+
+@njit(cache=True)
+def _turned_arm(spring, turn):
+    """The spring's arm from its block's centroid turned by `turn` (rad): x, y (m)."""
+    c, s = np.cos(turn), np.sin(turn)
+    return c * spring[ARM_X] - s * spring[ARM_Y], s * spring[ARM_X] + c * spring[ARM_Y]
+
+
+@njit(cache=True)
+def yielded(springs, poses):
+    """The springs after the blocks reach `poses` (n_blocks, 3: x, y, rotation): where a face has pushed
+    further than u_p (capacity / stiffness) into the fill, the fill has yielded and the spring's reference
+    moves with the face, u_p behind it; elsewhere nothing changes. The force at `poses` is the same
+    before and after: this is the history a state hands to the next."""
+    out = springs.copy()
+    for k in range(springs.shape[0]):
+        b = int(springs[k, BLOCK])
+        arm_x, _ = _turned_arm(springs[k], poses[b, 2])
+        point, outward = poses[b, 0] + arm_x, springs[k, OUTWARD]
+        reach = springs[k, CAPACITY] / springs[k, STIFFNESS]
+        if outward * (point - springs[k, REFERENCE_X]) > reach:
+            out[k, REFERENCE_X] = point - outward * reach
+    return out
 
 
 @njit(cache=True)

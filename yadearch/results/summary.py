@@ -39,7 +39,9 @@ DEM, STATIC = "dem", STATIC_ENGINE  # the engines that write run folders
 # 9: a self-weight ramp that falls or stops is made again in finer steps, and the arch stands if either
 # ramp stands (the first descent from faces exactly touching can take another way); only arches the
 # first ramp did not stand change.
-STATIC_REVISION = 9
+# 10: the fill's passive springs yield for good (`model.passive_fill.yielded`): a face that moves back
+# after pushing the fill past u_p loses its push over u_p; only runs with fill_passive_coefficient change.
+STATIC_REVISION = 10
 TRANSLATION = "translation"
 # written only when set: engine-specific figures and what older runs lack
 OPTIONAL_KEYS = frozenset(

@@ -45,11 +45,18 @@ class FoldMode:
         return [h.label for h in self.hinges]
 
 
-def fold_mode(arch: StaticArch, u: np.ndarray, stiffness: np.ndarray, failed: np.ndarray | None = None) -> FoldMode:
-    """The collapse mode at the last stable state `u`: the softest mode of `stiffness` (band storage,
-    free dofs), or, given the state the collapse ran away to (`failed`), the motion towards it (the
-    same mode carried to a finite amplitude; a stiff arch's softest linear mode can be one joint's
-    own); which joints turn (MODE_HINGE_FRACTION of the largest turn) and whether it slides."""
+def fold_mode(
+    arch: StaticArch,
+    u: np.ndarray,
+    stiffness: np.ndarray,
+    failed: np.ndarray | None = None,
+    springs: np.ndarray | None = None,
+) -> FoldMode:
+    """The collapse mode at the last stable state `u` (the fill's `springs` as it holds them): the
+    softest mode of `stiffness` (band storage, free dofs), or, given the state the collapse ran away to
+    (`failed`), the motion towards it (the same mode carried to a finite amplitude; a stiff arch's
+    softest linear mode can be one joint's own); which joints turn (MODE_HINGE_FRACTION of the largest
+    turn) and whether it slides."""
     if failed is not None:
         mode = (failed - u)[arch.free_dofs]  # the way the arch ran away: the loads' work released
     else:
@@ -62,17 +69,17 @@ def fold_mode(arch: StaticArch, u: np.ndarray, stiffness: np.ndarray, failed: np
     elif len(hinges) >= MECHANISM_HINGES:
         kind = CollapseKind.MECHANISM
     else:
-        kind = CollapseKind.FILL_HELD if _fill_holds(arch, u, mode) else CollapseKind.SNAP_THROUGH
+        kind = CollapseKind.FILL_HELD if _fill_holds(arch, u, mode, springs) else CollapseKind.SNAP_THROUGH
     return FoldMode(banded.smallest_eigenvalue(stiffness), hinges, kind)
 
 
-def _fill_holds(arch: StaticArch, u: np.ndarray, mode: np.ndarray) -> bool:
+def _fill_holds(arch: StaticArch, u: np.ndarray, mode: np.ndarray, springs: np.ndarray | None) -> bool:
     """Some passive spring of the fill (`model.passive_fill`), still elastic at `u`, is pushed by `mode`:
     the mode's other segments lean on the fill, whose yielding adds the mechanism's other hinges."""
     pos, rot = arch.poses(u)
     moved = np.zeros(arch.n_blocks * BLOCK_DOFS)
     moved[arch.free_dofs] = mode
-    for spring in arch.passive:
+    for spring in arch.springs(springs):
         block = int(spring[BLOCK])
         _, _, arm_y, tangent = spring_state(spring, pos[block, 0], rot[block])
         motion = moved[BLOCK_DOFS * block] - arm_y * moved[BLOCK_DOFS * block + 2] / arch.length

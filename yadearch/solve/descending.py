@@ -86,7 +86,7 @@ def descend(loading: StaticLoading, capacity: float, descend_to: float = DESCEND
         u, lam, iterations, success, state = bordered_kernel(
             arch.kernel, last.u, last.forces.shear_force, arch.weight, thickness, banded.BAND,
             solver.converged, solver.settings.max_step, np.ascontiguousarray(arch.dead),
-            np.ascontiguousarray(arch.live), arch.passive, normal, guess_u, guess_lam, ITERATIONS,
+            np.ascontiguousarray(arch.live), last.springs, normal, guess_u, guess_lam, ITERATIONS,
         )  # fmt: skip
         if not success or largest_move(u, guess_u) > loading.snap_floor or _turned_back(history, u, free):
             step *= HALVING
@@ -97,7 +97,7 @@ def descend(loading: StaticLoading, capacity: float, descend_to: float = DESCEND
         forces = joints.forces
         reached = StaticState(
             Stage.EQUILIBRIUM, lam, u, forces, last.slip + forces.plastic_slip, iterations,
-            float(np.abs(residual).max()) / solver.scale, stiffness=stiffness,
+            float(np.abs(residual).max()) / solver.scale, stiffness=stiffness, springs=arch.yielded(last.springs, u),
         )  # fmt: skip
         descent.states.append(reached)
         history = (history + [(done + float(np.linalg.norm((u - last.u)[free])), reached)])[-PREDICTOR_POINTS:]
@@ -126,7 +126,8 @@ def _ended(descent: Descent, end: DescentEnd, loading: StaticLoading) -> Descent
     if descent.states:
         before = descent.states[-2] if len(descent.states) > 1 else loading.accepted[-1]
         assert before.stiffness is not None  # every state is made from the solver's equilibrium
-        descent.hinges = tuple(fold_mode(loading.arch, before.u, before.stiffness, descent.states[-1].u).labels)
+        mode = fold_mode(loading.arch, before.u, before.stiffness, descent.states[-1].u, before.springs)
+        descent.hinges = tuple(mode.labels)
     return descent
 
 

@@ -24,13 +24,14 @@ def fall(
     bound: float,
     gravity: float = 1.0,
     multiplier: float = 0.0,
+    springs: np.ndarray | None = None,
 ) -> tuple[Equilibrium, int]:
     """The solver's descent from `start` (runaway `bound`, m) and how many goes it took: where a go finds
     neither equilibrium nor runaway the next goes on from where it stopped (DESCENT_RETRIES times, and
     on while each go moves a block FALLING_FRACTION of the bound or ends far from rest, UNBALANCED, up
     to MAX_DESCENT_GOES), the joints' shear carried from go to go as the DEM carries it step by step
-    (a long fall is not one elastic step from where it began)."""
-    found = solver.descend(start, u_before, shear, bound, gravity=gravity, multiplier=multiplier)
+    (a long fall is not one elastic step from where it began), and the fill's `springs` with it."""
+    found = solver.descend(start, u_before, shear, bound, gravity=gravity, multiplier=multiplier, springs=springs)
     before, goes, slip = start, 1, np.zeros_like(shear)
     while found.verdict == Verdict.TIMEOUT and goes < MAX_DESCENT_GOES:
         falling = largest_move(found.u, before) >= FALLING_FRACTION * bound
@@ -38,8 +39,8 @@ def fall(
         if goes > DESCENT_RETRIES and not (falling or pushed):
             break
         before, goes, slip = found.u, goes + 1, slip + found.joints.forces.plastic_slip
-        carried = found.joints.forces.shear_force
+        carried, springs = found.joints.forces.shear_force, found.springs
         found = solver.descend(
-            found.u, found.u, carried, bound, gravity=gravity, origin=start, multiplier=multiplier
+            found.u, found.u, carried, bound, gravity=gravity, origin=start, multiplier=multiplier, springs=springs
         ).with_slip(slip)
     return found, goes

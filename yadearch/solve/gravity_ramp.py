@@ -23,20 +23,23 @@ def gravity_ramp(arch: StaticArch, solver: Solver, fall: Fall, steps: int) -> tu
     descent (the joints have no stiffness before they are pressed), the others by Newton from the last
     (by the descent where Newton fails), until one does not end stable; the joints' shear is carried
     from step to step, as the DEM carries it, so that a joint counts only the sliding it makes while it
-    touches. The last step's equilibrium, the sliding, and the ramp's record (steps, verdict, gravity
-    reached, the last step's largest move)."""
+    touches, and the fill's springs with it (`model.passive_fill.yielded`). The last step's equilibrium,
+    the sliding, and the ramp's record (steps, verdict, gravity reached, the last step's largest move)."""
     u = arch.with_supports(arch.at_rest(), 0.0)
     shear = np.zeros(len(arch.table.left))
     slip = np.zeros_like(shear)
+    springs: np.ndarray | None = None  # the unyielded fill's
     for k in range(1, steps + 1):
         gravity = k / steps
-        pressed = solver.newton(u, u, shear, gravity=gravity) if k > 1 else None
+        pressed = solver.newton(u, u, shear, gravity=gravity, springs=springs) if k > 1 else None
         found = (
-            pressed if pressed is not None and pressed.stable() else fall(u, u, shear, SELFWEIGHT_FALL, gravity=gravity)
+            pressed
+            if pressed is not None and pressed.stable()
+            else fall(u, u, shear, SELFWEIGHT_FALL, gravity=gravity, springs=springs)
         )
         if found.verdict != Verdict.STABLE:
             break
-        u, shear = found.u, found.joints.forces.shear_force
+        u, shear, springs = found.u, found.joints.forces.shear_force, found.springs
         slip = slip + found.joints.forces.plastic_slip
     record = {
         "gravity_steps": steps,

@@ -57,6 +57,8 @@ class Equilibrium:
     iterations: int
     verdict: Verdict = Verdict.STABLE
     moved: float = 0.0  # the largest block translation from the start (m)
+    springs: np.ndarray | None = None  # the fill's passive springs as this state leaves them
+    # (`model.passive_fill.yielded`; None: the unyielded fill), the history the next solve starts from
 
     def stable(self) -> bool:
         """The free blocks' tangent stiffness is positive definite (its symmetric part)."""
@@ -95,11 +97,13 @@ class Solver:
         shear_before: np.ndarray,
         gravity: float = 1.0,
         multiplier: float = 0.0,
+        springs: np.ndarray | None = None,
     ) -> tuple[JointTangent, np.ndarray, np.ndarray]:
         """Joints at `u`, the free blocks' residual R = joint forces + weights + `multiplier` x the live
-        load (generalised) and their tangent K in band storage (`solve.banded`), in one compiled call."""
+        load + the fill's pushes (generalised) and their tangent K in band storage (`solve.banded`), in
+        one compiled call."""
         self.evaluations += 1
-        return self.arch.free_state(u, u_before, shear_before, gravity, multiplier)
+        return self.arch.free_state(u, u_before, shear_before, gravity, multiplier, springs)
 
     def result(
         self,
@@ -109,6 +113,7 @@ class Solver:
         stiffness: np.ndarray,
         iterations: int,
         start: np.ndarray,
+        springs: np.ndarray | None,
         verdict: Verdict = Verdict.STABLE,
     ) -> Equilibrium:
         return Equilibrium(
@@ -119,6 +124,7 @@ class Solver:
             iterations,
             verdict,
             largest_move(u, start),
+            self.arch.yielded(springs, u),
         )
 
     def newton(
@@ -128,13 +134,14 @@ class Solver:
         shear_before: np.ndarray,
         gravity: float = 1.0,
         multiplier: float = 0.0,
+        springs: np.ndarray | None = None,
     ) -> Equilibrium | None:
-        """Newton from `u0` (supports already placed); None if it does not converge. The iterations
-        run compiled (`solve.newton_kernel`): Newton's step capped at `max_step`, halved up to
-        BACKTRACKS times (INDEFINITE_BACKTRACKS from an indefinite tangent) until |R|^2 falls by
-        SUFFICIENT_DECREASE x the step's fraction."""
+        """Newton from `u0` (supports already placed), the fill's `springs` as `u_before` left them; None
+        if it does not converge. The iterations run compiled (`solve.newton_kernel`): Newton's step capped
+        at `max_step`, halved up to BACKTRACKS times (INDEFINITE_BACKTRACKS from an indefinite tangent)
+        until |R|^2 falls by SUFFICIENT_DECREASE x the step's fraction."""
         u, loops, evaluations, success, state = NEWTON_KERNEL(
-            self._problem(u_before, shear_before, gravity, multiplier),
+            self._problem(u_before, shear_before, gravity, multiplier, springs),
             u0,
             self.settings.newton_iterations,
             BACKTRACKS,
@@ -145,7 +152,7 @@ class Solver:
         if not success:
             return None
         joints, residual, stiffness = as_joints(state)
-        return self.result(u, joints, residual, stiffness, loops - 1, u0)
+        return self.result(u, joints, residual, stiffness, loops - 1, u0, springs)
 
     def descend(
         self,
@@ -157,6 +164,7 @@ class Solver:
         iterations: int | None = None,
         origin: np.ndarray | None = None,
         multiplier: float = 0.0,
+        springs: np.ndarray | None = None,
     ) -> Equilibrium:
         """Damped Newton steps (K + mu I) d = R from `u0`, a step kept only where it releases energy
         (the work of the residual forces along it, by the trapezoidal rule, is positive; then mu
@@ -170,20 +178,21 @@ class Solver:
         origin = u0 if origin is None else origin
         u, iteration, floor, shift = u0.copy(), 0, 0.0, 0.0
         saddle, returns = None, 0
+        loads = (gravity, multiplier, springs)
         while True:
             u, reached, evaluations, event, floor, shift, state = self._descent_run(
-                u, u_before, shear_before, (gravity, multiplier), floor, shift, origin, runaway, iteration, budget
+                u, u_before, shear_before, loads, floor, shift, origin, runaway, iteration, budget
             )
             self.iterations += reached - iteration + (event in (CONVERGED, STUCK))
             self.evaluations += evaluations
             iteration = reached
             joints, residual, stiffness = as_joints(state)
             if event == RUNAWAY:
-                return self.result(u, joints, residual, stiffness, iteration, origin, Verdict.RUNAWAY)
+                return self.result(u, joints, residual, stiffness, iteration, origin, springs, Verdict.RUNAWAY)
             if event == TIMEOUT:
-                return self.result(u, joints, residual, stiffness, budget, origin, Verdict.TIMEOUT)
+                return self.result(u, joints, residual, stiffness, budget, origin, springs, Verdict.TIMEOUT)
             if event == CONVERGED:
-                found = self.result(u, joints, residual, stiffness, iteration, origin)
+                found = self.result(u, joints, residual, stiffness, iteration, origin, springs)
                 if found.stable():
                     return found
                 if saddle is not None and largest_move(u, saddle) <= RETURN_FRACTION * self.settings.max_step:
@@ -193,17 +202,24 @@ class Solver:
                 else:
                     saddle, returns = u.copy(), 0
             elif banded.positive_definite(stiffness):  # no step releases energy in a stable well:
-                return self.result(u, joints, residual, stiffness, budget, origin, Verdict.TIMEOUT)  # stuck
+                return self.result(u, joints, residual, stiffness, budget, origin, springs, Verdict.TIMEOUT)  # stuck
             u = self._kick(u, stiffness)  # a saddle (to round-off): leave it along its softest mode
             shift = floor
             iteration += 1
             if iteration >= budget:
-                joints, residual, stiffness = self.state(u, u_before, shear_before, gravity, multiplier)
-                return self.result(u, joints, residual, stiffness, budget, origin, Verdict.TIMEOUT)
+                joints, residual, stiffness = self.state(u, u_before, shear_before, gravity, multiplier, springs)
+                return self.result(u, joints, residual, stiffness, budget, origin, springs, Verdict.TIMEOUT)
 
-    def _problem(self, u_before: np.ndarray, shear_before: np.ndarray, gravity: float, multiplier: float) -> tuple:
+    def _problem(
+        self,
+        u_before: np.ndarray,
+        shear_before: np.ndarray,
+        gravity: float,
+        multiplier: float,
+        springs: np.ndarray | None = None,
+    ) -> tuple:
         """One support position's and load's equilibrium problem as the compiled kernels take it
-        (`solve.newton_kernel._evaluate`)."""
+        (`solve.newton_kernel._evaluate`), the fill's `springs` as `u_before` left them."""
         arch = self.arch
         return (
             arch.kernel,
@@ -215,7 +231,7 @@ class Solver:
             banded.BAND,
             self.converged,
             self.settings.max_step,
-            *arch.external(gravity, multiplier),
+            *arch.external(gravity, multiplier, springs),
         )
 
     def _descent_run(
@@ -223,7 +239,7 @@ class Solver:
         u: np.ndarray,
         u_before: np.ndarray,
         shear_before: np.ndarray,
-        loads: tuple[float, float],
+        loads: tuple[float, float, np.ndarray | None],
         floor: float,
         shift: float,
         origin: np.ndarray,

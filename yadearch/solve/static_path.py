@@ -115,7 +115,11 @@ class StaticLoading:
         floor, whatever the step (a jump hidden in a long step would hide a snap)."""
         last = history[-1]
         found = self.solver.newton(
-            self.predict(target, history), last.u, last.forces.shear_force, multiplier=self.parameter.multiplier(target)
+            self.predict(target, history),
+            last.u,
+            last.forces.shear_force,
+            multiplier=self.parameter.multiplier(target),
+            springs=last.springs,
         )
         if found is None or not found.stable() or found.moved > self.snap_floor:
             return None
@@ -172,16 +176,17 @@ class StaticLoading:
         shear = last.forces.shear_force
         start = self.predict(lam, history)
         multiplier = self.parameter.multiplier(lam)
-        found = self._fall(start, last.u, shear, self.runaway, multiplier=multiplier)
+        springs = last.springs
+        found = self._fall(start, last.u, shear, self.runaway, multiplier=multiplier, springs=springs)
         self.descents += 1
         if found.verdict == Verdict.TIMEOUT:
             self.retries += 1
-            found = self.solver.descend(self.place(last.u, lam), last.u, shear, self.runaway, multiplier=multiplier)
+            found = self.solver.descend(
+                self.place(last.u, lam), last.u, shear, self.runaway, multiplier=multiplier, springs=springs
+            )
         return found
 
-    def _fall(
-        self, start: np.ndarray, u_before: np.ndarray, shear: np.ndarray, bound: float, **loads: float
-    ) -> Equilibrium:
+    def _fall(self, start: np.ndarray, u_before: np.ndarray, shear: np.ndarray, bound: float, **loads) -> Equilibrium:
         """The descent from `start` going on while it falls (`solve.falls.fall`), its goes counted."""
         found, goes = fall(self.solver, start, u_before, shear, bound, **loads)
         self.retries += goes - 1
@@ -230,7 +235,7 @@ class StaticLoading:
         `upper`: the collapse's hinges and kind (`solve.collapse_mode`)."""
         state = self.accepted[-1]
         assert state.stiffness is not None  # every state is made from the solver's equilibrium
-        return fold_mode(self.arch, state.u, state.stiffness, self.failures[self._failure_at(upper)].u)
+        return fold_mode(self.arch, state.u, state.stiffness, self.failures[self._failure_at(upper)].u, state.springs)
 
     def predict(self, target: float, history: list[StaticState]) -> np.ndarray:
         """Where the arch should be with the support at `target`: a parabola (or a line) through the
@@ -277,5 +282,13 @@ class StaticLoading:
 
     def _state(self, stage: str, lam: float, found: Equilibrium, slip: np.ndarray, forces: JointForces) -> StaticState:
         return StaticState(
-            stage, lam, found.u, forces, slip, found.iterations, found.residual, stiffness=found.stiffness
+            stage,
+            lam,
+            found.u,
+            forces,
+            slip,
+            found.iterations,
+            found.residual,
+            stiffness=found.stiffness,
+            springs=found.springs,
         )

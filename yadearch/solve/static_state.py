@@ -47,6 +47,8 @@ class StaticState:
     residual: float
     move: float = 0.0  # how far the blocks moved from the predicted state to reach it (m)
     stiffness: np.ndarray | None = None  # the free blocks' tangent as the solver found it (band storage)
+    springs: np.ndarray | None = None  # the fill's passive springs as this state leaves them
+    # (`model.passive_fill.yielded`; None: the unyielded fill): where the next solve starts from
 
     @functools.cached_property
     def min_stiffness(self) -> float:

@@ -27,7 +27,7 @@ from yadearch.model.joint_tangent import BLOCK_DOFS, JointTangent, joint_tangent
 from yadearch.model.joints import rotate
 from yadearch.model.loads import block_loads, live_load_points, turned_moments
 from yadearch.model.movement import Movement
-from yadearch.model.passive_fill import block_forces, passive_springs, scaled
+from yadearch.model.passive_fill import block_forces, passive_springs, scaled, yielded
 from yadearch.solve import banded
 from yadearch.solve.newton_kernel import descent_kernel, newton_kernel
 
@@ -127,27 +127,44 @@ class StaticArch:
         shear_before: np.ndarray,
         gravity: float = 1.0,
         multiplier: float = 0.0,
+        springs: np.ndarray | None = None,
     ) -> tuple[JointTangent, np.ndarray, np.ndarray]:
         """The joints at `u` (moved from `u_before`, where their shear forces were `shear_before`), the
         free blocks' residual R = joint forces + `gravity` x (the weights and the dead loads) +
-        `multiplier` x the live load (generalised) and their tangent K in band storage
-        (`solve.banded`), in one compiled call."""
+        `multiplier` x the live load + the fill's pushes (`springs` as `u_before` left them; default the
+        unyielded fill) (generalised) and their tangent K in band storage (`solve.banded`), in one
+        compiled call."""
         return free_state(
             self.kernel, u, u_before, shear_before, self.weight, gravity, self.length, banded.BAND,
-            *self.external(gravity, multiplier),
+            *self.external(gravity, multiplier, springs),
         )  # fmt: skip
 
-    def external(self, gravity: float, multiplier: float) -> tuple[np.ndarray, float, np.ndarray]:
+    def external(
+        self, gravity: float, multiplier: float, springs: np.ndarray | None = None
+    ) -> tuple[np.ndarray, float, np.ndarray]:
         """The loads besides the weights as the kernels take them: `gravity` x the dead loads +
         `multiplier` x the live load, the factor on them (0 where there are none: skipped), and the
-        fill's passive springs at `gravity`'s share."""
+        fill's passive springs (`springs`, default the unyielded `passive`) at `gravity`'s share."""
         loads = gravity * self.dead + multiplier * self.live
-        return loads, (1.0 if loads.any() else 0.0), scaled(self.passive, gravity)
+        return loads, (1.0 if loads.any() else 0.0), scaled(self.springs(springs), gravity)
 
-    def passive_forces(self, u: np.ndarray) -> np.ndarray:
-        """(n_blocks, 3) the fill's passive pushes on every block at `u` (force x, y, moment; full gravity)."""
+    def springs(self, springs: np.ndarray | None) -> np.ndarray:
+        """`springs`, or the fill's springs before anything has yielded where None."""
+        return self.passive if springs is None else springs
+
+    def yielded(self, springs: np.ndarray | None, u: np.ndarray) -> np.ndarray:
+        """The fill's springs once the blocks reach `u` from where `springs` were (`model.passive_fill.yielded`)."""
+        springs = self.springs(springs)
+        if not len(springs):
+            return springs
         pos, rot = self.poses(u)
-        return block_forces(self.passive, np.column_stack([pos, rot]))
+        return yielded(springs, np.column_stack([pos, rot]))
+
+    def passive_forces(self, u: np.ndarray, springs: np.ndarray | None = None) -> np.ndarray:
+        """(n_blocks, 3) the fill's passive pushes on every block at `u` (force x, y, moment; full gravity),
+        its springs as `springs` (default: unyielded)."""
+        pos, rot = self.poses(u)
+        return block_forces(self.springs(springs), np.column_stack([pos, rot]))
 
     @functools.cached_property
     def kernel(self) -> tuple:

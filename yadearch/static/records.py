@@ -135,7 +135,7 @@ class StaticRecords:
         live = state.lam if self.load_unit else self.held  # a load path's own, or the one held during the movement
         dead = self.arch.dead[free] + live * self.arch.live[free]
         loads = np.column_stack([dead[:, 0], dead[:, 1] - self.arch.weight[free]])
-        loads[:, 0] += self.arch.passive_forces(state.u)[free, 0]  # the fill's passive pushes (none: zero)
+        loads[:, 0] += self.arch.passive_forces(state.u, state.springs)[free, 0]  # the fill's pushes (none: zero)
         unbalanced = unbalanced_force(state.forces, free, loads)
         return {
             "left_Rx_N": -force[0, 0],

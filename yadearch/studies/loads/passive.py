@@ -37,6 +37,20 @@ SHORT_UP_MM = 0.1  # a short mobilisation: the pushes reach their capacity early
 GRID_KP = (0.5, 1.0, 3.0, 10.0)  # the static engine's grid over the fill's and the joints' parameters
 GRID_UP_MM = (0.001, 0.1, 1.0, 10.0)
 GRID_KN = (0.25, 5.2, 10_000.0)
+SETTLING_VARIANTS = {  # (settings scaled together, factor) of each engine on the settling arch
+    "static": (
+        (("numerics.first_increment_mm", "numerics.max_increment_mm"), 0.5),
+        (("numerics.first_increment_mm", "numerics.max_increment_mm"), 0.25),
+        (("numerics.runaway_thickness_ratio",), 0.5),
+        (("numerics.runaway_thickness_ratio",), 2.0),
+    ),
+    "dem": (
+        (("numerics.support_acceleration_mm_per_s2",), 0.5),
+        (("numerics.support_acceleration_mm_per_s2",), 2.0),
+        (("numerics.damping",), 0.5),
+        (("numerics.damping",), 2.0),
+    ),
+}
 SMALL_VOUSSOIRS = 15  # the mechanism method's search (C(joints, 4) x 16 mechanisms) on arches this small
 
 
@@ -145,39 +159,61 @@ def settlement_table(out: Path, log: Callable[[str], None] = print) -> pd.DataFr
     """The paper's arch under its fill settling to collapse, without and with the passive resistance
     (Kp SWEPT_KP; and with u_p SHORT_UP_MM, the pushes at their capacity), on both engines (run folders
     under `out`; finished ones read back): a row a run."""
-    rows = []
     settlings = [passive_case("paper", kp, live_load="none", name=f"paper_settling_kp{kp:g}") for kp in (0.0, SWEPT_KP)]
     settlings.append(
         passive_case(
             "paper", SWEPT_KP, live_load="none", fill_passive_displacement_mm=SHORT_UP_MM, name="paper_settling_short"
         )
     )
+    rows = []
     for settling in settlings:
-        kp = settling.loads.fill_passive_coefficient
         for engine in ("static", "dem"):
             case = settling.with_overrides({"numerics.engine": engine})
-            folder = out / f"{case.name}_{engine}"
-            try:
-                if not holds_case(folder, case):
-                    run_case_process(case, folder, quiet=True)
-                summary = read_summary(folder)
-            except YadearchError as exc:
-                rows.append({"case": case.name, "kp": kp, "engine": engine, "failure": str(exc)})
-                continue
-            log(f"{case.name} ({engine}): du {summary.du_mm} mm")
-            rows.append(
-                {
-                    "case": case.name,
-                    "kp": kp,
-                    "engine": engine,
-                    "outcome": summary.path_outcome,
-                    "du_mm": summary.du_mm,
-                    "du_first_mm": summary.du_first_mm,
-                    "hinges": summary.hinge_labels,
-                    "failure": "",
-                }
-            )
+            rows.append(_settling_row(case, out / f"{case.name}_{engine}", log))
     return pd.DataFrame(rows)
+
+
+def settlement_numerics_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> pd.DataFrame:
+    """The settling arch at Kp SWEPT_KP with each engine's numerics halved and doubled (SETTLING_VARIANTS;
+    the default's folders are settlement_table's), `jobs` at a time: a row a run, its variant named."""
+    default = passive_case("paper", SWEPT_KP, live_load="none", name=f"paper_settling_kp{SWEPT_KP:g}")
+    runs = []
+    for engine, variants in SETTLING_VARIANTS.items():
+        base = default.with_overrides({"numerics.engine": engine})
+        runs.append(("default", base, out / f"{base.name}_{engine}"))
+        for settings, factor in variants:
+            variant = f"{'+'.join(s.split('.')[-1] for s in settings)} x{factor:g}"
+            changed = {setting: setting_value(base, setting) * factor for setting in settings}
+            name = f"{base.name}_{variant.replace('+', '_').replace(' ', '_')}"
+            runs.append((variant, base.with_overrides({**changed, "name": name}), out / f"{name}_{engine}"))
+
+    def row(run: tuple[str, ArchCase, Path]) -> dict:
+        variant, case, folder = run
+        return {"variant": variant, **_settling_row(case, folder, log)}
+
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        return pd.DataFrame(list(pool.map(row, runs)))
+
+
+def _settling_row(case: ArchCase, folder: Path, log: Callable[[str], None]) -> dict:
+    """The settling run of `case` in `folder` (read back where it is there and current): its outcome,
+    du, du_first and hinges, or the reason it failed."""
+    found = {"case": case.name, "kp": case.loads.fill_passive_coefficient, "engine": case.numerics.engine}
+    try:
+        if not holds_case(folder, case):
+            run_case_process(case, folder, quiet=True)
+        summary = read_summary(folder)
+    except YadearchError as exc:
+        return {**found, "failure": str(exc)}
+    log(f"{case.name} ({case.numerics.engine}): du {summary.du_mm} mm")
+    return {
+        **found,
+        "outcome": summary.path_outcome,
+        "du_mm": summary.du_mm,
+        "du_first_mm": summary.du_first_mm,
+        "hinges": summary.hinge_labels,
+        "failure": "",
+    }
 
 
 def grid_table() -> pd.DataFrame:
