@@ -62,6 +62,9 @@ class SnappingArch:
     def reach(self, increment: float) -> float:
         return abs(increment)
 
+    def yield_fill(self) -> None:
+        pass  # no fill
+
     def branch_start(self) -> tuple[np.ndarray, np.ndarray | None]:
         return self.positions(), None  # a support movement's: no prediction from one state
 

@@ -100,5 +100,5 @@ def test_the_settling_numerics_are_measured_against_each_engines_own_default():
         ]
     )  # fmt: skip
     text = settling_numerics_markdown(table)
-    assert "static 0.40 %, dem 5.00 %" in text
+    assert "static du 0.40 % (a result); static du_first 0.00 % (a result); dem du 5.00 % (not a result)" in text
     assert "| dem | damping x0.5 | 54.600 | 5.00 % | 54.600 | 30.00 % | 1I |" in text

@@ -53,6 +53,8 @@ class LiveArch(Protocol):
 
     def reach(self, increment: float) -> float: ...  # how far a path increment moves a block quasi-statically (m)
 
+    def yield_fill(self) -> None: ...  # the blocks rest in an equilibrium of the path: the fill yields for good
+
     # a branch's first state: the voussoirs' centroids as `positions` gives them, and how they move per unit
     # of the path's parameter from there (n, 3; the static model's tangent; None: it does not predict)
     def branch_start(self) -> tuple[np.ndarray, np.ndarray | None]: ...

@@ -59,6 +59,7 @@ def dem_descent(
             end = DescentEnd.RUNAWAY if verdict == Verdict.RUNAWAY else DescentEnd.LOST
             break
         arch.stage = Stage.EQUILIBRIUM
+        arch.yield_fill()
         arch.record_equilibrium()
         states += 1
         if check is not None:

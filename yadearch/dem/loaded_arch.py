@@ -80,6 +80,9 @@ class LoadedArch:
         """The static tangent's smallest eigenvalue at the poses, the load's own stiffness included."""
         return self.runner.smallest_stiffness(self.driver.turning())
 
+    def yield_fill(self) -> None:
+        self.runner.yield_fill()
+
     def reach(self, increment: float) -> float:
         """A load increment moves the blocks quasi-statically at most by its generalised force over the
         last equilibrium's smallest stiffness (m; unbounded where that was not positive)."""

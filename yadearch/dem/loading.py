@@ -119,6 +119,8 @@ class EquilibriumPath:
             verdict = self.arch.hold(runaway=left, from_rest=False) if left > 0.0 else Verdict.RUNAWAY
         verdict = self.static.accept(stable_tangent(self.arch, verdict), near_holds)
         self._relax_move = max(first_move, self._moved_from(origin))
+        if verdict == Verdict.STABLE:
+            self.arch.yield_fill()  # an equilibrium: the fill yields for good where the faces pushed it past u_p
         return verdict
 
     def _moved_from(self, origin: np.ndarray) -> float:
@@ -208,6 +210,7 @@ class EquilibriumPath:
             self._failures[self.arch.delta()] = self.arch.snapshot()
             self._at_accepted = False
             return False
+        self.arch.yield_fill()
         self._accepted[-1] = self.arch.snapshot()
         self._trends[-1] = self._trends[-1].with_last(self.arch.positions())
         self._at_accepted = True
@@ -264,6 +267,7 @@ class EquilibriumPath:
     def follow(self, start: float = 0.0) -> PathResult:
         """Load by increments relaxed to equilibrium until du is bracketed (`solve.path`), from the
         scene's equilibrium at support displacement `start` (m)."""
+        self.arch.yield_fill()  # the state the path starts from (the self-weight's, or a movement's end)
         self._accepted, self._at_accepted = [self.arch.snapshot()], True
         self._trends = [Trend.start(start, *self.arch.branch_start())]
         return follow_path(self, self.settings, on_step=self._log_increment, start=start)

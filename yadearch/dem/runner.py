@@ -209,6 +209,11 @@ class Runner:
         turning = np.sum(parts, axis=0) if parts else None
         return self.scene.contacts.smallest_stiffness(turning, dead.passive_stiffness if dead else None)
 
+    def yield_fill(self) -> None:
+        """The blocks rest in an equilibrium of the path: the fill yields for good (`dem.dead_load`)."""
+        if self.dead_loads is not None:
+            self.dead_loads.yield_fill()
+
     def reach(self, increment: float) -> float:
         """A support increment moves the blocks it carries at most by as much (m)."""
         return abs(increment)
@@ -268,8 +273,6 @@ class Runner:
                 and self._unbalanced() < tolerance
                 and self.recorder.voussoir_speeds().max() < still_speed
             ):
-                if self.dead_loads is not None:  # at rest: the fill yields for good here (`dem.dead_load`)
-                    self.dead_loads.yield_fill()
                 return Verdict.STABLE
         return Verdict.TIMEOUT
 

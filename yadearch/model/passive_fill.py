@@ -3,9 +3,10 @@ fill pushes back harder than its at-rest pressure, up to Kp x unit weight x dept
 restraint; Gilbert 2007, docs/loads.md "The fill's passive resistance").
 
 Each extrados face under the fill (`model.backfill.fill_faces`) gets a horizontal spring at the point
-where its at-rest pressure acts: the face's outward displacement u there (from the undeformed arch)
-mobilises q = (Kp - K) x the face's pressure resultant per K x min(u / u_p, 1), nothing where it moves
-away (the at-rest pressure stays), u_p being how far the face must move for the whole of it. The
+where its at-rest pressure acts: the face's outward displacement u there from the spring's reference
+(the undeformed arch, until the fill yields) mobilises q = (Kp - K) x the face's pressure resultant per
+K x min(u / u_p, 1), nothing where it moves away (the at-rest pressure stays), u_p being how far the
+face must move for the whole of it. The
 rigid-block analysis takes the limit (q anywhere between 0 and its capacity, the spring rigid-plastic);
 the static engine and the DEM take the spring, elastic-plastic: a face pushed further than u_p has
 compressed the fill for good (`yielded` moves its reference with it, the history each state carries,
@@ -28,7 +29,7 @@ BLOCK, ARM_X, ARM_Y, OUTWARD, REFERENCE_X, CAPACITY, STIFFNESS = range(7)  # a s
 SPRING_COLUMNS = 7
 YIELDING = 1.0 - 1e-9  # a spring mobilised to this fraction of its capacity is yielding: one a state has
 # just yielded (`yielded`) sits on its cap to round-off, and its tangent is the plastic one (pushed on,
-# the fill gives) whichever side the last bit falls
+# the fill gives) whichever side the last bit falls; its force stays continuous
 SpringTangent = Callable[[np.ndarray, float], "np.ndarray | None"]  # poses, lever -> every block's tangent or None
 
 
@@ -40,7 +41,8 @@ def no_springs() -> np.ndarray:
 def passive_springs(geometry: ArchGeometry, centroids: np.ndarray, fill: Backfill) -> np.ndarray:
     """(k, SPRING_COLUMNS) the fill's passive springs at full gravity (none where it does not resist):
     block, arm from the block's centroid (x, y, unturned), outward sign (+1: the face looks toward +x),
-    the point's x in the undeformed arch, the capacity (N) and the stiffness capacity / u_p (N/m)."""
+    the point's x in the undeformed arch (the reference, until the fill yields: `yielded`), the capacity (N)
+    and the stiffness capacity / u_p (N/m)."""
     if not fill.resists:
         return no_springs()
     extra = fill.passive_coefficient - fill.lateral_coefficient
@@ -80,7 +82,7 @@ def spring_state(spring, x, turn):
     if pushed <= 0.0:
         return 0.0, arm_x, arm_y, 0.0
     if mobilised >= YIELDING * spring[CAPACITY]:
-        return -outward * spring[CAPACITY], arm_x, arm_y, 0.0
+        return -outward * min(mobilised, spring[CAPACITY]), arm_x, arm_y, 0.0
     return -outward * mobilised, arm_x, arm_y, spring[STIFFNESS]
 
 

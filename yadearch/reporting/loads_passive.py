@@ -23,6 +23,7 @@ from yadearch.studies.loads.passive import (
     mobilisation_table,
     passive_case,
     settlement_numerics_table,
+    settlement_pushes_table,
     settlement_table,
 )
 
@@ -41,6 +42,7 @@ def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = 
     mobilisation = mobilisation_table()
     settlement = settlement_table(out / RUNS_FOLDER, log)
     settling_numerics = settlement_numerics_table(out / RUNS_FOLDER, jobs, log)
+    pushes = settlement_pushes_table()
     grid = grid_table()
     tables = {
         "capacities": capacities,
@@ -48,6 +50,7 @@ def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = 
         "mobilisation": mobilisation,
         "settlement": settlement,
         "settlement_numerics": settling_numerics,
+        "settlement_pushes": pushes,
         "grid": grid,
     }
     for name, table in tables.items():
@@ -57,7 +60,8 @@ def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = 
     plot_passive(capacities[capacities["u_p_mm"] == default_up], mobilisation, float(without), out / "passive")
     path = out / "passive.md"
     text = passive_markdown(capacities, numerics, mobilisation, settlement)
-    write_text_atomically(path, text + settling_numerics_markdown(settling_numerics) + grid_markdown(grid))
+    text += pushes_markdown(pushes) + settling_numerics_markdown(settling_numerics) + grid_markdown(grid)
+    write_text_atomically(path, text)
     return path
 
 
@@ -165,7 +169,7 @@ def passive_markdown(
                     getattr(r, "outcome", ""),
                     _number(getattr(r, "du_mm", math.nan)),
                     _number(getattr(r, "du_first_mm", math.nan)),
-                    getattr(r, "hinges", "") or r.failure,
+                    _text(getattr(r, "hinges", "")) or _text(r.failure),
                 ]  # fmt: skip
                 for r in settlement.itertuples()
             ),
@@ -177,29 +181,48 @@ def passive_markdown(
     return "\n".join(lines)
 
 
+def pushes_markdown(pushes: pd.DataFrame) -> str:
+    """The fill's pushes along the static settlement at Kp 1: where they are largest and at the last
+    state before collapse, with the faces that have yielded the fill by then."""
+    largest, last = pushes.loc[pushes["pushes_N"].idxmax()], pushes.iloc[-1]
+
+    def said(row: pd.Series) -> str:
+        return (
+            f"at {row.delta_mm:.2f} mm {int(row.faces_pushing)} faces push {row.pushes_N:.2f} N in all, "
+            f"{int(row.faces_yielded)} have yielded the fill"
+        )
+
+    return "\n".join(
+        [
+            "",
+            "The static engine's pushes along the settlement at Kp 1 (settlement_pushes.csv): largest "
+            f"{said(largest)}; {said(last)} (the last state before du).",
+            "",
+        ]
+    )
+
+
 def settling_numerics_markdown(table: pd.DataFrame) -> str:
     """The settling arch at Kp 1 with each engine's numerics halved and doubled: du and du_first against
-    that engine's default, and whether each stays within the 1 % a result needs."""
-    rows = []
+    that engine's default, and for each engine and quantity whether it stays within the 1 % a result needs."""
+    rows, verdicts = [], []
     for engine, runs in table.groupby("engine", sort=False):
         default = runs[runs["variant"] == "default"].iloc[0]
-        for r in runs.itertuples():
-            du, first = getattr(r, "du_mm", math.nan), getattr(r, "du_first_mm", math.nan)
+        moves = {key: runs[key] / default[key] - 1.0 for key in ("du_mm", "du_first_mm")}
+        for k, r in enumerate(runs.itertuples()):
             rows.append(
-                [engine, r.variant, _number(du), _percent(du / default["du_mm"] - 1.0), _number(first),
-                 _percent(first / default["du_first_mm"] - 1.0), getattr(r, "hinges", "") or r.failure]
+                [engine, r.variant, _number(r.du_mm), _percent(moves["du_mm"].iloc[k]), _number(r.du_first_mm),
+                 _percent(moves["du_first_mm"].iloc[k]), _text(r.hinges) or _text(r.failure)]
             )  # fmt: skip
-    moves = {
-        engine: float((runs["du_mm"] / runs[runs["variant"] == "default"]["du_mm"].iloc[0] - 1.0).abs().max())
-        for engine, runs in table.groupby("engine", sort=False)
-    }
+        for key, name in (("du_mm", "du"), ("du_first_mm", "du_first")):
+            largest = float(moves[key].abs().max())
+            said = "a result" if largest <= ENGINES_TOLERANCE else "not a result"
+            verdicts.append(f"{engine} {name} {_percent(largest)} ({said})")
     lines = [
         "",
         "## The settling arch's numerics halved and doubled (Kp 1, settlement_numerics.csv)",
         "",
-        "The largest move of du from each engine's default: "
-        + ", ".join(f"{engine} {_percent(move)}" for engine, move in moves.items())
-        + " (a result stays within 1 %).",
+        "The largest move from each engine's default, a result staying within 1 %: " + "; ".join(verdicts) + ".",
         "",
         *markdown_table(["engine", "variant", "du (mm)", "du move", "du_first (mm)", "du_first move", "hinges"], rows),
         "",
@@ -238,4 +261,9 @@ def _number(value: float | None) -> str:
 
 
 def _percent(value: float) -> str:
-    return f"{100 * value:.2f} %"
+    return "" if not math.isfinite(value) else f"{100 * value:.2f} %"
+
+
+def _text(value: object) -> str:
+    """A table's text cell: empty where pandas left a NaN (a column some rows do not have)."""
+    return "" if isinstance(value, float) and math.isnan(value) else str(value)

@@ -79,7 +79,7 @@ def _fill_holds(arch: StaticArch, u: np.ndarray, mode: np.ndarray, springs: np.n
     pos, rot = arch.poses(u)
     moved = np.zeros(arch.n_blocks * BLOCK_DOFS)
     moved[arch.free_dofs] = mode
-    for spring in arch.springs(springs):
+    for spring in arch.springs_or_unyielded(springs):
         block = int(spring[BLOCK])
         _, _, arm_y, tangent = spring_state(spring, pos[block, 0], rot[block])
         motion = moved[BLOCK_DOFS * block] - arm_y * moved[BLOCK_DOFS * block + 2] / arch.length

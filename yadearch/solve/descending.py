@@ -86,7 +86,8 @@ def descend(loading: StaticLoading, capacity: float, descend_to: float = DESCEND
         u, lam, iterations, success, state = bordered_kernel(
             arch.kernel, last.u, last.forces.shear_force, arch.weight, thickness, banded.BAND,
             solver.converged, solver.settings.max_step, np.ascontiguousarray(arch.dead),
-            np.ascontiguousarray(arch.live), last.springs, normal, guess_u, guess_lam, ITERATIONS,
+            np.ascontiguousarray(arch.live), arch.springs_or_unyielded(last.springs), normal, guess_u, guess_lam,
+            ITERATIONS,
         )  # fmt: skip
         if not success or largest_move(u, guess_u) > loading.snap_floor or _turned_back(history, u, free):
             step *= HALVING

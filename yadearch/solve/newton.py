@@ -57,8 +57,8 @@ class Equilibrium:
     iterations: int
     verdict: Verdict = Verdict.STABLE
     moved: float = 0.0  # the largest block translation from the start (m)
-    springs: np.ndarray | None = None  # the fill's passive springs as this state leaves them
-    # (`model.passive_fill.yielded`; None: the unyielded fill), the history the next solve starts from
+    springs: np.ndarray | None = None  # the fill's passive springs as this state leaves them: yielded
+    # at a stable equilibrium (`model.passive_fill.yielded`), as they were elsewhere (a fall is no rest)
 
     def stable(self) -> bool:
         """The free blocks' tangent stiffness is positive definite (its symmetric part)."""
@@ -124,7 +124,7 @@ class Solver:
             iterations,
             verdict,
             largest_move(u, start),
-            self.arch.yielded(springs, u),
+            self.arch.yielded(springs, u) if verdict == Verdict.STABLE else self.arch.springs_or_unyielded(springs),
         )
 
     def newton(
@@ -178,10 +178,10 @@ class Solver:
         origin = u0 if origin is None else origin
         u, iteration, floor, shift = u0.copy(), 0, 0.0, 0.0
         saddle, returns = None, 0
-        loads = (gravity, multiplier, springs)
+        external = (gravity, multiplier, springs)
         while True:
             u, reached, evaluations, event, floor, shift, state = self._descent_run(
-                u, u_before, shear_before, loads, floor, shift, origin, runaway, iteration, budget
+                u, u_before, shear_before, external, floor, shift, origin, runaway, iteration, budget
             )
             self.iterations += reached - iteration + (event in (CONVERGED, STUCK))
             self.evaluations += evaluations
@@ -239,7 +239,7 @@ class Solver:
         u: np.ndarray,
         u_before: np.ndarray,
         shear_before: np.ndarray,
-        loads: tuple[float, float, np.ndarray | None],
+        external: tuple[float, float, np.ndarray | None],
         floor: float,
         shift: float,
         origin: np.ndarray,
@@ -248,8 +248,9 @@ class Solver:
         budget: int,
     ) -> tuple:
         """The descent's iterations `start` to `budget` compiled (`solve.newton_kernel.descent_kernel`),
-        to the first event the interpreter decides on (an equilibrium, a stuck shift) or an end."""
-        problem = self._problem(u_before, shear_before, *loads)
+        to the first event the interpreter decides on (an equilibrium, a stuck shift) or an end; `external`
+        is gravity's share, the live load's multiplier and the fill's springs."""
+        problem = self._problem(u_before, shear_before, *external)
         return DESCENT_KERNEL(problem, u, floor, shift, origin, runaway, start, budget)
 
     def _kick(self, u: np.ndarray, stiffness: np.ndarray) -> np.ndarray:

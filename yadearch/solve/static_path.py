@@ -186,9 +186,18 @@ class StaticLoading:
             )
         return found
 
-    def _fall(self, start: np.ndarray, u_before: np.ndarray, shear: np.ndarray, bound: float, **loads) -> Equilibrium:
+    def _fall(
+        self,
+        start: np.ndarray,
+        u_before: np.ndarray,
+        shear: np.ndarray,
+        bound: float,
+        gravity: float = 1.0,
+        multiplier: float = 0.0,
+        springs: np.ndarray | None = None,
+    ) -> Equilibrium:
         """The descent from `start` going on while it falls (`solve.falls.fall`), its goes counted."""
-        found, goes = fall(self.solver, start, u_before, shear, bound, **loads)
+        found, goes = fall(self.solver, start, u_before, shear, bound, gravity, multiplier, springs)
         self.retries += goes - 1
         return found
 

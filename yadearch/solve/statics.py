@@ -146,15 +146,15 @@ class StaticArch:
         `multiplier` x the live load, the factor on them (0 where there are none: skipped), and the
         fill's passive springs (`springs`, default the unyielded `passive`) at `gravity`'s share."""
         loads = gravity * self.dead + multiplier * self.live
-        return loads, (1.0 if loads.any() else 0.0), scaled(self.springs(springs), gravity)
+        return loads, (1.0 if loads.any() else 0.0), scaled(self.springs_or_unyielded(springs), gravity)
 
-    def springs(self, springs: np.ndarray | None) -> np.ndarray:
+    def springs_or_unyielded(self, springs: np.ndarray | None) -> np.ndarray:
         """`springs`, or the fill's springs before anything has yielded where None."""
         return self.passive if springs is None else springs
 
     def yielded(self, springs: np.ndarray | None, u: np.ndarray) -> np.ndarray:
         """The fill's springs once the blocks reach `u` from where `springs` were (`model.passive_fill.yielded`)."""
-        springs = self.springs(springs)
+        springs = self.springs_or_unyielded(springs)
         if not len(springs):
             return springs
         pos, rot = self.poses(u)
@@ -164,7 +164,7 @@ class StaticArch:
         """(n_blocks, 3) the fill's passive pushes on every block at `u` (force x, y, moment; full gravity),
         its springs as `springs` (default: unyielded)."""
         pos, rot = self.poses(u)
-        return block_forces(self.springs(springs), np.column_stack([pos, rot]))
+        return block_forces(self.springs_or_unyielded(springs), np.column_stack([pos, rot]))
 
     @functools.cached_property
     def kernel(self) -> tuple:

@@ -11,17 +11,21 @@ from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 
 from yadearch.case.config import ArchCase, preset
 from yadearch.errors import YadearchError
 from yadearch.launch.load_process import run_load_process
 from yadearch.launch.process import run_case_process
+from yadearch.model import units
+from yadearch.model.passive_fill import REFERENCE_X
 from yadearch.results.load_path import stored_load_path
 from yadearch.results.reuse import holds_case
 from yadearch.results.rundir import read_summary
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import LoadPath, static_load_path
+from yadearch.solve.static_path import StaticLoading
 from yadearch.static.simulate import simulate_static
 from yadearch.studies.loads.engines import ENGINES_KN, NUMERICS_VARIANTS, setting_value
 from yadearch.studies.loads.held import SMALL
@@ -211,9 +215,31 @@ def _settling_row(case: ArchCase, folder: Path, log: Callable[[str], None]) -> d
         "outcome": summary.path_outcome,
         "du_mm": summary.du_mm,
         "du_first_mm": summary.du_first_mm,
+        "first_snap_move_mm": summary.snaps[0]["move_mm"] if summary.snaps else None,
         "hinges": summary.hinge_labels,
         "failure": "",
     }
+
+
+def settlement_pushes_table() -> pd.DataFrame:
+    """The paper's arch settling at Kp SWEPT_KP in the static engine: at each accepted state, how many
+    faces push into the fill, their pushes in all (N) and how many have yielded it (reference moved)."""
+    loading = StaticLoading.of(passive_case("paper", SWEPT_KP, live_load="none"))
+    loading.selfweight()
+    loading.follow()
+    arch, rows = loading.arch, []
+    for state in loading.accepted:
+        pushes = arch.passive_forces(state.u, state.springs)[:, 0]
+        references = arch.springs_or_unyielded(state.springs)[:, REFERENCE_X]
+        rows.append(
+            {
+                "delta_mm": units.to_mm(state.lam),
+                "faces_pushing": int(np.count_nonzero(pushes)),
+                "pushes_N": float(np.abs(pushes).sum()),
+                "faces_yielded": int(np.count_nonzero(references != arch.passive[:, REFERENCE_X])),
+            }
+        )
+    return pd.DataFrame(rows)
 
 
 def grid_table() -> pd.DataFrame:
