@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -186,18 +187,10 @@ class StaticLoading:
             )
         return found
 
-    def _fall(
-        self,
-        start: np.ndarray,
-        u_before: np.ndarray,
-        shear: np.ndarray,
-        bound: float,
-        gravity: float = 1.0,
-        multiplier: float = 0.0,
-        springs: np.ndarray | None = None,
-    ) -> Equilibrium:
-        """The descent from `start` going on while it falls (`solve.falls.fall`), its goes counted."""
-        found, goes = fall(self.solver, start, u_before, shear, bound, gravity, multiplier, springs)
+    def _fall(self, *arguments: Any, **keywords: Any) -> Equilibrium:
+        """`solve.falls.fall` on this path's solver (the descent going on while it falls: start, state
+        before, shear, runaway bound, gravity, multiplier, springs), its goes counted."""
+        found, goes = fall(self.solver, *arguments, **keywords)
         self.retries += goes - 1
         return found
 
