@@ -3,11 +3,11 @@ held with the weights, and its passive resistance (`model.passive_fill`). They g
 the self-weight ramps and are applied every step at their points on the blocks with the arms turned by
 the blocks' rotations, the passive springs from the blocks' poses that step, as the static engine
 takes them (gravity x the dead loads, `solve.statics`). The springs yield for good at each equilibrium
-the DEM holds (`yield_fill`, as the static engine's at each equilibrium it solves), between them they
-load and unload from the last one's reference; that history is the contacts'
-(`JointElementContacts.fill_springs`), snapshot and restored with the joints' shear. Yielding at every
-step instead let the moves' and holds' transients yield the fill, and du moved 5 % with the support's
-acceleration halved (docs/loads.md)."""
+the DEM's path keeps (`yield_fill`, which the path calls through `LiveArch.yield_fill`, as the static
+engine yields them at each equilibrium it solves); between them they load and unload from the last
+one's reference. That history is the contacts' (`JointElementContacts.fill_springs`), snapshot and
+restored with the joints' shear. Yielded at every step instead, the moves' and holds' transients
+yielded the fill and du followed the support's acceleration (CHANGELOG)."""
 
 from __future__ import annotations
 
