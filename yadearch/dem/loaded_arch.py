@@ -81,6 +81,7 @@ class LoadedArch:
         return self.runner.smallest_stiffness(self.driver.turning())
 
     def yield_fill(self) -> None:
+        """The blocks rest in an equilibrium of the load's path: the fill yields for good (`dem.dead_load`)."""
         self.runner.yield_fill()
 
     def reach(self, increment: float) -> float:

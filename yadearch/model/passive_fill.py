@@ -72,6 +72,13 @@ def scaled(springs: np.ndarray, share: float) -> np.ndarray:
 
 
 @njit(cache=True)
+def _turned_arm(spring, turn):
+    """The spring's arm from its block's centroid turned by `turn` (rad): x, y (m)."""
+    c, s = np.cos(turn), np.sin(turn)
+    return c * spring[ARM_X] - s * spring[ARM_Y], s * spring[ARM_X] + c * spring[ARM_Y]
+
+
+@njit(cache=True)
 def spring_state(spring, x, turn):
     """One spring on its block at centroid x `x` (m) and rotation `turn` (rad): (force x on the block,
     the turned arm's x and y, the spring's tangent stiffness dq/du)."""
@@ -84,13 +91,6 @@ def spring_state(spring, x, turn):
     if mobilised >= YIELDING * spring[CAPACITY]:
         return -outward * min(mobilised, spring[CAPACITY]), arm_x, arm_y, 0.0
     return -outward * mobilised, arm_x, arm_y, spring[STIFFNESS]
-
-
-@njit(cache=True)
-def _turned_arm(spring, turn):
-    """The spring's arm from its block's centroid turned by `turn` (rad): x, y (m)."""
-    c, s = np.cos(turn), np.sin(turn)
-    return c * spring[ARM_X] - s * spring[ARM_Y], s * spring[ARM_X] + c * spring[ARM_Y]
 
 
 @njit(cache=True)
