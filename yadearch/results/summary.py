@@ -41,7 +41,11 @@ DEM, STATIC = "dem", STATIC_ENGINE  # the engines that write run folders
 # first ramp did not stand change.
 # 10: the fill's passive springs yield for good (`model.passive_fill.yielded`): a face that moves back
 # after pushing the fill past u_p loses its push over u_p; only runs with fill_passive_coefficient change.
-STATIC_REVISION = 10
+# 11: a branch known by one state (the path's start, a snap's landing) is predicted along the free
+# blocks' whole tangent: the fill's springs and the loads' turning arms with the joints (was the joints
+# alone, so that Newton failed a spring's step away and a coarse march read a fold); only runs with
+# loads or fill change.
+STATIC_REVISION = 11
 TRANSLATION = "translation"
 # written only when set: engine-specific figures and what older runs lack
 OPTIONAL_KEYS = frozenset(

@@ -248,15 +248,18 @@ class StaticLoading:
         if len(set(lams)) == len(lams) >= 2:
             return self.place(extrapolate(lams, [s.u for s in history], target), target)
         moved = self.place(last.u, target)
-        stiffness = self.arch.stiffness(self.solver.state(last.u, last.u, last.forces.shear_force)[0])
+        multiplier = self.parameter.multiplier(last.lam)
+        joints, _, tangent = self.solver.state(
+            last.u, last.u, last.forces.shear_force, multiplier=multiplier, springs=last.springs
+        )
         free = self.arch.free_dofs
         driven = np.setdiff1d(np.arange(len(moved)), free)
-        load = -stiffness[np.ix_(free, driven)] @ (moved - last.u)[driven]
-        more = self.parameter.multiplier(target) - self.parameter.multiplier(last.lam)
+        load = -self.arch.stiffness(joints)[np.ix_(free, driven)] @ (moved - last.u)[driven]
+        more = self.parameter.multiplier(target) - multiplier
         if more:
             load = load + more * self.arch.live_forces(last.u)
-        try:
-            moved[free] += banded.solve(banded.from_dense(stiffness[np.ix_(free, free)]), load)
+        try:  # the free blocks' whole tangent: the joints, the loads' turning arms and the fill's springs
+            moved[free] += banded.solve(tangent, load)
         except (np.linalg.LinAlgError, ValueError):
             pass  # a singular tangent: the descent starts from the state with only the support moved
         return moved
