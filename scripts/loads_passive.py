@@ -5,7 +5,8 @@
 Runs each case's load on the rigid LP, the static engine and the DEM (in child processes, --jobs at a time;
 those whose files OUT/runs holds already are read back), the mobilisation sweep and the settling arch, and
 writes passive.md, capacities.csv, dem_numerics.csv, mobilisation.csv, settlement.csv,
-settlement_numerics.csv (the settling arch with each engine's numerics halved and doubled), grid.csv and
+settlement_numerics.csv (the settling arch with each engine's numerics halved and doubled), grid.csv,
+arches_numerics.csv (other arches under the fill, the static engine's numerics halved and doubled) and
 passive.pdf/.png.
 """
 

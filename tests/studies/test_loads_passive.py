@@ -7,11 +7,14 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
+import pytest
 
 from yadearch.reporting.loads_passive import grid_markdown, passive_markdown, settling_numerics_markdown
+from yadearch.reporting.passive_arches import arches_markdown
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import static_load_path
 from yadearch.studies.loads.passive import mobilisation_table, passive_case
+from yadearch.studies.loads.passive_arches import arches_verdicts
 
 
 def test_a_stiffer_fill_carries_more_between_no_passive_push_and_the_rigid_capacity():
@@ -102,3 +105,27 @@ def test_the_settling_numerics_are_measured_against_each_engines_own_default():
     text = settling_numerics_markdown(table)
     assert "static du 0.40 % (a result); static du_first 0.00 % (a result); dem du 5.00 % (not a result)" in text
     assert "| dem | damping x0.5 | 54.600 | 5.00 % | 54.600 | 30.00 % | 1I |" in text
+
+
+def test_each_other_arch_is_judged_against_its_own_default_and_its_failures_are_not_results():
+    rows = [
+        ("semi", 5.2, "base", "collapse", 50.0, 40.0),
+        ("semi", 5.2, "increments_x0.5", "collapse", 50.4, 40.0),
+        ("semi", 5.2, "snap_floor_x2", "collapse", 50.0, 48.0),
+        ("semi", 1e4, "base", "collapse", 60.0, 30.0),
+        ("semi", 1e4, "bracket_x2", "unresolved", 61.0, 30.1),
+    ]
+    table = pd.DataFrame(
+        [{"arch": a, "kn_N_per_mm3": kn, "variant": v, "outcome": o, "du_mm": du, "du_first_mm": first}
+         for a, kn, v, o, du, first in rows]
+    )  # fmt: skip
+    verdicts = arches_verdicts(table)
+    soft, stiff = verdicts.iloc[0], verdicts.iloc[1]
+    assert soft["du_mm_is_result"] and soft["du_mm_largest_move"] == pytest.approx(0.008)
+    assert not soft["du_first_mm_is_result"] and soft["du_first_mm_moved_by"] == "snap_floor_x2"
+    assert not stiff["du_mm_is_result"] and stiff["outcomes_differ"] == "bracket_x2"
+    text = arches_markdown(verdicts)
+    assert "du in 1 of 2, du_first in 0 of 2" in text  # the stiff du_first moves 0.33 % but one variant ends otherwise
+    assert (
+        "| semi | 5.2 | collapse | 50.00 | 0.80 % (increments_x0.5) | 40.00 | 20.00 % (snap_floor_x2) | none |" in text
+    )

@@ -12,6 +12,7 @@ import pandas as pd
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.markdown import markdown_table
 from yadearch.plotting.loads import plot_passive
+from yadearch.reporting.passive_arches import arches_markdown
 from yadearch.studies.loads.passive import (
     FILLS_MM,
     LATERAL_COEFFICIENT,
@@ -26,6 +27,7 @@ from yadearch.studies.loads.passive import (
     settlement_pushes_table,
     settlement_table,
 )
+from yadearch.studies.loads.passive_arches import arches_numerics_table, arches_verdicts
 
 ENGINES_TOLERANCE = 0.01  # static and DEM within 1 %
 RIGID_TOLERANCE = 0.02  # the nearly rigid static engine within 2 % of the rigid LP
@@ -34,8 +36,8 @@ RUNS_FOLDER = "runs"  # the DEM's load paths and the settling runs, under the re
 
 def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> Path:
     """Run the study (the DEM `jobs` at a time; what OUT/runs holds is read back) and write capacities.csv,
-    dem_numerics.csv, mobilisation.csv, settlement.csv, settlement_numerics.csv, grid.csv, passive.pdf/.png
-    and passive.md into `out`; the report's path."""
+    dem_numerics.csv, mobilisation.csv, settlement.csv, settlement_numerics.csv, grid.csv,
+    arches_numerics.csv, passive.pdf/.png and passive.md into `out`; the report's path."""
     out.mkdir(parents=True, exist_ok=True)
     capacities = capacity_table(out / RUNS_FOLDER, jobs, log)
     numerics = dem_numerics_table(out / RUNS_FOLDER, jobs, log)
@@ -44,6 +46,7 @@ def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = 
     settling_numerics = settlement_numerics_table(out / RUNS_FOLDER, jobs, log)
     pushes = settlement_pushes_table()
     grid = grid_table()
+    arches = arches_numerics_table(jobs)
     tables = {
         "capacities": capacities,
         "dem_numerics": numerics,
@@ -52,6 +55,7 @@ def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = 
         "settlement_numerics": settling_numerics,
         "settlement_pushes": pushes,
         "grid": grid,
+        "arches_numerics": arches,
     }
     for name, table in tables.items():
         write_csv_atomically(out / f"{name}.csv", table)
@@ -61,6 +65,7 @@ def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = 
     path = out / "passive.md"
     text = passive_markdown(capacities, numerics, mobilisation, settlement)
     text += pushes_markdown(pushes) + settling_numerics_markdown(settling_numerics) + grid_markdown(grid)
+    text += arches_markdown(arches_verdicts(arches))
     write_text_atomically(path, text)
     return path
 

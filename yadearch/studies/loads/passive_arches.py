@@ -1,0 +1,88 @@
+"""Arches other than the paper's settling arch under a passive fill, in the static engine with each
+numerical setting halved and doubled (the atlas's variants): whether du and du_first are facts of the
+arch where the fill's springs reach their caps, kinks of the path a coarse march could read as folds
+(reports/loads/passive, arches_numerics.csv; docs/loads.md)."""
+
+from __future__ import annotations
+
+import itertools
+import math
+from concurrent.futures import ThreadPoolExecutor
+from typing import Any
+
+import pandas as pd
+
+from yadearch.case.config import ArchCase
+from yadearch.results.summary import RunSummary
+from yadearch.static.pool import solve_batch
+from yadearch.studies.atlas.invariance import BASE, TOLERANCE, variants
+from yadearch.studies.loads.passive import SWEPT_KP, passive_case
+
+SEMICIRCLE = {"embrace_deg": 180.0, "internal_radius_mm": 277.5, "thickness_mm": 45.0}
+ARCHES: dict[str, dict[str, Any]] = {  # each arch and movement: its overrides of the paper's settling arch
+    "semicircle spreading": {**SEMICIRCLE, "support_direction_deg": 0.0},
+    "semicircle at -45 deg": {**SEMICIRCLE, "support_direction_deg": -45.0},
+    "paper, left support settling": {"moving_support": "left"},
+    "paper at -45 deg": {"support_direction_deg": -45.0},
+}
+ARCHES_KN = (5.2, 10_000.0)  # the paper's set 2 and nearly rigid joints
+RUN_TIMEOUT_S = 600.0
+
+
+def arch_case(arch: str, kn: float) -> ArchCase:
+    """`arch` (one of ARCHES) under the paper's fill at Kp SWEPT_KP, settling or moving, static, at `kn`."""
+    overrides = {**ARCHES[arch], "interface.kn_N_per_mm3": kn, "numerics.engine": "static"}
+    return passive_case("paper", SWEPT_KP, live_load="none").with_overrides(overrides)
+
+
+def arches_numerics_table(jobs: int = 2) -> pd.DataFrame:
+    """Every arch of ARCHES at each of ARCHES_KN with every numerical variant (the default first), solved in
+    `jobs` static workers (no run folder): a row a run, its outcome, du, du_first and hinges or its failure."""
+    runs = []
+    for arch, kn in itertools.product(ARCHES, ARCHES_KN):
+        case = arch_case(arch, kn)
+        for variant, overrides in variants(case).items():
+            numerics = {f"numerics.{key}": value for key, value in overrides.items()}
+            runs.append(({"arch": arch, "kn_N_per_mm3": kn, "variant": variant}, case.with_overrides(numerics)))
+    shares = [runs[k::jobs] for k in range(jobs)]  # run k is share k % jobs's (k // jobs)th
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        answers = list(pool.map(lambda share: solve_batch([c.to_dict() for _, c in share], RUN_TIMEOUT_S), shares))
+    return pd.DataFrame([{**found, **_answer(answers[k % jobs][k // jobs])} for k, (found, _) in enumerate(runs)])
+
+
+def _answer(answer: dict[str, Any]) -> dict[str, Any]:
+    """A worker's answer as the table's columns."""
+    if "summary" not in answer:
+        return {"outcome": "failed", "failure": answer.get("error") or answer.get("interrupted")}
+    summary = RunSummary.from_json(answer["summary"])
+    return {
+        "outcome": summary.path_outcome,
+        "du_mm": summary.du_mm,
+        "du_first_mm": summary.du_first_mm,
+        "hinges": summary.hinge_labels,
+        "failure": "",
+    }
+
+
+def arches_verdicts(table: pd.DataFrame) -> pd.DataFrame:
+    """One row an arch and stiffness: the default's du and du_first, the largest relative move of each
+    over the variants and the variant making it, whether each is a result (within TOLERANCE, and no
+    variant ending otherwise), and the variants whose outcome differs."""
+    rows = []
+    for (arch, kn), runs in table.groupby(["arch", "kn_N_per_mm3"], sort=False):
+        base = runs[runs["variant"] == BASE].iloc[0]
+        others = runs[runs["variant"] != BASE]
+        differ = " ".join(others.loc[others["outcome"] != base["outcome"], "variant"])
+        row: dict[str, Any] = {"arch": arch, "kn_N_per_mm3": kn, "outcome": base["outcome"], "outcomes_differ": differ}
+        for key in ("du_mm", "du_first_mm"):
+            moves = (others[key] / base[key] - 1.0).abs()
+            worst = moves.idxmax() if moves.notna().any() else None
+            largest = float(moves.max()) if worst is not None else math.nan
+            row |= {
+                key: base[key],
+                f"{key}_largest_move": largest,
+                f"{key}_moved_by": others.loc[worst, "variant"] if worst is not None else "",
+                f"{key}_is_result": bool(largest <= TOLERANCE) and not differ,
+            }
+        rows.append(row)
+    return pd.DataFrame(rows)
