@@ -3,11 +3,14 @@ joint stiffnesses in the static engine, the rigid march of every arch and moveme
 the DEM; du_first and du side by side with the targets of docs/atlas.md checked.
 
     .venv/bin/python scripts/atlas.py [--out reports/atlas] [--runs runs/atlas] [--jobs 2] [--no-dem]
+    .venv/bin/python scripts/atlas.py --dem-from-table   # the DEM column from OUT/atlas.csv, its runs gone
     .venv/bin/python scripts/atlas.py --invariance   # the static answers with each setting halved and doubled
     .venv/bin/python scripts/atlas.py --snap-refinement   # the snaps the floor moves, against a refined bracket
 
 Each part resumes where it stopped (the campaigns' folders under RUNS, the rigid table in OUT), so a
-rerun only redoes what changed; --no-dem reuses the DEM runs already in RUNS/dem.
+rerun only redoes what changed; --no-dem reuses the DEM runs already in RUNS/dem, --dem-from-table the
+DEM column of OUT/atlas.csv (for a change of the static engine or the rigid march on a machine without
+the DEM's runs; only while the DEM's answers cannot have changed).
 """
 
 from __future__ import annotations
@@ -16,14 +19,17 @@ import argparse
 import sys
 from pathlib import Path
 
+import pandas as pd
+
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import preset
 from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK
 from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, geometries, static_rows
 from yadearch.studies.atlas.invariance import invariance_markdown, invariance_rows, invariance_table
-from yadearch.studies.atlas.report import write_atlas
+from yadearch.studies.atlas.report import TABLE, write_atlas
 from yadearch.studies.atlas.rigid import compliant_table, rigid_table
 from yadearch.studies.atlas.snap_refinement import refinement_markdown, refinement_rows, snap_cases, verdicts
+from yadearch.studies.atlas.table import stored_engine
 from yadearch.studies.campaigns.executors import open_pool
 from yadearch.studies.campaigns.runner import run_campaign
 
@@ -54,8 +60,6 @@ def invariance(out: Path, runs: Path, jobs: int) -> None:
 def snap_refinement(out: Path) -> None:
     """The first snaps that move du_first with the floor (OUT/invariance.csv's), solved again with the
     bracket refined: OUT/snap_refinement.csv (every run) and snap_refinement.md (the verdicts)."""
-    import pandas as pd
-
     base = preset("set2")
     cases = snap_cases(pd.read_csv(out / "invariance.csv"))
     rows = []
@@ -81,6 +85,11 @@ def main() -> int:
     )
     parser.add_argument("--no-dem", action="store_true", help="do not run the DEM; use the runs in RUNS/dem")
     parser.add_argument(
+        "--dem-from-table",
+        action="store_true",
+        help="do not run the DEM; take its column from OUT/atlas.csv (its runs gone; the DEM unchanged since)",
+    )
+    parser.add_argument(
         "--invariance", action="store_true", help="only the static answers with each setting halved and doubled"
     )
     parser.add_argument(
@@ -105,7 +114,12 @@ def main() -> int:
     rigid = rigid_table(preset("set2"), geometries(), args.out, args.jobs) if "rigid" in parts else None
     if "rigid" in parts:  # what the joints' compliance alone leaves of the rigid du at the stiffest kn
         compliant_table(preset("set2"), geometries(), max(KNS_N_PER_MM3), args.out, args.jobs)
-    dem = run_engine("dem", dem_rows(), args.runs, args.jobs) if "dem" in parts and not args.no_dem else None
+    if args.dem_from_table:
+        dem = stored_engine(pd.read_csv(args.out / TABLE), "dem")
+    elif "dem" in parts and not args.no_dem:
+        dem = run_engine("dem", dem_rows(), args.runs, args.jobs)
+    else:
+        dem = None
     if args.engine == "all":
         write_atlas(args.out, args.runs, static, rigid, dem)
         print(f"atlas -> {args.out}")

@@ -22,7 +22,7 @@ from yadearch.studies.atlas.grid import (
 )
 from yadearch.studies.atlas.report import atlas_markdown, write_atlas
 from yadearch.studies.atlas.rigid import KEY, rigid_row
-from yadearch.studies.atlas.table import atlas_table, gap_pct, nearest_branch_mm, rising
+from yadearch.studies.atlas.table import atlas_table, gap_pct, nearest_branch_mm, rising, stored_engine
 from yadearch.studies.campaigns.grid import RUN_COLUMN
 
 
@@ -102,6 +102,16 @@ def test_the_table_lines_up_the_three_solvers_and_reads_the_targets(tmp_path):
     assert "du within 1 % in 0" in text  # the one DEM run is 2 % off: listed
     write_atlas(tmp_path, tmp_path / "runs", static, rigid, dem)
     assert (tmp_path / "atlas.csv").is_file() and (tmp_path / "atlas.pdf").is_file()
+
+
+def test_the_dem_column_of_a_written_table_makes_the_same_table_again(tmp_path):
+    static, rigid, dem = _synthetic()
+    write_atlas(tmp_path, tmp_path / "runs", static, rigid, dem)
+    table = pd.read_csv(tmp_path / "atlas.csv")
+    again = atlas_table(static, rigid, stored_engine(table, "dem"))
+    dem_columns = [c for c in table.columns if c.startswith("dem_")]
+    pd.testing.assert_frame_equal(again[dem_columns], table[dem_columns])
+    assert again["dem_static_gap_pct"].dropna().to_numpy() == pytest.approx([2.0])
 
 
 def test_a_stiff_gap_the_compliant_march_explains_is_said_to_be_compliance():

@@ -36,6 +36,14 @@ def _engine_part(results: pd.DataFrame | None, prefix: str) -> pd.DataFrame:
     return part.rename(columns={c: f"{prefix}_{c}" for c in ENGINE_COLUMNS})
 
 
+def stored_engine(table: pd.DataFrame, prefix: str) -> pd.DataFrame:
+    """An engine's runs as an atlas table (atlas.csv) holds them, in a campaign's results.csv form (those
+    it ran, status done): the report made again from its table where the runs' folders are gone."""
+    ran = table[table[f"{prefix}_outcome"].notna()]
+    part = ran.reindex(columns=[RUN_COLUMN, *(f"{prefix}_{c}" for c in ENGINE_COLUMNS)])
+    return part.rename(columns={f"{prefix}_{c}": c for c in ENGINE_COLUMNS}).assign(status="done")
+
+
 def _check_part(static: pd.DataFrame | None) -> pd.DataFrame:
     """The static runs' increments check (`numerics.increments_check`) as static_ columns keyed by run
     name: du and du_first with the increments halved, and whether both held within 1 %."""

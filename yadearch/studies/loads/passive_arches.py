@@ -1,12 +1,11 @@
 """Arches other than the paper's settling arch under a passive fill, in the static engine with each
-numerical setting halved and doubled (the atlas's variants): whether du and du_first are facts of the
+numerical setting halved and doubled (the atlas's variants and reading): whether du and du_first are facts of the
 arch where the fill's springs reach their caps, kinks of the path a coarse march could read as folds
 (reports/loads/passive, arches_numerics.csv; docs/loads.md)."""
 
 from __future__ import annotations
 
 import itertools
-import math
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
@@ -15,7 +14,8 @@ import pandas as pd
 from yadearch.case.config import ArchCase
 from yadearch.results.summary import RunSummary
 from yadearch.static.pool import solve_batch
-from yadearch.studies.atlas.invariance import BASE, TOLERANCE, variants
+from yadearch.studies.atlas.invariance import invariance_table, variants
+from yadearch.studies.campaigns.grid import RUN_COLUMN
 from yadearch.studies.loads.passive import SWEPT_KP, passive_case
 
 SEMICIRCLE = {"embrace_deg": 180.0, "internal_radius_mm": 277.5, "thickness_mm": 45.0}
@@ -65,24 +65,8 @@ def _answer(answer: dict[str, Any]) -> dict[str, Any]:
 
 
 def arches_verdicts(table: pd.DataFrame) -> pd.DataFrame:
-    """One row an arch and stiffness: the default's du and du_first, the largest relative move of each
-    over the variants and the variant making it, whether each is a result (within TOLERANCE, and no
-    variant ending otherwise), and the variants whose outcome differs."""
-    rows = []
-    for (arch, kn), runs in table.groupby(["arch", "kn_N_per_mm3"], sort=False):
-        base = runs[runs["variant"] == BASE].iloc[0]
-        others = runs[runs["variant"] != BASE]
-        differ = " ".join(others.loc[others["outcome"] != base["outcome"], "variant"])
-        row: dict[str, Any] = {"arch": arch, "kn_N_per_mm3": kn, "outcome": base["outcome"], "outcomes_differ": differ}
-        for key in ("du_mm", "du_first_mm"):
-            moves = (others[key] / base[key] - 1.0).abs()
-            worst = moves.idxmax() if moves.notna().any() else None
-            largest = float(moves.max()) if worst is not None else math.nan
-            row |= {
-                key: base[key],
-                f"{key}_largest_move": largest,
-                f"{key}_moved_by": others.loc[worst, "variant"] if worst is not None else "",
-                f"{key}_is_result": bool(largest <= TOLERANCE) and not differ,
-            }
-        rows.append(row)
-    return pd.DataFrame(rows)
+    """One row an arch and stiffness, read as the atlas reads its own (`studies.atlas.invariance`): the
+    default's answers, the largest relative move of each over the settings halved and doubled and the
+    setting making it, the variants whose outcome differs, and the answers with the increments refined."""
+    cases = table["arch"] + " (kn " + table["kn_N_per_mm3"].map("{:g}".format) + ")"
+    return invariance_table(table.assign(**{RUN_COLUMN: cases + "-" + table["variant"]}))
