@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 DEBIAN_PACKAGES=(yade python3-venv python3-pip python3-setuptools python3-numpy python3-pandas
                  python3-matplotlib python3-scipy python3-click python3-tomli-w python3-tqdm
                  python3-dask python3-distributed python3-pytest python3-pytest-xdist python3-numba
-                 python3-hypothesis python3-nbclient python3-ipykernel python3-nbformat
+                 python3-hypothesis python3-threadpoolctl python3-nbclient python3-ipykernel python3-nbformat
                  python3-multiprocess python3-vtk9 python3-notebook ffmpeg xvfb xauth)
 
 missing=()

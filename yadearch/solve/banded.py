@@ -4,13 +4,15 @@ and is kept in LAPACK's general band storage (ab[BAND + i - j, j] = K[i, j]; a p
 is a slice of its columns). Solves are LAPACK's banded LU with partial pivoting (dgbtf2, dgbtrs)
 compiled with numba, called thousands of times a run without scipy's checks and copies; the stability
 test by a banded Cholesky factorisation (compiled too) and the softest mode by a banded eigensolver
-(scipy) where a state's tables or a saddle's kick need it."""
+(scipy) where a state's tables or a saddle's kick need it, on one BLAS thread: its vector's last bits
+depend on the thread count, and a stiff arch's path on them."""
 
 from __future__ import annotations
 
 import numpy as np
 import scipy.linalg
 from numba import njit
+from threadpoolctl import threadpool_limits
 
 BAND = 5  # diagonals either side of the main one: 3 degrees of freedom a block, neighbours only
 
@@ -149,10 +151,7 @@ def smallest_eigenvalue(ab: np.ndarray) -> float:
         value, settled = _inverse_iteration(ab, factor, INVERSE_ITERATIONS, INVERSE_RESIDUAL, floor)
         if settled:
             return float(value)
-    values = scipy.linalg.eig_banded(
-        symmetric_upper(ab), eigvals_only=True, select="i", select_range=(0, 0), check_finite=False
-    )
-    return float(values[0])
+    return _eigen(ab, vectors=False)[0]
 
 
 @njit(cache=True)
@@ -186,5 +185,19 @@ def _inverse_iteration(ab, factor, iterations, residual, floor):
 
 def softest_mode(ab: np.ndarray) -> tuple[float, np.ndarray]:
     """The smallest eigenvalue of the symmetric part of K and its eigenvector."""
-    values, vectors = scipy.linalg.eig_banded(symmetric_upper(ab), select="i", select_range=(0, 0), check_finite=False)
-    return float(values[0]), vectors[:, 0]
+    value, vector = _eigen(ab, vectors=True)
+    assert vector is not None
+    return value, vector
+
+
+def _eigen(ab: np.ndarray, vectors: bool) -> tuple[float, np.ndarray | None]:
+    """The smallest eigenvalue of the symmetric part of K (and its eigenvector) by LAPACK's banded
+    eigensolver on one BLAS thread, so that the same K gives the same bits in any process."""
+    with threadpool_limits(limits=1, user_api="blas"):
+        found = scipy.linalg.eig_banded(
+            symmetric_upper(ab), eigvals_only=not vectors, select="i", select_range=(0, 0), check_finite=False
+        )
+    if not vectors:
+        return float(found[0]), None
+    values, vector = found
+    return float(values[0]), vector[:, 0]
