@@ -131,3 +131,18 @@ def test_each_other_arch_is_judged_against_its_own_default_and_a_changed_outcome
         "| semi (kn 5.2) | collapse | 50.00 | 0.80 % (increments_x0.5) | 60.00 | 40.00 | 20.00 % (snap_floor_x2) |"
         in text
     )
+
+
+def test_the_other_arches_campaign_is_kept_and_read_back_and_its_halved_increments_agree(tmp_path, monkeypatch):
+    import yadearch.studies.loads.passive_arches as arches
+    from yadearch.studies.atlas.invariance import variants
+
+    monkeypatch.setattr(arches, "ARCHES", {"paper, left support settling": {"moving_support": "left"}})
+    monkeypatch.setattr(arches, "ARCHES_KN", (5.2,))
+    chosen = {"base": {}, "increments_x0.5": {}}
+    monkeypatch.setattr(arches, "variants", lambda case: {v: variants(case)[v] for v in chosen})
+    table = arches.arches_numerics_table(tmp_path / "arches", jobs=1)
+    assert list(table["variant"]) == list(chosen) and set(table["outcome"]) == {"collapse"}
+    assert table["du_mm"].iloc[1] == pytest.approx(table["du_mm"].iloc[0], rel=0.01)  # 56.27 and 56.32 mm measured
+    assert any((tmp_path / "arches").rglob("*.jsonl"))  # the lean campaign's batches: a rerun reads them back
+    pd.testing.assert_frame_equal(arches.arches_numerics_table(tmp_path / "arches", jobs=1), table)

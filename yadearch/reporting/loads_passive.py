@@ -32,6 +32,7 @@ from yadearch.studies.loads.passive_arches import arches_numerics_table, arches_
 ENGINES_TOLERANCE = 0.01  # static and DEM within 1 %
 RIGID_TOLERANCE = 0.02  # the nearly rigid static engine within 2 % of the rigid LP
 RUNS_FOLDER = "runs"  # the DEM's load paths and the settling runs, under the report's folder
+ARCHES_FOLDER = "arches"  # the other arches' lean static campaign, under RUNS_FOLDER
 
 
 def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> Path:
@@ -46,7 +47,7 @@ def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = 
     settling_numerics = settlement_numerics_table(out / RUNS_FOLDER, jobs, log)
     pushes = settlement_pushes_table()
     grid = grid_table()
-    arches = arches_numerics_table(jobs)
+    arches = arches_numerics_table(out / RUNS_FOLDER / ARCHES_FOLDER, jobs)
     tables = {
         "capacities": capacities,
         "dem_numerics": numerics,

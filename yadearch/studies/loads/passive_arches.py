@@ -6,16 +6,16 @@ arch where the fill's springs reach their caps, kinks of the path a coarse march
 from __future__ import annotations
 
 import itertools
-from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
 from typing import Any
 
 import pandas as pd
 
 from yadearch.case.config import ArchCase
-from yadearch.results.summary import RunSummary
-from yadearch.static.pool import solve_batch
 from yadearch.studies.atlas.invariance import invariance_table, variants
+from yadearch.studies.campaigns.executors import open_pool
 from yadearch.studies.campaigns.grid import RUN_COLUMN
+from yadearch.studies.campaigns.runner import run_campaign
 from yadearch.studies.loads.passive import SWEPT_KP, passive_case
 
 SEMICIRCLE = {"embrace_deg": 180.0, "internal_radius_mm": 277.5, "thickness_mm": 45.0}
@@ -35,31 +35,31 @@ def arch_case(arch: str, kn: float) -> ArchCase:
     return passive_case("paper", SWEPT_KP, live_load="none").with_overrides(overrides)
 
 
-def arches_numerics_table(jobs: int = 2) -> pd.DataFrame:
-    """Every arch of ARCHES at each of ARCHES_KN with every numerical variant (the default first), solved in
-    `jobs` static workers (no run folder): a row a run, its outcome, du, du_first and hinges or its failure."""
-    runs = []
-    for arch, kn in itertools.product(ARCHES, ARCHES_KN):
-        case = arch_case(arch, kn)
-        for variant, overrides in variants(case).items():
-            numerics = {f"numerics.{key}": value for key, value in overrides.items()}
-            runs.append(({"arch": arch, "kn_N_per_mm3": kn, "variant": variant}, case.with_overrides(numerics)))
-    shares = [runs[k::jobs] for k in range(jobs)]  # run k is share k % jobs's (k // jobs)th
-    with ThreadPoolExecutor(max_workers=jobs) as pool:
-        answers = list(pool.map(lambda share: solve_batch([c.to_dict() for _, c in share], RUN_TIMEOUT_S), shares))
-    return pd.DataFrame([{**found, **_answer(answers[k % jobs][k // jobs])} for k, (found, _) in enumerate(runs)])
+def arches_numerics_table(runs: Path, jobs: int = 2) -> pd.DataFrame:
+    """Every arch of ARCHES at each of ARCHES_KN with every numerical variant (the default first), a lean
+    static campaign in `runs` (resumed: a rerun reads back what it finished), `jobs` at a time: a row a
+    run, its outcome, du, du_first and hinges or why it failed."""
+    base = passive_case("paper", SWEPT_KP, live_load="none").with_overrides({"numerics.engine": "static"})
+    planned, rows = [], []
+    for (k, arch), kn in itertools.product(enumerate(ARCHES), ARCHES_KN):
+        for variant, overrides in variants(arch_case(arch, kn)).items():
+            rows.append({RUN_COLUMN: f"arch{k}-kn{kn:g}-{variant}", **ARCHES[arch], "kn_N_per_mm3": kn, **overrides})
+            planned.append({"arch": arch, "kn_N_per_mm3": kn, "variant": variant})
+    with open_pool(jobs) as pool:
+        results = run_campaign(base, rows, runs, pool, timeout_s=RUN_TIMEOUT_S, progress=False, folders=False)
+    found = results.set_index(RUN_COLUMN)
+    return pd.DataFrame([{**plan, **_answer(found.loc[row[RUN_COLUMN]])} for plan, row in zip(planned, rows)])
 
 
-def _answer(answer: dict[str, Any]) -> dict[str, Any]:
-    """A worker's answer as the table's columns."""
-    if "summary" not in answer:
-        return {"outcome": "failed", "failure": answer.get("error") or answer.get("interrupted")}
-    summary = RunSummary.from_json(answer["summary"])
+def _answer(result: pd.Series) -> dict[str, Any]:
+    """A campaign's row as the table's columns: the answers, or the failure's reason."""
+    if result["status"] != "done":
+        return {"outcome": "failed", "failure": result["reason"]}
     return {
-        "outcome": summary.path_outcome,
-        "du_mm": summary.du_mm,
-        "du_first_mm": summary.du_first_mm,
-        "hinges": summary.hinge_labels,
+        "outcome": result["outcome"],
+        "du_mm": result["du_mm"],
+        "du_first_mm": result["du_first_mm"],
+        "hinges": result["hinges"],
         "failure": "",
     }
 
