@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 
 
@@ -12,3 +13,9 @@ def markdown_table(columns: list[str], rows: Iterable[Iterable[str]]) -> list[st
         "|---" * len(columns) + "|",
         *("| " + " | ".join(row) + " |" for row in rows),
     ]
+
+
+def text_cell(value: object) -> str:
+    """A table's text cell: empty where the value is missing (None, or the NaN pandas leaves in a column
+    some rows do not have)."""
+    return "" if value is None or (isinstance(value, float) and math.isnan(value)) else str(value)

@@ -10,7 +10,7 @@ from pathlib import Path
 import pandas as pd
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
-from yadearch.markdown import markdown_table
+from yadearch.markdown import markdown_table, text_cell
 from yadearch.plotting.loads import plot_passive
 from yadearch.reporting.passive_arches import arches_markdown
 from yadearch.studies.loads.passive import (
@@ -175,7 +175,7 @@ def passive_markdown(
                     getattr(r, "outcome", ""),
                     _number(getattr(r, "du_mm", math.nan)),
                     _number(getattr(r, "du_first_mm", math.nan)),
-                    _text(getattr(r, "hinges", "")) or _text(r.failure),
+                    text_cell(getattr(r, "hinges", "")) or text_cell(r.failure),
                 ]  # fmt: skip
                 for r in settlement.itertuples()
             ),
@@ -218,7 +218,7 @@ def settling_numerics_markdown(table: pd.DataFrame) -> str:
         for k, r in enumerate(runs.itertuples()):
             rows.append(
                 [engine, r.variant, _number(r.du_mm), _percent(moves["du_mm"].iloc[k]), _number(r.du_first_mm),
-                 _percent(moves["du_first_mm"].iloc[k]), _text(r.hinges) or _text(r.failure)]
+                 _percent(moves["du_first_mm"].iloc[k]), text_cell(r.hinges) or text_cell(r.failure)]
             )  # fmt: skip
         for key, name in (("du_mm", "du"), ("du_first_mm", "du_first")):
             largest = float(moves[key].abs().max())
@@ -268,8 +268,3 @@ def _number(value: float | None) -> str:
 
 def _percent(value: float) -> str:
     return "" if not math.isfinite(value) else f"{100 * value:.2f} %"
-
-
-def _text(value: object) -> str:
-    """A table's text cell: empty where pandas left a NaN (a column some rows do not have)."""
-    return "" if isinstance(value, float) and math.isnan(value) else str(value)

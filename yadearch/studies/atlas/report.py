@@ -10,7 +10,7 @@ from typing import Any
 import pandas as pd
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
-from yadearch.markdown import markdown_table
+from yadearch.markdown import markdown_table, text_cell
 from yadearch.plotting.atlas import atlas_figure
 from yadearch.studies.atlas.grid import DEM_KN_N_PER_MM3, KNS_N_PER_MM3, MOVEMENTS, SHAPES, THICKNESS_OVER_RADIUS
 from yadearch.studies.atlas.rigid import COMPLIANT_TABLE, KEY
@@ -56,10 +56,6 @@ def _mm(value: float) -> str:
 
 def _pct(value: float) -> str:
     return "-" if math.isnan(value) else f"{value:+.1f} %"
-
-
-def _text(value: object) -> str:
-    return "" if value is None or (isinstance(value, float) and math.isnan(value)) else str(value)
 
 
 def atlas_markdown(table: pd.DataFrame) -> str:
@@ -161,8 +157,8 @@ def _engines_section(table: pd.DataFrame) -> list[str]:
             [
                 [
                     r.run,
-                    f"{_text(r.static_outcome) or 'pending'} {_mm(r.static_du_mm)}",
-                    f"{r.dem_outcome} {_mm(r.dem_du_mm)} {_text(r.dem_reason)}",
+                    f"{text_cell(r.static_outcome) or 'pending'} {_mm(r.static_du_mm)}",
+                    f"{r.dem_outcome} {_mm(r.dem_du_mm)} {text_cell(r.dem_reason)}",
                 ]
                 for r in disagree.itertuples()
             ],
@@ -185,9 +181,9 @@ def _gap_rows(
                 r["run"],
                 _mm(r["static_du_first_mm"]),
                 _mm(r["static_du_mm"]),
-                _text(r["static_hinges"]),
+                text_cell(r["static_hinges"]),
                 _mm(r[other[0]]),
-                _text(r[other[1]]),
+                text_cell(r[other[1]]),
                 _pct(r[gap]),
                 *(shown(r[column]) for column, shown in extra.values()),
             ]
@@ -221,7 +217,7 @@ def _unresolved_section(table: pd.DataFrame) -> list[str]:
     return lines + markdown_table(
         ["run", "outcome", "reason", "rigid du_first", "rigid du"],
         [
-            [r.run, r.static_outcome, _text(r.static_reason), _mm(r.rigid_du_first_mm), _mm(r.rigid_du_mm)]
+            [r.run, r.static_outcome, text_cell(r.static_reason), _mm(r.rigid_du_first_mm), _mm(r.rigid_du_mm)]
             for r in rows.itertuples()
         ],
     )
@@ -250,7 +246,7 @@ def _check_section(table: pd.DataFrame) -> list[str]:
             [
                 [
                     r.run,
-                    _text(r.static_outcome),
+                    text_cell(r.static_outcome),
                     _mm(r.static_du_mm),
                     _mm(r.static_du_halved_increments_mm),
                     _mm(r.static_du_first_mm),
@@ -269,15 +265,15 @@ def _du_table(table: pd.DataFrame) -> list[str]:
         by_kn = runs.set_index("kn_N_per_mm3")
         cells = [_cell(by_kn.loc[k]) for k in KNS_N_PER_MM3]
         first = runs.iloc[0]
-        rigid = _mm(first["rigid_du_mm"]) if first["rigid_outcome"] == "collapse" else _text(first["rigid_outcome"])
-        rows.append([name, *cells, rigid, _text(first.get("rigid_hinges"))])
+        rigid = _mm(first["rigid_du_mm"]) if first["rigid_outcome"] == "collapse" else text_cell(first["rigid_outcome"])
+        rows.append([name, *cells, rigid, text_cell(first.get("rigid_hinges"))])
     return markdown_table(columns, rows)
 
 
 def _cell(row: pd.Series) -> str:
     """A static run as du (du_first where it differs), or its outcome."""
     if row["static_outcome"] != "collapse":
-        return _text(row["static_outcome"]) or "pending"
+        return text_cell(row["static_outcome"]) or "pending"
     first, du = row["static_du_first_mm"], row["static_du_mm"]
     moved = "*" if row.get("static_increments_resolved") is False or row.get("static_increments_resolved") == 0 else ""
     return (_mm(du) if abs(first - du) < 0.01 else f"{_mm(du)} ({_mm(first)})") + moved
