@@ -19,32 +19,7 @@ from yadearch.solve.stages import Outcome
 
 DEM, STATIC = "dem", STATIC_ENGINE  # the engines that write run folders
 # The static engine's revision, raised with every change of its results: a static run made by another
-# one is made again instead of reused (`reuse.outdated`). 2: the joints' shear is carried from one
-# self-weight load step to the next (1: each step counted the sliding from the blocks at rest).
-# 3: the runaway bound a multiple of the ring's thickness (was 1 mm), continuation checked against the
-# step, folds located, descents retried (a solver failure is `unresolved`, never collapse).
-# 4: continuation and snaps judged against the ring's thickness alone (0.01 t), not the step or the
-# bracket: a snap hidden in a long step or a wide bracket no longer moves du_first.
-# 5: a descent kicked off a saddle that comes back to it twice has found a well (sliding joints make
-# the tangent's symmetric part indefinite at stable states), and one still falling goes on.
-# 6: a saddle is left along its softest mode far enough for its negative stiffness to push 10x the
-# converged residual (a nearly neutral mode at a symmetric bifurcation), its side chosen by the blocks'
-# order where the loads do not choose; a descent's goes carry the joints' shear from go to go.
-# 7: the self-weight's descent goes on while it falls, as the path's does; one that finds neither an
-# equilibrium nor a fall is `unresolved`, not an arch that cannot stand.
-# 8: a Newton solve whose step from an indefinite tangent was halved three times gives up (past a fold);
-# an imperfect joint's tangent in closed form (the same values, derivatives to round-off). The same du,
-# du_first, outcome and hinges on the kn sweep, 200 Monte Carlo samples and the cross-check; of the
-# atlas's 258 answers du moves in 1 (-0.37 %), du_first by one bracket in 3, hinges in 1 (docs/speed.md).
-# 9: a self-weight ramp that falls or stops is made again in finer steps, and the arch stands if either
-# ramp stands (the first descent from faces exactly touching can take another way); only arches the
-# first ramp did not stand change.
-# 10: the fill's passive springs yield for good (`model.passive_fill.yielded`): a face that moves back
-# after pushing the fill past u_p loses its push over u_p; only runs with fill_passive_coefficient change.
-# 11: a branch known by one state (the path's start, a snap's landing) is predicted along the free
-# blocks' whole tangent: the fill's springs and the loads' turning arms with the joints (was the joints
-# alone, so that Newton failed a spring's step away and a coarse march read a fold); only runs with
-# loads or fill change.
+# one is made again instead of reused (`reuse.outdated`). What each revision changed: CHANGELOG.md.
 STATIC_REVISION = 11
 TRANSLATION = "translation"
 # written only when set: engine-specific figures and what older runs lack
