@@ -102,7 +102,7 @@ def test_a_snapshot_puts_the_arch_back_where_it_was(settled):
     positions, shear = runner.positions(), runner.scene.contacts.joint_contacts()[2]
     speeds = runner.recorder.voussoir_speeds()
     runner.move_to(delta + units.mm(3.0))
-    runner._run_steps(50)  # caught moving: the restore must bring back the saved velocities too
+    runner.run_steps(50)  # caught moving: the restore must bring back the saved velocities too
     assert abs(runner.positions() - positions).max() > units.mm(0.5)  # it did move
     assert abs(runner.recorder.voussoir_speeds() - speeds).max() > units.mm(1.0)
     runner.restore(snapshot)
@@ -156,7 +156,7 @@ def test_an_engine_error_fails_the_run_in_one_line_instead_of_hanging(settled):
     contacts.step = lambda: 1 / 0  # a Python engine of the scene raises inside YADE's loop
     try:
         with pytest.raises(RunFailedError, match="an engine probably raised"):
-            runner._run_steps(100)
+            runner.run_steps(100)
     finally:
         contacts.step = original
         runner.close()

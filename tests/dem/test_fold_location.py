@@ -56,7 +56,7 @@ class SnappingArch:
     def static_distance(self) -> float | None:
         return None  # no static model: the hold's verdict alone
 
-    def positions(self) -> np.ndarray:
+    def path_positions(self) -> np.ndarray:
         return np.array([[self.branch * JUMP, 0.0, 0.0]])
 
     def reach(self, increment: float) -> float:
@@ -66,7 +66,7 @@ class SnappingArch:
         pass  # no fill
 
     def branch_start(self) -> tuple[np.ndarray, np.ndarray | None]:
-        return self.positions(), None  # a support movement's: no prediction from one state
+        return self.path_positions(), None  # a support movement's: no prediction from one state
 
     def delta(self) -> float:
         return self.position
@@ -161,7 +161,7 @@ class MoveSnappingArch(SnappingArch):
     """Its blocks follow the support (CREEP x its position) and snap by SHORT_JUMP during the move that
     crosses FOLD, so the hold that follows finds them at rest: only the branch's trend tells the snap."""
 
-    def positions(self) -> np.ndarray:
+    def path_positions(self) -> np.ndarray:
         return np.array([[CREEP * self.position + self.branch * SHORT_JUMP, 0.0, 0.0]])
 
     def move_support(self, target: float, speed_fraction: float) -> None:
@@ -207,7 +207,7 @@ class SoftFirstSnapArch(MoveSnappingArch):
         return float("inf")
 
     def branch_start(self) -> tuple[np.ndarray, np.ndarray | None]:
-        return self.positions(), np.array([[CREEP, 0.0, 0.0]]) if self.tangent else None
+        return self.path_positions(), np.array([[CREEP, 0.0, 0.0]]) if self.tangent else None
 
     def move_support(self, target: float, speed_fraction: float) -> None:
         SnappingArch.move_support(self, target, speed_fraction)

@@ -47,3 +47,18 @@ def test_the_dem_takes_the_static_paths_snap_not_a_branch_beyond_it(tmp_path):
     assert dem.du_mm == pytest.approx(static.du_mm, rel=AGREEMENT)
     assert static.hinge_labels == dem.hinge_labels
     assert dem.relaxations and dem.relaxations["off_equilibrium"]  # states the hold alone accepted
+
+
+def test_the_dem_read_at_static_equilibria_takes_the_static_paths_snap(tmp_path):
+    """The same snap with the DEM's path read at the static model's equilibria and a branch predicted from
+    one state along its tangent (numerics.support_path_states = 'static', docs/numerics.md): measured
+    99.48 mm, du_first 73.93 mm, 1E 2I 5E 8I 10E, the snap 2.49 mm (DEM 12 s)."""
+    from yadearch.dem.runner import Runner
+
+    case = preset("set1").with_overrides({**COARSE, "kn_N_per_mm3": 0.3})
+    dem = Runner(case.with_overrides({"numerics.support_path_states": "static"}), log=lambda line: None).run()
+    static = simulate_static(case.with_overrides({"numerics.engine": "static"}), tmp_path, log=lambda line: None)
+    assert dem.collapsed and len(dem.snaps) == 1
+    assert dem.du_first_mm == pytest.approx(static.du_first_mm, rel=AGREEMENT)
+    assert dem.du_mm == pytest.approx(static.du_mm, rel=AGREEMENT)
+    assert static.hinge_labels == dem.hinge_labels

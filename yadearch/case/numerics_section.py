@@ -16,6 +16,8 @@ SNAP_THICKNESS_RATIO = 0.01  # a state this x the ring's thickness off its branc
 STATIC_ENGINE = "static"  # numerics.engine: Newton's method on the same blocks and joints
 NO_INCREMENTS_CHECK = "none"  # numerics.increments_check: the path solved once
 HALVED_INCREMENTS_CHECK = "halved"  # ... and again with the increments halved (static engine)
+SCENE_PATH_STATES = "scene"  # numerics.support_path_states: the DEM's path compares its holds' own states
+STATIC_PATH_STATES = "static"  # ... the static model's stable equilibria that its holds sit in
 
 
 @dataclass
@@ -265,6 +267,16 @@ class NumericsConfig:
             "within 1 %); twice the solver's time. `yadearch run` turns it on for a static run "
             "(docs/numerics.md)",
             predates=NO_INCREMENTS_CHECK,
+        ),
+    )
+    support_path_states: str = field(
+        default=SCENE_PATH_STATES,
+        metadata=choice_meta(
+            (SCENE_PATH_STATES, STATIC_PATH_STATES),
+            "DEM only: the states a support movement's path compares to tell a snap: 'scene' = the holds' "
+            "own, 'static' = the static model's stable equilibria they sit in, a branch predicted from one "
+            "state along its tangent, as the DEM's load paths do (docs/numerics.md, 'Snaps in the DEM')",
+            predates=SCENE_PATH_STATES,
         ),
     )
 

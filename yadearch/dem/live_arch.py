@@ -55,7 +55,7 @@ class LiveArch(Protocol):
 
     def yield_fill(self) -> None: ...  # the blocks rest in an equilibrium of the path: the fill yields for good
 
-    # a branch's first state: the voussoirs' centroids as `positions` gives them, and how they move per unit
+    # a branch's first state: the voussoirs' centroids as `path_positions` gives them, and how they move per unit
     # of the path's parameter from there (n, 3; the static model's tangent; None: it does not predict)
     def branch_start(self) -> tuple[np.ndarray, np.ndarray | None]: ...
 
@@ -72,7 +72,8 @@ class LiveArch(Protocol):
 
     def snapshot(self) -> dict[str, Any]: ...
 
-    def positions(self) -> np.ndarray: ...  # the voussoirs' centroids now (n, 3; m)
+    # the voussoirs' centroids (n, 3; m) the path compares: the scene's, or the static equilibrium's it sits in
+    def path_positions(self) -> np.ndarray: ...
 
     def restore(self, snapshot: dict[str, Any]) -> None: ...
 

@@ -14,6 +14,7 @@ from yadearch.case.config import ArchCase
 from yadearch.dem.live_load import LOAD_CALLBACK, LoadDriver
 from yadearch.dem.runner import Runner
 from yadearch.dem.scene import install_before_integrator
+from yadearch.dem.static_check import centroid_rows
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
 from yadearch.model.joint_tangent import BLOCK_DOFS
@@ -113,7 +114,7 @@ class LoadedArch:
         self.runner.drive(self.driver.reached)
 
     def branch_start(self) -> tuple[np.ndarray, np.ndarray | None]:
-        """A branch's first state: the centroids as `positions` gives them, and how they move per unit of
+        """A branch's first state: the centroids as `path_positions` gives them, and how they move per unit of
         the load's multiplier from the static equilibrium the scene sits in (n, 3), its tangent's
         response K^-1 f, from which the static engine predicts a branch known by one state; no slope
         without that equilibrium or where K is singular. One static solve serves both."""
@@ -129,7 +130,7 @@ class LoadedArch:
             return self._settled(found), None
         moved = np.zeros_like(found.u)
         moved[arch.free_dofs] = growth
-        return self._settled(found), _centroid_rows(moved, np.zeros((len(moved) // BLOCK_DOFS - 2, 3)))
+        return self._settled(found), centroid_rows(moved, np.zeros((len(moved) // BLOCK_DOFS - 2, 3)))
 
     def drive_by_displacement(self, secant_ratio: float, rate: float) -> LoadSpring | None:
         """From now on the load is driven by its displacement through a spring `secant_ratio` x the path's
@@ -152,7 +153,7 @@ class LoadedArch:
         self.driver.drive_by(spring)
         return spring
 
-    def positions(self) -> np.ndarray:
+    def path_positions(self) -> np.ndarray:
         """The voussoirs' centroids (n, 3; m) at the static model's stable equilibrium that the scene's state
         sits in, the scene's own where there is none: the path's trend and snap test compare equilibria,
         not holds within their force tolerance, which over the path's smallest stiffness near the peak is
@@ -167,7 +168,7 @@ class LoadedArch:
 
     def _settled(self, found: Equilibrium) -> np.ndarray:
         """The scene's centroids (n, 3) moved to the equilibrium `found`."""
-        return _centroid_rows(found.u, self.runner.positions().copy())
+        return centroid_rows(found.u, self.runner.positions().copy())
 
     def hold(
         self,
@@ -208,9 +209,3 @@ class LoadedArch:
 
     def record_collapse(self) -> list[Hinge]:
         return self.runner.recorder.record_collapse()
-
-
-def _centroid_rows(u: np.ndarray, rows: np.ndarray) -> np.ndarray:
-    """`rows` (n, 3: the voussoirs' centroids) with x and y from the state vector `u` (the supports too)."""
-    rows[:, 0:2] = u.reshape(-1, BLOCK_DOFS)[1:-1, 0:2]
-    return rows

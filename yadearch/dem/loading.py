@@ -93,7 +93,7 @@ class EquilibriumPath:
         if verdict != Verdict.STABLE:
             self._failures[target] = self.arch.snapshot()
         elif start < target:
-            trend = trend.then(target, self.arch.positions())
+            trend = trend.then(target, self.arch.path_positions())
         self._trial_trend = trend
         return verdict
 
@@ -109,7 +109,7 @@ class EquilibriumPath:
         fraction = abs(target - start) / self.settings.max_increment
         self.arch.move_support(target, min(1.0, fraction))
         self.arch.stage = Stage.RELAX
-        origin = self.arch.positions()
+        origin = self.arch.path_positions()
         verdict = self.arch.hold()
         first_move = self.arch.hold_move
         for _ in range(max(HOLD_RETRIES, near_holds)):  # the hold goes on before it is called unresolved
@@ -125,7 +125,7 @@ class EquilibriumPath:
 
     def _moved_from(self, origin: np.ndarray) -> float:
         """The largest block displacement from the voussoir centroids `origin` to now (m)."""
-        return float(np.linalg.norm(self.arch.positions() - origin, axis=1).max())
+        return float(np.linalg.norm(self.arch.path_positions() - origin, axis=1).max())
 
     def _snapped(self, trend: Trend, start: float, target: float) -> bool:
         """Whether the last relaxation, from `start` to `target` on `trend`'s branch, snapped to another
@@ -134,13 +134,13 @@ class EquilibriumPath:
         where the branch's trend puts it (a snap made during the move, as the static engine tells one)."""
         floor = self.snap_floor
         moved = self._relax_move > max(floor, self.arch.reach(target - start))
-        return moved or trend.distance(target, self.arch.positions()) > floor
+        return moved or trend.distance(target, self.arch.path_positions()) > floor
 
     def _landing(self, trend: Trend, low: float, high: float) -> float | None:
         """How far the snap from `low` to `high` took the blocks off `trend`'s branch (m; None: on it), as
         the static engine measures it: from the trend's prediction, else by the relaxation's move."""
         if trend.predicts():
-            off = trend.distance(high, self.arch.positions())
+            off = trend.distance(high, self.arch.path_positions())
             return off if off > self.snap_floor else None
         return self._relax_move if self._snapped(trend, low, high) else None
 
@@ -164,7 +164,7 @@ class EquilibriumPath:
             self.arch.restore(low_state)
             probe = self._relax_at(low, middle, near_holds=0)  # a state off the static model's is past the fold
             if probe == Verdict.STABLE and not self._snapped(trend, low, middle):
-                low, low_state, trend = middle, self.arch.snapshot(), trend.then(middle, self.arch.positions())
+                low, low_state, trend = middle, self.arch.snapshot(), trend.then(middle, self.arch.path_positions())
             else:
                 high = middle
         return low, low_state, high, trend
@@ -212,7 +212,7 @@ class EquilibriumPath:
             return False
         self.arch.yield_fill()
         self._accepted[-1] = self.arch.snapshot()
-        self._trends[-1] = self._trends[-1].with_last(self.arch.positions())
+        self._trends[-1] = self._trends[-1].with_last(self.arch.path_positions())
         self._at_accepted = True
         return True
 
@@ -222,7 +222,7 @@ class EquilibriumPath:
         `solve.falls`): 'runaway' once a block is the runaway bound from the last accepted state,
         'stable' where it comes to rest (a slow snap survived, recorded as one), else 'timeout'."""
         self.arch.restore(self._accepted[-1])
-        origin = self.arch.positions()
+        origin = self.arch.path_positions()
         self.arch.restore(self._failures[target])
         self.arch.stage = Stage.RELAX
         verdict, holds, off = Verdict.TIMEOUT, 0, None

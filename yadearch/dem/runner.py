@@ -5,32 +5,28 @@ holds it (`hold`), goes back to kept states and records (docs/theory.md)."""
 from __future__ import annotations
 
 import functools
-import math
 import time
 from collections.abc import Callable
 
 import numpy as np
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import runaway_length, standing_parameters
+from yadearch.case.mechanics import runaway_length
+from yadearch.case.numerics_section import STATIC_PATH_STATES
 from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.dem.dead_load import install_dead_loads
 from yadearch.dem.driver import SupportDriver
-from yadearch.dem.live_arch import settle_selfweight
 from yadearch.dem.recorder import Recorder, Records
-from yadearch.dem.scene import CALLBACK_NAME, body_states, build_scene, install_before_integrator, stop_voussoirs
+from yadearch.dem.scene import CALLBACK_NAME, build_scene, install_before_integrator, stop_voussoirs
 from yadearch.dem.scene_state import capture, put_back
+from yadearch.dem.selfweight import apply_selfweight
 from yadearch.dem.static_check import StaticCheck
-from yadearch.dem.stepping import SteppingGate
+from yadearch.dem.stepping import CHECK_EVERY_STEPS, SteppingGate
 from yadearch.dem.timing import EngineClock
-from yadearch.errors import CANNOT_STAND, RunFailedError
+from yadearch.errors import RunFailedError
 from yadearch.model import units
 from yadearch.results.summary import RunSummary
-from yadearch.solve.limit import why_not_standing
 from yadearch.solve.stages import Stage, Verdict
-
-SELFWEIGHT_COLLAPSE_MM = 50.0  # a block falling this far under self-weight means the arch cannot stand
-CHECK_EVERY_STEPS = 50  # steps between the runner's checks (speed, equilibrium, records)
 
 
 class Runner:
@@ -94,7 +90,7 @@ class Runner:
     def delta(self) -> float:
         return self.driver.displacement()
 
-    def _unbalanced(self) -> float:
+    def unbalanced(self) -> float:
         """Unbalanced force: mean resultant force on the blocks / mean contact force."""
         return self.scene.contacts.unbalanced()
 
@@ -126,7 +122,7 @@ class Runner:
         """Stop YADE's simulation thread (it finishes the step it is in)."""
         self.gate.close()
 
-    def _run_steps(self, n: int) -> None:
+    def run_steps(self, n: int) -> None:
         self._advance(n)
         self.recorder.series()
 
@@ -141,64 +137,8 @@ class Runner:
 
     # ---- stages ---------------------------------------------------------------------------
     def selfweight(self) -> dict:
-        """Apply gravity gradually (over `gravity_ramp_periods` joint periods, so that a soft arch
-        does not overshoot past its equilibrium), settle with the supports still (unbalanced force
-        and block speeds as in a hold, and the supports carrying the weight within the same
-        tolerance, so that the reactions read there are static), and zero du's origin there."""
-        from yade import O
-
-        self.stage = Stage.SELFWEIGHT
-        start = O.iter
-        ramp_s = self.num.gravity_ramp_periods * math.pi * O.dt / self.num.timestep_safety
-        max_steps = int((self.num.selfweight_max_s + ramp_s) / O.dt)
-        newton = self.scene.newton
-        gravity = np.array(newton.gravity)
-        ramp_steps = max(1, int(ramp_s / O.dt))
-        self.weight = sum(O.bodies[i].state.mass for i in self.scene.voussoir_ids) * self.case.loading.gravity_m_per_s2
-        # the backfill's weight on the voussoirs, which the supports carry beside the arch's
-        fill = self.dead_loads.vertical if self.dead_loads is not None else 0.0
-        unbalanced = math.inf
-        while O.iter - start < max_steps:
-            fraction = min(1.0, (O.iter - start) / ramp_steps)
-            newton.gravity = tuple(gravity * fraction)
-            self._run_steps(CHECK_EVERY_STEPS)
-            self.positions()  # raises on a NaN
-            unbalanced = self._unbalanced()
-            self.progress(f"gravity {fraction:.0%}, unbalanced {unbalanced:.2e}")
-            sag = float(np.max(np.abs(body_states(self.scene)[0] - self.scene.pos0)))
-            if sag > units.mm(SELFWEIGHT_COLLAPSE_MM):
-                raise RunFailedError(
-                    f"{CANNOT_STAND}: a block fell {units.to_mm(sag):.0f} mm ({standing_parameters(self.case)}); "
-                    + why_not_standing(self.case)
-                )
-            if (
-                fraction >= 1.0
-                and unbalanced < self.num.equilibrium_tolerance
-                and O.iter - start > ramp_steps + 10 * CHECK_EVERY_STEPS
-                and self.recorder.voussoir_speeds().max() < units.mm(self.num.still_speed_mm_per_s)
-                and self.recorder.weight_carried_error(self.weight + fill) < self.num.equilibrium_tolerance
-            ):
-                break
-        else:
-            raise RunFailedError(
-                f"no equilibrium under self-weight within {self.num.selfweight_max_s} s "
-                f"(unbalanced force ratio {unbalanced:.3g} > "
-                f"{self.num.equilibrium_tolerance} or blocks still moving)"
-            )
-        settle_selfweight(self)
-        unbalanced = self._unbalanced()
-        self.driver.zero_here()
-        self.recorder.series(force=True)
-        self.recorder.joints(Stage.SELFWEIGHT)
-        info = self.recorder.selfweight_record(self.weight, unbalanced, O.iter - start, fill)
-        self.log(
-            f"[{self.case.name}] self-weight equilibrium after {info['steps']} steps: "
-            f"unbalanced {unbalanced:.2e}, reactions {info['vertical_reaction_sum_N']:.3f} N "
-            f"for a weight of {self.weight:.3f} N"
-            + (f" and {fill:.3f} N of backfill" if fill else "")
-            + f", thrust {info['thrust_N']:.3f} N"
-        )
-        return info
+        """The self-weight stage (`dem.selfweight`): its record, du's origin zeroed at its equilibrium."""
+        return apply_selfweight(self)
 
     def smallest_stiffness(self, live: np.ndarray | None = None) -> float:
         """The smallest eigenvalue of the free blocks' tangent stiffness at the scene's poses (N/m), with
@@ -218,9 +158,19 @@ class Runner:
         """A support increment moves the blocks it carries at most by as much (m)."""
         return abs(increment)
 
-    def branch_start(self) -> tuple[np.ndarray, None]:
-        """The centroids now, no slope: a support's path does not predict from one state (docs/numerics.md)."""
-        return self.positions(), None
+    def path_positions(self) -> np.ndarray:
+        """The centroids the path compares (`numerics.support_path_states`): the scene's, or those of the
+        static model's stable equilibrium the scene sits in (the scene's where it has none)."""
+        return self.branch_start()[0]
+
+    def branch_start(self) -> tuple[np.ndarray, np.ndarray | None]:
+        """A branch's first state, `path_positions`, and with 'static' states how the blocks move per metre
+        of the support's path (`dem.static_check`); the scene's states do not predict (docs/numerics.md)."""
+        scene, check = self.positions(), self.static_check
+        if self.num.support_path_states != STATIC_PATH_STATES or check is None:
+            return scene, None
+        branch = check.support_branch(self.delta(), self.live_multiplier, scene)
+        return branch if branch is not None else (scene, None)
 
     @functools.cached_property
     def static_check(self) -> StaticCheck | None:
@@ -262,7 +212,7 @@ class Runner:
         start = O.iter
         self.hold_move = 0.0
         while O.iter - start < max_steps:
-            self._run_steps(CHECK_EVERY_STEPS)
+            self.run_steps(CHECK_EVERY_STEPS)
             moved = np.linalg.norm(self.positions() - start_pos, axis=1).max()
             self.hold_move = max(self.hold_move, moved)
             self.progress(f"holding: max block move {units.to_mm(moved):.3f} mm")
@@ -270,7 +220,7 @@ class Runner:
                 return Verdict.RUNAWAY
             if (
                 O.iter - start >= min_steps
-                and self._unbalanced() < tolerance
+                and self.unbalanced() < tolerance
                 and self.recorder.voussoir_speeds().max() < still_speed
             ):
                 return Verdict.STABLE
@@ -294,7 +244,7 @@ class Runner:
         """Step at the loading's damping until `done()`: a move of the support, or of a live load."""
         self._set_damping(self.num.damping)
         while not done():
-            self._run_steps(CHECK_EVERY_STEPS // 5)
+            self.run_steps(CHECK_EVERY_STEPS // 5)
             self.positions()  # raises on a NaN
 
     def run(self) -> RunSummary:

@@ -14,9 +14,12 @@ from yadearch.case.config import ArchCase
 from yadearch.dem.joint_elements import JointElementContacts
 from yadearch.dem.live_arch import JOINT_CONTACTS
 from yadearch.dem.scene import ArchScene, body_states
+from yadearch.model.joint_tangent import BLOCK_DOFS
 from yadearch.solve.newton import Equilibrium
 from yadearch.solve.stages import Verdict
 from yadearch.solve.static_path import StaticLoading
+
+SLOPE_STEP = 1e-6  # support move (m) over which the one-state prediction, linear in it, gives the branch's slope
 
 
 class StaticCheck:
@@ -65,3 +68,23 @@ class StaticCheck:
             if found.verdict != Verdict.STABLE:
                 return None
         return found if found.stable() else None
+
+    def support_branch(
+        self, delta: float, multiplier: float, scene: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray] | None:
+        """The stable equilibrium the scene sits in, as the centroid rows `scene` (n, 3) moved to it, and
+        how they move per metre of the support's path there (the static engine's prediction from one
+        state, `StaticLoading.tangent_prediction`); None where there is no such equilibrium."""
+        found = self.equilibrium(delta, multiplier)
+        if found is None:
+            return None
+        shear = found.joints.forces.shear_force
+        ahead = self.loading.tangent_prediction(found.u, delta, shear, found.springs, delta + SLOPE_STEP)
+        slope = centroid_rows((ahead - found.u) / SLOPE_STEP, np.zeros_like(scene))
+        return centroid_rows(found.u, scene.copy()), slope
+
+
+def centroid_rows(u: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """`rows` (n, 3: the voussoirs' centroids) with x and y from the state vector `u` (the supports too)."""
+    rows[:, 0:2] = u.reshape(-1, BLOCK_DOFS)[1:-1, 0:2]
+    return rows

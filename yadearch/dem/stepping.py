@@ -23,6 +23,7 @@ GATE_NAME = "_yadearch_gate"  # where the gate engine's command finds the gate
 STALL_S = 120.0  # wall seconds without a single step before a run is declared stalled
 POLL_S = 0.5  # how often a waiting runner checks that the simulation thread is alive
 CLOSE_S = 10.0  # wall seconds a closing gate waits for the thread to end its last step
+CHECK_EVERY_STEPS = 50  # steps between a runner's checks (speed, equilibrium, records)
 
 _active: list[SteppingGate] = []  # the gate whose simulation thread is running (started), if any
 

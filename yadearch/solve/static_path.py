@@ -247,18 +247,24 @@ class StaticLoading:
         lams = [s.lam for s in history]
         if len(set(lams)) == len(lams) >= 2:
             return self.place(extrapolate(lams, [s.u for s in history], target), target)
-        moved = self.place(last.u, target)
-        multiplier = self.parameter.multiplier(last.lam)
-        joints, _, tangent = self.solver.state(
-            last.u, last.u, last.forces.shear_force, multiplier=multiplier, springs=last.springs
-        )
+        return self.tangent_prediction(last.u, last.lam, last.forces.shear_force, last.springs, target)
+
+    def tangent_prediction(
+        self, u: np.ndarray, lam: float, shear: np.ndarray, springs: np.ndarray | None, target: float
+    ) -> np.ndarray:
+        """Where the tangent at the equilibrium `u` (at the path's `lam`, its joints' `shear`, the fill's
+        `springs`) puts the arch at `target`: the free blocks' whole tangent (the joints, the loads'
+        turning arms, the fill's springs) solved for the supports' move and the load's growth."""
+        moved = self.place(u, target)
+        multiplier = self.parameter.multiplier(lam)
+        joints, _, tangent = self.solver.state(u, u, shear, multiplier=multiplier, springs=springs)
         free = self.arch.free_dofs
         driven = np.setdiff1d(np.arange(len(moved)), free)
-        load = -self.arch.stiffness(joints)[np.ix_(free, driven)] @ (moved - last.u)[driven]
+        load = -self.arch.stiffness(joints)[np.ix_(free, driven)] @ (moved - u)[driven]
         more = self.parameter.multiplier(target) - multiplier
         if more:
-            load = load + more * self.arch.live_forces(last.u)
-        try:  # the free blocks' whole tangent: the joints, the loads' turning arms and the fill's springs
+            load = load + more * self.arch.live_forces(u)
+        try:
             moved[free] += banded.solve(tangent, load)
         except (np.linalg.LinAlgError, ValueError):
             pass  # a singular tangent: the descent starts from the state with only the support moved

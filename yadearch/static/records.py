@@ -50,6 +50,7 @@ DEM_ONLY_NUMERICS = (
     "settle_speed_mm_per_s",
     "series_every_steps",
     "max_steps",
+    "support_path_states",
 )
 
 

@@ -15,6 +15,7 @@ import numpy as np
 import pandas as pd
 
 from yadearch.case.config import ArchCase, preset
+from yadearch.case.numerics_section import STATIC_ENGINE, STATIC_PATH_STATES
 from yadearch.errors import YadearchError
 from yadearch.launch.load_process import run_load_process
 from yadearch.launch.process import run_case_process
@@ -179,24 +180,36 @@ def settlement_table(out: Path, log: Callable[[str], None] = print) -> pd.DataFr
 
 def settlement_numerics_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> pd.DataFrame:
     """The settling arch at Kp SWEPT_KP with each engine's numerics halved and doubled (SETTLING_VARIANTS;
-    the default's folders are settlement_table's), `jobs` at a time: a row a run, its variant named."""
+    the default's folders are settlement_table's), the DEM's also with its path read at the static
+    equilibria (`numerics.support_path_states`), `jobs` at a time: a row a run, its engine and variant named."""
     default = passive_case("paper", SWEPT_KP, live_load="none", name=f"paper_settling_kp{SWEPT_KP:g}")
     runs = []
     for engine, variants in SETTLING_VARIANTS.items():
-        base = default.with_overrides({"numerics.engine": engine})
-        runs.append(("default", base, out / f"{base.name}_{engine}"))
-        for settings, factor in variants:
-            variant = f"{'+'.join(s.split('.')[-1] for s in settings)} x{factor:g}"
-            changed = {setting: setting_value(base, setting) * factor for setting in settings}
-            name = f"{base.name}_{variant.replace('+', '_').replace(' ', '_')}"
-            runs.append((variant, base.with_overrides({**changed, "name": name}), out / f"{name}_{engine}"))
+        for label, suffix, more in _path_readings(engine):
+            base = default.with_overrides({"numerics.engine": engine, **more, "name": default.name + suffix})
+            runs.append((label, "default", base, out / f"{base.name}_{engine}"))
+            for settings, factor in variants:
+                variant = f"{'+'.join(s.split('.')[-1] for s in settings)} x{factor:g}"
+                changed = {setting: setting_value(base, setting) * factor for setting in settings}
+                name = f"{base.name}_{variant.replace('+', '_').replace(' ', '_')}"
+                runs.append((label, variant, base.with_overrides({**changed, "name": name}), out / f"{name}_{engine}"))
 
-    def row(run: tuple[str, ArchCase, Path]) -> dict:
-        variant, case, folder = run
-        return {"variant": variant, **_settling_row(case, folder, log)}
+    def row(run: tuple[str, str, ArchCase, Path]) -> dict:
+        label, variant, case, folder = run
+        return {"variant": variant, **_settling_row(case, folder, log), "engine": label}
 
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         return pd.DataFrame(list(pool.map(row, runs)))
+
+
+def _path_readings(engine: str) -> tuple[tuple[str, str, dict], ...]:
+    """The ways `engine` reads its path's states, each a label, a suffix of its runs' names and its settings:
+    the DEM's holds' own states (its default) and the static equilibria they sit in; the static engine's
+    are its equilibria."""
+    if engine == STATIC_ENGINE:
+        return ((engine, "", {}),)
+    static = {"numerics.support_path_states": STATIC_PATH_STATES}
+    return (engine, "", {}), (f"{engine}, {STATIC_PATH_STATES} states", f"_{STATIC_PATH_STATES}_states", static)
 
 
 def _settling_row(case: ArchCase, folder: Path, log: Callable[[str], None]) -> dict:
