@@ -6,11 +6,14 @@ the DEM; du_first and du side by side with the targets of docs/atlas.md checked.
     .venv/bin/python scripts/atlas.py --dem-from-table   # the DEM column from OUT/atlas.csv, its runs gone
     .venv/bin/python scripts/atlas.py --invariance   # the static answers with each setting halved and doubled
     .venv/bin/python scripts/atlas.py --snap-refinement   # the snaps the floor moves, against a refined bracket
+    .venv/bin/python scripts/atlas.py --dem-static-states   # the DEM column read at static equilibria, RUNS/dem-static
 
 Each part resumes where it stopped (the campaigns' folders under RUNS, the rigid table in OUT), so a
 rerun only redoes what changed; --no-dem reuses the DEM runs already in RUNS/dem, --dem-from-table the
 DEM column of OUT/atlas.csv (for a change of the static engine or the rigid march on a machine without
-the DEM's runs; only while the DEM's answers cannot have changed).
+the DEM's runs; only while the DEM's answers cannot have changed). --dem-static-states runs the DEM
+column with its support paths read at the static model's equilibria (`numerics.support_path_states =
+"static"`, docs/numerics.md) into RUNS/dem-static, and writes no report.
 """
 
 from __future__ import annotations
@@ -23,7 +26,7 @@ import pandas as pd
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import preset
-from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK
+from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK, STATIC_PATH_STATES
 from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, geometries, static_rows
 from yadearch.studies.atlas.invariance import invariance_markdown, invariance_rows, invariance_table
 from yadearch.studies.atlas.report import TABLE, write_atlas
@@ -90,6 +93,11 @@ def main() -> int:
         help="do not run the DEM; take its column from OUT/atlas.csv (its runs gone; the DEM unchanged since)",
     )
     parser.add_argument(
+        "--dem-static-states",
+        action="store_true",
+        help="only the DEM column with numerics.support_path_states = 'static', in RUNS/dem-static",
+    )
+    parser.add_argument(
         "--invariance", action="store_true", help="only the static answers with each setting halved and doubled"
     )
     parser.add_argument(
@@ -104,6 +112,11 @@ def main() -> int:
         return 0
     if args.snap_refinement:
         snap_refinement(args.out)
+        return 0
+    if args.dem_static_states:
+        states = STATIC_PATH_STATES
+        table = run_engine("dem", dem_rows(), args.runs, args.jobs, folder=f"dem-{states}", support_path_states=states)
+        print(table[["run", "outcome", "du_first_mm", "du_mm", "hinges"]].to_string())
         return 0
     parts = ("static", "rigid", "dem") if args.engine == "all" else (args.engine,)
     static = (  # each static answer checked with the increments halved (docs/numerics.md)
