@@ -3,6 +3,7 @@
 import pytest
 
 from yadearch.case.config import case_from_dict, load_case, preset
+from yadearch.case.plan import plan_run
 from yadearch.cli.commands import main
 from yadearch.errors import CaseError
 
@@ -114,3 +115,12 @@ def test_former_parameter_names_are_read_as_todays(tmp_path):
     both.write_text("[loading]\nsettlement_direction_deg = -45.0\nsupport_direction_deg = -40.0\n")
     with pytest.raises(CaseError, match="both settlement_direction_deg and support_direction_deg"):
         load_case(both)
+
+
+def test_the_dems_static_path_states_need_the_joint_elements():
+    """Reading a support's path at the static model's equilibria needs that model: CGAL contacts are refused
+    in one line naming both settings (docs/numerics.md)."""
+    case = preset("set2").with_overrides({"numerics.support_path_states": "static", "numerics.contact_model": "cgal"})
+    with pytest.raises(CaseError, match="support_path_states = 'static' .*contact_model = 'cgal'"):
+        plan_run(case)
+    plan_run(case.with_overrides({"numerics.contact_model": "joint"}))

@@ -19,6 +19,7 @@ from yadearch.case.mechanics import (
     live_load,
     require_live_load,
 )
+from yadearch.case.numerics_section import SCENE_PATH_STATES, STATIC_PATH_STATES
 from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.errors import CaseError
 from yadearch.model import units
@@ -68,6 +69,12 @@ def plan_run(case: ArchCase) -> RunPlan:
         raise CaseError(
             f"numerics.contact_model = {num.contact_model!r}: backfill (loads.fill_depth_mm = "
             f"{case.loads.fill_depth_mm:g}) needs the joint elements (numerics.contact_model = 'joint')"
+        )
+    if num.support_path_states == STATIC_PATH_STATES and num.contact_model != "joint":
+        raise CaseError(
+            f"numerics.support_path_states = {STATIC_PATH_STATES!r} reads the joint elements' static model, "
+            f"which CGAL contacts (numerics.contact_model = {num.contact_model!r}) do not have; use "
+            f"{SCENE_PATH_STATES!r} or contact_model 'joint'"
         )
     geometry = arch_geometry(case)  # refuses an arch that cannot be built (case/shape.py)
     live_load(case, geometry)  # refuses further loads that could never stand on the arch, or beside no vertical load
