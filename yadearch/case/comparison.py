@@ -10,8 +10,8 @@ from typing import Any
 
 from yadearch.case.config import current_names, support_speed
 from yadearch.case.materials import MATERIAL_KEY, PRESET_FIELD
-from yadearch.case.numerics_section import capped_acceleration
 from yadearch.case.sections import SECTIONS
+from yadearch.case.support import capped_acceleration
 
 
 def as_ran(data: dict[str, Any]) -> dict[str, Any]:

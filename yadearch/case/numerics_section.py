@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 from yadearch.case.fields import choice_meta, number_meta
@@ -295,11 +294,3 @@ def static_only_refusal(numerics: NumericsConfig) -> str | None:
         f"numerics.increments_check = {numerics.increments_check!r} is read by the static engine only (the DEM "
         f"does not solve its path twice); use {NO_INCREMENTS_CHECK!r} or the static engine"
     )
-
-
-def capped_acceleration(accel: float, horizontal_cap: float, horizontal_share: float) -> float:
-    """The support's acceleration along its path (mm/s^2, 0 = instantaneous) lowered so that its
-    horizontal component, `horizontal_share` of it, stays within `horizontal_cap` (0 = no cap)."""
-    if horizontal_cap <= 0.0 or horizontal_share * (accel if accel > 0.0 else math.inf) <= horizontal_cap:
-        return accel
-    return horizontal_cap / horizontal_share

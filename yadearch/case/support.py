@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from yadearch.case.config import ArchCase
-from yadearch.case.numerics_section import capped_acceleration
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
@@ -89,3 +90,11 @@ def movement_overrides(name: str) -> dict:
     if name not in MOVEMENT_PRESETS:
         raise CaseError(f"movement must be one of {', '.join(MOVEMENT_PRESETS)}, got {name!r}")
     return dict(MOVEMENT_PRESETS[name])
+
+
+def capped_acceleration(accel: float, horizontal_cap: float, horizontal_share: float) -> float:
+    """The support's acceleration along its path (mm/s^2, 0 = instantaneous) lowered so that its
+    horizontal component, `horizontal_share` of it, stays within `horizontal_cap` (0 = no cap)."""
+    if horizontal_cap <= 0.0 or horizontal_share * (accel if accel > 0.0 else math.inf) <= horizontal_cap:
+        return accel
+    return horizontal_cap / horizontal_share
