@@ -20,12 +20,13 @@ from yadearch.dem.recorder import Recorder, Records
 from yadearch.dem.scene import CALLBACK_NAME, build_scene, install_before_integrator, stop_voussoirs
 from yadearch.dem.scene_state import capture, put_back
 from yadearch.dem.selfweight import apply_selfweight
-from yadearch.dem.static_check import StaticCheck
+from yadearch.dem.static_check import StaticCheck, centroid_rows
 from yadearch.dem.stepping import CHECK_EVERY_STEPS, SteppingGate
 from yadearch.dem.timing import EngineClock
 from yadearch.errors import RunFailedError
 from yadearch.model import units
 from yadearch.results.summary import RunSummary
+from yadearch.solve.newton import Equilibrium
 from yadearch.solve.stages import Stage, Verdict
 
 
@@ -161,16 +162,25 @@ class Runner:
     def path_positions(self) -> np.ndarray:
         """The centroids the path compares (`numerics.support_path_states`): the scene's, or those of the
         static model's stable equilibrium the scene sits in (the scene's where it has none)."""
-        return self.branch_start()[0]
+        found = self._path_equilibrium()
+        return self.positions() if found is None else centroid_rows(found.u, self.positions())
 
     def branch_start(self) -> tuple[np.ndarray, np.ndarray | None]:
         """A branch's first state, `path_positions`, and with 'static' states how the blocks move per metre
         of the support's path (`dem.static_check`); the scene's states do not predict (docs/numerics.md)."""
-        scene, check = self.positions(), self.static_check
+        found = self._path_equilibrium()
+        if found is None:
+            return self.positions(), None
+        assert self.static_check is not None  # an equilibrium is the check's
+        scene = self.positions()
+        return centroid_rows(found.u, scene.copy()), self.static_check.support_slope(found, self.delta(), scene)
+
+    def _path_equilibrium(self) -> Equilibrium | None:
+        """The static model's stable equilibrium the scene sits in, where the path reads its states there."""
+        check = self.static_check
         if self.num.support_path_states != STATIC_PATH_STATES or check is None:
-            return scene, None
-        branch = check.support_branch(self.delta(), self.live_multiplier, scene)
-        return branch if branch is not None else (scene, None)
+            return None
+        return check.equilibrium(self.delta(), self.live_multiplier)
 
     @functools.cached_property
     def static_check(self) -> StaticCheck | None:

@@ -69,19 +69,13 @@ class StaticCheck:
                 return None
         return found if found.stable() else None
 
-    def support_branch(
-        self, delta: float, multiplier: float, scene: np.ndarray
-    ) -> tuple[np.ndarray, np.ndarray] | None:
-        """The stable equilibrium the scene sits in, as the centroid rows `scene` (n, 3) moved to it, and
-        how they move per metre of the support's path there (the static engine's prediction from one
-        state, `StaticLoading.tangent_prediction`); None where there is no such equilibrium."""
-        found = self.equilibrium(delta, multiplier)
-        if found is None:
-            return None
+    def support_slope(self, found: Equilibrium, delta: float, scene: np.ndarray) -> np.ndarray:
+        """How the centroid rows `scene` (n, 3) move per metre of the support's path from the stable
+        equilibrium `found` at `delta` (the static engine's prediction from one state,
+        `StaticLoading.tangent_prediction`; x and y, the rest zero)."""
         shear = found.joints.forces.shear_force
         ahead = self.loading.tangent_prediction(found.u, delta, shear, found.springs, delta + SLOPE_STEP)
-        slope = centroid_rows((ahead - found.u) / SLOPE_STEP, np.zeros_like(scene))
-        return centroid_rows(found.u, scene.copy()), slope
+        return centroid_rows((ahead - found.u) / SLOPE_STEP, np.zeros_like(scene))
 
 
 def centroid_rows(u: np.ndarray, rows: np.ndarray) -> np.ndarray:
