@@ -11,6 +11,7 @@ from dataclasses import replace
 import pytest
 from conftest import REPO
 
+import yadearch.solve.gravity_ramp as gravity_ramps
 import yadearch.solve.static_path as static_path
 from yadearch.case.config import load_case, preset
 from yadearch.errors import CANNOT_STAND
@@ -49,7 +50,7 @@ def test_a_ramp_that_falls_is_confirmed_by_a_finer_one(case, monkeypatch):
     another: which side of the kink the first descent takes is round-off), the finer ramp of twenty
     decides and both are on record. The first ramp's fall is imposed here, so that the rule is tested
     on every machine, not one machine's rounding."""
-    real = static_path.gravity_ramp
+    real = gravity_ramps.gravity_ramp
 
     def first_ramp_falls(arch, solver, fall, steps):
         found, slip, ramp = real(arch, solver, fall, steps)
@@ -58,7 +59,7 @@ def test_a_ramp_that_falls_is_confirmed_by_a_finer_one(case, monkeypatch):
         fell = {**ramp, "verdict": str(Verdict.RUNAWAY), "gravity": 0.1, "moved_mm": 50.1}
         return replace(found, verdict=Verdict.RUNAWAY), slip, fell
 
-    monkeypatch.setattr(static_path, "gravity_ramp", first_ramp_falls)
+    monkeypatch.setattr(gravity_ramps, "gravity_ramp", first_ramp_falls)
     loading = StaticLoading.of(case)
     state = loading.selfweight()
     assert [(r["gravity_steps"], r["verdict"]) for r in loading.ramps] == [(10, Verdict.RUNAWAY), (20, Verdict.STABLE)]

@@ -89,22 +89,26 @@ def test_the_grid_report_counts_outcomes_and_names_each_error():
 
 
 def test_the_settling_numerics_are_measured_against_each_engines_own_default():
+    """Each engine, and the DEM with each reading of its path's states, against its own default."""
     rows = [
-        ("static", "default", 50.0, 40.0),
-        ("static", "runaway_thickness_ratio x2", 50.2, 40.0),
-        ("dem", "default", 52.0, 42.0),
-        ("dem", "damping x0.5", 54.6, 54.6),
+        ("static", "", "default", 50.0, 40.0),
+        ("static", "", "runaway_thickness_ratio x2", 50.2, 40.0),
+        ("dem", "", "default", 52.0, 42.0),
+        ("dem", "", "damping x0.5", 54.6, 54.6),
+        ("dem", "static", "default", 52.0, 42.0),
+        ("dem", "static", "damping x0.5", 52.1, 42.2),
     ]
     table = pd.DataFrame(
         [
             {"variant": v, "case": "c", "kp": 1.0, "engine": e, "outcome": "collapse", "du_mm": du,
-             "du_first_mm": first, "hinges": "1I", "failure": ""}
-            for e, v, du, first in rows
+             "du_first_mm": first, "hinges": "1I", "failure": "", "path_states": states}
+            for e, states, v, du, first in rows
         ]
     )  # fmt: skip
     text = settling_numerics_markdown(table)
     assert "static du 0.40 % (a result); static du_first 0.00 % (a result); dem du 5.00 % (not a result)" in text
     assert "| dem | damping x0.5 | 54.600 | 5.00 % | 54.600 | 30.00 % | 1I |" in text
+    assert "dem, static states du 0.19 % (a result); dem, static states du_first 0.48 % (a result)" in text
 
 
 def test_each_other_arch_is_judged_against_its_own_default_and_a_changed_outcome_is_no_result():

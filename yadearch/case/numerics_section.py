@@ -274,7 +274,7 @@ class NumericsConfig:
             (SCENE_PATH_STATES, STATIC_PATH_STATES),
             "DEM only: the states a support movement's path compares to tell a snap: 'scene' = the holds' "
             "own, 'static' = the static model's stable equilibria they sit in, a branch predicted from one "
-            "state along its tangent, as the DEM's load paths do (docs/numerics.md, 'Snaps in the DEM')",
+            "state along its tangent, as the DEM's load paths do (docs/numerics.md, 'Collapse')",
             predates=SCENE_PATH_STATES,
         ),
     )

@@ -172,15 +172,15 @@ class Runner:
         if found is None:
             return self.positions(), None
         assert self.static_check is not None  # an equilibrium is the check's
-        scene = self.positions()
-        return centroid_rows(found.u, scene.copy()), self.static_check.support_slope(found, self.delta(), scene)
+        centroids = self.positions()
+        slope = self.static_check.support_slope(found, self.delta(), self.live_multiplier, centroids)
+        return centroid_rows(found.u, centroids.copy()), slope
 
     def _path_equilibrium(self) -> Equilibrium | None:
         """The static model's stable equilibrium the scene sits in, where the path reads its states there."""
-        check = self.static_check
-        if self.num.support_path_states != STATIC_PATH_STATES or check is None:
+        if self.num.support_path_states != STATIC_PATH_STATES or self.static_check is None:
             return None
-        return check.equilibrium(self.delta(), self.live_multiplier)
+        return self.static_check.equilibrium(self.delta(), self.live_multiplier)
 
     @functools.cached_property
     def static_check(self) -> StaticCheck | None:

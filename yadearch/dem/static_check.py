@@ -1,8 +1,8 @@
 """The static model's word on a DEM state (YADE layer): how far Newton's method on the same blocks and
 joints (`solve.newton`), from the blocks' poses and the joints' shear forces, moves them to a stable
-equilibrium. A hold's verdict rests on speeds and an unbalanced-force ratio, which a state near the
-end of a folded branch also passes; this distance tells an equilibrium from such a near-equilibrium
-(docs/numerics.md, "Collapse")."""
+equilibrium, and how that equilibrium moves with the support. A hold's verdict rests on speeds and an
+unbalanced-force ratio, which a state near the end of a folded branch also passes; this distance tells
+an equilibrium from such a near-equilibrium (docs/numerics.md, "Collapse")."""
 
 from __future__ import annotations
 
@@ -23,8 +23,8 @@ SLOPE_STEP = 1e-6  # support move (m) over which the one-state prediction, linea
 
 
 class StaticCheck:
-    """The static model of a DEM scene's case, built once, and the distance of the scene's state to
-    its stable equilibria at the support's present displacement and the live load the scene carries."""
+    """The static model of a DEM scene's case, built once: the distance of the scene's state to its stable
+    equilibria at the support's present displacement and the live load the scene carries, and their slope."""
 
     def __init__(self, case: ArchCase, scene: ArchScene):
         self.loading = StaticLoading.of(case)
@@ -69,13 +69,21 @@ class StaticCheck:
                 return None
         return found if found.stable() else None
 
-    def support_slope(self, found: Equilibrium, delta: float, scene: np.ndarray) -> np.ndarray:
-        """How the centroid rows `scene` (n, 3) move per metre of the support's path from the stable
-        equilibrium `found` at `delta` (the static engine's prediction from one state,
-        `StaticLoading.tangent_prediction`; x and y, the rest zero)."""
+    def support_slope(
+        self, found: Equilibrium, delta: float, multiplier: float, centroids: np.ndarray
+    ) -> np.ndarray | None:
+        """How the voussoirs' `centroids` (n, 3) move per metre of the support's path from the stable
+        equilibrium `found` at `delta` with the live load held at `multiplier` (the static engine's
+        prediction from one state, `StaticLoading.tangent_prediction`; x and y), None where its tangent
+        is singular."""
         shear = found.joints.forces.shear_force
-        ahead = self.loading.tangent_prediction(found.u, delta, shear, found.springs, delta + SLOPE_STEP)
-        return centroid_rows((ahead - found.u) / SLOPE_STEP, np.zeros_like(scene))
+        try:
+            ahead = self.loading.tangent_prediction(
+                found.u, delta, shear, found.springs, delta + SLOPE_STEP, held=multiplier
+            )
+        except (np.linalg.LinAlgError, ValueError):
+            return None
+        return centroid_rows((ahead - found.u) / SLOPE_STEP, np.zeros_like(centroids))
 
 
 def centroid_rows(u: np.ndarray, rows: np.ndarray) -> np.ndarray:

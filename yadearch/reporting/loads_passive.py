@@ -212,7 +212,10 @@ def settling_numerics_markdown(table: pd.DataFrame) -> str:
     """The settling arch at Kp 1 with each engine's numerics halved and doubled: du and du_first against
     that engine's default, and for each engine and quantity whether it stays within the 1 % a result needs."""
     rows, verdicts = [], []
-    for engine, runs in table.groupby("engine", sort=False):
+    labels = [
+        f"{e}, {p} states" if isinstance(p, str) and p else e for e, p in zip(table["engine"], table["path_states"])
+    ]
+    for engine, runs in table.groupby(pd.Series(labels, index=table.index), sort=False):
         default = runs[runs["variant"] == "default"].iloc[0]
         moves = {key: runs[key] / default[key] - 1.0 for key in ("du_mm", "du_first_mm")}
         for k, r in enumerate(runs.itertuples()):

@@ -7,8 +7,10 @@ from collections.abc import Callable
 
 import numpy as np
 
+from yadearch.errors import CANNOT_STAND, UNRESOLVED
 from yadearch.solve.newton import Equilibrium, Solver
 from yadearch.solve.stages import Verdict
+from yadearch.solve.static_state import StaticEngineError
 from yadearch.solve.statics import StaticArch
 
 GRAVITY_STEPS = 10  # the self-weight is applied in this many equal load steps,
@@ -48,6 +50,28 @@ def gravity_ramp(arch: StaticArch, solver: Solver, fall: Fall, steps: int) -> tu
         "moved_mm": 1e3 * found.moved,
     }
     return found, slip, record
+
+
+def ramps_to_stand(
+    arch: StaticArch, solver: Solver, fall: Fall, steps: tuple[int, ...], ramps: list[dict]
+) -> tuple[Equilibrium, np.ndarray]:
+    """Gravity ramps of each of `steps` load steps in turn, each recorded in `ramps`, until one reaches a
+    stable state under the whole weight (the proof that the arch stands: the first descent, from faces
+    exactly touching, can take another way): its equilibrium and sliding. StaticEngineError: the arch
+    cannot stand if a ramp fell (a block falling is its motion), unresolved if every one stopped."""
+    for count in steps:
+        found, slip, ramp = gravity_ramp(arch, solver, fall, count)
+        ramps.append(ramp)
+        if found.verdict == Verdict.STABLE:
+            return found, slip
+    said = "; ".join(ramp_text(ramp) for ramp in ramps)
+    if any(ramp["verdict"] == Verdict.RUNAWAY for ramp in ramps):
+        raise StaticEngineError(f"{CANNOT_STAND} ({said})")
+    raise StaticEngineError(
+        f"{UNRESOLVED}: the self-weight descent found neither an equilibrium nor a fall of "
+        f"{1e3 * SELFWEIGHT_FALL:.0f} mm after its retries ({said}): the solver's failure, not an arch that "
+        "cannot stand"
+    )
 
 
 def ramp_text(ramp: dict) -> str:

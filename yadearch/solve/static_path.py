@@ -22,17 +22,16 @@ import numpy as np
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import runaway_length
 from yadearch.case.support import path_end_mm
-from yadearch.errors import CANNOT_STAND, UNRESOLVED
 from yadearch.model import units
 from yadearch.model.joint_law import JointForces
 from yadearch.solve import banded
 from yadearch.solve.collapse_mode import FoldMode, fold_mode
 from yadearch.solve.falls import fall
-from yadearch.solve.gravity_ramp import CONFIRMING_STEPS, GRAVITY_STEPS, SELFWEIGHT_FALL, gravity_ramp, ramp_text
+from yadearch.solve.gravity_ramp import CONFIRMING_STEPS, GRAVITY_STEPS, ramps_to_stand
 from yadearch.solve.newton import Equilibrium, Solver, SolverSettings
 from yadearch.solve.path import PathResult, PathSettings, PathStep, extrapolate, first_snap, follow_path, path_settings
 from yadearch.solve.stages import Stage, Verdict
-from yadearch.solve.static_state import PathParameter, StaticEngineError, StaticState
+from yadearch.solve.static_state import PathParameter, StaticState
 from yadearch.solve.statics import StaticArch, static_arch
 
 SUBSTEPS = 8  # an increment Newton cannot solve at once is marched in this many steps
@@ -72,27 +71,10 @@ class StaticLoading:
 
     # ---- self-weight ------------------------------------------------------------------------
     def selfweight(self) -> StaticState:
-        """Gravity in GRAVITY_STEPS load steps from the blocks exactly touching (`gravity_ramp`); a ramp
-        that falls or fails is tried again in CONFIRMING_STEPS finer steps, and the arch stands if either
-        reaches a stable state under its whole weight (an equilibrium found is the proof that it can
-        stand: the first descent, from faces exactly touching, can take another way); else it cannot
-        stand if either fell (a block falling is the arch's motion, an unfinished descent is not), and
-        is unresolved if both stopped. Both ramps are recorded in `ramps`."""
+        """Gravity in GRAVITY_STEPS load steps from the blocks exactly touching, again in CONFIRMING_STEPS
+        where that falls or fails (`gravity_ramp.ramps_to_stand`; both recorded in `ramps`)."""
         self.ramps = []
-        for steps in (GRAVITY_STEPS, CONFIRMING_STEPS):
-            found, slip, ramp = gravity_ramp(self.arch, self.solver, self._fall, steps)
-            self.ramps.append(ramp)
-            if found.verdict == Verdict.STABLE:
-                break
-        if found.verdict != Verdict.STABLE:
-            said = "; ".join(ramp_text(ramp) for ramp in self.ramps)
-            if any(ramp["verdict"] == Verdict.RUNAWAY for ramp in self.ramps):
-                raise StaticEngineError(f"{CANNOT_STAND} ({said})")
-            raise StaticEngineError(
-                f"{UNRESOLVED}: the self-weight descent found neither an equilibrium nor a fall of "
-                f"{1e3 * SELFWEIGHT_FALL:.0f} mm after its retries ({said}): the solver's failure, "
-                "not an arch that cannot stand"
-            )
+        found, slip = ramps_to_stand(self.arch, self.solver, self._fall, (GRAVITY_STEPS, CONFIRMING_STEPS), self.ramps)
         state = self._state(Stage.SELFWEIGHT, 0.0, found, slip, found.joints.forces)
         self.accepted = [state]
         return state
@@ -240,34 +222,39 @@ class StaticLoading:
         return fold_mode(self.arch, state.u, state.stiffness, self.failures[self._failure_at(upper)].u, state.springs)
 
     def predict(self, target: float, history: list[StaticState]) -> np.ndarray:
-        """Where the arch should be with the support at `target`: a parabola (or a line) through the
-        last states of `history`, or from a single state the tangent's response to the support's move."""
-        last = history[-1]
-        history = history[-PREDICTOR_POINTS:]
-        lams = [s.lam for s in history]
+        """Where the arch should be at `target`: a parabola (or a line) through `history`'s last states, or
+        from one state its tangent's response (a singular one: only the supports moved, for the descent)."""
+        last, recent = history[-1], history[-PREDICTOR_POINTS:]
+        lams = [s.lam for s in recent]
         if len(set(lams)) == len(lams) >= 2:
-            return self.place(extrapolate(lams, [s.u for s in history], target), target)
-        return self.tangent_prediction(last.u, last.lam, last.forces.shear_force, last.springs, target)
+            return self.place(extrapolate(lams, [s.u for s in recent], target), target)
+        try:
+            return self.tangent_prediction(last.u, last.lam, last.forces.shear_force, last.springs, target)
+        except (np.linalg.LinAlgError, ValueError):
+            return self.place(last.u, target)
 
     def tangent_prediction(
-        self, u: np.ndarray, lam: float, shear: np.ndarray, springs: np.ndarray | None, target: float
+        self,
+        u: np.ndarray,
+        lam: float,
+        shear: np.ndarray,
+        springs: np.ndarray | None,
+        target: float,
+        held: float | None = None,
     ) -> np.ndarray:
-        """Where the tangent at the equilibrium `u` (at the path's `lam`, its joints' `shear`, the fill's
-        `springs`) puts the arch at `target`: the free blocks' whole tangent (the joints, the loads'
-        turning arms, the fill's springs) solved for the supports' move and the load's growth."""
+        """Where the free blocks' whole tangent (the joints, the loads' turning arms, the fill's springs) at
+        the equilibrium `u` (at `lam`, its joints' `shear`, the fill's `springs`) puts the arch at `target`,
+        with the path's live load or one `held` (LinAlgError or ValueError where the tangent is singular)."""
         moved = self.place(u, target)
-        multiplier = self.parameter.multiplier(lam)
+        multiplier = self.parameter.multiplier(lam) if held is None else held
         joints, _, tangent = self.solver.state(u, u, shear, multiplier=multiplier, springs=springs)
         free = self.arch.free_dofs
         driven = np.setdiff1d(np.arange(len(moved)), free)
         load = -self.arch.stiffness(joints)[np.ix_(free, driven)] @ (moved - u)[driven]
-        more = self.parameter.multiplier(target) - multiplier
+        more = self.parameter.multiplier(target) - multiplier if held is None else 0.0
         if more:
             load = load + more * self.arch.live_forces(u)
-        try:
-            moved[free] += banded.solve(tangent, load)
-        except (np.linalg.LinAlgError, ValueError):
-            pass  # a singular tangent: the descent starts from the state with only the support moved
+        moved[free] += banded.solve(tangent, load)
         return moved
 
     def place(self, u: np.ndarray, lam: float) -> np.ndarray:

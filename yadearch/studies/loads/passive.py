@@ -181,35 +181,33 @@ def settlement_table(out: Path, log: Callable[[str], None] = print) -> pd.DataFr
 def settlement_numerics_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> pd.DataFrame:
     """The settling arch at Kp SWEPT_KP with each engine's numerics halved and doubled (SETTLING_VARIANTS;
     the default's folders are settlement_table's), the DEM's also with its path read at the static
-    equilibria (`numerics.support_path_states`), `jobs` at a time: a row a run, its engine and variant named."""
+    equilibria (`numerics.support_path_states`), `jobs` at a time: a row a run, its variant and path states named."""
     default = passive_case("paper", SWEPT_KP, live_load="none", name=f"paper_settling_kp{SWEPT_KP:g}")
     runs = []
     for engine, variants in SETTLING_VARIANTS.items():
-        for label, suffix, more in _path_readings(engine):
+        for states in _path_readings(engine):
+            more = {"numerics.support_path_states": states} if states else {}
+            suffix = f"_{states}_states" if states else ""
             base = default.with_overrides({"numerics.engine": engine, **more, "name": default.name + suffix})
-            runs.append((label, "default", base, out / f"{base.name}_{engine}"))
+            runs.append((states, "default", base, out / f"{base.name}_{engine}"))
             for settings, factor in variants:
                 variant = f"{'+'.join(s.split('.')[-1] for s in settings)} x{factor:g}"
                 changed = {setting: setting_value(base, setting) * factor for setting in settings}
                 name = f"{base.name}_{variant.replace('+', '_').replace(' ', '_')}"
-                runs.append((label, variant, base.with_overrides({**changed, "name": name}), out / f"{name}_{engine}"))
+                runs.append((states, variant, base.with_overrides({**changed, "name": name}), out / f"{name}_{engine}"))
 
     def row(run: tuple[str, str, ArchCase, Path]) -> dict:
-        label, variant, case, folder = run
-        return {"variant": variant, **_settling_row(case, folder, log), "engine": label}
+        states, variant, case, folder = run
+        return {"variant": variant, **_settling_row(case, folder, log), "path_states": states}
 
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         return pd.DataFrame(list(pool.map(row, runs)))
 
 
-def _path_readings(engine: str) -> tuple[tuple[str, str, dict], ...]:
-    """The ways `engine` reads its path's states, each a label, a suffix of its runs' names and its settings:
-    the DEM's holds' own states (its default) and the static equilibria they sit in; the static engine's
-    are its equilibria."""
-    if engine == STATIC_ENGINE:
-        return ((engine, "", {}),)
-    static = {"numerics.support_path_states": STATIC_PATH_STATES}
-    return (engine, "", {}), (f"{engine}, {STATIC_PATH_STATES} states", f"_{STATIC_PATH_STATES}_states", static)
+def _path_readings(engine: str) -> tuple[str, ...]:
+    """The `numerics.support_path_states` each of `engine`'s settling runs is made with ('': the default):
+    the DEM's holds' own states and the static equilibria they sit in; the static engine has no choice."""
+    return ("",) if engine == STATIC_ENGINE else ("", STATIC_PATH_STATES)
 
 
 def _settling_row(case: ArchCase, folder: Path, log: Callable[[str], None]) -> dict:
