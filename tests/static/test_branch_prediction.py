@@ -7,6 +7,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from yadearch.case.config import preset
+from yadearch.solve.load_path import hold_the_live_load
 from yadearch.solve.static_path import StaticLoading
 from yadearch.static.simulate import simulate_static
 from yadearch.studies.loads.passive import passive_case
@@ -58,3 +60,23 @@ def test_a_spreading_semicircle_under_its_fill_first_loses_stability_where_halve
     assert default.path_outcome == finer.path_outcome == "collapse"
     assert default.du_first_mm == pytest.approx(finer.du_first_mm, rel=0.01)  # was 1.89 against 41.09 mm
     assert default.du_mm == pytest.approx(finer.du_mm, rel=0.01)
+
+
+def test_a_held_load_turns_with_the_blocks_in_the_prediction_the_dem_reads():
+    """The DEM's one-state slope (`StaticCheck.support_slope`) passes the load its scene holds: with it
+    the prediction is the static engine's own along its held-load path, to the bit; without it the
+    load's turning arms are missing from the tangent and the prediction is another."""
+    case = preset("set2").with_overrides(
+        {"n_voussoirs": 15, "live_load": "vertical", "held_load_N": 4.0, "numerics.engine": "static"}
+    )
+    loading = StaticLoading.of(case)
+    loading.selfweight()
+    hold_the_live_load(loading, case)  # load, then movement, as a run holding it
+    loading.follow()
+    assert loading.parameter.multiplier(loading.accepted[-1].lam) == 4.0
+    for state in loading.accepted[1::4]:
+        target = state.lam + STEPS_M[0]
+        own = loading.predict(target, [state])
+        args = (state.u, state.lam, state.forces.shear_force, state.springs, target)
+        assert np.array_equal(loading.tangent_prediction(*args, held=4.0), own)
+        assert not np.array_equal(loading.tangent_prediction(*args, held=0.0), own)
