@@ -2,7 +2,8 @@
 
 At each kn the set 2 arch runs with the default numerics ("base") and with each numerical variant
 (time step, loading increments, damping, the support's rate, the runaway bound, the equilibrium
-tolerance, each halved and doubled where it can be, and a gentler start) and with higher friction.
+tolerance, each halved and doubled where it can be, a gentler start, and the DEM's path read at the
+static model's equilibria) and with higher friction.
 A numerical variant may move du and du_first by at most `TOLERANCE` of the base and must keep the
 mechanism (hinges A-D each within one interface); friction may move du only where the run shows a
 joint sliding.
@@ -19,6 +20,7 @@ import pandas as pd
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
+from yadearch.case.numerics_section import STATIC_PATH_STATES
 from yadearch.errors import CampaignError
 from yadearch.results.summary import STATIC
 from yadearch.static.records import DEM_ONLY_NUMERICS
@@ -58,6 +60,8 @@ VARIANTS: dict[str, Variant] = {
         "support_acceleration_mm_per_s2": 0.25 * c.numerics.support_acceleration_mm_per_s2,
         "first_increment_mm": 0.5 * c.numerics.first_increment_mm,
     },
+    # the DEM's path read at the static model's equilibria instead of the holds (docs/numerics.md)
+    "path_states_static": lambda c: {"support_path_states": STATIC_PATH_STATES},
     "friction_60": lambda c: {"friction_deg": 60.0},
     "friction_80": lambda c: {"friction_deg": 80.0},
 }
