@@ -7,6 +7,7 @@ the DEM; du_first and du side by side with the targets of docs/atlas.md checked.
     .venv/bin/python scripts/atlas.py --invariance   # the static answers with each setting halved and doubled
     .venv/bin/python scripts/atlas.py --snap-refinement   # the snaps the floor moves, against a refined bracket
     .venv/bin/python scripts/atlas.py --dem-static-states   # the DEM column read at static equilibria, RUNS/dem-static
+    .venv/bin/python scripts/atlas.py --figure-from-table   # OUT/atlas.pdf/.png redrawn from OUT/atlas.csv
 
 Each part resumes where it stopped (the campaigns' folders under RUNS, the rigid table in OUT), so a
 rerun only redoes what changed; --no-dem reuses the DEM runs already in RUNS/dem, --dem-from-table the
@@ -27,9 +28,10 @@ import pandas as pd
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import preset
 from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK, STATIC_PATH_STATES
+from yadearch.plotting.atlas import atlas_figure
 from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, geometries, static_rows
 from yadearch.studies.atlas.invariance import invariance_markdown, invariance_rows, invariance_table
-from yadearch.studies.atlas.report import TABLE, write_atlas
+from yadearch.studies.atlas.report import FIGURE, TABLE, write_atlas
 from yadearch.studies.atlas.rigid import compliant_table, rigid_table
 from yadearch.studies.atlas.snap_refinement import refinement_markdown, refinement_rows, snap_cases, verdicts
 from yadearch.studies.atlas.table import stored_engine
@@ -93,6 +95,11 @@ def main() -> int:
         help="do not run the DEM; take its column from OUT/atlas.csv (its runs gone; the DEM unchanged since)",
     )
     parser.add_argument(
+        "--figure-from-table",
+        action="store_true",
+        help="only redraw OUT/atlas.pdf/.png from OUT/atlas.csv (a change of the figure, no run)",
+    )
+    parser.add_argument(
         "--dem-static-states",
         action="store_true",
         help="only the DEM column with numerics.support_path_states = 'static', in RUNS/dem-static",
@@ -112,6 +119,9 @@ def main() -> int:
         return 0
     if args.snap_refinement:
         snap_refinement(args.out)
+        return 0
+    if args.figure_from_table:
+        print(atlas_figure(pd.read_csv(args.out / TABLE), args.out / FIGURE)[1])
         return 0
     if args.dem_static_states:
         states = STATIC_PATH_STATES

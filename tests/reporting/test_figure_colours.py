@@ -85,3 +85,20 @@ def test_the_hinge_positions_of_a_campaign_take_the_letters_colours(monkeypatch,
     montecarlo.hinge_frequency_figure(sweep_table(), tmp_path / "hinges")
     bars = {c.get_label()[0]: to_hex(c.patches[0].get_facecolor()) for c in figures[0].axes[0].containers}
     assert bars == {letter: hinge_colour(letter) for letter in "ABCD"}
+
+
+def test_a_load_collapse_draws_each_hinge_of_its_mechanism_in_a_colour_of_its_own(monkeypatch, tmp_path):
+    """A live load's mechanism has no paper letters: its hinges, left to right, take the house's colours
+    in turn, none shared (the quarter-span load on set 2: four hinges)."""
+    from yadearch.case.config import preset
+    from yadearch.case.mechanics import arch_geometry
+    from yadearch.plotting import load_figure
+    from yadearch.solve.load_lp import load_analysis
+
+    case = preset("set2").with_overrides({"live_load": "vertical"})
+    result = load_analysis(case)
+    figures = captured(monkeypatch, load_figure)
+    load_figure.plot_load_collapse(case, arch_geometry(case), result, tmp_path / "collapse")
+    colours = {t.get_text(): to_hex(t.get_color()) for t in figures[0].axes[0].texts if t.get_text()[-1] in "IE"}
+    assert len(colours) == len(result.pivots) == 4
+    assert len(set(colours.values())) == len(colours)

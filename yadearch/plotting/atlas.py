@@ -1,6 +1,7 @@
 """The atlas's figure: du against kn for every shape (rows) and support movement (columns), one
-colour a ring thickness; the static engine's du (line) and du_first (open), the DEM's du (diamond)
-and the rigid march's du (the dotted level the curve should rise to)."""
+colour a ring thickness; the static engine's du (line) and du_first (open), the DEM's du (diamond),
+the rigid march's du (the dotted level the curve should rise to), and marks at a panel's top and foot
+for the static runs that stand to the path's end, cannot stand or are unresolved."""
 
 from __future__ import annotations
 
@@ -16,10 +17,24 @@ from matplotlib.lines import Line2D
 from yadearch.plotting.house import MIN_TEXT_PT, save_figure
 from yadearch.plotting.sweep import SWEEP_STYLE
 
-PANEL_IN = (1.25, 1.05)  # width, height of one shape x movement panel
+PANEL_IN = (1.05, 1.0)  # width, height of one shape x movement panel: six across fit a page (17.5 cm)
 KN_RANGE = (0.1, 3e4)  # N/mm3: the atlas's stiffnesses with a margin
 LEGEND_ROW = 0.3  # the key's row (two lines of entries), relative to a panel's height
 THICKNESS_COLORS = ("#0072B2", "#D55E00", "#009E73")  # Okabe-Ito: told apart in print and by the colour-blind
+MOVEMENT_TITLES = {  # the atlas's movements of the right support as a column's title
+    "settlement": "settlement (−90°)",
+    "spreading": "spreading (0°)",
+    "closing": "closing (180°)",
+    "down_out_45": "down and out (−45°)",
+    "down_in_135": "down and in (−135°)",
+    "tilt": "tilt",
+}
+# static outcomes without a du, marked at a panel's top or foot (axes fraction): marker, height, legend
+OUTCOME_MARKS = {
+    "stands": ("^", 0.94, "static: stands to the end"),
+    "cannot stand": ("v", 0.06, "static: cannot stand"),
+    "unresolved": ("x", 0.06, "static: unresolved"),
+}
 
 
 def atlas_figure(table: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
@@ -44,14 +59,14 @@ def atlas_figure(table: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
                 ax.set_ylim(bottom=0.0)
                 ax.tick_params(labelsize=MIN_TEXT_PT)
                 if i == 0:
-                    ax.set_title(movement.replace("_", " "), fontsize=MIN_TEXT_PT)
+                    ax.set_title(MOVEMENT_TITLES.get(movement, movement.replace("_", " ")), fontsize=MIN_TEXT_PT)
                 if j == 0:
-                    ax.set_ylabel(f"{shape.replace('_', '-')}\n$d_u$ (mm)", fontsize=MIN_TEXT_PT)
+                    ax.set_ylabel(f"{shape.replace('_', '-')}\n$\\delta_u$ (mm)", fontsize=MIN_TEXT_PT)
                 if i == len(shapes) - 1:
                     ax.set_xlabel("$k_n$ (N/mm³)", fontsize=MIN_TEXT_PT)
         key = fig.add_subplot(grid[len(shapes), :])
         key.axis("off")
-        entries = _legend(thicknesses)
+        entries = _legend(thicknesses, set(table["static_outcome"]))
         key.legend(handles=entries, loc="center", ncol=math.ceil(len(entries) / 2), fontsize=MIN_TEXT_PT, frameon=False)
         return save_figure(fig, stem)
 
@@ -67,19 +82,37 @@ def _draw_thickness(ax, runs: pd.DataFrame, color: str) -> None:
     rigid = runs["rigid_du_mm"].dropna()
     if len(rigid):
         ax.axhline(float(rigid.iloc[0]), color=color, ls=":", lw=0.9)
-    unresolved = runs[runs["static_outcome"].eq("unresolved")]
-    if len(unresolved):
-        ax.plot(unresolved["kn_N_per_mm3"], np.zeros(len(unresolved)), color=color, marker="x", ms=4, ls="none")
+    for outcome, (marker, height, _) in OUTCOME_MARKS.items():
+        marked = runs[runs["static_outcome"].eq(outcome)]
+        if len(marked):
+            ax.plot(marked["kn_N_per_mm3"], np.full(len(marked), height), color=color, marker=marker, ms=3.5,
+                    mfc="none", mew=0.8, ls="none", transform=ax.get_xaxis_transform())  # fmt: skip
 
 
-def _legend(thicknesses: list[float]) -> list[Line2D]:
-    """Thickness colours, then what each mark means."""
+def _legend(thicknesses: list[float], outcomes: set[str]) -> list[Line2D]:
+    """Thickness colours, then what each mark means (the outcomes' marks only where the atlas has them)."""
     handles = [Line2D([], [], color=c, lw=1.0, label=f"t = {t:g} mm") for c, t in zip(THICKNESS_COLORS, thicknesses)]
     grey = "0.3"
-    return handles + [
-        Line2D([], [], color=grey, marker="o", ms=2.5, lw=1.0, label=r"static $d_u$"),
-        Line2D([], [], color=grey, marker="o", ms=3.5, mfc="none", ls="none", label=r"static $d_{u,\mathrm{first}}$"),
-        Line2D([], [], color=grey, marker="D", ms=3.5, mfc="none", ls="none", label=r"DEM $d_u$"),
-        Line2D([], [], color=grey, ls=":", label=r"rigid march $d_u$"),
-        Line2D([], [], color=grey, marker="x", ls="none", label="static unresolved (at 0)"),
-    ]
+    return (
+        handles
+        + [
+            Line2D([], [], color=grey, marker="o", ms=2.5, lw=1.0, label=r"static $\delta_u$"),
+            Line2D(
+                [],
+                [],
+                color=grey,
+                marker="o",
+                ms=3.5,
+                mfc="none",
+                ls="none",
+                label=r"static $\delta_{u,\mathrm{first}}$",
+            ),
+            Line2D([], [], color=grey, marker="D", ms=3.5, mfc="none", ls="none", label=r"DEM $\delta_u$"),
+            Line2D([], [], color=grey, ls=":", label=r"rigid march $\delta_u$"),
+        ]
+        + [
+            Line2D([], [], color=grey, marker=marker, mfc="none", ls="none", label=label)
+            for outcome, (marker, _, label) in OUTCOME_MARKS.items()
+            if outcome in outcomes
+        ]
+    )

@@ -48,6 +48,12 @@ def hinge_colour(letter: str, extra: int = 0) -> str:
     return HINGE_COLOURS[len(PAPER_LABELS) + extra % (len(HINGE_COLOURS) - len(PAPER_LABELS))]
 
 
+def mechanism_colour(k: int) -> str:
+    """The colour of the `k`-th hinge (left to right) of a mechanism without the paper's letters (a live
+    load's): each of up to six hinges its own, none of them the thrust line's."""
+    return HINGE_COLOURS[k % len(HINGE_COLOURS)]
+
+
 def new_figure(height_cm: float, width_cm: float = COLUMN_CM) -> Figure:
     """A figure in the house style at its print size."""
     fig = Figure(figsize=(width_cm * CM, height_cm * CM), layout="constrained")

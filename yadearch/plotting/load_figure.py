@@ -17,7 +17,7 @@ from yadearch.model.dispersal import NONE as NOT_DISPERSED
 from yadearch.model.geometry import ArchGeometry, front_face
 from yadearch.model.loads import VERTICAL, extrados_height, extrados_segments
 from yadearch.plotting.blocks import draw_blocks
-from yadearch.plotting.house import COLUMN_CM, THRUST_COLOUR, hinge_colour, house_style, new_figure, save_figure
+from yadearch.plotting.house import COLUMN_CM, THRUST_COLOUR, house_style, mechanism_colour, new_figure, save_figure
 from yadearch.plotting.labels import layout, place_label
 from yadearch.solve.load_lp import LoadCapacity
 
@@ -50,8 +50,8 @@ def plot_load_collapse(case: ArchCase, geometry: ArchGeometry, result: LoadCapac
         corner = (joint.intrados if pivot.side == 0 else joint.extrados)[:2] * MM
         across = (joint.extrados - joint.intrados)[:2]
         across = across / np.linalg.norm(across)
-        ax.plot(*corner, "o", ms=4, mfc=hinge_colour("", k), mec="white", mew=0.5, zorder=4)
-        label = ax.annotate(pivot.label, corner, xytext=(0, 0), textcoords="offset points", color=hinge_colour("", k))
+        ax.plot(*corner, "o", ms=4, mfc=mechanism_colour(k), mec="white", mew=0.5, zorder=4)
+        label = ax.annotate(pivot.label, corner, xytext=(0, 0), textcoords="offset points", color=mechanism_colour(k))
         label.set_fontsize(LABEL_PT)
         labels.append((label, across if pivot.side == 1 else -across))
     _draw_load(ax, case, geometry)

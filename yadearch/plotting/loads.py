@@ -23,10 +23,11 @@ LEGEND_ROOM = 1.45  # panel (a)'s height over its largest capacity: the legend s
 PASSIVE_ARCHES = (("small", "o"), ("paper", "s"))  # the passive study's arches by case prefix, and their markers
 PASSIVE_SERIES = (  # column of the passive study's capacities, colour, legend
     ("rigid_N", "k", "rigid LP"),
-    ("stiff_static_N", "C2", "static, kn 1e5"),
-    ("static_N", "C0", "static, kn 5.2"),
-    ("dem_N", "C1", "DEM, kn 5.2"),
+    ("stiff_static_N", "C2", r"static, $k_n$ 10$^5$ N/mm$^3$"),
+    ("static_N", "C0", r"static, $k_n$ 5.2 N/mm$^3$"),
+    ("dem_N", "C1", r"DEM, $k_n$ 5.2 N/mm$^3$"),
 )
+DEM_MARKER_PT = 2.2  # the DEM's filled marks, inside the static engine's open ones where they agree
 
 
 @house_style
@@ -187,23 +188,30 @@ def plot_passive(
         rows = capacities[capacities["case"].str.startswith(arch)]
         for column, colour, _ in PASSIVE_SERIES:
             shown = rows.dropna(subset=[column])
-            style = marker if column == "dem_N" else f"{marker}-"
-            ax.plot(shown["kp"], shown[column], style, ms=3.5, mfc="none", mew=0.7, lw=0.8, color=colour)
-    handles = [Line2D([], [], color=colour, lw=0.8, label=label) for _, colour, label in PASSIVE_SERIES]
+            if column == "dem_N":  # points, filled and small: the static engine's open marks stay visible
+                ax.plot(shown["kp"], shown[column], marker, ms=DEM_MARKER_PT, color=colour, zorder=3)
+            else:
+                ax.plot(shown["kp"], shown[column], f"{marker}-", ms=3.5, mfc="none", mew=0.7, lw=0.8, color=colour)
+    handles = [
+        Line2D([], [], color=colour, ls="none", marker="o", ms=DEM_MARKER_PT, label=label)
+        if column == "dem_N"
+        else Line2D([], [], color=colour, lw=0.8, label=label)
+        for column, colour, label in PASSIVE_SERIES
+    ]
     handles += [
         Line2D([], [], color="0.4", ls="none", marker=m, mfc="none", label=f"{a} arch") for a, m in PASSIVE_ARCHES
     ]
     ax.legend(handles=handles, loc="upper left", ncol=2, frameon=False)
     ax.set_ylim(0.0, LEGEND_ROOM * float(np.nanmax(capacities[[c for c, _, _ in PASSIVE_SERIES]].to_numpy(float))))
-    ax.set_title("(a) capacity against Kp", loc="left")
-    ax.set_xlabel("passive coefficient Kp (-)")
+    ax.set_title(r"(a) capacity against $K_p$", loc="left")
+    ax.set_xlabel(r"passive coefficient $K_p$ (-)")
     ax.set_ylabel("collapse load (N)")
     swept.semilogx(mobilisation["u_p_mm"], mobilisation["static_N"], "o-", ms=3, lw=0.8, color="C0",
-                   label="static, kn 5.2, Kp 1")  # fmt: skip
-    swept.axhline(float(mobilisation["rigid_N"].iloc[0]), color="k", lw=0.8, ls="--", label="rigid LP, Kp 1")
-    swept.axhline(without_N, color="C0", lw=0.8, ls=":", label="static, kn 5.2, no passive push")
-    swept.set_title("(b) the paper's arch against u_p", loc="left")
-    swept.set_xlabel("mobilisation displacement u_p (mm)")
+                   label=r"static, $k_n$ 5.2 N/mm$^3$, $K_p$ 1")  # fmt: skip
+    swept.axhline(float(mobilisation["rigid_N"].iloc[0]), color="k", lw=0.8, ls="--", label=r"rigid LP, $K_p$ 1")
+    swept.axhline(without_N, color="C0", lw=0.8, ls=":", label=r"static, $k_n$ 5.2 N/mm$^3$, no passive push")
+    swept.set_title(r"(b) the paper's arch against $u_p$", loc="left")
+    swept.set_xlabel(r"mobilisation displacement $u_p$ (mm)")
     swept.set_ylabel("collapse load (N)")
     swept.set_ylim(bottom=0.0)
     swept.legend(loc="lower left", frameon=False)
