@@ -27,6 +27,7 @@ PASSIVE_SERIES = (  # column of the passive study's capacities, colour, legend
     ("static_N", "C0", r"static, $k_n$ 5.2 N/mm$^3$"),
     ("dem_N", "C1", r"DEM, $k_n$ 5.2 N/mm$^3$"),
 )
+LOG_TICKS = (1.0, 2.0, 5.0)  # the labelled ticks of each decade of a log axis
 DEM_MARKER_PT = 2.2  # the DEM's filled marks, inside the static engine's open ones where they agree
 
 
@@ -38,11 +39,13 @@ def plot_loads(
     fig = new_figure(height_cm=HEIGHT_CM, width_cm=COLUMN_CM)
     top, middle, bottom = fig.subplots(3, 1)
     _draw_influence(top, influence, arch_weight_N)
+    top.set_title("(a) rigid LP: a point load along the span", loc="left")
     middle.plot(accelerations["t_over_R"], accelerations["collapse_acceleration_g"], "s-", ms=2.5, color="C1")
+    middle.set_title("(b) rigid LP: a semicircle's collapse acceleration", loc="left")
     middle.set_xlabel("t/R of a semicircle (55 voussoirs)")
     middle.set_ylabel("collapse acceleration (g)")
     middle.set_ylim(bottom=0.0)
-    _draw_residual(bottom, residual, "quarter-span load (N)")
+    _draw_residual(bottom, residual, "quarter-span load (N)", title="(c) the load after a settlement")
     return save_figure(fig, stem)
 
 
@@ -54,18 +57,24 @@ def plot_residual(residual: pd.DataFrame, unit: str, stem: Path) -> tuple[Path, 
     return save_figure(fig, stem)
 
 
-def _draw_residual(ax, residual: pd.DataFrame, ylabel: str) -> None:
+def _draw_residual(ax, residual: pd.DataFrame, ylabel: str, title: str | None = None) -> None:
     """The residual capacity against the settlement before loading: the static path's collapse and
-    first loss, and the load that first moves rigid blocks in the settled state."""
+    first loss, and the load that first moves rigid blocks in the settled state (`title`: the legend's)."""
+    from matplotlib.ticker import LogLocator, StrMethodFormatter
+
     settled = residual["settlement_mm"]
-    ax.plot(settled, residual["static_capacity"], "o-", ms=3.0, color="C0", label="collapse (static engine)")
-    ax.plot(settled, residual["static_first_loss"], "o", ms=3.0, mfc="none", color="C0", label="first loss (static)")
-    ax.plot(settled, residual["rigid_capacity"], "^", ms=4.0, color="C2", label="rigid blocks: first motion")
+    ax.plot(settled, residual["static_capacity"], "o-", ms=3.0, color="C0", label="static: collapse")
+    ax.plot(settled, residual["static_first_loss"], "o", ms=3.0, mfc="none", color="C0", label="static: first loss")
+    ax.plot(settled, residual["rigid_capacity"], "^", ms=4.0, color="C2", label="rigid LP: first motion")
     # no line through the rigid points: their value drops at once when the hinges open, not along a slope
-    ax.set_xlabel("support movement before loading (mm)")
+    ax.set_xlabel(r"support movement before loading $\delta$ (mm)")
     ax.set_ylabel(ylabel)
     ax.set_yscale("log")
-    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.0), frameon=False)  # above the axes: it hides no point
+    ax.yaxis.set_major_locator(LogLocator(subs=LOG_TICKS))  # a label at 1, 2 and 5 of each decade
+    ax.yaxis.set_major_formatter(StrMethodFormatter("{x:g}"))
+    ax.yaxis.set_minor_formatter(StrMethodFormatter(""))
+    legend = ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.0), frameon=False, title=title)  # above: hides no point
+    legend._legend_box.align = "left"
 
 
 @house_style
@@ -91,7 +100,7 @@ def _draw_influence(ax, influence: pd.DataFrame, arch_weight_N: float, engine: s
     ax.set_ylabel("collapse load (N)")
     ax.set_ylim(bottom=0.0)
     twin = ax.secondary_yaxis("right", functions=(lambda n: n / arch_weight_N, lambda r: r * arch_weight_N))
-    twin.set_ylabel("/ arch weight")
+    twin.set_ylabel("load / arch weight (-)")
 
 
 @house_style
