@@ -160,9 +160,7 @@ def plot_descent(paths: dict[str, tuple[LoadPath, LoadPath | None]], stem: Path)
     for k, (name, (static, dem)) in enumerate(paths.items()):
         ax = fig.add_subplot(rows, columns, k + 1)
         curve = static.curve
-        ax.plot(
-            curve["load_displacement_mm"], curve["multiplier"], "-", lw=0.9, color="C0", label=ENGINE_NAMES["static"]
-        )
+        ax.plot(curve["load_displacement_mm"], curve["multiplier"], "-", lw=0.9, color="C0", label="static")
         if dem is not None:
             past = (
                 (dem.curve[BRANCH] == DESCENDING).to_numpy() if BRANCH in dem.curve else np.zeros(len(dem.curve), bool)
@@ -171,9 +169,9 @@ def plot_descent(paths: dict[str, tuple[LoadPath, LoadPath | None]], stem: Path)
                 shown = dem.curve[mask]
                 ax.plot(shown["load_displacement_mm"], shown["multiplier"], marker, ms=2.5, mfc="none", mew=0.6,
                         color="C3" if marker == "s" else "C1", label=label)  # fmt: skip
-        ax.set_title(name.replace("_", " "))
-        ax.set_xlabel("displacement of the load (mm)")
-        ax.set_ylabel(f"live load ({static.unit})")
+        ax.set_title(f"({chr(ord('a') + k)}) {name.replace('_', ' ')}", loc="left")
+        ax.set_xlabel("mean displacement along the load (mm)")  # its points' along their forces (work-conjugate)
+        ax.set_ylabel(f"{'horizontal acceleration' if static.unit == 'g' else 'live load'} ({static.unit})")
         ax.set_xlim(left=0.0)
         ax.set_ylim(bottom=0.0)
         if k == 0:
