@@ -142,10 +142,10 @@ def plot_engines(table: pd.DataFrame, tolerance: float, stem: Path) -> tuple[Pat
     rows = range(len(table))
     ax.axvspan(-100.0 * tolerance, 100.0 * tolerance, color="0.9", lw=0, label=f"\u00b1{100 * tolerance:g} %")
     ax.plot(100.0 * table["dem_over_static"], rows, "o", ms=3.0, color="C0", label="collapse")
-    ax.plot(100.0 * table["first_loss_dem_over_static"], rows, "x", ms=3.0, color="C1", label="first loss")
+    ax.plot(100.0 * table["first_loss_dem_over_static"], rows, "x", ms=3.0, color="0.2", label="first loss")
     ax.set_yticks(list(rows), [name.replace("_", " ") for name in table["case"]])
     ax.invert_yaxis()
-    ax.set_xlabel("DEM \u2212 static capacity (%)")
+    ax.set_xlabel("(DEM \u2212 static) / static (%)")
     ax.legend(loc="lower right", frameon=False, ncols=3, bbox_to_anchor=(1.0, 1.0))
     return save_figure(fig, stem)
 
