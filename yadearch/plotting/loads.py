@@ -27,8 +27,15 @@ PASSIVE_SERIES = (  # column of the passive study's capacities, colour, legend
     ("static_N", "C0", r"static, $k_n$ 5.2 N/mm$^3$"),
     ("dem_N", "C1", r"DEM, $k_n$ 5.2 N/mm$^3$"),
 )
+# a live load's work-conjugate displacement: its points' mean displacement along their forces
+LOAD_DISPLACEMENT_LABEL = "mean displacement along the load (mm)"
 LOG_TICKS = (1.0, 2.0, 5.0)  # the labelled ticks of each decade of a log axis
 DEM_MARKER_PT = 2.2  # the DEM's filled marks, inside the static engine's open ones where they agree
+
+
+def load_label(unit: str) -> str:
+    """A live load's axis label in its unit: N for a load, g for a horizontal acceleration."""
+    return f"{'horizontal acceleration' if unit == 'g' else 'live load'} ({unit})"
 
 
 @house_style
@@ -125,8 +132,8 @@ def plot_load_path(path: LoadPath, stem: Path) -> tuple[Path, Path]:
         ax.axhline(capacity, color="C0", lw=0.6, ls=":", label=f"collapse ({capacity:.3g} {unit})")
     if math.isfinite(first_loss) and first_loss < capacity:
         ax.axhline(first_loss, color="C1", lw=0.6, ls=":", label=f"first loss of stability ({first_loss:.3g} {unit})")
-    ax.set_xlabel("displacement of the load along its direction (mm)")
-    ax.set_ylabel(f"live load ({unit})")
+    ax.set_xlabel(LOAD_DISPLACEMENT_LABEL)
+    ax.set_ylabel(load_label(unit))
     ax.set_xlim(left=0.0)
     ax.set_ylim(bottom=0.0)
     ax.legend(loc="best", frameon=False)  # where the curve and its lines leave room: the peak moves about
@@ -170,8 +177,8 @@ def plot_descent(paths: dict[str, tuple[LoadPath, LoadPath | None]], stem: Path)
                 ax.plot(shown["load_displacement_mm"], shown["multiplier"], marker, ms=2.5, mfc="none", mew=0.6,
                         color="C3" if marker == "s" else "C1", label=label)  # fmt: skip
         ax.set_title(f"({chr(ord('a') + k)}) {name.replace('_', ' ')}", loc="left")
-        ax.set_xlabel("mean displacement along the load (mm)")  # its points' along their forces (work-conjugate)
-        ax.set_ylabel(f"{'horizontal acceleration' if static.unit == 'g' else 'live load'} ({static.unit})")
+        ax.set_xlabel(LOAD_DISPLACEMENT_LABEL)
+        ax.set_ylabel(load_label(static.unit))
         ax.set_xlim(left=0.0)
         ax.set_ylim(bottom=0.0)
         if k == 0:
