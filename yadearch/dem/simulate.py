@@ -17,6 +17,7 @@ from pathlib import Path
 from yadearch.case.config import ArchCase, NumericsConfig, load_case
 from yadearch.case.materials import material_text
 from yadearch.case.mechanics import held_load_text
+from yadearch.case.numerics_section import STATIC_PATH_STATES
 from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
 from yadearch.errors import YadearchError
@@ -116,7 +117,8 @@ def criterion_text(n: NumericsConfig) -> str:
         "stable equilibrium). A relaxation that ends off that equilibrium, moves a block more than "
         f"{n.snap_thickness_ratio} ring thickness beyond its increment's reach, or leaves one that far "
         "from the parabola through the "
-        "branch's last three equilibria has passed a fold: the fold is bisected to the tolerance by "
+        f"branch's last three equilibria ({_path_states_text(n)}) has passed a fold: the fold is bisected "
+        "to the tolerance by "
         "relaxations that do none of these, and the snap made from just before it, held on while "
         f"the static model still moves the blocks (up to {MAX_DESCENT_GOES} holds). "
         "No equilibrium: a "
@@ -127,6 +129,13 @@ def criterion_text(n: NumericsConfig) -> str:
         "midpoint of the bracket [last support displacement in equilibrium; first without, "
         f"reached from that state], narrowed to < {n.du_tolerance_mm} mm."
     ).format(n.first_increment_mm, n.increment_growth, n.max_increment_mm)
+
+
+def _path_states_text(n: NumericsConfig) -> str:
+    """How the path reads its states (`numerics.support_path_states`), in the protocol's words."""
+    if n.support_path_states == STATIC_PATH_STATES:
+        return "each read at the static model's stable equilibrium its hold sits in, a branch started along its tangent"
+    return "each as its hold leaves it"
 
 
 def die_with_parent() -> None:

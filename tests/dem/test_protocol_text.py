@@ -1,0 +1,14 @@
+"""A DEM run's summary.json says how its support path read its states (`numerics.support_path_states`):
+a run says which numerics it used (docs/numerics.md, "Collapse")."""
+
+from __future__ import annotations
+
+from yadearch.case.config import preset
+from yadearch.dem.simulate import criterion_text
+
+
+def test_the_loading_protocol_names_the_states_the_path_compares():
+    scene = criterion_text(preset("set2").numerics)
+    static = criterion_text(preset("set2").with_overrides({"support_path_states": "static"}).numerics)
+    assert "each as its hold leaves it" in scene and "static model's stable equilibrium" not in scene
+    assert "each read at the static model's stable equilibrium its hold sits in" in static
