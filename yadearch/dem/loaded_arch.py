@@ -14,10 +14,9 @@ from yadearch.case.config import ArchCase
 from yadearch.dem.live_load import LOAD_CALLBACK, LoadDriver
 from yadearch.dem.runner import Runner
 from yadearch.dem.scene import install_before_integrator
-from yadearch.dem.static_check import centroid_rows
+from yadearch.dem.static_check import centroid_rates, centroid_rows
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
-from yadearch.model.joint_tangent import BLOCK_DOFS
 from yadearch.model.load_control import LoadSpring
 from yadearch.model.loads import load_displacement
 from yadearch.model.movement import Movement
@@ -130,7 +129,7 @@ class LoadedArch:
             return self._settled(found), None
         moved = np.zeros_like(found.u)
         moved[arch.free_dofs] = growth
-        return self._settled(found), centroid_rows(moved, np.zeros((len(moved) // BLOCK_DOFS - 2, 3)))
+        return self._settled(found), centroid_rates(moved)
 
     def drive_by_displacement(self, secant_ratio: float, rate: float) -> LoadSpring | None:
         """From now on the load is driven by its displacement through a spring `secant_ratio` x the path's

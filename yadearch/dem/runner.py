@@ -172,9 +172,8 @@ class Runner:
         if found is None:
             return self.positions(), None
         assert self.static_check is not None  # an equilibrium is the check's
-        centroids = self.positions()
-        slope = self.static_check.support_slope(found, self.delta(), self.live_multiplier, centroids)
-        return centroid_rows(found.u, centroids.copy()), slope
+        slope = self.static_check.support_slope(found, self.delta(), self.live_multiplier)
+        return centroid_rows(found.u, self.positions()), slope
 
     def _path_equilibrium(self) -> Equilibrium | None:
         """The static model's stable equilibrium the scene sits in, where the path reads its states there."""

@@ -69,10 +69,8 @@ class StaticCheck:
                 return None
         return found if found.stable() else None
 
-    def support_slope(
-        self, found: Equilibrium, delta: float, multiplier: float, centroids: np.ndarray
-    ) -> np.ndarray | None:
-        """How the voussoirs' `centroids` (n, 3) move per metre of the support's path from the stable
+    def support_slope(self, found: Equilibrium, delta: float, multiplier: float) -> np.ndarray | None:
+        """How the voussoirs' centroids (n, 3) move per metre of the support's path from the stable
         equilibrium `found` at `delta` with the live load held at `multiplier` (the static engine's
         prediction from one state, `StaticLoading.tangent_prediction`; x and y), None where its tangent
         is singular."""
@@ -83,10 +81,15 @@ class StaticCheck:
             )
         except (np.linalg.LinAlgError, ValueError):
             return None
-        return centroid_rows((ahead - found.u) / SLOPE_STEP, np.zeros_like(centroids))
+        return centroid_rates((ahead - found.u) / SLOPE_STEP)
 
 
 def centroid_rows(u: np.ndarray, rows: np.ndarray) -> np.ndarray:
     """`rows` (n, 3: the voussoirs' centroids) with x and y from the state vector `u` (the supports too)."""
     rows[:, 0:2] = u.reshape(-1, BLOCK_DOFS)[1:-1, 0:2]
     return rows
+
+
+def centroid_rates(rate: np.ndarray) -> np.ndarray:
+    """How the voussoirs' centroids (n, 3) move for the state vector's rate `rate` (x and y; z zero)."""
+    return centroid_rows(rate, np.zeros((len(rate) // BLOCK_DOFS - 2, 3)))

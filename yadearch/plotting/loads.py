@@ -80,8 +80,8 @@ def _draw_residual(ax, residual: pd.DataFrame, ylabel: str, title: str | None = 
     ax.yaxis.set_major_locator(LogLocator(subs=LOG_TICKS))  # a label at 1, 2 and 5 of each decade
     ax.yaxis.set_major_formatter(StrMethodFormatter("{x:g}"))
     ax.yaxis.set_minor_formatter(StrMethodFormatter(""))
-    legend = ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.0), frameon=False, title=title)  # above: hides no point
-    legend._legend_box.align = "left"
+    # above the axes, its title to the left: it hides no point
+    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.0), frameon=False, title=title, alignment="left")
 
 
 @house_style
