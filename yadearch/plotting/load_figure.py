@@ -24,6 +24,7 @@ from yadearch.solve.load_lp import LoadCapacity
 MM = 1e3
 LABEL_PT, OFFSET_PT = 7, 5
 HEIGHT_CM = 6.5
+LEGEND_PAD_PT = 30  # the title above the legend's two rows
 GAP = 0.01  # of the span: between the load's arrow and the extrados
 
 
@@ -59,7 +60,12 @@ def plot_load_collapse(case: ArchCase, geometry: ArchGeometry, result: LoadCapac
     ax.margins(0.12)
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
-    ax.set_title(f"{case.name}: collapse at {result.multiplier:.4g} {result.unit}", fontsize=LABEL_PT + 1)
+    ax.set_title(
+        f"{case.name}: collapse at {result.multiplier:.4g} {result.unit}", fontsize=LABEL_PT + 1, pad=LEGEND_PAD_PT
+    )
+    ax.plot([], [], "o", ms=4, mfc="0.5", mec="white", mew=0.5, label="hinge (I, E: at the intrados, extrados)")
+    # rows between the title and the axes: inside, any corner may hold the load's arrow or a hinge
+    ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), frameon=False, fontsize=LABEL_PT, handlelength=1.2)
     layout(fig)
     for label, away in labels:
         place_label(ax, label, away, OFFSET_PT)

@@ -144,13 +144,14 @@ def plot_load_path(path: LoadPath, stem: Path) -> tuple[Path, Path]:
 def plot_engines(table: pd.DataFrame, tolerance: float, stem: Path) -> tuple[Path, Path]:
     """STEM.pdf and .png: each case's DEM capacity against the static engine's (%), with the band of
     +-`tolerance` the two engines should agree within."""
-    fig = new_figure(height_cm=ENGINES_ROW_CM * (len(table) + 2), width_cm=COLUMN_CM)
+    # a page wide: the rows are named in words (`studies.loads.engines.case_label`)
+    fig = new_figure(height_cm=ENGINES_ROW_CM * (len(table) + 2), width_cm=2 * COLUMN_CM)
     ax = fig.add_subplot()
     rows = range(len(table))
     ax.axvspan(-100.0 * tolerance, 100.0 * tolerance, color="0.9", lw=0, label=f"\u00b1{100 * tolerance:g} %")
     ax.plot(100.0 * table["dem_over_static"], rows, "o", ms=3.0, color="C0", label="collapse")
     ax.plot(100.0 * table["first_loss_dem_over_static"], rows, "x", ms=3.0, color="0.2", label="first loss")
-    ax.set_yticks(list(rows), [name.replace("_", " ") for name in table["case"]])
+    ax.set_yticks(list(rows), list(table["label"]))
     ax.invert_yaxis()
     ax.set_xlabel("(DEM \u2212 static) / static (%)")
     ax.legend(loc="lower right", frameon=False, ncols=3, bbox_to_anchor=(1.0, 1.0))

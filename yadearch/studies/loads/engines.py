@@ -90,8 +90,8 @@ def engines_table(
             static = static_load_path(case, after_mm, descend_to=None)  # the capacities alone
         except YadearchError as exc:
             log(f"{case.name}: the static engine failed: {exc}")
-            return {"case": case.name, "after_mm": after_mm, "static_outcome": "failed", "dem_outcome": "not run",
-                    "dem_failure": str(exc)}  # fmt: skip
+            return {"case": case.name, "label": case_label(case, after_mm), "after_mm": after_mm,
+                    "static_outcome": "failed", "dem_outcome": "not run", "dem_failure": str(exc)}  # fmt: skip
         try:
             dem = stored_load_path(out, case, after_mm) or run_load_process(case, out, after_mm)
             reason = ""
@@ -110,6 +110,7 @@ def _row(case: ArchCase, after_mm: float, static: LoadPath, dem: LoadPath | None
     nan = math.nan
     return {
         "case": case.name,
+        "label": case_label(case, after_mm),
         "kn_N_per_mm3": case.interface.kn_N_per_mm3,
         "after_mm": after_mm,
         "unit": static.unit,
@@ -127,6 +128,22 @@ def _row(case: ArchCase, after_mm: float, static: LoadPath, dem: LoadPath | None
         "rigid_capacity": static.rigid,
         "dem_failure": reason,
     }
+
+
+def case_label(case: ArchCase, after_mm: float) -> str:
+    """A case as a reader names it (the figure's rows): the arch, its live load, and what else it carries
+    or went through (joints other than ENGINES_KN, a settlement before the load, backfill)."""
+    family = case.name.split("_")[0]
+    arch = "paper's arch" if family == "paper" else f"{family}, t {case.geometry.thickness_mm:g} mm"
+    if case.loads.live_load == "vertical":
+        width = case.loads.load_width_mm
+        load = f"load at {case.loads.load_position_over_span:g} span" + (f", {width:g} mm wide" if width else "")
+    else:
+        load = "horizontal acceleration"
+    besides = [f"kn {case.interface.kn_N_per_mm3:g} N/mm\u00b3"] if case.interface.kn_N_per_mm3 != ENGINES_KN else []
+    besides += [f"after {after_mm:g} mm settlement"] if after_mm else []
+    besides += [f"{case.loads.fill_depth_mm:g} mm fill"] if case.loads.fill_depth_mm else []
+    return f"{arch}: {load}" + "".join(f", {item}" for item in besides)
 
 
 def dem_influence_line(base: ArchCase, positions: Iterable[float], out: Path, jobs: int = 2) -> pd.DataFrame:
