@@ -10,7 +10,12 @@ import pandas as pd
 import pytest
 
 from yadearch.analysis.samples import du_statistics, hinge_frequencies, median_interval
-from yadearch.plotting.montecarlo import du_amplitude_figure, du_distribution_figure, hinge_frequency_figure
+from yadearch.plotting.montecarlo import (
+    campaign_figures,
+    du_amplitude_figure,
+    du_distribution_figure,
+    hinge_frequency_figure,
+)
 from yadearch.studies.montecarlo import SEED_KEY, sample_rows, summary_markdown
 
 
@@ -66,6 +71,13 @@ def test_the_summary_and_the_figures_describe_the_campaign(tmp_path):
         du_amplitude_figure(table, "edge_radius_mm", tmp_path / "amp"),
     ):
         assert all(p.is_file() and p.stat().st_size > 1000 for p in paths)
+
+
+def test_du_is_drawn_against_an_amplitude_only_where_it_takes_two_levels_or_more(tmp_path):
+    table = _table().assign(face_bump_sd_mm=0.18)  # one level: no curve to draw
+    campaign_figures(table, tmp_path, ["edge_radius_mm", "face_bump_sd_mm"])
+    assert (tmp_path / "du_vs_edge_radius_mm.png").is_file()
+    assert not (tmp_path / "du_vs_face_bump_sd_mm.png").exists()
 
 
 def test_the_median_interval_holds_the_true_median_at_its_confidence():

@@ -61,7 +61,7 @@ def atlas_figure(table: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
                 if i == 0:
                     ax.set_title(MOVEMENT_TITLES.get(movement, movement.replace("_", " ")), fontsize=MIN_TEXT_PT)
                 if j == 0:
-                    ax.set_ylabel(f"{shape.replace('_', '-')}\n$\\delta_u$ (mm)", fontsize=MIN_TEXT_PT)
+                    ax.set_ylabel(f"{shape.replace('_', '-')}\n$d_u$ (mm)", fontsize=MIN_TEXT_PT)
                 if i == len(shapes) - 1:
                     ax.set_xlabel("$k_n$ (N/mm³)", fontsize=MIN_TEXT_PT)
         key = fig.add_subplot(grid[len(shapes), :])
@@ -96,7 +96,7 @@ def _legend(thicknesses: list[float], outcomes: set[str]) -> list[Line2D]:
     return (
         handles
         + [
-            Line2D([], [], color=grey, marker="o", ms=2.5, lw=1.0, label=r"static $\delta_u$"),
+            Line2D([], [], color=grey, marker="o", ms=2.5, lw=1.0, label=r"static $d_u$"),
             Line2D(
                 [],
                 [],
@@ -105,10 +105,10 @@ def _legend(thicknesses: list[float], outcomes: set[str]) -> list[Line2D]:
                 ms=3.5,
                 mfc="none",
                 ls="none",
-                label=r"static $\delta_{u,\mathrm{first}}$",
+                label=r"static $d_{u,\mathrm{first}}$",
             ),
-            Line2D([], [], color=grey, marker="D", ms=3.5, mfc="none", ls="none", label=r"DEM $\delta_u$"),
-            Line2D([], [], color=grey, ls=":", label=r"rigid march $\delta_u$"),
+            Line2D([], [], color=grey, marker="D", ms=3.5, mfc="none", ls="none", label=r"DEM $d_u$"),
+            Line2D([], [], color=grey, ls=":", label=r"rigid march $d_u$"),
         ]
         + [
             Line2D([], [], color=grey, marker=marker, mfc="none", ls="none", label=label)

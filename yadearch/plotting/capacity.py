@@ -21,6 +21,7 @@ DIRECTION_COLOURS = ("#000000", "#E69F00", "#56B4E9", "#009E73", "#0072B2", "#D5
 RIGID_COLOR = "0.35"
 RIGID_STYLE = {"color": RIGID_COLOR, "ls": "--", "marker": "x", "ms": 3, "lw": 0.8}
 OTHER_BRANCH_STYLE = {"color": RIGID_COLOR, "ls": ":", "marker": "+", "ms": 3, "lw": 0.8}
+SAME_DU_MM = 0.01  # the two branches of the keystone tie end alike: one line drawn
 
 
 def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") -> list[Path]:
@@ -58,7 +59,8 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") 
             _hinge_marks(
                 hinges, rigid["direction_deg"], rigid["rigid_hinges"], RIGID_COLOR, len(groups) / 2 * SET_OFFSET_DEG
             )
-        other = rigid[rigid["du_rigid_other_mm"].notna()]
+        other = rigid[rigid["du_rigid_other_mm"].notna()]  # where the other branch ends elsewhere
+        other = other[~np.isclose(other["du_rigid_other_mm"], other["du_rigid_mm"], rtol=0.0, atol=SAME_DU_MM)]
         if not other.empty:
             polar.plot(
                 np.radians(other["direction_deg"].to_numpy(dtype=float)),
@@ -87,7 +89,7 @@ def _half_plane(polar, legend_columns: int) -> None:
     polar.set_thetamax(0)
     polar.set_xticks(np.radians(np.arange(-180, 1, 30)))
     polar.yaxis.set_major_locator(MaxNLocator(RADIAL_TICKS))
-    polar.set_title("du (mm) against the direction (deg from +x)")
+    polar.set_title("$d_u$ (mm) against the direction (deg from +x)")
     polar.legend(loc="upper center", bbox_to_anchor=(0.5, -0.02), ncol=legend_columns, frameon=False)
 
 

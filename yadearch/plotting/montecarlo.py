@@ -118,11 +118,13 @@ def campaign_figures(
     table: pd.DataFrame, folder: Path, level_columns: list[str], references: Sequence[tuple[float, str]] = ()
 ) -> list[Path]:
     """A campaign's figures in `folder`: du's distribution (with the `references` lines), the hinge
-    positions and du against each swept amplitude. ValueError if no sample finished."""
+    positions and du against each amplitude swept over two levels or more (one level is no curve).
+    ValueError if no sample finished."""
     paths = du_distribution_figure(table, folder / "du_distribution", references)
     paths += hinge_frequency_figure(table, folder / "hinge_positions")
     for column in level_columns:
-        paths += du_amplitude_figure(table, column, folder / f"du_vs_{column}")
+        if table[column].nunique() > 1:
+            paths += du_amplitude_figure(table, column, folder / f"du_vs_{column}")
     return paths
 
 

@@ -36,6 +36,7 @@ from yadearch.solve.stages import Stage
 
 LEFT_COLOUR, RIGHT_COLOUR = "#0072B2", "#D55E00"
 PAST_DU_ALPHA = 0.35
+LEGEND_ROWS_CM = 0.9  # the collapse figure's two legend rows above the arch
 PATH_HEADROOM = 1.15  # the hinge figure's scale: the largest value on the path, with this room
 SETTLEMENT_DEG = -90.0  # a support moving straight down settles; any other direction is a displacement
 
@@ -112,7 +113,7 @@ def collapse_figure(
     ylim = (all_xy[:, 1].min() - 0.03 * span, all_xy[:, 1].max() + 0.07 * span)
     if ax is None:
         axes_width_cm = width_cm - AXIS_MARGINS_CM[0]
-        height_cm = axes_width_cm * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1]
+        height_cm = axes_width_cm * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1] + LEGEND_ROWS_CM
         ax = new_figure(height_cm=height_cm, width_cm=width_cm).add_subplot()
     undeformed = [front_face(vertices) * 1e3 for vertices in geometry.blocks]
     draw_blocks(ax, [moved * 1e3 for moved in outlines], undeformed)
@@ -127,8 +128,12 @@ def collapse_figure(
         )
         for k, track in enumerate(analysis.tracks)
     ]
-    block_legend_entries(ax, rf"$\delta$ = {state['delta_mm']:.2f} mm")
-    ax.legend(loc="lower center", ncols=1, handlelength=1.5)  # inside the arch, under the crown
+    blocks = rf"$\delta$ = {state['delta_mm']:.2f} mm"
+    if snapshot == "collapse" and analysis.du_mm is not None:  # the first state past the path's end
+        blocks += rf", past $d_u$ = {analysis.du_mm:.2f} mm"
+    block_legend_entries(ax, blocks)
+    # rows above the drawing: inside, a corner the blocks leave free may be a hinge label's
+    ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), handlelength=1.5, frameon=False)
     ax.set_aspect("equal")
     ax.set_xlim(*xlim)
     ax.set_ylim(*ylim)
