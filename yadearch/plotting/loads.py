@@ -177,7 +177,7 @@ def plot_descent(paths: dict[str, tuple[LoadPath, LoadPath | None]], stem: Path)
                 shown = dem.curve[mask]
                 ax.plot(shown["load_displacement_mm"], shown["multiplier"], marker, ms=2.5, mfc="none", mew=0.6,
                         color="C3" if marker == "s" else "C1", label=label)  # fmt: skip
-        ax.set_title(f"({chr(ord('a') + k)}) {name.replace('_', ' ')}", loc="left")
+        ax.set_title(f"({chr(ord('a') + k)}) {name}", loc="left")
         ax.set_xlabel(LOAD_DISPLACEMENT_LABEL)
         ax.set_ylabel(load_label(static.unit))
         ax.set_xlim(left=0.0)

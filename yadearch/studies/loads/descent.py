@@ -22,7 +22,7 @@ from yadearch.model.load_control import DisplacementControl
 from yadearch.results.load_path import stored_load_path
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath, static_load_path
-from yadearch.studies.loads.engines import NUMERICS_VARIANTS, engine_cases, setting_value
+from yadearch.studies.loads.engines import NUMERICS_VARIANTS, case_label, engine_cases, setting_value
 
 DESCENT_CASES = (  # of `studies.loads.engines.engine_cases`: a small arch, the paper's under a point load at
     "segmental_point_0.3",  # both stiffnesses, and an acceleration
@@ -81,8 +81,8 @@ def descent_tables(
 ) -> tuple[pd.DataFrame, pd.DataFrame, dict[str, tuple[LoadPath, LoadPath | None]]]:
     """Each run on both engines (the DEM's files under `out`, one folder a control, `jobs` at a time;
     those already there are read back): a row a run, a row a DEM state past the peak with the static
-    branch's load at its displacement, and the two engines' paths of each default run by case. A DEM
-    run that fails is a row with its reason."""
+    branch's load at its displacement, and the two engines' paths of each default run by its case in
+    words (`engines.case_label`). A DEM run that fails is a row with its reason."""
     statics = {
         run.case.name: static_load_path(run.case, run.after_mm, descend_to=run.control.descend_to) for run in runs
     }
@@ -102,8 +102,10 @@ def descent_tables(
 
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         done = list(pool.map(both, runs))
-    paths = {
-        run.case.name: (statics[run.case.name], dem) for run, (_, _, dem) in zip(runs, done) if run.variant == DEFAULT
+    paths = {  # by the case's name in words, the figure's panel titles
+        case_label(run.case, run.after_mm): (statics[run.case.name], dem)
+        for run, (_, _, dem) in zip(runs, done)
+        if run.variant == DEFAULT
     }
     rows = pd.DataFrame([row for row, _, _ in done])
     return rows, pd.concat([states for _, states, _ in done], ignore_index=True), paths
