@@ -33,6 +33,8 @@ SIDE_MARGIN = 0.15  # of the arch's span, either side: room for the labels of hi
 LABEL_OFFSET_PT = 5  # a hinge label's distance from its pivot, away from the ring
 STRIP_FRACTIONS = (0.0, 1 / 3, 2 / 3, 1.0)  # of du: the strip's four states
 STRIP_CM = (17.0, 9.0)  # two columns wide
+THRUST_LABEL = "line of thrust"  # the joints' resultants, in the strip's key
+STAGE_WORDS = {"selfweight": "self-weight"}  # a state's stage as a reader writes it
 
 
 @dataclass(frozen=True)
@@ -113,7 +115,7 @@ def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple,
     undeformed = [front_face(vertices) * MM_PER_M for vertices in geometry.blocks]
     draw_blocks(ax, view.outlines, undeformed, undeformed_colour=UNDEFORMED_COLOUR)
     if len(view.thrust):
-        ax.plot(view.thrust[:, 0], view.thrust[:, 1], "-", color=THRUST_COLOUR, lw=0.8, zorder=3)
+        ax.plot(view.thrust[:, 0], view.thrust[:, 1], "-", color=THRUST_COLOUR, lw=0.8, zorder=3, label=THRUST_LABEL)
     for interface, side, point, letter, across in view.hinges:
         colour = hinge_colour(letter) if letter else UNLABELLED_COLOUR
         ax.plot(*point, "o", ms=4, mfc=colour, mec="white", mew=0.5, zorder=4)
@@ -123,9 +125,10 @@ def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple,
         label.set_fontsize(MIN_TEXT_PT)
         label.away = across if side == "E" else -across  # off the ring: out at the extrados, in at the intrados
     if corner:
-        text = f"{view.place} ({view.stage})"
+        text = f"{view.place} ({STAGE_WORDS.get(view.stage, view.stage)})"
         if view.reaction_N is not None:
-            text += f"\n{view.support} on the arch:\nRx {view.reaction_N[0]:.2f} N, Ry {view.reaction_N[1]:.2f} N"
+            rx, ry = view.reaction_N
+            text += f"\n{view.support} on the arch:\n$R_x$ = {rx:.2f} N, $R_y$ = {ry:.2f} N"
         ax.text(0.01, 0.02, text, transform=ax.transAxes, va="bottom", ha="left", fontsize=MIN_TEXT_PT)
     ax.set_aspect("equal")
     ax.set_xlim(*limits[0])
@@ -168,6 +171,8 @@ def strip_figure(run: RunFolder, analysis: RunAnalysis) -> Figure:
         ax.set_xlabel("")
     for ax in axes[1::2]:
         ax.set_ylabel("")
+    if axes[0].get_legend_handles_labels()[0]:  # the key of the red line, beside the first state's free side
+        axes[0].legend(loc="lower right", frameon=False, fontsize=MIN_TEXT_PT)
     place_texts(fig)
     return fig
 
