@@ -196,7 +196,10 @@ def plot_hinge_openings(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tu
         # the runaway past du would dwarf the path: the scale is the path's, the collapse runs off it
         ax.set_ylim(0, PATH_HEADROOM * highest[ax] if highest[ax] > 0 else None)
     top.plot([], [], "o", ms=3.5, color="0.3", label="hinge formed")
-    top.legend(loc="upper left", ncols=1)
+    if analysis.du_mm is not None and np.any(~on_path):  # the faded lines: the state past the path's end
+        top.plot([], [], color="0.3", alpha=PAST_DU_ALPHA, label="past $d_u$ (running away)")
+    top.legend(loc="upper left", ncols=2)  # two columns: short enough to stay above the curves' start
+    top.set_xlim(left=0.0)  # the path from the start, as the other figures of the run
     top.set_ylabel("hinge opening (mm)")
     bottom.set_ylabel("hinge rotation (mrad)")
     bottom.set_xlabel(delta_label(run.case))
