@@ -59,12 +59,13 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") 
             _hinge_marks(
                 hinges, rigid["direction_deg"], rigid["rigid_hinges"], RIGID_COLOR, len(groups) / 2 * SET_OFFSET_DEG
             )
-        other = rigid[rigid["du_rigid_other_mm"].notna()]  # where the other branch ends elsewhere
-        other = other[~np.isclose(other["du_rigid_other_mm"], other["du_rigid_mm"], rtol=0.0, atol=SAME_DU_MM)]
-        if not other.empty:
+        # the other branch only where it ends elsewhere: a gap (NaN) where both branches end alike
+        same = np.isclose(rigid["du_rigid_other_mm"], rigid["du_rigid_mm"], rtol=0.0, atol=SAME_DU_MM)
+        other = rigid["du_rigid_other_mm"].mask(same)
+        if other.notna().any():
             polar.plot(
-                np.radians(other["direction_deg"].to_numpy(dtype=float)),
-                other["du_rigid_other_mm"],
+                np.radians(rigid["direction_deg"].to_numpy(dtype=float)),
+                other,
                 label="rigid, other branch",
                 **OTHER_BRANCH_STYLE,
             )

@@ -111,6 +111,7 @@ def collapse_figure(
     span = np.ptp(all_xy[:, 0])
     xlim = (all_xy[:, 0].min() - LABEL_ROOM * span, all_xy[:, 0].max() + LABEL_ROOM * span)
     ylim = (all_xy[:, 1].min() - 0.03 * span, all_xy[:, 1].max() + 0.07 * span)
+    own_figure = ax is None
     if ax is None:
         axes_width_cm = width_cm - AXIS_MARGINS_CM[0]
         height_cm = axes_width_cm * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1] + LEGEND_ROWS_CM
@@ -132,8 +133,10 @@ def collapse_figure(
     if snapshot == "collapse" and analysis.du_mm is not None:  # the first state past the path's end
         blocks += rf", past $d_u$ = {analysis.du_mm:.2f} mm"
     block_legend_entries(ax, blocks)
-    # rows above the drawing: inside, a corner the blocks leave free may be a hinge label's
-    ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), handlelength=1.5, frameon=False)
+    if own_figure:  # rows above the drawing, room made for them: inside, a free corner may be a hinge label's
+        ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), handlelength=1.5, frameon=False)
+    else:  # a caller's axes: inside, under the crown, clear of a title or a panel above
+        ax.legend(loc="lower center", handlelength=1.5)
     ax.set_aspect("equal")
     ax.set_xlim(*xlim)
     ax.set_ylim(*ylim)
@@ -196,7 +199,7 @@ def plot_hinge_openings(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tu
         # the runaway past du would dwarf the path: the scale is the path's, the collapse runs off it
         ax.set_ylim(0, PATH_HEADROOM * highest[ax] if highest[ax] > 0 else None)
     top.plot([], [], "o", ms=3.5, color="0.3", label="hinge formed")
-    if analysis.du_mm is not None and np.any(~on_path):  # the faded lines: the state past the path's end
+    if analysis.tracks and np.any(~on_path):  # the faded lines: the states past the path's end
         top.plot([], [], color="0.3", alpha=PAST_DU_ALPHA, label="past $d_u$ (running away)")
     top.legend(loc="upper left", ncols=2)  # two columns: short enough to stay above the curves' start
     top.set_xlim(left=0.0)  # the path from the start, as the other figures of the run

@@ -131,15 +131,16 @@ def _row(case: ArchCase, after_mm: float, static: LoadPath, dem: LoadPath | None
 
 
 def case_label(case: ArchCase, after_mm: float) -> str:
-    """A case as a reader names it (the figure's rows): the arch, its live load, and what else it carries
-    or went through (joints other than ENGINES_KN, a settlement before the load, backfill)."""
+    """A case of `engine_cases` as a reader names it (the figures' rows and panels): the arch (the first
+    word of its name), its live load, and what else it carries or went through (joints other than
+    ENGINES_KN, a settlement before the load, backfill)."""
     family = case.name.split("_")[0]
     arch = "paper's arch" if family == "paper" else f"{family}, t {case.geometry.thickness_mm:g} mm"
     if case.loads.live_load == "vertical":
         width = case.loads.load_width_mm
         load = f"load at {case.loads.load_position_over_span:g} span" + (f", {width:g} mm wide" if width else "")
     else:
-        load = "horizontal acceleration"
+        load = case.loads.live_load.replace("_", " ")
     besides = [f"kn {case.interface.kn_N_per_mm3:g} N/mm\u00b3"] if case.interface.kn_N_per_mm3 != ENGINES_KN else []
     besides += [f"after {after_mm:g} mm settlement"] if after_mm else []
     besides += [f"{case.loads.fill_depth_mm:g} mm fill"] if case.loads.fill_depth_mm else []
