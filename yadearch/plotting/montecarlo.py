@@ -34,10 +34,13 @@ def _done(table: pd.DataFrame) -> pd.DataFrame:
     return done
 
 
-def du_distribution_figure(table: pd.DataFrame, stem: Path, references: Sequence[tuple[float, str]] = ()) -> list[Path]:
+def du_distribution_figure(
+    table: pd.DataFrame, stem: Path, references: Sequence[tuple[float, str]] = (), drawn: str = ""
+) -> list[Path]:
     """Histogram and empirical CDF of the samples' du with the median and the band marked, and each
     reference du of `references` ((du in mm, what it is), e.g. the perfect arch's) as a line:
-    STEM.pdf and STEM.png. The title counts the samples drawn that have no du (stand or failed)."""
+    STEM.pdf and STEM.png. The title counts the samples drawn that have no du (stand or failed) and
+    says what they were drawn with (`drawn`, e.g. "face bump s.d. 0.18 mm")."""
     du = _done(table)["du_mm"].to_numpy(dtype=float)
     stats = du_statistics(pd.Series(du))
     with matplotlib.rc_context(SWEEP_STYLE):
@@ -57,6 +60,7 @@ def du_distribution_figure(table: pd.DataFrame, stem: Path, references: Sequence
         ax_cdf.legend(loc="lower right", frameon=True, framealpha=0.9)  # under the CDF, where nothing is drawn
         without = len(table) - du.size
         title = f"$d_u$ of {du.size} samples" + (f" ({without} more drawn: no $d_u$)" if without else "")
+        title += f"\n{drawn}" if drawn else ""
         ax_hist.set_title(title, fontsize=8)
         return list(save_figure(fig, stem))
 
@@ -120,12 +124,21 @@ def campaign_figures(
     """A campaign's figures in `folder`: du's distribution (with the `references` lines), the hinge
     positions and du against each amplitude swept over two levels or more (one level is no curve).
     ValueError if no sample finished."""
-    paths = du_distribution_figure(table, folder / "du_distribution", references)
+    single = [c for c in level_columns if table[c].nunique() == 1]  # what every sample was drawn with
+    drawn = ", ".join(_level_text(c, float(table[c].iloc[0])) for c in single)
+    paths = du_distribution_figure(table, folder / "du_distribution", references, drawn)
     paths += hinge_frequency_figure(table, folder / "hinge_positions")
     for column in level_columns:
         if table[column].nunique() > 1:
             paths += du_amplitude_figure(table, column, folder / f"du_vs_{column}")
     return paths
+
+
+def _level_text(column: str, value: float) -> str:
+    """An amplitude and its value as a title says it: "face bump s.d. 0.18 mm"."""
+    label = parameter_label(column)
+    name, _, unit = label.rpartition(" (")
+    return f"{name} {value:g} {unit.rstrip(')')}" if name else f"{label} {value:g}"
 
 
 def amplitude_panels_figure(
