@@ -31,7 +31,7 @@ from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK, STATIC_PATH_
 from yadearch.plotting.atlas import atlas_figure
 from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, geometries, static_rows
 from yadearch.studies.atlas.invariance import invariance_markdown, invariance_rows, invariance_table
-from yadearch.studies.atlas.report import FIGURE, TABLE, write_atlas
+from yadearch.studies.atlas.report import FIGURE, TABLE, travel_mm, write_atlas
 from yadearch.studies.atlas.rigid import compliant_table, rigid_table
 from yadearch.studies.atlas.snap_refinement import refinement_markdown, refinement_rows, snap_cases, verdicts
 from yadearch.studies.atlas.table import stored_engine
@@ -121,7 +121,7 @@ def main() -> int:
         snap_refinement(args.out)
         return 0
     if args.figure_from_table:
-        print(atlas_figure(pd.read_csv(args.out / TABLE), args.out / FIGURE)[1])
+        print(atlas_figure(pd.read_csv(args.out / TABLE), args.out / FIGURE, travel_mm())[1])
         return 0
     if args.dem_static_states:
         states = STATIC_PATH_STATES

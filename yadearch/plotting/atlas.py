@@ -29,16 +29,18 @@ MOVEMENT_TITLES = {  # the atlas's movements of the right support as a column's 
     "down_in_135": "down and in (−135°)",
     "tilt": "tilt",
 }
-# static outcomes without a du, marked at a panel's top or foot (axes fraction): marker, height, legend
+# static outcomes without a du, marked where they are on the scale: marker, at the travel's end (True) or
+# at 0, legend
 OUTCOME_MARKS = {
-    "stands": ("^", 0.94, "static: stands to the end"),
-    "cannot stand": ("v", 0.06, "static: cannot stand"),
-    "unresolved": ("x", 0.06, "static: unresolved"),
+    "stands": ("^", True, "static: stands to the travel's end"),
+    "cannot stand": ("v", False, "static: cannot stand ($d_u$ 0)"),
+    "unresolved": ("x", False, "static: unresolved (no $d_u$, at 0)"),
 }
 
 
-def atlas_figure(table: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
-    """STEM.pdf/.png: one panel per shape and movement of the atlas `table` (atlas.csv's columns)."""
+def atlas_figure(table: pd.DataFrame, stem: Path, travel_mm: float) -> tuple[Path, Path]:
+    """STEM.pdf/.png: one panel per shape and movement of the atlas `table` (atlas.csv's columns); an
+    arch that stands to the support's travel `travel_mm` (mm) is marked there."""
     shapes = list(dict.fromkeys(table["shape"]))
     movements = list(dict.fromkeys(table["movement"]))
     thicknesses = sorted(table["thickness_mm"].unique())
@@ -53,7 +55,7 @@ def atlas_figure(table: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
                 ax = axes[i, j]
                 panel = table[(table["shape"] == shape) & (table["movement"] == movement)]
                 for color, thickness in zip(THICKNESS_COLORS, thicknesses):
-                    _draw_thickness(ax, panel[panel["thickness_mm"] == thickness], color)
+                    _draw_thickness(ax, panel[panel["thickness_mm"] == thickness], color, travel_mm)
                 ax.set_xscale("log")
                 ax.set_xlim(KN_RANGE)
                 ax.set_ylim(bottom=0.0)
@@ -71,8 +73,9 @@ def atlas_figure(table: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
         return save_figure(fig, stem)
 
 
-def _draw_thickness(ax, runs: pd.DataFrame, color: str) -> None:
-    """One thickness in one panel: static du and du_first against kn, DEM du, the rigid level."""
+def _draw_thickness(ax, runs: pd.DataFrame, color: str, travel_mm: float) -> None:
+    """One thickness in one panel: static du and du_first against kn, DEM du, the rigid level, and the
+    runs without a du at the travel's end (standing) or at 0."""
     runs = runs.sort_values("kn_N_per_mm3")
     kn = runs["kn_N_per_mm3"].to_numpy(dtype=float)
     ax.plot(kn, runs["static_du_mm"], color=color, marker="o", ms=2.5, lw=1.0)
@@ -82,11 +85,12 @@ def _draw_thickness(ax, runs: pd.DataFrame, color: str) -> None:
     rigid = runs["rigid_du_mm"].dropna()
     if len(rigid):
         ax.axhline(float(rigid.iloc[0]), color=color, ls=":", lw=0.9)
-    for outcome, (marker, height, _) in OUTCOME_MARKS.items():
+    for outcome, (marker, at_travel, _) in OUTCOME_MARKS.items():
         marked = runs[runs["static_outcome"].eq(outcome)]
         if len(marked):
+            height = travel_mm if at_travel else 0.0
             ax.plot(marked["kn_N_per_mm3"], np.full(len(marked), height), color=color, marker=marker, ms=3.5,
-                    mfc="none", mew=0.8, ls="none", transform=ax.get_xaxis_transform())  # fmt: skip
+                    mfc="none", mew=0.8, ls="none", clip_on=False)  # fmt: skip
 
 
 def _legend(thicknesses: list[float], outcomes: set[str]) -> list[Line2D]:

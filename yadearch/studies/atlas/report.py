@@ -10,6 +10,7 @@ from typing import Any
 import pandas as pd
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
+from yadearch.case.config import preset
 from yadearch.markdown import markdown_table, text_cell
 from yadearch.plotting.atlas import atlas_figure
 from yadearch.studies.atlas.grid import DEM_KN_N_PER_MM3, KNS_N_PER_MM3, MOVEMENTS, SHAPES, THICKNESS_OVER_RADIUS
@@ -40,9 +41,14 @@ def write_atlas(
     compliant = pd.read_csv(out / COMPLIANT_TABLE) if (out / COMPLIANT_TABLE).is_file() else None
     table = atlas_table(static, rigid, dem, compliant)
     write_csv_atomically(out / TABLE, table)
-    atlas_figure(table, out / FIGURE)
+    atlas_figure(table, out / FIGURE, travel_mm())
     write_text_atomically(out / REPORT, atlas_markdown(table))
     return table
+
+
+def travel_mm() -> float:
+    """How far the atlas's support moves at most (mm): set 2's, the base of every case."""
+    return preset("set2").loading.max_support_displacement_mm
 
 
 def _results(folder: Path) -> pd.DataFrame | None:
@@ -66,7 +72,7 @@ def atlas_markdown(table: pd.DataFrame) -> str:
         f"Regenerate: `{COMMAND}` (resumes; docs/atlas.md says what it checks and why).",
         "",
         f"- Shapes: {', '.join(SHAPES)} (span 600 mm, or the paper's intrados radius 300 mm; 55 voussoirs).",
-        f"- Movements of the right support: {', '.join(MOVEMENTS)} (up to 150 mm).",
+        f"- Movements of the right support: {', '.join(MOVEMENTS)} (up to {travel_mm():g} mm).",
         f"- Thickness t/R: {', '.join(f'{r:g}' for r in THICKNESS_OVER_RADIUS)} (R = 300 mm);"
         f" kn: {', '.join(f'{k:g}' for k in KNS_N_PER_MM3)} N/mm3; the DEM at kn {DEM_KN_N_PER_MM3:g}.",
         "- du_first: where the path first loses stability (a fold or a snap); du: the end of the path.",
