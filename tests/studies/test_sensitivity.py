@@ -138,3 +138,17 @@ def test_static_sensitivity_of_a_small_arch_puts_thickness_before_friction(tmp_p
         assert (tmp_path / f"{figure}.png").stat().st_size > 0
     assert pd.read_csv(tmp_path / "convergence.csv")["base_points"].tolist() == [8]
     assert "## Sobol indices" in (tmp_path / "sensitivity.md").read_text()
+
+
+def test_the_figures_are_drawn_again_from_the_tables_a_study_wrote(tmp_path):
+    """`scripts/sensitivity_figures.py`: the committed study's tables alone give its three figures."""
+    import shutil
+
+    from conftest import REPO
+
+    from yadearch.studies.sensitivity.study import CONVERGENCE_TABLE, INDICES_TABLE, TORNADO_TABLE, redraw_figures
+
+    for name in (TORNADO_TABLE, INDICES_TABLE, CONVERGENCE_TABLE):
+        shutil.copy(REPO / "reports" / "sensitivity" / name, tmp_path / name)
+    redraw_figures(tmp_path)
+    assert all((tmp_path / f"{name}.png").stat().st_size > 1000 for name in ("tornado", "indices", "convergence"))

@@ -16,7 +16,7 @@ from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 
 ROW_HEIGHT_IN = 0.24  # one factor's bar
 MARGIN_HEIGHT_IN = 0.9  # axes labels and legend
-WIDTH_COLUMNS = 1.6  # of a journal column: room for the factors' labels
+WIDTH_COLUMNS = 2.0  # journal columns: a page wide, room for the factors' labels
 BAR_HEIGHT = 0.38  # of a row, for each of the two bars (low and high end; S1 and ST)
 LOG_TICKS = (1.0, 2.0, 5.0)  # major ticks of a log axis in each decade
 
@@ -48,7 +48,7 @@ def tornado_figure(tornado: pd.DataFrame, stem: Path) -> tuple[Path, Path]:
         ax.axvline(base, color="k", lw=0.8)
         ax.set_yticks(y, [f"{r.label} [{r.low:g}, {r.high:g}]" for r in rows.itertuples()])
         ax.set_xlabel(rf"collapse displacement $d_u$ (mm); base case {base:.1f} mm")
-        ax.legend(loc="lower right")
+        ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), ncols=2, frameon=False)  # above: off the base line
         return save_figure(ax.figure, stem)
 
 

@@ -127,11 +127,25 @@ def run_sensitivity(
     write_csv_atomically(out / CONVERGENCE_TABLE, result.convergence)
     write_csv_atomically(out / SAMPLES_TABLE, samples)
     if figures:
-        tornado_figure(tornado, out / TORNADO_FIGURE)
-        indices_figure(indices, {f.name: f.label for f in factors}, out / INDICES_FIGURE)
-        convergence_figure(result.convergence, STABLE_TO, change_scale(result.convergence), out / CONVERGENCE_FIGURE)
+        draw_figures(out, tornado, indices, result.convergence, factors)
     write_text_atomically(out / REPORT, sensitivity_markdown(base, factors, result, time.time() - started, pool.slots))
     return result
+
+
+def draw_figures(
+    out: Path, tornado: pd.DataFrame, indices: pd.DataFrame, table: pd.DataFrame, factors: tuple[Factor, ...]
+) -> None:
+    """The study's three figures in `out`: the tornado, the indices and their convergence (`table`)."""
+    tornado_figure(tornado, out / TORNADO_FIGURE)
+    indices_figure(indices, {f.name: f.label for f in factors}, out / INDICES_FIGURE)
+    convergence_figure(table, STABLE_TO, change_scale(table), out / CONVERGENCE_FIGURE)
+
+
+def redraw_figures(out: Path, factors: tuple[Factor, ...] = PAPER_FACTORS) -> None:
+    """The figures again from the tables a study wrote in `out` (a change of the figures, no run)."""
+    out = Path(out)
+    tornado, indices, table = (pd.read_csv(out / name) for name in (TORNADO_TABLE, INDICES_TABLE, CONVERGENCE_TABLE))
+    draw_figures(out, tornado, indices, table, factors)
 
 
 def sensitivity_markdown(
