@@ -11,7 +11,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 
 from yadearch.case import reference
-from yadearch.plotting.house import hinge_colour, save_figure
+from yadearch.plotting.house import MIN_TEXT_PT, hinge_colour, save_figure
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, HINGE_STYLE, SWEEP_STYLE
 
 FIGURE_HEIGHT_IN = 4.6
@@ -42,6 +42,14 @@ def kn_curve_figure(
                 ms=7,
                 label="paper FE (set 1, set 2)" if name == "set1" else None,
             )
+            ax.annotate(  # which set each star is
+                name.replace("set", "set "),
+                (ref["kn_N_per_mm3"], ref["numerical"]["du_mm"]),
+                xytext=(4, -8),
+                textcoords="offset points",
+                color="C3",
+                fontsize=MIN_TEXT_PT,
+            )
         ax.set_ylabel(r"collapse displacement $d_u$ (mm)")
         ax.set_ylim(bottom=0.0)
         ax.legend(loc="lower right")
@@ -50,7 +58,7 @@ def kn_curve_figure(
             ax_h.plot(
                 runs["kn_N_per_mm3"], runs[column], marker, color=hinge_colour(letter), ms=1.8, label=f"hinge {label}"
             )
-        ax_h.set_ylabel("interface")
+        ax_h.set_ylabel("hinge's interface\n(static; 1: left springing)")
         ax_h.legend(loc="center right")
         ax_h.set_xscale("log")
         ax_h.set_xlabel(r"joint normal stiffness $k_n$ (N/mm$^3$)")
