@@ -16,7 +16,7 @@ from matplotlib.figure import Figure
 from yadearch.analysis.samples import BAND, du_statistics, hinge_frequencies
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.plotting.house import hinge_colour, save_figure
-from yadearch.plotting.parameter_labels import parameter_label
+from yadearch.plotting.parameter_labels import parameter_label, parameter_setting
 from yadearch.plotting.sweep import COLUMN_WIDTH_IN, SWEEP_STYLE
 
 HINGE_SIDES = {"A": "intrados", "B": "extrados", "C": "extrados, moving support", "D": "extrados, fixed support"}
@@ -40,7 +40,7 @@ def du_distribution_figure(
     """Histogram and empirical CDF of the samples' du with the median and the band marked, and each
     reference du of `references` ((du in mm, what it is), e.g. the perfect arch's) as a line:
     STEM.pdf and STEM.png. The title counts the samples drawn that have no du (stand or failed) and
-    says what they were drawn with (`drawn`, e.g. "face bump s.d. 0.18 mm")."""
+    says what they were drawn with (`drawn`, e.g. "face bump s.d. = 0.18 mm")."""
     du = _done(table)["du_mm"].to_numpy(dtype=float)
     stats = du_statistics(pd.Series(du))
     with matplotlib.rc_context(SWEEP_STYLE):
@@ -124,21 +124,16 @@ def campaign_figures(
     """A campaign's figures in `folder`: du's distribution (with the `references` lines), the hinge
     positions and du against each amplitude swept over two levels or more (one level is no curve).
     ValueError if no sample finished."""
-    single = [c for c in level_columns if table[c].nunique() == 1]  # what every sample was drawn with
-    drawn = ", ".join(_level_text(c, float(table[c].iloc[0])) for c in single)
+    levels = {c: table[c].nunique() for c in level_columns}
+    swept = [c for c, n in levels.items() if n > 1]
+    drawn = ", ".join(  # what every sample was drawn with: the amplitudes of one level
+        parameter_setting(c, float(table[c].iloc[0])) for c, n in levels.items() if n == 1
+    )
     paths = du_distribution_figure(table, folder / "du_distribution", references, drawn)
     paths += hinge_frequency_figure(table, folder / "hinge_positions")
-    for column in level_columns:
-        if table[column].nunique() > 1:
-            paths += du_amplitude_figure(table, column, folder / f"du_vs_{column}")
+    for column in swept:
+        paths += du_amplitude_figure(table, column, folder / f"du_vs_{column}")
     return paths
-
-
-def _level_text(column: str, value: float) -> str:
-    """An amplitude and its value as a title says it: "face bump s.d. 0.18 mm"."""
-    label = parameter_label(column)
-    name, _, unit = label.rpartition(" (")
-    return f"{name} {value:g} {unit.rstrip(')')}" if name else f"{label} {value:g}"
 
 
 def amplitude_panels_figure(

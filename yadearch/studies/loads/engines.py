@@ -14,6 +14,7 @@ import pandas as pd
 from yadearch.case.config import ArchCase
 from yadearch.errors import YadearchError
 from yadearch.launch.load_process import run_load_process
+from yadearch.model.loads import VERTICAL
 from yadearch.results.load_path import stored_load_path
 from yadearch.solve.load_path import LoadPath, static_load_path
 from yadearch.studies.loads.rigid import check_cases, paper_arch
@@ -136,7 +137,7 @@ def case_label(case: ArchCase, after_mm: float) -> str:
     ENGINES_KN, a settlement before the load, backfill)."""
     family = case.name.split("_")[0]
     arch = "paper's arch" if family == "paper" else f"{family}, t {case.geometry.thickness_mm:g} mm"
-    if case.loads.live_load == "vertical":
+    if case.loads.live_load == VERTICAL:
         width = case.loads.load_width_mm
         load = f"load at {case.loads.load_position_over_span:g} span" + (f", {width:g} mm wide" if width else "")
     else:
