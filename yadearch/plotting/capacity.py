@@ -48,6 +48,7 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") 
             )
             offset = (k - (len(groups) - 1) / 2) * SET_OFFSET_DEG
             _hinge_marks(hinges, runs["direction_deg"], runs["hinges"], f"C{k}", offset)
+            hinges.plot([], [], "-", lw=KEY_LINE_WIDTH, color=f"C{k}", label=f"{name} ({engine})")
         rigid = table.drop_duplicates("direction_deg").sort_values("direction_deg")
         if rigid["du_rigid_mm"].notna().any():
             polar.plot(
@@ -59,6 +60,7 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") 
             _hinge_marks(
                 hinges, rigid["direction_deg"], rigid["rigid_hinges"], RIGID_COLOR, len(groups) / 2 * SET_OFFSET_DEG
             )
+            hinges.plot([], [], "-", lw=KEY_LINE_WIDTH, color=RIGID_COLOR, label="rigid blocks")
         # the other branch only where it ends elsewhere: a gap (NaN) where both branches end alike
         same = np.isclose(rigid["du_rigid_other_mm"], rigid["du_rigid_mm"], rtol=0.0, atol=SAME_DU_MM)
         other = rigid["du_rigid_other_mm"].mask(same)
@@ -73,7 +75,7 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") 
         for side, marker in SIDE_MARKERS.items():  # the marker legend: which corner a hinge turns about
             name = "intrados" if side == "I" else "extrados"
             hinges.plot([], [], marker, ms=3, color="0.3", mfc="none" if side == "E" else "0.3", label=f"{name} hinge")
-        hinges.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, frameon=False)
+        hinges.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=3, frameon=False)
         hinges.set_xlabel("direction of the support movement (deg from +x)")
         hinges.set_ylabel("interface of each hinge at collapse")
         hinges.set_xticks(np.arange(-180, 1, 30))
@@ -95,6 +97,7 @@ def _half_plane(polar, legend_columns: int) -> None:
 
 
 SET_OFFSET_DEG = 3.0  # the sets' hinge marks side by side at one direction
+KEY_LINE_WIDTH = 3.0  # the hinge panel's colour key: a thick short line a set
 SIDE_MARKERS = {"I": "o", "E": "s"}
 
 

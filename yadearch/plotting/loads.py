@@ -22,7 +22,7 @@ PASSIVE_HEIGHT_CM = 8.0
 LEGEND_ROOM = 1.45  # panel (a)'s height over its largest capacity: the legend sits above the curves
 PASSIVE_ARCHES = (("small", "o"), ("paper", "s"))  # the passive study's arches by case prefix, and their markers
 PASSIVE_SERIES = (  # column of the passive study's capacities, colour, legend
-    ("rigid_N", "k", "rigid LP"),
+    ("rigid_N", "k", "rigid blocks"),
     ("stiff_static_N", "C2", r"static, $k_n$ 10$^5$ N/mm$^3$"),
     ("static_N", "C0", r"static, $k_n$ 5.2 N/mm$^3$"),
     ("dem_N", "C1", r"DEM, $k_n$ 5.2 N/mm$^3$"),
@@ -46,9 +46,9 @@ def plot_loads(
     fig = new_figure(height_cm=HEIGHT_CM, width_cm=COLUMN_CM)
     top, middle, bottom = fig.subplots(3, 1)
     _draw_influence(top, influence, arch_weight_N)
-    top.set_title("(a) rigid LP: a point load along the span", loc="left")
+    top.set_title("(a) rigid blocks: a point load along the span", loc="left")
     middle.plot(accelerations["t_over_R"], accelerations["collapse_acceleration_g"], "s-", ms=2.5, color="C1")
-    middle.set_title("(b) rigid LP: a semicircle's collapse acceleration", loc="left")
+    middle.set_title("(b) rigid blocks: a semicircle's collapse acceleration", loc="left")
     middle.set_xlabel("t/R of a semicircle (55 voussoirs)")
     middle.set_ylabel("collapse acceleration (g)")
     middle.set_ylim(bottom=0.0)
@@ -72,7 +72,7 @@ def _draw_residual(ax, residual: pd.DataFrame, ylabel: str, title: str | None = 
     settled = residual["settlement_mm"]
     ax.plot(settled, residual["static_capacity"], "o-", ms=3.0, color="C0", label="static: collapse")
     ax.plot(settled, residual["static_first_loss"], "o", ms=3.0, mfc="none", color="C0", label="static: first loss")
-    ax.plot(settled, residual["rigid_capacity"], "^", ms=4.0, color="C2", label="rigid LP: first motion")
+    ax.plot(settled, residual["rigid_capacity"], "^", ms=4.0, color="C2", label="rigid blocks: first motion")
     # no line through the rigid points: their value drops at once when the hinges open, not along a slope
     ax.set_xlabel(r"support movement before loading $\delta$ (mm)")
     ax.set_ylabel(ylabel)
@@ -223,7 +223,7 @@ def plot_passive(
     ax.set_ylabel("collapse load (N)")
     swept.semilogx(mobilisation["u_p_mm"], mobilisation["static_N"], "o-", ms=3, lw=0.8, color="C0",
                    label=r"static, $k_n$ 5.2 N/mm$^3$, $K_p$ 1")  # fmt: skip
-    swept.axhline(float(mobilisation["rigid_N"].iloc[0]), color="k", lw=0.8, ls="--", label=r"rigid LP, $K_p$ 1")
+    swept.axhline(float(mobilisation["rigid_N"].iloc[0]), color="k", lw=0.8, ls="--", label=r"rigid blocks, $K_p$ 1")
     swept.axhline(without_N, color="C0", lw=0.8, ls=":", label=r"static, $k_n$ 5.2 N/mm$^3$, no passive push")
     swept.set_title(r"(b) the paper's arch against $u_p$", loc="left")
     swept.set_xlabel(r"mobilisation displacement $u_p$ (mm)")

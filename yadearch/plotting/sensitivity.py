@@ -92,17 +92,24 @@ def _bar_axes(rows: int):
     return fig.subplots()
 
 
-def convergence_figure(table: pd.DataFrame, target: float, scale: float, stem: Path) -> tuple[Path, Path]:
+def convergence_figure(
+    table: pd.DataFrame, target: float, scale: float, fitted_from: int, stem: Path
+) -> tuple[Path, Path]:
     """STEM.pdf/.png: the largest change of a Sobol index at each doubling of the sample and the
     indices' mean bootstrap half-width against the sample size, with the stability target and the
-    fitted Monte Carlo rate `scale`/sqrt(N) carried on to where it meets the target."""
+    Monte Carlo rate `scale`/sqrt(N), fitted from `fitted_from` base points up, drawn from there to
+    where it meets the target."""
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(COLUMN_WIDTH_IN, COLUMN_WIDTH_IN * 0.8), layout="constrained")
         ax = fig.subplots()
         ax.loglog(table["base_points"], table["largest_change"], "o-", color="C0", label="largest change since N/2")
         ax.loglog(table["base_points"], table["mean_half_width"], "s--", color="C1", label="mean 95 % half-width")
-        reach = np.geomspace(table["base_points"].iloc[0], max((scale / target) ** 2, table["base_points"].iloc[-1]))
-        ax.loglog(reach, scale / np.sqrt(reach), color="0.5", lw=0.8, label=r"fitted $c/\sqrt{N}$")
+        fitted = table["base_points"][table["base_points"] >= fitted_from]
+        start = fitted.iloc[0] if len(fitted) else table["base_points"].iloc[-1]
+        reach = np.geomspace(start, max((scale / target) ** 2, table["base_points"].iloc[-1]))
+        ax.loglog(
+            reach, scale / np.sqrt(reach), color="0.5", lw=0.8, label=rf"$c/\sqrt{{N}}$ fitted from N = {start:g}"
+        )
         ax.axhline(target, color="k", lw=0.8, ls=":", label=f"target {target:g}")
         ax.set_xscale("log", base=2)
         ax.set_xlabel("base points N of the Sobol sample")

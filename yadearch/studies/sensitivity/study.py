@@ -138,7 +138,7 @@ def draw_figures(
     """The study's three figures in `out`: the tornado, the indices and their convergence (`table`)."""
     tornado_figure(tornado, out / TORNADO_FIGURE)
     indices_figure(indices, {f.name: f.label for f in factors}, out / INDICES_FIGURE)
-    convergence_figure(table, STABLE_TO, change_scale(table), out / CONVERGENCE_FIGURE)
+    convergence_figure(table, STABLE_TO, change_scale(table), FIT_FROM, out / CONVERGENCE_FIGURE)
 
 
 def redraw_figures(out: Path, factors: tuple[Factor, ...] = PAPER_FACTORS) -> None:
