@@ -57,6 +57,25 @@ def test_a_movie_frame_at_collapse_has_its_labels_clear(name):
     assert label_clashes(fig) == []
 
 
+def test_a_hinge_keeps_its_letter_before_it_migrates():
+    """Set 1's hinges A and B migrate (10I -> 12I, 30E -> 29E): each state on the path letters them
+    where they stood then, each letter once, not only where they end."""
+    run = read_run(REPORTS / "set1")
+    analysis, geometry = analyse_run(run), case_geometry(run.case)
+    final = {t.paper_label: (t.final.interface, t.side) for t in analysis.tracks if t.paper_label}
+    away = set()
+    for index in run_states(run).path():
+        lettered = [
+            (letter, (k, side))
+            for k, side, _, letter, _ in state_view(run, geometry, analysis, int(index)).hinges
+            if letter
+        ]
+        letters = [letter for letter, _ in lettered]
+        assert len(letters) == len(set(letters))
+        away |= {letter for letter, where in lettered if where != final[letter]}
+    assert {"A", "B"} <= away
+
+
 def test_a_label_on_a_block_is_found():
     run = read_run(REPORTS / "set2")
     fig = strip_figure(run, analyse_run(run))

@@ -63,15 +63,26 @@ def run_states(run: RunFolder) -> RunStates:
     return run.states
 
 
+def hinge_letters(analysis: RunAnalysis, step: int) -> dict[tuple[int, str], str]:
+    """The collapse hinges' letters by (interface, side) at the state of `step`: where each hinge's track
+    stood then (a hinge that migrated later keeps its letter: B at 30E before it moves to 29E), or at
+    collapse for a state off the analysed path."""
+    records = np.flatnonzero(analysis.history.step == step)
+    if not len(records):
+        return {(k, t.side): t.paper_label for t in analysis.tracks for k in t.final.interfaces}
+    at = [(t, t.per_record[records[-1]]) for t in analysis.tracks]
+    return {(k, t.side): t.paper_label for t, hinge in at if hinge is not None for k in hinge.interfaces}
+
+
 def state_view(run: RunFolder, geometry: ArchGeometry, analysis: RunAnalysis, index: int) -> StateView:
     """State `index` of the run as drawn: its hinges as the run finds them (adjacent joints turning the
     same way beyond the run's threshold, marked at their peak, `model.hinges.hinges_at`), each with the
-    letter of the collapse mechanism's hinge whose spread holds it on that side."""
+    letter of the collapse mechanism's hinge whose track holds it then (`hinge_letters`)."""
     states = run_states(run)
     snapshot = states.snapshot(index)
     rows = state_joints(run, geometry, index)
     ends = {side: joint_points(geometry, snapshot, side) * MM_PER_M for side in ("I", "E")}
-    letters = {(k, t.side): t.paper_label for t in analysis.tracks for k in t.final.interfaces}
+    letters = hinge_letters(analysis, int(states.step[index]))
     across = ends["E"] - ends["I"]
     across = across / np.linalg.norm(across, axis=1)[:, None]
     hinges = [
