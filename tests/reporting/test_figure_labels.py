@@ -14,6 +14,7 @@ matplotlib.use("Agg")
 
 from yadearch.analysis.blocks import case_geometry  # noqa: E402
 from yadearch.analysis.run import analyse_run  # noqa: E402
+from yadearch.api.results import open_run  # noqa: E402
 from yadearch.plotting.animation import FRAME_CM  # noqa: E402
 from yadearch.plotting.blocks import BLOCKS_GID  # noqa: E402
 from yadearch.plotting.house import MIN_TEXT_PT, new_figure  # noqa: E402
@@ -57,8 +58,8 @@ def test_a_movie_frame_at_collapse_has_its_labels_clear(name):
     assert label_clashes(fig) == []
 
 
-def test_a_hinge_keeps_its_letter_before_it_migrates():
-    """Set 1's hinges A and B migrate (10I -> 12I, 30E -> 29E): each state on the path letters them
+def test_a_hinge_keeps_its_letter_before_it_moves():
+    """Set 1's hinges A and B move along the path (10I -> 12I, 30E -> 29E): each state on it letters them
     where they stood then, each letter once, not only where they end."""
     run = read_run(REPORTS / "set1")
     analysis, geometry = analyse_run(run), case_geometry(run.case)
@@ -74,6 +75,17 @@ def test_a_hinge_keeps_its_letter_before_it_migrates():
         assert len(letters) == len(set(letters))
         away |= {letter for letter, where in lettered if where != final[letter]}
     assert {"A", "B"} <= away
+
+
+def test_a_state_sharing_its_step_with_the_collapse_takes_its_own_letters():
+    """A live load's last equilibrium and its collapse share the DEM's step: the equilibrium is lettered
+    from its own record (A at 42I), not from the collapse's (A at 41I, where it drew A unlettered)."""
+    run = open_run(REPORTS / "loads/descent/load_paths/spring10_step0.01_to0.5/paper_quarter_span_load_path").folder
+    analysis, geometry, states = analyse_run(run), case_geometry(run.case), run_states(run)
+    last, collapse = (int(i) for i in states.path()[-2:])
+    assert states.step[last] == states.step[collapse] and states.stage[last] != states.stage[collapse]
+    drawn = {letter: (k, side) for k, side, _, letter, _ in state_view(run, geometry, analysis, last).hinges if letter}
+    assert drawn["A"] == (42, "I")
 
 
 def test_a_label_on_a_block_is_found():

@@ -72,7 +72,7 @@ def test_the_report_counts_the_engines_within_one_per_cent():
     )
     text = passive_markdown(capacities, numerics, mobilisation, settlement)
     assert "Static and DEM within 1 % in 1 of 2 cases" in text
-    assert "within 2 % of the rigid LP in 1 of 2" in text
+    assert "within 2 % of the rigid blocks in 1 of 2" in text
     assert "Largest move from the default: 0.50 %" in text and "(0.25 % of it wide" in text
 
 

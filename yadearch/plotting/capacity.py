@@ -75,7 +75,7 @@ def capacity_polar_figure(table: pd.DataFrame, stem: Path, engine: str = "DEM") 
         for side, marker in SIDE_MARKERS.items():  # the marker legend: which corner a hinge turns about
             name = "intrados" if side == "I" else "extrados"
             hinges.plot([], [], marker, ms=3, color="0.3", mfc="none" if side == "E" else "0.3", label=f"{name} hinge")
-        hinges.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=3, frameon=False)
+        hinges.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, frameon=False)  # colours, markers
         hinges.set_xlabel("direction of the support movement (deg from +x)")
         hinges.set_ylabel("interface of each hinge at collapse")
         hinges.set_xticks(np.arange(-180, 1, 30))

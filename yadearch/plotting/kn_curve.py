@@ -31,14 +31,7 @@ def kn_curve_figure(
             done = dem[dem["status"] == "done"]
             ax.plot(done["kn_N_per_mm3"], done["du_mm"], "o", mfc="none", mec="k", ms=3.5, mew=0.7, label="DEM (YADE)")
         if not limits.empty:
-            ax.plot(
-                limits["kn_N_per_mm3"],
-                limits["compliant_du_mm"],
-                "^",
-                color="C2",
-                ms=3.5,
-                label="rigid march, compliant joints",
-            )
+            ax.plot(limits["kn_N_per_mm3"], limits["compliant_du_mm"], "^", color="C2", ms=3.5, label="compliant march")
         ax.axhline(du_rigid_mm, color="0.4", ls="--", lw=0.8, label=f"rigid blocks ({du_rigid_mm:.1f} mm)")
         for name, ref in reference.SETS.items():
             ax.plot(

@@ -48,7 +48,7 @@ def plot_loads(
     _draw_influence(top, influence, arch_weight_N)
     top.set_title("(a) rigid blocks: a point load along the span", loc="left")
     middle.plot(accelerations["t_over_R"], accelerations["collapse_acceleration_g"], "s-", ms=2.5, color="C1")
-    middle.set_title("(b) rigid blocks: a semicircle's collapse acceleration", loc="left")
+    middle.set_title("(b) rigid blocks: semicircle's collapse acceleration", loc="left")
     middle.set_xlabel("t/R of a semicircle (55 voussoirs)")
     middle.set_ylabel("collapse acceleration (g)")
     middle.set_ylim(bottom=0.0)

@@ -238,8 +238,8 @@ def plot_stability(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tuple[P
     if analysis.du_mm is not None:  # a run that stands has no du to name
         ax.legend(loc="upper right")
     ax.set_xlabel(delta_label(run.case))
-    ax.set_ylabel("smallest eigenvalue of K (N/m)")
-    ax.set_title("K: the free blocks' tangent, rotations × ring thickness", fontsize="small")
+    ax.set_ylabel("smallest eigenvalue of $K_s$ (N/m)")
+    ax.set_title("$K_s$: symmetric tangent, rotations × ring thickness", fontsize="small")
     return save_figure(fig, stem)
 
 

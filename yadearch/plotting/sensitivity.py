@@ -104,12 +104,9 @@ def convergence_figure(
         ax = fig.subplots()
         ax.loglog(table["base_points"], table["largest_change"], "o-", color="C0", label="largest change since N/2")
         ax.loglog(table["base_points"], table["mean_half_width"], "s--", color="C1", label="mean 95 % half-width")
-        fitted = table["base_points"][table["base_points"] >= fitted_from]
-        start = fitted.iloc[0] if len(fitted) else table["base_points"].iloc[-1]
-        reach = np.geomspace(start, max((scale / target) ** 2, table["base_points"].iloc[-1]))
-        ax.loglog(
-            reach, scale / np.sqrt(reach), color="0.5", lw=0.8, label=rf"$c/\sqrt{{N}}$ fitted from N = {start:g}"
-        )
+        reach = np.geomspace(fitted_from, max((scale / target) ** 2, table["base_points"].iloc[-1]))
+        fit_label = rf"$c/\sqrt{{N}}$ fitted from N = {fitted_from}"
+        ax.loglog(reach, scale / np.sqrt(reach), color="0.5", lw=0.8, label=fit_label)
         ax.axhline(target, color="k", lw=0.8, ls=":", label=f"target {target:g}")
         ax.set_xscale("log", base=2)
         ax.set_xlabel("base points N of the Sobol sample")

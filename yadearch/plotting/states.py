@@ -63,11 +63,13 @@ def run_states(run: RunFolder) -> RunStates:
     return run.states
 
 
-def hinge_letters(analysis: RunAnalysis, step: int) -> dict[tuple[int, str], str]:
-    """The collapse hinges' letters by (interface, side) at the state of `step`: where each hinge's track
-    stood then (a hinge that migrated later keeps its letter: B at 30E before it moves to 29E), or at
-    collapse for a state off the analysed path."""
-    records = np.flatnonzero(analysis.history.step == step)
+def hinge_letters(analysis: RunAnalysis, stage: str, step: int) -> dict[tuple[int, str], str]:
+    """The collapse hinges' letters by (interface, side) at the state of `stage` and `step` (a live
+    load's last equilibrium and its collapse can share a step): where each hinge's track stood then
+    (one that moves later keeps its letter: B at 30E before it moves to 29E), or at collapse for a
+    state off the analysed path."""
+    history = analysis.history
+    records = np.flatnonzero((history.stage == stage) & (history.step == step))
     if not len(records):
         return {(k, t.side): t.paper_label for t in analysis.tracks for k in t.final.interfaces}
     at = [(t, t.per_record[records[-1]]) for t in analysis.tracks]
@@ -82,7 +84,7 @@ def state_view(run: RunFolder, geometry: ArchGeometry, analysis: RunAnalysis, in
     snapshot = states.snapshot(index)
     rows = state_joints(run, geometry, index)
     ends = {side: joint_points(geometry, snapshot, side) * MM_PER_M for side in ("I", "E")}
-    letters = hinge_letters(analysis, int(states.step[index]))
+    letters = hinge_letters(analysis, str(states.stage[index]), int(states.step[index]))
     across = ends["E"] - ends["I"]
     across = across / np.linalg.norm(across, axis=1)[:, None]
     hinges = [

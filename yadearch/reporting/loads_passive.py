@@ -90,7 +90,8 @@ def passive_markdown(
         "of fill, the load at 0.3 of the span, friction 80 deg) and on the paper's arch "
         f"({FILLS_MM['paper']:g} mm, the quarter span),",
         "with the fill's passive coefficient Kp 0 (none), 1 and 3 (docs/loads.md, \"The fill's passive",
-        "resistance\"). The rigid LP mobilises each face's passive push up to its capacity; the static engine",
+        "resistance\"). The rigid blocks (the limit analysis's LP) mobilise each face's passive push up to its",
+        "capacity; the static engine",
         "and the DEM push with a spring that reaches it after u_p = "
         f"{passive_case('paper', SWEPT_KP).loads.fill_passive_displacement_mm:g} mm of the face's movement into "
         "the fill.",
@@ -99,7 +100,7 @@ def passive_markdown(
         "",
         f"- Static and DEM within {100 * ENGINES_TOLERANCE:g} % in {within} of {len(engines)} cases.",
         f"- The static engine nearly rigid (kn {STIFF['interface.kn_N_per_mm3']:g} N/mm³, u_p "
-        f"{STIFF['fill_passive_displacement_mm']:g} mm) within {100 * RIGID_TOLERANCE:g} % of the rigid LP in "
+        f"{STIFF['fill_passive_displacement_mm']:g} mm) within {100 * RIGID_TOLERANCE:g} % of the rigid blocks in "
         f"{int(((stiff_gap > -RIGID_TOLERANCE) & (stiff_gap <= 0.0)).sum())} of {len(capacities)} (below it by "
         f"{_percent(-stiff_gap.max())} to {_percent(-stiff_gap.min())}).",
         f"- The LP against the mechanism method by virtual work (the small arch): largest gap {mechanism_gap:.1e}.",
@@ -109,7 +110,7 @@ def passive_markdown(
                 "case",
                 "Kp",
                 "u_p (mm)",
-                "rigid LP (N)",
+                "rigid blocks (N)",
                 "hinges",
                 "static nearly rigid (N)",
                 "static kn 5.2 (N)",
@@ -160,7 +161,7 @@ def passive_markdown(
         "pressure. The capacity falls as it grows, toward the arch without passive resistance (mobilisation.csv).",
         "",
         *markdown_table(
-            ["u_p (mm)", "static (N)", "hinges", "rigid LP (N)"],
+            ["u_p (mm)", "static (N)", "hinges", "rigid blocks (N)"],
             ([f"{r.u_p_mm:g}", f"{r.static_N:.3f}", r.hinges, f"{r.rigid_N:.3f}"] for r in mobilisation.itertuples()),
         ),
         "",

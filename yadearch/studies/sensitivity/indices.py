@@ -251,12 +251,17 @@ def convergence(indices: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def change_scale(table: pd.DataFrame) -> float:
-    """c in largest change = c / sqrt(N), the Monte Carlo rate, fitted (in logs) to the changes from
-    FIT_FROM base points up (the last one if the sample is smaller)."""
+def fitted_rows(table: pd.DataFrame) -> pd.DataFrame:
+    """The rows of the convergence `table` the Monte Carlo rate is fitted to: from FIT_FROM base points
+    up (the last one if the sample is smaller)."""
     fitted = table[table["base_points"] >= FIT_FROM]
-    if fitted.empty:
-        fitted = table.tail(1)
+    return table.tail(1) if fitted.empty else fitted
+
+
+def change_scale(table: pd.DataFrame) -> float:
+    """c in largest change = c / sqrt(N), the Monte Carlo rate, fitted (in logs) to the changes of
+    `fitted_rows`."""
+    fitted = fitted_rows(table)
     return float(np.exp(np.mean(np.log(fitted["largest_change"] * np.sqrt(fitted["base_points"])))))
 
 

@@ -29,6 +29,7 @@ from yadearch.studies.sensitivity.indices import (
     check_base_points,
     check_factors,
     convergence,
+    fitted_rows,
     sample_sizes,
     sobol_indices,
     sobol_rows,
@@ -138,7 +139,9 @@ def draw_figures(
     """The study's three figures in `out`: the tornado, the indices and their convergence (`table`)."""
     tornado_figure(tornado, out / TORNADO_FIGURE)
     indices_figure(indices, {f.name: f.label for f in factors}, out / INDICES_FIGURE)
-    convergence_figure(table, STABLE_TO, change_scale(table), FIT_FROM, out / CONVERGENCE_FIGURE)
+    convergence_figure(
+        table, STABLE_TO, change_scale(table), int(fitted_rows(table)["base_points"].iloc[0]), out / CONVERGENCE_FIGURE
+    )
 
 
 def redraw_figures(out: Path, factors: tuple[Factor, ...] = PAPER_FACTORS) -> None:
