@@ -304,7 +304,7 @@ def read_batch_table(path: Path) -> list[dict]:
 def test_yade_batch_table_maps_to_the_sweep_runs(tmp_path):
     rows = read_batch_table(REPO / "scripts" / "yade_batch_table.txt")
     assert [r["kn_N_per_mm3"] for r in rows] == parse_values("0.1:100:log:13")
-    assert {r["out"] for r in rows} == {"reports/kn-sweep"} and {r["preset"] for r in rows} == {"set2"}
+    assert {r["out"] for r in rows} == {"runs/kn-sweep"} and {r["preset"] for r in rows} == {"set2"}
     runs = [batch_run({**row, "out": str(tmp_path)}) for row in rows]  # not the real reports/
     for row, (case, folder) in zip(rows, runs):
         assert folder == tmp_path / row["description"]
