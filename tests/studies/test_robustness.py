@@ -11,7 +11,7 @@ from yadearch.studies.robustness import VARIANTS, robustness_table, same_hinge_s
 
 def test_rows_cover_every_kn_and_variant_and_name_them():
     rows = study_rows(preset("set2"), (0.1, 100.0))
-    assert len(rows) == 2 * len(VARIANTS)
+    assert len(rows) == 2 * (len(VARIANTS) - 1)  # all but the path states the case reads already
     names = {r["run"] for r in rows}
     assert {"kn0.1_base", "kn100_timestep_x0.5", "kn100_rate_x2", "kn100_friction_80"} <= names
     small = next(r for r in rows if r["run"] == "kn0.1_timestep_x0.5")
@@ -90,7 +90,19 @@ def test_the_static_engine_takes_only_the_variants_that_can_move_its_answer():
         + ("friction_60", "friction_80")
     }
     assert "support_acceleration_mm_per_s2" not in static["kn5.2_ramp"]
-    assert len(study_rows(preset("set2"), (5.2,))) == len(VARIANTS)  # the DEM takes them all
+    assert len(study_rows(preset("set2"), (5.2,))) == len(VARIANTS) - 1  # the DEM takes all but one path reading
+
+
+def test_the_path_states_variant_reads_the_path_the_other_way():
+    """The DEM's path read at the holds' own states or at the static equilibria: the variant runs the
+    reading the base case does not have; the one it has is named and not run."""
+    scene = {r["run"] for r in study_rows(preset("set2"), (5.2,))}
+    assert "kn5.2_path_states_static" in scene and "kn5.2_path_states_scene" not in scene
+    static = preset("set2").with_overrides({"support_path_states": "static"})
+    said: list[str] = []
+    rows = {r["run"]: r for r in study_rows(static, (5.2,), log=said.append)}
+    assert rows["kn5.2_path_states_scene"]["support_path_states"] == "scene" and "kn5.2_path_states_static" not in rows
+    assert said == ["variant path_states_static: sets only what the case has already: not run"]
 
 
 def test_variants_the_engine_ignores_are_named_and_a_study_of_none_is_refused():

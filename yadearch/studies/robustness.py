@@ -2,8 +2,8 @@
 
 At each kn the set 2 arch runs with the default numerics ("base") and with each numerical variant
 (time step, loading increments, damping, the support's rate, the runaway bound, the equilibrium
-tolerance, each halved and doubled where it can be, a gentler start, and the DEM's path read at the
-static model's equilibria) and with higher friction.
+tolerance, each halved and doubled where it can be, a gentler start, and the DEM's path read the other
+way, at the holds' own states or at the static model's equilibria) and with higher friction.
 A numerical variant may move du and du_first by at most `TOLERANCE` of the base and must keep the
 mechanism (hinges A-D each within one interface); friction may move du only where the run shows a
 joint sliding.
@@ -20,7 +20,7 @@ import pandas as pd
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.case.numerics_section import STATIC_PATH_STATES
+from yadearch.case.numerics_section import SCENE_PATH_STATES, STATIC_PATH_STATES
 from yadearch.errors import CampaignError
 from yadearch.results.summary import STATIC
 from yadearch.static.records import DEM_ONLY_NUMERICS
@@ -60,8 +60,10 @@ VARIANTS: dict[str, Variant] = {
         "support_acceleration_mm_per_s2": 0.25 * c.numerics.support_acceleration_mm_per_s2,
         "first_increment_mm": 0.5 * c.numerics.first_increment_mm,
     },
-    # the DEM's path read at the static model's equilibria instead of the holds (docs/numerics.md)
+    # the DEM's path read at the static model's equilibria or at the holds' own states (docs/numerics.md):
+    # the one the base case does not read already runs
     "path_states_static": lambda c: {"support_path_states": STATIC_PATH_STATES},
+    "path_states_scene": lambda c: {"support_path_states": SCENE_PATH_STATES},
     "friction_60": lambda c: {"friction_deg": 60.0},
     "friction_80": lambda c: {"friction_deg": 80.0},
 }
@@ -73,15 +75,15 @@ def study_rows(
     variants: tuple[str, ...] = tuple(VARIANTS),
     log: Callable[[str], None] = print,
 ) -> list[dict[str, Any]]:
-    """The campaign rows: one run per kn and variant, named `kn<kn>_<variant>`; the variants the
-    engine cannot be moved by are named in `log` and not run (CampaignError if none is left)."""
+    """The campaign rows: one run per kn and variant, named `kn<kn>_<variant>`; the variants that change
+    nothing the engine reads are named in `log` and not run (CampaignError if none is left)."""
     unknown = sorted(set(variants) - set(VARIANTS))
     if unknown:
         raise CampaignError(f"variant must be one of {', '.join(VARIANTS)}, got {', '.join(unknown)}")
     chosen = applicable(base, tuple(dict.fromkeys(("base", *variants))))  # every variant is read against base
     dropped = [name for name in variants if name not in chosen]
     if dropped:
-        said = f"variant {', '.join(dropped)}: only DEM numerics, which the {base.numerics.engine} engine ignores"
+        said = f"variant {', '.join(dropped)}: {_unchanged_reason(base)}"
         if len(chosen) == 1:
             usable = ", ".join(name for name in applicable(base, tuple(VARIANTS)) if name != "base")
             raise CampaignError(f"{said}; with it choose among {usable}")
@@ -96,12 +98,19 @@ def study_rows(
 def applicable(base: ArchCase, variants: tuple[str, ...]) -> dict[str, dict[str, Any]]:
     """Each variant's overrides as `base`'s engine reads them: for the static engine without the
     DEM-only numerics (time step, damping, the support's acceleration), and a variant left with
-    nothing to change dropped (it would be reported as passing a test it never took)."""
+    nothing to change dropped, or one that sets what `base` has already (the path states it reads):
+    it would be reported as passing a test it never took."""
     chosen = {name: VARIANTS[name](base) for name in variants}
-    if base.numerics.engine != STATIC:
-        return chosen
-    kept = {name: {k: v for k, v in o.items() if k not in DEM_ONLY_NUMERICS} for name, o in chosen.items()}
-    return {name: o for name, o in kept.items() if o or name == "base"}
+    if base.numerics.engine == STATIC:
+        chosen = {name: {k: v for k, v in o.items() if k not in DEM_ONLY_NUMERICS} for name, o in chosen.items()}
+    return {name: o for name, o in chosen.items() if name == "base" or (o and base.with_overrides(o) != base)}
+
+
+def _unchanged_reason(base: ArchCase) -> str:
+    """Why a variant changes nothing on `base`, in the words of `study_rows`' line."""
+    if base.numerics.engine == STATIC:
+        return "only DEM numerics, which the static engine ignores"
+    return "sets only what the case has already"
 
 
 def run_study(
