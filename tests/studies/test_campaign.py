@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import math
 import re
+import shutil
 import sys
 import threading
 from pathlib import Path
@@ -257,6 +258,10 @@ def test_resume_redoes_only_unfinished_runs(tmp_path):
     assert campaign_wall_s(tmp_path) == pytest.approx(sum(s["wall_s"] for s in sessions))
     campaign(tmp_path, FakeRuns(), rows)  # nothing to do: no session recorded
     assert len(json.loads((tmp_path / SESSIONS_FILE).read_text())) == 3
+    for name in ("kn0.1", "kn1", "kn10"):  # every run made again: the record starts again
+        shutil.rmtree(tmp_path / name)
+    campaign(tmp_path, FakeRuns(), rows)
+    assert [s["runs_attempted"] for s in json.loads((tmp_path / SESSIONS_FILE).read_text())] == [3]
 
 
 def test_resume_refuses_a_folder_of_another_case(tmp_path):

@@ -202,7 +202,7 @@ def _run_lean(
         table = tidy(pd.DataFrame(rows.values()))
         write_csv_atomically(out / RESULTS_FILE, table)
         if todo:
-            record_session(out, started, pool, len(todo), table)
+            record_session(out, started, pool, len(todo), table, anew=len(todo) == len(specs))
     return table
 
 
@@ -271,7 +271,7 @@ def _run_planned(
         bar.close()
         table = write_results(specs, out)
         if todo:
-            record_session(out, started, pool, len(todo), table)
+            record_session(out, started, pool, len(todo), table, anew=len(todo) == len(specs))
     return table
 
 

@@ -16,10 +16,13 @@ from yadearch.studies.campaigns.executors import Pool
 SESSIONS_FILE = "sessions.json"  # one entry per invocation: when, where, how many runs, wall time
 
 
-def record_session(out: Path, started: float, pool: Pool, attempted: int, table: pd.DataFrame) -> None:
+def record_session(
+    out: Path, started: float, pool: Pool, attempted: int, table: pd.DataFrame, anew: bool = False
+) -> None:
     """Append this invocation's wall time to sessions.json, so that a resumed campaign's total wall
-    time is the sum of its sessions."""
-    sessions = _sessions(out) or []
+    time is the sum of its sessions; a campaign that made every run `anew` (none was there finished)
+    starts the record again: the earlier sessions made runs that are no longer there."""
+    sessions = [] if anew else _sessions(out) or []
     sessions.append(
         {
             "started": time.strftime("%Y-%m-%dT%H:%M:%S", time.localtime(started)),
