@@ -83,7 +83,10 @@ def study_rows(
     chosen = applicable(base, tuple(dict.fromkeys(("base", *variants))))  # every variant is read against base
     dropped = [name for name in variants if name not in chosen]
     if dropped:
-        said = f"variant {', '.join(dropped)}: {_unchanged_reason(base)}"
+        reasons: dict[str, list[str]] = {}
+        for name in dropped:
+            reasons.setdefault(_unchanged_reason(base, name), []).append(name)
+        said = "; ".join(f"variant {', '.join(names)}: {reason}" for reason, names in reasons.items())
         if len(chosen) == 1:
             usable = ", ".join(name for name in applicable(base, tuple(VARIANTS)) if name != "base")
             raise CampaignError(f"{said}; with it choose among {usable}")
@@ -106,9 +109,9 @@ def applicable(base: ArchCase, variants: tuple[str, ...]) -> dict[str, dict[str,
     return {name: o for name, o in chosen.items() if name == "base" or (o and base.with_overrides(o) != base)}
 
 
-def _unchanged_reason(base: ArchCase) -> str:
-    """Why a variant changes nothing on `base`, in the words of `study_rows`' line."""
-    if base.numerics.engine == STATIC:
+def _unchanged_reason(base: ArchCase, name: str) -> str:
+    """Why variant `name` changes nothing on `base`, in the words of `study_rows`' line."""
+    if base.numerics.engine == STATIC and set(VARIANTS[name](base)) <= set(DEM_ONLY_NUMERICS):
         return "only DEM numerics, which the static engine ignores"
     return "sets only what the case has already"
 
