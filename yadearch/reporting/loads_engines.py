@@ -4,7 +4,7 @@ and a Markdown report (`scripts/loads_engines.py`; minutes of YADE)."""
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -13,6 +13,7 @@ import pandas as pd
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.markdown import markdown_table
 from yadearch.plotting.loads import plot_engines
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, dem_arguments, with_dem_settings
 from yadearch.studies.loads.engines import (
     ENGINES_KN,
     NUMERICS_CASES,
@@ -33,23 +34,29 @@ STIFF_TOLERANCE = 0.02  # stiff static within 2 % of the rigid march
 RUNS_FOLDER = "load_paths"  # each DEM load path's files, under the report's folder (a rerun reads them back)
 
 
-def write_engines_report(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> Path:
-    """Run the comparison (the DEM runs `jobs` at a time; those already in OUT/load_paths are read back) and
-    write engines.csv, numerics.csv, influence.csv, held.csv, engines.pdf/.png and engines.md into `out`;
-    the report's path."""
+def write_engines_report(
+    out: Path, jobs: int = 2, log: Callable[[str], None] = print, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS
+) -> Path:
+    """Run the comparison (the DEM runs with `dem_settings`, `jobs` at a time; those already in
+    OUT/load_paths are read back) and write engines.csv, numerics.csv, influence.csv, held.csv,
+    engines.pdf/.png and engines.md into `out`; the report's path."""
     out.mkdir(parents=True, exist_ok=True)
     cases = engine_cases()
-    table = engines_table(cases, out / RUNS_FOLDER, jobs, log)
-    numerics = engines_table(numerics_cases(cases), out / RUNS_FOLDER, jobs, log)
-    influence = influence_table(out / RUNS_FOLDER, jobs)
-    held = held_table(held_cases(), out / HELD_FOLDER, jobs, log)
+    table = engines_table(cases, out / RUNS_FOLDER, jobs, log, dem_settings)
+    numerics = engines_table(numerics_cases(cases), out / RUNS_FOLDER, jobs, log, dem_settings)
+    influence = influence_table(out / RUNS_FOLDER, jobs, dem_settings)
+    held = held_table(held_cases(), out / HELD_FOLDER, jobs, log, dem_settings)
     write_csv_atomically(out / "engines.csv", table)
     write_csv_atomically(out / "numerics.csv", numerics)
     write_csv_atomically(out / "influence.csv", influence)
     write_csv_atomically(out / "held.csv", held)
     plot_engines(table, ENGINES_TOLERANCE, out / "engines")
     path = out / "engines.md"
-    text = engines_markdown(table, numerics) + influence_markdown(influence) + held_markdown(held)
+    text = (
+        engines_markdown(table, numerics, dem_arguments(dem_settings))
+        + influence_markdown(influence)
+        + held_markdown(held)
+    )
     write_text_atomically(path, text)
     return path
 
@@ -113,13 +120,13 @@ def _held_loads(row: Any) -> str:
     return ", ".join(parts)
 
 
-def influence_table(paths: Path, jobs: int) -> pd.DataFrame:
+def influence_table(paths: Path, jobs: int, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS) -> pd.DataFrame:
     """The paper's arch (kn 5.2): a concentrated load's capacity at INFLUENCE_POSITIONS of the span on
-    both engines' paths, side by side."""
+    both engines' paths (the DEM with `dem_settings`), side by side."""
     paper = paper_arch().with_overrides({"interface.kn_N_per_mm3": ENGINES_KN, "name": "paper"})
     where = tuple(k / (INFLUENCE_POSITIONS + 1) for k in range(1, INFLUENCE_POSITIONS + 1))
     static = static_influence_line(paper, where)
-    dem = dem_influence_line(paper, where, paths, jobs)
+    dem = dem_influence_line(with_dem_settings(paper, dem_settings), where, paths, jobs)
     table = static[["position_over_span", "collapse_load_N", "first_loss_N", "hinges", "rigid_load_N"]].copy()
     table.columns = ["position_over_span", "static_N", "static_first_loss_N", "static_hinges", "rigid_N"]
     table["dem_N"], table["dem_first_loss_N"], table["dem_hinges"] = (
@@ -169,8 +176,9 @@ def _number(value: float) -> str:
     return "-" if not math.isfinite(value) else f"{value:.4g}"
 
 
-def engines_markdown(table: pd.DataFrame, numerics: pd.DataFrame) -> str:
-    """The report: the two engines side by side, the agreement counted, and the DEM's numerics."""
+def engines_markdown(table: pd.DataFrame, numerics: pd.DataFrame, arguments: str = "") -> str:
+    """The report: the two engines side by side, the agreement counted, and the DEM's numerics;
+    `arguments` name the DEM's settings in its command."""
     words = {"static_hinges": "", "dem_hinges": "", "dem_failure": ""}  # a failed row has none
     table, numerics = table.fillna(words), numerics.fillna(words)
     done = table[table["dem_outcome"] != "failed"]
@@ -182,8 +190,9 @@ def engines_markdown(table: pd.DataFrame, numerics: pd.DataFrame) -> str:
         "",
         "Each case's live load grown to collapse on both engines' paths, the same blocks and joints, the same",
         "increments (fractions of the rigid capacity), bracket and definitions (docs/loads.md). Regenerate with",
-        "`.venv/bin/python scripts/loads_engines.py --out reports/loads/engines` (minutes of two cores; the DEM",
-        f"runs' files are kept in {RUNS_FOLDER}/ and read back by a rerun: delete it to run them again).",
+        f"`.venv/bin/python scripts/loads_engines.py --out reports/loads/engines{arguments}` (minutes of two",
+        f"cores; the DEM runs' files are kept in {RUNS_FOLDER}/ and read back by a rerun: delete it to run them",
+        "again).",
         "",
         f"- Collapse load within {100 * ENGINES_TOLERANCE:g} % in {within} of {len(done)} cases "
         f"(first loss of stability: {first_within} of {len(done)}); the same hinges in {same_hinges} of "

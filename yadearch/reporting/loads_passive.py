@@ -4,8 +4,9 @@ and a Markdown report (`scripts/loads_passive.py`; minutes of YADE)."""
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -13,6 +14,7 @@ from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.markdown import markdown_table, text_cell
 from yadearch.plotting.loads import plot_passive
 from yadearch.reporting.passive_arches import arches_markdown
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, dem_arguments
 from yadearch.studies.loads.passive import (
     FILLS_MM,
     LATERAL_COEFFICIENT,
@@ -35,16 +37,18 @@ RUNS_FOLDER = "runs"  # the DEM's load paths and the settling runs, under the re
 ARCHES_FOLDER = "arches"  # the other arches' lean static campaign, under RUNS_FOLDER
 
 
-def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> Path:
-    """Run the study (the DEM `jobs` at a time; what OUT/runs holds is read back) and write capacities.csv,
-    dem_numerics.csv, mobilisation.csv, settlement.csv, settlement_numerics.csv, grid.csv,
+def write_passive_report(
+    out: Path, jobs: int = 2, log: Callable[[str], None] = print, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS
+) -> Path:
+    """Run the study (the DEM with `dem_settings`, `jobs` at a time; what OUT/runs holds is read back) and
+    write capacities.csv, dem_numerics.csv, mobilisation.csv, settlement.csv, settlement_numerics.csv, grid.csv,
     arches_numerics.csv, passive.pdf/.png and passive.md into `out`; the report's path."""
     out.mkdir(parents=True, exist_ok=True)
-    capacities = capacity_table(out / RUNS_FOLDER, jobs, log)
-    numerics = dem_numerics_table(out / RUNS_FOLDER, jobs, log)
+    capacities = capacity_table(out / RUNS_FOLDER, jobs, log, dem_settings)
+    numerics = dem_numerics_table(out / RUNS_FOLDER, jobs, log, dem_settings)
     mobilisation = mobilisation_table()
-    settlement = settlement_table(out / RUNS_FOLDER, log)
-    settling_numerics = settlement_numerics_table(out / RUNS_FOLDER, jobs, log)
+    settlement = settlement_table(out / RUNS_FOLDER, log, dem_settings)
+    settling_numerics = settlement_numerics_table(out / RUNS_FOLDER, jobs, log, dem_settings)
     pushes = settlement_pushes_table()
     grid = grid_table()
     arches = arches_numerics_table(out / RUNS_FOLDER / ARCHES_FOLDER, jobs)
@@ -64,7 +68,7 @@ def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = 
     default_up = passive_case("paper", SWEPT_KP).loads.fill_passive_displacement_mm
     plot_passive(capacities[capacities["u_p_mm"] == default_up], mobilisation, float(without), out / "passive")
     path = out / "passive.md"
-    text = passive_markdown(capacities, numerics, mobilisation, settlement)
+    text = passive_markdown(capacities, numerics, mobilisation, settlement, dem_arguments(dem_settings))
     text += pushes_markdown(pushes) + settling_numerics_markdown(settling_numerics) + grid_markdown(grid)
     text += arches_markdown(arches_verdicts(arches))
     write_text_atomically(path, text)
@@ -72,10 +76,14 @@ def write_passive_report(out: Path, jobs: int = 2, log: Callable[[str], None] = 
 
 
 def passive_markdown(
-    capacities: pd.DataFrame, numerics: pd.DataFrame, mobilisation: pd.DataFrame, settlement: pd.DataFrame
+    capacities: pd.DataFrame,
+    numerics: pd.DataFrame,
+    mobilisation: pd.DataFrame,
+    settlement: pd.DataFrame,
+    arguments: str = "",
 ) -> str:
     """The report: the capacities in the three solvers, the DEM's numerics varied, the mobilisation sweep,
-    the settling arch."""
+    the settling arch; `arguments` name the DEM's settings in its command."""
     capacities = capacities.fillna({"dem_failure": "", "dem_hinges": ""})
     engines = capacities.dropna(subset=["dem_N"])
     within = int(((engines["dem_N"] / engines["static_N"] - 1.0).abs() <= ENGINES_TOLERANCE).sum())
@@ -95,8 +103,8 @@ def passive_markdown(
         "and the DEM push with a spring that reaches it after u_p = "
         f"{passive_case('paper', SWEPT_KP).loads.fill_passive_displacement_mm:g} mm of the face's movement into "
         "the fill.",
-        "Regenerate with `.venv/bin/python scripts/loads_passive.py --out reports/loads/passive` (minutes of",
-        f"two cores; the DEM's files are kept in {RUNS_FOLDER}/ and read back by a rerun).",
+        f"Regenerate with `.venv/bin/python scripts/loads_passive.py --out reports/loads/passive{arguments}`",
+        f"(minutes of two cores; the DEM's files are kept in {RUNS_FOLDER}/ and read back by a rerun).",
         "",
         f"- Static and DEM within {100 * ENGINES_TOLERANCE:g} % in {within} of {len(engines)} cases.",
         f"- The static engine nearly rigid (kn {STIFF['interface.kn_N_per_mm3']:g} N/mm³, u_p "

@@ -5,9 +5,10 @@ cases (a capacity the loading rate, damping or time step moves is not a result).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Mapping
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -17,6 +18,7 @@ from yadearch.launch.load_process import run_load_process
 from yadearch.model.loads import VERTICAL
 from yadearch.results.load_path import stored_load_path
 from yadearch.solve.load_path import LoadPath, static_load_path
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, with_dem_settings
 from yadearch.studies.loads.rigid import check_cases, paper_arch
 from yadearch.studies.loads.static import PAPER_LOADS, QUARTER_SPAN
 
@@ -78,10 +80,14 @@ def setting_value(case: ArchCase, dotted: str) -> float:
 
 
 def engines_table(
-    cases: Iterable[tuple[ArchCase, float]], out: Path, jobs: int = 2, log: Callable[[str], None] = print
+    cases: Iterable[tuple[ArchCase, float]],
+    out: Path,
+    jobs: int = 2,
+    log: Callable[[str], None] = print,
+    dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS,
 ) -> pd.DataFrame:
-    """Each case's load path on the static engine and in the DEM (its files in `out`, `jobs` at a time;
-    those `out` holds already are read back), one row each; a DEM run that fails is a row with its
+    """Each case's load path on the static engine and in the DEM with `dem_settings` (its files in `out`,
+    `jobs` at a time; those `out` holds already are read back), one row each; a DEM run that fails is a row with its
     reason, and the others go on."""
     cases = list(cases)
 
@@ -94,7 +100,8 @@ def engines_table(
             return {"case": case.name, "label": case_label(case, after_mm), "after_mm": after_mm,
                     "static_outcome": "failed", "dem_outcome": "not run", "dem_failure": str(exc)}  # fmt: skip
         try:
-            dem = stored_load_path(out, case, after_mm) or run_load_process(case, out, after_mm)
+            dem_case = with_dem_settings(case, dem_settings)
+            dem = stored_load_path(out, dem_case, after_mm) or run_load_process(dem_case, out, after_mm)
             reason = ""
         except YadearchError as exc:
             dem, reason = None, str(exc)

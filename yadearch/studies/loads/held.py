@@ -5,9 +5,10 @@ by the rigid march, with the static engine at stiff joints beside the rigid answ
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -17,10 +18,12 @@ from yadearch.errors import YadearchError
 from yadearch.launch.process import run_case_process
 from yadearch.model import units
 from yadearch.model.loads import UNITS
-from yadearch.results.rundir import is_complete, read_summary
+from yadearch.results.reuse import holds_case
+from yadearch.results.rundir import read_summary
 from yadearch.solve.limit import limit_analysis
 from yadearch.solve.load_path import hold_the_live_load
 from yadearch.solve.static_path import StaticLoading
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, with_dem_settings
 from yadearch.studies.loads.engines import ENGINES_KN
 from yadearch.studies.loads.rigid import CHECK_FRICTION_DEG, paper_arch
 
@@ -68,9 +71,15 @@ def static_du_mm(case: ArchCase) -> tuple[float, str]:
     return units.to_mm(path.du), " ".join(loading.fold_mode(path.upper).labels)
 
 
-def held_table(cases: list[ArchCase], out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> pd.DataFrame:
-    """Each case's du on the three solvers (the DEM's run folders in `out`, `jobs` at a time; those
-    complete are read back); a DEM run that fails is a row with its reason."""
+def held_table(
+    cases: list[ArchCase],
+    out: Path,
+    jobs: int = 2,
+    log: Callable[[str], None] = print,
+    dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS,
+) -> pd.DataFrame:
+    """Each case's du on the three solvers (the DEM's run folders in `out`, its runs with `dem_settings`,
+    `jobs` at a time; those holding the run already are read back); a DEM run that fails is a row with its reason."""
 
     def row(case: ArchCase) -> dict:
         static, static_hinges = static_du_mm(case)
@@ -78,9 +87,10 @@ def held_table(cases: list[ArchCase], out: Path, jobs: int = 2, log: Callable[[s
         rigid = limit_analysis(case, mirror=False)
         folder = out / case.name
         try:
-            if not is_complete(folder):
-                lean = {"numerics.engine": "dem", "numerics.run_files": "summary"}  # the summary is the evidence
-                run_case_process(case.with_overrides(lean), folder, quiet=True)
+            lean = {"numerics.engine": "dem", "numerics.run_files": "summary"}  # the summary is the evidence
+            dem_case = with_dem_settings(case, dem_settings).with_overrides(lean)
+            if not holds_case(folder, dem_case):
+                run_case_process(dem_case, folder, quiet=True)
             dem = read_summary(folder)
             dem_du, dem_hinges, failure = dem.du_mm or math.nan, dem.hinge_labels, ""
         except YadearchError as exc:

@@ -7,15 +7,16 @@ its fill with and without the passive resistance in both engines."""
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pandas as pd
 
 from yadearch.case.config import ArchCase, preset
-from yadearch.case.numerics_section import STATIC_ENGINE, STATIC_PATH_STATES
+from yadearch.case.numerics_section import SCENE_PATH_STATES, STATIC_ENGINE, STATIC_PATH_STATES
 from yadearch.errors import YadearchError
 from yadearch.launch.load_process import run_load_process
 from yadearch.launch.process import run_case_process
@@ -28,6 +29,7 @@ from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import LoadPath, static_load_path
 from yadearch.solve.static_path import StaticLoading
 from yadearch.static.simulate import simulate_static
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, with_dem_settings
 from yadearch.studies.loads.engines import ENGINES_KN, NUMERICS_VARIANTS, setting_value
 from yadearch.studies.loads.held import SMALL
 from yadearch.studies.loads.rigid import mechanism_check
@@ -69,10 +71,12 @@ def passive_case(arch: str, kp: float, **more: object) -> ArchCase:
     return base.with_overrides({**overrides, "interface.kn_N_per_mm3": ENGINES_KN, "name": name, **more})
 
 
-def capacity_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> pd.DataFrame:
+def capacity_table(
+    out: Path, jobs: int = 2, log: Callable[[str], None] = print, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS
+) -> pd.DataFrame:
     """A row an arch and Kp: the rigid LP's capacity and hinges, the mechanism method's (the small arch),
-    the static engine's at kn 5.2 and nearly rigid, and the DEM's at kn 5.2 (its files under `out`, `jobs`
-    at a time; those there already read back; a failure is its reason)."""
+    the static engine's at kn 5.2 and nearly rigid, and the DEM's at kn 5.2 with `dem_settings` (its
+    files under `out`, `jobs` at a time; those there already read back; a failure is its reason)."""
     cases = [passive_case(arch, kp) for arch in FILLS_MM for kp in PASSIVE_COEFFICIENTS]
     cases.append(passive_case("paper", 3.0, fill_passive_displacement_mm=SHORT_UP_MM, name="paper_fill_kp3_short"))
 
@@ -93,21 +97,23 @@ def capacity_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print)
             "static_hinges": " ".join(static.hinges),
             "static_kind": static.kind,
         }
-        dem, failure = _dem_load_path(case, out)
-        if dem is None:
+        path, failure = _dem_load_path(with_dem_settings(case, dem_settings), out)
+        if path is None:
             return {**found, "dem_failure": failure}
-        log(f"{case.name}: static {static.capacity:.3f} N, DEM {dem.capacity:.3f} N")
-        return {**found, "dem_N": dem.capacity, "dem_hinges": " ".join(dem.hinges), "dem_failure": ""}
+        log(f"{case.name}: static {static.capacity:.3f} N, DEM {path.capacity:.3f} N")
+        return {**found, "dem_N": path.capacity, "dem_hinges": " ".join(path.hinges), "dem_failure": ""}
 
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         return pd.DataFrame(list(pool.map(row, cases)))
 
 
-def dem_numerics_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> pd.DataFrame:
-    """The small arch at Kp SWEPT_KP in the DEM with each of its numerics halved and doubled (the loading
-    rate, damping, time step: `studies.loads.engines.NUMERICS_VARIANTS`): a row a variant, its capacity
-    against the default's (files under `out`, read back when there)."""
-    default = passive_case("small", SWEPT_KP)
+def dem_numerics_table(
+    out: Path, jobs: int = 2, log: Callable[[str], None] = print, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS
+) -> pd.DataFrame:
+    """The small arch at Kp SWEPT_KP in the DEM (with `dem_settings`) with each of its numerics halved and
+    doubled (the loading rate, damping, time step: `studies.loads.engines.NUMERICS_VARIANTS`): a row a
+    variant, its capacity against the default's (files under `out`, read back when there)."""
+    default = with_dem_settings(passive_case("small", SWEPT_KP), dem_settings)
     variants = [("default", default)]
     for setting, factor in NUMERICS_VARIANTS:
         variant = f"{setting.split('.')[-1]}_x{factor:g}"
@@ -116,15 +122,15 @@ def dem_numerics_table(out: Path, jobs: int = 2, log: Callable[[str], None] = pr
 
     def row(item: tuple[str, ArchCase]) -> dict:
         variant, case = item
-        dem, failure = _dem_load_path(case, out)
-        if dem is None:
+        path, failure = _dem_load_path(case, out)
+        if path is None:
             return {"variant": variant, "dem_N": None, "dem_hinges": "", "dem_failure": failure}
-        log(f"{case.name}: DEM {dem.capacity:.3f} N")
+        log(f"{case.name}: DEM {path.capacity:.3f} N")
         return {
             "variant": variant,
-            "dem_N": dem.capacity,
-            "dem_held_N": dem.reach,
-            "dem_hinges": " ".join(dem.hinges),
+            "dem_N": path.capacity,
+            "dem_held_N": path.reach,
+            "dem_hinges": " ".join(path.hinges),
             "dem_failure": "",
         }
 
@@ -160,10 +166,12 @@ def _mechanism(case: ArchCase) -> float | None:
     return float(mechanism_check([case]).iloc[0]["mechanism_multiplier"])
 
 
-def settlement_table(out: Path, log: Callable[[str], None] = print) -> pd.DataFrame:
+def settlement_table(
+    out: Path, log: Callable[[str], None] = print, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS
+) -> pd.DataFrame:
     """The paper's arch under its fill settling to collapse, without and with the passive resistance
-    (Kp SWEPT_KP; and with u_p SHORT_UP_MM, the pushes at their capacity), on both engines (run folders
-    under `out`; finished ones read back): a row a run."""
+    (Kp SWEPT_KP; and with u_p SHORT_UP_MM, the pushes at their capacity), on both engines (the DEM with
+    `dem_settings`; run folders under `out`; finished ones read back): a row a run."""
     settlings = [passive_case("paper", kp, live_load="none", name=f"paper_settling_kp{kp:g}") for kp in (0.0, SWEPT_KP)]
     settlings.append(
         passive_case(
@@ -174,21 +182,24 @@ def settlement_table(out: Path, log: Callable[[str], None] = print) -> pd.DataFr
     for settling in settlings:
         for engine in ("static", "dem"):
             case = settling.with_overrides({"numerics.engine": engine})
+            case = with_dem_settings(case, dem_settings) if engine != STATIC_ENGINE else case
             rows.append(_settling_row(case, out / f"{case.name}_{engine}", log))
     return pd.DataFrame(rows)
 
 
-def settlement_numerics_table(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> pd.DataFrame:
+def settlement_numerics_table(
+    out: Path, jobs: int = 2, log: Callable[[str], None] = print, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS
+) -> pd.DataFrame:
     """The settling arch at Kp SWEPT_KP with each engine's numerics halved and doubled (SETTLING_VARIANTS;
-    the default's folders are settlement_table's), the DEM's also with its path read at the static
-    equilibria (`numerics.support_path_states`), `jobs` at a time: a row a run, its variant and path states named."""
+    the default's folders are settlement_table's; the DEM with `dem_settings`), the DEM's also with its
+    path read the other way (`numerics.support_path_states`), `jobs` at a time: a row a run, its variant and
+    the DEM's path reading named."""
     default = passive_case("paper", SWEPT_KP, live_load="none", name=f"paper_settling_kp{SWEPT_KP:g}")
     runs = []
     for engine, variants in SETTLING_VARIANTS.items():
-        for states in _path_readings(engine):
-            more = {"numerics.support_path_states": states} if states else {}
-            suffix = f"_{states}_states" if states else ""
-            base = default.with_overrides({"numerics.engine": engine, **more, "name": default.name + suffix})
+        engine_default = default.with_overrides({"numerics.engine": engine})
+        engine_default = with_dem_settings(engine_default, dem_settings) if engine != STATIC_ENGINE else engine_default
+        for states, base in _path_readings(engine_default):
             runs.append((states, "default", base, out / f"{base.name}_{engine}"))
             for settings, factor in variants:
                 variant = f"{'+'.join(s.split('.')[-1] for s in settings)} x{factor:g}"
@@ -204,10 +215,15 @@ def settlement_numerics_table(out: Path, jobs: int = 2, log: Callable[[str], Non
         return pd.DataFrame(list(pool.map(row, runs)))
 
 
-def _path_readings(engine: str) -> tuple[str, ...]:
-    """The `numerics.support_path_states` each of `engine`'s settling runs is made with ('': the default):
-    the DEM's holds' own states and the static equilibria they sit in; the static engine has no choice."""
-    return ("",) if engine == STATIC_ENGINE else ("", STATIC_PATH_STATES)
+def _path_readings(case: ArchCase) -> list[tuple[str, ArchCase]]:
+    """The DEM's path readings (`numerics.support_path_states`) of `case`, each with its case: its own,
+    then the other, named for it ('': the static engine has no choice)."""
+    if case.numerics.engine == STATIC_ENGINE:
+        return [("", case)]
+    own = case.numerics.support_path_states
+    other = SCENE_PATH_STATES if own == STATIC_PATH_STATES else STATIC_PATH_STATES
+    changed = {"numerics.support_path_states": other, "name": f"{case.name}_{other}_states"}
+    return [(own, case), (other, case.with_overrides(changed))]
 
 
 def _settling_row(case: ArchCase, folder: Path, log: Callable[[str], None]) -> dict:
