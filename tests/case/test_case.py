@@ -124,3 +124,15 @@ def test_the_dems_static_path_states_need_the_joint_elements():
     with pytest.raises(CaseError, match="support_path_states = 'static' .*contact_model = 'cgal'"):
         plan_run(case)
     plan_run(case.with_overrides({"numerics.contact_model": "joint"}))
+
+
+def test_auto_path_states_read_the_static_model_where_there_is_one():
+    """'auto' reads the support's path at the static equilibria with the joint elements, at the holds' own
+    states with CGAL contacts (no static model there, and no refusal)."""
+    auto = preset("set2").with_overrides({"numerics.support_path_states": "auto"})
+    assert auto.numerics.path_states == "static"
+    cgal = auto.with_overrides({"numerics.contact_model": "cgal"})
+    assert cgal.numerics.path_states == "scene"
+    plan_run(cgal)
+    for named in ("scene", "static"):
+        assert auto.with_overrides({"numerics.support_path_states": named}).numerics.path_states == named

@@ -12,3 +12,9 @@ def test_the_loading_protocol_names_the_states_the_path_compares():
     static = criterion_text(preset("set2").with_overrides({"support_path_states": "static"}).numerics)
     assert "each as its hold leaves it" in scene and "static model's stable equilibrium" not in scene
     assert "each read at the static model's stable equilibrium its hold sits in" in static
+
+
+def test_an_auto_reading_is_named_as_the_one_it_makes():
+    auto = preset("set2").with_overrides({"support_path_states": "auto"})
+    assert "static model's stable equilibrium" in criterion_text(auto.numerics)
+    assert "each as its hold leaves it" in criterion_text(auto.with_overrides({"contact_model": "cgal"}).numerics)

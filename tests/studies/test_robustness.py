@@ -103,6 +103,8 @@ def test_the_path_states_variant_reads_the_path_the_other_way():
     rows = {r["run"]: r for r in study_rows(static, (5.2,), log=said.append)}
     assert rows["kn5.2_path_states_scene"]["support_path_states"] == "scene" and "kn5.2_path_states_static" not in rows
     assert said == ["variant path_states_static: sets only what the case has already: not run"]
+    auto = {r["run"] for r in study_rows(static.with_overrides({"support_path_states": "auto"}), (5.2,))}
+    assert "kn5.2_path_states_scene" in auto and "kn5.2_path_states_static" not in auto  # auto reads static here
     said.clear()  # each dropped variant with its own reason
     rubble = preset("set2").with_overrides({"engine": "static", "friction_deg": 60.0})
     study_rows(rubble, (5.2,), ("damping_x2", "friction_60", "increment_x2"), log=said.append)

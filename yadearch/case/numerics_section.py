@@ -17,6 +17,8 @@ NO_INCREMENTS_CHECK = "none"  # numerics.increments_check: the path solved once
 HALVED_INCREMENTS_CHECK = "halved"  # ... and again with the increments halved (static engine)
 SCENE_PATH_STATES = "scene"  # numerics.support_path_states: the DEM's path compares its holds' own states
 STATIC_PATH_STATES = "static"  # ... the static model's stable equilibria that its holds sit in
+AUTO_PATH_STATES = "auto"  # ... 'static' with the joint elements, 'scene' with CGAL contacts (no static model)
+JOINT_CONTACTS = "joint"  # numerics.contact_model: zero-thickness joint elements (the static model's law)
 
 
 @dataclass
@@ -271,13 +273,22 @@ class NumericsConfig:
     support_path_states: str = field(
         default=SCENE_PATH_STATES,
         metadata=choice_meta(
-            (SCENE_PATH_STATES, STATIC_PATH_STATES),
+            (SCENE_PATH_STATES, STATIC_PATH_STATES, AUTO_PATH_STATES),
             "DEM only: the states a support movement's path compares to tell a snap: 'scene' = the holds' "
             "own, 'static' = the static model's stable equilibria they sit in, a branch predicted from one "
-            "state along its tangent, as the DEM's load paths do (docs/numerics.md, 'Collapse')",
+            "state along its tangent, as the DEM's load paths do; 'auto' = 'static' with the joint "
+            "elements, 'scene' with CGAL contacts (docs/numerics.md, 'Collapse')",
             predates=SCENE_PATH_STATES,
         ),
     )
+
+    @property
+    def path_states(self) -> str:
+        """The states the DEM's path compares: `support_path_states`, 'auto' read as 'static' with the
+        joint elements and as 'scene' with CGAL contacts, which have no static model."""
+        if self.support_path_states != AUTO_PATH_STATES:
+            return self.support_path_states
+        return STATIC_PATH_STATES if self.contact_model == JOINT_CONTACTS else SCENE_PATH_STATES
 
     @property
     def keeps_tables(self) -> bool:

@@ -177,7 +177,7 @@ class Runner:
 
     def _path_equilibrium(self) -> Equilibrium | None:
         """The static model's stable equilibrium the scene sits in, where the path reads its states there."""
-        if self.num.support_path_states != STATIC_PATH_STATES or self.static_check is None:
+        if self.num.path_states != STATIC_PATH_STATES or self.static_check is None:
             return None
         return self.static_check.equilibrium(self.delta(), self.live_multiplier)
 

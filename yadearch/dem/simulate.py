@@ -133,7 +133,7 @@ def criterion_text(n: NumericsConfig) -> str:
 
 def _path_states_text(n: NumericsConfig) -> str:
     """How the path reads its states (`numerics.support_path_states`), in the protocol's words."""
-    if n.support_path_states == STATIC_PATH_STATES:
+    if n.path_states == STATIC_PATH_STATES:
         return "each read at the static model's stable equilibrium its hold sits in, a branch started along its tangent"
     return "each as its hold leaves it"
 

@@ -43,6 +43,12 @@ def _scaled(*names: str, factor: float) -> Variant:
     return lambda c: {name: float(f"{factor * getattr(c.numerics, name):.6g}") for name in names}
 
 
+def _path_read(case: ArchCase, states: str) -> dict[str, Any]:
+    """The DEM's path read at `states` (`numerics.support_path_states`): nothing to change where `case`
+    reads it so already ('auto' included)."""
+    return {} if case.numerics.path_states == states else {"support_path_states": states}
+
+
 VARIANTS: dict[str, Variant] = {
     "base": lambda c: {},
     "timestep_x0.5": _scaled("timestep_safety", factor=0.5),
@@ -62,8 +68,8 @@ VARIANTS: dict[str, Variant] = {
     },
     # the DEM's path read at the static model's equilibria or at the holds' own states (docs/numerics.md):
     # the one the base case does not read already runs
-    "path_states_static": lambda c: {"support_path_states": STATIC_PATH_STATES},
-    "path_states_scene": lambda c: {"support_path_states": SCENE_PATH_STATES},
+    "path_states_static": lambda c: _path_read(c, STATIC_PATH_STATES),
+    "path_states_scene": lambda c: _path_read(c, SCENE_PATH_STATES),
     "friction_60": lambda c: {"friction_deg": 60.0},
     "friction_80": lambda c: {"friction_deg": 80.0},
 }

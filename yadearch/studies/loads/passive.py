@@ -220,7 +220,7 @@ def _path_readings(case: ArchCase) -> list[tuple[str, ArchCase]]:
     then the other, named for it ('': the static engine has no choice)."""
     if case.numerics.engine == STATIC_ENGINE:
         return [("", case)]
-    own = case.numerics.support_path_states
+    own = case.numerics.path_states
     other = SCENE_PATH_STATES if own == STATIC_PATH_STATES else STATIC_PATH_STATES
     changed = {"numerics.support_path_states": other, "name": f"{case.name}_{other}_states"}
     return [(own, case), (other, case.with_overrides(changed))]
