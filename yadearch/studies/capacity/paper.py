@@ -4,7 +4,9 @@ direction, the reaction curves and the report."""
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -25,6 +27,7 @@ from yadearch.studies.capacity.directions import (
     reaction_curve,
     with_rigid,
 )
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, dem_arguments, with_dem_settings
 
 SETS = ("set1", "set2")
 RUNS = "runs"
@@ -34,12 +37,16 @@ POLAR_FIGURE = "capacity_map"
 REACTION_FIGURE = "reactions"
 
 
-def run_paper_directions(out: Path, jobs: int, engine: str = "dem") -> pd.DataFrame:
-    """Every set at every direction, as one campaign (the costliest runs first), on `engine`."""
+def run_paper_directions(
+    out: Path, jobs: int, engine: str = "dem", dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS
+) -> pd.DataFrame:
+    """Every set at every direction, as one campaign (the costliest runs first), on `engine` (the DEM
+    with `dem_settings`)."""
     kns = [reference.SETS[name]["kn_N_per_mm3"] for name in SETS]
     rows = [{"kn_N_per_mm3": kn, DIRECTION_PARAMETER: direction} for kn in kns for direction in DIRECTIONS_DEG]
     with open_pool(jobs) as pool:
-        return run_campaign(preset(SETS[0]).with_overrides({"numerics.engine": engine}), rows, out / RUNS, pool)
+        base = preset(SETS[0]).with_overrides({"numerics.engine": engine})
+        return run_campaign(with_dem_settings(base, dem_settings) if engine == "dem" else base, rows, out / RUNS, pool)
 
 
 def paper_rigid_limits() -> dict[float, RigidLimit]:
@@ -47,8 +54,8 @@ def paper_rigid_limits() -> dict[float, RigidLimit]:
     return rigid_limits(preset(SETS[1]), DIRECTIONS_DEG)
 
 
-def paper_capacity_report(table: pd.DataFrame) -> str:
-    """The Markdown report of the paper's capacity map."""
+def paper_capacity_report(table: pd.DataFrame, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS) -> str:
+    """The Markdown report of the paper's capacity map, its command naming the DEM's `dem_settings`."""
     settlement = table[table["direction_deg"] == -90.0]
     lines = [
         "# Capacity map: du against the direction of the support movement",
@@ -60,8 +67,8 @@ def paper_capacity_report(table: pd.DataFrame) -> str:
         "not its own mirror image (every direction but spreading and closing), the rigid arch of an odd "
         "number of voussoirs has two branches: its keystone's two joints tie for the crown hinge, the "
         "rigid march breaks the tie toward the left one, and the other branch is shown beside it "
-        "(docs/movements.md). Regenerate: `.venv/bin/python scripts/capacity_map.py` (the rigid columns "
-        "alone: `--rigid-only`).",
+        f"(docs/movements.md). Regenerate: `.venv/bin/python scripts/capacity_map.py{dem_arguments(dem_settings)}` "
+        "(the rigid columns alone: `--rigid-only`).",
         "",
         *map_markdown(table),
         "",
@@ -83,9 +90,15 @@ def paper_capacity_report(table: pd.DataFrame) -> str:
     return "\n".join(lines) + "\n"
 
 
-def paper_capacity_map(out: Path, results: pd.DataFrame | None, rigid: dict[float, RigidLimit]) -> str:
-    """Write OUT/capacity.csv, the map, the reaction curves and OUT/capacity.md from the campaign's
-    `results` (None: the rigid columns of the committed table rewritten alone); returns the report."""
+def paper_capacity_map(
+    out: Path,
+    results: pd.DataFrame | None,
+    rigid: dict[float, RigidLimit],
+    dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS,
+) -> str:
+    """Write OUT/capacity.csv, the map, the reaction curves and OUT/capacity.md (its command naming the
+    DEM's `dem_settings`) from the campaign's `results` (None: the rigid columns of the committed table
+    rewritten alone); returns the report."""
     if results is None:
         table = with_rigid(pd.read_csv(out / TABLE, float_precision="round_trip"), rigid)
         table["hinges"] = table["hinges"].fillna("")
@@ -104,7 +117,7 @@ def paper_capacity_map(out: Path, results: pd.DataFrame | None, rigid: dict[floa
         reaction_curves_figure(curves, out / REACTION_FIGURE)
     write_text_atomically(out / TABLE, table.to_csv(index=False))
     capacity_polar_figure(table, out / POLAR_FIGURE)
-    text = paper_capacity_report(table)
+    text = paper_capacity_report(table, dem_settings)
     write_text_atomically(out / REPORT, text)
     return text
 
