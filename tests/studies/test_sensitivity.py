@@ -10,7 +10,7 @@ import pandas as pd
 import pytest
 
 import yadearch as ya
-from yadearch.errors import CampaignError, CaseError
+from yadearch.errors import CampaignError, CaseError, YadearchError
 from yadearch.studies.campaigns.grid import RUN_COLUMN
 from yadearch.studies.sensitivity.checks import check_rows, other_engine
 from yadearch.studies.sensitivity.indices import (
@@ -90,6 +90,31 @@ def test_the_checks_are_the_ends_of_the_ranges_that_move_du_most():
     assert [row[RUN_COLUMN] for row in rows] == ["thickness_mm_low", "thickness_mm_high", "friction_deg_low"]
     assert rows[0]["geometry.thickness_mm"] == 22.0 and rows[2]["material.friction_deg"] == 38.0
     assert other_engine("static") == "dem" and other_engine("dem") == "static"
+
+
+def test_the_checks_run_on_the_other_engine_with_their_own_settings(tmp_path, monkeypatch):
+    """`check_settings` reach the check runs' case alone (e.g. the DEM's path reading for a static study)."""
+    import yadearch.studies.sensitivity.checks as checks
+
+    made: list = []
+
+    def campaign(base, rows, folder, pool, **options):
+        made.append(base)
+        return pd.DataFrame({RUN_COLUMN: [r[RUN_COLUMN] for r in rows], "du_mm": 60.0, "hinges": "", "wall_s": 1.0})
+
+    monkeypatch.setattr(checks, "run_campaign", campaign)
+    factors = (parse_factor("thickness_mm=22:26"),)
+    study = pd.DataFrame({RUN_COLUMN: ["base", "thickness_mm_low", "thickness_mm_high"], "du_mm": [88.0, 70.0, 95.0],
+                          "hinges": "", "wall_s": 0.1})  # fmt: skip
+    static = ya.preset("set2").with_overrides({"numerics.engine": "static"})
+    table = checks.run_checks(
+        static, study, factors, 1, tmp_path, None, settings={"numerics.support_path_states": "static"}
+    )
+    assert made[0].numerics.engine == "dem" and made[0].numerics.support_path_states == "static"
+    assert table[RUN_COLUMN].tolist() == ["thickness_mm_low"] and table["dem_du_mm"].tolist() == [60.0]
+    with pytest.raises(YadearchError, match="check_settings expects numerics.KEY=VALUE .* got 'numerics.engine'"):
+        ya.sensitivity("set2", tmp_path / "unused", check_runs=1, check_settings={"numerics.engine": "static"})
+    assert not (tmp_path / "unused").exists()
 
 
 def test_blocks_with_a_failed_run_are_left_out_of_the_estimate():

@@ -218,15 +218,18 @@ def sensitivity(
     timeout_s: float | None = None,
     check_runs: int = 0,
     figures: bool = True,
+    check_settings: dict[str, Any] | None = None,
 ) -> SensitivityResult:
     """What du of `case` is sensitive to: each factor alone at the ends of its range (a tornado) and
     Sobol indices from Saltelli's sample of `base_points` (a power of two; default
     `sensitivity_campaign.DEFAULT_BASE_POINTS`, 128), both resumable campaigns in
     `out`; `factors` (`yadearch.studies.sensitivity.indices.Factor`s) default to the paper arch's plausible
     ranges; the `check_runs` one-at-a-time runs that move du most are made again on the other engine
-    (the DEM for a static study). Writes the tables, figures (unless not `figures`) and sensitivity.md; returns the
-    `SensitivityResult`."""
+    (the DEM for a static study), with the numerical `check_settings` ({"numerics.KEY": value}, e.g. the
+    DEM's `numerics.support_path_states`). Writes the tables, figures (unless not `figures`) and
+    sensitivity.md; returns the `SensitivityResult`."""
     from yadearch.studies.campaigns.executors import open_pool
+    from yadearch.studies.dem_settings import checked_settings
     from yadearch.studies.sensitivity.checks import check_count
     from yadearch.studies.sensitivity.indices import PAPER_FACTORS, check_base_points, check_factors
     from yadearch.studies.sensitivity.study import DEFAULT_BASE_POINTS, run_sensitivity
@@ -239,7 +242,16 @@ def sensitivity(
     check_factors(case, chosen)
     check_campaign_size(base_points * (len(chosen) + 2))  # Saltelli's N x (factors + 2) runs
     check_count(check_runs)
+    settings = checked_settings(check_settings or {}, "check_settings")
     with open_pool(jobs, scheduler) as pool:
         return run_sensitivity(
-            case, folder, pool, base_points, chosen, timeout_s=timeout_s, check_runs=check_runs, figures=figures
+            case,
+            folder,
+            pool,
+            base_points,
+            chosen,
+            timeout_s=timeout_s,
+            check_runs=check_runs,
+            figures=figures,
+            check_settings=settings,
         )

@@ -9,6 +9,7 @@ import click
 
 from yadearch import api
 from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, drawing_pool_options, resolve_case, timeout_s
+from yadearch.studies.dem_settings import parse_dem_settings
 from yadearch.studies.sensitivity.indices import STABLE_TO, parse_factor
 from yadearch.studies.sensitivity.study import DEFAULT_BASE_POINTS, INDICES_TABLE, REPORT, TORNADO_TABLE
 
@@ -39,6 +40,14 @@ from yadearch.studies.sensitivity.study import DEFAULT_BASE_POINTS, INDICES_TABL
     "static study) and report both answers",
 )
 @click.option(
+    "--check-set",
+    "check_set",
+    multiple=True,
+    metavar="numerics.KEY=VALUE",
+    help="a numerical setting of the check runs' engine, e.g. numerics.support_path_states=static for the "
+    "DEM's checks of a static study (repeat)",
+)
+@click.option(
     "--out",
     required=True,
     type=OUT_FOLDER,
@@ -54,6 +63,7 @@ def sensitivity(
     base_points: int,
     factor_specs: tuple[str, ...],
     check_runs: int,
+    check_set: tuple[str, ...],
     out: str,
     jobs: int | None,
     scheduler: str | None,
@@ -64,6 +74,7 @@ def sensitivity(
     and Sobol's first-order and total indices over all ranges at once (SALib)."""
     case = resolve_case(preset_name, case_file, kn, settings)
     factors = tuple(parse_factor(spec) for spec in factor_specs) or None
+    check_settings = parse_dem_settings(check_set, "--check-set")
     result = api.sensitivity(
         case,
         out,
@@ -74,6 +85,7 @@ def sensitivity(
         timeout_s=timeout_s(timeout_min),
         check_runs=check_runs,
         figures=figures,
+        check_settings=check_settings,
     )
     top = result.indices[result.indices["base_points"] == base_points].sort_values("ST", ascending=False).iloc[0]
     folder = Path(out)

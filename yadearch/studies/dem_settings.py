@@ -17,19 +17,27 @@ ENGINE_KEY = "numerics.engine"  # the study picks each run's engine itself
 NO_DEM_SETTINGS: Mapping[str, Any] = MappingProxyType({})  # a study's DEM runs at the case's own numerics
 
 
-def parse_dem_settings(items: Iterable[str]) -> dict[str, Any]:
-    """`numerics.KEY=VALUE` items as overrides of a DEM run's numerics, each checked on the default case;
-    YadearchError in one line for any other key, the engine, or a value out of range."""
+def parse_dem_settings(items: Iterable[str], option: str = "--dem-set") -> dict[str, Any]:
+    """`numerics.KEY=VALUE` items (of `option`) as overrides of a run's numerics (`checked_settings`)."""
     settings: dict[str, Any] = {}
     for item in items:
         key, equals, value = (part.strip() for part in item.partition("="))
-        if not equals or not key.startswith(NUMERICS_PREFIX) or key == ENGINE_KEY:
-            raise YadearchError(
-                f"--dem-set expects numerics.KEY=VALUE (a DEM numerical setting other than the engine), got {item!r}"
-            )
+        if not equals:
+            raise YadearchError(f"{option} expects numerics.KEY=VALUE, got {item!r}")
         settings[key] = parse_scalar(value)
-    ArchCase().with_overrides(settings)  # a bad key or value says so here, before any run
-    return settings
+    return checked_settings(settings, option)
+
+
+def checked_settings(settings: Mapping[str, Any], option: str) -> dict[str, Any]:
+    """`settings` ({"numerics.KEY": value}), each checked on the default case; YadearchError in one line
+    naming `option` for a key outside the numerics, the engine, or a value out of range."""
+    for key in settings:
+        if not key.startswith(NUMERICS_PREFIX) or key == ENGINE_KEY:
+            raise YadearchError(
+                f"{option} expects numerics.KEY=VALUE (a numerical setting other than the engine), got {key!r}"
+            )
+    ArchCase().with_overrides(dict(settings))  # a bad key or value says so here, before any run
+    return dict(settings)
 
 
 def with_dem_settings(case: ArchCase, settings: Mapping[str, Any]) -> ArchCase:

@@ -5,6 +5,7 @@ again on the DEM (or, for a study on the DEM, on the static engine), both answer
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -18,6 +19,7 @@ from yadearch.markdown import markdown_table
 from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.grid import RUN_COLUMN
 from yadearch.studies.campaigns.runner import run_campaign
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, with_dem_settings
 from yadearch.studies.sensitivity.indices import BASE_RUN, Factor, tornado_rows
 
 CHECK_RUNS = "check_runs"
@@ -58,16 +60,17 @@ def run_checks(
     pool: Pool,
     timeout_s: float | None = None,
     progress: bool = True,
+    settings: Mapping[str, Any] = NO_DEM_SETTINGS,
 ) -> pd.DataFrame:
-    """Run (or resume) in OUT/check_runs, on the other engine, the `count` one-at-a-time runs of
-    `study_runs` (the tornado campaign's results) that move du most; return both engines' du, hinges
-    and run times per check (empty if `count` is 0)."""
+    """Run (or resume) in OUT/check_runs, on the other engine with its numerical `settings`, the `count`
+    one-at-a-time runs of `study_runs` (the tornado campaign's results) that move du most; return both
+    engines' du, hinges and run times per check (empty if `count` is 0)."""
     rows = check_rows(base, factors, study_runs, count)
     if not rows:
         return pd.DataFrame()
     study, check = base.numerics.engine, other_engine(base.numerics.engine)
     checked = run_campaign(
-        base.with_overrides({"numerics.engine": check}),
+        with_dem_settings(base.with_overrides({"numerics.engine": check}), settings),
         rows,
         Path(out) / CHECK_RUNS,
         pool,

@@ -5,8 +5,10 @@ Sobol sample, resumable, then the tables, figures and report (`yadearch sensitiv
 from __future__ import annotations
 
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -19,6 +21,7 @@ from yadearch.markdown import markdown_table
 from yadearch.plotting.sensitivity import convergence_figure, indices_figure, tornado_figure
 from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.runner import run_campaign
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS
 from yadearch.studies.sensitivity.checks import check_count, checks_markdown, run_checks
 from yadearch.studies.sensitivity.indices import (
     FIT_FROM,
@@ -90,11 +93,12 @@ def run_sensitivity(
     progress: bool = True,
     check_runs: int = 0,
     figures: bool = True,
+    check_settings: Mapping[str, Any] = NO_DEM_SETTINGS,
 ) -> SensitivityResult:
     """Run (or resume) the one-at-a-time runs in OUT/tornado_runs, Saltelli's sample of `base_points`
     in OUT/runs (its folders keep only their summaries, numerics.run_files; static runs keep no
     folders, `campaigns.lean`) and the `check_runs`
-    one-at-a-time runs that move du most again on the other engine in OUT/check_runs; write the
+    one-at-a-time runs that move du most again on the other engine (with `check_settings`) in OUT/check_runs; write the
     tables, figures and sensitivity.md; return the result."""
     check_base_points(base_points)
     check_factors(base, factors)
@@ -115,7 +119,7 @@ def run_sensitivity(
     lean = base.with_overrides({"numerics.run_files": SUMMARY_RUN_FILES})
     samples = campaign(lean, sobol_rows(factors, base_points), SOBOL_RUNS, folders=False)
     tornado = tornado_table(base, factors, tornado_results)
-    checks = run_checks(base, tornado_results, factors, check_runs, out, pool, timeout_s, progress)
+    checks = run_checks(base, tornado_results, factors, check_runs, out, pool, timeout_s, progress, check_settings)
     du = collapse_displacement(samples)
     indices = pd.concat([sobol_indices(factors, du, n) for n in sample_sizes(base_points)], ignore_index=True)
     result = SensitivityResult(tornado, indices, convergence(indices), samples, checks)
