@@ -47,7 +47,7 @@ def write_passive_report(
     capacities = capacity_table(out / RUNS_FOLDER, jobs, log, dem_settings)
     numerics = dem_numerics_table(out / RUNS_FOLDER, jobs, log, dem_settings)
     mobilisation = mobilisation_table()
-    settlement = settlement_table(out / RUNS_FOLDER, log, dem_settings)
+    settlement = settlement_table(out / RUNS_FOLDER, jobs, log, dem_settings)
     settling_numerics = settlement_numerics_table(out / RUNS_FOLDER, jobs, log, dem_settings)
     pushes = settlement_pushes_table()
     grid = grid_table()

@@ -167,24 +167,25 @@ def _mechanism(case: ArchCase) -> float | None:
 
 
 def settlement_table(
-    out: Path, log: Callable[[str], None] = print, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS
+    out: Path, jobs: int = 2, log: Callable[[str], None] = print, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS
 ) -> pd.DataFrame:
     """The paper's arch under its fill settling to collapse, without and with the passive resistance
     (Kp SWEPT_KP; and with u_p SHORT_UP_MM, the pushes at their capacity), on both engines (the DEM with
-    `dem_settings`; run folders under `out`; finished ones read back): a row a run."""
+    `dem_settings`; run folders under `out`, `jobs` at a time; finished ones read back): a row a run."""
     settlings = [passive_case("paper", kp, live_load="none", name=f"paper_settling_kp{kp:g}") for kp in (0.0, SWEPT_KP)]
     settlings.append(
         passive_case(
             "paper", SWEPT_KP, live_load="none", fill_passive_displacement_mm=SHORT_UP_MM, name="paper_settling_short"
         )
     )
-    rows = []
+    runs = []
     for settling in settlings:
         for engine in ("static", "dem"):
             case = settling.with_overrides({"numerics.engine": engine})
             case = with_dem_settings(case, dem_settings) if engine != STATIC_ENGINE else case
-            rows.append(_settling_row(case, out / f"{case.name}_{engine}", log))
-    return pd.DataFrame(rows)
+            runs.append((case, out / f"{case.name}_{engine}"))
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        return pd.DataFrame(list(pool.map(lambda run: _settling_row(run[0], run[1], log), runs)))
 
 
 def settlement_numerics_table(
