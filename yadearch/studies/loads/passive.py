@@ -181,8 +181,7 @@ def settlement_table(
     runs = []
     for settling in settlings:
         for engine in ("static", "dem"):
-            case = settling.with_overrides({"numerics.engine": engine})
-            case = with_dem_settings(case, dem_settings) if engine != STATIC_ENGINE else case
+            case = _on_engine(settling, engine, dem_settings)
             runs.append((case, out / f"{case.name}_{engine}"))
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         return pd.DataFrame(list(pool.map(lambda run: _settling_row(run[0], run[1], log), runs)))
@@ -198,9 +197,7 @@ def settlement_numerics_table(
     default = passive_case("paper", SWEPT_KP, live_load="none", name=f"paper_settling_kp{SWEPT_KP:g}")
     runs = []
     for engine, variants in SETTLING_VARIANTS.items():
-        engine_default = default.with_overrides({"numerics.engine": engine})
-        engine_default = with_dem_settings(engine_default, dem_settings) if engine != STATIC_ENGINE else engine_default
-        for states, base in _path_readings(engine_default):
+        for states, base in _path_readings(_on_engine(default, engine, dem_settings)):
             runs.append((states, "default", base, out / f"{base.name}_{engine}"))
             for settings, factor in variants:
                 variant = f"{'+'.join(s.split('.')[-1] for s in settings)} x{factor:g}"
@@ -214,6 +211,12 @@ def settlement_numerics_table(
 
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         return pd.DataFrame(list(pool.map(row, runs)))
+
+
+def _on_engine(case: ArchCase, engine: str, dem_settings: Mapping[str, Any]) -> ArchCase:
+    """`case` solved by `engine`, with the study's `dem_settings` where that is the DEM."""
+    on_engine = case.with_overrides({"numerics.engine": engine})
+    return on_engine if engine == STATIC_ENGINE else with_dem_settings(on_engine, dem_settings)
 
 
 def _path_readings(case: ArchCase) -> list[tuple[str, ArchCase]]:
