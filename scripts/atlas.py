@@ -3,6 +3,7 @@ joint stiffnesses in the static engine, the rigid march of every arch and moveme
 the DEM; du_first and du side by side with the targets of docs/atlas.md checked.
 
     .venv/bin/python scripts/atlas.py [--out reports/atlas] [--runs runs/atlas] [--jobs 2] [--no-dem]
+        [--dem-set numerics.KEY=VALUE ...]
     .venv/bin/python scripts/atlas.py --dem-from-table   # the DEM column from OUT/atlas.csv, its runs gone
     .venv/bin/python scripts/atlas.py --invariance   # the static answers with each setting halved and doubled
     .venv/bin/python scripts/atlas.py --snap-refinement   # the snaps the floor moves, against a refined bracket
@@ -14,14 +15,18 @@ rerun only redoes what changed; --no-dem reuses the DEM runs already in RUNS/dem
 DEM column of OUT/atlas.csv (for a change of the static engine or the rigid march on a machine without
 the DEM's runs; only while the DEM's answers cannot have changed). --dem-static-states runs the DEM
 column with its support paths read at the static model's equilibria (`numerics.support_path_states =
-"static"`, docs/numerics.md) into RUNS/dem-static, and writes no report.
+"static"`, docs/numerics.md) into RUNS/dem-static, and writes no report. --dem-set gives every DEM
+run (the DEM column, --dem-static-states's too) a numerical setting and names it in atlas.md's command
+(give it with --no-dem and --dem-from-table too, or the command loses it).
 """
 
 from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -29,7 +34,7 @@ from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import preset
 from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK, STATIC_PATH_STATES
 from yadearch.plotting.atlas import atlas_figure
-from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, geometries, static_rows
+from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, engine_base, geometries, static_rows
 from yadearch.studies.atlas.invariance import invariance_markdown, invariance_rows, invariance_table
 from yadearch.studies.atlas.report import FIGURE, TABLE, travel_mm, write_atlas
 from yadearch.studies.atlas.rigid import compliant_table, rigid_table
@@ -37,15 +42,24 @@ from yadearch.studies.atlas.snap_refinement import refinement_markdown, refineme
 from yadearch.studies.atlas.table import stored_engine
 from yadearch.studies.campaigns.executors import open_pool
 from yadearch.studies.campaigns.runner import run_campaign
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, add_dem_set_option, dem_settings_of
 
 RUN_TIMEOUT_S = {"static": 600.0, "dem": 3600.0}
+STATES_KEY = "numerics.support_path_states"  # what --dem-static-states sets
 
 
-def run_engine(engine: str, rows: list[dict], runs: Path, jobs: int, folder: str | None = None, **numerics: str):
-    """One engine's campaign of the atlas (summary-only run folders, with `numerics` besides) in
-    RUNS/`folder` (default: the engine's name), resumed where it stopped."""
-    settings = {"engine": engine, "run_files": "summary", **numerics}
-    base = preset("set2").with_overrides({f"numerics.{key}": value for key, value in settings.items()})
+def run_engine(
+    engine: str,
+    rows: list[dict],
+    runs: Path,
+    jobs: int,
+    folder: str | None = None,
+    dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS,
+    **numerics: str,
+):
+    """One engine's campaign of the atlas (summary-only run folders, with `numerics` besides, the DEM's
+    with `dem_settings`) in RUNS/`folder` (default: the engine's name), resumed where it stopped."""
+    base = engine_base(engine, numerics, dem_settings)
     with open_pool(jobs) as pool:
         return run_campaign(
             base, rows, runs / (folder or engine), pool, timeout_s=RUN_TIMEOUT_S[engine], retry_failed=False
@@ -112,7 +126,11 @@ def main() -> int:
         action="store_true",
         help="only the snaps that move du_first with the floor, against a refined bracket (reads OUT/invariance.csv)",
     )
+    add_dem_set_option(parser)
     args = parser.parse_args()
+    dem_settings = dem_settings_of(parser, args)
+    if args.dem_static_states and STATES_KEY in dem_settings:
+        parser.error(f"--dem-static-states sets {STATES_KEY} itself; give it without --dem-set {STATES_KEY}")
     args.out.mkdir(parents=True, exist_ok=True)
     if args.invariance:
         invariance(args.out, args.runs, args.jobs)
@@ -125,7 +143,9 @@ def main() -> int:
         return 0
     if args.dem_static_states:
         states = STATIC_PATH_STATES
-        table = run_engine("dem", dem_rows(), args.runs, args.jobs, folder=f"dem-{states}", support_path_states=states)
+        table = run_engine(
+            "dem", dem_rows(), args.runs, args.jobs, f"dem-{states}", dem_settings, support_path_states=states
+        )
         print(table[["run", "outcome", "du_first_mm", "du_mm", "hinges"]].to_string())
         return 0
     parts = ("static", "rigid", "dem") if args.engine == "all" else (args.engine,)
@@ -140,11 +160,11 @@ def main() -> int:
     if args.dem_from_table:
         dem = stored_engine(pd.read_csv(args.out / TABLE), "dem")
     elif "dem" in parts and not args.no_dem:
-        dem = run_engine("dem", dem_rows(), args.runs, args.jobs)
+        dem = run_engine("dem", dem_rows(), args.runs, args.jobs, dem_settings=dem_settings)
     else:
         dem = None
     if args.engine == "all":
-        write_atlas(args.out, args.runs, static, rigid, dem)
+        write_atlas(args.out, args.runs, static, rigid, dem, dem_settings)
         print(f"atlas -> {args.out}")
     return 0
 

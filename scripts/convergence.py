@@ -3,11 +3,13 @@ with another damping and with two thirds of the time step, and print du, the hin
 relative differences.
 
     .venv/bin/python scripts/convergence.py [--preset set2] [--kn 31.62] [--jobs 2] [--out runs/convergence]
+        [--dem-set numerics.KEY=VALUE ...]
 
 Exit code 1 if du moves by more than 1 % or a hinge moves (a hinge whose peak stays within its
 spread over adjacent joints has not moved). A complete run folder of the same case
 under --out is reused (copy `reports/set2` to `runs/convergence/set2_default` to reuse the
-reproduction run).
+reproduction run). --dem-set gives every run (the default and each variant, all the DEM's) a numerical
+setting; each variant is varied from the settings' values.
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ from yadearch.launch.process import run_case_process
 from yadearch.results.reuse import holds_case
 from yadearch.results.rundir import read_summary
 from yadearch.results.summary import RunSummary
+from yadearch.studies.dem_settings import add_dem_set_option, dem_settings_of, with_dem_settings
 
 TOLERANCE = 0.01
 
@@ -37,9 +40,11 @@ def main() -> int:
     parser.add_argument(
         "--damping", type=float, default=None, help="the other damping (default: the default damping + 0.1)"
     )
+    add_dem_set_option(parser)
     args = parser.parse_args()
+    dem_settings = dem_settings_of(parser, args)
 
-    base = preset(args.preset)
+    base = with_dem_settings(preset(args.preset), dem_settings)
     prefix = args.preset
     if args.kn is not None:
         base = base.with_overrides({"kn_N_per_mm3": args.kn})

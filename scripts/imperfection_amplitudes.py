@@ -3,10 +3,12 @@ amplitudes, 200 seeds a level on the static engine, the amplitude that brings th
 1's experiment, the hinges there, and DEM confirmations on the same seeds.
 
     .venv/bin/python scripts/imperfection_amplitudes.py [--out reports/imperfections/amplitudes]
-        [--jobs 2] [--samples 200] [--only bump,combined] [--no-dem]
+        [--jobs 2] [--samples 200] [--only bump,combined] [--no-dem] [--dem-set numerics.KEY=VALUE ...]
 
 Every campaign resumes where it stopped. Face bumps are confirmed by the DEM's 200-seed campaign at
-0.18 mm (reports/imperfections/final, `scripts/imperfection_study.py --only final`).
+0.18 mm (reports/imperfections/final, `scripts/imperfection_study.py --only final`, with its own
+--dem-set). --dem-set gives every DEM confirmation run here a numerical setting (the static campaigns
+have none) and names it in the report's command (give it with --no-dem too, or the command loses it).
 """
 
 from __future__ import annotations
@@ -14,7 +16,9 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -28,6 +32,7 @@ from yadearch.static.simulate import simulate_static
 from yadearch.studies.campaigns.executors import open_pool
 from yadearch.studies.campaigns.runner import RESULTS_FILE, run_campaign
 from yadearch.studies.campaigns.sessions import campaign_wall_s
+from yadearch.studies.dem_settings import add_dem_set_option, dem_arguments, dem_settings_of, with_dem_settings
 from yadearch.studies.imperfections.amplitudes import (
     KINDS,
     LEVEL,
@@ -63,13 +68,13 @@ def static_campaign(kind: Kind, out: Path, samples: int, jobs: int) -> pd.DataFr
         )
 
 
-def dem_campaign(kind: Kind, out: Path, level: float, jobs: int) -> pd.DataFrame:
-    """The DEM confirmation of a kind at `level`: the first seeds of the static campaign, on YADE."""
+def dem_campaign(kind: Kind, out: Path, level: float, jobs: int, dem_settings: Mapping[str, Any]) -> pd.DataFrame:
+    """The DEM confirmation of a kind at `level`: the first seeds of the static campaign, on YADE with
+    the study's `dem_settings`."""
     samples = DEM_SAMPLES.get(kind.name, OTHER_DEM_SAMPLES)
+    base = with_dem_settings(preset(BASE_PRESET), dem_settings)
     with open_pool(jobs) as pool:
-        return with_levels(
-            kind, run_campaign(preset(BASE_PRESET), kind_rows(kind, samples, (level,)), out / kind.name / "dem", pool)
-        )
+        return with_levels(kind, run_campaign(base, kind_rows(kind, samples, (level,)), out / kind.name / "dem", pool))
 
 
 def dem_bumps() -> pd.DataFrame:
@@ -108,7 +113,9 @@ def main() -> int:
     parser.add_argument("--samples", type=int, help=f"seeds a level (static; default {SAMPLES})")
     parser.add_argument("--only", default="", help="comma-separated kinds (default: all)")
     parser.add_argument("--no-dem", action="store_true", help="skip the DEM confirmations")
+    add_dem_set_option(parser)
     args = parser.parse_args()
+    dem_settings = dem_settings_of(parser, args)
     out = Path(args.out)
     target = reference.SETS["set1"]["experimental"]["du_mm"]
     perfect = simulate_static(preset(BASE_PRESET), out / "perfect", log=lambda _line: None).collapsed_du_mm()
@@ -143,7 +150,7 @@ def main() -> int:
             )
         )
         if not args.no_dem:
-            dem = dem_bumps() if kind.name == "bump" else dem_campaign(kind, out, level, args.jobs)
+            dem = dem_bumps() if kind.name == "bump" else dem_campaign(kind, out, level, args.jobs, dem_settings)
             confirmations.append(confirmation_row(kind, static, dem))
     levels = pd.concat(summaries, ignore_index=True)
     write_csv_atomically(out / SUMMARY, levels)
@@ -165,6 +172,7 @@ def main() -> int:
             target,
             FIGURE,
             kept=kept,
+            arguments=dem_arguments(dem_settings),
         ),
     )
     print((out / REPORT).read_text())

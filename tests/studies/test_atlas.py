@@ -10,6 +10,7 @@ import pandas as pd
 import pytest
 
 from yadearch.case.config import preset
+from yadearch.case.numerics_section import SCENE_PATH_STATES, STATIC_PATH_STATES
 from yadearch.solve.limit import stands
 from yadearch.studies.atlas.grid import (
     KNS_N_PER_MM3,
@@ -17,13 +18,17 @@ from yadearch.studies.atlas.grid import (
     SHAPES,
     THICKNESS_OVER_RADIUS,
     dem_rows,
+    engine_base,
     geometries,
     static_rows,
 )
-from yadearch.studies.atlas.report import atlas_markdown, write_atlas
+from yadearch.studies.atlas.report import REPORT, atlas_markdown, write_atlas
 from yadearch.studies.atlas.rigid import KEY, rigid_row
 from yadearch.studies.atlas.table import atlas_table, gap_pct, nearest_branch_mm, rising, stored_engine
 from yadearch.studies.campaigns.grid import RUN_COLUMN
+from yadearch.studies.dem_settings import dem_arguments
+
+STATIC_STATES = {"numerics.support_path_states": STATIC_PATH_STATES}  # a study's --dem-set
 
 
 def test_the_grid_is_five_shapes_six_movements_three_thicknesses_four_stiffnesses():
@@ -146,3 +151,28 @@ def test_the_static_answers_the_halved_increments_move_are_counted_listed_and_st
     assert "40.50 (30.00)*" in text  # starred in the du table
     unchecked = atlas_markdown(atlas_table(_synthetic()[0], rigid, dem))
     assert "Not checked" in unchecked and not re.search(r"\d\*", unchecked)
+
+
+def test_the_dem_campaigns_alone_take_the_study_dem_settings():
+    assert (
+        engine_base("dem", {}).to_dict()
+        == preset("set2").with_overrides({"numerics.engine": "dem", "numerics.run_files": "summary"}).to_dict()
+    )
+    dem = engine_base("dem", {"support_rate_mm_per_s": 40.0}, STATIC_STATES)
+    assert dem.numerics.support_path_states == STATIC_PATH_STATES and dem.numerics.support_rate_mm_per_s == 40.0
+    assert dem.numerics.run_files == "summary"
+    scene = engine_base("dem", {"support_path_states": SCENE_PATH_STATES})
+    assert scene.numerics.support_path_states == SCENE_PATH_STATES  # --dem-static-states's own numerics, no settings
+    static = engine_base("static", {"increments_check": "halved"}, STATIC_STATES)
+    assert static.numerics.engine == "static"
+    assert static.to_dict() == engine_base("static", {"increments_check": "halved"}).to_dict()
+
+
+def test_the_report_names_the_dem_settings_in_its_command(tmp_path):
+    static, rigid, dem = _synthetic()
+    table = atlas_table(static, rigid, dem)
+    assert "Regenerate: `.venv/bin/python scripts/atlas.py` (resumes" in atlas_markdown(table)
+    arguments = dem_arguments(STATIC_STATES)
+    assert f"Regenerate: `.venv/bin/python scripts/atlas.py{arguments}` (resumes" in atlas_markdown(table, arguments)
+    write_atlas(tmp_path, tmp_path / "runs", static, rigid, dem, STATIC_STATES)
+    assert "scripts/atlas.py --dem-set numerics.support_path_states=static`" in (tmp_path / REPORT).read_text()

@@ -9,6 +9,8 @@ import pandas as pd
 import pytest
 
 from yadearch.errors import CANNOT_STAND
+from yadearch.reporting.imperfection_amplitudes import amplitudes_markdown
+from yadearch.studies.dem_settings import dem_arguments
 from yadearch.studies.imperfections.amplitudes import (
     KINDS,
     LEVEL,
@@ -76,3 +78,12 @@ def test_the_matching_amplitude_is_where_the_median_crosses_the_target_with_a_br
     assert np.isnan(matching_amplitude(summary, table, 5.0, PERFECT_MM).amplitude)  # never that low
     hinges = hinge_table(table, 2.0, {"A": 13, "B": 32}).set_index("hinge")
     assert hinges.loc["A", "within_one"] == 1.0 and hinges.loc["B", "within_one"] == 1.0
+
+
+def test_the_report_names_the_dem_confirmations_settings_in_its_command():
+    empty = pd.DataFrame()
+    plain = amplitudes_markdown(empty, empty, empty, empty, PERFECT_MM, 48.9, "figure")
+    assert "Regenerate: `.venv/bin/python scripts/imperfection_amplitudes.py`." in plain
+    arguments = dem_arguments({"numerics.support_path_states": "static"})
+    named = amplitudes_markdown(empty, empty, empty, empty, PERFECT_MM, 48.9, "figure", arguments=arguments)
+    assert "scripts/imperfection_amplitudes.py --dem-set numerics.support_path_states=static`." in named

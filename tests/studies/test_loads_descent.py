@@ -9,8 +9,10 @@ import math
 import numpy as np
 import pandas as pd
 
+from yadearch.case.numerics_section import STATIC_PATH_STATES
 from yadearch.reporting.loads_descent import descent_markdown
-from yadearch.studies.loads.descent import DEFAULT, static_branch_at
+from yadearch.studies.dem_settings import dem_arguments
+from yadearch.studies.loads.descent import DEFAULT, descent_runs, static_branch_at
 
 # up to the peak at 1 mm, falling to 4.0 mm, then turning back (a snap-back) to 3.5 mm
 CURVE = pd.DataFrame(
@@ -44,3 +46,21 @@ def test_the_report_counts_runs_within_the_tolerance_and_ending_alike():
     assert "within 1 % of the static branch in 1 of 2 runs" in text
     assert "ends the same way on the same hinges in 1 of 2" in text
     assert "| 2.00 % |" in text
+    assert "`.venv/bin/python scripts/loads_descent.py --out reports/loads/descent` (minutes" in text
+    arguments = dem_arguments({"numerics.support_path_states": STATIC_PATH_STATES})
+    named = descent_markdown(rows, arguments)
+    assert (
+        "scripts/loads_descent.py --out reports/loads/descent --dem-set numerics.support_path_states=static`" in named
+    )
+
+
+def test_the_dem_runs_alone_take_the_study_settings_its_numerics_varied_from_them():
+    plain = descent_runs()
+    assert all(run.dem_case.to_dict() == run.case.to_dict() for run in plain)  # no settings: the same runs
+    runs = descent_runs({"numerics.support_path_states": STATIC_PATH_STATES, "numerics.damping": 0.4})
+    for before, run in zip(plain, runs, strict=True):
+        assert run.case.to_dict() == before.case.to_dict()  # the static engine's case untouched
+        assert run.dem_case.numerics.support_path_states == STATIC_PATH_STATES
+        assert run.dem_case.name == run.case.name
+    damping = {run.variant: run.dem_case.numerics.damping for run in runs}
+    assert damping[DEFAULT] == 0.4 and damping["damping_x0.5"] == 0.2 and damping["damping_x2"] == 0.8

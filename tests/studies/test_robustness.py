@@ -96,7 +96,7 @@ def test_the_static_engine_takes_only_the_variants_that_can_move_its_answer():
 def test_the_path_states_variant_reads_the_path_the_other_way():
     """The DEM's path read at the holds' own states or at the static equilibria: the variant runs the
     reading the base case does not have; the one it has is named and not run."""
-    scene = {r["run"] for r in study_rows(preset("set2"), (5.2,))}
+    scene = {r["run"] for r in study_rows(preset("set2").with_overrides({"support_path_states": "scene"}), (5.2,))}
     assert "kn5.2_path_states_static" in scene and "kn5.2_path_states_scene" not in scene
     static = preset("set2").with_overrides({"support_path_states": "static"})
     said: list[str] = []

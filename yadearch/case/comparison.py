@@ -10,6 +10,7 @@ from typing import Any
 
 from yadearch.case.config import current_names, support_speed
 from yadearch.case.materials import MATERIAL_KEY, PRESET_FIELD
+from yadearch.case.numerics_section import SCENE_PATH_STATES, STATIC_ENGINE, resolved_path_states
 from yadearch.case.sections import SECTIONS
 from yadearch.case.support import capped_acceleration
 
@@ -18,7 +19,8 @@ def as_ran(data: dict[str, Any]) -> dict[str, Any]:
     """What a stored case.toml (`data`) ran with, comparable across versions: a parameter the run
     predates takes the value that reproduces the behaviour it had ("predates" in its metadata, else
     its default), and the support speed and acceleration replace the parameters they derive from,
-    so that a run whose speed or acceleration they do not change stays comparable; what the folder
+    so that a run whose speed or acceleration they do not change stays comparable, and the DEM's path
+    reading is the one it resolves to (none for the static engine); what the folder
     keeps (`numerics.run_files`) and whether a static run checked itself (`numerics.increments_check`,
     which leaves its answer alone) are left out."""
     filled: dict[str, Any] = {"name": data.get("name", "custom")}
@@ -33,6 +35,12 @@ def as_ran(data: dict[str, Any]) -> dict[str, Any]:
     )
     del numerics["support_rate_mm_per_s"], numerics["rate_reference_kn_N_per_mm3"]
     del numerics["run_files"], numerics["increments_check"]  # what the folder keeps, a check beside the answer
+    # the states the DEM's path read ('auto' resolved); the static engine reads none: the value before the setting
+    numerics["support_path_states"] = (
+        SCENE_PATH_STATES
+        if numerics["engine"] == STATIC_ENGINE
+        else resolved_path_states(numerics["support_path_states"], numerics["contact_model"])
+    )
     del filled[MATERIAL_KEY][PRESET_FIELD]  # a material's name: its values are in the case
     loading = filled["loading"]  # the acceleration a run used; a turn or a path counted as horizontal
     share = (

@@ -284,16 +284,21 @@ class NumericsConfig:
 
     @property
     def path_states(self) -> str:
-        """The states the DEM's path compares: `support_path_states`, 'auto' read as 'static' with the
-        joint elements and as 'scene' with CGAL contacts, which have no static model."""
-        if self.support_path_states != AUTO_PATH_STATES:
-            return self.support_path_states
-        return STATIC_PATH_STATES if self.contact_model == JOINT_CONTACTS else SCENE_PATH_STATES
+        """The states the DEM's path compares (`resolved_path_states`)."""
+        return resolved_path_states(self.support_path_states, self.contact_model)
 
     @property
     def keeps_tables(self) -> bool:
         """True if the run folder keeps its tables, states and snapshots (run_files = 'full')."""
         return self.run_files == FULL_RUN_FILES
+
+
+def resolved_path_states(support_path_states: str, contact_model: str) -> str:
+    """The states a DEM path compares: 'auto' read as 'static' with the joint elements and as 'scene'
+    with CGAL contacts, which have no static model; the other values as they are."""
+    if support_path_states != AUTO_PATH_STATES:
+        return support_path_states
+    return STATIC_PATH_STATES if contact_model == JOINT_CONTACTS else SCENE_PATH_STATES
 
 
 def static_only_refusal(numerics: NumericsConfig) -> str | None:

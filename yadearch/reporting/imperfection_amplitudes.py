@@ -33,17 +33,18 @@ def amplitudes_markdown(
     target: float,
     figure: str,
     kept: bool = False,
+    arguments: str = "",
 ) -> str:
     """The study's report: per kind its levels, the matching amplitude and whether it is plausible,
     the hinges at the nearest level against set 1's experiment, then the DEM confirmations (`kept`: read
-    back from an earlier run, not made by this one)."""
+    back from an earlier run, not made by this one); `arguments` name the DEM's settings in its command."""
     lines = [
         "# Set 1 from imperfections of measured size",
         "",
         f"The accurate arch (set 2's kn, static engine; perfect arch {perfect_du_mm:.2f} mm) with each kind of "
         f"defect at several amplitudes, the same seeds at every level. Target: set 1's experiment, {target} mm. "
         "An arch that cannot stand under its own weight counts as du = 0. Regenerate: "
-        f"`{COMMAND}`.",
+        f"`{COMMAND}{arguments}`.",
         "",
     ]
     for match in matches.itertuples():

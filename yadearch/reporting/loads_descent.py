@@ -4,8 +4,9 @@ a figure and a Markdown report (`scripts/loads_descent.py`; minutes of YADE)."""
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -14,27 +15,31 @@ from yadearch.markdown import markdown_table
 from yadearch.model.load_control import SPRING_RATIO, STEP_THICKNESS_RATIO
 from yadearch.plotting.loads import plot_descent
 from yadearch.solve.descending import DESCEND_TO
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, dem_arguments
 from yadearch.studies.loads.descent import DEFAULT, VARIED_CASE, descent_runs, descent_tables
 
 BRANCH_TOLERANCE = 0.01  # the DEM's states past the peak within 1 % of the static branch
 RUNS_FOLDER = "load_paths"  # each DEM load path's files, under the report's folder (a rerun reads them back)
 
 
-def write_descent_report(out: Path, jobs: int = 2, log: Callable[[str], None] = print) -> Path:
-    """Run the comparison (the DEM `jobs` at a time; paths already in OUT/load_paths are read back) and write
-    descent.csv, states.csv, descent.pdf/.png and descent.md into `out`; the report's path."""
+def write_descent_report(
+    out: Path, jobs: int = 2, log: Callable[[str], None] = print, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS
+) -> Path:
+    """Run the comparison (the DEM with `dem_settings`, `jobs` at a time; paths already in OUT/load_paths are
+    read back) and write descent.csv, states.csv, descent.pdf/.png and descent.md into `out`; the report's path."""
     out.mkdir(parents=True, exist_ok=True)
-    table, states, paths = descent_tables(descent_runs(), out / RUNS_FOLDER, jobs, log)
+    table, states, paths = descent_tables(descent_runs(dem_settings), out / RUNS_FOLDER, jobs, log)
     write_csv_atomically(out / "descent.csv", table)
     write_csv_atomically(out / "states.csv", states)
     plot_descent(paths, out / "descent")
     path = out / "descent.md"
-    write_text_atomically(path, descent_markdown(table))
+    write_text_atomically(path, descent_markdown(table, dem_arguments(dem_settings)))
     return path
 
 
-def descent_markdown(table: pd.DataFrame) -> str:
-    """The report: each run's branch on both engines, and the largest gap between them."""
+def descent_markdown(table: pd.DataFrame, arguments: str = "") -> str:
+    """The report: each run's branch on both engines, and the largest gap between them; `arguments` name
+    the DEM's settings in its command."""
     table = table.fillna({"static_hinges": "", "dem_hinges": "", "dem_failure": ""})
     done = table[table["dem_failure"] == ""]
     within = int((done["largest_off"] <= BRANCH_TOLERANCE).sum())
@@ -49,7 +54,8 @@ def descent_markdown(table: pd.DataFrame) -> str:
         f'test; both down to {DESCEND_TO:g} x the capacity (docs/loads.md, "The DEM past the peak"). Each',
         "DEM state is set beside the static branch's load at the same displacement of the load (states.csv;",
         "none past a snap-back of the static branch, which displacement control jumps). Regenerate with",
-        "`.venv/bin/python scripts/loads_descent.py --out reports/loads/descent` (minutes of two cores; the",
+        f"`.venv/bin/python scripts/loads_descent.py --out reports/loads/descent{arguments}` "
+        "(minutes of two cores; the",
         f"DEM's files are kept in {RUNS_FOLDER}/ and read back by a rerun).",
         "",
         f"- Every DEM state within {100 * BRANCH_TOLERANCE:g} % of the static branch in {within} of {len(done)} "

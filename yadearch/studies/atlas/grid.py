@@ -4,11 +4,14 @@ rigid; the DEM's subset is named here too, so that the grid and its cheaper chec
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from yadearch.case.config import ArchCase, preset
 from yadearch.case.support import TILT_PIVOT_DEPTH_MM
 from yadearch.studies.campaigns.grid import RUN_COLUMN
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, with_dem_settings
 
 REFERENCE_RADIUS_MM = 300.0  # every shape's half span (the paper's intrados radius): t/R is over it
 SPAN_MM = 2.0 * REFERENCE_RADIUS_MM
@@ -91,3 +94,13 @@ def dem_rows() -> list[dict[str, Any]]:
         if ratio == DEM_THICKNESS_OVER_RADIUS[0] or movement in DEM_MOVEMENTS_THICK
     ]
     return [g.row(DEM_KN_N_PER_MM3) for g in chosen]
+
+
+def engine_base(
+    engine: str, numerics: Mapping[str, Any], dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS
+) -> ArchCase:
+    """The base case of one engine's campaign: set 2 with summary-only run folders and `numerics` (bare
+    names), the DEM's also with the study's `dem_settings` (the static engine's never)."""
+    settings = {"engine": engine, "run_files": "summary", **numerics}
+    base = preset("set2").with_overrides({f"numerics.{key}": value for key, value in settings.items()})
+    return with_dem_settings(base, dem_settings) if engine == "dem" else base

@@ -4,6 +4,7 @@ arch against kn beside the rigid march's) and atlas.pdf/.png, from the campaigns
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -25,6 +26,7 @@ from yadearch.studies.atlas.table import (
     rising,
     stiff_rows,
 )
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, dem_arguments
 
 TABLE, REPORT, FIGURE = "atlas.csv", "atlas.md", "atlas"
 COMMAND = ".venv/bin/python scripts/atlas.py"
@@ -32,9 +34,15 @@ OUTCOMES = ("collapse", "stands", "unresolved", "cannot stand", "failed")
 
 
 def write_atlas(
-    out: Path, runs: Path, static: pd.DataFrame | None, rigid: pd.DataFrame | None, dem: pd.DataFrame | None
+    out: Path,
+    runs: Path,
+    static: pd.DataFrame | None,
+    rigid: pd.DataFrame | None,
+    dem: pd.DataFrame | None,
+    dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS,
 ) -> pd.DataFrame:
-    """OUT/atlas.csv, atlas.md and atlas.pdf/.png; parts not given are read from RUNS and OUT."""
+    """OUT/atlas.csv, atlas.md (its command naming the DEM's `dem_settings`) and atlas.pdf/.png; parts not
+    given are read from RUNS and OUT."""
     static = static if static is not None else _results(runs / "static")
     dem = dem if dem is not None else _results(runs / "dem")
     rigid = rigid if rigid is not None else pd.read_csv(out / TABLE_RIGID)
@@ -42,7 +50,7 @@ def write_atlas(
     table = atlas_table(static, rigid, dem, compliant)
     write_csv_atomically(out / TABLE, table)
     atlas_figure(table, out / FIGURE, travel_mm())
-    write_text_atomically(out / REPORT, atlas_markdown(table))
+    write_text_atomically(out / REPORT, atlas_markdown(table, dem_arguments(dem_settings)))
     return table
 
 
@@ -64,12 +72,13 @@ def _pct(value: float) -> str:
     return "-" if math.isnan(value) else f"{value:+.1f} %"
 
 
-def atlas_markdown(table: pd.DataFrame) -> str:
-    """atlas.md: what was run, the outcome counts, each target with its exceptions, the du table."""
+def atlas_markdown(table: pd.DataFrame, arguments: str = "") -> str:
+    """atlas.md: what was run, the outcome counts, each target with its exceptions, the du table;
+    `arguments` name the DEM's settings in its command."""
     lines = [
         "# Atlas: collapse of five arch shapes on six support movements, three solvers",
         "",
-        f"Regenerate: `{COMMAND}` (resumes; docs/atlas.md says what it checks and why).",
+        f"Regenerate: `{COMMAND}{arguments}` (resumes; docs/atlas.md says what it checks and why).",
         "",
         f"- Shapes: {', '.join(SHAPES)} (span 600 mm, or the paper's intrados radius 300 mm; 55 voussoirs).",
         f"- Movements of the right support: {', '.join(MOVEMENTS)} (up to {travel_mm():g} mm).",

@@ -6,18 +6,21 @@ equivalent kn of every amplitude and the hinge positions against set 1's."""
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
 from yadearch.analysis.samples import du_statistics
 from yadearch.case import reference
-from yadearch.case.config import preset
+from yadearch.case.config import ArchCase, preset
 from yadearch.plotting.montecarlo import amplitude_panels_figure, campaign_figures
 from yadearch.results.rundir import read_summary
 from yadearch.results.summary import RunSummary
 from yadearch.studies.campaigns.executors import open_pool
 from yadearch.studies.campaigns.table import label_hinges
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, with_dem_settings
 from yadearch.studies.imperfections.matching import (
     STAYED,
     TOWARD_CROWN,
@@ -65,11 +68,17 @@ FIGURE = "du_vs_amplitude"
 HISTORY_FILE = "snapshots.json"  # a run folder's hinge history, which hinge_shifts reads (not committed)
 
 
-def run_study(study: Study, out: Path, jobs: int) -> pd.DataFrame:
-    """Run (or resume) one campaign of the study and draw its figures; its montecarlo table."""
-    base = preset(BASE_PRESET).with_overrides(study.fixed)
+def study_case(study: Study, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS) -> ArchCase:
+    """The base case of one campaign (every run of the study is the DEM's): the accurate arch with the
+    campaign's fixed settings and the study's `dem_settings`."""
+    return with_dem_settings(preset(BASE_PRESET).with_overrides(study.fixed), dem_settings)
+
+
+def run_study(study: Study, out: Path, jobs: int, dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS) -> pd.DataFrame:
+    """Run (or resume) one campaign of the study (its DEM runs with `dem_settings`) and draw its figures;
+    its montecarlo table."""
     with open_pool(jobs) as pool:
-        table = run_montecarlo(base, out / study.name, pool, study.samples, SEED, study.axes)
+        table = run_montecarlo(study_case(study, dem_settings), out / study.name, pool, study.samples, SEED, study.axes)
     draw(table, study, out)
     return table
 
@@ -90,8 +99,9 @@ def spread(interfaces: list[int]) -> str:
     return f"{interfaces[0]}-{interfaces[-1]}" if len(interfaces) > 1 else str(interfaces[0])
 
 
-def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float) -> str:
-    """The study's Markdown (and its figure) from every campaign folder that holds a table."""
+def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float, arguments: str = "") -> str:
+    """The study's Markdown (and its figure) from every campaign folder that holds a table; `arguments`
+    name the DEM's settings in its command."""
     target = reference.SETS["set1"]["experimental"]["du_mm"]
     kn = reference.SETS["set2"]["kn_N_per_mm3"]
     set1_summary = read_summary(SET1_RUN)
@@ -102,7 +112,7 @@ def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float) -> str:
         f"{perfect_du_mm:.2f} mm, `{PERFECT_RUN}`). Each kind of defect is raised until the median du "
         f"reaches set 1's experiment, {target} mm. Equivalent kn: the kn at which the perfect arch's du "
         "(`reports/kn-sweep`, interpolated in log kn) equals the median. Regenerate: "
-        "`.venv/bin/python scripts/imperfection_study.py`.",
+        f"`.venv/bin/python scripts/imperfection_study.py{arguments}`.",
         "",
     ]
     panels = []

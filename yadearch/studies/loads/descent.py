@@ -7,10 +7,11 @@ control's own numerics (the spring, the anchor's step) and the DEM's halved and 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -22,6 +23,7 @@ from yadearch.model.load_control import DisplacementControl
 from yadearch.results.load_path import stored_load_path
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath, static_load_path
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, with_dem_settings
 from yadearch.studies.loads.engines import NUMERICS_VARIANTS, case_label, engine_cases, setting_value
 
 DESCENT_CASES = (  # of `studies.loads.engines.engine_cases`: a small arch, the paper's under a point load at
@@ -43,9 +45,11 @@ DEFAULT = "default"
 
 @dataclass(frozen=True)
 class DescentRun:
-    """One DEM load path past its peak: the case, its displacement control, and what is varied ("default")."""
+    """One load path past its peak on both engines: the static engine's case, the DEM's (the same with the
+    study's DEM settings), its displacement control, and what is varied ("default")."""
 
     case: ArchCase
+    dem_case: ArchCase
     control: DisplacementControl
     variant: str = DEFAULT
     name: str = ""  # the case varied (its own name where "")
@@ -57,30 +61,36 @@ class DescentRun:
         return self.name or self.case.name
 
 
-def descent_runs() -> list[DescentRun]:
+def descent_runs(dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS) -> list[DescentRun]:
     """DESCENT_CASES at the default control, then VARIED_CASE with each control setting and each of the
-    DEM's numerics (`studies.loads.engines.NUMERICS_VARIANTS`) halved and doubled."""
+    DEM's numerics (`studies.loads.engines.NUMERICS_VARIANTS`) halved and doubled; the DEM's cases with
+    `dem_settings`, a varied numeric scaled from their value."""
     chosen = {case.name: (case, after_mm) for case, after_mm in engine_cases()}
     control = DisplacementControl(DESCEND_TO)
-    runs = [DescentRun(chosen[name][0], control, after_mm=chosen[name][1]) for name in DESCENT_CASES]
+    runs = []
+    for name in DESCENT_CASES:
+        case, after_mm = chosen[name]
+        runs.append(DescentRun(case, with_dem_settings(case, dem_settings), control, after_mm=after_mm))
     varied = chosen[VARIED_CASE][0]
+    dem_varied = with_dem_settings(varied, dem_settings)
     for setting, factor in CONTROL_VARIANTS:
         changed = replace(control, **{setting: getattr(control, setting) * factor})
-        runs.append(DescentRun(varied, changed, f"{setting}_x{factor:g}", VARIED_CASE))
+        runs.append(DescentRun(varied, dem_varied, changed, f"{setting}_x{factor:g}", VARIED_CASE))
     for setting, factor in NUMERICS_VARIANTS:
         variant = f"{setting.split('.')[-1]}_x{factor:g}"
-        changed_case = varied.with_overrides(
-            {setting: setting_value(varied, setting) * factor, "name": f"{varied.name}_{variant}"}
+        static, dem = (
+            case.with_overrides({setting: setting_value(case, setting) * factor, "name": f"{varied.name}_{variant}"})
+            for case in (varied, dem_varied)
         )
-        runs.append(DescentRun(changed_case, control, variant, VARIED_CASE))
+        runs.append(DescentRun(static, dem, control, variant, VARIED_CASE))
     return runs
 
 
 def descent_tables(
     runs: list[DescentRun], out: Path, jobs: int = 2, log: Callable[[str], None] = print
 ) -> tuple[pd.DataFrame, pd.DataFrame, dict[str, tuple[LoadPath, LoadPath | None]]]:
-    """Each run on both engines (the DEM's files under `out`, one folder a control, `jobs` at a time;
-    those already there are read back): a row a run, a row a DEM state past the peak with the static
+    """Each run on both engines (the DEM its `dem_case`, files under `out`, one folder a control, `jobs` at a
+    time; those already there are read back): a row a run, a row a DEM state past the peak with the static
     branch's load at its displacement, and the two engines' paths of each default run by its case in
     words (`engines.case_label`). A DEM run that fails is a row with its reason."""
     statics = {
@@ -91,8 +101,8 @@ def descent_tables(
         static = statics[run.case.name]
         folder = out / _folder(run.control)
         try:
-            dem = stored_load_path(folder, run.case, run.after_mm) or run_load_process(
-                run.case, folder, run.after_mm, descent=run.control
+            dem = stored_load_path(folder, run.dem_case, run.after_mm) or run_load_process(
+                run.dem_case, folder, run.after_mm, descent=run.control
             )
         except YadearchError as exc:
             return _row(run, static, None, pd.DataFrame(), str(exc)), pd.DataFrame(), None
