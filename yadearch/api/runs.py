@@ -12,7 +12,8 @@ from yadearch.api.results import RunResult, open_run
 from yadearch.case.config import ArchCase
 from yadearch.case.config import preset as _preset
 from yadearch.case.names import check_name, output_path
-from yadearch.case.numerics_section import NO_INCREMENTS_CHECK, static_only_refusal
+from yadearch.case.numerics_section import NO_INCREMENTS_CHECK
+from yadearch.case.plan import static_only_refusal
 from yadearch.errors import ArgumentTypeError, CaseError, RunFolderError
 from yadearch.results.reuse import case_differences, is_current
 

@@ -299,14 +299,3 @@ def resolved_path_states(support_path_states: str, contact_model: str) -> str:
     if support_path_states != AUTO_PATH_STATES:
         return support_path_states
     return STATIC_PATH_STATES if contact_model == JOINT_CONTACTS else SCENE_PATH_STATES
-
-
-def static_only_refusal(numerics: NumericsConfig) -> str | None:
-    """The one line refusing a static-only setting of `numerics` in a DEM run (None: nothing to refuse,
-    or the static engine): the increments check solves a static path twice, the DEM's path is not."""
-    if numerics.engine == STATIC_ENGINE or numerics.increments_check == NO_INCREMENTS_CHECK:
-        return None
-    return (
-        f"numerics.increments_check = {numerics.increments_check!r} is read by the static engine only (the DEM "
-        f"does not solve its path twice); use {NO_INCREMENTS_CHECK!r} or the static engine"
-    )

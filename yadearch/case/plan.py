@@ -19,7 +19,14 @@ from yadearch.case.mechanics import (
     live_load,
     require_live_load,
 )
-from yadearch.case.numerics_section import SCENE_PATH_STATES, STATIC_PATH_STATES
+from yadearch.case.numerics_section import (
+    JOINT_CONTACTS,
+    NO_INCREMENTS_CHECK,
+    SCENE_PATH_STATES,
+    STATIC_ENGINE,
+    STATIC_PATH_STATES,
+    NumericsConfig,
+)
 from yadearch.case.support import case_movement, support_acceleration_mm_per_s2
 from yadearch.errors import CaseError
 from yadearch.model import units
@@ -60,17 +67,17 @@ def plan_run(case: ArchCase) -> RunPlan:
                 "loads.held_load_N or held_acceleration_g while its support moves; the load's capacity is "
                 "`yadearch loads --engine dem`"
             )
-        if num.contact_model != "joint":
+        if num.contact_model != JOINT_CONTACTS:
             raise CaseError(
                 f"numerics.contact_model = {num.contact_model!r}: a DEM run holding a live load needs the joint "
                 "elements (numerics.contact_model = 'joint')"
             )
-    if case.loads.fill_depth_mm > 0.0 and num.contact_model != "joint":
+    if case.loads.fill_depth_mm > 0.0 and num.contact_model != JOINT_CONTACTS:
         raise CaseError(
             f"numerics.contact_model = {num.contact_model!r}: backfill (loads.fill_depth_mm = "
             f"{case.loads.fill_depth_mm:g}) needs the joint elements (numerics.contact_model = 'joint')"
         )
-    if num.support_path_states == STATIC_PATH_STATES and num.contact_model != "joint":
+    if num.support_path_states == STATIC_PATH_STATES and num.contact_model != JOINT_CONTACTS:
         raise CaseError(
             f"numerics.support_path_states = {STATIC_PATH_STATES!r} reads the joint elements' static model, "
             f"which CGAL contacts (numerics.contact_model = {num.contact_model!r}) do not have; use "
@@ -81,7 +88,7 @@ def plan_run(case: ArchCase) -> RunPlan:
     _check_imperfections(case, geometry)
     movement = case_movement(case, geometry)  # refuses a movement that cannot be followed (a pivot on the path's point)
     if num.engine == "static":
-        if num.contact_model != "joint":
+        if num.contact_model != JOINT_CONTACTS:
             raise CaseError(
                 f"numerics.contact_model = {num.contact_model!r} is the DEM's; the static engine "
                 "evaluates the joint elements only (numerics.contact_model = 'joint')"
@@ -117,7 +124,7 @@ def check_dem_load(case: ArchCase) -> None:
     """Refuse, before YADE starts, a live-load case the DEM cannot follow: no live load or CGAL contacts
     (the load's stability test needs the joint elements)."""
     require_live_load(case)
-    if case.numerics.contact_model != "joint":
+    if case.numerics.contact_model != JOINT_CONTACTS:
         raise CaseError(
             f"numerics.contact_model = {case.numerics.contact_model!r}: the DEM's load path needs the joint "
             "elements (numerics.contact_model = 'joint')"
@@ -182,3 +189,14 @@ def _move_s(distance_mm: float, speed_mm_per_s: float, accel_mm_per_s2: float) -
     if ramp_mm >= distance_mm:
         return 2.0 * math.sqrt(distance_mm / accel_mm_per_s2)
     return 2.0 * speed_mm_per_s / accel_mm_per_s2 + (distance_mm - ramp_mm) / speed_mm_per_s
+
+
+def static_only_refusal(numerics: NumericsConfig) -> str | None:
+    """The one line refusing a static-only setting of `numerics` in a DEM run (None: nothing to refuse,
+    or the static engine): the increments check solves a static path twice, the DEM's path is not."""
+    if numerics.engine == STATIC_ENGINE or numerics.increments_check == NO_INCREMENTS_CHECK:
+        return None
+    return (
+        f"numerics.increments_check = {numerics.increments_check!r} is read by the static engine only (the DEM "
+        f"does not solve its path twice); use {NO_INCREMENTS_CHECK!r} or the static engine"
+    )

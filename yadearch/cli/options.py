@@ -31,7 +31,7 @@ def resolve_case(
 ) -> ArchCase:
     """The case from a preset or a TOML file, with `--kn` and `--set key=value` overrides applied."""
     from yadearch.case.config import load_case, preset
-    from yadearch.case.numerics_section import static_only_refusal
+    from yadearch.case.plan import static_only_refusal
     from yadearch.case.support import movement_overrides
     from yadearch.results.summary import STATIC
     from yadearch.studies.campaigns.grid import parse_scalar

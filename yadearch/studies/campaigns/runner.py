@@ -21,8 +21,7 @@ from tqdm import tqdm
 
 from yadearch.atomic import remove_stale_temporaries, write_atomically, write_csv_atomically
 from yadearch.case.config import ArchCase, preset
-from yadearch.case.numerics_section import static_only_refusal
-from yadearch.case.plan import plan_run
+from yadearch.case.plan import plan_run, static_only_refusal
 from yadearch.errors import CaseError, RunFailedError, RunInterruptedError, YadearchError
 from yadearch.launch.process import STATIC_ENGINE, check_yade_installed, run_case_process
 from yadearch.results.lock import folder_lock
