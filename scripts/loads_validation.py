@@ -4,7 +4,8 @@ method on small arches, then the paper's arch and semicircles (docs/loads.md).
     .venv/bin/python scripts/loads_validation.py [--out reports/loads]
 
 Writes loads.md, the tables (mechanism_check.csv, influence_line.csv, semicircle_acceleration.csv,
-semicircle_friction.csv, residual_capacity.csv, ...) and loads.pdf/.png; about a minute and a half, no YADE.
+semicircle_friction.csv, published_point_load.csv, residual_capacity.csv, ...) and loads.pdf/.png;
+about a minute and a half, no YADE.
 """
 
 from __future__ import annotations

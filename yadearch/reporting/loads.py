@@ -14,10 +14,10 @@ from yadearch.case.mechanics import arch_geometry
 from yadearch.markdown import markdown_table
 from yadearch.plotting.load_figure import plot_load_collapse
 from yadearch.plotting.loads import plot_loads
-from yadearch.reporting.loads_published import published_markdown
+from yadearch.reporting.loads_published import point_load_markdown, published_markdown
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.rigid import rigid_arch
-from yadearch.studies.loads.published import friction_table
+from yadearch.studies.loads.published import friction_table, point_load_table
 from yadearch.studies.loads.rigid import (
     check_cases,
     influence_line,
@@ -57,6 +57,7 @@ def write_loads_report(out: Path) -> Path:
         "static_paper_arch": at_paper_kn,
         "backfill": filled,
         "semicircle_friction": friction_table(),
+        "published_point_load": point_load_table(),
     }
     for name, table in tables.items():
         write_csv_atomically(out / f"{name}.csv", table)
@@ -69,6 +70,7 @@ def write_loads_report(out: Path) -> Path:
         + static_markdown(stiff, at_paper_kn)
         + backfill_markdown(filled)
         + published_markdown(tables["semicircle_friction"])
+        + point_load_markdown(tables["published_point_load"])
     )
     write_text_atomically(path, text)
     return path
