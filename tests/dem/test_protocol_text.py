@@ -8,13 +8,14 @@ from yadearch.dem.simulate import criterion_text
 
 
 def test_the_loading_protocol_names_the_states_the_path_compares():
-    scene = criterion_text(preset("set2").numerics)
+    scene = criterion_text(preset("set2").with_overrides({"support_path_states": "scene"}).numerics)
     static = criterion_text(preset("set2").with_overrides({"support_path_states": "static"}).numerics)
     assert "each as its hold leaves it" in scene and "static model's stable equilibrium" not in scene
     assert "each read at the static model's stable equilibrium its hold sits in" in static
 
 
-def test_an_auto_reading_is_named_as_the_one_it_makes():
-    auto = preset("set2").with_overrides({"support_path_states": "auto"})
+def test_the_default_auto_reading_is_named_as_the_one_it_makes():
+    auto = preset("set2")
+    assert auto.numerics.support_path_states == "auto"
     assert "static model's stable equilibrium" in criterion_text(auto.numerics)
     assert "each as its hold leaves it" in criterion_text(auto.with_overrides({"contact_model": "cgal"}).numerics)

@@ -33,13 +33,14 @@ def test_static_engine_meets_the_dem_on_a_coarse_arch(kn, tmp_path):
 
 def test_the_dem_takes_the_static_paths_snap_not_a_branch_beyond_it(tmp_path):
     """Set 1's arch with 9 voussoirs at kn 0.3 folds at 73.78 mm and snaps 2.5 mm to another hinge
-    (static). Without the static check the DEM crossed the fold on near-equilibria to a second branch
-    and collapsed at 105.63 mm on other hinges; with it (docs/numerics.md, "Collapse"), measured
-    99.43 mm, du_first 73.93, 1E 2I 5E 8I 10E (static 99.40 / 73.78, the same hinges; DEM 22 s)."""
+    (static). Read at the holds' own states (numerics.support_path_states = 'scene') and without the
+    static check the DEM crossed the fold on near-equilibria to a second branch and collapsed at 105.63
+    mm on other hinges; with it (docs/numerics.md, "Collapse"), measured 99.43 mm, du_first 73.93, 1E 2I
+    5E 8I 10E (static 99.40 / 73.78, the same hinges; DEM 22 s)."""
     from yadearch.dem.runner import Runner
 
     case = preset("set1").with_overrides({**COARSE, "kn_N_per_mm3": 0.3})
-    dem = Runner(case, log=lambda line: None).run()
+    dem = Runner(case.with_overrides({"numerics.support_path_states": "scene"}), log=lambda line: None).run()
     static = simulate_static(case.with_overrides({"numerics.engine": "static"}), tmp_path, log=lambda line: None)
     assert dem.collapsed and static.collapsed
     assert static.du_first_mm < 0.8 * static.du_mm  # the snap this test is about
@@ -51,12 +52,14 @@ def test_the_dem_takes_the_static_paths_snap_not_a_branch_beyond_it(tmp_path):
 
 def test_the_dem_read_at_static_equilibria_takes_the_static_paths_snap(tmp_path):
     """The same snap with the DEM's path read at the static model's equilibria and a branch predicted from
-    one state along its tangent (numerics.support_path_states = 'static', docs/numerics.md): measured
-    99.48 mm, du_first 73.93 mm, 1E 2I 5E 8I 10E, the snap 2.49 mm (DEM 12 s)."""
+    one state along its tangent (the default: numerics.support_path_states = 'auto', read as 'static'
+    with the joint elements, docs/numerics.md): measured 99.48 mm, du_first 73.93 mm, 1E 2I 5E 8I 10E,
+    the snap 2.49 mm (DEM 12 s)."""
     from yadearch.dem.runner import Runner
 
     case = preset("set1").with_overrides({**COARSE, "kn_N_per_mm3": 0.3})
-    dem = Runner(case.with_overrides({"numerics.support_path_states": "static"}), log=lambda line: None).run()
+    assert case.numerics.path_states == "static"
+    dem = Runner(case, log=lambda line: None).run()
     static = simulate_static(case.with_overrides({"numerics.engine": "static"}), tmp_path, log=lambda line: None)
     assert dem.collapsed and len(dem.snaps) == 1
     assert dem.du_first_mm == pytest.approx(static.du_first_mm, rel=AGREEMENT)

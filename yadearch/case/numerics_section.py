@@ -271,7 +271,7 @@ class NumericsConfig:
         ),
     )
     support_path_states: str = field(
-        default=SCENE_PATH_STATES,
+        default=AUTO_PATH_STATES,
         metadata=choice_meta(
             (SCENE_PATH_STATES, STATIC_PATH_STATES, AUTO_PATH_STATES),
             "DEM only: the states a support movement's path compares to tell a snap: 'scene' = the holds' "
