@@ -58,7 +58,8 @@ def capacity_pairs() -> list[Pair]:
         hinges = (
             tuple(HingeRef(int(h[:-1]), h[-1]) for h in str(row.hinges).split()) if isinstance(row.hinges, str) else ()
         )
-        dem = RunSummary(du_mm=row.du_mm, hinges_at_collapse=hinges, steps=0, wall_s=row.wall_s)
+        first = float(row.du_first_mm) if pd.notna(row.du_first_mm) else None
+        dem = RunSummary(du_mm=row.du_mm, du_first_mm=first, hinges_at_collapse=hinges, steps=0, wall_s=row.wall_s)
         pairs.append(Pair("capacity", f"{row.set}_direction{row.direction_deg:g}", case, dem))
     return pairs
 

@@ -59,6 +59,7 @@ def _results() -> pd.DataFrame:
         {
             "support_direction_deg": [0.0, -90.0, -180.0],
             "du_mm": [20.0, 88.0, None],
+            "du_first_mm": [15.0, 88.0, None],
             "status": ["done", "done", "failed"],
             "hinges": ["9I 29E 49I", "1E 9I 29E 56E", None],
             "mechanism": ["I-E-I", "E-I-E-E", None],
@@ -84,8 +85,12 @@ def test_the_map_puts_each_direction_beside_its_rigid_limit_and_keeps_failed_run
     assert settlement.du_over_rigid == pytest.approx(88.0 / 113.5)
     assert math.isnan(table.iloc[2].du_mm) and table.iloc[2].status == "failed"
     text = "\n".join(map_markdown(table))
-    assert "| -90 | 88.00 | (0.0, -88.0) | 1E 9I 29E 56E | 113.50 | 1E 8I 32E 56E | 113.50 | 1E 25I 49E 56E |" in text
-    assert "| -180 | - | - | - | - | - | - | - |" in text
+    assert (
+        "| -90 | 88.00 | 88.00 | (0.0, -88.0) | 1E 9I 29E 56E | 113.50 | 1E 8I 32E 56E | 113.50 | 1E 25I 49E 56E |"
+        in text
+    )
+    assert "| -180 | - | - | - | - | - | - | - | - |" in text
+    assert "| 0 | 15.00 | 20.00 | (20.0, 0.0) |" in text  # a snap survived: the first loss of stability before du
 
 
 def test_the_rigid_columns_are_rewritten_without_the_runs(tmp_path):

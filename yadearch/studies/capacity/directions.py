@@ -121,22 +121,25 @@ def reaction_curve(series: pd.DataFrame, direction_deg: float) -> pd.DataFrame:
 
 
 def map_markdown(table: pd.DataFrame) -> list[str]:
-    """The capacity map as a Markdown table: one row a direction, one column group a set."""
+    """The capacity map as a Markdown table: one row a direction, one column group a set (du_first,
+    the first loss of stability, beside du, the end of the path)."""
     sets = list(dict.fromkeys(table["set"]))
-    head = "| direction (deg) | " + " | ".join(f"{s} du (mm) | {s} (du_x, du_y) (mm) | {s} hinges" for s in sets)
+    head = "| direction (deg) | " + " | ".join(
+        f"{s} du_first (mm) | {s} du (mm) | {s} (du_x, du_y) (mm) | {s} hinges" for s in sets
+    )
     lines = [
         head + " | rigid du (mm) | rigid hinges | rigid du, other branch (mm) | its hinges |",
-        "|---" * (1 + 3 * len(sets) + 4) + "|",
+        "|---" * (1 + 4 * len(sets) + 4) + "|",
     ]
     for direction, rows in table.groupby("direction_deg", sort=False):
         cells = [f"{direction:g}"]
         for name in sets:
             row = rows[rows["set"] == name]
             if row.empty or not np.isfinite(row["du_mm"].iloc[0]):
-                cells += ["-", "-", "-"]
+                cells += ["-", "-", "-", "-"]
                 continue
             r = row.iloc[0]
-            cells += [f"{r.du_mm:.2f}", f"({r.du_x_mm:.1f}, {r.du_y_mm:.1f})", r.hinges or "-"]
+            cells += [_mm(r.du_first_mm), f"{r.du_mm:.2f}", f"({r.du_x_mm:.1f}, {r.du_y_mm:.1f})", r.hinges or "-"]
         first = rows.iloc[0]
         cells += [
             _mm(first.du_rigid_mm),
