@@ -10,7 +10,7 @@ from typing import Any
 
 import pandas as pd
 
-from yadearch.atomic import write_text_atomically
+from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.config import preset
 from yadearch.plotting.capacity import capacity_polar_figure, reaction_curves_figure
@@ -115,7 +115,7 @@ def paper_capacity_map(
             for name in SETS
         }
         reaction_curves_figure(curves, out / REACTION_FIGURE)
-    write_text_atomically(out / TABLE, table.to_csv(index=False))
+    write_csv_atomically(out / TABLE, table)
     capacity_polar_figure(table, out / POLAR_FIGURE)
     text = paper_capacity_report(table, dem_settings)
     write_text_atomically(out / REPORT, text)
