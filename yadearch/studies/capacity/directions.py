@@ -120,23 +120,24 @@ def reaction_curve(series: pd.DataFrame, direction_deg: float) -> pd.DataFrame:
     return pd.DataFrame({"delta_mm": states["delta_mm"].to_numpy(), "force_N": reaction.to_numpy()})
 
 
+SET_COLUMNS = ("du_first (mm)", "du (mm)", "(du_x, du_y) (mm)", "hinges")  # a set's columns in the map's table
+
+
 def map_markdown(table: pd.DataFrame) -> list[str]:
     """The capacity map as a Markdown table: one row a direction, one column group a set (du_first,
     the first loss of stability, beside du, the end of the path)."""
     sets = list(dict.fromkeys(table["set"]))
-    head = "| direction (deg) | " + " | ".join(
-        f"{s} du_first (mm) | {s} du (mm) | {s} (du_x, du_y) (mm) | {s} hinges" for s in sets
-    )
+    head = "| direction (deg) | " + " | ".join(f"{s} {column}" for s in sets for column in SET_COLUMNS)
     lines = [
         head + " | rigid du (mm) | rigid hinges | rigid du, other branch (mm) | its hinges |",
-        "|---" * (1 + 4 * len(sets) + 4) + "|",
+        "|---" * (1 + len(SET_COLUMNS) * len(sets) + 4) + "|",
     ]
     for direction, rows in table.groupby("direction_deg", sort=False):
         cells = [f"{direction:g}"]
         for name in sets:
             row = rows[rows["set"] == name]
             if row.empty or not np.isfinite(row["du_mm"].iloc[0]):
-                cells += ["-", "-", "-", "-"]
+                cells += ["-"] * len(SET_COLUMNS)
                 continue
             r = row.iloc[0]
             cells += [_mm(r.du_first_mm), f"{r.du_mm:.2f}", f"({r.du_x_mm:.1f}, {r.du_y_mm:.1f})", r.hinges or "-"]
