@@ -26,8 +26,7 @@ from yadearch.solve.collapse_mode import fold_mode
 from yadearch.solve.newton import BACKTRACKS, SUFFICIENT_DECREASE, largest_move
 from yadearch.solve.path import extrapolate
 from yadearch.solve.stages import Stage
-from yadearch.solve.static_path import StaticLoading
-from yadearch.solve.static_prediction import PREDICTOR_POINTS
+from yadearch.solve.static_path import PREDICTOR_POINTS, StaticLoading
 from yadearch.solve.static_state import StaticState
 from yadearch.solve.statics import WARM_UP_VOUSSOIRS, static_arch
 

@@ -24,24 +24,22 @@ from yadearch.case.mechanics import runaway_length
 from yadearch.case.support import path_end_mm
 from yadearch.model import units
 from yadearch.model.joint_law import JointForces
+from yadearch.solve import banded
 from yadearch.solve.collapse_mode import FoldMode, fold_mode
 from yadearch.solve.falls import fall
 from yadearch.solve.gravity_ramp import CONFIRMING_STEPS, GRAVITY_STEPS, ramps_to_stand
 from yadearch.solve.newton import Equilibrium, Solver, SolverSettings
-from yadearch.solve.path import PathResult, PathSettings, PathStep, first_snap, follow_path, path_settings
+from yadearch.solve.path import PathResult, PathSettings, PathStep, extrapolate, first_snap, follow_path, path_settings
 from yadearch.solve.stages import Stage, Verdict
-from yadearch.solve.static_prediction import PREDICTOR_POINTS, Predictions
 from yadearch.solve.static_state import PathParameter, StaticState
 from yadearch.solve.statics import StaticArch, static_arch
 
 SUBSTEPS = 8  # an increment Newton cannot solve at once is marched in this many steps
-CLOSER = 16  # a landing past the snap floor is tried again from this x nearer its fold: a snap lands as far,
-SHRINKING = 0.5  # ... a sharp turn of the path onto a branch continuing it at most this x as far
-SETTLED = 1e-3  # a descent landing this x the snap floor from the path's prediction has not left the path
+PREDICTOR_POINTS = 3  # accepted states the predictor extrapolates through (a parabola)
 
 
 @dataclass
-class StaticLoading(Predictions):
+class StaticLoading:
     """The path of one arch: its accepted states, the failures, and the solver's counts."""
 
     arch: StaticArch
@@ -131,11 +129,6 @@ class StaticLoading(Predictions):
                 self.failures[target] = landed
                 return landed.verdict
             if landed.moved > self.snap_floor:
-                closer, nearer, high = self._closer_landing(history, fold)
-                if closer is not None and closer.moved <= SHRINKING * landed.moved:  # a turn, not a jump
-                    history = [self._advance(nearer, high, closer)]
-                    lam, largest = high, max(largest, closer.moved)
-                    continue
                 self._trial_snaps.append({"fold_mm": [1e3 * fold[0], 1e3 * fold[1]], "move_mm": 1e3 * landed.moved})
             history = [self._advance(history, fold[1], landed)]
             lam, largest = fold[1], max(largest, landed.moved)
@@ -143,48 +136,20 @@ class StaticLoading(Predictions):
         self._trial.move = largest
         return Verdict.STABLE
 
-    def _locate_fold(
-        self, history: list[StaticState], ahead: float, width: float | None = None, settles: bool = False
-    ) -> tuple[list[StaticState], tuple[float, float]]:
+    def _locate_fold(self, history: list[StaticState], ahead: float) -> tuple[list[StaticState], tuple[float, float]]:
         """Bisect between the last state of `history` and `ahead` (where continuation failed) by
-        continuation until the bracket is narrower than `width` (default the path's tolerance): the
-        history extended to the bracket's lower end, and the bracket (m). With `settles`, a position
-        where Newton fails but the descent settles where the path predicts (`_settles`) is on the path."""
+        continuation until the bracket is narrower than the path's tolerance: the history extended to
+        the bracket's lower end, and the bracket (m)."""
         low, high = history[-1].lam, ahead
-        while high - low > (width or self.settings.tolerance):
+        while high - low > self.settings.tolerance:
             middle = 0.5 * (low + high)
             found = self._continue(history, middle)
-            if found is None and settles:
-                found = self._settles(history, middle)
             if found is None:
                 high = middle
             else:
                 history = (history + [self._advance(history, middle, found)])[-PREDICTOR_POINTS:]
                 low = middle
         return history, (low, high)
-
-    def _settles(self, history: list[StaticState], lam: float) -> Equilibrium | None:
-        """The descent's stable state at `lam` where it lands on the path's prediction (SETTLED x the snap
-        floor): Newton failed there at a joint's kink, not at a fold; None otherwise."""
-        landed = self._descend(history, lam)
-        return landed if landed.verdict == Verdict.STABLE and landed.moved <= SETTLED * self.snap_floor else None
-
-    def _closer_landing(
-        self, history: list[StaticState], fold: tuple[float, float]
-    ) -> tuple[Equilibrium | None, list[StaticState], float]:
-        """The descent again from CLOSER times nearer the fold (its bracket narrowed by continuation from
-        `history`'s end): its stable landing (None otherwise), the history to the narrowed bracket's lower
-        end, and its upper end (m). A snap lands as far from there; a path that turns sharply onto a
-        branch continuing it lands nearer in proportion (docs/atlas.md, "Two of the floor's snaps")."""
-        width, high = (fold[1] - fold[0]) / CLOSER, fold[1]
-        while True:
-            history, (_, high) = self._locate_fold(history, high, width, settles=True)
-            landed = self._descend(history, high)
-            on_path = landed.verdict == Verdict.STABLE and landed.moved <= SETTLED * self.snap_floor
-            if not on_path or high >= fold[1]:
-                return (landed if landed.verdict == Verdict.STABLE else None), history, high
-            # from the narrowed bracket's lower end the path reaches its upper end: the fold lies beyond
-            history, high = (history + [self._advance(history, high, landed)])[-PREDICTOR_POINTS:], fold[1]
 
     def _descend(self, history: list[StaticState], lam: float) -> Equilibrium:
         """The descent at support position `lam` from the state predicted there, going on while it falls
@@ -255,6 +220,46 @@ class StaticLoading(Predictions):
         state = self.accepted[-1]
         assert state.stiffness is not None  # every state is made from the solver's equilibrium
         return fold_mode(self.arch, state.u, state.stiffness, self.failures[self._failure_at(upper)].u, state.springs)
+
+    def predict(self, target: float, history: list[StaticState]) -> np.ndarray:
+        """Where the arch should be at `target`: a parabola (or a line) through `history`'s last states, or
+        from one state its tangent's response (a singular one: only the supports moved, for the descent)."""
+        last, recent = history[-1], history[-PREDICTOR_POINTS:]
+        lams = [s.lam for s in recent]
+        if len(set(lams)) == len(lams) >= 2:
+            return self.place(extrapolate(lams, [s.u for s in recent], target), target)
+        try:
+            return self.tangent_prediction(last.u, last.lam, last.forces.shear_force, last.springs, target)
+        except (np.linalg.LinAlgError, ValueError):
+            return self.place(last.u, target)
+
+    def tangent_prediction(
+        self,
+        u: np.ndarray,
+        lam: float,
+        shear: np.ndarray,
+        springs: np.ndarray | None,
+        target: float,
+        held: float | None = None,
+    ) -> np.ndarray:
+        """Where the free blocks' whole tangent (the joints, the loads' turning arms, the fill's springs) at
+        the equilibrium `u` (at `lam`, its joints' `shear`, the fill's `springs`) puts the arch at `target`,
+        with the path's live load or one `held` (LinAlgError or ValueError where the tangent is singular)."""
+        moved = self.place(u, target)
+        multiplier = self.parameter.multiplier(lam) if held is None else held
+        joints, _, tangent = self.solver.state(u, u, shear, multiplier=multiplier, springs=springs)
+        free = self.arch.free_dofs
+        driven = np.setdiff1d(np.arange(len(moved)), free)
+        load = -self.arch.stiffness(joints)[np.ix_(free, driven)] @ (moved - u)[driven]
+        more = self.parameter.multiplier(target) - multiplier if held is None else 0.0
+        if more:
+            load = load + more * self.arch.live_forces(u)
+        moved[free] += banded.solve(tangent, load)
+        return moved
+
+    def place(self, u: np.ndarray, lam: float) -> np.ndarray:
+        """`u` with the supports where the path's parameter `lam` puts them."""
+        return self.arch.with_supports(u, self.parameter.support(lam))
 
     # ---- the whole path ---------------------------------------------------------------------------
     def follow(self, on_step: Callable[[PathStep], None] | None = None) -> PathResult:
