@@ -6,6 +6,7 @@ the DEM; du_first and du side by side with the targets of docs/atlas.md checked.
         [--dem-set numerics.KEY=VALUE ...]
     .venv/bin/python scripts/atlas.py --dem-from-table   # the DEM column from OUT/atlas.csv, its runs gone
     .venv/bin/python scripts/atlas.py --invariance   # the static answers with each setting halved and doubled
+    .venv/bin/python scripts/atlas.py --invariance --snap-floor 0.001   # the same with another snap floor
     .venv/bin/python scripts/atlas.py --snap-refinement   # the snaps the floor moves, against a refined bracket
     .venv/bin/python scripts/atlas.py --dem-static-states   # the DEM column read at static equilibria, RUNS/dem-static
     .venv/bin/python scripts/atlas.py --figure-from-table   # OUT/atlas.pdf/.png redrawn from OUT/atlas.csv
@@ -33,9 +34,15 @@ import pandas as pd
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import preset
 from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK, STATIC_PATH_STATES
+from yadearch.errors import CaseError
 from yadearch.plotting.atlas import atlas_figure
 from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, engine_base, geometries, static_rows
-from yadearch.studies.atlas.invariance import invariance_markdown, invariance_rows, invariance_table
+from yadearch.studies.atlas.invariance import (
+    INVARIANCE_COMMAND,
+    invariance_markdown,
+    invariance_rows,
+    invariance_table,
+)
 from yadearch.studies.atlas.report import FIGURE, TABLE, travel_mm, write_atlas
 from yadearch.studies.atlas.rigid import compliant_table, rigid_table
 from yadearch.studies.atlas.snap_refinement import refinement_markdown, refinement_rows, snap_cases, verdicts
@@ -55,7 +62,7 @@ def run_engine(
     jobs: int,
     folder: str | None = None,
     dem_settings: Mapping[str, Any] = NO_DEM_SETTINGS,
-    **numerics: str,
+    **numerics: Any,
 ):
     """One engine's campaign of the atlas (summary-only run folders, with `numerics` besides, the DEM's
     with `dem_settings`) in RUNS/`folder` (default: the engine's name), resumed where it stopped."""
@@ -66,13 +73,22 @@ def run_engine(
         )
 
 
-def invariance(out: Path, runs: Path, jobs: int) -> None:
-    """The static answers of the atlas with each numerical setting halved and doubled:
-    OUT/invariance.csv and invariance.md."""
-    results = run_engine("static", invariance_rows(preset("set2")), runs, jobs, folder="invariance")
+def invariance(out: Path, runs: Path, jobs: int, floor: float | None = None) -> None:
+    """The static answers of the atlas with each numerical setting halved and doubled: OUT/invariance.csv
+    and invariance.md; with `floor`, the study with that snap floor as its default, in OUT/floor-FLOOR,
+    against OUT/invariance.csv where it exists."""
+    numerics: dict[str, Any] = {} if floor is None else {"snap_thickness_ratio": floor}
+    base = preset("set2").with_overrides({f"numerics.{key}": value for key, value in numerics.items()})
+    folder, command, default_floor = "invariance", INVARIANCE_COMMAND, None
+    if floor is not None:
+        folder, command = f"invariance-floor-{floor:g}", f"{INVARIANCE_COMMAND} --snap-floor {floor:g}"
+        default_floor = pd.read_csv(out / "invariance.csv") if (out / "invariance.csv").exists() else None
+        out = out / f"floor-{floor:g}"
+        out.mkdir(parents=True, exist_ok=True)
+    results = run_engine("static", invariance_rows(base), runs, jobs, folder=folder, **numerics)
     table = invariance_table(results)
     write_csv_atomically(out / "invariance.csv", table)
-    write_text_atomically(out / "invariance.md", invariance_markdown(table))
+    write_text_atomically(out / "invariance.md", invariance_markdown(table, command, default_floor))
     print(f"invariance -> {out / 'invariance.md'}")
 
 
@@ -122,6 +138,13 @@ def main() -> int:
         "--invariance", action="store_true", help="only the static answers with each setting halved and doubled"
     )
     parser.add_argument(
+        "--snap-floor",
+        type=float,
+        metavar="RATIO",
+        help="with --invariance: the study with the snap floor (numerics.snap_thickness_ratio) at RATIO ring "
+        "thicknesses as its default, in OUT/floor-RATIO, against OUT/invariance.csv",
+    )
+    parser.add_argument(
         "--snap-refinement",
         action="store_true",
         help="only the snaps that move du_first with the floor, against a refined bracket (reads OUT/invariance.csv)",
@@ -131,9 +154,14 @@ def main() -> int:
     dem_settings = dem_settings_of(parser, args)
     if args.dem_static_states and STATES_KEY in dem_settings:
         parser.error(f"--dem-static-states sets {STATES_KEY} itself; give it without --dem-set {STATES_KEY}")
+    if args.snap_floor is not None and not args.invariance:
+        parser.error("--snap-floor goes with --invariance")
     args.out.mkdir(parents=True, exist_ok=True)
     if args.invariance:
-        invariance(args.out, args.runs, args.jobs)
+        try:
+            invariance(args.out, args.runs, args.jobs, args.snap_floor)
+        except CaseError as error:  # a snap floor out of its range
+            parser.error(f"--snap-floor: {error}")
         return 0
     if args.snap_refinement:
         snap_refinement(args.out)

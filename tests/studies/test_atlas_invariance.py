@@ -12,6 +12,7 @@ from yadearch.studies.atlas.invariance import (
     BASE,
     REFINED,
     SETTINGS,
+    floor_comparison,
     invariance_markdown,
     invariance_rows,
     invariance_table,
@@ -79,3 +80,32 @@ def test_a_refined_run_that_does_not_collapse_is_left_out_of_the_comparison():
     assert math.isnan(row["du_first_mm_x0.125"]) and math.isnan(row["du_first_mm_from_finest"])
     assert row["outcome_changed_by"] == ""  # a refinement is not one of the halved and doubled settings
     assert row["outcome_refined_by"] == "increments_x0.125"
+
+
+def test_a_study_with_another_snap_floor_is_compared_with_the_default_floors():
+    """Three arches collapsing beyond 10 mm at both floors: du_first held under every variant in two at the
+    lower floor (one at the default), earlier at the lower floor in one; a short collapse is left out."""
+
+    def table(first: list[float], spread: list[float]) -> pd.DataFrame:
+        return pd.DataFrame(
+            {
+                "case": ["a", "b", "c", "short"],
+                "outcome": ["collapse"] * 4,
+                "du_mm": [50.0, 60.0, 70.0, 5.0],
+                "du_first_mm": [*first, 5.0],
+                "du_mm_spread": [0.0, 0.002, 0.0, 0.2],
+                "du_first_mm_spread": [*spread, 0.2],
+            }
+        )
+
+    default = table([40.0, 60.0, 30.0], [0.5, 0.0, 0.3])
+    lower = table([40.1, 20.0, 30.0], [0.0, 0.0, 0.3])
+    text = "\n".join(floor_comparison(lower, default))
+    assert "arches both floors collapse beyond 10 mm: 3; under every variant du within 1 % in 3 (3 at" in text
+    assert "du_first in 2 (1)" in text
+    assert "within 1 % in 2, earlier in 1 (a smaller snap counted), later in 0." in text
+    assert "| b | 60.00 | 20.00 | 60.00 |" in text
+    study = invariance_table(results({BASE: 100.0}, {BASE: 60.0}, {}))
+    assert "Regenerate with `atlas.py --invariance --snap-floor 0.001`" in invariance_markdown(
+        study, "atlas.py --invariance --snap-floor 0.001"
+    )

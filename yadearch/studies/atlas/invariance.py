@@ -28,6 +28,8 @@ SETTINGS = {  # a setting's name in the table: the numerics it scales together
 REFINED = (0.25, 0.125)  # the increments refined further: where does the answer go as they shrink?
 TOLERANCE = 0.01  # the standard: a result that moves by more than 1 % is not a result yet
 BASE = "base"
+INVARIANCE_COMMAND = ".venv/bin/python scripts/atlas.py --invariance"
+LONG_COLLAPSE_MM = 10.0  # collapses compared across snap floors: the 0.1 mm bracket is over 1 % of a shorter du
 
 
 def variants(base: ArchCase) -> dict[str, dict[str, float]]:
@@ -107,9 +109,12 @@ def _refinement(group: pd.DataFrame, base: pd.Series) -> dict[str, float]:
     return row
 
 
-def invariance_markdown(table: pd.DataFrame) -> str:
+def invariance_markdown(
+    table: pd.DataFrame, command: str = INVARIANCE_COMMAND, default_floor: pd.DataFrame | None = None
+) -> str:
     """invariance.md: how many arches keep du and du_first within 1 % under every variant, and each
-    exception with the variant that moves it."""
+    exception with the variant that moves it; the study made by `command`, and for one made with another
+    snap floor its answers against those of the default floor's study (`default_floor`, a table)."""
     collapsed = table[table["outcome"] == "collapse"]
     held = {
         column: int((collapsed[f"{column}_spread"].fillna(0.0) <= TOLERANCE).sum())
@@ -119,7 +124,7 @@ def invariance_markdown(table: pd.DataFrame) -> str:
     lines = [
         "# The atlas's answers against the numerics (static engine)",
         "",
-        "Regenerate with `.venv/bin/python scripts/atlas.py --invariance` (docs/atlas.md). Every arch of "
+        f"Regenerate with `{command}` (docs/atlas.md). Every arch of "
         f"the atlas at kn {', '.join(f'{k:g}' for k in INVARIANCE_KNS_N_PER_MM3)} N/mm³ with each setting "
         f"halved and doubled ({', '.join(SETTINGS)}): {len(table)} arches, {len(collapsed)} collapse by "
         "default.",
@@ -150,6 +155,8 @@ def invariance_markdown(table: pd.DataFrame) -> str:
             ],
         )
     lines += _refinement_markdown(collapsed)
+    if default_floor is not None:
+        lines += floor_comparison(table, default_floor)
     if not changed.empty:
         lines += ["", "## Outcome changed", ""]
         lines += markdown_table(
@@ -196,6 +203,44 @@ def _refinement_markdown(collapsed: pd.DataFrame) -> list[str]:
                     f"{r['du_first_mm_from_finest']:.2%}",
                 ]
                 for _, r in apart.iterrows()
+            ],
+        )
+    return lines
+
+
+def floor_comparison(table: pd.DataFrame, default_floor: pd.DataFrame) -> list[str]:
+    """The section comparing a study made with another snap floor (`table`) with the default floor's:
+    among the arches both collapse beyond LONG_COLLAPSE_MM, du and du_first within 1 % under every
+    variant in each, and where this floor's du_first lies against the default's."""
+    both = table.merge(default_floor, on="case", suffixes=("", "_default"))
+    long = both[
+        (both["outcome"] == "collapse")
+        & (both["outcome_default"] == "collapse")
+        & (both["du_mm_default"] >= LONG_COLLAPSE_MM)
+    ]
+
+    def held(column: str) -> int:
+        return int((long[column].fillna(0.0) <= TOLERANCE).sum())
+
+    moved = (long["du_first_mm"] - long["du_first_mm_default"]) / long["du_first_mm_default"]
+    earlier, later = long[moved < -TOLERANCE], int((moved > TOLERANCE).sum())
+    lines = [
+        "",
+        "## Against the default snap floor (invariance.csv)",
+        "",
+        f"- arches both floors collapse beyond {LONG_COLLAPSE_MM:g} mm: {len(long)}; under every variant du "
+        f"within {TOLERANCE * 100:g} % in {held('du_mm_spread')} ({held('du_mm_spread_default')} at the "
+        f"default floor), du_first in {held('du_first_mm_spread')} ({held('du_first_mm_spread_default')}).",
+        f"- du_first against the default floor's: within {TOLERANCE * 100:g} % in "
+        f"{len(long) - len(earlier) - later}, earlier in {len(earlier)} (a smaller snap counted), later in {later}.",
+    ]
+    if not earlier.empty:
+        lines += ["", "Earlier:", ""]
+        lines += markdown_table(
+            ["case", "du (mm)", "du_first (mm)", "at the default floor (mm)"],
+            [
+                [r["case"], f"{r['du_mm']:.2f}", f"{r['du_first_mm']:.2f}", f"{r['du_first_mm_default']:.2f}"]
+                for _, r in earlier.sort_values("du_first_mm").iterrows()
             ],
         )
     return lines
