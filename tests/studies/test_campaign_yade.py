@@ -32,6 +32,7 @@ COARSE = [
     "--set",
     "progress_every_s=1e9",
 ]
+SLOW_RATE = "support_rate_mm_per_s=3"  # a run ten times longer than COARSE's, for an interrupt to land in it
 TABLE = "kn_N_per_mm3\n0.1\n0.12\n0.2\n"  # three coarse arches
 COMPARED = [
     "run",
@@ -227,7 +228,8 @@ def test_ctrl_c_at_a_terminal_interrupts_a_run_instead_of_failing_it(tmp_path):
     from yadearch.dem.simulate import SCRATCH_RECORD
 
     out = tmp_path / "run"
-    argv = [sys.executable, "-m", "yadearch.cli", "run", *COARSE, "--kn", "0.1", "--out", str(out)]
+    slow = [SLOW_RATE if a == "support_rate_mm_per_s=30" else a for a in COARSE]  # still in YADE at the Ctrl-C
+    argv = [sys.executable, "-m", "yadearch.cli", "run", *slow, "--kn", "0.1", "--out", str(out)]
     run = subprocess.Popen(
         argv,
         cwd=REPO,
@@ -244,7 +246,7 @@ def test_ctrl_c_at_a_terminal_interrupts_a_run_instead_of_failing_it(tmp_path):
         time.sleep(0.1)
     scratch = Path(record.read_text().strip())  # the yade-XXXXXX folder this run's YADE made
     assert scratch.name.startswith("yade-") and scratch.is_dir()
-    time.sleep(3.0)  # inside YADE now (the run takes ~10 s)
+    time.sleep(3.0)  # inside YADE now (the run takes ~30 s at SLOW_RATE; 3 s at the coarse rate on a fast day)
     os.killpg(run.pid, signal.SIGINT)
     _, stderr = run.communicate(timeout=60)
     assert run.returncode == 1 and "was interrupted" in stderr and "run it again to resume" in stderr, stderr
