@@ -33,6 +33,14 @@ COARSE = [
     "progress_every_s=1e9",
 ]
 SLOW_RATE = "support_rate_mm_per_s=3"  # a run ten times longer than COARSE's, for an interrupt to land in it
+SLOWER_RATE = "support_rate_mm_per_s=10"  # ... three times longer
+
+
+def slowed(arguments: list[str], rate: str) -> list[str]:
+    """`arguments` with the support's rate set to `rate` (`--set` text) instead of COARSE's."""
+    return [rate if a.startswith("support_rate_mm_per_s=") else a for a in arguments]
+
+
 TABLE = "kn_N_per_mm3\n0.1\n0.12\n0.2\n"  # three coarse arches
 COMPARED = [
     "run",
@@ -171,14 +179,15 @@ def test_a_sigkilled_campaign_leaves_no_orphan_and_resumes_where_it_stopped(tmp_
 
     out = tmp_path / "sweep"
     table = tmp_path / "table.csv"
-    # runs start in decreasing expected cost (sqrt(kn)): kn 0.12 first, then kn 0.1 (about 10 s)
+    # runs start in decreasing expected cost (sqrt(kn)): kn 0.12 first, then kn 0.1 (about 10 s at
+    # SLOWER_RATE; 3 s at the coarse rate on a fast day, too short for the kill 2 s in to land in it)
     table.write_text("kn_N_per_mm3\n0.12\n0.1\n")
     argv = [
         sys.executable,
         "-m",
         "yadearch.cli",
         "sweep",
-        *COARSE,
+        *slowed(COARSE, SLOWER_RATE),
         "--table",
         str(table),
         "--out",
@@ -228,8 +237,7 @@ def test_ctrl_c_at_a_terminal_interrupts_a_run_instead_of_failing_it(tmp_path):
     from yadearch.dem.simulate import SCRATCH_RECORD
 
     out = tmp_path / "run"
-    slow = [SLOW_RATE if a == "support_rate_mm_per_s=30" else a for a in COARSE]  # still in YADE at the Ctrl-C
-    argv = [sys.executable, "-m", "yadearch.cli", "run", *slow, "--kn", "0.1", "--out", str(out)]
+    argv = [sys.executable, "-m", "yadearch.cli", "run", *slowed(COARSE, SLOW_RATE), "--kn", "0.1", "--out", str(out)]
     run = subprocess.Popen(
         argv,
         cwd=REPO,
