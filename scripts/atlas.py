@@ -78,7 +78,7 @@ def invariance(out: Path, runs: Path, jobs: int, floor: float | None = None) -> 
     and invariance.md; with `floor`, the study with that snap floor as its default, in OUT/floor-FLOOR,
     against OUT/invariance.csv where it exists."""
     numerics: dict[str, Any] = {} if floor is None else {"snap_thickness_ratio": floor}
-    base = preset("set2").with_overrides({f"numerics.{key}": value for key, value in numerics.items()})
+    base = engine_base("static", numerics)  # the case run_engine starts each run from
     folder, command, default_floor = "invariance", INVARIANCE_COMMAND, None
     if floor is not None:
         folder, command = f"invariance-floor-{floor:g}", f"{INVARIANCE_COMMAND} --snap-floor {floor:g}"

@@ -95,6 +95,12 @@ def invariance_table(results: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
+def _held(arches: pd.DataFrame, spread: str) -> int:
+    """How many of `arches` keep their answer within TOLERANCE under every variant (`spread`, the column
+    of its largest move; none measured counts as held)."""
+    return int((arches[spread].fillna(0.0) <= TOLERANCE).sum())
+
+
 def _refinement(group: pd.DataFrame, base: pd.Series) -> dict[str, float]:
     """du and du_first with the increments refined (NaN where that variant was not run or does not
     collapse), and the default's relative distance from the finest."""
@@ -116,10 +122,7 @@ def invariance_markdown(
     exception with the variant that moves it; the study made by `command`, and for one made with another
     snap floor its answers against those of the default floor's study (`default_floor`, a table)."""
     collapsed = table[table["outcome"] == "collapse"]
-    held = {
-        column: int((collapsed[f"{column}_spread"].fillna(0.0) <= TOLERANCE).sum())
-        for column in ("du_mm", "du_first_mm")
-    }
+    held = {column: _held(collapsed, f"{column}_spread") for column in ("du_mm", "du_first_mm")}
     changed = table[table["outcome_changed_by"].fillna("") != ""]
     lines = [
         "# The atlas's answers against the numerics (static engine)",
@@ -219,9 +222,8 @@ def floor_comparison(table: pd.DataFrame, default_floor: pd.DataFrame) -> list[s
         & (both["du_mm_default"] >= LONG_COLLAPSE_MM)
     ]
 
-    def held(column: str) -> int:
-        return int((long[column].fillna(0.0) <= TOLERANCE).sum())
-
+    spreads = [f"{c}_spread{floor}" for c in ("du_mm", "du_first_mm") for floor in ("", "_default")]
+    held = {spread: _held(long, spread) for spread in spreads}
     moved = (long["du_first_mm"] - long["du_first_mm_default"]) / long["du_first_mm_default"]
     earlier, later = long[moved < -TOLERANCE], int((moved > TOLERANCE).sum())
     lines = [
@@ -229,8 +231,8 @@ def floor_comparison(table: pd.DataFrame, default_floor: pd.DataFrame) -> list[s
         "## Against the default snap floor (invariance.csv)",
         "",
         f"- arches both floors collapse beyond {LONG_COLLAPSE_MM:g} mm: {len(long)}; under every variant du "
-        f"within {TOLERANCE * 100:g} % in {held('du_mm_spread')} ({held('du_mm_spread_default')} at the "
-        f"default floor), du_first in {held('du_first_mm_spread')} ({held('du_first_mm_spread_default')}).",
+        f"within {TOLERANCE * 100:g} % in {held['du_mm_spread']} ({held['du_mm_spread_default']} at the "
+        f"default floor), du_first in {held['du_first_mm_spread']} ({held['du_first_mm_spread_default']}).",
         f"- du_first against the default floor's: within {TOLERANCE * 100:g} % in "
         f"{len(long) - len(earlier) - later}, earlier in {len(earlier)} (a smaller snap counted), later in {later}.",
     ]
