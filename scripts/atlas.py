@@ -7,6 +7,7 @@ the DEM; du_first and du side by side with the targets of docs/atlas.md checked.
     .venv/bin/python scripts/atlas.py --dem-from-table   # the DEM column from OUT/atlas.csv, its runs gone
     .venv/bin/python scripts/atlas.py --invariance   # the static answers with each setting halved and doubled
     .venv/bin/python scripts/atlas.py --invariance --snap-floor 0.001   # the same with another snap floor
+    .venv/bin/python scripts/atlas.py --invariance --bracket-ratio 0.005   # ... with du's bracket relative
     .venv/bin/python scripts/atlas.py --snap-refinement   # the snaps the floor moves, against a refined bracket
     .venv/bin/python scripts/atlas.py --dem-static-states   # the DEM column read at static equilibria, RUNS/dem-static
     .venv/bin/python scripts/atlas.py --figure-from-table   # OUT/atlas.pdf/.png redrawn from OUT/atlas.csv
@@ -39,6 +40,8 @@ from yadearch.plotting.atlas import atlas_figure
 from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, engine_base, geometries, static_rows
 from yadearch.studies.atlas.invariance import (
     INVARIANCE_COMMAND,
+    bracket_comparison,
+    floor_comparison,
     invariance_markdown,
     invariance_rows,
     invariance_table,
@@ -73,22 +76,31 @@ def run_engine(
         )
 
 
-def invariance(out: Path, runs: Path, jobs: int, floor: float | None = None) -> None:
+STUDY_DEFAULTS = {  # an invariance study with another default: its option, the setting, its folder's prefix
+    "--snap-floor": ("snap_thickness_ratio", "floor"),
+    "--bracket-ratio": ("du_tolerance_ratio", "bracket-ratio"),
+}
+
+
+def invariance(out: Path, runs: Path, jobs: int, option: str | None = None, value: float = 0.0) -> None:
     """The static answers of the atlas with each numerical setting halved and doubled: OUT/invariance.csv
-    and invariance.md; with `floor`, the study with that snap floor as its default, in OUT/floor-FLOOR,
-    against OUT/invariance.csv where it exists."""
-    numerics: dict[str, Any] = {} if floor is None else {"snap_thickness_ratio": floor}
+    and invariance.md; with `option` (one of STUDY_DEFAULTS) the study with its setting at `value` as the
+    default, in OUT/PREFIX-VALUE, against OUT/invariance.csv where it exists."""
+    key, prefix = STUDY_DEFAULTS[option] if option else ("", "")
+    numerics: dict[str, Any] = {key: value} if option else {}
     base = engine_base("static", numerics)  # the case run_engine starts each run from
-    folder, command, default_floor = "invariance", INVARIANCE_COMMAND, None
-    if floor is not None:
-        folder, command = f"invariance-floor-{floor:g}", f"{INVARIANCE_COMMAND} --snap-floor {floor:g}"
-        default_floor = pd.read_csv(out / "invariance.csv") if (out / "invariance.csv").exists() else None
-        out = out / f"floor-{floor:g}"
+    folder, command, default = "invariance", INVARIANCE_COMMAND, None
+    if option:
+        folder, command = f"invariance-{prefix}-{value:g}", f"{INVARIANCE_COMMAND} {option} {value:g}"
+        default = pd.read_csv(out / "invariance.csv") if (out / "invariance.csv").exists() else None
+        out = out / f"{prefix}-{value:g}"
         out.mkdir(parents=True, exist_ok=True)
     results = run_engine("static", invariance_rows(base), runs, jobs, folder=folder, **numerics)
     table = invariance_table(results)
+    compare = floor_comparison if option == "--snap-floor" else bracket_comparison
+    comparison = compare(table, default) if default is not None else []
     write_csv_atomically(out / "invariance.csv", table)
-    write_text_atomically(out / "invariance.md", invariance_markdown(table, command, default_floor))
+    write_text_atomically(out / "invariance.md", invariance_markdown(table, command, comparison))
     print(f"invariance -> {out / 'invariance.md'}")
 
 
@@ -145,6 +157,13 @@ def main() -> int:
         "thicknesses as its default, in OUT/floor-RATIO, against OUT/invariance.csv",
     )
     parser.add_argument(
+        "--bracket-ratio",
+        type=float,
+        metavar="RATIO",
+        help="with --invariance: the study with du's bracket at most RATIO of its upper end "
+        "(numerics.du_tolerance_ratio) as its default, in OUT/bracket-ratio-RATIO, against OUT/invariance.csv",
+    )
+    parser.add_argument(
         "--snap-refinement",
         action="store_true",
         help="only the snaps that move du_first with the floor, against a refined bracket (reads OUT/invariance.csv)",
@@ -154,14 +173,17 @@ def main() -> int:
     dem_settings = dem_settings_of(parser, args)
     if args.dem_static_states and STATES_KEY in dem_settings:
         parser.error(f"--dem-static-states sets {STATES_KEY} itself; give it without --dem-set {STATES_KEY}")
-    if args.snap_floor is not None and not args.invariance:
-        parser.error("--snap-floor goes with --invariance")
+    chosen = {option: getattr(args, option[2:].replace("-", "_")) for option in STUDY_DEFAULTS}
+    given = [(option, value) for option, value in chosen.items() if value is not None]
+    if given and not args.invariance or len(given) > 1:
+        parser.error(f"{' or '.join(STUDY_DEFAULTS)} goes with --invariance, one of them at a time")
     args.out.mkdir(parents=True, exist_ok=True)
     if args.invariance:
+        option, value = given[0] if given else (None, 0.0)
         try:
-            invariance(args.out, args.runs, args.jobs, args.snap_floor)
-        except CaseError as error:  # a snap floor out of its range
-            parser.error(f"--snap-floor: {error}")
+            invariance(args.out, args.runs, args.jobs, option, value)
+        except CaseError as error:  # a setting out of its range
+            parser.error(f"{option}: {error}")
         return 0
     if args.snap_refinement:
         snap_refinement(args.out)

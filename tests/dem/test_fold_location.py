@@ -5,6 +5,7 @@ model moves is held on. Fake live arches, no YADE."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -106,6 +107,16 @@ def test_a_snap_is_made_from_its_fold_located_to_the_paths_tolerance():
     path.follow()
     _, high = assert_one_snap_located(path, JUMP)
     assert arch.snaps_made_at[-1] == pytest.approx(high)  # the branch taken from just past the fold
+
+
+def test_a_relative_bracket_locates_the_fold_to_its_share_of_the_folds_position():
+    """numerics.du_tolerance_ratio: the DEM bisects a fold at 31 mm to 0.1 % of it (0.031 mm), not to the
+    0.1 mm of `tolerance` alone, as the static engine does (`PathSettings.bracket`)."""
+    relative = replace(SETTINGS, relative_tolerance=0.001)
+    path = EquilibriumPath(SnappingArch(), relative)  # type: ignore[arg-type]
+    path.follow()
+    low, high = assert_one_snap_located(path, JUMP)
+    assert high - low <= relative.relative_tolerance * high < SETTINGS.tolerance
 
 
 def test_a_path_without_snaps_is_not_bisected():

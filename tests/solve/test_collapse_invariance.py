@@ -1,7 +1,9 @@
 """du and du_first are facts of the arch, not of the numerics (docs/numerics.md, "Collapse"): every
 numerical setting of the static engine halved and doubled (the increments, the bracket, the solver's
 tolerance, its largest step and its iteration budgets) moves neither by more than 1 %, on an arch
-whose path snaps before it collapses (the spreading semicircle) and on the paper's set 2."""
+whose path snaps before it collapses (the spreading semicircle), on the paper's set 2 and on a thin
+pointed arch that collapses after 0.16 mm (its bracket relative, `du_tolerance_ratio`: 0.1 mm would be
+60 % of du, and halving or doubling it moves du by 20 %)."""
 
 from __future__ import annotations
 
@@ -15,9 +17,11 @@ from yadearch.results.summary import collapse_fields
 from yadearch.solve.newton import SolverSettings
 from yadearch.solve.stages import Outcome
 from yadearch.solve.static_path import StaticLoading
+from yadearch.studies.atlas.grid import Geometry
+from yadearch.studies.campaigns.grid import RUN_COLUMN, qualified_name
 
 INVARIANCE = 0.01  # the standard: a result that moves more than 1 % is not a result
-PATH_SETTINGS = ("first_increment_mm", "max_increment_mm", "du_tolerance_mm")
+PATH_SETTINGS = ("first_increment_mm", "max_increment_mm", "du_tolerance_mm", "du_tolerance_ratio")
 DEFAULT_SOLVER = SolverSettings()
 
 
@@ -45,9 +49,19 @@ def outcome(case: ArchCase, solver: SolverSettings = DEFAULT_SOLVER) -> dict:
     return collapse_fields(path, loading.arch.movement, loading.first_loss)
 
 
+RELATIVE_BRACKET = 0.005  # numerics.du_tolerance_ratio: du's bracket at most 0.5 % of du
+THIN_POINTED_TILT = {  # the atlas's pointed arch t/R 0.08 at kn 100, a support tilting: du 0.16 mm
+    **{
+        qualified_name(key): value
+        for key, value in Geometry("pointed", "tilt", 0.08).row(100.0).items()
+        if key != RUN_COLUMN
+    },
+    "numerics.du_tolerance_ratio": RELATIVE_BRACKET,
+}
 CASES = {
     "spreading semicircle, kn 100": preset("set2").with_overrides(SPREADING_SEMICIRCLE),
     "set 2": preset("set2"),
+    "thin pointed arch tilting, kn 100": preset("set2").with_overrides(THIN_POINTED_TILT),
 }
 
 

@@ -72,6 +72,30 @@ def test_du_is_bracketed_within_the_tolerance(du):
     assert abs(result.du - du) <= SETTINGS.tolerance / 2
 
 
+RELATIVE = PathSettings(
+    first_increment=2.0, max_increment=5.0, growth=1.5, tolerance=0.1, max_displacement=150.0, relative_tolerance=0.005
+)
+
+
+@pytest.mark.parametrize("du", [0.013, 0.35, 2.07, 15.3, 88.29])
+def test_a_relative_bracket_locates_a_short_du_as_finely_relative_as_a_long_one(du):
+    result = follow_path(FakeArch(du), RELATIVE)
+    assert result.lower <= du < result.upper
+    width = result.upper - result.lower
+    assert width <= max(RELATIVE.relative_tolerance * result.upper, 0.01 * RELATIVE.tolerance)
+    assert width <= RELATIVE.tolerance
+    assert abs(result.du - du) <= 0.5 * max(RELATIVE.relative_tolerance * du, 0.01 * RELATIVE.tolerance) * 1.01
+
+
+def test_the_bracket_is_the_narrower_of_its_width_and_its_share_of_the_upper_end():
+    assert RELATIVE.bracket(100.0) == RELATIVE.tolerance  # 0.5 % of 100 is wider than 0.1
+    assert RELATIVE.bracket(2.0) == pytest.approx(0.01)
+    assert RELATIVE.bracket(0.0) == pytest.approx(0.001)  # never below a hundredth of the width
+    assert SETTINGS.bracket(2.0) == SETTINGS.tolerance  # no relative part: the width alone
+    with pytest.raises(ValueError, match="relative_tolerance"):
+        PathSettings(2.0, 5.0, 1.5, 0.1, 150.0, relative_tolerance=1.5)
+
+
 def test_a_path_started_from_an_equilibrium_part_way_goes_on_from_there():
     """A scene put in a known equilibrium at 30 mm (a rigid analysis's state) is loaded from it:
     the first increment starts there, and a discarded state falls back to it, not to zero."""

@@ -12,6 +12,7 @@ from yadearch.studies.atlas.invariance import (
     BASE,
     REFINED,
     SETTINGS,
+    bracket_comparison,
     floor_comparison,
     invariance_markdown,
     invariance_rows,
@@ -27,6 +28,8 @@ def test_every_setting_is_halved_and_doubled_beside_the_default():
     assert chosen["increments_x0.5"] == {"first_increment_mm": 0.5, "max_increment_mm": 1.25}
     assert chosen["increments_x0.125"] == {"first_increment_mm": 0.125, "max_increment_mm": 0.3125}
     assert chosen["snap_floor_x2"] == {"snap_thickness_ratio": 0.02}
+    relative = variants(base.with_overrides({"numerics.du_tolerance_ratio": 0.005}))
+    assert relative["bracket_x0.5"] == {"du_tolerance_mm": 0.05, "du_tolerance_ratio": 0.0025}  # halved together
     rows = invariance_rows(base)
     assert len({r["run"] for r in rows}) == len(rows)
 
@@ -109,3 +112,28 @@ def test_a_study_with_another_snap_floor_is_compared_with_the_default_floors():
     assert "Regenerate with `atlas.py --invariance --snap-floor 0.001`" in invariance_markdown(
         study, "atlas.py --invariance --snap-floor 0.001"
     )
+
+
+def test_a_study_with_a_relative_bracket_is_compared_with_the_default_brackets():
+    """Two short collapses whose du the default bracket moved beyond 1 % and the relative one holds, one
+    long collapse that neither moves; the relative bracket's changes of the default answers listed."""
+
+    def table(du: list[float], spread: list[float]) -> pd.DataFrame:
+        return pd.DataFrame(
+            {
+                "case": ["short", "shorter", "long"],
+                "outcome": ["collapse"] * 3,
+                "du_mm": du,
+                "du_first_mm": du,
+                "du_mm_spread": spread,
+                "du_first_mm_spread": spread,
+            }
+        )
+
+    default = table([1.52, 0.156, 60.0], [0.03, 0.2, 0.001])
+    relative = table([1.47, 0.163, 60.0], [0.004, 0.003, 0.001])
+    text = "\n".join(bracket_comparison(relative, default))
+    assert "arches both collapse: 3; under every variant du within 1 % in 3 (1 with the default bracket)" in text
+    assert "arches both collapse beyond 10 mm: 1; under every variant du within 1 % in 1 (1 with" in text
+    assert "The default answers the relative bracket moves (2):" in text
+    assert "| shorter | 0.163 | 0.156 | 0.163 | 0.156 |" in text and "| long |" not in text

@@ -11,6 +11,7 @@ SUMMARY_RUN_FILES = "summary"  # numerics.run_files: case.toml, summary.json and
 # a block moving half the ring's thickness at a fixed support has run away: far beyond any hinge snap
 # (a snap moves blocks by a few hundredths of the thickness), well short of a fallen arch
 RUNAWAY_THICKNESS_RATIO = 0.5
+LEAST_BRACKET = 0.01  # a relative bracket narrows to this x du_tolerance_mm at most (a du near 0)
 SNAP_THICKNESS_RATIO = 0.01  # a state this x the ring's thickness off its branch's prediction is on another branch
 STATIC_ENGINE = "static"  # numerics.engine: Newton's method on the same blocks and joints
 NO_INCREMENTS_CHECK = "none"  # numerics.increments_check: the path solved once
@@ -58,9 +59,8 @@ class NumericsConfig:
             **number_meta(
                 0,
                 1e5,
-                doc="acceleration and braking of the support at the start and end of each move (mm/s^2); "
-                "0 = instantaneous. The same at any kn: it sets the inertial load of the moving arch (640 = "
-                "0.065 g)",
+                doc="acceleration and braking of the support at the start and end of each move (mm/s^2); 0 = "
+                "instantaneous. The same at any kn: it sets the inertial load of the moving arch (640 = 0.065 g)",
             ),
             "predates": 0.0,
         },
@@ -87,9 +87,8 @@ class NumericsConfig:
             0,
             1,
             high_open=True,
-            doc="YADE local damping during the equilibrium holds that decide du; "
-            "fixed apart from `damping`, because it decides how fast a creeping "
-            "near-critical arch moves and so the hold's verdict",
+            doc="YADE local damping during the equilibrium holds that decide du; fixed apart from `damping`, "
+            "because it decides how fast a creeping near-critical arch moves and so the hold's verdict",
         ),
     )
     timestep_safety: float = field(
@@ -101,9 +100,8 @@ class NumericsConfig:
         metadata=number_meta(
             1,
             256,
-            doc="OpenMP threads of the YADE process "
-            "(they speed up CGAL contacts, x1.8 with 2, not joint elements, x0.15-0.93 "
-            "with 2; runs are bit-reproducible with 1 only)",
+            doc="OpenMP threads of the YADE process (they speed up CGAL contacts, x1.8 with 2, not joint "
+            "elements, x0.15-0.93 with 2; runs are bit-reproducible with 1 only)",
         ),
     )
     contact_model: str = field(
@@ -130,10 +128,8 @@ class NumericsConfig:
         metadata=number_meta(
             0,
             1e6,
-            doc="gravity grows from 0 to "
-            "full over this many periods of a voussoir vibrating on its "
-            "joints (pi x critical time step), equally gentle at any kn; a "
-            "sudden load overshoots",
+            doc="gravity grows from 0 to full over this many periods of a voussoir vibrating on its joints "
+            "(pi x critical time step), equally gentle at any kn; a sudden load overshoots",
         ),
     )
     selfweight_max_s: float = field(
@@ -146,9 +142,8 @@ class NumericsConfig:
             0,
             100,
             low_open=True,
-            doc="simulated time allowed to find equilibrium at a fixed support (s); "
-            "a near-critical arch can creep for longer than 0.5 s before it settles "
-            "(docs/numerics.md)",
+            doc="simulated time allowed to find equilibrium at a fixed support (s); a near-critical arch can "
+            "creep for longer than 0.5 s before it settles (docs/numerics.md)",
         ),
     )
     hold_min_s: float = field(
@@ -165,9 +160,8 @@ class NumericsConfig:
                 0,
                 1000,
                 low_open=True,
-                doc="before du is bracketed, its lower state relaxes until every block is "
-                "slower than this (mm/s): a state accepted while still creeping fails every move near "
-                "collapse",
+                doc="before du is bracketed, its lower state relaxes until every block is slower than this "
+                "(mm/s): a state accepted while still creeping fails every move near collapse",
             ),
             "predates": 1e9,
         },
@@ -205,8 +199,8 @@ class NumericsConfig:
                 0,
                 1000,
                 low_open=True,
-                doc="support displacement of the first loading increment (mm); each "
-                "increment ends in a relaxation to equilibrium",
+                doc="support displacement of the first loading increment (mm); each increment ends in a "
+                "relaxation to equilibrium",
             ),
             "predates": 0.0,
         },
@@ -217,9 +211,8 @@ class NumericsConfig:
             0,
             1000,
             low_open=True,
-            doc="largest loading increment (mm), reached while the arch "
-            "follows the support; larger ones let a relaxation jump between two "
-            "positions of hinge A (docs/validation.md)",
+            doc="largest loading increment (mm), reached while the arch follows the support; larger ones let "
+            "a relaxation jump between two positions of hinge A (docs/validation.md)",
         ),
     )
     increment_growth: float = field(
@@ -227,6 +220,19 @@ class NumericsConfig:
     )
     du_tolerance_mm: float = field(
         default=0.1, metadata=number_meta(0, 10, low_open=True, doc="width of the bracket that locates du (mm)")
+    )
+    du_tolerance_ratio: float = field(
+        default=0.0,
+        metadata={
+            **number_meta(
+                0,
+                0.1,
+                doc="the bracket that locates du, and each fold, at most this fraction of its upper end too; 0 = "
+                "du_tolerance_mm alone; 0.005 holds a short du within 1 % when the bracket is halved or doubled "
+                "(docs/numerics.md)",
+            ),
+            "predates": 0.0,
+        },
     )
     hinge_rotation_mrad: float = field(
         default=2.0,

@@ -21,6 +21,7 @@ from yadearch.case.mechanics import (
 )
 from yadearch.case.numerics_section import (
     JOINT_CONTACTS,
+    LEAST_BRACKET,
     NO_INCREMENTS_CHECK,
     SCENE_PATH_STATES,
     STATIC_ENGINE,
@@ -175,7 +176,7 @@ def _loading_worst_case_s(case: ArchCase, accel_mm_per_s2: float) -> float:
     increments = (
         growing
         + math.ceil(case.loading.max_support_displacement_mm / largest)
-        + math.ceil(math.log2(largest / num.du_tolerance_mm))
+        + math.ceil(math.log2(largest / (num.du_tolerance_mm * (LEAST_BRACKET if num.du_tolerance_ratio else 1.0))))
         + BISECTIONS_MARGIN
     )
     return increments * (_move_s(largest, case.support_speed_mm_per_s, accel_mm_per_s2) + num.hold_max_s)

@@ -76,7 +76,7 @@ class EquilibriumPath:
         self._trial_snaps = []
         verdict = self._relax_at(start, target)
         while (self.static.off or (verdict == Verdict.STABLE and self._snapped(trend, start, target))) and (
-            target - start > self.settings.tolerance
+            target - start > self.settings.bracket(target)
         ):
             low, low_state, high, trend = self._locate_fold(base, trend, start, target)
             self.arch.restore(low_state)
@@ -159,7 +159,7 @@ class EquilibriumPath:
         the state there, its upper end (the first position whose relaxation snaps, runs away or times
         out) and the trend extended to the lower end."""
         low, low_state, high = start, base, target
-        while high - low > self.settings.tolerance:
+        while high - low > self.settings.bracket(high):
             middle = 0.5 * (low + high)
             self.arch.restore(low_state)
             probe = self._relax_at(low, middle, near_holds=0)  # a state off the static model's is past the fold

@@ -101,6 +101,7 @@ def criterion_text(n: NumericsConfig) -> str:
     """The loading protocol and collapse criterion with this case's numbers, for summary.json."""
     from yadearch.dem.loading import NEAR_EQUILIBRIUM_HOLDS
     from yadearch.solve.falls import MAX_DESCENT_GOES
+    from yadearch.solve.path import bracket_text
 
     return (
         "Loading by support increments (first {0} mm, growing x{1} up to {2} mm after each "
@@ -127,7 +128,7 @@ def criterion_text(n: NumericsConfig) -> str:
         "unresolved (no du, never a collapse). Relaxations run at local damping "
         f"{n.hold_damping}. After a failed increment the increment halves (bisection); du = "
         "midpoint of the bracket [last support displacement in equilibrium; first without, "
-        f"reached from that state], narrowed to < {n.du_tolerance_mm} mm."
+        f"reached from that state], {bracket_text(n)}."
     ).format(n.first_increment_mm, n.increment_growth, n.max_increment_mm)
 
 

@@ -19,7 +19,7 @@ from typing import Protocol
 import numpy as np
 
 from yadearch.case.config import NumericsConfig
-from yadearch.case.numerics_section import SNAP_THICKNESS_RATIO
+from yadearch.case.numerics_section import LEAST_BRACKET, SNAP_THICKNESS_RATIO
 from yadearch.model import units
 from yadearch.solve.stages import Outcome, Verdict
 
@@ -60,12 +60,23 @@ class PathSettings:
     tolerance: float
     max_displacement: float
     snap_ratio: float = SNAP_THICKNESS_RATIO  # a snap moves a block this x the ring's thickness off its branch
+    relative_tolerance: float = 0.0  # the bracket at most this x its upper end too (0: `tolerance` alone)
 
     def __post_init__(self) -> None:
         if not 0 < self.tolerance < self.first_increment <= self.max_increment:
             raise ValueError("increments must satisfy 0 < tolerance < first <= max")
         if self.growth < 1.0:
             raise ValueError(f"growth must be >= 1, got {self.growth}")
+        if not 0.0 <= self.relative_tolerance < 1.0:
+            raise ValueError(f"relative_tolerance must be in [0, 1), got {self.relative_tolerance}")
+
+    def bracket(self, upper: float) -> float:
+        """The width that ends a search whose bracket's upper end is `upper` (du's, or a fold's): the
+        narrower of `tolerance` and `relative_tolerance` x `upper`, so that a short du is located as
+        finely, relative, as a long one; never below LEAST_BRACKET x `tolerance`."""
+        if self.relative_tolerance <= 0.0:
+            return self.tolerance
+        return min(self.tolerance, max(self.relative_tolerance * abs(upper), LEAST_BRACKET * self.tolerance))
 
 
 @dataclass(frozen=True)
@@ -161,7 +172,14 @@ def path_settings(numerics: NumericsConfig, max_displacement_mm: float) -> PathS
         tolerance=mm(numerics.du_tolerance_mm),
         max_displacement=mm(max_displacement_mm),
         snap_ratio=numerics.snap_thickness_ratio,
+        relative_tolerance=numerics.du_tolerance_ratio,
     )
+
+
+def bracket_text(numerics: NumericsConfig) -> str:
+    """How narrow du's bracket ends, in a protocol's words (`PathSettings.bracket`)."""
+    relative = f" and {100 * numerics.du_tolerance_ratio:g} % of its upper end" if numerics.du_tolerance_ratio else ""
+    return f"narrowed to < {numerics.du_tolerance_mm} mm{relative}"
 
 
 def follow_path(
@@ -171,7 +189,7 @@ def follow_path(
     start: float = 0.0,
 ) -> PathResult:
     """Advance by increments from the equilibrium at `start` (the oracle's state; 0 after the
-    self-weight) until the bracket of du is narrower than `settings.tolerance` or the support
+    self-weight) until the bracket of du is narrower than `settings.bracket` or the support
     reaches `settings.max_displacement` in equilibrium.
 
     The failure that closes the bracket must come from the bracket's own lower state, settled
@@ -187,7 +205,7 @@ def follow_path(
     firm_upper = math.inf  # the lowest discarded state: no equilibrium there, whatever the path
     resolved = math.nan  # where a slow failure was followed further (`EquilibriumOracle.resolve`)
     while True:
-        narrow = result.upper - result.lower <= settings.tolerance
+        narrow = result.upper - result.lower <= settings.bracket(result.upper)
         if narrow and (result.upper_from >= result.lower or result.upper >= firm_upper):
             if settled or not result.equilibria:
                 if not result.unresolved or resolved == result.upper:

@@ -138,10 +138,10 @@ class StaticLoading:
 
     def _locate_fold(self, history: list[StaticState], ahead: float) -> tuple[list[StaticState], tuple[float, float]]:
         """Bisect between the last state of `history` and `ahead` (where continuation failed) by
-        continuation until the bracket is narrower than the path's tolerance: the history extended to
+        continuation until the bracket is narrower than the path's (`PathSettings.bracket`): the history extended to
         the bracket's lower end, and the bracket (m)."""
         low, high = history[-1].lam, ahead
-        while high - low > self.settings.tolerance:
+        while high - low > self.settings.bracket(high):
             middle = 0.5 * (low + high)
             found = self._continue(history, middle)
             if found is None:

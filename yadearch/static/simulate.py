@@ -25,7 +25,7 @@ from yadearch.results.run_log import stamped_log
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSummary, collapse_fields, loading_info
 from yadearch.solve.limit import why_not_standing
-from yadearch.solve.path import PathStep
+from yadearch.solve.path import PathStep, bracket_text
 from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.static_state import StaticEngineError
@@ -49,7 +49,7 @@ def criterion_text(case: ArchCase) -> str:
         f"{n.runaway_thickness_ratio} ring thickness ({runaway_mm:g} mm); a descent that settles is a snap "
         "survived, one that finds neither is retried, then unresolved (no du). After a failed increment "
         "the increment halves (bisection); du = midpoint of the bracket [last support displacement in "
-        f"equilibrium; first without], narrowed to < {n.du_tolerance_mm} mm; du_first = the first fold "
+        f"equilibrium; first without], {bracket_text(n)}; du_first = the first fold "
         f"or snap on the path (a state {n.snap_thickness_ratio} ring thickness off its branch's prediction)."
     )
 

@@ -8,6 +8,7 @@ that hangs on the path's branch."""
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import Any
 
 import pandas as pd
@@ -21,7 +22,7 @@ INVARIANCE_KNS_N_PER_MM3 = (5.2, 100.0)  # set 2's joints and stiff ones (the st
 FACTORS = (0.5, 2.0)  # each setting halved and doubled
 SETTINGS = {  # a setting's name in the table: the numerics it scales together
     "increments": ("first_increment_mm", "max_increment_mm"),
-    "bracket": ("du_tolerance_mm",),
+    "bracket": ("du_tolerance_mm", "du_tolerance_ratio"),
     "runaway": ("runaway_thickness_ratio",),
     "snap_floor": ("snap_thickness_ratio",),
 }
@@ -29,6 +30,7 @@ REFINED = (0.25, 0.125)  # the increments refined further: where does the answer
 TOLERANCE = 0.01  # the standard: a result that moves by more than 1 % is not a result yet
 BASE = "base"
 INVARIANCE_COMMAND = ".venv/bin/python scripts/atlas.py --invariance"
+ACTED = 1e-4  # an answer moving more than this (relative) between two studies: the change acted on it
 LONG_COLLAPSE_MM = 10.0  # collapses compared across snap floors: the 0.1 mm bracket is over 1 % of a shorter du
 
 
@@ -115,12 +117,10 @@ def _refinement(group: pd.DataFrame, base: pd.Series) -> dict[str, float]:
     return row
 
 
-def invariance_markdown(
-    table: pd.DataFrame, command: str = INVARIANCE_COMMAND, default_floor: pd.DataFrame | None = None
-) -> str:
+def invariance_markdown(table: pd.DataFrame, command: str = INVARIANCE_COMMAND, comparison: Sequence[str] = ()) -> str:
     """invariance.md: how many arches keep du and du_first within 1 % under every variant, and each
     exception with the variant that moves it; the study made by `command`, and for one made with another
-    snap floor its answers against those of the default floor's study (`default_floor`, a table)."""
+    default its `comparison` with the default's study (`floor_comparison`, `bracket_comparison`)."""
     collapsed = table[table["outcome"] == "collapse"]
     held = {column: _held(collapsed, f"{column}_spread") for column in ("du_mm", "du_first_mm")}
     changed = table[table["outcome_changed_by"].fillna("") != ""]
@@ -158,8 +158,7 @@ def invariance_markdown(
             ],
         )
     lines += _refinement_markdown(collapsed)
-    if default_floor is not None:
-        lines += floor_comparison(table, default_floor)
+    lines += comparison
     if not changed.empty:
         lines += ["", "## Outcome changed", ""]
         lines += markdown_table(
@@ -245,4 +244,43 @@ def floor_comparison(table: pd.DataFrame, default_floor: pd.DataFrame) -> list[s
                 for _, r in earlier.sort_values("du_first_mm").iterrows()
             ],
         )
+    return lines
+
+
+def bracket_comparison(table: pd.DataFrame, default: pd.DataFrame) -> list[str]:
+    """The section comparing a study made with a relative bracket (`table`, `numerics.du_tolerance_ratio`)
+    with the default's (absolute alone): du and du_first within 1 % under every variant in each, over every
+    arch both collapse and over those beyond LONG_COLLAPSE_MM, and the answers the relative bracket moved."""
+    both = table.merge(default, on="case", suffixes=("", "_default"))
+    both = both[(both["outcome"] == "collapse") & (both["outcome_default"] == "collapse")]
+    lines = ["", "## Against the default bracket, du_tolerance_mm alone (invariance.csv)", ""]
+    for name, arches in (
+        ("", both),
+        (f" beyond {LONG_COLLAPSE_MM:g} mm", both[both["du_mm_default"] >= LONG_COLLAPSE_MM]),
+    ):
+        held = {spread: _held(arches, spread) for spread in ("du_mm_spread", "du_first_mm_spread")}
+        held_default = {spread: _held(arches, f"{spread}_default") for spread in held}
+        lines.append(
+            f"- arches both collapse{name}: {len(arches)}; under every variant du within {TOLERANCE * 100:g} % in "
+            f"{held['du_mm_spread']} ({held_default['du_mm_spread']} with the default bracket), du_first in "
+            f"{held['du_first_mm_spread']} ({held_default['du_first_mm_spread']})."
+        )
+    moved = both[
+        (both.apply(lambda r: _relative(r["du_mm"], r["du_mm_default"]), axis=1) > ACTED)
+        | (both.apply(lambda r: _relative(r["du_first_mm"], r["du_first_mm_default"]), axis=1) > ACTED)
+    ]
+    lines += ["", f"The default answers the relative bracket moves ({len(moved)}):", ""]
+    lines += markdown_table(
+        ["case", "du (mm)", "with the default bracket", "du_first (mm)", "with the default bracket"],
+        [
+            [
+                r["case"],
+                f"{r['du_mm']:.3f}",
+                f"{r['du_mm_default']:.3f}",
+                f"{r['du_first_mm']:.3f}",
+                f"{r['du_first_mm_default']:.3f}",
+            ]
+            for _, r in moved.sort_values("du_mm").iterrows()
+        ],
+    )
     return lines
