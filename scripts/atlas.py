@@ -8,6 +8,7 @@ the DEM; du_first and du side by side with the targets of docs/atlas.md checked.
     .venv/bin/python scripts/atlas.py --invariance   # the static answers with each setting halved and doubled
     .venv/bin/python scripts/atlas.py --invariance --snap-floor 0.001   # the same with another snap floor
     .venv/bin/python scripts/atlas.py --invariance --bracket-ratio 0.005   # ... with du's bracket relative
+    .venv/bin/python scripts/atlas.py --short-dem 0.005   # ... and the DEM on the short collapses with it
     .venv/bin/python scripts/atlas.py --snap-refinement   # the snaps the floor moves, against a refined bracket
     .venv/bin/python scripts/atlas.py --dem-static-states   # the DEM column read at static equilibria, RUNS/dem-static
     .venv/bin/python scripts/atlas.py --figure-from-table   # OUT/atlas.pdf/.png redrawn from OUT/atlas.csv
@@ -46,13 +47,16 @@ from yadearch.studies.atlas.invariance import (
     invariance_rows,
     invariance_table,
 )
-from yadearch.studies.atlas.report import FIGURE, TABLE, travel_mm, write_atlas
+from yadearch.studies.atlas.report import COMMAND, FIGURE, TABLE, travel_mm, write_atlas
 from yadearch.studies.atlas.rigid import compliant_table, rigid_table
+from yadearch.studies.atlas.short_dem import REPORT as SHORT_REPORT
+from yadearch.studies.atlas.short_dem import TABLE as SHORT_TABLE
+from yadearch.studies.atlas.short_dem import short_markdown, short_rows, short_table
 from yadearch.studies.atlas.snap_refinement import refinement_markdown, refinement_rows, snap_cases, verdicts
 from yadearch.studies.atlas.table import stored_engine
 from yadearch.studies.campaigns.executors import open_pool
 from yadearch.studies.campaigns.runner import run_campaign
-from yadearch.studies.dem_settings import NO_DEM_SETTINGS, add_dem_set_option, dem_settings_of
+from yadearch.studies.dem_settings import NO_DEM_SETTINGS, add_dem_set_option, dem_arguments, dem_settings_of
 
 RUN_TIMEOUT_S = {"static": 600.0, "dem": 3600.0}
 STATES_KEY = "numerics.support_path_states"  # what --dem-static-states sets
@@ -102,6 +106,22 @@ def invariance(out: Path, runs: Path, jobs: int, option: str | None = None, valu
     write_csv_atomically(out / "invariance.csv", table)
     write_text_atomically(out / "invariance.md", invariance_markdown(table, command, comparison))
     print(f"invariance -> {out / 'invariance.md'}")
+
+
+def short_dem(out: Path, runs: Path, jobs: int, ratio: float, dem_settings: Mapping[str, Any]) -> None:
+    """The atlas's DEM runs with du below SHORT_MM (OUT/atlas.csv) made again with du_tolerance_ratio `ratio`,
+    against the static engine's at the same setting (OUT/bracket-ratio-RATIO/invariance.csv, made first by
+    `--invariance --bracket-ratio RATIO`): OUT/bracket-ratio-RATIO/short_dem.csv and .md."""
+    folder = out / f"{STUDY_DEFAULTS['--bracket-ratio'][1]}-{ratio:g}"
+    static = pd.read_csv(folder / "invariance.csv")
+    atlas = pd.read_csv(out / TABLE)
+    rows = short_rows(atlas, dem_rows())
+    dem = run_engine("dem", rows, runs, jobs, f"dem-bracket-ratio-{ratio:g}", dem_settings, du_tolerance_ratio=ratio)
+    table = short_table(dem[dem["status"] == "done"], static, atlas)
+    write_csv_atomically(folder / SHORT_TABLE, table)
+    command = f"{COMMAND} --short-dem {ratio:g}{dem_arguments(dem_settings)}"
+    write_text_atomically(folder / SHORT_REPORT, short_markdown(table, ratio, command))
+    print(f"short DEM -> {folder / SHORT_REPORT}")
 
 
 def snap_refinement(out: Path) -> None:
@@ -164,6 +184,13 @@ def main() -> int:
         "(numerics.du_tolerance_ratio) as its default, in OUT/bracket-ratio-RATIO, against OUT/invariance.csv",
     )
     parser.add_argument(
+        "--short-dem",
+        type=float,
+        metavar="RATIO",
+        help="only the DEM runs with du below 20 mm (OUT/atlas.csv) with numerics.du_tolerance_ratio RATIO, "
+        "against OUT/bracket-ratio-RATIO/invariance.csv (--invariance --bracket-ratio RATIO first)",
+    )
+    parser.add_argument(
         "--snap-refinement",
         action="store_true",
         help="only the snaps that move du_first with the floor, against a refined bracket (reads OUT/invariance.csv)",
@@ -184,6 +211,9 @@ def main() -> int:
             invariance(args.out, args.runs, args.jobs, option, value)
         except CaseError as error:  # a setting out of its range
             parser.error(f"{option}: {error}")
+        return 0
+    if args.short_dem is not None:
+        short_dem(args.out, args.runs, args.jobs, args.short_dem, dem_settings)
         return 0
     if args.snap_refinement:
         snap_refinement(args.out)
