@@ -204,6 +204,10 @@ def main() -> int:
     given = [(option, value) for option, value in chosen.items() if value is not None]
     if given and not args.invariance or len(given) > 1:
         parser.error(f"{' or '.join(STUDY_DEFAULTS)} goes with --invariance, one of them at a time")
+    if args.short_dem is not None and args.invariance:
+        parser.error(
+            "--short-dem reads the bracket study --invariance --bracket-ratio makes: run them one after the other"
+        )
     args.out.mkdir(parents=True, exist_ok=True)
     if args.invariance:
         option, value = given[0] if given else (None, 0.0)
