@@ -55,6 +55,7 @@ from yadearch.studies.atlas.short_dem import short_markdown, short_rows, short_t
 from yadearch.studies.atlas.snap_refinement import refinement_markdown, refinement_rows, snap_cases, verdicts
 from yadearch.studies.atlas.table import stored_engine
 from yadearch.studies.campaigns.executors import open_pool
+from yadearch.studies.campaigns.grid import RUN_COLUMN
 from yadearch.studies.campaigns.runner import run_campaign
 from yadearch.studies.dem_settings import NO_DEM_SETTINGS, add_dem_set_option, dem_arguments, dem_settings_of
 
@@ -117,10 +118,12 @@ def short_dem(out: Path, runs: Path, jobs: int, ratio: float, dem_settings: Mapp
     atlas = pd.read_csv(out / TABLE)
     rows = short_rows(atlas, dem_rows())
     dem = run_engine("dem", rows, runs, jobs, f"dem-bracket-ratio-{ratio:g}", dem_settings, du_tolerance_ratio=ratio)
-    table = short_table(dem[dem["status"] == "done"], static, atlas)
+    done = dem["status"] == "done"
+    table = short_table(dem[done], static, atlas)
     write_csv_atomically(folder / SHORT_TABLE, table)
     command = f"{COMMAND} --short-dem {ratio:g}{dem_arguments(dem_settings)}"
-    write_text_atomically(folder / SHORT_REPORT, short_markdown(table, ratio, command))
+    unfinished = list(dem.loc[~done, RUN_COLUMN])
+    write_text_atomically(folder / SHORT_REPORT, short_markdown(table, ratio, command, unfinished))
     print(f"short DEM -> {folder / SHORT_REPORT}")
 
 

@@ -35,3 +35,5 @@ def test_the_engines_are_compared_with_the_relative_bracket_and_with_the_absolut
     assert "Regenerate with `atlas.py --short-dem 0.005`" in text
     assert "du in 1 of 1 (1), du_first in 1 (1)." in text  # 0.06 % now, -0.75 % with 0.1 mm
     assert "| short | 5.310 | 5.307 | +0.06 % |" in text
+    assert "- DEM runs that did not finish: 0." in text
+    assert "did not finish: 1 (long)." in short_markdown(table, 0.005, "atlas.py", ["long"])

@@ -6,7 +6,7 @@ engines' answers with du_tolerance_mm alone (atlas.csv)."""
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from typing import Any
 
 import pandas as pd
@@ -52,9 +52,9 @@ def _gap_pct(value: float, reference: float) -> float:
     return 100.0 * (value - reference) / reference
 
 
-def short_markdown(table: pd.DataFrame, ratio: float, command: str) -> str:
+def short_markdown(table: pd.DataFrame, ratio: float, command: str, unfinished: Sequence[str] = ()) -> str:
     """short_dem.md: how many short collapses the two engines agree on within 1 % with the relative bracket
-    and with du_tolerance_mm alone, and every row."""
+    and with du_tolerance_mm alone, the DEM runs that did not finish (`unfinished`), and every row."""
     agree = {
         quantity: int((table[f"gap_{quantity}_pct"].abs() <= 100 * TOLERANCE).sum())
         for quantity in ("du_mm", "du_first_mm")
@@ -83,6 +83,7 @@ def short_markdown(table: pd.DataFrame, ratio: float, command: str) -> str:
         "",
         f"- both engines within {TOLERANCE * 100:g} %: du in {agree['du_mm']} of {len(table)} "
         f"({before['du_mm']}), du_first in {agree['du_first_mm']} ({before['du_first_mm']}).",
+        f"- DEM runs that did not finish: {len(unfinished)}{' (' + ', '.join(unfinished) + ')' if unfinished else ''}.",
         "",
     ]
     lines += markdown_table(
