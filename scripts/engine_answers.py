@@ -2,12 +2,13 @@
 Monte Carlo samples of the imperfection study's final case (face bumps s.d. 0.18 mm), the 100-point
 kn sweep 0.05-10 000 N/mm3 and the first 224 runs of the sensitivity study's Saltelli sample (docs/speed.md).
 
-    .venv/bin/python scripts/engine_answers.py run answers.json [--jobs 2]
+    .venv/bin/python scripts/engine_answers.py run answers.json [--jobs 2] [--set numerics.KEY=VALUE ...]
     PYTHONPATH=/path/to/other/checkout .venv/bin/python scripts/engine_answers.py run other.json
     .venv/bin/python scripts/engine_answers.py compare other.json answers.json [--list]
 
-`run` writes each case's du, du_first, outcome, hinges, collapse kind, path length and CPU time;
-`compare` prints how many answers differ by group and the ratios of CPU time and path length.
+`run` writes each case's du, du_first, outcome, hinges, collapse kind, path length and CPU time (with
+`--set`, every case with that numerical setting: what a default would move); `compare` prints how many
+answers differ by group and the ratios of CPU time and path length.
 """
 
 from __future__ import annotations
@@ -25,20 +26,27 @@ import numpy as np
 
 from yadearch.atomic import write_text_atomically
 from yadearch.case.config import ArchCase, preset
-from yadearch.errors import YadearchError
+from yadearch.errors import CaseError, YadearchError
 from yadearch.static.simulate import simulate_static
 from yadearch.studies.benchmark.static_engine import MONTECARLO_BUMP_SD_MM, MONTECARLO_SAMPLES, SWEEP_KN
+from yadearch.studies.campaigns.grid import parse_scalar
 from yadearch.studies.sensitivity.indices import PAPER_FACTORS, sobol_rows
 
 SALTELLI_BASE_POINTS, SALTELLI_RUNS = 16, 224
 ANSWERS = ("du_mm", "du_first_mm", "outcome", "hinges", "kind", "error")
 GROUPS = {"mc": "Monte Carlo", "kn": "kn sweep", "b": "Saltelli"}  # by the cases' name prefixes
+NUMERICS: dict[str, object] = {}  # `run --set`: numerical settings of every case (each worker's copy)
+
+
+def use_numerics(settings: dict[str, object]) -> None:
+    """Give every case of this process `settings` (a pool's initializer, before `cases` is first built)."""
+    NUMERICS.update(settings)
 
 
 @functools.cache
 def cases() -> dict[str, ArchCase]:
     """The compared cases by name, summaries only (built once a process)."""
-    static = preset("set2").with_overrides({"numerics.engine": "static", "numerics.run_files": "summary"})
+    static = preset("set2").with_overrides({"numerics.engine": "static", "numerics.run_files": "summary", **NUMERICS})
     found = {
         f"mc{seed}": static.with_overrides(
             {"imperfections.face_bump_sd_mm": MONTECARLO_BUMP_SD_MM, "imperfections.seed": seed}
@@ -98,6 +106,7 @@ def main() -> int:
     run = commands.add_parser("run")
     run.add_argument("out", type=Path)
     run.add_argument("--jobs", type=int, default=2)
+    run.add_argument("--set", action="append", default=[], metavar="numerics.KEY=VALUE", help="a numerical setting")
     both = commands.add_parser("compare")
     both.add_argument("old", type=Path)
     both.add_argument("new", type=Path)
@@ -106,7 +115,18 @@ def main() -> int:
     if args.command == "compare":
         compare(json.loads(args.old.read_text()), json.loads(args.new.read_text()), args.list)
         return 0
-    with ProcessPoolExecutor(args.jobs) as pool:
+    settings = {}
+    for item in args.set:
+        key, _, value = item.partition("=")
+        if not key.startswith("numerics.") or not value:
+            parser.error(f"--set {item!r}: give numerics.KEY=VALUE")
+        settings[key] = parse_scalar(value)
+    try:
+        preset("set2").with_overrides(settings)
+    except CaseError as error:
+        parser.error(f"--set: {error}")
+    use_numerics(settings)  # here, and in workers that do not fork from here
+    with ProcessPoolExecutor(args.jobs, initializer=use_numerics, initargs=(settings,)) as pool:
         found = dict(pool.map(answer, list(cases()), chunksize=8))
     write_text_atomically(args.out, json.dumps(found, indent=0) + "\n")
     print(f"{len(found)} cases -> {args.out}")
