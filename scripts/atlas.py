@@ -51,7 +51,7 @@ from yadearch.studies.atlas.report import COMMAND, FIGURE, TABLE, travel_mm, wri
 from yadearch.studies.atlas.rigid import compliant_table, rigid_table
 from yadearch.studies.atlas.short_dem import REPORT as SHORT_REPORT
 from yadearch.studies.atlas.short_dem import TABLE as SHORT_TABLE
-from yadearch.studies.atlas.short_dem import short_markdown, short_rows, short_table
+from yadearch.studies.atlas.short_dem import acting_below_mm, short_markdown, short_rows, short_table
 from yadearch.studies.atlas.snap_refinement import refinement_markdown, refinement_rows, snap_cases, verdicts
 from yadearch.studies.atlas.table import stored_engine
 from yadearch.studies.campaigns.executors import open_pool
@@ -110,20 +110,23 @@ def invariance(out: Path, runs: Path, jobs: int, option: str | None = None, valu
 
 
 def short_dem(out: Path, runs: Path, jobs: int, ratio: float, dem_settings: Mapping[str, Any]) -> None:
-    """The atlas's DEM runs with du below SHORT_MM (OUT/atlas.csv) made again with du_tolerance_ratio `ratio`,
-    against the static engine's at the same setting (OUT/bracket-ratio-RATIO/invariance.csv, made first by
-    `--invariance --bracket-ratio RATIO`): OUT/bracket-ratio-RATIO/short_dem.csv and .md."""
+    """The atlas's DEM runs with a du (OUT/atlas.csv) short enough for du_tolerance_ratio `ratio` to act, made
+    again with it, against the static engine's at the same setting (OUT/bracket-ratio-RATIO/invariance.csv,
+    made first by `--invariance --bracket-ratio RATIO`): OUT/bracket-ratio-RATIO/short_dem.csv and .md.
+    CaseError for a ratio out of its range, FileNotFoundError without the study or the atlas."""
+    base = engine_base("dem", {"du_tolerance_ratio": ratio}, dem_settings)  # refuses a ratio out of range
     folder = out / f"{STUDY_DEFAULTS['--bracket-ratio'][1]}-{ratio:g}"
     static = pd.read_csv(folder / "invariance.csv")
     atlas = pd.read_csv(out / TABLE)
-    rows = short_rows(atlas, dem_rows())
+    below_mm = acting_below_mm(base.numerics.du_tolerance_mm, ratio)
+    rows = short_rows(atlas, dem_rows(), below_mm)
     dem = run_engine("dem", rows, runs, jobs, f"dem-bracket-ratio-{ratio:g}", dem_settings, du_tolerance_ratio=ratio)
     done = dem["status"] == "done"
     table = short_table(dem[done], static, atlas)
     write_csv_atomically(folder / SHORT_TABLE, table)
     command = f"{COMMAND} --short-dem {ratio:g}{dem_arguments(dem_settings)}"
     unfinished = list(dem.loc[~done, RUN_COLUMN])
-    write_text_atomically(folder / SHORT_REPORT, short_markdown(table, ratio, command, unfinished))
+    write_text_atomically(folder / SHORT_REPORT, short_markdown(table, ratio, command, below_mm, unfinished))
     print(f"short DEM -> {folder / SHORT_REPORT}")
 
 
@@ -190,7 +193,8 @@ def main() -> int:
         "--short-dem",
         type=float,
         metavar="RATIO",
-        help="only the DEM runs with du below 20 mm (OUT/atlas.csv) with numerics.du_tolerance_ratio RATIO, "
+        help="only the DEM runs with a du (OUT/atlas.csv) short enough for numerics.du_tolerance_ratio RATIO to "
+        "act (below 20 mm at 0.005), made with it, "
         "against OUT/bracket-ratio-RATIO/invariance.csv (--invariance --bracket-ratio RATIO first)",
     )
     parser.add_argument(
@@ -220,7 +224,17 @@ def main() -> int:
             parser.error(f"{option}: {error}")
         return 0
     if args.short_dem is not None:
-        short_dem(args.out, args.runs, args.jobs, args.short_dem, dem_settings)
+        if args.short_dem <= 0.0:
+            parser.error(f"--short-dem {args.short_dem:g}: give a ratio in (0, 0.1]")
+        try:
+            short_dem(args.out, args.runs, args.jobs, args.short_dem, dem_settings)
+        except CaseError as error:
+            parser.error(f"--short-dem: {error}")
+        except FileNotFoundError as error:
+            parser.error(
+                f"--short-dem {args.short_dem:g}: {error.filename} is missing (--invariance --bracket-ratio "
+                f"{args.short_dem:g} makes the study, the atlas's report makes atlas.csv)"
+            )
         return 0
     if args.snap_refinement:
         snap_refinement(args.out)

@@ -87,3 +87,18 @@ def test_solver_tolerance_step_and_budgets_halved_and_doubled(reference, factor:
     assert varied["outcome"] == default["outcome"] == Outcome.COLLAPSE
     assert varied["du_mm"] == pytest.approx(default["du_mm"], rel=INVARIANCE)
     assert varied["du_first_mm"] == pytest.approx(default["du_first_mm"], rel=INVARIANCE)
+
+
+def test_a_snap_before_collapse_is_located_to_the_relative_bracket() -> None:
+    """The static engine's fold bisection (du_first) ends at du_tolerance_ratio of the fold's position too:
+    the atlas's semicircle tilting at t/R 0.15 and kn 100 first snaps near 1.9 mm and collapses near 4.2 mm;
+    its first fold's bracket is 0.5 % of 1.9 mm, not the 0.1 mm of du_tolerance_mm."""
+    semicircle = {
+        qualified_name(key): value
+        for key, value in Geometry("semicircular", "tilt", 0.15).row(100.0).items()
+        if key != RUN_COLUMN
+    }
+    found = outcome(preset("set2").with_overrides({**semicircle, "numerics.du_tolerance_ratio": RELATIVE_BRACKET}))
+    low, high = found["du_first_bracket_mm"]
+    assert found["outcome"] == Outcome.COLLAPSE and high < 0.6 * found["du_mm"]  # a snap survived first
+    assert high - low <= RELATIVE_BRACKET * high < 0.1

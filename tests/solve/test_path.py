@@ -6,6 +6,7 @@ import math
 
 import pytest
 
+from yadearch.case.numerics_section import LEAST_BRACKET
 from yadearch.solve.path import PathSettings, follow_path
 from yadearch.solve.stages import Verdict
 
@@ -82,15 +83,16 @@ def test_a_relative_bracket_locates_a_short_du_as_finely_relative_as_a_long_one(
     result = follow_path(FakeArch(du), RELATIVE)
     assert result.lower <= du < result.upper
     width = result.upper - result.lower
-    assert width <= max(RELATIVE.relative_tolerance * result.upper, 0.01 * RELATIVE.tolerance)
+    least = LEAST_BRACKET * RELATIVE.tolerance
+    assert width <= max(RELATIVE.relative_tolerance * result.upper, least)
     assert width <= RELATIVE.tolerance
-    assert abs(result.du - du) <= 0.5 * max(RELATIVE.relative_tolerance * du, 0.01 * RELATIVE.tolerance) * 1.01
+    assert abs(result.du - du) <= 0.5 * max(RELATIVE.relative_tolerance * du, least) * 1.01
 
 
 def test_the_bracket_is_the_narrower_of_its_width_and_its_share_of_the_upper_end():
     assert RELATIVE.bracket(100.0) == RELATIVE.tolerance  # 0.5 % of 100 is wider than 0.1
     assert RELATIVE.bracket(2.0) == pytest.approx(0.01)
-    assert RELATIVE.bracket(0.0) == pytest.approx(0.001)  # never below a hundredth of the width
+    assert RELATIVE.bracket(0.0) == pytest.approx(LEAST_BRACKET * RELATIVE.tolerance)  # never below that
     assert SETTINGS.bracket(2.0) == SETTINGS.tolerance  # no relative part: the width alone
     with pytest.raises(ValueError, match="relative_tolerance"):
         PathSettings(2.0, 5.0, 1.5, 0.1, 150.0, relative_tolerance=1.5)

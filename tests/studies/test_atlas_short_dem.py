@@ -6,7 +6,7 @@ from __future__ import annotations
 import pandas as pd
 import pytest
 
-from yadearch.studies.atlas.short_dem import short_markdown, short_rows, short_table
+from yadearch.studies.atlas.short_dem import acting_below_mm, short_markdown, short_rows, short_table
 
 ATLAS = pd.DataFrame(
     {
@@ -21,7 +21,9 @@ ATLAS = pd.DataFrame(
 
 def test_only_the_dem_runs_whose_committed_du_is_short_are_made_again():
     rows = [{"run": "short", "shape": "pointed"}, {"run": "long"}, {"run": "stands"}]
-    assert short_rows(ATLAS, rows) == [{"run": "short", "shape": "pointed"}]
+    assert acting_below_mm(0.1, 0.005) == pytest.approx(20.0)  # 0.5 % of du is narrower than 0.1 mm below 20 mm
+    assert short_rows(ATLAS, rows, 20.0) == [{"run": "short", "shape": "pointed"}]
+    assert short_rows(ATLAS, rows, 100.0) == rows[:2]
 
 
 def test_the_engines_are_compared_with_the_relative_bracket_and_with_the_absolute_one():
@@ -31,9 +33,9 @@ def test_the_engines_are_compared_with_the_relative_bracket_and_with_the_absolut
     row = table.iloc[0]
     assert row["gap_du_mm_pct"] == pytest.approx(100 * (5.31 - 5.307) / 5.307)
     assert row["dem_du_mm_absolute_bracket"] == 5.30 and row["static_du_mm_absolute_bracket"] == 5.34
-    text = short_markdown(table, 0.005, "atlas.py --short-dem 0.005")
+    text = short_markdown(table, 0.005, "atlas.py --short-dem 0.005", 20.0)
     assert "Regenerate with `atlas.py --short-dem 0.005`" in text
     assert "du in 1 of 1 (1), du_first in 1 (1)." in text  # 0.06 % now, -0.75 % with 0.1 mm
     assert "| short | 5.310 | 5.307 | +0.06 % |" in text
     assert "- DEM runs that did not finish: 0." in text
-    assert "did not finish: 1 (long)." in short_markdown(table, 0.005, "atlas.py", ["long"])
+    assert "did not finish: 1 (long)." in short_markdown(table, 0.005, "atlas.py", 20.0, ["long"])

@@ -173,10 +173,11 @@ def _loading_worst_case_s(case: ArchCase, accel_mm_per_s2: float) -> float:
         if num.increment_growth > 1.0
         else math.ceil(case.loading.max_support_displacement_mm / num.first_increment_mm)
     )
+    least_bracket_mm = num.du_tolerance_mm * (LEAST_BRACKET if num.du_tolerance_ratio else 1.0)  # PathSettings.bracket
     increments = (
         growing
         + math.ceil(case.loading.max_support_displacement_mm / largest)
-        + math.ceil(math.log2(largest / (num.du_tolerance_mm * (LEAST_BRACKET if num.du_tolerance_ratio else 1.0))))
+        + math.ceil(math.log2(largest / least_bracket_mm))
         + BISECTIONS_MARGIN
     )
     return increments * (_move_s(largest, case.support_speed_mm_per_s, accel_mm_per_s2) + num.hold_max_s)

@@ -65,9 +65,10 @@ class EquilibriumPath:
         with the support held: 'stable', 'runaway' or 'timeout' (see `hold`). A relaxation that snaps
         (`_snapped`), or ends where the static model moves the blocks (`dem.acceptance`: a
         near-equilibrium past a fold), is not taken as it comes: its fold is located by bisection to
-        the path's tolerance and the snap made from just past it, held on while the static model still
-        moves the blocks as the static engine's descent goes on (MAX_DESCENT_GOES), then the path goes
-        on to `target`. A failed state is kept for `collapse_state`."""
+        the path's bracket (`PathSettings.bracket`) and the snap made from just past it, held on while
+        the static model still moves the blocks as the static engine's descent goes on
+        (MAX_DESCENT_GOES), then the path goes on to `target`. A failed state is kept for
+        `collapse_state`."""
         if not self._at_accepted:
             self.arch.restore(self._accepted[-1])
         self._at_accepted = False
@@ -155,7 +156,7 @@ class EquilibriumPath:
 
     def _locate_fold(self, base: dict, trend: Trend, start: float, target: float) -> tuple[float, dict, float, Trend]:
         """Bisect [start, target] (the live state `base` at `start`, the end of `trend`) by increments
-        relaxed without a snap until the bracket is narrower than the path's tolerance: its lower end,
+        relaxed without a snap until the bracket is narrower than the path's (`PathSettings.bracket`): its lower end,
         the state there, its upper end (the first position whose relaxation snaps, runs away or times
         out) and the trend extended to the lower end."""
         low, low_state, high = start, base, target

@@ -1,7 +1,7 @@
 """The DEM with a relative bracket on the atlas's short collapses (issue 41, docs/atlas.md): the DEM runs
-of the atlas whose committed du is below SHORT_MM, made again with `numerics.du_tolerance_ratio`, against
-the static engine's answers at the same setting (the bracket study's default runs) and against both
-engines' answers with du_tolerance_mm alone (atlas.csv)."""
+of the atlas whose committed du is short enough for the relative bracket to act (`acting_below_mm`), made
+again with `numerics.du_tolerance_ratio`, against the static engine's answers at the same setting (the
+bracket study's default runs) and against both engines' answers with du_tolerance_mm alone (atlas.csv)."""
 
 from __future__ import annotations
 
@@ -15,13 +15,17 @@ from yadearch.markdown import markdown_table
 from yadearch.studies.atlas.invariance import TOLERANCE
 from yadearch.studies.campaigns.grid import RUN_COLUMN
 
-SHORT_MM = 20.0  # the relative bracket (0.005 of du) is narrower than 0.1 mm below this
 TABLE, REPORT = "short_dem.csv", "short_dem.md"
 
 
-def short_rows(atlas: pd.DataFrame, rows: Iterable[dict[str, Any]]) -> list[dict[str, Any]]:
-    """The DEM `rows` of the atlas whose committed DEM du (atlas.csv's dem_du_mm) is below SHORT_MM."""
-    short = set(atlas.loc[atlas["dem_du_mm"] < SHORT_MM, RUN_COLUMN])
+def acting_below_mm(tolerance_mm: float, ratio: float) -> float:
+    """The du (mm) below which a bracket of `ratio` x its upper end is narrower than `tolerance_mm`."""
+    return tolerance_mm / ratio
+
+
+def short_rows(atlas: pd.DataFrame, rows: Iterable[dict[str, Any]], below_mm: float) -> list[dict[str, Any]]:
+    """The DEM `rows` of the atlas whose committed DEM du (atlas.csv's dem_du_mm) is below `below_mm`."""
+    short = set(atlas.loc[atlas["dem_du_mm"] < below_mm, RUN_COLUMN])
     return [row for row in rows if row[RUN_COLUMN] in short]
 
 
@@ -52,7 +56,9 @@ def _gap_pct(value: float, reference: float) -> float:
     return 100.0 * (value - reference) / reference
 
 
-def short_markdown(table: pd.DataFrame, ratio: float, command: str, unfinished: Sequence[str] = ()) -> str:
+def short_markdown(
+    table: pd.DataFrame, ratio: float, command: str, below_mm: float, unfinished: Sequence[str] = ()
+) -> str:
     """short_dem.md: how many short collapses the two engines agree on within 1 % with the relative bracket
     and with du_tolerance_mm alone, the DEM runs that did not finish (`unfinished`), and every row."""
     agree = {
@@ -77,7 +83,7 @@ def short_markdown(table: pd.DataFrame, ratio: float, command: str, unfinished: 
         f"# The DEM with du's bracket at most {ratio:g} of its upper end: the atlas's short collapses",
         "",
         f"Regenerate with `{command}` (docs/atlas.md). The atlas's DEM runs whose du (atlas.csv) is below "
-        f"{SHORT_MM:g} mm, made again with `numerics.du_tolerance_ratio = {ratio:g}`, against the static engine "
+        f"{below_mm:g} mm, made again with `numerics.du_tolerance_ratio = {ratio:g}`, against the static engine "
         "with the same setting (invariance.csv's default runs); in brackets, both engines with "
         "`du_tolerance_mm` alone (atlas.csv).",
         "",
