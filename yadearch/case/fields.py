@@ -13,9 +13,12 @@ def number_meta(
     low_open: bool = False,
     high_open: bool = False,
     doc: str = "",
+    predates: float | None = None,
 ) -> dict[str, Any]:
-    """Field metadata: the accepted range of a number and a one-line description."""
-    return {"low": low, "high": high, "low_open": low_open, "high_open": high_open, "doc": doc}
+    """Field metadata: the accepted range of a number and a one-line description (and the value a case
+    written before the parameter existed takes, where it has one)."""
+    found = {"low": low, "high": high, "low_open": low_open, "high_open": high_open, "doc": doc}
+    return found | ({"predates": predates} if predates is not None else {})
 
 
 def choice_meta(choices: tuple[str, ...], doc: str, predates: str | None = None) -> dict[str, Any]:

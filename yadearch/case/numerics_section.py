@@ -42,41 +42,35 @@ class NumericsConfig:
     )
     rate_reference_kn_N_per_mm3: float = field(
         default=0.0,
-        metadata={
-            **number_meta(
-                0,
-                1e5,
-                doc="joints stiffer than this (N/mm^3) load more slowly: the support speed is "
-                "support_rate x sqrt(this / kn); 0 = no scaling (the default: loading by equilibrium "
-                "increments makes du independent of the speed, docs/numerics.md)",
-            ),
-            "predates": 0.0,
-        },
+        metadata=number_meta(
+            0,
+            1e5,
+            doc="joints stiffer than this (N/mm^3) load more slowly: the support speed is "
+            "support_rate x sqrt(this / kn); 0 = no scaling (the default: loading by equilibrium "
+            "increments makes du independent of the speed, docs/numerics.md)",
+            predates=0.0,
+        ),
     )
     support_acceleration_mm_per_s2: float = field(
         default=640.0,
-        metadata={
-            **number_meta(
-                0,
-                1e5,
-                doc="acceleration and braking of the support at the start and end of each move (mm/s^2); 0 = "
-                "instantaneous. The same at any kn: it sets the inertial load of the moving arch (640 = 0.065 g)",
-            ),
-            "predates": 0.0,
-        },
+        metadata=number_meta(
+            0,
+            1e5,
+            doc="acceleration and braking of the support at the start and end of each move (mm/s^2); 0 = "
+            "instantaneous. The same at any kn: it sets the inertial load of the moving arch (640 = 0.065 g)",
+            predates=0.0,
+        ),
     )
     support_horizontal_acceleration_mm_per_s2: float = field(
         default=5.0,
-        metadata={
-            **number_meta(
-                0,
-                1e5,
-                doc="largest horizontal component of the support's acceleration (mm/s^2; 5 = 0.0005 g): "
-                "a horizontal jolt loads the arch like a ground acceleration; at 40 mm/s^2 it moved a "
-                "pointed arch's du 5.5 %, at 2.5-10 du stays within 1 % (docs/numerics.md); 0 = no limit",
-            ),
-            "predates": 0.0,
-        },
+        metadata=number_meta(
+            0,
+            1e5,
+            doc="largest horizontal component of the support's acceleration (mm/s^2; 5 = 0.0005 g): "
+            "a horizontal jolt loads the arch like a ground acceleration; at 40 mm/s^2 it moved a "
+            "pointed arch's du 5.5 %, at 2.5-10 du stays within 1 % (docs/numerics.md); 0 = no limit",
+            predates=0.0,
+        ),
     )
     damping: float = field(
         default=0.2, metadata=number_meta(0, 1, high_open=True, doc="YADE local (non-viscous) damping coefficient")
@@ -155,20 +149,18 @@ class NumericsConfig:
     )
     settle_speed_mm_per_s: float = field(
         default=0.01,
-        metadata={
-            **number_meta(
-                0,
-                1000,
-                low_open=True,
-                doc="before du is bracketed, its lower state relaxes until every block is slower than this "
-                "(mm/s): a state accepted while still creeping fails every move near collapse",
-            ),
-            "predates": 1e9,
-        },
+        metadata=number_meta(
+            0,
+            1000,
+            low_open=True,
+            doc="before du is bracketed, its lower state relaxes until every block is slower than this "
+            "(mm/s): a state accepted while still creeping fails every move near collapse",
+            predates=1e9,
+        ),
     )
     runaway_thickness_ratio: float = field(
         default=RUNAWAY_THICKNESS_RATIO,
-        metadata={
+        metadata={  # a run before it had a runaway length in mm: no value of this reproduces it
             **number_meta(
                 0,
                 100,
@@ -194,16 +186,14 @@ class NumericsConfig:
     )
     first_increment_mm: float = field(
         default=1.0,
-        metadata={
-            **number_meta(
-                0,
-                1000,
-                low_open=True,
-                doc="support displacement of the first loading increment (mm); each increment ends in a "
-                "relaxation to equilibrium",
-            ),
-            "predates": 0.0,
-        },
+        metadata=number_meta(
+            0,
+            1000,
+            low_open=True,
+            doc="support displacement of the first loading increment (mm); each increment ends in a "
+            "relaxation to equilibrium",
+            predates=0.0,
+        ),
     )
     max_increment_mm: float = field(
         default=2.5,
@@ -223,16 +213,14 @@ class NumericsConfig:
     )
     du_tolerance_ratio: float = field(
         default=0.0,
-        metadata={
-            **number_meta(
-                0,
-                0.1,
-                doc="the bracket that locates du, and each fold, at most this fraction of its upper end too; 0 = "
-                "du_tolerance_mm alone; 0.005 holds a short du within 1 % when the bracket is halved or doubled "
-                "(docs/numerics.md)",
-            ),
-            "predates": 0.0,
-        },
+        metadata=number_meta(
+            0,
+            0.1,
+            doc="the bracket that locates du, and each fold, at most this fraction of its upper end too; 0 = "
+            "du_tolerance_mm alone; 0.005 holds a short du within 1 % when the bracket is halved or doubled "
+            "(docs/numerics.md)",
+            predates=0.0,
+        ),
     )
     hinge_rotation_mrad: float = field(
         default=2.0,
@@ -244,16 +232,14 @@ class NumericsConfig:
     )
     max_steps: int = field(
         default=100_000_000,
-        metadata={
-            **number_meta(
-                1,
-                1e12,
-                doc="step budget of a run: a case whose estimated worst case exceeds it is refused "
-                "before YADE starts, and a run that reaches it fails (docs/speed.md gives the steps the "
-                "paper's cases take)",
-            ),
-            "predates": 100_000_000,
-        },
+        metadata=number_meta(
+            1,
+            1e12,
+            doc="step budget of a run: a case whose estimated worst case exceeds it is refused "
+            "before YADE starts, and a run that reaches it fails (docs/speed.md gives the steps the "
+            "paper's cases take)",
+            predates=100_000_000,
+        ),
     )
     run_files: str = field(
         default=FULL_RUN_FILES,
