@@ -18,7 +18,6 @@ from yadearch.solve.newton import SolverSettings
 from yadearch.solve.stages import Outcome
 from yadearch.solve.static_path import StaticLoading
 from yadearch.studies.atlas.grid import Geometry
-from yadearch.studies.campaigns.grid import RUN_COLUMN, qualified_name
 
 INVARIANCE = 0.01  # the standard: a result that moves more than 1 % is not a result
 PATH_SETTINGS = ("first_increment_mm", "max_increment_mm", "du_tolerance_mm", "du_tolerance_ratio")
@@ -50,18 +49,20 @@ def outcome(case: ArchCase, solver: SolverSettings = DEFAULT_SOLVER) -> dict:
 
 
 RELATIVE_BRACKET = 0.005  # numerics.du_tolerance_ratio: du's bracket at most 0.5 % of du
-THIN_POINTED_TILT = {  # the atlas's pointed arch t/R 0.08 at kn 100, a support tilting: du 0.16 mm
-    **{
-        qualified_name(key): value
-        for key, value in Geometry("pointed", "tilt", 0.08).row(100.0).items()
-        if key != RUN_COLUMN
-    },
-    "numerics.du_tolerance_ratio": RELATIVE_BRACKET,
-}
+
+
+def relative_atlas_arch(shape: str, movement: str, thickness_over_radius: float, kn: float) -> ArchCase:
+    """An arch and movement of the atlas at `kn`, its bracket relative (RELATIVE_BRACKET)."""
+    geometry = Geometry(shape, movement, thickness_over_radius)
+    return preset("set2").with_overrides(
+        {**geometry.overrides(), "kn_N_per_mm3": kn, "du_tolerance_ratio": RELATIVE_BRACKET}
+    )
+
+
 CASES = {
     "spreading semicircle, kn 100": preset("set2").with_overrides(SPREADING_SEMICIRCLE),
     "set 2": preset("set2"),
-    "thin pointed arch tilting, kn 100": preset("set2").with_overrides(THIN_POINTED_TILT),
+    "thin pointed arch tilting, kn 100": relative_atlas_arch("pointed", "tilt", 0.08, 100.0),  # du 0.16 mm
 }
 
 
@@ -93,12 +94,7 @@ def test_a_snap_before_collapse_is_located_to_the_relative_bracket() -> None:
     """The static engine's fold bisection (du_first) ends at du_tolerance_ratio of the fold's position too:
     the atlas's semicircle tilting at t/R 0.15 and kn 100 first snaps near 1.9 mm and collapses near 4.2 mm;
     its first fold's bracket is 0.5 % of 1.9 mm, not the 0.1 mm of du_tolerance_mm."""
-    semicircle = {
-        qualified_name(key): value
-        for key, value in Geometry("semicircular", "tilt", 0.15).row(100.0).items()
-        if key != RUN_COLUMN
-    }
-    found = outcome(preset("set2").with_overrides({**semicircle, "numerics.du_tolerance_ratio": RELATIVE_BRACKET}))
+    found = outcome(relative_atlas_arch("semicircular", "tilt", 0.15, 100.0))
     low, high = found["du_first_bracket_mm"]
     assert found["outcome"] == Outcome.COLLAPSE and high < 0.6 * found["du_mm"]  # a snap survived first
     assert high - low <= RELATIVE_BRACKET * high < 0.1

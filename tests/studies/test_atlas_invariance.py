@@ -85,21 +85,27 @@ def test_a_refined_run_that_does_not_collapse_is_left_out_of_the_comparison():
     assert row["outcome_refined_by"] == "increments_x0.125"
 
 
+def collapses(cases: list[str], du: list[float], first: list[float], du_spread: list[float], first_spread: list[float]):
+    """An invariance table of arches that all collapse: du, du_first and their spreads over the variants."""
+    return pd.DataFrame(
+        {
+            "case": cases,
+            "outcome": ["collapse"] * len(cases),
+            "du_mm": du,
+            "du_first_mm": first,
+            "du_mm_spread": du_spread,
+            "du_first_mm_spread": first_spread,
+        }
+    )
+
+
 def test_a_study_with_another_snap_floor_is_compared_with_the_default_floors():
     """Three arches collapsing beyond 10 mm at both floors: du_first held under every variant in two at the
     lower floor (one at the default), earlier at the lower floor in one; a short collapse is left out."""
 
     def table(first: list[float], spread: list[float]) -> pd.DataFrame:
-        return pd.DataFrame(
-            {
-                "case": ["a", "b", "c", "short"],
-                "outcome": ["collapse"] * 4,
-                "du_mm": [50.0, 60.0, 70.0, 5.0],
-                "du_first_mm": [*first, 5.0],
-                "du_mm_spread": [0.0, 0.002, 0.0, 0.2],
-                "du_first_mm_spread": [*spread, 0.2],
-            }
-        )
+        du, du_spread = [50.0, 60.0, 70.0, 5.0], [0.0, 0.002, 0.0, 0.2]
+        return collapses(["a", "b", "c", "short"], du, [*first, 5.0], du_spread, [*spread, 0.2])
 
     default = table([40.0, 60.0, 30.0], [0.5, 0.0, 0.3])
     lower = table([40.1, 20.0, 30.0], [0.0, 0.0, 0.3])
@@ -119,16 +125,7 @@ def test_a_study_with_a_relative_bracket_is_compared_with_the_default_brackets()
     long collapse that neither moves; the relative bracket's changes of the default answers listed."""
 
     def table(du: list[float], spread: list[float]) -> pd.DataFrame:
-        return pd.DataFrame(
-            {
-                "case": ["short", "shorter", "long"],
-                "outcome": ["collapse"] * 3,
-                "du_mm": du,
-                "du_first_mm": du,
-                "du_mm_spread": spread,
-                "du_first_mm_spread": spread,
-            }
-        )
+        return collapses(["short", "shorter", "long"], du, du, spread, spread)  # du_first = du
 
     default = table([1.52, 0.156, 60.0], [0.03, 0.2, 0.001])
     relative = table([1.47, 0.163, 60.0], [0.004, 0.003, 0.001])

@@ -33,6 +33,7 @@ def test_the_engines_are_compared_with_the_relative_bracket_and_with_the_absolut
     row = table.iloc[0]
     assert row["gap_du_mm_pct"] == pytest.approx(100 * (5.31 - 5.307) / 5.307)
     assert row["dem_du_mm_absolute_bracket"] == 5.30 and row["static_du_mm_absolute_bracket"] == 5.34
+    assert row["gap_du_mm_absolute_bracket_pct"] == pytest.approx(100 * (5.30 - 5.34) / 5.34)
     text = short_markdown(table, 0.005, "atlas.py --short-dem 0.005", 20.0)
     assert "Regenerate with `atlas.py --short-dem 0.005`" in text
     assert "du in 1 of 1 (1), du_first in 1 (1)." in text  # 0.06 % now, -0.75 % with 0.1 mm

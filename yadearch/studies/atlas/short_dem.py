@@ -12,6 +12,7 @@ from typing import Any
 import pandas as pd
 
 from yadearch.markdown import markdown_table
+from yadearch.solve.refined import relative
 from yadearch.studies.atlas.invariance import TOLERANCE
 from yadearch.studies.campaigns.grid import RUN_COLUMN
 
@@ -32,7 +33,7 @@ def short_rows(atlas: pd.DataFrame, rows: Iterable[dict[str, Any]], below_mm: fl
 def short_table(dem: pd.DataFrame, static: pd.DataFrame, atlas: pd.DataFrame) -> pd.DataFrame:
     """One row a short collapse: the DEM's and the static engine's du and du_first with the relative bracket
     (`dem`, a campaign's results; `static`, the bracket study's invariance.csv) and with du_tolerance_mm alone
-    (`atlas`), and the gaps DEM against static in per cent."""
+    (`atlas`), and the gaps DEM against static in per cent with each bracket."""
     stored = atlas.set_index(RUN_COLUMN)
     static_by_case = static.set_index("case")
     rows = []
@@ -46,14 +47,17 @@ def short_table(dem: pd.DataFrame, static: pd.DataFrame, atlas: pd.DataFrame) ->
             row[f"gap_{quantity}_pct"] = _gap_pct(run[quantity], ours[quantity])
             row[f"dem_{quantity}_absolute_bracket"] = before[f"dem_{quantity}"]
             row[f"static_{quantity}_absolute_bracket"] = before[f"static_{quantity}"]
+            row[f"gap_{quantity}_absolute_bracket_pct"] = _gap_pct(
+                before[f"dem_{quantity}"], before[f"static_{quantity}"]
+            )
         rows.append(row)
     return pd.DataFrame(rows)
 
 
 def _gap_pct(value: float, reference: float) -> float:
-    if not (math.isfinite(value) and math.isfinite(reference)) or reference == 0.0:
-        return math.nan
-    return 100.0 * (value - reference) / reference
+    """`value` against `reference` in per cent (`solve.refined.relative`), NaN where either is missing."""
+    gap = relative(value, reference)
+    return math.nan if gap is None else 100.0 * gap
 
 
 def short_markdown(
@@ -61,24 +65,12 @@ def short_markdown(
 ) -> str:
     """short_dem.md: how many short collapses the two engines agree on within 1 % with the relative bracket
     and with du_tolerance_mm alone, the DEM runs that did not finish (`unfinished`), and every row."""
-    agree = {
-        quantity: int((table[f"gap_{quantity}_pct"].abs() <= 100 * TOLERANCE).sum())
-        for quantity in ("du_mm", "du_first_mm")
-    }
-    before = {
-        quantity: int(
-            (
-                table.apply(
-                    lambda r, q=quantity: abs(
-                        _gap_pct(r[f"dem_{q}_absolute_bracket"], r[f"static_{q}_absolute_bracket"])
-                    ),
-                    axis=1,
-                )
-                <= 100 * TOLERANCE
-            ).sum()
-        )
-        for quantity in agree
-    }
+
+    def agreeing(column: str) -> int:
+        return int((table[column].abs() <= 100 * TOLERANCE).sum())
+
+    agree = {quantity: agreeing(f"gap_{quantity}_pct") for quantity in ("du_mm", "du_first_mm")}
+    before = {quantity: agreeing(f"gap_{quantity}_absolute_bracket_pct") for quantity in agree}
     lines = [
         f"# The DEM with du's bracket at most {ratio:g} of its upper end: the atlas's short collapses",
         "",
