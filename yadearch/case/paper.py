@@ -4,6 +4,7 @@ right support, perfect joints) at any kn: only then do the paper's numbers belon
 
 from __future__ import annotations
 
+from functools import cache
 from typing import Any
 
 from yadearch.case import reference
@@ -43,7 +44,7 @@ def paper_model_values(case: ArchCase) -> dict[str, Any] | None:
     """On an arch whose geometry is not the paper's, the material and joint parameters still at the
     paper's 1:10 model's values (the defaults), by qualified name: a new arch must not take them
     unawares. None for the paper's geometry, or when the case gives every one of them."""
-    ran, model = case.to_dict(), ArchCase().to_dict()
+    ran, model = case.to_dict(), _model_case()
     if ran["geometry"] == model["geometry"]:
         return None
     named = MATERIALS[ran[MATERIAL_KEY][PRESET_FIELD]].values() if ran[MATERIAL_KEY][PRESET_FIELD] else {}
@@ -53,6 +54,12 @@ def paper_model_values(case: ArchCase) -> dict[str, Any] | None:
         if ran[section][key] == model[section][key] and not (section == MATERIAL_KEY and key in named)
     }
     return taken or None
+
+
+@cache
+def _model_case() -> dict[str, Any]:
+    """The default case (the paper's 1:10 model) as its dictionary, made once: every run compares with it."""
+    return ArchCase().to_dict()
 
 
 def model_values_text(taken: dict[str, Any]) -> str:

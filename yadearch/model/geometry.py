@@ -204,8 +204,8 @@ def arch_from_joints(
 
 def is_convex_polygon(polygon: np.ndarray) -> bool:
     """Whether a polygon given counter-clockwise turns left at every vertex."""
-    edges = np.roll(polygon, -1, axis=0) - polygon
-    turns = edges[:, 0] * np.roll(edges, -1, axis=0)[:, 1] - edges[:, 1] * np.roll(edges, -1, axis=0)[:, 0]
+    edges = _following(polygon) - polygon
+    turns = edges[:, 0] * _following(edges)[:, 1] - edges[:, 1] * _following(edges)[:, 0]
     return bool(np.all(turns > 0))
 
 
@@ -215,15 +215,21 @@ def _support_prism(p_in: np.ndarray, p_out: np.ndarray, outward: np.ndarray, len
     return prism(polygon, depth)
 
 
+def _following(rows: np.ndarray) -> np.ndarray:
+    """Each row's successor, the first after the last (`np.roll(rows, -1, axis=0)` without its overhead)."""
+    return np.concatenate((rows[1:], rows[:1]))
+
+
 def polygon_area(xy: np.ndarray) -> float:
     """Area of a simple polygon given in order (shoelace formula)."""
     x, y = xy[:, 0], xy[:, 1]
-    return 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+    nxt = _following(xy)
+    return 0.5 * abs(float(np.dot(x, nxt[:, 1]) - np.dot(y, nxt[:, 0])))
 
 
 def polygon_centroid(xy: np.ndarray) -> np.ndarray:
     """Area centroid of a simple polygon given in order (where the weight acts; not the vertex mean)."""
-    nxt = np.roll(xy, -1, axis=0)
+    nxt = _following(xy)
     c = xy[:, 0] * nxt[:, 1] - xy[:, 1] * nxt[:, 0]
     return ((xy + nxt) * c[:, None]).sum(axis=0) / (3.0 * c.sum())
 

@@ -97,10 +97,11 @@ class Arcs:
         self.min_radius = min(a.radius for a in arcs)
 
     def station(self, s: float) -> Station:
-        ends = np.abs(self.starts - s) <= END_TOLERANCE * self.length
-        if ends.any():
-            return self._end_station(int(np.argmax(ends)))
-        k = int(np.clip(np.searchsorted(self.starts, s) - 1, 0, len(self.arcs) - 1))
+        near = END_TOLERANCE * self.length
+        ends = [k for k, start in enumerate(self.starts.tolist()) if abs(start - s) <= near]
+        if ends:
+            return self._end_station(ends[0])
+        k = min(max(int(np.searchsorted(self.starts, s)) - 1, 0), len(self.arcs) - 1)
         arc = self.arcs[k]
         angle = arc.start - (s - self.starts[k]) / arc.radius
         normal = np.array([math.cos(angle), math.sin(angle)])
