@@ -38,11 +38,10 @@ from yadearch.case.config import preset
 from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK, STATIC_PATH_STATES
 from yadearch.errors import CaseError
 from yadearch.plotting.atlas import atlas_figure
+from yadearch.studies.atlas.comparison import bracket_comparison, floor_comparison
 from yadearch.studies.atlas.grid import KNS_N_PER_MM3, dem_rows, engine_base, geometries, static_rows
 from yadearch.studies.atlas.invariance import (
     INVARIANCE_COMMAND,
-    bracket_comparison,
-    floor_comparison,
     invariance_markdown,
     invariance_rows,
     invariance_table,

@@ -8,12 +8,11 @@ import math
 import pandas as pd
 
 from yadearch.case.config import preset
+from yadearch.studies.atlas.comparison import bracket_comparison, floor_comparison
 from yadearch.studies.atlas.invariance import (
     BASE,
     REFINED,
     SETTINGS,
-    bracket_comparison,
-    floor_comparison,
     invariance_markdown,
     invariance_rows,
     invariance_table,
@@ -61,6 +60,18 @@ def test_the_largest_move_is_named_by_its_variant_and_a_changed_outcome_listed()
     assert "du within 1 % under every variant: 1 of 1" in text
     assert "du_first within 1 %: 0 of 1" in text
     assert "| arch-kn5.2 | 100.00 | 0.50% | bracket_x2 | 60.00 | 33.33% | snap_floor_x0.5 |" in text
+
+
+def test_a_collapse_of_another_kind_is_named_by_its_variant_and_counted_by_setting():
+    du = {BASE: 100.0, "bracket_x2": 100.1, "runaway_x0.5": 100.0, "runaway_x2": 100.0, "increments_x2": math.nan}
+    kinds = {"runaway_x0.5": "snap-through"}  # the others as the default; increments_x2 stands, not compared
+    table = results(du, {BASE: 60.0}, {"increments_x2": "stands"})
+    table["collapse_kind"] = [kinds.get(v, "four-hinge mechanism") for v in du]
+    row = invariance_table(table).iloc[0]
+    assert row["kind_changed_by"] == "runaway_x0.5"
+    text = invariance_markdown(invariance_table(table))
+    assert "- collapse kind changed by a variant: 1 of 1 (increments 0, bracket 0, runaway 1, snap_floor 0)." in text
+    assert "collapse kind" not in invariance_markdown(invariance_table(results(du, {BASE: 60.0}, {})))
 
 
 def test_refined_increments_are_kept_apart_from_the_spread_and_compared_with_the_finest():

@@ -30,8 +30,7 @@ REFINED = (0.25, 0.125)  # the increments refined further: where does the answer
 TOLERANCE = 0.01  # the standard: a result that moves by more than 1 % is not a result yet
 BASE = "base"
 INVARIANCE_COMMAND = ".venv/bin/python scripts/atlas.py --invariance"
-ACTED = 1e-4  # an answer moving more than this (relative) between two studies: the change acted on it
-LONG_COLLAPSE_MM = 10.0  # collapses compared across snap floors: the 0.1 mm bracket is over 1 % of a shorter du
+KIND = "collapse_kind"  # the collapse's kind (four-hinge mechanism, snap-through, ...) where the results have it
 
 
 def variants(base: ArchCase) -> dict[str, dict[str, float]]:
@@ -61,7 +60,8 @@ def invariance_rows(base: ArchCase) -> list[dict[str, Any]]:
     ]
 
 
-def _relative(value: float, reference: float) -> float:
+def relative_move(value: float, reference: float) -> float:
+    """|value - reference| / reference; NaN where either is missing or the reference is 0."""
     if math.isnan(value) or math.isnan(reference) or reference == 0.0:
         return math.nan
     return abs(value - reference) / reference
@@ -84,12 +84,14 @@ def invariance_table(results: pd.DataFrame) -> pd.DataFrame:
             "du_first_mm": base["du_first_mm"],
         }
         for column in ("du_mm", "du_first_mm"):
-            moves = {v: _relative(x, base[column]) for v, x in zip(others["variant"], others[column])}
+            moves = {v: relative_move(x, base[column]) for v, x in zip(others["variant"], others[column])}
             finite = {v: m for v, m in moves.items() if not math.isnan(m)}
             worst = max(finite, key=lambda variant: finite[variant]) if finite else ""
             row[f"{column}_spread"] = finite.get(worst, math.nan)
             row[f"{column}_by"] = worst
         row["outcome_changed_by"] = " ".join(others.loc[others["outcome"] != base["outcome"], "variant"])
+        if KIND in group:
+            row["kind_changed_by"] = _kind_changed_by(others, base)
         row.update(_refinement(group, base))
         refinements = group[group["variant"].isin(list(map(refined, REFINED)))]
         row["outcome_refined_by"] = " ".join(refinements.loc[refinements["outcome"] != base["outcome"], "variant"])
@@ -97,7 +99,16 @@ def invariance_table(results: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def _held(arches: pd.DataFrame, spread: str) -> int:
+def _kind_changed_by(others: pd.DataFrame, base: pd.Series) -> str:
+    """The variants that collapse too, as a collapse of another kind than the default's ("" where the
+    default does not collapse)."""
+    if base["outcome"] != "collapse":
+        return ""
+    collapsed = others[others["outcome"] == "collapse"]
+    return " ".join(collapsed.loc[collapsed[KIND].fillna("") != (base[KIND] or ""), "variant"])
+
+
+def held_within(arches: pd.DataFrame, spread: str) -> int:
     """How many of `arches` keep their answer within TOLERANCE under every variant (`spread`, the column
     of its largest move; none measured counts as held)."""
     return int((arches[spread].fillna(0.0) <= TOLERANCE).sum())
@@ -113,7 +124,7 @@ def _refinement(group: pd.DataFrame, base: pd.Series) -> dict[str, float]:
             name = refined(factor)
             collapsed = name in by_variant.index and by_variant.loc[name, "outcome"] == "collapse"
             row[f"{column}_x{factor:g}"] = float(by_variant.loc[name, column]) if collapsed else math.nan
-        row[f"{column}_from_finest"] = _relative(base[column], row[f"{column}_x{min(REFINED):g}"])
+        row[f"{column}_from_finest"] = relative_move(base[column], row[f"{column}_x{min(REFINED):g}"])
     return row
 
 
@@ -122,7 +133,7 @@ def invariance_markdown(table: pd.DataFrame, command: str = INVARIANCE_COMMAND, 
     exception with the variant that moves it; the study made by `command`, and for one made with another
     default its `comparison` with the default's study (`floor_comparison`, `bracket_comparison`)."""
     collapsed = table[table["outcome"] == "collapse"]
-    held = {column: _held(collapsed, f"{column}_spread") for column in ("du_mm", "du_first_mm")}
+    held = {column: held_within(collapsed, f"{column}_spread") for column in ("du_mm", "du_first_mm")}
     changed = table[table["outcome_changed_by"].fillna("") != ""]
     lines = [
         "# The atlas's answers against the numerics (static engine)",
@@ -135,6 +146,7 @@ def invariance_markdown(table: pd.DataFrame, command: str = INVARIANCE_COMMAND, 
         f"- du within {TOLERANCE * 100:g} % under every variant: {held['du_mm']} of {len(collapsed)}.",
         f"- du_first within {TOLERANCE * 100:g} %: {held['du_first_mm']} of {len(collapsed)}.",
         f"- outcome changed by a variant: {len(changed)} arches.",
+        *_kind_lines(collapsed),
         "",
     ]
     outside = collapsed[
@@ -168,6 +180,20 @@ def invariance_markdown(table: pd.DataFrame, command: str = INVARIANCE_COMMAND, 
     return "\n".join(lines) + "\n"
 
 
+def _kind_lines(collapsed: pd.DataFrame) -> list[str]:
+    """How many collapses change their kind under some variant, and under each setting's (none without
+    the kinds in the results)."""
+    if "kind_changed_by" not in collapsed:
+        return []
+    changed = collapsed["kind_changed_by"].fillna("")
+    by_setting = {
+        setting: int(changed.map(lambda names: any(n.startswith(f"{setting}_x") for n in names.split())).sum())
+        for setting in SETTINGS
+    }
+    counts = ", ".join(f"{setting} {count}" for setting, count in by_setting.items())
+    return [f"- collapse kind changed by a variant: {int((changed != '').sum())} of {len(collapsed)} ({counts})."]
+
+
 def _refinement_markdown(collapsed: pd.DataFrame) -> list[str]:
     """The section on the refined increments: how many defaults are within 1 % of the finest, whether
     the two finest agree (converged), and each default that is not."""
@@ -178,7 +204,7 @@ def _refinement_markdown(collapsed: pd.DataFrame) -> list[str]:
         near = int((both[f"{column}_from_finest"] <= TOLERANCE).sum())
         settled = int(
             (
-                both.apply(lambda r: _relative(r[f"{column}_{next_finest}"], r[f"{column}_{finest}"]), axis=1)
+                both.apply(lambda r: relative_move(r[f"{column}_{next_finest}"], r[f"{column}_{finest}"]), axis=1)
                 <= TOLERANCE
             ).sum()
         )
@@ -207,80 +233,4 @@ def _refinement_markdown(collapsed: pd.DataFrame) -> list[str]:
                 for _, r in apart.iterrows()
             ],
         )
-    return lines
-
-
-def floor_comparison(table: pd.DataFrame, default_floor: pd.DataFrame) -> list[str]:
-    """The section comparing a study made with another snap floor (`table`) with the default floor's:
-    among the arches both collapse beyond LONG_COLLAPSE_MM, du and du_first within 1 % under every
-    variant in each, and where this floor's du_first lies against the default's."""
-    both = table.merge(default_floor, on="case", suffixes=("", "_default"))
-    long = both[
-        (both["outcome"] == "collapse")
-        & (both["outcome_default"] == "collapse")
-        & (both["du_mm_default"] >= LONG_COLLAPSE_MM)
-    ]
-
-    spreads = [f"{c}_spread{floor}" for c in ("du_mm", "du_first_mm") for floor in ("", "_default")]
-    held = {spread: _held(long, spread) for spread in spreads}
-    moved = (long["du_first_mm"] - long["du_first_mm_default"]) / long["du_first_mm_default"]
-    earlier, later = long[moved < -TOLERANCE], int((moved > TOLERANCE).sum())
-    lines = [
-        "",
-        "## Against the default snap floor (invariance.csv)",
-        "",
-        f"- arches both floors collapse beyond {LONG_COLLAPSE_MM:g} mm: {len(long)}; under every variant du "
-        f"within {TOLERANCE * 100:g} % in {held['du_mm_spread']} ({held['du_mm_spread_default']} at the "
-        f"default floor), du_first in {held['du_first_mm_spread']} ({held['du_first_mm_spread_default']}).",
-        f"- du_first against the default floor's: within {TOLERANCE * 100:g} % in "
-        f"{len(long) - len(earlier) - later}, earlier in {len(earlier)} (a smaller snap counted), later in {later}.",
-    ]
-    if not earlier.empty:
-        lines += ["", "Earlier:", ""]
-        lines += markdown_table(
-            ["case", "du (mm)", "du_first (mm)", "at the default floor (mm)"],
-            [
-                [r["case"], f"{r['du_mm']:.2f}", f"{r['du_first_mm']:.2f}", f"{r['du_first_mm_default']:.2f}"]
-                for _, r in earlier.sort_values("du_first_mm").iterrows()
-            ],
-        )
-    return lines
-
-
-def bracket_comparison(table: pd.DataFrame, default: pd.DataFrame) -> list[str]:
-    """The section comparing a study made with a relative bracket (`table`, `numerics.du_tolerance_ratio`)
-    with the default's (absolute alone): du and du_first within 1 % under every variant in each, over every
-    arch both collapse and over those beyond LONG_COLLAPSE_MM, and the answers the relative bracket moved."""
-    both = table.merge(default, on="case", suffixes=("", "_default"))
-    both = both[(both["outcome"] == "collapse") & (both["outcome_default"] == "collapse")]
-    lines = ["", "## Against the default bracket, du_tolerance_mm alone (invariance.csv)", ""]
-    for name, arches in (
-        ("", both),
-        (f" beyond {LONG_COLLAPSE_MM:g} mm", both[both["du_mm_default"] >= LONG_COLLAPSE_MM]),
-    ):
-        held = {spread: _held(arches, spread) for spread in ("du_mm_spread", "du_first_mm_spread")}
-        held_default = {spread: _held(arches, f"{spread}_default") for spread in held}
-        lines.append(
-            f"- arches both collapse{name}: {len(arches)}; under every variant du within {TOLERANCE * 100:g} % in "
-            f"{held['du_mm_spread']} ({held_default['du_mm_spread']} with the default bracket), du_first in "
-            f"{held['du_first_mm_spread']} ({held_default['du_first_mm_spread']})."
-        )
-    moved = both[
-        (both.apply(lambda r: _relative(r["du_mm"], r["du_mm_default"]), axis=1) > ACTED)
-        | (both.apply(lambda r: _relative(r["du_first_mm"], r["du_first_mm_default"]), axis=1) > ACTED)
-    ]
-    lines += ["", f"The default answers the relative bracket moves ({len(moved)}):", ""]
-    lines += markdown_table(
-        ["case", "du (mm)", "with the default bracket", "du_first (mm)", "with the default bracket"],
-        [
-            [
-                r["case"],
-                f"{r['du_mm']:.3f}",
-                f"{r['du_mm_default']:.3f}",
-                f"{r['du_first_mm']:.3f}",
-                f"{r['du_first_mm_default']:.3f}",
-            ]
-            for _, r in moved.sort_values("du_mm").iterrows()
-        ],
-    )
     return lines
