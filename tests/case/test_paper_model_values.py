@@ -5,9 +5,13 @@ from __future__ import annotations
 
 import json
 
+import pytest
+
 from yadearch.analysis.mechanism import run_warnings
-from yadearch.case.config import ArchCase, preset
-from yadearch.case.paper import paper_model_values
+from yadearch.case.config import DEFAULT_NAME, ArchCase, case_from_dict, preset
+from yadearch.case.paper import off_the_paper, paper_model_values
+from yadearch.cli.options import resolve_case
+from yadearch.errors import CaseError
 from yadearch.results.summary import RunSummary
 
 SEMICIRCLE = {"geometry.embrace_deg": 180.0, "geometry.thickness_mm": 45.0}
@@ -61,3 +65,20 @@ def test_a_static_run_of_another_arch_records_and_logs_what_it_took(tmp_path):
     assert any("1:10" in line and "interface.kn_N_per_mm3 5.2" in line for line in lines)
     written = json.loads((tmp_path / "run" / "summary.json").read_text())
     assert RunSummary.from_json(written).paper_model_values == summary.paper_model_values
+
+
+def test_a_preset_changed_off_the_papers_arch_is_not_named_for_it():
+    """`replace` (the API) and `--set` (the command line) alike: a pointed arch made from set 2 is filed as
+    "custom", set 2 at another kn stays set 2, and a name given or a case's own name is kept."""
+    assert preset("set2").replace(shape="pointed", span_mm=600.0).name == DEFAULT_NAME
+    assert preset("set2").replace(kn_N_per_mm3=10.0).name == "set2"
+    assert preset("set2").replace(embrace_deg=180.0, name="mine").name == "mine"
+    own = preset("set2").with_overrides({"name": "bridge", **SEMICIRCLE})
+    assert off_the_paper(own, named=False).name == "bridge"
+    assert resolve_case("set2", None, None, ("shape=pointed", "span_mm=600")).name == DEFAULT_NAME
+    assert resolve_case("set2", None, 100.0, ()).name == "set2"
+
+
+def test_a_parameter_written_above_the_sections_is_told_where_it_goes():
+    with pytest.raises(CaseError, match=r"thickness_mm is a parameter of \[geometry\], not a section"):
+        case_from_dict({"thickness_mm": 30.0})

@@ -112,7 +112,7 @@ def run(
             raise RunFolderError(
                 f"{folder} holds a finished run of another case ({differences[0]}"
                 f"{', ...' if len(differences) > 1 else ''}); choose another output "
-                "folder or overwrite it"
+                "folder (--out, out=) or replace it (--overwrite, overwrite=True)"
             )
     run_case_process(case, folder, timeout_s=timeout_s, quiet=quiet, single=True)
     result = open_run(folder)

@@ -8,7 +8,7 @@ import math
 from dataclasses import fields
 from typing import Any
 
-from yadearch.case.config import current_names, support_speed
+from yadearch.case.config import DEFAULT_NAME, current_names, support_speed
 from yadearch.case.materials import MATERIAL_KEY, PRESET_FIELD
 from yadearch.case.numerics_section import SCENE_PATH_STATES, STATIC_ENGINE, resolved_path_states
 from yadearch.case.sections import SECTIONS
@@ -23,7 +23,7 @@ def as_ran(data: dict[str, Any]) -> dict[str, Any]:
     reading is the one it resolves to (none for the static engine); what the folder
     keeps (`numerics.run_files`) and whether a static run checked itself (`numerics.increments_check`,
     which leaves its answer alone) are left out."""
-    filled: dict[str, Any] = {"name": data.get("name", "custom")}
+    filled: dict[str, Any] = {"name": data.get("name", DEFAULT_NAME)}
     for section_name, cls in SECTIONS.items():
         stored, defaults = current_names(section_name, data.get(section_name, {})), cls()
         filled[section_name] = {

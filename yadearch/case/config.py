@@ -35,11 +35,14 @@ from yadearch.errors import CaseError
 TEXT_ENCODING = "utf-8-sig"  # UTF-8, with or without the byte-order mark some editors (Excel, Notepad) write
 
 
+DEFAULT_NAME = "custom"  # the name of a case that gives none, and of a preset's arch changed off the paper's
+
+
 @dataclass
 class ArchCase:
     """One run: an arch, its joints, its loading and the numerics that solve it."""
 
-    name: str = "custom"
+    name: str = DEFAULT_NAME
     geometry: GeometryConfig = field(default_factory=GeometryConfig)
     material: MaterialConfig = field(default_factory=MaterialConfig)
     interface: InterfaceConfig = field(default_factory=InterfaceConfig)
@@ -74,8 +77,11 @@ class ArchCase:
         return tomli_w.dumps(self.to_dict())
 
     def replace(self, **overrides: Any) -> ArchCase:
-        """A copy with parameters replaced by bare name, e.g. `replace(kn_N_per_mm3=10)`."""
-        return self.with_overrides(overrides)
+        """A copy with parameters replaced by bare name, e.g. `replace(kn_N_per_mm3=10)`; a preset changed
+        off the paper's arch without a `name` is named DEFAULT_NAME (`case.paper.off_the_paper`)."""
+        from yadearch.case.paper import off_the_paper  # paper.py builds on this module
+
+        return off_the_paper(self.with_overrides(overrides), named="name" in overrides)
 
     def with_overrides(self, overrides: dict[str, Any]) -> ArchCase:
         """A copy with `{"section.key": value}` (or bare unique keys such as `kn_N_per_mm3`) replaced."""
@@ -190,8 +196,12 @@ def case_from_dict(data: dict[str, Any]) -> ArchCase:
     """Build and validate a case from nested dicts (TOML layout); unknown keys are errors."""
     unknown = set(data) - set(SECTIONS) - {"name"}
     if unknown:
+        first = sorted(unknown)[0]
+        owners = [section for section, cls in SECTIONS.items() if first in {f.name for f in fields(cls)}]
+        if owners:  # a parameter written above every section: say where it goes
+            raise CaseError(f"{first} is a parameter of [{owners[0]}], not a section: put it under [{owners[0]}]")
         raise CaseError(f"unknown section(s) {sorted(unknown)}; accepted: {sorted(SECTIONS)}")
-    name = data.get("name", "custom")
+    name = data.get("name", DEFAULT_NAME)
     if not isinstance(name, str):
         raise CaseError(f"name must be a plain folder name, got {type(name).__name__} {name!r:.40}")
     check_name(name)

@@ -9,7 +9,7 @@ from typing import Any
 
 from yadearch.case import reference
 from yadearch.case.comparison import as_ran
-from yadearch.case.config import ArchCase, preset
+from yadearch.case.config import DEFAULT_NAME, ArchCase, preset
 from yadearch.case.materials import MATERIAL_KEY, MATERIALS, PRESET_FIELD
 
 PAPER_SECTIONS = ("geometry", "material", "loading", "imperfections", "loads")  # what makes a run the paper's case
@@ -38,6 +38,14 @@ def paper_mismatch(case: dict[str, Any]) -> str | None:
 def is_paper_arch(case: ArchCase) -> bool:
     """Whether `case` is the paper's case at any kn (`paper_mismatch`)."""
     return paper_mismatch(case.to_dict()) is None
+
+
+def off_the_paper(case: ArchCase, named: bool) -> ArchCase:
+    """`case`, named DEFAULT_NAME where it still carries a preset's name but is no longer the paper's arch
+    and no name was given (`named`): a new arch is not filed, reported or compared as the paper's."""
+    if named or case.name not in reference.SETS or is_paper_arch(case):
+        return case
+    return case.with_overrides({"name": DEFAULT_NAME})
 
 
 def paper_model_values(case: ArchCase) -> dict[str, Any] | None:

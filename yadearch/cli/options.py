@@ -31,6 +31,7 @@ def resolve_case(
 ) -> ArchCase:
     """The case from a preset or a TOML file, with `--kn` and `--set key=value` overrides applied."""
     from yadearch.case.config import load_case, preset
+    from yadearch.case.paper import off_the_paper
     from yadearch.case.plan import static_only_refusal
     from yadearch.case.support import movement_overrides
     from yadearch.results.summary import STATIC
@@ -57,7 +58,7 @@ def resolve_case(
     engine = context.meta.get(ENGINE_META) if context is not None else None
     if engine is not None:
         overrides["numerics.engine"] = engine
-    resolved = case.with_overrides(overrides) if overrides else case
+    resolved = off_the_paper(case.with_overrides(overrides), named="name" in overrides) if overrides else case
     if resolved.numerics.engine == STATIC:
         _refuse_dem_numerics(list(overrides))
     refused = static_only_refusal(resolved.numerics)  # none with the static engine
