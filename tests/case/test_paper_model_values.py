@@ -72,6 +72,7 @@ def test_a_preset_changed_off_the_papers_arch_is_not_named_for_it():
     "custom", set 2 at another kn stays set 2, and a name given or a case's own name is kept."""
     assert preset("set2").replace(shape="pointed", span_mm=600.0).name == DEFAULT_NAME
     assert preset("set2").replace(kn_N_per_mm3=10.0).name == "set2"
+    assert preset("set2").replace(live_load="vertical", support_direction_deg=0.0).name == "set2"  # its arch, loaded
     assert preset("set2").replace(embrace_deg=180.0, name="mine").name == "mine"
     own = preset("set2").with_overrides({"name": "bridge", **SEMICIRCLE})
     assert off_the_paper(own, named=False).name == "bridge"

@@ -114,13 +114,13 @@ def test_the_command_runs_the_dem_load_path_in_a_child_and_writes_its_files(tmp_
     assert main(args) == 0
     said = capsys.readouterr().out.strip().splitlines()[-1]
     assert "DEM: collapse at" in said and "rigid blocks:" in said, said
-    written = json.loads((tmp_path / "set2_load_path.json").read_text())
+    written = json.loads((tmp_path / "custom_load_path.json").read_text())
     static = static_load_path(preset("set2").with_overrides(POINT))
     assert written["engine"] == "dem" and written["steps"] > 0
     assert math.isclose(written["collapse_multiplier"], static.capacity, rel_tol=ENGINES_TOLERANCE)
-    assert {"csv", "json", "log", "pdf", "png"} <= {p.suffix[1:] for p in tmp_path.glob("set2_load_path.*")}
-    run = open_run(tmp_path / "set2_load_path")
-    states, curve = run.folder.states, pd.read_csv(tmp_path / "set2_load_path.csv")
+    assert {"csv", "json", "log", "pdf", "png"} <= {p.suffix[1:] for p in tmp_path.glob("custom_load_path.*")}
+    run = open_run(tmp_path / "custom_load_path")
+    states, curve = run.folder.states, pd.read_csv(tmp_path / "custom_load_path.csv")
     path = states.path()
     assert states.load_unit == "N" and states.stage[path[0]] == "selfweight" and states.stage[path[-1]] == "collapse"
     assert np.allclose(states.load[path[:-1]], curve["multiplier"], rtol=1e-5)  # the curve CSV: 6 figures

@@ -143,13 +143,13 @@ def test_the_command_writes_the_load_path_and_refuses_bad_input_in_one_line(tmp_
     assert main([*base, "--out", str(tmp_path)]) == 0
     said = capsys.readouterr().out
     assert "static engine: collapse at" in said and "rigid blocks:" in said and "past the peak down to" in said
-    written = json.loads((tmp_path / "set2_load_path.json").read_text())
+    written = json.loads((tmp_path / "custom_load_path.json").read_text())
     assert written["outcome"] == "collapse" and written["collapse_multiplier"] < written["rigid_multiplier"]
     assert written["descending_branch_end"] == "fallen"
-    branches = pd.read_csv(tmp_path / "set2_load_path.csv")["branch"]
+    branches = pd.read_csv(tmp_path / "custom_load_path.csv")["branch"]
     assert branches.iloc[0] == "ascending" and branches.iloc[-1] == "descending"
-    assert {"pdf", "png", "csv", "json"} <= {p.suffix[1:] for p in tmp_path.glob("set2_load_path.*")}
-    assert (tmp_path / "set2_load_path" / "states.npz").is_file() and "set2_load_path/ (yadearch animate" in said
+    assert {"pdf", "png", "csv", "json"} <= {p.suffix[1:] for p in tmp_path.glob("custom_load_path.*")}
+    assert (tmp_path / "custom_load_path" / "states.npz").is_file() and "custom_load_path/ (yadearch animate" in said
     for after, words in (("500", "does not carry its support movement to 500 mm"), ("-1", "in [0, 10000]")):
         assert main([*base, "--after-mm", after, "--out", str(tmp_path)]) != 0
         said = capsys.readouterr()

@@ -21,7 +21,7 @@ def test_a_settled_arch_carries_less_and_the_curve_starts_at_the_load_paths_capa
     capacities = table["static_capacity"].to_numpy()
     assert (capacities[1:] < capacities[:-1]).all()  # each settlement takes some of the capacity away
     assert (table["static_first_loss"] <= table["static_capacity"] * (1 + 1e-12)).all()
-    assert {p.name for p in tmp_path.iterdir()} == {"set2_residual.csv", "set2_residual.pdf", "set2_residual.png"}
+    assert {p.name for p in tmp_path.iterdir()} == {"custom_residual.csv", "custom_residual.pdf", "custom_residual.png"}
 
 
 @pytest.mark.parametrize("points", [0, 51, 2.5, True])

@@ -41,9 +41,12 @@ def is_paper_arch(case: ArchCase) -> bool:
 
 
 def off_the_paper(case: ArchCase, named: bool) -> ArchCase:
-    """`case`, named DEFAULT_NAME where it still carries a preset's name but is no longer the paper's arch
-    and no name was given (`named`): a new arch is not filed, reported or compared as the paper's."""
-    if named or case.name not in reference.SETS or is_paper_arch(case):
+    """`case`, named DEFAULT_NAME where it still carries a preset's name but its geometry is no longer the
+    paper's arch and no name was given (`named`): a new arch is not filed, reported or compared as the
+    paper's. The paper's arch under another kn, material, movement or load keeps the preset's name."""
+    if named or case.name not in reference.SETS:
+        return case
+    if case.to_dict()["geometry"] == preset(case.name).to_dict()["geometry"]:
         return case
     return case.with_overrides({"name": DEFAULT_NAME})
 

@@ -19,6 +19,7 @@ from yadearch.case import reference
 from yadearch.case.paper import paper_mismatch
 from yadearch.plotting.run_figures import write_figures
 from yadearch.reporting import load_report
+from yadearch.reporting.captions import figure_caption
 from yadearch.reporting.paper_match import (
     hinge_text,
     interface_difference,
@@ -30,29 +31,6 @@ from yadearch.results.summary import DEM
 
 REPORT_FILE = "report.md"
 HINGE_ROWS = ("hinge_A", "hinge_B", "hinge_C")
-CAPTIONS = {
-    "strip": "Four states of the run at one scale: after the self-weight, at a third and two thirds of "
-    "du, and at collapse; open hinges marked with the paper's letters, the line of the joints' "
-    "contact-force resultants (the thrust line) in red, the undeformed outline dashed.",
-    "collapse": "The arch at collapse (at the upper end of du's bracket, after the failed hold went on "
-    "until a block moved 10 mm or another hold time passed), drawn to scale over its "
-    "undeformed outline (dashed); hinges labelled A-D by position as in the paper, with "
-    "interface and pivot side.",
-    "reactions": "Forces of the supports on the arch against the settlement δ of the right support; "
-    "faded past du, where the arch is already moving.",
-    "hinges": "Opening (gap at the edge opposite the pivot) and rotation of each hinge against δ; dots "
-    "mark formation, the last point is the collapse state.",
-    "crown": "Displacement of the crown voussoir against δ (from the unloaded geometry, self-weight "
-    "included); faded past du.",
-    "stability": "Smallest eigenvalue of the free blocks' tangent stiffness at each equilibrium state "
-    "against δ: positive while the state is stable, falling toward zero as du (a fold "
-    "of the equilibrium path) approaches.",
-}
-FINAL_STATE_CAPTION = (
-    "The arch at the end of the run (no collapse), drawn to scale over its undeformed "
-    "outline (dashed); hinges labelled A-D by position as in the paper, with interface and "
-    "pivot side."
-)
 
 
 @dataclass
@@ -213,14 +191,16 @@ def run_section(reported: ReportedRun) -> list[str]:
             "",
             f"A hinge is a run of joints rotating more than {th.rotation_mrad:g} mrad the same way, "
             f"reported at its peak with the joints rotating at least half as much (spread); it has formed "
-            f"once it is also open by {th.opening_mm:g} mm, for good. Labels follow the order of formation. "
+            f"once it is also open by {th.opening_mm:g} mm, for good. The first column is the order of "
+            "formation; the letters name the hinges by position, as the paper does (D the extrados hinge "
+            "at the fixed support, C at the driven one, A the intrados hinge, B the other extrados hinge). "
             f"Every hinge at every recorded δ: [hinges.csv]({reported.folder}/hinges.csv).",
             "",
         ]
     )
     lines += ["### Figures", ""]
     for name in reported.figures:
-        caption = CAPTIONS[name] if summary.collapsed or name != "collapse" else FINAL_STATE_CAPTION
+        caption = figure_caption(name, summary)
         lines += [
             f"![{name}]({reported.folder}/{FIGURES_DIR}/{name}.png)",
             "",
