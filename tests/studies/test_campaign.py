@@ -139,6 +139,9 @@ def test_explicit_table(tmp_path):
     table.write_text("kn_N_per_mm3,colour\n1,red\n")
     with pytest.raises(CaseError, match="colour"):
         read_table(table)
+    table.write_text("kn_N_per_mm3,thickness_mm\n5,24\n10\n")  # a short row: a mistake, not an empty cell
+    with pytest.raises(CampaignError, match=r"row 3 has 1 of the header's 2 cells; leave a cell empty"):
+        read_table(table)
 
 
 def test_a_table_naming_two_runs_alike_is_refused_naming_them(tmp_path):

@@ -38,6 +38,9 @@ def with_increments_check(
         if _states_the_check(case_file, settings):
             return case
         check = True
+    elif _states_the_check(None, settings):
+        flag = "--check" if check else "--no-check"
+        raise click.UsageError(f"{flag} and --set numerics.increments_check both say whether to check; keep one")
     return case.with_overrides({"numerics.increments_check": HALVED_INCREMENTS_CHECK if check else NO_INCREMENTS_CHECK})
 
 

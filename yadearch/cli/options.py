@@ -41,17 +41,20 @@ def resolve_case(
         raise click.UsageError("give either --preset or --case, not both")
     case = load_case(case_file) if case_file else preset(preset_name or "set2")
     overrides: dict[str, Any] = {}
+    named_movement: dict[str, Any] = {}
     for item in settings:
         if "=" not in item:
             raise click.UsageError(f"--set expects key=value, got {item!r}")
         key, value = item.split("=", 1)
         if key.strip() == MOVEMENT_KEY:  # a named movement stands for its [loading] parameters
-            overrides.update(movement_overrides(value.strip()))
+            named_movement = movement_overrides(value.strip())
             continue
         if key.strip() == MATERIAL_KEY:  # a named material stands for its [material] values
             overrides[f"{MATERIAL_KEY}.{PRESET_FIELD}"] = value.strip()
             continue
         overrides[key.strip()] = parse_scalar(value)
+    _refuse_twice(overrides, named_movement, kn)
+    overrides.update(named_movement)
     if kn is not None:
         overrides["interface.kn_N_per_mm3"] = kn
     context = click.get_current_context(silent=True)
@@ -65,6 +68,21 @@ def resolve_case(
     if refused:
         raise click.UsageError(refused)
     return resolved
+
+
+def _refuse_twice(overrides: dict[str, Any], named_movement: dict[str, Any], kn: float | None) -> None:
+    """UsageError where one parameter is given two ways (--kn and --set kn_N_per_mm3; a named movement
+    and one of the parameters it stands for), whichever comes last would otherwise win unsaid."""
+    given = {key.split(".")[-1]: key for key in overrides}
+    if kn is not None and "kn_N_per_mm3" in given:
+        key = given["kn_N_per_mm3"]
+        raise click.UsageError(f"kn is given twice: --kn {kn:g} and --set {key}={overrides[key]}; keep one")
+    clash = next((given[key.split(".")[-1]] for key in named_movement if key.split(".")[-1] in given), None)
+    if clash is not None:
+        raise click.UsageError(
+            f"--set {clash} and --set movement=... both set the support's movement; give the movement by "
+            "name or by its parameters, not both"
+        )
 
 
 def _refuse_dem_numerics(keys: list[str]) -> None:

@@ -110,7 +110,7 @@ def read_table(path: str | Path) -> list[dict[str, Any]]:
     """Rows of an explicit CSV campaign table: one column per parameter (an empty cell keeps the base
     value), optionally one column naming each run (`run`, `name` or yade-batch's `description`).
     UTF-8 with or without a byte-order mark (Excel's "CSV UTF-8"); anything else, a repeated column
-    or a row longer than the header is one line."""
+    or a row longer or shorter than the header is one line."""
     path = Path(path)
     if not path.is_file():
         raise CampaignError(f"campaign table {str(path)!r} does not exist")
@@ -123,6 +123,12 @@ def read_table(path: str | Path) -> list[dict[str, Any]]:
             for line, row in enumerate(reader, start=2):
                 if None in row:
                     raise CampaignError(f"campaign table {str(path)!r}: row {line} has more cells than the header")
+                if None in row.values():  # a short row; an empty cell (a comma with nothing) keeps the base value
+                    given = sum(v is not None for v in row.values())
+                    raise CampaignError(
+                        f"campaign table {str(path)!r}: row {line} has {given} of the header's {len(header)} cells; "
+                        "leave a cell empty (e.g. '10,') to keep the base value"
+                    )
                 rows.append(
                     {
                         (RUN_COLUMN if k in NAME_COLUMNS else k): (v if k in NAME_COLUMNS else parse_scalar(v))
