@@ -1,4 +1,4 @@
-"""Markdown tables for the reports every layer writes (studies, reporting)."""
+"""Markdown tables and the small texts of the reports every layer writes (studies, reporting, the CLI)."""
 
 from __future__ import annotations
 
@@ -19,3 +19,9 @@ def text_cell(value: object) -> str:
     """A table's text cell: empty where the value is missing (None, or the NaN pandas leaves in a column
     some rows do not have)."""
     return "" if value is None or (isinstance(value, float) and math.isnan(value)) else str(value)
+
+
+def seconds_text(seconds: float) -> str:
+    """A duration as a run reports it: hundredths below ten seconds (a static run's 0.37 s is not
+    "0 s"), whole seconds above."""
+    return f"{seconds:.2f} s" if seconds < 10.0 else f"{seconds:.0f} s"

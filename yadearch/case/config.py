@@ -16,6 +16,7 @@ from typing import Any
 
 import tomli_w
 
+from yadearch.case.fields import range_text
 from yadearch.case.materials import MATERIAL_KEY, PRESET_FIELD, fill_from_preset
 from yadearch.case.names import check_name
 from yadearch.case.sections import (
@@ -162,9 +163,9 @@ def _check_value(qualified: str, f: dataclasses.Field, value: Any) -> None:
     meta = f.metadata
     low, high = meta.get("low"), meta.get("high")
     if low is not None and (value <= low if meta["low_open"] else value < low):
-        raise CaseError(f"{name} must be {_range_text(meta)}, got {value!r}")
+        raise CaseError(f"{name} must be {range_text(meta)}, got {value!r}")
     if high is not None and (value >= high if meta["high_open"] else value > high):
-        raise CaseError(f"{name} must be {_range_text(meta)}, got {value!r}")
+        raise CaseError(f"{name} must be {range_text(meta)}, got {value!r}")
 
 
 def _check_table(name: str, columns: tuple[str, ...], rows: Any) -> None:
@@ -179,17 +180,6 @@ def _check_table(name: str, columns: tuple[str, ...], rows: Any) -> None:
             or any(isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v) for v in row)
         ):
             raise CaseError(f"{name} must be {shape}; row {k} is {row!r:.60}")
-
-
-def _range_text(meta: Mapping[str, Any]) -> str:
-    low, high = meta.get("low"), meta.get("high")
-    if high is None:
-        return f"{'>' if meta['low_open'] else '>='} {low:g}"
-    if low is None:
-        return f"{'<' if meta['high_open'] else '<='} {high:g}"
-    left = "(" if meta["low_open"] else "["
-    right = ")" if meta["high_open"] else "]"
-    return f"in {left}{low:g}, {high:g}{right}"
 
 
 def case_from_dict(data: dict[str, Any]) -> ArchCase:

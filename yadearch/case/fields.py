@@ -3,6 +3,7 @@ description, which `yadearch params` prints and validation reads."""
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 
@@ -31,3 +32,27 @@ def table_meta(columns: tuple[str, ...], doc: str) -> dict[str, Any]:
     """Field metadata: a table parameter's columns (rows of numbers) and a one-line description; a case
     written before it existed has no rows."""
     return {"table_columns": columns, "predates": [], "doc": doc}
+
+
+def range_text(meta: Mapping[str, Any]) -> str:
+    """A number's accepted range in words ("in (0, 100]", ">= 1")."""
+    low, high = meta.get("low"), meta.get("high")
+    if high is None:
+        return f"{'>' if meta['low_open'] else '>='} {low:g}"
+    if low is None:
+        return f"{'<' if meta['high_open'] else '<='} {high:g}"
+    left = "(" if meta["low_open"] else "["
+    right = ")" if meta["high_open"] else "]"
+    return f"in {left}{low:g}, {high:g}{right}"
+
+
+def accepted_text(meta: Mapping[str, Any]) -> str:
+    """What a parameter accepts, in words: its choices, its range, its table's columns; "" where its
+    metadata says nothing (a flag, a name)."""
+    if "choices" in meta:
+        return "one of " + ", ".join(meta["choices"])
+    if "table_columns" in meta:
+        return f"rows of [{', '.join(meta['table_columns'])}]"
+    if meta.get("low") is not None or meta.get("high") is not None:
+        return range_text(meta)
+    return ""

@@ -8,7 +8,7 @@ import dataclasses
 from dataclasses import dataclass, field, fields
 from typing import Any
 
-from yadearch.case.fields import choice_meta, number_meta, table_meta
+from yadearch.case.fields import accepted_text, choice_meta, number_meta, table_meta
 from yadearch.case.imperfections_section import ImperfectionsConfig
 from yadearch.case.loads_section import LoadsConfig
 from yadearch.case.materials import PRESET_CHOICES
@@ -257,6 +257,11 @@ RENAMED: dict[tuple[str, str], str] = {
     ("loading", "max_settlement_mm"): "max_support_displacement_mm",
     ("numerics", "settlement_rate_mm_per_s"): "support_rate_mm_per_s",
 }
+
+
+def parameter_accepted() -> dict[str, str]:
+    """What each parameter accepts, in words, by qualified name (`case.fields.accepted_text`)."""
+    return {f"{name}.{f.name}": accepted_text(f.metadata) for name, cls in SECTIONS.items() for f in fields(cls)}
 
 
 def parameter_docs() -> list[tuple[str, str, str]]:

@@ -21,6 +21,7 @@ from yadearch.cli.options import (
     resolve_case,
 )
 from yadearch.errors import YadearchError
+from yadearch.markdown import seconds_text
 
 if TYPE_CHECKING:
     from yadearch.results.summary import RunSummary
@@ -34,10 +35,11 @@ def _report_summary(out: Path) -> None:
 
     summary: RunSummary = read_summary(out)
     du = summary.du_mm
+    reach = f"no collapse up to {summary.loading.max_displacement_mm:g} mm" if summary.loading else "no collapse"
     click.echo(
-        f"{summary.name}: du = {'no collapse' if du is None else f'{du:.2f} mm'}, "
+        f"{summary.name}: du = {reach if du is None else f'{du:.2f} mm'}, "
         f"hinges at collapse {summary.hinge_labels or '-'}, {summary.cost}, "
-        f"{summary.wall_s:.0f} s -> {out}"
+        f"{seconds_text(summary.wall_s)} -> {out}"
     )
     if summary.increments_check and summary.increments_check.get("resolved", True):  # else a warning says it
         from yadearch.results.check_text import check_line
@@ -117,11 +119,13 @@ def reproduce(out: str, jobs: int, rerun: bool) -> None:
 
 @cli.command()
 def params() -> None:
-    """List every case parameter with its default and meaning."""
-    from yadearch.case.sections import parameter_docs
+    """List every case parameter with its default, what it accepts and its meaning."""
+    from yadearch.case.sections import parameter_accepted, parameter_docs
 
+    accepted = parameter_accepted()
     for qualified, default, doc in parameter_docs():
-        click.echo(f"{qualified:40s} {default:>10s}  {doc}")
+        says = f" [{accepted[qualified]}]" if accepted[qualified] else ""
+        click.echo(f"{qualified:40s} {default:>10s}  {doc}{says}")
 
 
 @cli.command()
@@ -192,15 +196,21 @@ def limit(
         figures=figures,
     )
     path, _ = limit_files(case, compliant, out, result.start_hinges, result.start_mm)
-    du = "no collapse" if result.du_rigid_mm is None else f"{result.du_rigid_mm:.2f} mm"
+    stood = result.du_rigid_mm is None
+    du = (
+        f"no collapse up to {case.loading.max_support_displacement_mm:g} mm"
+        if stood
+        else f"{result.du_rigid_mm:.2f} mm"
+    )
     if compliant:
         du += f" with compliant hinges at kn {case.interface.kn_N_per_mm3:g} N/mm^3"
     new = f" (new: {' '.join(result.new_at_collapse)})" if result.new_at_collapse else ""
     if result.start_hinges:
         where = f"{result.start_mm:g} mm along" if result.start_mm else "from rest on"
         new += f", {where} {' '.join(result.start_hinges)}"
+    mechanism = "hinges at the end:" if stood else f"{result.collapse_mode} on"
     click.echo(
-        f"{case.name}: du_rigid = {du}, {result.collapse_mode} on {' '.join(result.collapse_hinges)}"
+        f"{case.name}: du_rigid = {du}, {mechanism} {' '.join(result.collapse_hinges)}"
         f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}"
     )
     if result.du_first_mm is not None and result.snaps:

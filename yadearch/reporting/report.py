@@ -17,6 +17,7 @@ from yadearch.analysis.tracking import format_interfaces
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case import reference
 from yadearch.case.paper import paper_mismatch
+from yadearch.markdown import seconds_text
 from yadearch.plotting.run_figures import write_figures
 from yadearch.reporting import load_report
 from yadearch.reporting.captions import figure_caption
@@ -210,7 +211,7 @@ def run_section(reported: ReportedRun) -> list[str]:
     lines += ["### Provenance", "", "| | |", "|---|---|"]
     for key in ("engine", "yade_version", "yadearch_version", "git_revision", "steps", "wall_s"):
         value = getattr(summary, key)
-        lines.append(f"| {key} | {f'{value:.0f}' if key == 'wall_s' and value is not None else value} |")
+        lines.append(f"| {key} | {seconds_text(value) if key == 'wall_s' and value is not None else value} |")
     return lines + [""]
 
 
