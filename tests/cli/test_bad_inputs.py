@@ -143,6 +143,7 @@ def probes() -> list[list[str]]:
         ],
         ["run", "--preset", "set2", "--engine", "static", "--no-check", "--set", "numerics.increments_check=halved"],
         ["sweep", "--table", "IN/short_row.csv", "--engine", "static", "--out", "OUT/t"],
+        ["loads", "--preset", "set2", "--kn", "100", "--set", "live_load=vertical", "--out", "OUT/l"],  # rigid blocks
         # views of a run: no run folder, an unknown format, no --vtk, a run from before states.npz
         ["animate", "OUT/not-a-run"],
         ["animate", f"{REPO}/reports/set1", "--format", "avi"],

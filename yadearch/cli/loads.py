@@ -33,9 +33,14 @@ ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
 
 
 @click.command()
-@case_options(with_kn=False, with_engine=False)
+@case_options(with_kn=True, with_engine=False)
 @click.option(
-    "--out", type=OUT_FOLDER, default="runs/loads", show_default=True, help="folder that receives NAME_loads.json"
+    "--out",
+    type=OUT_FOLDER,
+    default="runs/loads",
+    show_default=True,
+    help="folder that receives the answer: NAME_loads.json (rigid), NAME_load_path.json/.csv and its states "
+    "NAME_load_path/ (static, dem)",
 )
 @click.option(
     "--engine",
@@ -91,6 +96,7 @@ ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
 def loads(
     preset_name: str | None,
     case_file: str | None,
+    kn: float | None,
     settings: tuple[str, ...],
     out: str,
     load_engine: str,
@@ -105,8 +111,8 @@ def loads(
     """A live load's capacity: the load (N) or acceleration (g) at collapse with the self-weight held, and
     its mechanism ([loads] of the case, or --set live_load=...), by rigid-block limit analysis, on the
     static engine's path, or on the DEM's (YADE); --after-mm first moves the support."""
-    refuse_unread(settings, None, load_engine)
-    case = resolve_case(preset_name, case_file, None, settings)
+    refuse_unread(settings, kn, load_engine, can_comply=False)
+    case = resolve_case(preset_name, case_file, kn, settings)
     if residual is not None:
         _residual(case, residual, out, figures)
         return

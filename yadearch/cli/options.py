@@ -100,10 +100,13 @@ def _refuse_dem_numerics(keys: list[str]) -> None:
 PASSIVE_DISPLACEMENT_KEY = "fill_passive_displacement_mm"  # the fill's spring, which rigid blocks do not have
 
 
-def refuse_unread(settings: tuple[str, ...], kn: float | None, engine: str, compliant: bool = False) -> None:
+def refuse_unread(
+    settings: tuple[str, ...], kn: float | None, engine: str, compliant: bool = False, can_comply: bool = True
+) -> None:
     """UsageError in one line when --set (or --kn) names a parameter `engine` does not read: the
-    rigid-block analysis reads no numerics, no fill spring and, unless `compliant`, no joint stiffness;
-    the static engine reads no DEM numerics."""
+    rigid-block analysis reads no numerics, no fill spring and, unless `compliant`, no joint stiffness
+    (the hint names --compliant where the command has it, `can_comply`); the static engine reads no DEM
+    numerics."""
     from yadearch.case.config import parameter_section
     from yadearch.results.summary import STATIC
 
@@ -112,9 +115,11 @@ def refuse_unread(settings: tuple[str, ...], kn: float | None, engine: str, comp
     if engine != RIGID:
         return
     if kn is not None and not compliant:
+        instead = (
+            "add --compliant for the du a run at that kn should find" if can_comply else "use --engine static or dem"
+        )
         raise click.UsageError(
-            f"--kn {kn:g} plays no part in the rigid-block analysis (rigid joints); add --compliant for the du a "
-            "run at that kn should find, or drop it"
+            f"--kn {kn:g} plays no part in the rigid-block analysis (rigid joints); {instead}, or drop it"
         )
     for item in settings:
         key = item.split("=", 1)[0].strip()
