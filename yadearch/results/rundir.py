@@ -31,6 +31,7 @@ STIFFNESS_COLUMN = "min_stiffness_N_per_m"  # series.csv: an equilibrium state's
 IMPERFECTIONS_FILE = "imperfections.csv"  # the defects drawn for each joint (imperfect arches only)
 SNAPSHOTS_FILE = "snapshots.json"
 SUMMARY_FILE = "summary.json"
+CAMPAIGN_TABLE = "results.csv"  # what a campaign keeps in its folder instead of a summary (studies.campaigns)
 LOG_FILE = "run.log"
 LOAD_PATH_FILE = "load_path.json"  # in a live load's path folder (results/load_path.py): its answer, written last
 STAGING_PREFIX, STAGING_SUFFIX = ".", ".partial"  # a run is written to .NAME.partial beside NAME
@@ -156,7 +157,11 @@ def _json_default(value: Any) -> Any:
 def summary_problem(path: Path) -> str | None:
     """Why the folder's summary.json does not vouch for a complete run (None: it does)."""
     file = Path(path) / SUMMARY_FILE
+    if not Path(path).is_dir():
+        return "no such folder"
     if not file.is_file():
+        if (Path(path) / CAMPAIGN_TABLE).is_file():
+            return f"a campaign's folder ({CAMPAIGN_TABLE}); give one of its runs' folders"
         return f"no {SUMMARY_FILE}"
     try:
         summary = json.loads(file.read_text())

@@ -15,12 +15,13 @@ from yadearch.case.config import ArchCase
 from yadearch.errors import CANNOT_STAND, UNRESOLVED
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.results.reuse import current_summary, outdated
+from yadearch.results.rundir import CAMPAIGN_TABLE
 from yadearch.results.summary import RunSummary
 from yadearch.solve.stages import Outcome
 from yadearch.studies.campaigns.failures import FAILED_FILE
 from yadearch.studies.campaigns.grid import RUN_COLUMN
 
-RESULTS_FILE = "results.csv"
+RESULTS_FILE = CAMPAIGN_TABLE
 RESULTS_EVERY_S = 5.0  # results.csv is rewritten at most this often while runs finish (and at the end)
 RESULTS_COST_SHARE = 0.05  # ... and no more often than keeps its rewriting to this share of the parent's time
 
