@@ -144,3 +144,14 @@ def test_a_load_over_a_voussoir_is_the_load_at_its_extrados_middle():
     assert load_analysis(case).multiplier == pytest.approx(load_analysis(same).multiplier, rel=1e-12)
     with pytest.raises(CaseError, match=r"loads.load_voussoir must be in \[0, 15\]"):
         load_analysis(case.with_overrides({"load_voussoir": 16}))
+
+
+def test_the_influence_lines_least_is_said_at_every_position_that_ties_with_it(tmp_path, capsys):
+    """A symmetric arch carries a load at 0.25 and at 0.75 of its span alike (mirror positions): the
+    command names both, the first's hinges beside them."""
+    from yadearch.cli.commands import main
+
+    args = ["loads", "--preset", "set2", "--set", "live_load=vertical", "--positions", "3", "--no-figures"]
+    assert main([*args, "--out", str(tmp_path)]) == 0
+    said = [line for line in capsys.readouterr().out.splitlines() if "influence line" in line]
+    assert len(said) == 1 and "least 9.919 N at 0.25 and 0.75 of the span (6I 18E 40I 56E at 0.25)" in said[0]

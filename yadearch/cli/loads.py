@@ -30,6 +30,7 @@ from yadearch.solve.stages import Outcome
 STATIC, DEM = "static", "dem"
 LOAD_ENGINES = (RIGID, STATIC, DEM)
 ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
+TIED_LOADS = 1e-3  # influence-line capacities within this fraction of the least are named beside it
 
 
 @click.command()
@@ -118,10 +119,12 @@ def loads(
         return
     if positions is not None:
         table = api.load_influence(case, positions, out=out, engine=load_engine, figures=figures)
-        weakest = table.loc[table["collapse_load_N"].idxmin()]
+        least = table["collapse_load_N"].min()
+        weakest = table[table["collapse_load_N"] <= least * (1.0 + TIED_LOADS)]  # a symmetric arch: mirror positions
+        where = [f"{p:.3g}" for p in weakest["position_over_span"]]
         click.echo(
-            f"{case.name}: influence line at {positions} positions: least {weakest.collapse_load_N:.4g} N at "
-            f"{weakest.position_over_span:.3g} of the span ({weakest.hinges}) -> {out}/{case.name}_influence.csv"
+            f"{case.name}: influence line at {positions} positions: least {least:.4g} N at {' and '.join(where)} of "
+            f"the span ({weakest['hinges'].iloc[0]} at {where[0]}) -> {out}/{case.name}_influence.csv"
         )
         if case.loads.live_load == "none":
             return
