@@ -128,23 +128,26 @@ def reproduce(
     jobs: int = 2,
     rerun: bool = False,
     on_reuse: Callable[[Path], None] | None = None,
+    engine: str = "dem",
 ) -> tuple[list[RunResult], Path]:
-    """The paper's two cases (OUT/set1, OUT/set2, `jobs` at once) and OUT/report.md with figures; a
-    finished run of exactly the same case in OUT is reused (`on_reuse` is told), unless `rerun`.
-    Returns both results and the report's path."""
+    """The paper's two cases (OUT/set1, OUT/set2, `jobs` at once) by `engine` (the DEM, YADE; or
+    'static': the same blocks and joints by Newton's method, seconds, no YADE) and OUT/report.md with
+    figures; a finished run of exactly the same case in OUT is reused (`on_reuse` is told), unless
+    `rerun`. Returns both results and the report's path."""
     from concurrent.futures import ThreadPoolExecutor
 
     from yadearch.launch.process import run_case_process
     from yadearch.results.reuse import holds_case
 
     check_arguments(jobs=jobs, rerun=rerun)
+    cases = {name: with_engine(name, engine) for name in PAPER_SETS}
     folders = [output_path(out, "out") / name for name in PAPER_SETS]
-    todo = [f for f in folders if rerun or not holds_case(f, _preset(f.name))]
+    todo = [f for f in folders if rerun or not holds_case(f, cases[f.name])]
     for folder in set(folders) - set(todo):
         if on_reuse is not None:
             on_reuse(folder)
     with ThreadPoolExecutor(max_workers=jobs) as pool:
-        list(pool.map(lambda folder: run_case_process(_preset(folder.name), folder), todo))
+        list(pool.map(lambda folder: run_case_process(cases[folder.name], folder), todo))
     return [open_run(f) for f in folders], report(folders, out)
 
 

@@ -12,6 +12,7 @@ import click
 from yadearch.cli.check import check_option, with_increments_check
 from yadearch.cli.lazy import LAZY_COMMANDS, LazyGroup
 from yadearch.cli.options import (
+    ENGINES,
     OUT_FOLDER,
     RIGID,
     argument_type,
@@ -101,7 +102,14 @@ def run(
     "--jobs", type=argument_type("jobs"), default=2, show_default=True, help="cases run at once (one core each)"
 )
 @click.option("--rerun", is_flag=True, help="run both cases again even if OUT holds finished runs of them")
-def reproduce(out: str, jobs: int, rerun: bool) -> None:
+@click.option(
+    "--engine",
+    type=click.Choice(ENGINES),
+    default="dem",
+    show_default=True,
+    help="dem: YADE, minutes; static: the same blocks and joints solved by Newton's method, seconds, no YADE",
+)
+def reproduce(out: str, jobs: int, rerun: bool, engine: str) -> None:
     """Run both paper cases into OUT/set1 and OUT/set2, then write OUT/report.md with figures.
 
     A finished run of exactly the same case already in OUT is reused (an interrupted reproduction
@@ -111,7 +119,7 @@ def reproduce(out: str, jobs: int, rerun: bool) -> None:
     def reused(folder: Path) -> None:
         click.echo(f"{folder.name}: reusing the finished run in {folder} (--rerun to run it again)")
 
-    results, path = reproduce_cases(out, jobs=jobs, rerun=rerun, on_reuse=reused)
+    results, path = reproduce_cases(out, jobs=jobs, rerun=rerun, on_reuse=reused, engine=engine)
     for result in results:
         _report_summary(result.path)
     click.echo(f"report: {path}")
