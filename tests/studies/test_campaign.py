@@ -419,3 +419,12 @@ def test_a_sweep_of_unlike_arches_draws_a_line_per_arch_and_no_answer_as_an_axis
     alone = table.assign(embrace_deg=[float("nan"), 150.0, 160.0, 180.0])  # no two runs alike but for the axis
     with pytest.raises(ValueError, match="no two on one line"):
         parameter_sweep_figure(alone, "support_direction_deg", tmp_path / "none", swept)
+
+
+def test_a_resumed_campaign_says_how_many_runs_it_kept(tmp_path, capsys):
+    from yadearch.studies.campaigns.progress import campaign_bar
+
+    campaign_bar(tmp_path / "sweep", 3, 1, progress=True).close()
+    assert "sweep: 2 of 3 runs already made in" in capsys.readouterr().out
+    campaign_bar(tmp_path / "fresh", 3, 3, progress=True).close()
+    assert "already made" not in capsys.readouterr().out

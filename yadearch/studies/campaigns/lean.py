@@ -12,7 +12,6 @@ from pathlib import Path
 from typing import Any
 
 import pandas as pd
-from tqdm import tqdm
 
 from yadearch.atomic import write_csv_atomically
 from yadearch.results.summary import RunSummary
@@ -20,6 +19,7 @@ from yadearch.static.pool import solve_batch
 from yadearch.studies.campaigns.batches import OUTDATED, read_batches, stored_row, write_batch
 from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.failures import failure_stands
+from yadearch.studies.campaigns.progress import campaign_bar
 from yadearch.studies.campaigns.table import (
     RESULTS_EVERY_S,
     RESULTS_FILE,
@@ -95,7 +95,7 @@ def run_batches(
     write_csv_atomically(out / RESULTS_FILE, tidy(pd.DataFrame(rows.values())))
     statuses = [row["status"] for row in rows.values()]
     counts = {"done": statuses.count("done"), "failed": statuses.count("failed"), "interrupted": 0}
-    bar = tqdm(total=len(specs), initial=len(specs) - len(todo), unit="run", disable=not progress, desc=out.name)
+    bar = campaign_bar(out, len(specs), len(todo), progress)
     queued = iter(batches_of(todo, pool.slots))
     futures: dict[Future, list[RunSpec]] = {}
 

@@ -17,7 +17,6 @@ from pathlib import Path
 from typing import Any
 
 import pandas as pd
-from tqdm import tqdm
 
 from yadearch.atomic import remove_stale_temporaries, write_atomically, write_csv_atomically
 from yadearch.case.config import ArchCase, preset
@@ -33,6 +32,7 @@ from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.failures import FAILED_FILE, failure_stands, record_failure
 from yadearch.studies.campaigns.grid import RUN_COLUMN, check_campaign_size, check_parameter, run_tag
 from yadearch.studies.campaigns.lean import known_rows, run_batches
+from yadearch.studies.campaigns.progress import campaign_bar
 from yadearch.studies.campaigns.sessions import record_session
 from yadearch.studies.campaigns.table import (
     RESULTS_EVERY_S,
@@ -225,14 +225,7 @@ def _run_planned(
         check_yade_installed()  # a campaign of static runs needs no YADE
     # the table exists before any run starts: a campaign killed (SIGKILL) in its first seconds leaves it
     write_csv_atomically(out / RESULTS_FILE, tidy(pd.DataFrame(rows.values())))
-    bar = tqdm(
-        total=len(specs),
-        initial=len(specs) - len(todo),
-        unit="run",
-        disable=not progress,
-        desc=out.name,
-        dynamic_ncols=True,
-    )
+    bar = campaign_bar(out, len(specs), len(todo), progress)
     counts = {"done": len(complete), "failed": len(specs) - len(todo) - len(complete), "interrupted": 0}
     queued = iter(todo)
     futures: dict[Future, RunSpec] = {}
