@@ -142,6 +142,15 @@ def test_bad_designs_are_refused_in_one_line_naming_the_value():
     )
 
 
+def test_factors_that_miss_the_arch_and_a_sample_without_variance_are_one_line():
+    """The paper's default ranges on another arch (a 40 mm ring outside 23-25 mm) are refused before
+    anything runs; a sample whose du never varies (no arch stands: 0 everywhere) has no indices."""
+    with pytest.raises(CampaignError, match=r"geometry.thickness_mm: its range 23-25 does not contain the case's 40"):
+        check_factors(ya.preset("set2").replace(thickness_mm=40.0), PAPER_FACTORS)
+    with pytest.raises(CampaignError, match=r"du is 0 mm in every run of the sample"):
+        sobol_indices(ISHIGAMI, np.zeros(64 * (len(ISHIGAMI) + 2)), 64)
+
+
 def test_static_sensitivity_of_a_small_arch_puts_thickness_before_friction(tmp_path):
     """9 voussoirs at set 2's kn: du grows with the ring's thickness; friction above 38° leaves the
     joints sticking (no slip in these mechanisms), so it hardly matters."""

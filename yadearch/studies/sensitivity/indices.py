@@ -100,8 +100,8 @@ def parse_factor(text: str) -> Factor:
 
 
 def check_factors(base: ArchCase, factors: tuple[Factor, ...]) -> None:
-    """Refuse factors whose range is empty or whose end values the case does not accept, before
-    anything runs (one line naming the factor)."""
+    """Refuse factors whose range is empty, does not contain the case's own value (a tornado swings about
+    it) or whose end values the case does not accept, before anything runs (one line naming the factor)."""
     if len({f.key for f in factors}) != len(factors):
         raise CampaignError("sensitivity factors: a parameter is listed twice")
     for factor in factors:
@@ -113,6 +113,13 @@ def check_factors(base: ArchCase, factors: tuple[Factor, ...]) -> None:
             raise CampaignError(f"sensitivity factor {factor.key}: a log range needs low > 0, got {factor.low:g}")
         for end in (factor.low, factor.high):
             base.with_overrides({factor.key: factor.value(0.0) if end == factor.low else factor.value(1.0)})
+        value = base_value(base, factor)
+        if factor.in_tornado and not factor.low <= value <= factor.high:
+            raise CampaignError(
+                f"sensitivity factor {factor.key}: its range {factor.low:g}-{factor.high:g} does not contain the "
+                f"case's {value:g} (the default factors are the paper's arch's); give this arch's own with "
+                "--factor NAME=LOW:HIGH (factors=...)"
+            )
 
 
 def base_value(base: ArchCase, factor: Factor) -> Any:
@@ -193,6 +200,11 @@ def sobol_indices(factors: tuple[Factor, ...], du_mm: np.ndarray, base_points: i
     complete = values[np.isfinite(values).all(axis=1)]
     if len(complete) < MIN_ESTIMATE_POINTS:
         raise CampaignError(f"only {len(complete)} of {len(values)} base points have every run done")
+    if np.ptp(complete) == 0.0:  # SALib would divide by a zero variance
+        raise CampaignError(
+            f"du is {complete.flat[0]:g} mm in every run of the sample (0: none stands): no variance for the "
+            "indices to share; check that the factors' ranges fit this arch (sensitivity.csv, the runs' reasons)"
+        )
     result = sobol_analyze.analyze(
         salib_problem(factors),
         complete.ravel(),

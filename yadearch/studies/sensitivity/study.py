@@ -24,7 +24,6 @@ from yadearch.studies.campaigns.runner import run_campaign
 from yadearch.studies.dem_settings import NO_DEM_SETTINGS
 from yadearch.studies.sensitivity.checks import check_count, checks_markdown, run_checks
 from yadearch.studies.sensitivity.indices import (
-    FIT_FROM,
     PAPER_FACTORS,
     STABLE_TO,
     Factor,
@@ -211,6 +210,9 @@ def sensitivity_markdown(
     verdict = "stable" if result.stable else "NOT stable"
     needed = result.stable_base_points
     needed_runs = f"{needed} base points ({needed * (len(factors) + 2)} runs)"
+    fitted = fitted_rows(result.convergence)
+    first = int(fitted["base_points"].iloc[0])
+    fit = f"fitted from {first} base points up" if len(fitted) > 1 else f"from the one change at {first} base points"
     lines += [
         "",
         f"Largest change of an index as the sample doubles: {result.shift:.3f} ({verdict}: "
@@ -234,11 +236,10 @@ def sensitivity_markdown(
         "",
         (
             f"The last doubling moved no index by more than {STABLE_TO}. The changes are Monte Carlo errors "
-            f"and not monotone: fitted as 1/sqrt(N) from {FIT_FROM} base points up, they stay below "
-            f"{STABLE_TO} from about {needed_runs}."
+            f"and not monotone: fitted as 1/sqrt(N) {fit}, they stay below {STABLE_TO} from about {needed_runs}."
             if result.stable
-            else f"If the largest change falls as 1/sqrt(N), as a Monte Carlo error does (fitted from {FIT_FROM} "
-            f"base points up), the indices are stable to {STABLE_TO} at about {needed_runs}."
+            else f"If the largest change falls as 1/sqrt(N), as a Monte Carlo error does ({fit}), the indices are "
+            f"stable to {STABLE_TO} at about {needed_runs}."
         ),
         "",
         f"![convergence]({CONVERGENCE_FIGURE}.png)",
