@@ -7,6 +7,7 @@ import pytest
 from synthetic_runs import make_run
 
 import yadearch as ya
+from yadearch.errors import CampaignError, RunFolderError
 
 
 def test_the_api_is_one_namespace_imported_on_first_use():
@@ -113,7 +114,8 @@ def test_the_static_engine_runs_through_the_api_and_says_so(tmp_path):
             r"face_bump_sd_mm must be in \[0, 1000\], got -1.0",
         ),
         (lambda out: ya.sensitivity("set2", out, base_points=12), ValueError, "base_points must be .*a power of two"),
-        (lambda out: ya.capacity("set2", out, step_deg=7), ValueError, "step_deg must divide 180"),
+        (lambda out: ya.capacity("set2", out, step_deg=7), CampaignError, "step_deg must divide 180"),
+        (lambda out: ya.report([], out), RunFolderError, "at least one run folder"),
     ],
 )
 def test_campaigns_refuse_bad_arguments_before_anything_runs(call, error, message, tmp_path):
@@ -132,3 +134,15 @@ def test_an_arch_that_cannot_stand_is_told_with_the_parameters_that_decide_it(tm
         r"internal_radius_mm 300, embrace_deg 125, n_voussoirs 9, friction_deg 0, kn 5.2 N/mm3",
     ):
         ya.run(case, out=tmp_path / "run", engine="static")
+
+
+def test_a_case_files_path_is_a_case_and_a_monte_carlo_draws_something(tmp_path):
+    """`ya.run("my_arch.toml")` reads the file (it was taken for a preset's name); a Monte Carlo with no
+    standard deviation to draw from is refused before it runs the same arch again and again."""
+    from yadearch.api.runs import as_case
+
+    path = tmp_path / "my_arch.toml"
+    path.write_text(ya.preset("set2").replace(n_voussoirs=15, name="mine").to_toml())
+    assert as_case(str(path)).name == "mine" and as_case(path).geometry.n_voussoirs == 15
+    with pytest.raises(CampaignError, match="no imperfection is drawn at random"):
+        ya.montecarlo("set2", tmp_path / "mc", samples=3, engine="static")

@@ -87,8 +87,8 @@ def montecarlo(
     figures (`figures`); returns the table of montecarlo.csv (du, hinges and each sample's
     imperfection summary)."""
     from yadearch.studies.campaigns.executors import open_pool
+    from yadearch.studies.montecarlo import check_drawn, run_montecarlo
     from yadearch.studies.montecarlo import levels as level_columns
-    from yadearch.studies.montecarlo import run_montecarlo
 
     check_arguments(samples=samples, seed=seed, jobs=jobs, timeout_s=timeout_s, figures=figures)
     folder = output_path(out, "out")
@@ -97,6 +97,7 @@ def montecarlo(
         if isinstance(values, (str, bytes)) or not hasattr(values, "__len__"):
             raise ArgumentTypeError(f"{key}: give a list of amplitude levels, got {values!r:.40}")
     check_campaign_size(samples * math.prod(len(v) for v in levels.values()))
+    check_drawn(base, levels)
     with open_pool(jobs, scheduler) as pool:
         n_levels = math.prod(len(v) for v in levels.values())
         log(f"Monte Carlo {folder}: {samples} samples x {n_levels} level(s) on {pool.where}")

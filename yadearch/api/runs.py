@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 from yadearch.api.arguments import check_arguments
 from yadearch.api.results import RunResult, open_run
-from yadearch.case.config import ArchCase
+from yadearch.case.config import ArchCase, load_case
 from yadearch.case.config import preset as _preset
 from yadearch.case.names import check_name, output_path
 from yadearch.case.numerics_section import NO_INCREMENTS_CHECK
@@ -42,14 +42,16 @@ ENGINES = ("dem", "static")
 
 
 def as_case(case: ArchCase | str) -> ArchCase:
-    """An ArchCase, or a preset's name ('set1', 'set2') taken as that preset; TypeError naming the
-    argument for anything else."""
+    """An ArchCase, a preset's name ('set1', 'set2') taken as that preset, or a case file's path (TOML)
+    read; TypeError naming the argument for anything else."""
     if isinstance(case, ArchCase):
         return case
+    if isinstance(case, (str, Path)) and (Path(case).suffix == ".toml" or Path(case).is_file()):
+        return load_case(Path(case))
     if isinstance(case, str):
         return _preset(case)
     raise ArgumentTypeError(
-        f"case must be an ArchCase (ya.preset, ya.load_case) or a preset name ('set1', 'set2'), "
+        f"case must be an ArchCase (ya.preset), a preset name ('set1', 'set2') or a case file's path (TOML), "
         f"got {type(case).__name__}"
     )
 
@@ -158,6 +160,8 @@ def report(runs: Sequence[str | Path], out: str | Path) -> Path:
 
     if isinstance(runs, (str, Path)):
         raise ArgumentTypeError(f"runs must be a list of run folders, got {type(runs).__name__} {str(runs)!r:.40}")
+    if not runs:
+        raise RunFolderError("runs must list at least one run folder, got none")
     return write_report(list(runs), output_path(out, "out"))
 
 

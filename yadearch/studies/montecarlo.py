@@ -7,6 +7,8 @@ from 100 to 200 samples keeps its first 100 runs. docs/usage.md shows the comman
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
+from dataclasses import fields
 from pathlib import Path
 from typing import Any
 
@@ -15,6 +17,7 @@ import pandas as pd
 from yadearch.analysis.samples import BAND, MEDIAN_CONFIDENCE, du_statistics, hinge_frequencies
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
+from yadearch.case.imperfections_section import ImperfectionsConfig
 from yadearch.errors import CampaignError
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.results.rundir import finished_summary
@@ -25,6 +28,20 @@ from yadearch.studies.campaigns.runner import run_campaign
 SEED_KEY = "imperfections.seed"
 MONTECARLO_FILE = "montecarlo.csv"
 SUMMARY_FILE = "montecarlo.md"
+
+
+def check_drawn(base: ArchCase, levels: Mapping[str, Sequence[float]]) -> None:
+    """CampaignError in one line where no imperfection of `base` or of its amplitude `levels` is drawn at
+    random (every standard deviation 0): every sample would be the same arch."""
+    drawn = [f.name for f in fields(ImperfectionsConfig) if "_sd_" in f.name]
+    if any(getattr(base.imperfections, name) for name in drawn):
+        return
+    if any(key.split(".")[-1] in drawn and any(v for v in values) for key, values in levels.items()):
+        return
+    raise CampaignError(
+        "no imperfection is drawn at random (every imperfections.*_sd_* is 0): every sample would be the same "
+        "arch; give a standard deviation, e.g. --set face_bump_sd_mm=0.1 (face_bump_sd_mm=0.1)"
+    )
 
 
 def sample_rows(samples: int, seed: int, axes: dict[str, list[Any]] | None = None) -> list[dict[str, Any]]:
@@ -100,7 +117,9 @@ def summary_markdown(table: pd.DataFrame, level_columns: list[str]) -> str:
         else [()]
     )
     for key in keys:
-        level = pd.Series(tuple(key), index=level_columns)  # aligned on the columns (a tuple is deprecated)
+        level = pd.Series(
+            tuple(key), index=level_columns, dtype=object
+        )  # aligned on the columns (a tuple is deprecated)
         group = table[(table[level_columns] == level).all(axis=1)] if level_columns else table
         stats = du_statistics(group.loc[group["status"] == "done", "du_mm"])
         prefix = "".join(f"{value:g} | " for value in key)

@@ -11,6 +11,7 @@ import numpy as np
 import pandas as pd
 
 from yadearch.case.bounds import MAX_STEP_DEG, MIN_STEP_DEG
+from yadearch.errors import CampaignError
 from yadearch.solve.stages import Stage
 
 DIRECTION_STEP_DEG = 15
@@ -18,10 +19,10 @@ DIRECTION_STEP_DEG = 15
 
 def directions(step_deg: float = DIRECTION_STEP_DEG) -> tuple[float, ...]:
     """Directions every `step_deg` from spreading (0) through settlement (-90) to closing (-180);
-    ValueError naming the argument unless MIN_STEP_DEG <= step_deg <= MAX_STEP_DEG and it divides 180."""
+    CampaignError naming the argument unless MIN_STEP_DEG <= step_deg <= MAX_STEP_DEG and it divides 180."""
     count = 180.0 / step_deg if MIN_STEP_DEG <= step_deg <= MAX_STEP_DEG else math.nan
     if not (math.isfinite(count) and abs(count - round(count)) < 1e-9):
-        raise ValueError(f"step_deg must divide 180 and lie in [{MIN_STEP_DEG:g}, {MAX_STEP_DEG}], got {step_deg!r}")
+        raise CampaignError(f"step_deg must divide 180 and lie in [{MIN_STEP_DEG:g}, {MAX_STEP_DEG}], got {step_deg!r}")
     return tuple(round(-k * step_deg, 9) + 0.0 for k in range(int(round(count)) + 1))
 
 
