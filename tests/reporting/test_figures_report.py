@@ -37,10 +37,11 @@ def test_report_numbers_are_those_of_summary_json(written):
     _, summary, markdown = written
     du = f"{summary.du_mm:.2f}"
     assert table_row(markdown, "du (mm)")[3] == du
-    assert table_row(markdown, "set2")[1:4] == ["dem", "set2", du]  # run | engine | paper set | du
+    row = table_row(markdown, "set2")  # run | engine | movement | du | hinges | paper set | ...
+    assert [row[1], row[3], row[5]] == ["dem", du, "set2"]
     hinges = summary.hinge_labels
     assert f"- hinges at collapse: {hinges}" in markdown
-    assert table_row(markdown, "set2")[6] == hinges
+    assert row[4] == hinges
     run_hinges = {table_row(markdown, f"hinge {x}")[3].split(" (")[0] for x in "ABC"}
     assert run_hinges <= {f"{h.interface} {h.side}" for h in summary.hinges_at_collapse}
     assert "**Note:**" not in markdown  # the analysis agrees with summary.json
@@ -104,6 +105,9 @@ def test_a_run_of_another_arch_is_not_compared_with_the_paper_whatever_its_name(
     markdown = write_report([tmp_path / "set2"], tmp_path / "out").read_text()
     assert "No reference: its case is not the paper's (geometry.n_voussoirs 10, paper 55)" in markdown
     assert "Comparison with the paper" not in markdown
+    # nothing of the paper in a report of other arches: no reference line, no paper columns, no empty list
+    assert "Reference:" not in markdown and "paper set" not in markdown and "## References\n\n1. " in markdown
+    assert "- arch: segmental arch, 10 voussoirs" in markdown
 
 
 def _named(name: str, kn: float | None = None) -> RunSummary:

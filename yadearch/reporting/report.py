@@ -27,6 +27,7 @@ from yadearch.reporting.paper_match import (
     match_hinges,
     match_reference,
 )
+from yadearch.reporting.run_words import arch_text, movement_text
 from yadearch.results.rundir import FIGURES_DIR, RunFolder
 from yadearch.results.summary import DEM
 
@@ -140,8 +141,14 @@ def run_section(reported: ReportedRun) -> list[str]:
             if summary.du_bracket_mm
             else ""
         ),
+        f"- arch: {arch_text(run.case)}; {movement_text(summary)}",
         f"- hinges at collapse: {hinges}",
-        f"- mechanism: {analysis.mechanism}",
+        f"- mechanism: {analysis.mechanism}"
+        + (
+            f" (the fold's motion: {summary.collapse_kind} on {' '.join(summary.collapse_mode_hinges or [])})"
+            if summary.collapse_kind
+            else ""
+        ),
         "- formation: "
         + (
             ", then ".join(
@@ -211,28 +218,27 @@ def run_section(reported: ReportedRun) -> list[str]:
     lines += ["### Provenance", "", "| | |", "|---|---|"]
     for key in ("engine", "yade_version", "yadearch_version", "git_revision", "steps", "wall_s"):
         value = getattr(summary, key)
-        lines.append(f"| {key} | {seconds_text(value) if key == 'wall_s' and value is not None else value} |")
+        if value is not None:  # a static run has no YADE version
+            lines.append(f"| {key} | {seconds_text(value) if key == 'wall_s' else value} |")
     return lines + [""]
 
 
 def overview(reported: list[ReportedRun]) -> list[str]:
-    """One line per run: its reference set, du against the paper's."""
-    lines = [
-        "| run | engine | paper set | du (mm) | paper numerical du (mm) | paper experimental du (mm) "
-        "| hinges at collapse |",
-        "|---|---|---|---|---|---|---|",
-    ]
+    """One line per run: its engine, movement, du and hinges, and where some run is the paper's case, its
+    reference set and the paper's du."""
+    paper = any(r.reference_name for r in reported)
+    columns = ["run", "engine", "movement", "du (mm)", "hinges at collapse"]
+    columns += ["paper set", "paper numerical du (mm)", "paper experimental du (mm)"] if paper else []
+    lines = ["| " + " | ".join(columns) + " |", "|---" * len(columns) + "|"]
     for r in reported:
         s = r.run.summary
-        ref = reference.SETS.get(r.reference_name or "", {})
-        du = s.du_mm
-        hinges = s.hinge_labels or "—"
-        lines.append(
-            f"| {s.name or r.run.path.name} | {s.engine} | {r.reference_name or '—'} | "
-            f"{'no collapse' if du is None else f'{du:.2f}'} | "
-            f"{ref['numerical']['du_mm'] if ref else '—'} | {ref['experimental']['du_mm'] if ref else '—'} | "
-            f"{hinges} |"
-        )
+        du = "no collapse" if s.du_mm is None else f"{s.du_mm:.2f}"
+        cells = [s.name or r.run.path.name, s.engine, movement_text(s), du, s.hinge_labels or "—"]
+        if paper:
+            ref = reference.SETS.get(r.reference_name or "", {})
+            cells += [r.reference_name or "—"]
+            cells += [str(ref[k]["du_mm"]) if ref else "—" for k in ("numerical", "experimental")]
+        lines.append("| " + " | ".join(cells) + " |")
     return lines
 
 
@@ -264,7 +270,8 @@ def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
     for r in reported:  # two runs of one name get two headings a reader can tell apart
         r.title = f"{r.run.summary.name} ({r.folder})" if names.count(r.run.summary.name) > 1 else ""
     loads = [load_report.report_load(p, out, _folder_name(p.name, p, taken)) for p in load_paths]
-    lines = ["# yadearch report", "", f"Reference: *{reference.PAPER}*.", ""]
+    paper_case = any(r.reference_name for r in reported)
+    lines = ["# yadearch report", "", *([f"Reference: *{reference.PAPER}*.", ""] if paper_case else [])]
     lines += overview(reported) + [""] if reported else []
     lines += ["## Live loads", "", *load_report.load_overview(loads), ""] if loads else []
     for r in reported:
@@ -273,9 +280,10 @@ def write_report(run_paths: Sequence[str | Path], out: str | Path) -> Path:
         lines += load_report.load_section(load)
     cited = reference.references_for(
         dem=any(r.run.summary.engine == DEM for r in reported) or any(x.answer["engine"] == DEM for x in loads),
-        paper_case=any(r.reference_name for r in reported),
+        paper_case=paper_case,
     )
-    lines += ["## References", ""] + [f"{k}. {text}" for k, text in enumerate(cited, start=1)] + [""]
+    if cited:
+        lines += ["## References", ""] + [f"{k}. {text}" for k, text in enumerate(cited, start=1)] + [""]
     path = out / REPORT_FILE
     write_text_atomically(path, "\n".join(lines))
     return path

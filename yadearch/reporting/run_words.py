@@ -1,0 +1,37 @@
+"""A run in words for its report: the arch it solved and how its support moved (a report of an arch that
+is not the paper's must say what it was)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from yadearch.case.comparison import as_ran
+from yadearch.results.summary import TRANSLATION, RunSummary
+
+# a translating support's direction (deg) by name, as `--set movement=NAME` gives it (the right support's)
+DIRECTION_NAMES = {-90.0: "settlement", 0.0: "spreading", 180.0: "closing", -180.0: "closing"}
+
+
+def arch_text(case: dict[str, Any]) -> str:
+    """The arch of a run's case (case.toml's dictionary, filled as it ran: an older file lacks newer keys):
+    its shape, voussoirs, ring and size."""
+    g = as_ran(case)["geometry"]
+    shape, ring = g["shape"], f"{g['n_voussoirs']} voussoirs, ring {g['thickness_mm']:g} mm"
+    if shape == "measured":
+        return f"surveyed arch of {len(g['joint_points_mm']) - 1} voussoirs"
+    if shape == "segmental":
+        return f"segmental arch, {ring}, intrados radius {g['internal_radius_mm']:g} mm, embrace {g['embrace_deg']:g}°"
+    size = f"span {g['span_mm']:g} mm" + (f", rise {g['rise_mm']:g} mm" if shape != "pointed" else "")
+    return f"{shape.replace('_', '-')} arch, {ring}, {size}"
+
+
+def movement_text(summary: RunSummary) -> str:
+    """How the run's support moved: which, how (a translation's direction, named where it has a name)."""
+    loading = summary.loading
+    if loading is None:
+        return "support movement not recorded"
+    support = "both supports" if loading.moving_support == "both" else f"{loading.moving_support} support"
+    if loading.motion != TRANSLATION:
+        return f"{support}: {loading.motion}"
+    named = DIRECTION_NAMES.get(loading.direction_deg) if loading.moving_support == "right" else None
+    return f"{support} moving at {loading.direction_deg:g}°" + (f" ({named})" if named else "")
