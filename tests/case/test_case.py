@@ -39,7 +39,7 @@ def test_toml_round_trip(tmp_path):
         ({"embrace_deg": 200}, "embrace_deg must be in (0, 180], got 200"),
         ({"n_voussoirs": 2.5}, "n_voussoirs must be an integer, got 2.5"),
         ({"damping": 1.0}, "damping must be in [0, 1), got 1.0"),
-        ({"friction_deg": "steep"}, "friction_deg must be a number, got 'steep'"),
+        ({"friction_deg": "steep"}, "friction_deg must be a number in [0, 90), got 'steep'"),
     ],
 )
 def test_bad_values_give_one_line_errors(override, message):
@@ -136,3 +136,10 @@ def test_auto_path_states_read_the_static_model_where_there_is_one():
     plan_run(cgal)
     for named in ("scene", "static"):
         assert auto.with_overrides({"numerics.support_path_states": named}).numerics.path_states == named
+
+
+def test_a_wrong_type_is_told_the_range_and_a_whole_bound_is_written_in_full():
+    with pytest.raises(CaseError, match=r"n_voussoirs must be an integer in \[2, 1000\], got True"):
+        preset("set2").replace(n_voussoirs=True)
+    with pytest.raises(CaseError, match=r"seed must be in \[0, 4294967295\], got -1"):
+        preset("set2").replace(seed=-1)

@@ -155,7 +155,13 @@ def _check_value(qualified: str, f: dataclasses.Field, value: Any) -> None:
             raise CaseError(f"{name} must be true or false, got {value!r}")
         return
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise CaseError(f"{name} must be a number, got {value!r}")
+        kind = "an integer" if f.type in ("int", int) else "a number"
+        accepted = (
+            f" {range_text(f.metadata)}"
+            if f.metadata.get("low") is not None or f.metadata.get("high") is not None
+            else ""
+        )
+        raise CaseError(f"{name} must be {kind}{accepted}, got {value!r}")
     if not math.isfinite(value):
         raise CaseError(f"{name} must be finite, got {value!r}")
     if f.type in ("int", int) and int(value) != value:

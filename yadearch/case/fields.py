@@ -38,12 +38,18 @@ def range_text(meta: Mapping[str, Any]) -> str:
     """A number's accepted range in words ("in (0, 100]", ">= 1")."""
     low, high = meta.get("low"), meta.get("high")
     if high is None:
-        return f"{'>' if meta['low_open'] else '>='} {low:g}"
+        return f"{'>' if meta['low_open'] else '>='} {_bound(low)}"
     if low is None:
-        return f"{'<' if meta['high_open'] else '<='} {high:g}"
+        return f"{'<' if meta['high_open'] else '<='} {_bound(high)}"
     left = "(" if meta["low_open"] else "["
     right = ")" if meta["high_open"] else "]"
-    return f"in {left}{low:g}, {high:g}{right}"
+    return f"in {left}{_bound(low)}, {_bound(high)}{right}"
+
+
+def _bound(value: Any) -> str:
+    """A range's end as the user would type it: a whole number in full (a seed's 4294967295, not
+    4.29497e+09), others to 6 significant figures."""
+    return str(int(value)) if float(value).is_integer() and abs(value) < 1e15 else f"{value:g}"
 
 
 def accepted_text(meta: Mapping[str, Any]) -> str:

@@ -233,8 +233,13 @@ def limit(
     if result.mirror_collapse_mode is not None:
         mirrored = "no collapse" if result.mirror_du_rigid_mm is None else f"{result.mirror_du_rigid_mm:.2f} mm"
         hinges = " ".join(result.mirror_collapse_hinges or ())
+        same = (
+            result.mirror_collapse_hinges == result.collapse_hinges and result.mirror_du_rigid_mm == result.du_rigid_mm
+        )
         click.echo(
-            f"mirrored (the keystone's other joint): du_rigid = {mirrored} ({result.mirror_collapse_mode}"
+            "mirrored: the same branch (the keystone's tie decided alike both ways)"
+            if same
+            else f"mirrored (the keystone's other joint): du_rigid = {mirrored} ({result.mirror_collapse_mode}"
             f"{' on ' + hinges if hinges else ''})"
         )
     largest = result.compliant_largest_margin_mm

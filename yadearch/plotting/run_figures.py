@@ -123,7 +123,9 @@ def collapse_figure(
         mark_hinge(
             ax,
             pivots[track.side][track.interface - 1],
-            f"{track.paper_label} ({track.interface}{track.side})",
+            f"{track.paper_label} ({track.interface}{track.side})"
+            if track.paper_label
+            else f"{track.interface}{track.side}",
             track.side,
             hinge_colour(track.paper_label, k),
         )
@@ -188,7 +190,11 @@ def plot_hinge_openings(run: RunFolder, analysis: RunAnalysis, stem: Path) -> tu
     highest = {top: 0.0, bottom: 0.0}
     for k, track in enumerate(analysis.tracks):
         colour = hinge_colour(track.paper_label, k)
-        label = f"{track.paper_label}: {track.interface}{track.side}"
+        label = (
+            f"{track.paper_label}: {track.interface}{track.side}"
+            if track.paper_label
+            else f"{track.interface}{track.side}"
+        )
         r = track.formed_record
         for ax, values, name in ((top, track.opening_mm, label), (bottom, track.rotation_mrad, None)):
             _plot_until_du(ax, delta, values, analysis.du_mm, color=colour, label=name)
