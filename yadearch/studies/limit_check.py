@@ -5,6 +5,7 @@ run counts as collapse and the compliant-hinge limit at the run's kn, as a Markd
 
 from __future__ import annotations
 
+import tomllib
 from pathlib import Path
 
 from yadearch.case.config import ArchCase, load_case
@@ -12,6 +13,7 @@ from yadearch.case.mechanics import runaway_length
 from yadearch.model import units
 from yadearch.model.hinges import mirror_hinge_labels
 from yadearch.results.rundir import CASE_FILE, hinge_list, read_summary
+from yadearch.results.summary import RunSummary
 from yadearch.solve.limit import has_other_branch, limit_analysis, mirror_image
 from yadearch.solve.limit_result import LimitResult
 from yadearch.studies.robustness import same_hinge_set
@@ -34,12 +36,14 @@ def check(folder: Path, tolerance: float) -> tuple[str, bool]:
     rigid arch two branches, the run is compared with the branch whose mechanism it follows."""
     case = load_case(folder / CASE_FILE)
     summary = read_summary(folder)
+    runaway_mm = _run_runaway_mm(case, summary, tomllib.loads((folder / CASE_FILE).read_text(encoding="utf-8")))
     mechanism = hinge_list(summary.hinges_last_equilibrium)
-    branches = [_branch(case, "direct"), _branch(case, "mirrored")] if has_other_branch(case) else [_branch(case, "-")]
+    names = ("direct", "mirrored") if has_other_branch(case) else ("-",)
+    branches = [_branch(case, name, runaway_mm) for name in names]
     survived, limit, rigid, chain, name = min(branches, key=lambda b: _distance(mechanism, b[2]))
     compliant = limit_analysis(
         mirror_image(case) if name == "mirrored" else case,
-        max_snap_mm=units.to_mm(runaway_length(case)),
+        max_snap_mm=runaway_mm,
         mirror=False,
         compliant=True,
     )
@@ -62,7 +66,15 @@ def check(folder: Path, tolerance: float) -> tuple[str, bool]:
     return (f"{head} | {gap:+.1%} | {hinges} | {_mm(predicted)} | {against} | {'yes' if ok else 'no'} |"), ok
 
 
-def _branch(case: ArchCase, name: str) -> tuple[LimitResult, LimitResult, str, str, str]:
+def _run_runaway_mm(case: ArchCase, summary: RunSummary, stored: dict) -> float:
+    """The runaway distance the run counted (mm): its summary's, or for a run made before the bound was
+    a share of the ring's thickness its case file's `numerics.runaway_mm` (`stored`: the file as read;
+    1 mm), else the case's."""
+    recorded = (summary.relaxations or {}).get("runaway_mm", stored.get("numerics", {}).get("runaway_mm"))
+    return float(recorded) if recorded is not None else units.to_mm(runaway_length(case))
+
+
+def _branch(case: ArchCase, name: str, runaway_mm: float) -> tuple[LimitResult, LimitResult, str, str, str]:
     """One branch of the rigid arch: its limit surviving every snap, its limit counting a snap beyond
     the run's runaway distance, the mechanism followed to that limit and its collapse chain (hinges
     in the case's own numbering) and the branch's `name`. The mirrored branch is the mirror image's
@@ -70,7 +82,7 @@ def _branch(case: ArchCase, name: str) -> tuple[LimitResult, LimitResult, str, s
     mirrored = name == "mirrored"
     solved = mirror_image(case) if mirrored else case
     survived = limit_analysis(solved, mirror=False)
-    limit = limit_analysis(solved, max_snap_mm=units.to_mm(runaway_length(case)), mirror=False)
+    limit = limit_analysis(solved, max_snap_mm=runaway_mm, mirror=False)
     followed = [f"{h.interface}{h.side}" for h in limit.hinge_history if h.to_mm is None]
     chain = list(limit.collapse_hinges)
     if mirrored:
