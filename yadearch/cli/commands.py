@@ -194,6 +194,9 @@ def limit(
 
     refuse_unread(settings, kn, RIGID, compliant)
     case = resolve_case(preset_name, case_file, kn, settings)
+    if compliant:  # a march of LPs with the fold margins at every step: seconds to tens of seconds, said first
+        kn_text = f"{case.interface.kn_N_per_mm3:g} N/mm^3"
+        click.echo(f"{case.name}: the compliant march at kn {kn_text} (up to tens of seconds) ...")
     result = limit_analysis(
         case,
         compliant=compliant,
