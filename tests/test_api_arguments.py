@@ -14,7 +14,7 @@ import pytest
 import yadearch as ya
 from yadearch.api.arguments import ARGUMENTS, Argument, check_arguments
 from yadearch.cli.commands import cli
-from yadearch.cli.options import ArgumentType
+from yadearch.cli.param_types import ArgumentType
 from yadearch.errors import ArgumentTypeError, YadearchError
 
 OPTIONS = {a.option: a for a in ARGUMENTS.values() if a.option}

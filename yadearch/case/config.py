@@ -16,7 +16,7 @@ from typing import Any
 
 import tomli_w
 
-from yadearch.case.fields import range_text
+from yadearch.case.fields import accepted_text, range_text
 from yadearch.case.materials import MATERIAL_KEY, PRESET_FIELD, fill_from_preset
 from yadearch.case.names import check_name
 from yadearch.case.sections import (
@@ -156,12 +156,8 @@ def _check_value(qualified: str, f: dataclasses.Field, value: Any) -> None:
         return
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         kind = "an integer" if f.type in ("int", int) else "a number"
-        accepted = (
-            f" {range_text(f.metadata)}"
-            if f.metadata.get("low") is not None or f.metadata.get("high") is not None
-            else ""
-        )
-        raise CaseError(f"{name} must be {kind}{accepted}, got {value!r}")
+        accepted = accepted_text(f.metadata)  # a number's range here: choices and tables are checked above
+        raise CaseError(f"{name} must be {kind}{' ' + accepted if accepted else ''}, got {value!r}")
     if not math.isfinite(value):
         raise CaseError(f"{name} must be finite, got {value!r}")
     if f.type in ("int", int) and int(value) != value:

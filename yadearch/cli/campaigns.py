@@ -12,16 +12,8 @@ import click
 from yadearch import api
 from yadearch.case import reference
 from yadearch.case.config import ArchCase
-from yadearch.cli.options import (
-    OUT_FILE,
-    OUT_FOLDER,
-    argument_type,
-    case_options,
-    drawing_pool_options,
-    pool_options,
-    resolve_case,
-    timeout_s,
-)
+from yadearch.cli.options import case_options, drawing_pool_options, pool_options, resolve_case, timeout_s
+from yadearch.cli.param_types import OUT_FILE, OUT_FOLDER, argument_type
 from yadearch.errors import YadearchError
 from yadearch.studies.campaigns.grid import check_parameter, parse_values, qualified_name
 from yadearch.studies.campaigns.runner import RESULTS_FILE

@@ -8,7 +8,8 @@ from pathlib import Path
 import click
 
 from yadearch import api
-from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, drawing_pool_options, resolve_case, timeout_s
+from yadearch.cli.options import case_options, drawing_pool_options, resolve_case, timeout_s
+from yadearch.cli.param_types import OUT_FOLDER, argument_type
 from yadearch.studies.capacity.campaign import FIGURE, REPORT, TABLE
 
 

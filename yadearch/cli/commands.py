@@ -11,16 +11,8 @@ import click
 
 from yadearch.cli.check import check_option, with_increments_check
 from yadearch.cli.lazy import LAZY_COMMANDS, LazyGroup
-from yadearch.cli.options import (
-    ENGINES,
-    OUT_FOLDER,
-    RIGID,
-    argument_type,
-    case_options,
-    figures_option,
-    refuse_unread,
-    resolve_case,
-)
+from yadearch.cli.options import ENGINES, case_options, figures_option, resolve_case
+from yadearch.cli.param_types import OUT_FOLDER, argument_type
 from yadearch.errors import YadearchError
 from yadearch.markdown import seconds_text
 
@@ -134,131 +126,6 @@ def params() -> None:
     for qualified, default, doc in parameter_docs():
         says = f" [{accepted[qualified]}]" if accepted[qualified] else ""
         click.echo(f"{qualified:40s} {default:>10s}  {doc}{says}")
-
-
-@cli.command()
-@case_options(with_kn=True, with_engine=False)
-@click.option(
-    "--out",
-    type=OUT_FOLDER,
-    default="runs/limit",
-    show_default=True,
-    help="folder that receives NAME.json, NAME.pdf and NAME.png",
-)
-@click.option(
-    "--max-snap-mm",
-    type=argument_type("max_snap_mm"),
-    default=None,
-    help="count a hinge snap that moves a block further than this (mm) as collapse, as a DEM "
-    "run counts a block running away (default: every snap that ends in equilibrium is "
-    "survived)",
-)
-@click.option(
-    "--compliant",
-    is_flag=True,
-    help="let the joints fold at the margin the case's kn allows (compliant hinges): the du a DEM "
-    "run of that stiffness should find, written as NAME_compliant.json",
-)
-@click.option(
-    "--start-hinges",
-    default=None,
-    metavar="'1E 35I 56E'",
-    help="leave rest on these three hinges (e.g. another engine's) instead of the linkage the kinematic "
-    "LP picks; refused unless the rigid arch holds an admissible equilibrium on them",
-)
-@click.option(
-    "--start-mm",
-    type=argument_type("start_mm"),
-    default=0.0,
-    show_default=True,
-    help="with --start-hinges: place the arch this far (mm) along those hinges from rest and march on from there",
-)
-@figures_option("the thrust-line figure")
-def limit(
-    preset_name: str | None,
-    case_file: str | None,
-    kn: float | None,
-    settings: tuple[str, ...],
-    out: str,
-    max_snap_mm: float | None,
-    compliant: bool,
-    start_hinges: str | None,
-    start_mm: float,
-    figures: bool,
-) -> None:
-    """Rigid-block limit analysis, no YADE: du_rigid, hinges, thrust-line figure (kn only with --compliant)."""
-    from yadearch.api.runs import limit as limit_analysis
-    from yadearch.api.runs import limit_files
-    from yadearch.case.imperfect import amplitudes
-    from yadearch.solve.compliant import VALID_MARGIN_FRACTION
-
-    refuse_unread(settings, kn, RIGID, compliant)
-    case = resolve_case(preset_name, case_file, kn, settings)
-    if compliant:  # a march of LPs with the fold margins at every step: seconds to tens of seconds, said first
-        kn_text = f"{case.interface.kn_N_per_mm3:g} N/mm^3"
-        click.echo(f"{case.name}: the compliant march at kn {kn_text} (up to tens of seconds) ...")
-    result = limit_analysis(
-        case,
-        compliant=compliant,
-        max_snap_mm=max_snap_mm,
-        out=out,
-        start_hinges=start_hinges,
-        start_mm=start_mm,
-        figures=figures,
-    )
-    path, _ = limit_files(case, compliant, out, result.start_hinges, result.start_mm)
-    stood = result.du_rigid_mm is None
-    du = (
-        f"no collapse up to {case.loading.max_support_displacement_mm:g} mm"
-        if stood
-        else f"{result.du_rigid_mm:.2f} mm"
-    )
-    if compliant:
-        du += f" with compliant hinges at kn {case.interface.kn_N_per_mm3:g} N/mm^3"
-    new = f" (new: {' '.join(result.new_at_collapse)})" if result.new_at_collapse else ""
-    if result.start_hinges:
-        where = f"{result.start_mm:g} mm along" if result.start_mm else "from rest on"
-        new += f", {where} {' '.join(result.start_hinges)}"
-    mechanism = "hinges at the end:" if stood else f"{result.collapse_mode} on"
-    click.echo(
-        f"{case.name}: du_rigid = {du}, {mechanism} {' '.join(result.collapse_hinges)}"
-        f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}"
-    )
-    if result.du_first_mm is not None and result.snaps:
-        snaps = ", ".join(f"{s.at_mm:.2f} mm ({s.largest_move_mm:.2f} mm)" for s in result.snaps)
-        click.echo(f"du_first = {result.du_first_mm:.2f} mm; snaps survived at (largest block move): {snaps}")
-    if result.closest_edge_joint is not None:
-        click.echo(
-            f"nearest edge: joint {result.closest_edge_joint} beside a hinge held its thrust "
-            f"{result.closest_edge_mm:.3f} mm from its corner (at {result.closest_edge_at_mm:.2f} mm); a joint of "
-            "finite kn shares the hinge within its fold margin (--compliant)"
-        )
-    if result.mirror_collapse_mode is not None:
-        mirrored = "no collapse" if result.mirror_du_rigid_mm is None else f"{result.mirror_du_rigid_mm:.2f} mm"
-        hinges = " ".join(result.mirror_collapse_hinges or ())
-        same = (
-            result.mirror_collapse_hinges == result.collapse_hinges and result.mirror_du_rigid_mm == result.du_rigid_mm
-        )
-        click.echo(
-            "mirrored: the same branch (the keystone's tie decided alike both ways)"
-            if same
-            else f"mirrored (the keystone's other joint): du_rigid = {mirrored} ({result.mirror_collapse_mode}"
-            f"{' on ' + hinges if hinges else ''})"
-        )
-    largest = result.compliant_largest_margin_mm
-    if largest is not None and largest > VALID_MARGIN_FRACTION * case.geometry.thickness_mm:
-        click.echo(
-            f"note: a joint folded {largest:.2f} mm from its edge, more than "
-            f"{VALID_MARGIN_FRACTION:.0%} of the joint: joints this soft deform the whole arch, which "
-            "the compliant march ignores (docs/validation.md)",
-            err=True,
-        )
-    if not amplitudes(case).flat_aligned_faces:
-        click.echo(
-            "note: the rigid analysis takes the voussoirs' dimension errors and worn edges but not the "
-            "faces' angles, bumps or offsets: its du is that of flat, aligned faces",
-            err=True,
-        )
 
 
 @cli.command("report")

@@ -21,6 +21,7 @@ LAZY_COMMANDS = {
     "montecarlo": "yadearch.cli.montecarlo",
     "capacity": "yadearch.cli.capacity",
     "loads": "yadearch.cli.loads",
+    "limit": "yadearch.cli.limit",
     "survey": "yadearch.cli.survey",
     "piers": "yadearch.cli.survey",
     "sensitivity": "yadearch.cli.sensitivity",

@@ -12,15 +12,8 @@ from yadearch.api.live_loads import loads_file
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import load_place
 from yadearch.cli.check import check_option, with_increments_check
-from yadearch.cli.options import (
-    OUT_FOLDER,
-    RIGID,
-    argument_type,
-    case_options,
-    figures_option,
-    refuse_unread,
-    resolve_case,
-)
+from yadearch.cli.options import RIGID, case_options, figures_option, refuse_unread, resolve_case
+from yadearch.cli.param_types import OUT_FOLDER, argument_type
 from yadearch.results.check_text import check_line
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_lp import LoadCapacity

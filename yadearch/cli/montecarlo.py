@@ -10,7 +10,8 @@ import click
 from yadearch import api
 from yadearch.analysis.samples import du_statistics
 from yadearch.cli.campaigns import note, parse_axes
-from yadearch.cli.options import OUT_FOLDER, argument_type, case_options, drawing_pool_options, resolve_case, timeout_s
+from yadearch.cli.options import case_options, drawing_pool_options, resolve_case, timeout_s
+from yadearch.cli.param_types import OUT_FOLDER, argument_type
 from yadearch.errors import YadearchError
 from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE
 

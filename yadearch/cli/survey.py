@@ -9,7 +9,8 @@ import click
 from yadearch import api
 from yadearch.atomic import write_text_atomically
 from yadearch.case.names import FILE, output_path
-from yadearch.cli.options import OUT_FILE, argument_type, case_options, resolve_case
+from yadearch.cli.options import case_options, resolve_case
+from yadearch.cli.param_types import OUT_FILE, argument_type
 
 
 @click.command()

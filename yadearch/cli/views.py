@@ -9,7 +9,7 @@ import click
 
 from yadearch import api
 from yadearch.api.results import RunResult
-from yadearch.cli.options import OUT_FILE, OUT_FOLDER
+from yadearch.cli.param_types import OUT_FILE, OUT_FOLDER
 from yadearch.errors import RunFolderError
 from yadearch.plotting.animation import FORMATS
 from yadearch.plotting.states import run_states

@@ -205,7 +205,8 @@ def arch_from_joints(
 def is_convex_polygon(polygon: np.ndarray) -> bool:
     """Whether a polygon given counter-clockwise turns left at every vertex."""
     edges = _following(polygon) - polygon
-    turns = edges[:, 0] * _following(edges)[:, 1] - edges[:, 1] * _following(edges)[:, 0]
+    after = _following(edges)
+    turns = edges[:, 0] * after[:, 1] - edges[:, 1] * after[:, 0]
     return bool(np.all(turns > 0))
 
 

@@ -6,10 +6,15 @@ from __future__ import annotations
 from typing import Any
 
 from yadearch.case.comparison import as_ran
+from yadearch.case.support import MOVEMENT_PRESETS
 from yadearch.results.summary import TRANSLATION, RunSummary
 
-# a translating support's direction (deg) by name, as `--set movement=NAME` gives it (the right support's)
-DIRECTION_NAMES = {-90.0: "settlement", 0.0: "spreading", 180.0: "closing", -180.0: "closing"}
+# the named movements that translate a support (`--set movement=NAME`), by (support, direction in deg)
+NAMED_TRANSLATIONS = {
+    (preset["loading.moving_support"], preset["loading.support_direction_deg"]): name
+    for name, preset in MOVEMENT_PRESETS.items()
+    if preset["loading.support_motion"] == TRANSLATION
+}
 
 
 def arch_text(case: dict[str, Any]) -> str:
@@ -33,5 +38,6 @@ def movement_text(summary: RunSummary) -> str:
     support = "both supports" if loading.moving_support == "both" else f"{loading.moving_support} support"
     if loading.motion != TRANSLATION:
         return f"{support}: {loading.motion}"
-    named = DIRECTION_NAMES.get(loading.direction_deg) if loading.moving_support == "right" else None
+    direction = 180.0 if loading.direction_deg == -180.0 else loading.direction_deg  # closing either way
+    named = NAMED_TRANSLATIONS.get((loading.moving_support, direction))
     return f"{support} moving at {loading.direction_deg:g}°" + (f" ({named})" if named else "")

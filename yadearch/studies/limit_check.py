@@ -8,7 +8,7 @@ from __future__ import annotations
 import tomllib
 from pathlib import Path
 
-from yadearch.case.config import ArchCase, load_case
+from yadearch.case.config import TEXT_ENCODING, ArchCase, load_case
 from yadearch.case.mechanics import runaway_length
 from yadearch.model import units
 from yadearch.model.hinges import mirror_hinge_labels
@@ -36,7 +36,7 @@ def check(folder: Path, tolerance: float) -> tuple[str, bool]:
     rigid arch two branches, the run is compared with the branch whose mechanism it follows."""
     case = load_case(folder / CASE_FILE)
     summary = read_summary(folder)
-    runaway_mm = _run_runaway_mm(case, summary, tomllib.loads((folder / CASE_FILE).read_text(encoding="utf-8")))
+    runaway_mm = _run_runaway_mm(case, summary, tomllib.loads((folder / CASE_FILE).read_text(encoding=TEXT_ENCODING)))
     mechanism = hinge_list(summary.hinges_last_equilibrium)
     names = ("direct", "mirrored") if has_other_branch(case) else ("-",)
     branches = [_branch(case, name, runaway_mm) for name in names]
