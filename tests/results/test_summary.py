@@ -91,3 +91,23 @@ def test_the_paper_letters_follow_the_moving_support():
     hinges = [(1, "E", 5.0), (28, "E", 9.0), (48, "I", 12.0), (56, "E", 3.0)]
     assert paper_labels(hinges, 56) == {(1, "E"): "D", (56, "E"): "C", (48, "I"): "A", (28, "E"): "B"}
     assert paper_labels(hinges, 56, "left") == {(56, "E"): "D", (1, "E"): "C", (48, "I"): "A", (28, "E"): "B"}
+
+
+def test_the_loading_records_what_its_motion_has():
+    """A translation records its direction; a rotation its pivot and sense (no direction it did
+    not follow); a path its rows; each reads back as it was written."""
+    from yadearch.case.config import preset
+    from yadearch.case.support import movement_overrides
+    from yadearch.results.summary import LoadingInfo, loading_info
+
+    def written(movement: str) -> dict:
+        case = preset("set2").with_overrides(movement_overrides(movement))
+        return loading_info(case.loading, 150.0).to_json()
+
+    assert written("settlement")["direction_deg"] == -90.0
+    tilt = written("abutment_tilt")
+    assert "direction_deg" not in tilt and tilt["rotation_sense"] == "clockwise" and tilt["pivot_mm"][1] < 0
+    path = written("settle_then_spread")
+    assert "direction_deg" not in path and len(path["path_mm_mrad"]) >= 2
+    for data in (tilt, path):
+        assert LoadingInfo(**data).to_json() == data

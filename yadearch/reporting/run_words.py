@@ -7,7 +7,7 @@ from typing import Any
 
 from yadearch.case.comparison import as_ran
 from yadearch.case.support import MOVEMENT_PRESETS
-from yadearch.results.summary import TRANSLATION, RunSummary
+from yadearch.results.summary import TRANSLATION, LoadingInfo, RunSummary
 
 # the named movements that translate a support (`--set movement=NAME`), by (support, direction in deg)
 NAMED_TRANSLATIONS = {
@@ -37,7 +37,17 @@ def movement_text(summary: RunSummary) -> str:
         return "support movement not recorded"
     support = "both supports" if loading.moving_support == "both" else f"{loading.moving_support} support"
     if loading.motion != TRANSLATION:
-        return f"{support}: {loading.motion}"
+        return f"{support}: {loading.motion}" + _motion_detail(loading)
     direction = 180.0 if loading.direction_deg == -180.0 else loading.direction_deg  # closing either way
     named = NAMED_TRANSLATIONS.get((loading.moving_support, direction))
     return f"{support} moving at {loading.direction_deg:g}°" + (f" ({named})" if named else "")
+
+
+def _motion_detail(loading: LoadingInfo) -> str:
+    """A rotation's sense and pivot, a path's rows, as the summary recorded them (older runs: none)."""
+    if loading.pivot_mm is not None:
+        dx, dy = loading.pivot_mm
+        return f" {loading.rotation_sense} about a pivot ({dx:g}, {dy:g}) mm from the springing's intrados"
+    if loading.path_mm_mrad is not None:
+        return f" of {len(loading.path_mm_mrad)} rows (dx mm, dy mm, rotation mrad)"
+    return ""

@@ -22,6 +22,8 @@ DEM, STATIC = "dem", STATIC_ENGINE  # the engines that write run folders
 # one is made again instead of reused (`reuse.outdated`). What each revision changed: CHANGELOG.md.
 STATIC_REVISION = 11
 TRANSLATION = "translation"
+ROTATION = "rotation"
+PATH = "path"
 # written only when set: engine-specific figures and what older runs lack
 OPTIONAL_KEYS = frozenset(
     {
@@ -84,20 +86,21 @@ class HingeRef:
 
 @dataclass(frozen=True)
 class LoadingInfo:
-    """Which support moved, how, and how far the path was allowed to go."""
+    """Which support moved, how (a translation's direction, a rotation's pivot and sense, a path's
+    rows), and how far the path was allowed to go."""
 
     moving_support: str
-    direction_deg: float
     max_displacement_mm: float
+    direction_deg: float | None = None  # a translation's; None for a rotation or a path
     motion: str = TRANSLATION  # runs written before rotations and paths moved it in a straight line
     held_live_load: str = ""  # the live load held on the arch while the support moved ('' without one)
+    pivot_mm: tuple[float, float] | None = None  # a rotation's pivot from the right springing's intrados
+    rotation_sense: str = ""  # a rotation's, seen from the front
+    path_mm_mrad: tuple[tuple[float, ...], ...] | None = None  # a path's rows (dx, dy, rotation)
 
     def to_json(self) -> dict[str, Any]:
-        """summary.json's `loading`: a run without a held live load writes no `held_live_load`."""
-        out = dataclasses.asdict(self)
-        if not self.held_live_load:
-            del out["held_live_load"]
-        return out
+        """summary.json's `loading`: only the fields its motion has (no `held_live_load` without one)."""
+        return {k: v for k, v in dataclasses.asdict(self).items() if v not in ("", None)}
 
 
 @dataclass(kw_only=True)
@@ -270,10 +273,15 @@ def collapse_fields(
 
 def loading_info(loading: LoadingConfig, max_displacement_mm: float, held: str = "") -> LoadingInfo:
     """The case's loading as the summary records it (`held`: the live load held, in words)."""
+    motion = loading.support_motion
+    rotation = motion == ROTATION
     return LoadingInfo(
         moving_support=loading.moving_support,
-        motion=loading.support_motion,
-        direction_deg=loading.support_direction_deg,
+        motion=motion,
+        direction_deg=loading.support_direction_deg if motion == TRANSLATION else None,
         max_displacement_mm=max_displacement_mm,
         held_live_load=held,
+        pivot_mm=(loading.rotation_pivot_dx_mm, loading.rotation_pivot_dy_mm) if rotation else None,
+        rotation_sense=loading.rotation_sense if rotation else "",
+        path_mm_mrad=tuple(tuple(map(float, row)) for row in loading.path_mm_mrad) if motion == PATH else None,
     )
