@@ -99,6 +99,7 @@ def test_the_command_keeps_a_check_the_user_set_and_runs_an_unchecked_folder_aga
     out = str(tmp_path / "r")
     assert main([*common, "--set", "numerics.increments_check=none", "--out", out]) == 0
     assert json.loads((tmp_path / "r" / "summary.json").read_text()).get("increments_check") is None
+    assert "increments check off: a --set says numerics.increments_check = 'none'" in capsys.readouterr().out
     assert main([*common, "--out", out]) == 0  # the same case, now checked: run again, not refused nor reused
     assert json.loads((tmp_path / "r" / "summary.json").read_text())["increments_check"]["resolved"] is True
     assert "increments halved" in capsys.readouterr().out

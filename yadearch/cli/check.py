@@ -36,6 +36,9 @@ def with_increments_check(
         return case
     if check is None:
         if _states_the_check(case_file, settings):
+            if case.numerics.increments_check == NO_INCREMENTS_CHECK:
+                source = "a --set" if _states_the_check(None, settings) else case_file
+                click.echo(f"increments check off: {source} says numerics.increments_check = 'none' (--check to check)")
             return case
         check = True
     elif _states_the_check(None, settings):
