@@ -3,9 +3,13 @@ left off, and one line saying how many finished runs it kept."""
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 from tqdm import tqdm
+
+TERMINAL_INTERVAL_S = 0.1  # tqdm's own: a bar redrawn in place
+LOG_INTERVAL_S = 10.0  # a log or a pipe keeps every redraw: one every 10 s, so the last is not doubled
 
 
 def campaign_bar(out: Path, total: int, todo: int, progress: bool) -> tqdm:
@@ -14,4 +18,13 @@ def campaign_bar(out: Path, total: int, todo: int, progress: bool) -> tqdm:
     kept = total - todo
     if progress and kept:
         tqdm.write(f"{out.name}: {kept} of {total} runs already made in {out} kept ({todo} to make)")
-    return tqdm(total=total, initial=kept, unit="run", disable=not progress, desc=out.name, dynamic_ncols=True)
+    interval = TERMINAL_INTERVAL_S if sys.stderr.isatty() else LOG_INTERVAL_S
+    return tqdm(
+        total=total,
+        initial=kept,
+        unit="run",
+        disable=not progress,
+        desc=out.name,
+        dynamic_ncols=True,
+        mininterval=interval,
+    )

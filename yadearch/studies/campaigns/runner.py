@@ -241,7 +241,7 @@ def _run_planned(
         # 14 000-run campaign at once cost the parent most of a core
         for _ in range(SUBMITTED_PER_SLOT * pool.slots):
             submit_next()
-        bar.set_postfix(counts, running=min(pool.slots, len(futures)))
+        bar.set_postfix(counts, running=min(pool.slots, len(futures)), refresh=False)
         written, interval = time.time(), RESULTS_EVERY_S
         while futures:
             finished, _ = wait(futures, return_when=FIRST_COMPLETED)
