@@ -352,3 +352,13 @@ def test_worn_edges_act_as_a_ring_thinner_by_twice_the_wear_carrying_the_same_we
     assert worn.du_rigid_mm == pytest.approx(thin.du_rigid_mm, rel=5e-4)
     assert worn.collapse_hinges == thin.collapse_hinges
     assert worn.du_rigid_mm < 0.8 * limit_analysis(base).du_rigid_mm
+
+
+def test_the_march_tells_its_progress_every_admitted_position_up_to_du(coarse):
+    """`progress` hears the support's position at each admitted state: rising, up to du, and the
+    answer is the one without it (the mirrored branch, heard after, not solved here)."""
+    case, quiet = coarse
+    heard: list[float] = []
+    told = limit_analysis(case, progress=heard.append, mirror=False)
+    assert told.du_rigid_mm == quiet.du_rigid_mm and len(heard) > 10
+    assert all(b >= a for a, b in zip(heard, heard[1:])) and heard[-1] <= told.du_rigid_mm + 1e-9

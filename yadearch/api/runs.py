@@ -3,6 +3,7 @@ functions; the command line calls the same functions."""
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -173,6 +174,7 @@ def limit(
     start_hinges: str | Sequence[str] | None = None,
     start_mm: float = 0.0,
     figures: bool = True,
+    quiet: bool = False,
 ) -> LimitResult:
     """Rigid-block limit analysis of `case` (no YADE, seconds): du_rigid and the hinge history;
     `compliant`: with the joints folding at the margin the case's kn allows (what a DEM run of that
@@ -180,17 +182,22 @@ def limit(
     is collapse, as in a run; `start_hinges` ("1E 35I 56E"): leave rest on that linkage (another
     engine's) instead of the LP's, placed `start_mm` along it. With `out`, writes OUT/NAME.json and
     (with `figures`) the thrust-line figure (NAME_compliant.* when compliant, NAME_start-1E-35I-56E.*
-    from a named linkage)."""
+    from a named linkage). Unless `quiet`, a march longer than a few seconds prints where it is."""
     from yadearch.plotting.thrust_line import save_thrust_line
     from yadearch.solve.limit import limit_analysis
     from yadearch.solve.limit_result import write_result_json
 
-    check_arguments(compliant=compliant, max_snap_mm=max_snap_mm, start_mm=start_mm, figures=figures)
+    check_arguments(compliant=compliant, max_snap_mm=max_snap_mm, start_mm=start_mm, figures=figures, quiet=quiet)
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
     result = limit_analysis(
-        case, max_snap_mm=max_snap_mm, compliant=compliant, start_hinges=start_hinges, start_mm=start_mm
+        case,
+        max_snap_mm=max_snap_mm,
+        compliant=compliant,
+        start_hinges=start_hinges,
+        start_mm=start_mm,
+        progress=None if quiet else position_lines(case.name, case.loading.max_support_displacement_mm),
     )
     if folder is not None:
         json_path, figure_stem = limit_files(case, compliant, folder, result.start_hinges, result.start_mm)
@@ -214,3 +221,20 @@ def limit_files(
     if start_hinges:
         name += "_start-" + "-".join(start_hinges) + (f"-at{start_mm:g}mm" if start_mm else "")
     return Path(out) / f"{name}.json", Path(out) / name
+
+
+PROGRESS_EVERY_S = 2.0  # a progress line at most this often, the first after as long
+
+
+def position_lines(name: str, limit_mm: float) -> Callable[[float], None]:
+    """A march's progress: its support position (mm), at most every PROGRESS_EVERY_S."""
+    started = last = time.perf_counter()
+
+    def tell(delta_mm: float) -> None:
+        nonlocal last
+        now = time.perf_counter()
+        if now - last >= PROGRESS_EVERY_S:
+            last = now
+            print(f"{name}: at {delta_mm:.2f} mm of at most {limit_mm:g} mm, {now - started:.0f} s", flush=True)
+
+    return tell

@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 import re
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import replace
 from typing import Any
 
@@ -94,6 +94,7 @@ def limit_analysis(
     runaway_thicknesses: float = DEFAULT_RUNAWAY_THICKNESSES,
     start_hinges: Sequence[str] | str | None = None,
     start_mm: float = 0.0,
+    progress: Callable[[float], None] | None = None,
 ) -> LimitResult:
     """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible
     equilibrium, its hinge history and its last admissible state (see the module docstring). A
@@ -109,8 +110,9 @@ def limit_analysis(
     see where the rigid blocks take it), refused in one line unless the support drives it with an
     admissible equilibrium; its hinges name this branch, so the mirror image is not solved. `start_mm`:
     placed that far along it from rest (the path before is not followed), for a linkage that becomes
-    admissible only there."""
-    settings = (step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant, runaway_thicknesses)
+    admissible only there. `progress` is told each admitted support position (mm), the mirrored
+    branch's after the case's."""
+    settings = (step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant, runaway_thicknesses, progress)
     result, arch = _solve(case, *settings, start_hinges, start_mm)
     if start_hinges is not None or not (mirror and has_other_branch(case)):
         return result
@@ -135,6 +137,7 @@ def _solve(
     max_snap_mm: float | None,
     compliant: bool,
     runaway_thicknesses: float,
+    progress: Callable[[float], None] | None,
     start_hinges: Sequence[str] | str | None = None,
     start_mm: float = 0.0,
 ) -> tuple[LimitResult, RigidArch]:
@@ -155,6 +158,8 @@ def _solve(
     runaway = runaway_thicknesses * arch.geometry.thickness
     start_pivots = () if start_hinges is None else named_linkage(start_hinges, arch.n_joints)
     march = March(arch, units.mm(step_mm), units.mm(tolerance_mm), runaway, kn, snap_cap, start_pivots)
+    if progress is not None:
+        march.progress = lambda delta: progress(units.to_mm(delta))
     limit = min(units.mm(max_displacement_mm or case.loading.max_support_displacement_mm), arch.movement.length)
     placed = _check_start(march, start_pivots, units.mm(start_mm), limit) if start_pivots or start_mm else None
     last, read_at, mechanism, chain = march.run(limit, placed)

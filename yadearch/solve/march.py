@@ -19,6 +19,7 @@ that lands is survived however far it moves); where it finds no landing the weig
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 
@@ -67,6 +68,7 @@ class March:
         self.closest: dict[Pivot, tuple[float, float]] = {}
         # re-seatings one limit may chain (each lowers the weights, so they cannot cycle)
         self.max_stages = 2 * arch.n_joints
+        self.progress: Callable[[float], None] = lambda delta: None  # told each admitted position (m)
 
     def statics(self, placement: Placement, friction: bool = True, refine: bool = False) -> Statics:
         self.n_lp += 1
@@ -138,7 +140,7 @@ class March:
                 trial, capped = self.moved(state, mechanism, offset), True
             if trial is not None and self.admissible(trial):
                 state = trial
-                self.note_edges(state)
+                self.admit(state)
                 if not capped and abs(state.delta - corner) < 1e-12 and corner < limit:  # the path turns
                     mechanism = self.switch(state, mechanism, 0.0)
                 elif capped:  # a corner has closed (or the linkage straightened): solve the mechanism again
@@ -155,12 +157,9 @@ class March:
             )
             last = self.moved(state, mechanism, offset) if offset > 0 else state
             if last is None:  # the bisection accepted `offset`, so the linkage reaches it
-                raise RuntimeError(
-                    f"at {units.to_mm(state.delta + offset):.3f} mm the last admissible "
-                    "placement found by bisection can no longer be reached"
-                )
-            if self.first_limit is None:
-                self.first_limit = last.delta
+                at = f"at {units.to_mm(state.delta + offset):.3f} mm"
+                raise RuntimeError(f"{at} the last admissible placement found by bisection can no longer be reached")
+            self.first_limit = last.delta if self.first_limit is None else self.first_limit
             past = self.moved(state, mechanism, offset + self.tolerance)
             read_at = self.moved(last, mechanism, units.mm(COLLAPSE_PROBE_MM)) or past
             if past is None:
@@ -184,8 +183,9 @@ class March:
             self.reseated.append(SnapRecord(units.to_mm(last.delta), jump, before, after))
         return state, None, mechanism, None
 
-    def note_edges(self, state: Placement) -> None:
-        """Keep the nearest approach of a thrust to its corner beside a hinge at `state`, just admitted."""
+    def admit(self, state: Placement) -> None:
+        """At `state`, just admitted: keep each hinge's nearest thrust to its corner; tell `progress`."""
+        self.progress(state.delta)
         for distance, pivot in compliant.edge_distances(
             self.arch, self.accepted.normal, self.accepted.contacts, self.pivots
         ):
