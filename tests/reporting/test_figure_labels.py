@@ -161,3 +161,18 @@ def test_the_sweep_figures_print_no_text_below_the_house_minimum(monkeypatch, tm
     for fig in figures:
         small = [(t.get_text(), t.get_fontsize()) for t in every_text(fig) if t.get_fontsize() < MIN_TEXT_PT]
         assert small == []
+
+
+def test_a_tall_arch_strip_keeps_its_texts_and_key_clear(tmp_path):
+    """A pointed arch taller than its span (the strip's panels were narrower than their corner texts,
+    and the thrust line's key lay over the first one): every text and the legend clear."""
+    from yadearch.api.runs import run
+
+    case_overrides = {"geometry.shape": "pointed", "geometry.thickness_mm": 40.0, "geometry.n_voussoirs": 21}
+    from yadearch.case.config import preset
+
+    case = preset("set2").with_overrides({**case_overrides, "numerics.engine": "static"})
+    result = run(case, out=tmp_path / "tall", figures=False, quiet=True)
+    folder = read_run(result.path)
+    fig = strip_figure(folder, analyse_run(folder))
+    assert fig.legends and label_clashes(fig) == []

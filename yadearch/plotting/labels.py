@@ -1,5 +1,5 @@
 """Labels that stay readable: a label is moved round its point until it clears the drawing's blocks,
-the other labels and the axes' edge, and `label_clashes` lists what still overlaps (the figure tests
+the other labels, the legends and the axes' edge, and `label_clashes` lists what still overlaps (the figure tests
 assert none does). Both work on the figure as drawn, in display coordinates."""
 
 from __future__ import annotations
@@ -9,6 +9,7 @@ from matplotlib.axes import Axes
 from matplotlib.backend_bases import RendererBase
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.legend import Legend
 from matplotlib.patches import Polygon
 from matplotlib.path import Path
 from matplotlib.text import Annotation, Text
@@ -56,14 +57,20 @@ def place_corner(ax: Axes, text: Text) -> None:
 
 
 def label_clashes(fig: Figure) -> list[str]:
-    """Every text of the figure's axes that overlaps a block, another text or its axes' edge."""
+    """Every text of the figure's axes that overlaps a block, another text or its axes' edge, and
+    every legend that covers a block or a text."""
     renderer = _renderer(fig)
     fig.canvas.draw()
-    return [
+    texts = [
         f"{text.get_text()!r} in axes {k}"
         for k, ax in enumerate(fig.axes)
         for text in ax.texts
         if text.get_text().strip() and _clashes(ax, text, renderer)
+    ]
+    return texts + [
+        f"the legend {[t.get_text() for t in legend.get_texts()]}"
+        for legend in _legends(fig)
+        if _covers(fig, legend.get_window_extent(renderer), renderer)
     ]
 
 
@@ -98,14 +105,34 @@ def _clashes(ax: Axes, text: Text, renderer: RendererBase) -> bool:
     others = (t for t in ax.texts if t is not text and t.get_text().strip() and t.get_visible())
     if any(box.overlaps(t.get_window_extent(renderer)) for t in others):
         return True
+    if any(box.overlaps(legend.get_window_extent(renderer)) for legend in _legends(ax.figure)):
+        return True
     return any(path.intersects_bbox(box, filled=True) for path in _block_paths(ax))
+
+
+def _legends(fig: Figure) -> list[Legend]:
+    """The figure's legends and its axes'."""
+    return [*fig.legends, *(ax.get_legend() for ax in fig.axes if ax.get_legend() is not None)]
+
+
+def _covers(fig: Figure, box: Bbox, renderer: RendererBase) -> bool:
+    """Whether `box` overlaps a text or a block of any of the figure's axes."""
+    for ax in fig.axes:
+        others = (t for t in ax.texts if t.get_text().strip() and t.get_visible())
+        if any(box.overlaps(t.get_window_extent(renderer)) for t in others):
+            return True
+        if any(path.intersects_bbox(box, filled=True) for path in _block_paths(ax)):
+            return True
+    return False
 
 
 def _block_paths(ax: Axes) -> list[Path]:
     """The outlines of the axes' filled blocks in display coordinates: filled polygon patches and the
     blocks' collection (`plotting.blocks`)."""
     paths = [
-        p.get_transform().transform_path(p.get_path()) for p in ax.patches if isinstance(p, Polygon) and p.get_fill()
+        p.get_transform().transform_path(p.get_path())
+        for p in ax.patches
+        if isinstance(p, Polygon) and p.get_fill() and p.get_path().get_extents().width > 0.0  # not a legend's proxy
     ]
     for collection in ax.collections:
         if collection.get_gid() == BLOCKS_GID:

@@ -31,6 +31,8 @@ UNLABELLED_COLOUR = "0.3"  # a hinge that is not one of the collapse mechanism's
 MARGIN = 0.1  # of the arch's span, above the drawing
 SIDE_MARGIN = 0.15  # of the arch's span, either side: room for the labels of hinges at the springings
 LABEL_OFFSET_PT = 5  # a hinge label's distance from its pivot, away from the ring
+TEXT_SHARE = 0.35  # of a drawing's height, at least, below the arch: the corner texts' room
+MIN_DRAWING_ASPECT = 1.7  # width over height of a drawing: a tall arch's frame widened (room for the texts)
 STRIP_FRACTIONS = (0.0, 1 / 3, 2 / 3, 1.0)  # of du: the strip's four states
 STRIP_CM = (17.0, 9.0)  # two columns wide
 THRUST_LABEL = "line of thrust"  # the joints' resultants, in the strip's key
@@ -113,13 +115,17 @@ def state_view(run: RunFolder, geometry: ArchGeometry, analysis: RunAnalysis, in
 
 
 def drawing_limits(geometry: ArchGeometry) -> tuple[tuple[float, float], tuple[float, float]]:
-    """Axis limits (mm) that hold the arch and its supports with a margin: one frame for every state."""
+    """Axis limits (mm) that hold the arch and its supports with a margin: one frame for every state,
+    TEXT_SHARE of it below the arch and at least MIN_DRAWING_ASPECT wide for its height (a tall arch's
+    corner texts need the room)."""
     xy = np.vstack([front_face(b) for b in geometry.blocks]) * MM_PER_M
     span = float(np.ptp(xy[:, 0]))
-    return (
-        (xy[:, 0].min() - SIDE_MARGIN * span, xy[:, 0].max() + SIDE_MARGIN * span),
-        (xy[:, 1].min() - 3 * MARGIN * span, xy[:, 1].max() + MARGIN * span),
-    )
+    high = xy[:, 1].max() + MARGIN * span
+    below = max(3 * MARGIN * span, TEXT_SHARE / (1.0 - TEXT_SHARE) * (high - xy[:, 1].min()))
+    low = xy[:, 1].min() - below
+    half_width = max((0.5 + SIDE_MARGIN) * span, 0.5 * MIN_DRAWING_ASPECT * (high - low))
+    middle = 0.5 * (xy[:, 0].min() + xy[:, 0].max())
+    return (middle - half_width, middle + half_width), (low, high)
 
 
 def draw_state(ax: Axes, view: StateView, geometry: ArchGeometry, limits: tuple, corner: bool = True) -> None:
@@ -184,8 +190,8 @@ def strip_figure(run: RunFolder, analysis: RunAnalysis) -> Figure:
         ax.set_xlabel("")
     for ax in axes[1::2]:
         ax.set_ylabel("")
-    if axes[0].get_legend_handles_labels()[0]:  # the key of the red line, beside the first state's free side
-        axes[0].legend(loc="lower right", frameon=False, fontsize=MIN_TEXT_PT)
+    if axes[0].get_legend_handles_labels()[0]:  # the key of the red line, between the two x labels
+        fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", frameon=False, fontsize=MIN_TEXT_PT)
     place_texts(fig)
     return fig
 

@@ -35,6 +35,9 @@ from yadearch.plotting.house import (
 from yadearch.solve.limit_result import LimitResult
 
 M_TO_MM = 1e3
+TITLE_CM = 0.4  # the title's row above the axes
+LEGEND_ROW_CM = 0.45  # the legend's row below the x label
+LEGEND_BELOW_AXES = -0.26  # the legend's top, in axes heights below the axes (under the x label)
 
 
 def placed_outlines(result: LimitResult, geometry: ArchGeometry) -> list[np.ndarray]:
@@ -71,7 +74,8 @@ def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchC
         ylim = (all_xy[:, 1].min() - 0.03 * width, all_xy[:, 1].max() + 0.10 * width)
         if ax is None:
             axes_width = COLUMN_CM - AXIS_MARGINS_CM[0]
-            fig = new_figure(height_cm=axes_width * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1] + 0.4)
+            height = axes_width * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1] + TITLE_CM + LEGEND_ROW_CM
+            fig = new_figure(height_cm=height)
             ax = fig.add_subplot()
         marks = _draw(ax, result, undeformed, outlines)
         ax.set_aspect("equal")
@@ -106,7 +110,7 @@ def _draw(
         for k, (label, point) in enumerate(points.items())
     ]
     block_legend_entries(ax, "at the limit")
-    ax.legend(loc="lower center", ncols=1, handlelength=1.5)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, LEGEND_BELOW_AXES), ncols=3, handlelength=1.5, frameon=False)
     return marks
 
 
