@@ -144,6 +144,15 @@ def probes() -> list[list[str]]:
         ["run", "--preset", "set2", "--engine", "static", "--no-check", "--set", "numerics.increments_check=halved"],
         ["sweep", "--table", "IN/short_row.csv", "--engine", "static", "--out", "OUT/t"],
         ["loads", "--preset", "set2", "--kn", "100", "--set", "live_load=vertical", "--out", "OUT/l"],  # rigid blocks
+        # the third user trial: loads' options and parameters that do not go together (were read silently)
+        ["loads", "--preset", "set2", "--set", "live_load=vertical", "--positions", "3", "--after-mm", "20"],
+        ["loads", "--preset", "set2", "--set", "live_load=vertical", "--residual", "2", "--after-mm", "10"],
+        ["loads", "--preset", "set2", "--set", "live_load=vertical", "--no-descending"],
+        ["loads", "--preset", "set2", "--set", "live_load=vertical", "--set", "load_voussoir=10", "--positions", "3"],
+        ["loads", "--preset", "set2", "--set", "live_load=horizontal_acceleration", "--positions", "3"],
+        ["loads", "--preset", "set2", "--set", "live_load=vertical", "--set", "held_load_N=4"],
+        ["loads", "--preset", "set2", "--set", "live_load=horizontal_acceleration", "--set", "load_width_mm=100"],
+        ["loads", "--preset", "set2", "--set", "live_load=vertical", "--set", "load_shape=rising"],
         # views of a run: no run folder, an unknown format, no --vtk, a run from before states.npz
         ["animate", "OUT/not-a-run"],
         ["animate", f"{REPO}/reports/set1", "--format", "avi"],

@@ -362,3 +362,13 @@ def test_the_march_tells_its_progress_every_admitted_position_up_to_du(coarse):
     told = limit_analysis(case, progress=heard.append, mirror=False)
     assert told.du_rigid_mm == quiet.du_rigid_mm and len(heard) > 10
     assert all(b >= a for a, b in zip(heard, heard[1:])) and heard[-1] <= told.du_rigid_mm + 1e-9
+
+
+def test_a_held_load_larger_than_the_capacity_is_named_not_called_a_thin_arch():
+    """20 N held at the quarter span of set 2 (rigid capacity 9.92 N): the error names the held load
+    and the capacity (it said the arch admits no equilibrium at rest, too thin)."""
+    from yadearch.errors import CaseError
+
+    case = arch_case(live_load="vertical", held_load_N=20.0)
+    with pytest.raises(CaseError, match=r"loads.held_load_N = 20: rigid blocks do not carry it .*9.919 N"):
+        limit_analysis(case)

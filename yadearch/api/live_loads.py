@@ -15,7 +15,8 @@ from yadearch.api.arguments import check_arguments
 from yadearch.api.runs import as_case
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import arch_geometry, require_live_load
+from yadearch.case.held import refuse_fixed_place, refuse_held, require_live_load
+from yadearch.case.mechanics import arch_geometry
 from yadearch.case.names import check_name, output_path
 from yadearch.errors import CaseError
 from yadearch.launch.load_process import run_load_process
@@ -47,6 +48,7 @@ def loads(
     check_arguments(after_mm=after_mm, figures=figures)
     case = as_case(case)
     check_name(case.name, "case.name")
+    refuse_held(case)
     folder = output_path(out, "out") if out is not None else None
     result = residual_capacity(case, after_mm) if after_mm > 0.0 else load_analysis(case)
     if folder is not None:
@@ -82,6 +84,7 @@ def load_path(
         raise CaseError(f"engine must be one of {', '.join(LOAD_PATH_ENGINES)}, got {engine!r}")
     case = as_case(case)
     check_name(case.name, "case.name")
+    refuse_held(case)
     folder = output_path(out, "out") if out is not None else None
     if engine == "dem":
         if folder is None:
@@ -164,6 +167,8 @@ def load_influence(
     check_arguments(jobs=jobs, figures=figures)
     case = as_case(case)
     check_name(case.name, "case.name")
+    refuse_held(case)
+    refuse_fixed_place(case)
     folder = output_path(out, "out") if out is not None else None
     where = tuple(k / (positions + 1) for k in range(1, positions + 1))
     if engine == "dem":
@@ -196,6 +201,7 @@ def residual_curve(
     case = as_case(case)
     check_name(case.name, "case.name")
     require_live_load(case)
+    refuse_held(case)
     folder = output_path(out, "out") if out is not None else None
     table = residual_capacities(case, [k / points for k in range(points)])
     if folder is not None:

@@ -21,7 +21,7 @@ from yadearch.model.backfill import Backfill, fill_surface
 from yadearch.model.dispersal import NONE as NOT_DISPERSED
 from yadearch.model.dispersal import Dispersal
 from yadearch.model.geometry import ArchGeometry
-from yadearch.model.loads import ACCELERATION, NONE, UNITS, VERTICAL, LiveLoad
+from yadearch.model.loads import VERTICAL, LiveLoad
 
 
 @dataclass(frozen=True)
@@ -124,43 +124,15 @@ def runaway_length(case: ArchCase) -> float:
     return case.numerics.runaway_thickness_ratio * units.mm(case.geometry.thickness_mm)
 
 
+VERTICAL_ONLY = {  # the vertical load's parameters, each with its value when unused
+    "further_loads": [],
+    "load_inclination_deg": 0.0,
+    "load_width_mm": 0.0,
+    "load_voussoir": 0,
+    "load_shape": "uniform",
+}
+UNIFORM = VERTICAL_ONLY["load_shape"]
 MAX_LOAD_RATIO = 100.0  # a further load at most this x the first (whose magnitude is the capacity)
-HELD_SETTINGS = {VERTICAL: "held_load_N", ACCELERATION: "held_acceleration_g"}  # each live load's held value
-
-
-def held_multiplier(case: ArchCase) -> float:
-    """The live load a run holds while its support moves, in its multiplier's unit (N for a vertical
-    load, g for an acceleration; 0: none); CaseError for a held value of another kind of live load."""
-    loads = case.loads
-    for kind, name in HELD_SETTINGS.items():
-        if getattr(loads, name) > 0.0 and loads.live_load != kind:
-            raise CaseError(
-                f"loads.{name} = {getattr(loads, name):g} holds a {kind.replace('_', ' ')} load, but "
-                f"loads.live_load is {loads.live_load!r}; set live_load = {kind!r} or {name} = 0"
-            )
-    return float(getattr(loads, HELD_SETTINGS[loads.live_load])) if loads.live_load in HELD_SETTINGS else 0.0
-
-
-def unheld(case: ArchCase) -> ArchCase:
-    """`case` without the live load a run holds: the load paths grow the load from nothing, and the
-    self-weight's diagnosis and the residual capacity's movement are made without it."""
-    return case.with_overrides({name: 0.0 for name in HELD_SETTINGS.values()})
-
-
-def held_load_text(case: ArchCase) -> str:
-    """The live load a run holds during its movement, in words for summary.json ('' without one)."""
-    held = held_multiplier(case)
-    if held == 0.0:
-        return ""
-    loads = case.loads
-    where = f" {load_place(case)}" if loads.live_load == VERTICAL else ""
-    return f"{held:g} {UNITS[loads.live_load]} {loads.live_load.replace('_', ' ')}{where}"
-
-
-def require_live_load(case: ArchCase) -> None:
-    """CaseError for a case without a live load where one must grow."""
-    if case.loads.live_load == NONE:
-        raise CaseError("loads.live_load is 'none': say which load grows ('vertical' or 'horizontal_acceleration')")
 
 
 def load_place(case: ArchCase) -> str:
@@ -201,9 +173,18 @@ def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:
     """The case's live load in SI (model.loads): its centre's position from the left springing
     (`load_position`) and the loads that go with it; CaseError for what the load cannot take."""
     loads = case.loads
-    if loads.live_load != VERTICAL and (loads.further_loads or loads.load_inclination_deg):
-        name = "further_loads" if loads.further_loads else "load_inclination_deg"
-        raise CaseError(f"loads.{name} is read with loads.live_load = 'vertical' only, got {loads.live_load!r}")
+    if loads.live_load != VERTICAL:
+        for name, unset in VERTICAL_ONLY.items():
+            if getattr(loads, name) != unset:
+                raise CaseError(
+                    f"loads.{name} = {getattr(loads, name)!r} is read with loads.live_load = 'vertical' only, got "
+                    f"{loads.live_load!r}; set it back to {unset!r}"
+                )
+    if loads.load_shape != UNIFORM and loads.load_width_mm == 0.0:
+        raise CaseError(
+            f"loads.load_shape = {loads.load_shape!r} distributes a spread load, but loads.load_width_mm is 0; "
+            "give the width (mm) or set load_shape = 'uniform'"
+        )
     return LiveLoad(
         loads.live_load,
         dispersal=load_dispersal(case, geometry),

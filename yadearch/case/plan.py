@@ -10,15 +10,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from yadearch.case.config import ArchCase
+from yadearch.case.held import held_multiplier, require_live_load
 from yadearch.case.imperfect import amplitudes, arch_imperfections, check_contact_model
-from yadearch.case.mechanics import (
-    arch_geometry,
-    contact_stiffness,
-    critical_timestep,
-    held_multiplier,
-    live_load,
-    require_live_load,
-)
+from yadearch.case.mechanics import arch_geometry, contact_stiffness, critical_timestep, live_load
 from yadearch.case.numerics_section import (
     JOINT_CONTACTS,
     LEAST_BRACKET,

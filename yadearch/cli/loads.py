@@ -6,6 +6,8 @@ from __future__ import annotations
 import math
 
 import click
+import pandas as pd
+from click.core import ParameterSource
 
 from yadearch import api
 from yadearch.api.live_loads import loads_file
@@ -23,6 +25,7 @@ from yadearch.solve.stages import Outcome
 STATIC, DEM = "static", "dem"
 LOAD_ENGINES = (RIGID, STATIC, DEM)
 ENGINE_NAMES = {STATIC: "static engine", DEM: "DEM"}
+DEFAULT = ParameterSource.DEFAULT
 TIED_LOADS = 1e-3  # influence-line capacities within this fraction of the least are named beside it
 
 
@@ -106,18 +109,15 @@ def loads(
     its mechanism ([loads] of the case, or --set live_load=...), by rigid-block limit analysis, on the
     static engine's path, or on the DEM's (YADE); --after-mm first moves the support."""
     refuse_unread(settings, kn, load_engine, can_comply=False)
+    _refuse_pairs(load_engine, after_mm, positions, residual)
     case = resolve_case(preset_name, case_file, kn, settings)
     if residual is not None:
         _residual(case, residual, out, figures)
         return
     if positions is not None:
         table = api.load_influence(case, positions, out=out, engine=load_engine, figures=figures)
-        least = table["collapse_load_N"].min()
-        weakest = table[table["collapse_load_N"] <= least * (1.0 + TIED_LOADS)]  # a symmetric arch: mirror positions
-        where = [f"{p:.3g}" for p in weakest["position_over_span"]]
         click.echo(
-            f"{case.name}: influence line at {positions} positions: least {least:.4g} N at {' and '.join(where)} of "
-            f"the span ({weakest['hinges'].iloc[0]} at {where[0]}) -> {out}/{case.name}_influence.csv"
+            f"{case.name}: influence line at {positions} positions: {_least(table)} -> {out}/{case.name}_influence.csv"
         )
         if case.loads.live_load == "none":
             return
@@ -132,6 +132,30 @@ def loads(
     if after_mm and math.isfinite(result.multiplier):  # the settled rigid arch's open hinges are pins
         outcome += " (the load that first moves the settled arch; --engine static follows it further)"
     click.echo(f"{case.name}: {what}: {outcome} -> {loads_file(case, out)}")
+
+
+def _least(table: pd.DataFrame) -> str:
+    """The influence line's least capacity and where (tied mirror positions named together), in words."""
+    least = table["collapse_load_N"].min()
+    if not math.isfinite(least):
+        return "no collapse at any position (the load carried however large, or no answer)"
+    weakest = table[table["collapse_load_N"] <= least * (1.0 + TIED_LOADS)]  # a symmetric arch: mirror positions
+    where = [f"{p:.3g}" for p in weakest["position_over_span"]]
+    return f"least {least:.4g} N at {' and '.join(where)} of the span ({weakest['hinges'].iloc[0]} at {where[0]})"
+
+
+def _refuse_pairs(engine: str, after_mm: float, positions: int | None, residual: int | None) -> None:
+    """UsageError in one line for options that do not go together (or that the engine does not read)."""
+    given = click.get_current_context().get_parameter_source
+    if residual is not None and (after_mm or positions is not None):
+        other = "--after-mm" if after_mm else "--positions"
+        raise click.UsageError(f"--residual makes its own settlements, at rest and after; drop {other}")
+    if positions is not None and after_mm:
+        raise click.UsageError("--positions: the influence line is of the arch at rest; drop --after-mm")
+    flags = {"descending": "--descending/--no-descending", "descend_to": "--descend-to"}
+    unread = [flag for name, flag in flags.items() if given(name) != DEFAULT]
+    if engine == RIGID and unread:
+        raise click.UsageError(f"{unread[0]} follows an engine's path past its peak; rigid blocks have none (--engine)")
 
 
 def _residual(case: ArchCase, points: int, out: str, figures: bool) -> None:

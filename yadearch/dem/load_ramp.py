@@ -13,7 +13,8 @@ import numpy as np
 import pandas as pd
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import HELD_SETTINGS, held_multiplier, live_load
+from yadearch.case.held import HELD_SETTINGS, held_multiplier
+from yadearch.case.mechanics import live_load
 from yadearch.dem.load_descent import DemDescent, dem_descent
 from yadearch.dem.loaded_arch import LoadedArch
 from yadearch.dem.loading import EquilibriumPath

@@ -15,8 +15,8 @@ import time
 from pathlib import Path
 
 from yadearch.case.config import ArchCase, NumericsConfig, load_case
+from yadearch.case.held import held_load_text
 from yadearch.case.materials import material_text
-from yadearch.case.mechanics import held_load_text
 from yadearch.case.numerics_section import STATIC_PATH_STATES
 from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import time
 
-from yadearch.case.mechanics import held_multiplier
+from yadearch.case.held import held_multiplier
 from yadearch.dem.load_ramp import hold_the_live_load
 from yadearch.dem.loading import EquilibriumPath
 from yadearch.dem.runner import Runner

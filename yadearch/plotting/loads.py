@@ -88,7 +88,8 @@ def _draw_residual(ax, residual: pd.DataFrame, ylabel: str, title: str | None = 
 def plot_influence(
     influence: pd.DataFrame, arch_weight_N: float, stem: Path, engine: str = "rigid"
 ) -> tuple[Path, Path]:
-    """STEM.pdf and .png: a concentrated load's capacity against its position by `engine` (one column wide)."""
+    """STEM.pdf and .png: the case's vertical load's capacity against its position by `engine` (one column
+    wide); positions where nothing collapses are left out."""
     fig = new_figure(height_cm=INFLUENCE_HEIGHT_CM, width_cm=COLUMN_CM)
     _draw_influence(fig.add_subplot(), influence, arch_weight_N, engine)
     return save_figure(fig, stem)
@@ -102,8 +103,11 @@ def _draw_influence(ax, influence: pd.DataFrame, arch_weight_N: float, engine: s
         ax.plot(
             influence["position_over_span"], influence["rigid_load_N"], "--", lw=0.8, color="0.4", label="rigid blocks"
         )
-        ax.legend(loc="upper center", frameon=False)
-    ax.set_xlabel("point load's position / span (from the left springing)")
+    if not np.isfinite(influence["collapse_load_N"]).any():  # a load spread over the span, say: nothing to draw
+        ax.text(0.5, 0.5, "no collapse at any position", transform=ax.transAxes, ha="center", va="center")
+        ax.set_xlim(0.0, 1.0)
+    ax.legend(loc="best", frameon=False)  # the engine named, clear of the lines
+    ax.set_xlabel("load's position (its centre) / span, from the left springing")
     ax.set_ylabel("collapse load (N)")
     ax.set_ylim(bottom=0.0)
     twin = ax.secondary_yaxis("right", functions=(lambda n: n / arch_weight_N, lambda r: r * arch_weight_N))

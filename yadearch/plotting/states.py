@@ -170,11 +170,14 @@ def place_texts(fig: Figure) -> None:
 
 
 def strip_indices(states: RunStates, du_mm: float | None) -> list[int]:
-    """The strip's states: self-weight, a third and two thirds of du (the nearest path states), and
-    the last state (the collapse, or the end of a path that did not collapse)."""
-    last = int(states.path()[-1])
+    """The strip's states: the start (self-weight, or a live load held on it before the support moves),
+    a third and two thirds of du (the nearest path states), and the last state (the collapse, or the end
+    of a path that did not collapse)."""
+    path = states.path()
+    last = int(path[-1])
     end = du_mm if du_mm is not None else float(states.delta_mm[last])
-    return [0, states.nearest(STRIP_FRACTIONS[1] * end), states.nearest(STRIP_FRACTIONS[2] * end), last]
+    start = 0 if states.load is not None else int(path[states.delta_mm[path] <= states.delta_mm[path[0]]][-1])
+    return [start, states.nearest(STRIP_FRACTIONS[1] * end), states.nearest(STRIP_FRACTIONS[2] * end), last]
 
 
 @house_style

@@ -36,11 +36,12 @@ def movement_text(summary: RunSummary) -> str:
     if loading is None:
         return "support movement not recorded"
     support = "both supports" if loading.moving_support == "both" else f"{loading.moving_support} support"
+    held = f", {loading.held_live_load} held on the arch" if loading.held_live_load else ""
     if loading.motion != TRANSLATION:
-        return f"{support}: {loading.motion}" + _motion_detail(loading)
+        return f"{support}: {loading.motion}" + _motion_detail(loading) + held
     direction = 180.0 if loading.direction_deg == -180.0 else loading.direction_deg  # closing either way
     named = NAMED_TRANSLATIONS.get((loading.moving_support, direction))
-    return f"{support} moving at {loading.direction_deg:g}°" + (f" ({named})" if named else "")
+    return f"{support} moving at {loading.direction_deg:g}°" + (f" ({named})" if named else "") + held
 
 
 def _motion_detail(loading: LoadingInfo) -> str:

@@ -24,8 +24,8 @@ from typing import Any
 import numpy as np
 
 from yadearch.case.config import ArchCase
+from yadearch.case.held import HELD_SETTINGS, held_multiplier, unheld
 from yadearch.case.imperfect import amplitudes
-from yadearch.case.mechanics import held_multiplier, unheld
 from yadearch.case.shape import MEASURED
 from yadearch.errors import ArgumentTypeError, CaseError, YadearchError
 from yadearch.model import units
@@ -65,6 +65,21 @@ def stands(case: ArchCase) -> bool:
     """Whether the undeformed arch admits an equilibrium (thrust line inside, friction enough)."""
     arch = rigid_arch(unheld(case))  # under its own weight (and the fill's), as a run's self-weight
     return solve_statics(arch, at_rest(arch)).feasible
+
+
+def _refuse_uncarried_held_load(case: ArchCase, arch: RigidArch) -> None:
+    """CaseError in one line for a held live load larger than the rigid arch's capacity (it stood
+    without it): the march would say the arch admits no equilibrium at rest."""
+    held = held_multiplier(case)
+    if held == 0.0 or solve_statics(arch, at_rest(arch)).feasible or not stands(case):
+        return
+    from yadearch.solve.load_lp import load_analysis  # a capacity's LP, for this message only
+
+    capacity = load_analysis(unheld(case))
+    raise CaseError(
+        f"loads.{HELD_SETTINGS[case.loads.live_load]} = {held:g}: rigid blocks do not carry it (they collapse at "
+        f"{capacity.multiplier:.4g} {capacity.unit} on {capacity.hinge_labels}: `yadearch loads`); hold less"
+    )
 
 
 def why_not_standing(case: ArchCase) -> str:
@@ -151,6 +166,7 @@ def _solve(
             "support movement does not take the fill's passive resistance (the load capacity, the static "
             "engine and the DEM do); set it to 0 for the rigid march"
         )
+    _refuse_uncarried_held_load(case, arch)
     snap_cap = math.inf if max_snap_mm is None else max_snap_mm
     kn = units.stiffness_per_volume(case.interface.kn_N_per_mm3) if compliant else None
     if not runaway_thicknesses > 0.0:

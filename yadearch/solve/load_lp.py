@@ -15,7 +15,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import live_load, require_live_load, unheld
+from yadearch.case.held import require_live_load, unheld
+from yadearch.case.mechanics import live_load
 from yadearch.model.loads import UNITS, LoadPoints, generalised, live_load_points
 from yadearch.solve.limit_lp import (
     LP_METHOD,

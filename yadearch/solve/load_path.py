@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import HELD_SETTINGS, held_multiplier
+from yadearch.case.held import HELD_SETTINGS, held_multiplier
 from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK
 from yadearch.errors import CaseError, RunFailedError
 from yadearch.model import units

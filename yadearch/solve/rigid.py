@@ -13,8 +13,9 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from yadearch.case.config import ArchCase
+from yadearch.case.held import held_multiplier
 from yadearch.case.imperfect import arch_imperfections
-from yadearch.case.mechanics import arch_geometry, backfill, held_multiplier, live_load
+from yadearch.case.mechanics import arch_geometry, backfill, live_load
 from yadearch.case.support import case_movement
 from yadearch.errors import YadearchError
 from yadearch.model import units

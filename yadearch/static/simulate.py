@@ -11,8 +11,9 @@ from pathlib import Path
 from typing import Any
 
 from yadearch.case.config import ArchCase, load_case
+from yadearch.case.held import held_load_text, held_multiplier
 from yadearch.case.materials import material_text
-from yadearch.case.mechanics import held_load_text, held_multiplier, runaway_length, standing_parameters
+from yadearch.case.mechanics import runaway_length, standing_parameters
 from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK
 from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
@@ -81,6 +82,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         from yadearch.solve.load_path import hold_the_live_load  # a held load's solver, for such runs only
 
         records.held = hold_the_live_load(loading, case)
+        records.add(loading.accepted[0])  # the loaded arch before its support moves: the path's first state
         unit = UNITS[case.loads.live_load]
         log(f"[{case.name}] the live load held at {records.held:g} {unit} (iterations {loading.iterations})")
 

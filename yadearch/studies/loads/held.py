@@ -13,7 +13,7 @@ from typing import Any
 import pandas as pd
 
 from yadearch.case.config import ArchCase
-from yadearch.case.mechanics import held_multiplier
+from yadearch.case.held import held_multiplier
 from yadearch.errors import YadearchError
 from yadearch.launch.process import run_case_process
 from yadearch.model import units
