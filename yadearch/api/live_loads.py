@@ -52,7 +52,7 @@ def loads(
     folder = output_path(out, "out") if out is not None else None
     result = residual_capacity(case, after_mm) if after_mm > 0.0 else load_analysis(case)
     if folder is not None:
-        data = {**load_json(result, case), "after_mm": after_mm}
+        data = load_json(result, case, after_mm)
         write_text_atomically(loads_file(case, folder), json.dumps(data, indent=1) + "\n")
         if figures and math.isfinite(result.multiplier) and after_mm == 0.0:
             plot_load_collapse(case, arch_geometry(case), result, folder / f"{case.name}_loads")
@@ -126,17 +126,22 @@ def loads_file(case: ArchCase, out: str | Path) -> Path:
     return Path(out) / f"{case.name}_loads.json"
 
 
-def load_json(result: LoadCapacity, case: ArchCase) -> dict[str, Any]:
-    """The result as summary.json-like fields, with the case that gave it."""
+def load_json(result: LoadCapacity, case: ArchCase, after_mm: float = 0.0) -> dict[str, Any]:
+    """The result as summary.json-like fields, with the case that gave it; after a support movement the
+    multiplier is the load that first moves the settled rigid arch (its open hinges act as pins), not a
+    collapse: `first_motion_multiplier`."""
     finite = math.isfinite(result.multiplier)
+    moved = "first motion" if after_mm > 0.0 else "collapse"
     return {
         "name": case.name,
+        "engine": "rigid",
         "live_load": case.loads.live_load,
-        "collapse_multiplier": result.multiplier if finite else None,
+        f"{moved.replace(' ', '_')}_multiplier": result.multiplier if finite else None,
         "unit": result.unit,
-        "outcome": "collapse" if finite else ("cannot stand" if math.isnan(result.multiplier) else "no collapse"),
+        "after_mm": after_mm,
+        "outcome": moved if finite else ("cannot stand" if math.isnan(result.multiplier) else "no collapse"),
         "arch_weight_N": result.arch_weight_N,
-        "hinges_at_collapse": [p.label for p in result.pivots],
+        f"hinges_at_{moved.replace(' ', '_')}": [p.label for p in result.pivots],
         "case": case.to_dict(),
     }
 

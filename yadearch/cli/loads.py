@@ -130,7 +130,8 @@ def loads(
     result = api.loads(case, out=out, after_mm=after_mm, figures=figures)
     outcome = _rigid_outcome(result)
     if after_mm and math.isfinite(result.multiplier):  # the settled rigid arch's open hinges are pins
-        outcome += " (the load that first moves the settled arch; --engine static follows it further)"
+        outcome = outcome.replace("collapse at", "rigid blocks first move at", 1)
+        outcome += " (the settled arch's open hinges act as pins: no figure; --engine static follows it to collapse)"
     click.echo(f"{case.name}: {what}: {outcome} -> {loads_file(case, out)}")
 
 
@@ -184,9 +185,10 @@ def _on_path(
         outcome = f"unresolved: no equilibrium nor runaway found past {path.reach:.4g} {unit} (no capacity)"
     else:
         outcome = f"no collapse up to {path.reach:.4g} {unit}"
-    rigid = (
-        f"{path.rigid:.4g} {unit} on {path.rigid_hinges}" if math.isfinite(path.rigid) else f"none ({path.rigid_note})"
-    )
+    if math.isfinite(path.rigid):
+        rigid = f"{path.rigid:.4g} {unit} on {path.rigid_hinges}"
+    else:
+        rigid = f"none ({path.rigid_note})" if path.rigid_note else "no collapse however large"
     states = f" and its states {out}/{case.name}_load_path/ (yadearch animate, export)"
     click.echo(
         f"{case.name}: {what}: {ENGINE_NAMES[engine]}: {outcome}; rigid blocks: {rigid} "
