@@ -57,12 +57,14 @@ def fill_from_preset(material: dict[str, Any], given: Collection[str]) -> dict[s
     return {**material, **{key: value for key, value in values.items() if key not in given}}
 
 
-def material_text(material: dict[str, Any]) -> str:
-    """Where a case's density and friction come from, for a run's log: its named material or its own."""
+def material_text(material: dict[str, Any], defaults: bool = False) -> str:
+    """Where a case's density and friction come from, for a run's log: its named material, the defaults
+    (`defaults`: another arch left at the paper's 1:10 model's values) or its own."""
     name = material.get(PRESET_FIELD, "")
     values = f"density {material['density_g_per_cm3']:g} g/cm3, friction {material['friction_deg']:g} deg"
     if not name:
-        return f"material: the case's own ({values})"
+        source = "the defaults" if defaults else "the case's own"
+        return f"material: {source} ({values})"
     preset = MATERIALS[name]
     changed = [key for key, value in preset.values().items() if material[key] != value]
     return f"material: {name} ({values}; {preset.source}" + (f"; given: {', '.join(changed)})" if changed else ")")

@@ -16,6 +16,7 @@ from yadearch.case.mechanics import load_place
 from yadearch.cli.check import check_option, with_increments_check
 from yadearch.cli.options import RIGID, case_options, figures_option, refuse_unread, resolve_case
 from yadearch.cli.param_types import OUT_FOLDER, argument_type
+from yadearch.errors import RunFailedError
 from yadearch.results.check_text import check_line
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_lp import LoadCapacity
@@ -132,6 +133,8 @@ def loads(
     if after_mm and math.isfinite(result.multiplier):  # the settled rigid arch's open hinges are pins
         outcome = outcome.replace("collapse at", "rigid blocks first move at", 1)
         outcome += " (the settled arch's open hinges act as pins: no figure; --engine static follows it to collapse)"
+    if math.isnan(result.multiplier):  # as a run of an arch that cannot stand: an error, its answer written
+        raise RunFailedError(f"{case.name}: {what}: {outcome} -> {loads_file(case, out)}")
     click.echo(f"{case.name}: {what}: {outcome} -> {loads_file(case, out)}")
 
 

@@ -51,8 +51,9 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
         f"support speed={case.support_speed_mm_per_s:.4g} mm/s, damping={case.numerics.damping}, "
         f"contacts={case.numerics.contact_model}"
     )
-    log(f"[{case.name}] {material_text(dataclasses.asdict(case.material))}")
     taken = paper_model_values(case)
+    defaults = any(key.startswith("material.") for key in taken or {})
+    log(f"[{case.name}] {material_text(dataclasses.asdict(case.material), defaults)}")
     if taken:
         log(f"[{case.name}] warning: {model_values_text(taken)}")
     origin = provenance(str(yade.config.version))  # now: the code that runs was imported at start

@@ -72,8 +72,9 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         f"[{case.name}] static engine: kn={case.interface.kn_N_per_mm3} N/mm3, ks={case.ks_N_per_mm3} N/mm3, "
         f"{arch.n_blocks} blocks; not used by this engine: {', '.join(unused)}"
     )
-    log(f"[{case.name}] {material_text(dataclasses.asdict(case.material))}")
     taken = paper_model_values(case)
+    defaults = any(key.startswith("material.") for key in taken or {})
+    log(f"[{case.name}] {material_text(dataclasses.asdict(case.material), defaults)}")
     if taken:
         log(f"[{case.name}] warning: {model_values_text(taken)}")
     solver_start = time.time()
