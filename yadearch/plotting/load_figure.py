@@ -17,14 +17,24 @@ from yadearch.model.dispersal import NONE as NOT_DISPERSED
 from yadearch.model.geometry import ArchGeometry, front_face
 from yadearch.model.loads import VERTICAL, extrados_height, extrados_segments
 from yadearch.plotting.blocks import draw_blocks
-from yadearch.plotting.house import COLUMN_CM, THRUST_COLOUR, house_style, mechanism_colour, new_figure, save_figure
+from yadearch.plotting.house import (
+    AXIS_MARGINS_CM,
+    CM,
+    COLUMN_CM,
+    THRUST_COLOUR,
+    house_style,
+    mechanism_colour,
+    new_figure,
+    save_figure,
+)
 from yadearch.plotting.labels import layout, place_label
 from yadearch.solve.load_lp import LoadCapacity
 
 MM = 1e3
 LABEL_PT, OFFSET_PT = 7, 5
-HEIGHT_CM = 6.5
-LEGEND_PAD_PT = 30  # the title above the legend's two rows
+HEIGHT_CM = 6.5  # before the figure is fitted to its drawing
+LEGEND_ROW_PT = 15  # a legend row between the title and the axes
+TITLE_CM = 0.5
 GAP = 0.01  # of the span: between the load's arrow and the extrados
 
 
@@ -60,12 +70,19 @@ def plot_load_collapse(case: ArchCase, geometry: ArchGeometry, result: LoadCapac
     ax.margins(0.12)
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
-    ax.set_title(
-        f"{case.name}: collapse at {result.multiplier:.4g} {result.unit}", fontsize=LABEL_PT + 1, pad=LEGEND_PAD_PT
-    )
     ax.plot([], [], "o", ms=4, mfc="0.5", mec="white", mew=0.5, label="hinge (I, E: at the intrados, extrados)")
+    rows = len(ax.get_legend_handles_labels()[1])
+    ax.set_title(
+        f"{case.name}, rigid blocks: collapse at {result.multiplier:.4g} {result.unit}",
+        fontsize=LABEL_PT + 1,
+        pad=LEGEND_ROW_PT * rows,
+    )
     # rows between the title and the axes: inside, any corner may hold the load's arrow or a hinge
     ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), frameon=False, fontsize=LABEL_PT, handlelength=1.2)
+    ax.autoscale_view()  # the figure as tall as the drawing at the column's width: no empty band
+    xlim, ylim = ax.get_xlim(), ax.get_ylim()
+    drawing_cm = (COLUMN_CM - AXIS_MARGINS_CM[0]) * (ylim[1] - ylim[0]) / (xlim[1] - xlim[0])
+    fig.set_size_inches(COLUMN_CM * CM, (drawing_cm + AXIS_MARGINS_CM[1] + TITLE_CM) * CM + rows * LEGEND_ROW_PT / 72)
     layout(fig)
     for label, away in labels:
         place_label(ax, label, away, OFFSET_PT)
@@ -94,17 +111,21 @@ def _draw_load(ax, case: ArchCase, geometry: ArchGeometry) -> None:
     if fill.present:  # the fill's level surface, where a dispersed load stands
         top = fill_surface(geometry, fill) * MM
         ends = [geometry.joints[0].extrados[0] * MM, geometry.joints[-1].extrados[0] * MM]
-        ax.plot(ends, [top, top], "--", color="0.45", lw=0.8)
+        ax.plot(
+            ends, [top, top], "--", color="0.45", lw=0.8, label=f"fill surface ({case.loads.fill_depth_mm:g} mm deep)"
+        )
     if case.loads.live_load == VERTICAL:
         centre = (geometry.joints[0].intrados[0] + load_position(case, geometry)) * MM
         half = case.loads.load_width_mm / 2.0
         lean = math.radians(case.loads.load_inclination_deg)
         dispersed = case.loads.load_dispersal != NOT_DISPERSED
-        tip = top if dispersed else top + 0.1 * length  # on the fill it disperses through, or above the crown
+        segments = extrados_segments(geometry)
         for offset_mm, ratio in [(0.0, 1.0), *case.loads.further_loads]:
             x, arrow = centre + offset_mm, 0.9 * length * min(ratio, 1.0)  # a lighter load, a shorter arrow
+            # on the fill it disperses through, or where it acts: on the extrados under its centre
+            tip = top if dispersed else (extrados_height(segments, x / MM) * MM + GAP * span)
             if half > 0.0:
-                ax.plot([x - half, x + half], [top + 0.02 * span] * 2, "-", color="k", lw=1.5)
+                ax.plot([x - half, x + half], [tip + 0.02 * span] * 2, "-", color="k", lw=1.5)
             dx, dy = arrow * math.sin(lean), -arrow * math.cos(lean)
             ax.add_patch(FancyArrow(x - dx, tip - dy, dx, dy, width=0.004 * span, color="k", length_includes_head=True))
             if dispersed:
