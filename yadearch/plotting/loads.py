@@ -10,12 +10,13 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from yadearch.plotting.house import COLUMN_CM, ENGINE_NAMES, house_style, new_figure, save_figure
+from yadearch.plotting.house import CM, COLUMN_CM, ENGINE_NAMES, house_style, new_figure, save_figure
 from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath
 
 HEIGHT_CM = 15.0
 INFLUENCE_HEIGHT_CM = 6.0
 RESIDUAL_HEIGHT_CM = 8.0  # its legend sits above the axes
+LEGEND_ROW_CM = 0.45  # a legend row above the axes
 ENGINES_ROW_CM = 0.45  # the engines figure's height per case
 DESCENT_ROW_CM = 6.0  # the descent figure's height per row of panels
 PASSIVE_HEIGHT_CM = 8.0
@@ -130,8 +131,9 @@ def plot_load_path(path: LoadPath, stem: Path) -> tuple[Path, Path]:
         ax.plot(
             down["load_displacement_mm"], down["multiplier"], ".-", ms=2.0, lw=0.8, color="C3", label="past the peak"
         )
-    if math.isfinite(rigid):
-        ax.axhline(rigid, color="0.4", lw=0.8, ls="--", label=f"rigid blocks ({rigid:.3g} {unit})")
+    if math.isfinite(rigid):  # after a movement: the load that first moves the settled rigid arch
+        what = "rigid blocks' first motion" if path.after_mm > 0.0 else "rigid blocks"
+        ax.axhline(rigid, color="0.4", lw=0.8, ls="--", label=f"{what} ({rigid:.3g} {unit})")
     if math.isfinite(capacity):
         ax.axhline(capacity, color="C0", lw=0.6, ls=":", label=f"collapse ({capacity:.3g} {unit})")
     if math.isfinite(first_loss) and first_loss < capacity:
@@ -140,7 +142,10 @@ def plot_load_path(path: LoadPath, stem: Path) -> tuple[Path, Path]:
     ax.set_ylabel(load_label(unit))
     ax.set_xlim(left=0.0)
     ax.set_ylim(bottom=0.0)
-    ax.legend(loc="best", frameon=False)  # where the curve and its lines leave room: the peak moves about
+    # above the axes: the horizontal lines span the axes, so no corner inside stays clear
+    rows = len(ax.get_legend_handles_labels()[1])
+    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.0), frameon=False, borderaxespad=0.2)
+    fig.set_size_inches(fig.get_size_inches()[0], (INFLUENCE_HEIGHT_CM + rows * LEGEND_ROW_CM) * CM)
     return save_figure(fig, stem)
 
 
