@@ -10,7 +10,7 @@ mechanisms (`solve.mechanisms`, the independent check)."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -41,8 +41,8 @@ class LoadCapacity:
 
     multiplier: float
     pivots: tuple[Pivot, ...]
-    normal: np.ndarray
-    shear: np.ndarray
+    normal: np.ndarray = field(repr=False)
+    shear: np.ndarray = field(repr=False)
     unit: str = "N"  # of the multiplier: the live load is 1 N, or 1 g
     arch_weight_N: float = math.nan  # the voussoirs' weight, to read a load against
 

@@ -181,6 +181,9 @@ class Pivot:
         """The paper's label: interface number (1-based) and pivot side, e.g. '9I'."""
         return f"{self.joint + 1}{SIDES[self.side]}"
 
+    def __repr__(self) -> str:  # the label, not the 0-based index a reader would misread
+        return f"Pivot({self.label!r})"
+
 
 def close_linkage(arch: RigidArch, placement: Placement, pivots: tuple[Pivot, ...], delta: float) -> Placement | None:
     """The placement at support displacement `delta` reached along a three-hinge mechanism, exactly.
