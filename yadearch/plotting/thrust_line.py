@@ -16,6 +16,7 @@ from matplotlib.figure import Figure
 from matplotlib.text import Annotation
 
 from yadearch.case.config import ArchCase
+from yadearch.case.held import held_load_text
 from yadearch.case.mechanics import arch_geometry
 from yadearch.model.geometry import ArchGeometry, front_face
 from yadearch.model.hinges import paper_labels
@@ -65,6 +66,7 @@ def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchC
     geometry = geometry_or_case
     if not isinstance(geometry, ArchGeometry):
         geometry = arch_geometry(geometry)
+    held = held_load_text(geometry_or_case) if isinstance(geometry_or_case, ArchCase) else ""  # a run's load
     with matplotlib.rc_context(STYLE):
         outlines = placed_outlines(result, geometry)
         undeformed = [front_face(b) * M_TO_MM for b in geometry.blocks]
@@ -74,7 +76,8 @@ def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchC
         ylim = (all_xy[:, 1].min() - 0.03 * width, all_xy[:, 1].max() + 0.10 * width)
         if ax is None:
             axes_width = COLUMN_CM - AXIS_MARGINS_CM[0]
-            height = axes_width * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1] + TITLE_CM + LEGEND_ROW_CM
+            titles = TITLE_CM * (2 if held else 1)  # a held load's line under the title
+            height = axes_width * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1] + titles + LEGEND_ROW_CM
             fig = new_figure(height_cm=height)
             ax = fig.add_subplot()
         marks = _draw(ax, result, undeformed, outlines)
@@ -85,7 +88,7 @@ def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchC
         ax.set_ylabel("y (mm)")
         du = result.du_rigid_mm
         state = rf"$d_{{u,\mathrm{{rigid}}}}$ = {du:.2f} mm" if du is not None else "no collapse"
-        ax.set_title(f"{result.name}: rigid blocks, {state}")
+        ax.set_title(f"{result.name}: rigid blocks, {state}" + (f"\n{held} held" if held else ""))
         place_hinge_labels(ax, marks)
     return ax.figure
 
