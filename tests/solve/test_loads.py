@@ -155,3 +155,20 @@ def test_the_influence_lines_least_is_said_at_every_position_that_ties_with_it(t
     assert main([*args, "--out", str(tmp_path)]) == 0
     said = [line for line in capsys.readouterr().out.splitlines() if "influence line" in line]
     assert len(said) == 1 and "least 9.919 N at 0.25 and 0.75 of the span (6I 18E 40I 56E at 0.25)" in said[0]
+
+
+def test_rigid_loads_name_the_case_settings_they_do_not_read(tmp_path):
+    """A case file's joint stiffness, numerics and fill spring play no part in the rigid capacity:
+    NAME_loads.json lists them (a command line's --set of them is refused), the answer unchanged."""
+    import json
+
+    from yadearch.api.live_loads import loads
+
+    base = preset("set2").with_overrides(
+        {"live_load": "vertical", "fill_depth_mm": 20.0, "fill_passive_coefficient": 3}
+    )
+    quiet = loads(base)
+    told = loads(base.with_overrides({"kn_N_per_mm3": 100.0, "fill_passive_displacement_mm": 3.0}), out=tmp_path)
+    written = json.loads((tmp_path / "set2_loads.json").read_text())
+    assert written["unused"] == ["interface.kn_N_per_mm3", "loads.fill_passive_displacement_mm"]
+    assert told.multiplier == quiet.multiplier

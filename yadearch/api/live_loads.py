@@ -18,6 +18,7 @@ from yadearch.case.config import ArchCase
 from yadearch.case.held import refuse_fixed_place, refuse_held, require_live_load
 from yadearch.case.mechanics import arch_geometry
 from yadearch.case.names import check_name, output_path
+from yadearch.case.plan import unread_by_rigid_blocks
 from yadearch.errors import CaseError
 from yadearch.launch.load_process import run_load_process
 from yadearch.model.load_control import DisplacementControl
@@ -140,6 +141,7 @@ def load_json(result: LoadCapacity, case: ArchCase, after_mm: float = 0.0) -> di
         "unit": result.unit,
         "after_mm": after_mm,
         "outcome": moved if finite else ("cannot stand" if math.isnan(result.multiplier) else "no collapse"),
+        "unused": unread_by_rigid_blocks(case),  # the case's settings rigid blocks do not read
         "arch_weight_N": result.arch_weight_N,
         f"hinges_at_{moved.replace(' ', '_')}": [p.label for p in result.pivots],
         "case": case.to_dict(),

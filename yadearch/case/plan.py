@@ -1,6 +1,7 @@
 """What a run will do, checked before YADE starts: a valid arch, a finite time step, a gravity ramp
 that fits the self-weight stage, and a worst-case number of steps within the step budget. Each
-refusal is one line naming the parameter, its value and what would be accepted."""
+refusal is one line naming the parameter, its value and what would be accepted. And what the rigid-block
+analysis does not read of a case (`unread_by_rigid_blocks`)."""
 
 from __future__ import annotations
 
@@ -196,3 +197,21 @@ def static_only_refusal(numerics: NumericsConfig) -> str | None:
         f"numerics.increments_check = {numerics.increments_check!r} is read by the static engine only (the DEM "
         f"does not solve its path twice); use {NO_INCREMENTS_CHECK!r} or the static engine"
     )
+
+
+RIGID_UNREAD_SECTIONS = ("numerics", "interface")  # rigid blocks: no numerics, rigid joints
+RIGID_UNREAD_LOADS = ("fill_passive_displacement_mm",)  # the fill's spring: rigid blocks mobilise it at once
+
+
+def unread_by_rigid_blocks(case: ArchCase) -> list[str]:
+    """The parameters `case` sets off their defaults that the rigid-block analysis does not read
+    (numerics, joint stiffness, the fill's spring), by qualified name: a case file's are listed, not
+    refused (a command line's --set is refused)."""
+    ran, default = case.to_dict(), ArchCase().to_dict()
+    unread = [
+        f"{section}.{key}"
+        for section in RIGID_UNREAD_SECTIONS
+        for key, value in ran[section].items()
+        if value != default[section][key]
+    ]
+    return unread + [f"loads.{key}" for key in RIGID_UNREAD_LOADS if ran["loads"][key] != default["loads"][key]]

@@ -13,6 +13,7 @@ from yadearch import api
 from yadearch.api.live_loads import loads_file
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import load_place
+from yadearch.case.plan import unread_by_rigid_blocks
 from yadearch.cli.check import check_option, with_increments_check
 from yadearch.cli.options import RIGID, case_options, figures_option, refuse_unread, resolve_case
 from yadearch.cli.param_types import OUT_FOLDER, argument_type
@@ -129,6 +130,9 @@ def loads(
         _on_path(case, out, after_mm, what, load_engine, descend_to if descending else None, figures)
         return
     result = api.loads(case, out=out, after_mm=after_mm, figures=figures)
+    unused = unread_by_rigid_blocks(case)
+    if unused:  # a case file's (a --set of them is refused): said, not read
+        click.echo(f"{case.name}: not used by rigid blocks: {', '.join(unused)}")
     outcome = _rigid_outcome(result)
     if after_mm and math.isfinite(result.multiplier):  # the settled rigid arch's open hinges are pins
         outcome = outcome.replace("collapse at", "rigid blocks first move at", 1)
