@@ -97,6 +97,10 @@ def test_a_dem_run_holding_a_load_settles_where_the_static_engine_does(tmp_path)
     assert dem.summary.loading.held_live_load == "4 N vertical at 0.3 of the span"
     assert math.isclose(dem.summary.du_mm, static.summary.du_mm, rel_tol=ENGINES_TOLERANCE)
     assert dem.summary.hinge_labels == static.summary.hinge_labels
+    for result in (static, dem):  # the loaded arch before its support moves is the path's first state
+        start = result.series[result.series["stage"] == "equilibrium"].iloc[0]
+        carried = start["left_Ry_N"] + start["right_Ry_N"] - result.summary.selfweight["arch_weight_N"]
+        assert start["delta_mm"] == 0.0 and math.isclose(carried, 4.0, rel_tol=1e-2)
 
 
 def test_the_command_runs_the_dem_load_path_in_a_child_and_writes_its_files(tmp_path, capsys):

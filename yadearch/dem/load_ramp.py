@@ -154,6 +154,8 @@ def hold_the_live_load(runner: Runner) -> float:
     runner.position = moving_position
     runner.recorder.turning = arch.driver.turning  # the stability test and series.csv count its stiffness
     runner.live_multiplier = held_multiplier(case)  # ... and the static check its load
+    runner.stage = Stage.EQUILIBRIUM  # the loaded arch before its support moves: the path's first state
+    runner.recorder.record_equilibrium()
     return runner.live_multiplier
 
 
