@@ -132,6 +132,9 @@ def test_a_load_path_folder_is_one_while_its_answer_is_there(tmp_path):
     assert run.summary.name == CASE.name and run.summary.collapsed and run.summary.du_mm is None
     assert [h.label for h in run.summary.hinges_at_collapse] == list(written.hinges)
     assert run.load_path is not None and run.load_path["collapse_multiplier"] == written.capacity
+    from yadearch.api.results import RunResult
+
+    assert RunResult(run).capacity == (written.capacity, written.unit)  # the API's answer of a load path
     (folder / LOAD_PATH_FILE).write_text("{")
     with pytest.raises(RunFolderError, match="cannot be read as a load path's answer") as error:
         read_load_path_folder(folder)

@@ -3,6 +3,7 @@ paper's letters, its tables and figures."""
 
 from __future__ import annotations
 
+import math
 import os
 from dataclasses import dataclass
 from functools import cached_property
@@ -60,6 +61,16 @@ class RunResult:
     @property
     def collapsed(self) -> bool:
         return self.summary.collapsed
+
+    @property
+    def capacity(self) -> tuple[float, str] | None:
+        """A live load's path folder: its collapse multiplier and unit ((7.39, 'N'); NaN: no collapse);
+        None for a support-movement run, whose answer is `du_mm`."""
+        answer = self.folder.load_path
+        if answer is None:
+            return None
+        value = answer["collapse_multiplier"]
+        return (math.nan if value is None else float(value), str(answer["unit"]))
 
     @property
     def series(self) -> pd.DataFrame:
