@@ -98,13 +98,18 @@ def test_a_label_on_a_block_is_found():
     assert any("on a block" in clash for clash in label_clashes(fig))
 
 
-def test_the_load_collapse_figure_labels_its_hinges_clear_of_the_blocks(tmp_path, monkeypatch):
+FILL = {"fill_depth_mm": 50.0, "fill_density_g_per_cm3": 2.0, "load_dispersal": "boussinesq"}
+
+
+@pytest.mark.parametrize("fill", [{}, FILL], ids=["on the extrados", "through a fill"])
+def test_the_load_collapse_figure_labels_its_hinges_clear_of_the_blocks(tmp_path, monkeypatch, fill):
+    """... and of the load's dispersal through a fill (its line crossed 19E)."""
     import yadearch as ya
     from yadearch.plotting import load_figure
 
     drawn = []
     monkeypatch.setattr(load_figure, "save_figure", lambda fig, stem: drawn.append(fig) or (stem, stem))
-    result = ya.loads(ya.preset("set2").replace(live_load="vertical"), out=tmp_path)
+    result = ya.loads(ya.preset("set2").replace(live_load="vertical", **fill), out=tmp_path)
     (fig,) = drawn
     hinge_labels = {t.get_text() for t in fig.axes[0].texts}
     assert {p.label for p in result.pivots} <= hinge_labels

@@ -18,6 +18,7 @@ from matplotlib.transforms import Bbox
 from yadearch.plotting.blocks import BLOCKS_GID
 
 TURNS_DEG = (0.0, 45.0, -45.0, 90.0, -90.0, 135.0, -135.0, 180.0)  # tried in turn from the preferred side
+OBSTACLE_GID = "yadearch-obstacle"  # a line that labels keep clear of, as of the blocks
 PAD_PX = 1.0  # a label this close to something touches it
 FARTHER = 2.5  # where no direction is clear at the label's distance, they are tried this much farther
 CORNERS = (  # axes positions and alignments of a corner text, in the order tried
@@ -138,6 +139,9 @@ def _block_paths(ax: Axes) -> list[Path]:
         if collection.get_gid() == BLOCKS_GID:
             transform = collection.get_transform()
             paths.extend(transform.transform_path(path) for path in collection.get_paths())
+    for line in ax.lines:  # lines a label must not cross (a load's dispersal through the fill)
+        if line.get_gid() == OBSTACLE_GID:
+            paths.append(line.get_transform().transform_path(line.get_path()))
     return paths
 
 

@@ -27,7 +27,7 @@ from yadearch.plotting.house import (
     new_figure,
     save_figure,
 )
-from yadearch.plotting.labels import layout, place_label
+from yadearch.plotting.labels import OBSTACLE_GID, layout, place_label
 from yadearch.solve.load_lp import LoadCapacity
 
 MM = 1e3
@@ -97,7 +97,8 @@ def _draw_dispersal(ax, case: ArchCase, geometry: ArchGeometry, x: float, half: 
     reach = half + depth * math.tan(math.radians(case.loads.load_dispersal_deg))
     for side in (-1.0, 1.0):
         end = x + side * reach
-        ax.plot([x + side * half, end], [surface, extrados_height(segments, end / MM) * MM], "-", color="0.3", lw=0.6)
+        ends = ([x + side * half, end], [surface, extrados_height(segments, end / MM) * MM])
+        ax.plot(*ends, "-", color="0.3", lw=0.6, gid=OBSTACLE_GID)  # a hinge's label keeps clear of it
 
 
 def _draw_load(ax, case: ArchCase, geometry: ArchGeometry) -> None:
