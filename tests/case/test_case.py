@@ -143,3 +143,15 @@ def test_a_wrong_type_is_told_the_range_and_a_whole_bound_is_written_in_full():
         preset("set2").replace(n_voussoirs=True)
     with pytest.raises(CaseError, match=r"seed must be in \[0, 4294967295\], got -1"):
         preset("set2").replace(seed=-1)
+
+
+def test_a_size_the_shape_does_not_read_is_refused_when_changed():
+    """span_mm on the segmental paper arch built the paper's arch unchanged (fourth user trial): a size
+    changed that the shape does not read is one line naming the shape's own; set unchanged, or read by
+    the shape the same overrides give, it passes."""
+    with pytest.raises(CaseError, match=r"geometry.span_mm is not read by shape 'segmental', which is sized by "):
+        preset("set2").with_overrides({"span_mm": 900.0})
+    assert preset("set2").with_overrides({"span_mm": 600.0}).geometry.span_mm == 600.0  # as it was
+    pointed = preset("set2").with_overrides({"shape": "pointed", "span_mm": 900.0})
+    with pytest.raises(CaseError, match="geometry.embrace_deg is not read by shape 'pointed'"):
+        pointed.with_overrides({"embrace_deg": 150.0})

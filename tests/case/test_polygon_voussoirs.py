@@ -14,7 +14,7 @@ from conftest import REPO
 from surveys import curved_extrados, surveyed_blocks
 
 from yadearch.api.measured import measured_case, on_piers
-from yadearch.case.config import preset
+from yadearch.case.config import case_from_dict, preset
 from yadearch.case.mechanics import arch_geometry, backfill, live_load
 from yadearch.errors import CaseError
 from yadearch.model import units
@@ -159,9 +159,14 @@ def test_polygons_that_make_no_arch_are_refused_in_one_line(base, overrides, sai
     assert "\n" not in str(error.value)
 
 
+CORNER = {"extrados_points_mm": [[1, 0.0, 330.0]]}
+
+
 def test_face_corners_on_a_parametric_arch_are_refused(base):
     with pytest.raises(CaseError, match="extrados_points_mm is for shape 'measured' only, got shape 'segmental'"):
-        arch_geometry(base.with_overrides({"geometry.extrados_points_mm": [[1, 0.0, 330.0]]}))
+        arch_geometry(case_from_dict({**base.to_dict(), "geometry": {**base.to_dict()["geometry"], **CORNER}}))
+    with pytest.raises(CaseError, match="extrados_points_mm is not read by shape 'segmental'"):  # set by hand
+        base.with_overrides({f"geometry.{key}": value for key, value in CORNER.items()})
 
 
 def _off_the_chord(a: np.ndarray, b: np.ndarray, out_mm: float) -> np.ndarray:

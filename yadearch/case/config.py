@@ -31,6 +31,7 @@ from yadearch.case.sections import (
     MaterialConfig,
     NumericsConfig,
 )
+from yadearch.case.shape import refuse_unread_sizes
 from yadearch.errors import CaseError
 
 TEXT_ENCODING = "utf-8-sig"  # UTF-8, with or without the byte-order mark some editors (Excel, Notepad) write
@@ -87,18 +88,20 @@ class ArchCase:
     def with_overrides(self, overrides: dict[str, Any]) -> ArchCase:
         """A copy with `{"section.key": value}` (or bare unique keys such as `kn_N_per_mm3`) replaced."""
         data = self.to_dict()
-        given = set()
+        given, changed = set(), set()
         for key, value in overrides.items():
             section, name = _resolve_key(key)
             if section is None:
                 data[name] = value
             else:
+                changed |= {name} if section == "geometry" and data[section][name] != value else set()
                 data[section][name] = value
                 given.add((section, name))
         if (MATERIAL_KEY, PRESET_FIELD) in given:  # a material named here replaces the values not set beside it
             data[MATERIAL_KEY] = fill_from_preset(
                 data[MATERIAL_KEY], {name for section, name in given if section == MATERIAL_KEY}
             )
+        refuse_unread_sizes(data["geometry"]["shape"], changed)  # a size changed that the shape does not read
         return case_from_dict(data)
 
 

@@ -11,6 +11,7 @@ from yadearch.case import reference
 from yadearch.case.comparison import as_ran
 from yadearch.case.config import DEFAULT_NAME, ArchCase, preset
 from yadearch.case.materials import MATERIAL_KEY, MATERIALS, PRESET_FIELD
+from yadearch.case.shape import SIZES
 
 PAPER_SECTIONS = ("geometry", "material", "loading", "imperfections", "loads")  # what makes a run the paper's case
 NOT_PHYSICAL = {"max_support_displacement_mm"}  # a run's stopping point, not part of the arch or its loading
@@ -28,8 +29,11 @@ def paper_mismatch(case: dict[str, Any]) -> str | None:
     perfect joints (the first difference, e.g. "geometry.n_voussoirs 10, paper 55"); None if it is the
     paper's case."""
     ran, paper = as_ran(case), as_ran(preset(next(iter(reference.SETS))).to_dict())
+    unread = {key for sizes in SIZES.values() for key in sizes} - set(SIZES.get(ran["geometry"]["shape"], ()))
     for section in PAPER_SECTIONS:
         for key, value in paper[section].items():
+            if section == "geometry" and key in unread:  # a size this shape does not read: not the arch
+                continue
             if key not in NOT_PHYSICAL and ran[section][key] != value:
                 return f"{section}.{key} {ran[section][key]!r}, paper {value!r}"
     return None

@@ -31,6 +31,13 @@ from yadearch.model.intrados import (
 MEASURED = "measured"  # geometry.shape of a surveyed arch (geometry.joint_points_mm)
 MIN_MEASURED_JOINTS = 3  # two voussoirs at least
 FACE_POINTS = ("intrados_points_mm", "extrados_points_mm")  # a measured voussoir's corners between its joints
+SIZES = {  # the [geometry] sizes each shape reads; thickness, depth, voussoirs and joints: every shape's
+    "segmental": ("internal_radius_mm", "embrace_deg"),
+    "pointed": ("span_mm", "pointed_radius_over_span"),
+    "elliptical": ("span_mm", "rise_mm"),
+    "three_centred": ("span_mm", "rise_mm"),
+    MEASURED: ("joint_points_mm", *FACE_POINTS),
+}
 MIN_JOINT_ANGLE_DEG = 20.0  # a joint nearer the intrados tangent makes a sliver voussoir (joint > 2.9 t)
 
 INTRADOS: dict[str, Callable[[GeometryConfig], Intrados]] = {
@@ -161,3 +168,15 @@ def face_points(g: GeometryConfig) -> dict[int, FacePoints]:
     inner, outer = by_face
     none = np.zeros((0, 2))
     return {v: FacePoints(inner.get(v, none), outer.get(v, none)) for v in sorted(set(inner) | set(outer))}
+
+
+def refuse_unread_sizes(shape: str, given: set[str]) -> None:
+    """CaseError in one line for a size `given` (a [geometry] key changed by hand) that `shape` does not
+    read: `span_mm` on a segmental arch built the paper's arch unchanged, silently."""
+    reads = SIZES.get(shape, ())
+    for name in sorted(given):
+        if any(name in sizes for sizes in SIZES.values()) and name not in reads:
+            raise CaseError(
+                f"geometry.{name} is not read by shape {shape!r}, which is sized by {', '.join(reads)}; "
+                "set geometry.shape too, or drop it"
+            )
