@@ -142,6 +142,8 @@ def probes() -> list[list[str]]:
             "support_direction_deg=-90",
         ],
         ["run", "--preset", "set2", "--engine", "static", "--no-check", "--set", "numerics.increments_check=halved"],
+        ["run", "--preset", "set2", "--engine", "static", "--set", "numerics.engine=dem"],  # the last won unsaid
+        ["run", "--preset", "set2", "--engine", "static", "--set", "span_mm=900"],  # a size the shape does not read
         ["sweep", "--table", "IN/short_row.csv", "--engine", "static", "--out", "OUT/t"],
         ["loads", "--preset", "set2", "--kn", "100", "--set", "live_load=vertical", "--out", "OUT/l"],  # rigid blocks
         # the third user trial: loads' options and parameters that do not go together (were read silently)

@@ -372,3 +372,12 @@ def test_a_held_load_larger_than_the_capacity_is_named_not_called_a_thin_arch():
     case = arch_case(live_load="vertical", held_load_N=20.0)
     with pytest.raises(CaseError, match=r"loads.held_load_N = 20: rigid blocks do not carry it .*9.919 N"):
         limit_analysis(case)
+
+
+def test_the_command_takes_a_named_material(tmp_path, capsys):
+    """`limit --set material=NAME`, as its help says (it was refused as an unknown parameter)."""
+    assert (
+        main(["limit", "--preset", "set2", "--set", "material=limestone", "--no-figures", "--out", str(tmp_path)]) == 0
+    )
+    written = json.loads((tmp_path / "set2.json").read_text())  # the paper's arch of another material keeps its name
+    assert written["case"]["material"]["preset"] == "limestone" and written["du_rigid_mm"] > 0

@@ -57,6 +57,9 @@ def resolve_case(
     context = click.get_current_context(silent=True)
     engine = context.meta.get(ENGINE_META) if context is not None else None
     if engine is not None:
+        set_engine = next((key for key in overrides if key.split(".")[-1] == "engine"), None)
+        if set_engine is not None and overrides[set_engine] != engine:
+            raise click.UsageError(f"--engine {engine} and --set {set_engine}={overrides[set_engine]}; keep one")
         overrides["numerics.engine"] = engine
     resolved = off_the_paper(case.with_overrides(overrides), named="name" in overrides) if overrides else case
     if resolved.numerics.engine == STATIC:
@@ -120,7 +123,7 @@ def refuse_unread(
         )
     for item in settings:
         key = item.split("=", 1)[0].strip()
-        if key == MOVEMENT_KEY:
+        if key in (MOVEMENT_KEY, MATERIAL_KEY):  # a named movement or material: parameters rigid blocks read
             continue
         section = parameter_section(key)
         if section == "numerics" or (section == "interface" and not compliant):
