@@ -16,6 +16,7 @@ from yadearch.api.arguments import check_arguments
 from yadearch.api.runs import as_case
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import arch_geometry
+from yadearch.case.paper import off_the_paper
 from yadearch.case.piers import pier_case
 from yadearch.case.shape import MEASURED, MIN_MEASURED_JOINTS
 from yadearch.case.survey_blocks import ring_from_blocks
@@ -61,7 +62,7 @@ def measured_case(
     }
     if name is not None:
         overrides["name"] = name
-    case = as_case(base).with_overrides(overrides)
+    case = off_the_paper(as_case(base).with_overrides(overrides), named=name is not None)  # not "set2"
     arch_geometry(case)  # refuses, in one line, corners that make no arch
     return case
 
