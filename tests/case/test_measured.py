@@ -61,6 +61,8 @@ def test_bad_surveys_are_refused_in_one_line(tmp_path, capsys):
                                      "y_intrados_mm": "y_extrados_mm", "y_extrados_mm": "y_intrados_mm"})  # fmt: skip
     with pytest.raises(CaseError, match="the extrados above"):
         measured_case(swapped)
+    with pytest.raises(CaseError, match=r"joints are 0.024 mm long on average .* read in mm"):  # given in metres
+        measured_case(joints / 1000.0)
     with pytest.raises(CaseError, match="n_voussoirs must be 15 for 16 measured joints"):
         arch_geometry(measured_case(joints, base=base).with_overrides({"geometry.n_voussoirs": 14}))
     survey_file = tmp_path / "joints.csv"

@@ -28,6 +28,9 @@ SUPPORT_COLUMN = "support"  # 'left' or 'right' on an abutment's rows (any of th
 JSON_SUFFIX = ".json"  # a survey of blocks (their corners, the supports marked) rather than of joints
 
 
+MIN_MEAN_JOINT_MM = 1.0  # a ring's joints shorter on average are a survey in other units
+
+
 def measured_case(
     joints: str | Path | pd.DataFrame | dict[str, Any], base: ArchCase | str = "set2", name: str | None = None
 ) -> ArchCase:
@@ -52,6 +55,11 @@ def measured_case(
             f"joints: a surveyed arch needs {MIN_MEASURED_JOINTS} joints at least (two voussoirs), got {len(rows)}"
         )
     lengths = np.hypot(rows[:, 2] - rows[:, 0], rows[:, 3] - rows[:, 1])
+    if lengths.mean() < MIN_MEAN_JOINT_MM:  # a survey in metres read as millimetres, most likely
+        raise CaseError(
+            f"joints: the survey's joints are {lengths.mean():.3g} mm long on average (at least "
+            f"{MIN_MEAN_JOINT_MM:g} mm accepted); its coordinates are read in mm (metres x 1000)"
+        )
     overrides = {
         "geometry.shape": MEASURED,
         "geometry.joint_points_mm": rows.tolist(),
