@@ -60,8 +60,10 @@ class StaticAcceptance:
             return None
         delta = self.arch.delta()
         self.records.append([units.to_mm(delta), units.to_mm(distance) if math.isfinite(distance) else None])
-        self.arch.log(
-            f"[{self.arch.case.name}] at {self.said(delta)} the static model moves the blocks "
-            f"{units.to_mm(distance):.3f} mm to a stable equilibrium"
+        found = (
+            f"moves the blocks {units.to_mm(distance):.3f} mm to a stable equilibrium"
+            if math.isfinite(distance)
+            else "finds no stable equilibrium near this state"
         )
+        self.arch.log(f"[{self.arch.case.name}] at {self.said(delta)} the static model {found}")
         return distance
