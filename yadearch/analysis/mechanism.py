@@ -158,8 +158,6 @@ def describe_mechanism(
     count = HINGE_COUNT_NAMES.get(len(tracks), str(len(tracks)))
     symmetry = "symmetric" if is_symmetric(tracks, n_interfaces) else "asymmetric"
     last = tracks[-1]
-    text = (
-        f"{symmetry} {count}-hinge mechanism, {sequence(tracks)}, "
-        f"{last.paper_label} at {_place(last.interface, n_interfaces)}"
-    )
+    where = f", {last.paper_label} at {_place(last.interface, n_interfaces)}" if last.paper_label else ""
+    text = f"{symmetry} {count}-hinge mechanism, {sequence(tracks)}{where}"  # the last hinge named by its letter
     return text if collapsed else f"no collapse; {text.replace(' mechanism', ' pattern')}"
