@@ -62,7 +62,7 @@ def test_hinge_frequencies_count_each_label_per_interface_over_finished_samples(
 def test_the_summary_and_the_figures_describe_the_campaign(tmp_path):
     table = _table()
     text = summary_markdown(table, ["edge_radius_mm"])
-    assert "39 of 40 samples done (1 failed)" in text
+    assert "40 samples: 39 collapsed, 0 cannot stand under their own weight (du 0 in the statistics), 1 without" in text
     assert "| 0.5 | 20 |" in text and "| 1 | 19 |" in text
     assert "- A: 11: 74%, 12: 26%" in text
     for paths in (
@@ -89,3 +89,17 @@ def test_the_median_interval_holds_the_true_median_at_its_confidence():
     assert 0.94 <= np.mean(held) <= 0.97
     assert all(math.isnan(v) for v in median_interval(np.arange(5.0)))
     assert median_interval(np.arange(20.0)) == (5.0, 14.0)
+
+
+def test_samples_that_cannot_stand_count_as_du_zero_as_in_the_sensitivity_study():
+    """21 of 40 arches fell under their own weight: the median is theirs too (it was the 19 standing
+    samples' alone, overstating the capacity; fourth user trial), and the summary says how many."""
+    from yadearch.errors import CANNOT_STAND
+
+    table = _table().assign(collapsed=True, reason="")
+    fell = table.index < 21
+    table.loc[fell, ["status", "du_mm", "reason"]] = ["failed", np.nan, f"run failed: {CANNOT_STAND} (...)"]
+    text = summary_markdown(table, [])
+    assert "40 samples: 18 collapsed, 21 cannot stand under their own weight" in text
+    assert "| 39 | 0.00 |" in text  # the median of 21 zeros and 18 collapses (one sample has no du)
+    assert "share of the 18 finished samples" in text

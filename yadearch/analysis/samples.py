@@ -75,6 +75,8 @@ def hinge_frequencies(table: pd.DataFrame) -> pd.DataFrame:
 def collapse_displacement(runs: pd.DataFrame) -> np.ndarray:
     """du (mm) of each run for the indices: 0 for an arch that cannot stand under its own weight (it
     carries no settlement), nan for a run that failed otherwise or stood to the end of its path."""
-    done = (runs["status"] == "done") & (runs["collapsed"] == True)  # noqa: E712  (object column)
-    fell = (runs["status"] == "failed") & runs["reason"].fillna("").str.contains(CANNOT_STAND, regex=False)
+    collapsed = runs["collapsed"] == True if "collapsed" in runs else runs["du_mm"].notna()  # noqa: E712
+    reasons = runs["reason"].fillna("") if "reason" in runs else pd.Series("", index=runs.index)
+    done = (runs["status"] == "done") & collapsed
+    fell = (runs["status"] == "failed") & reasons.str.contains(CANNOT_STAND, regex=False)
     return np.where(done, runs["du_mm"], np.where(fell, 0.0, np.nan)).astype(float)

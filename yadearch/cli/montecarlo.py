@@ -6,14 +6,15 @@ from __future__ import annotations
 from pathlib import Path
 
 import click
+import pandas as pd
 
 from yadearch import api
-from yadearch.analysis.samples import du_statistics
+from yadearch.analysis.samples import collapse_displacement, du_statistics
 from yadearch.cli.campaigns import note, parse_axes
 from yadearch.cli.options import case_options, drawing_pool_options, resolve_case, timeout_s
 from yadearch.cli.param_types import OUT_FOLDER, argument_type
 from yadearch.errors import YadearchError
-from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE
+from yadearch.studies.montecarlo import MONTECARLO_FILE, SUMMARY_FILE, outcomes_text
 
 
 @click.command()
@@ -71,9 +72,10 @@ def montecarlo(
         figures=figures,
         **axes,
     )
-    stats = du_statistics(table.loc[table["status"] == "done", "du_mm"])
+    du = pd.Series(collapse_displacement(table), index=table.index)  # an arch that cannot stand: 0
+    stats = du_statistics(du)
     click.echo(
-        f"{stats['n']} of {len(table)} samples done: median du {stats['median']:.2f} mm "
+        f"{outcomes_text(du)}; median du {stats['median']:.2f} mm "
         f"(95 % interval {stats['median_low']:.2f}-{stats['median_high']:.2f}), "
         f"5-95 % {stats['low']:.2f}-{stats['high']:.2f} mm -> {folder / MONTECARLO_FILE}, "
         f"{folder / SUMMARY_FILE}"

@@ -14,7 +14,13 @@ from typing import Any
 
 import pandas as pd
 
-from yadearch.analysis.samples import BAND, MEDIAN_CONFIDENCE, du_statistics, hinge_frequencies
+from yadearch.analysis.samples import (
+    BAND,
+    MEDIAN_CONFIDENCE,
+    collapse_displacement,
+    du_statistics,
+    hinge_frequencies,
+)
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfections_section import ImperfectionsConfig
@@ -72,15 +78,31 @@ def run_montecarlo(
     sample's imperfection summary) and montecarlo.md; returns the table."""
     out = Path(out)
     results = run_campaign(base, sample_rows(samples, seed, axes), out, pool, timeout_s=timeout_s, progress=progress)
-    return write_montecarlo(results, out, axes)
+    return write_montecarlo(results, out, axes, about_text(base, samples, seed))
 
 
-def write_montecarlo(results: pd.DataFrame, out: Path, axes: dict[str, list[Any]] | None) -> pd.DataFrame:
+def about_text(base: ArchCase, samples: int, seed: int) -> str:
+    """What a campaign samples, in a line: the case, its engine, the defects drawn and the seeds."""
+    drawn = [
+        f"{f.name} {getattr(base.imperfections, f.name):g}" for f in fields(ImperfectionsConfig) if "_sd_" in f.name
+    ]
+    drawn = [d for d in drawn if not d.endswith(" 0")]
+    return (
+        f"Case {base.name!r} ({base.numerics.engine} engine, {base.geometry.shape} arch of {base.geometry.n_voussoirs} "
+        f"voussoirs); standard deviations drawn: {', '.join(drawn) or 'those of the swept levels'}; seeds "
+        f"{seed}-{seed + samples - 1}."
+    )
+
+
+def write_montecarlo(
+    results: pd.DataFrame, out: Path, axes: dict[str, list[Any]] | None, about: str = ""
+) -> pd.DataFrame:
     """montecarlo.csv and montecarlo.md of a campaign from its results table (finished or not: a
-    stopped campaign's results.csv lists its unfinished samples as pending); returns the table."""
+    stopped campaign's results.csv lists its unfinished samples as pending; `about`: what it samples);
+    returns the table."""
     table = with_imperfections(results, out)
     write_csv_atomically(out / MONTECARLO_FILE, table)
-    write_text_atomically(out / SUMMARY_FILE, summary_markdown(table, levels(table, axes)))
+    write_text_atomically(out / SUMMARY_FILE, summary_markdown(table, levels(table, axes), about))
     return table
 
 
@@ -98,14 +120,26 @@ def levels(table: pd.DataFrame, axes: dict[str, list[Any]] | None) -> list[str]:
     return [key.split(".")[-1] for key in axes or {} if key.split(".")[-1] in table.columns]
 
 
-def summary_markdown(table: pd.DataFrame, level_columns: list[str]) -> str:
-    """The campaign as Markdown: du's distribution (per amplitude level) and the hinge positions."""
+def outcomes_text(du: pd.Series) -> str:
+    """How the samples ended, from their du (`collapse_displacement`: 0 cannot stand, NaN no du)."""
+    fell, missing = int((du == 0.0).sum()), int(du.isna().sum())
+    return (
+        f"{len(du)} samples: {len(du) - fell - missing} collapsed, {fell} cannot stand under their own weight "
+        f"(du 0 in the statistics), {missing} without a du (failed, unresolved or standing to the path's end)"
+    )
+
+
+def summary_markdown(table: pd.DataFrame, level_columns: list[str], about: str = "") -> str:
+    """The campaign as Markdown (`about`: what was sampled, a line under the title): du's distribution
+    (per amplitude level; an arch that cannot stand counts as du 0, as in the sensitivity study) and the
+    hinge positions."""
     low, high = (f"{q:.0%}" for q in BAND)
+    du = pd.Series(collapse_displacement(table), index=table.index)  # an arch that cannot stand: 0
     lines = [
         "# Monte Carlo of imperfect arches",
         "",
-        f"{int((table['status'] == 'done').sum())} of {len(table)} samples done"
-        f" ({int((table['status'] == 'failed').sum())} failed).",
+        *([about, ""] if about else []),
+        f"{outcomes_text(du)}.",
         "",
         f"| {' | '.join(level_columns) + ' | ' if level_columns else ''}samples | median du (mm) "
         f"| median's {MEDIAN_CONFIDENCE:.0%} interval (mm) | {low}-{high} band (mm) | mean (mm) |",
@@ -121,13 +155,14 @@ def summary_markdown(table: pd.DataFrame, level_columns: list[str]) -> str:
             tuple(key), index=level_columns, dtype=object
         )  # aligned on the columns (a tuple is deprecated)
         group = table[(table[level_columns] == level).all(axis=1)] if level_columns else table
-        stats = du_statistics(group.loc[group["status"] == "done", "du_mm"])
+        stats = du_statistics(du[group.index])
         prefix = "".join(f"{value:g} | " for value in key)
         lines.append(
             f"| {prefix}{stats['n']} | {stats['median']:.2f} | {stats['median_low']:.2f}-"
             f"{stats['median_high']:.2f} | {stats['low']:.2f}-{stats['high']:.2f} | {stats['mean']:.2f} |"
         )
-    lines += ["", "Hinge positions (interface: share of the samples):", ""]
+    finished = int((table["status"] == "done").sum())
+    lines += ["", f"Hinge positions (interface: share of the {finished} finished samples):", ""]
     frequencies = hinge_frequencies(table)
     for label in PAPER_LABELS:
         rows = frequencies[frequencies["hinge"] == label]

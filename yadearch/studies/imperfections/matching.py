@@ -17,7 +17,7 @@ import numpy as np
 import pandas as pd
 
 from yadearch.analysis.run import analyse_run, load_run
-from yadearch.analysis.samples import du_statistics, hinge_frequencies
+from yadearch.analysis.samples import collapse_displacement, du_statistics, hinge_frequencies
 from yadearch.analysis.tracking import HingeTrack
 
 BOOTSTRAP_RESAMPLES = 2000  # resamples of the seeds for the interval of a paired amplitude
@@ -76,7 +76,7 @@ def level_rows(study: Study, table: pd.DataFrame, sweep: pd.DataFrame) -> list[d
     for level in study.levels:
         group = table[np.isclose(table[study.parameter].astype(float), level)]
         done = group[group["status"] == "done"]
-        stats = du_statistics(done["du_mm"])
+        stats = du_statistics(pd.Series(collapse_displacement(group)))  # an arch that cannot stand: du 0
         rows.append(
             {
                 "study": study.name,
