@@ -167,6 +167,18 @@ def test_a_joint_that_slid_below_its_friction_cap_is_flagged_as_sliding_during_t
     assert slip_during_moves({}) is None
 
 
+def test_a_collapse_at_a_joints_friction_cap_is_said_to_be_limited_by_sliding():
+    """A three-centred arch whose springing reached its friction cap just before du (fourth user trial:
+    static 35.02, DEM 33.93 mm, rigid blocks 'sliding'): a note says so; a run far from its cap, none."""
+    from yadearch.analysis.mechanism import friction_limited
+
+    at_cap = {"max_friction_use": 0.99998, "friction_interface": 1, "friction_delta_mm": 34.98, "max_slip_mm": 0.0}
+    note = friction_limited(_summary(du_mm=35.02, collapsed=True, friction=at_cap))
+    assert note is not None and note.startswith("interface 1 reached 1.000 of its friction at 34.98 mm")
+    assert friction_limited(_summary(du_mm=35.02, collapsed=True, friction={**at_cap, "max_friction_use": 0.6})) is None
+    assert friction_limited(_summary(collapsed=False, friction=at_cap)) is None
+
+
 def _summary(**fields) -> RunSummary:
     """A run summary with only `fields` set, as an older run or a partial record reads."""
     return RunSummary(**{"du_mm": None, "hinges_at_collapse": (), "steps": 0, "wall_s": 0.0, **fields})

@@ -49,6 +49,22 @@ def slip_during_moves(
     )
 
 
+def friction_limited(summary: RunSummary, cap_tolerance: float = CAP_TOLERANCE) -> str | None:
+    """A note when a collapsed run's equilibria brought a joint to its friction cap (summary.json's
+    `friction`): the collapse is then limited by sliding there, not by its hinges alone, and the
+    engines' slip laws (the DEM's shear spring, the static engine's cap) may part by a few %."""
+    use = summary.friction.get("max_friction_use")
+    if not summary.collapsed or use is None or use < 1.0 - cap_tolerance:
+        return None
+    at, slip = summary.friction.get("friction_delta_mm", math.nan), summary.friction.get("max_slip_mm", 0.0)
+    return (
+        f"interface {summary.friction.get('friction_interface')} reached {use:.3f} of its friction at "
+        f"{at:.2f} mm (slip {slip:.2f} mm): "
+        "the collapse is limited by sliding there, not by the hinges alone; the engines' slip laws may "
+        "part by a few % on such an arch, and rigid blocks call it sliding (`yadearch limit`)"
+    )
+
+
 def relaxation_jump(summary: RunSummary, fraction: float = JUMP_FRACTION, near_limit: float = NEAR_LIMIT) -> str | None:
     """A warning when, short of `near_limit` x du, the relaxation of an accepted increment moved a
     block by at least `fraction` of the increment (and JUMP_FLOOR of the runaway distance; summary.json's
@@ -92,11 +108,12 @@ def collapse_by_timeout(summary: RunSummary) -> str | None:
 
 def run_warnings(summary: RunSummary) -> list[str]:
     """The warnings a finished run's summary.json calls for: the paper's model values on another arch,
-    slip during the moves, jumps in the path, a collapse read from a timeout, an answer its increments
-    check moved."""
+    slip during the moves, a collapse limited by friction, jumps in the path, a collapse read from a
+    timeout, an answer its increments check moved."""
     warnings = (
         model_values_text(summary.paper_model_values) if summary.paper_model_values else None,
         slip_during_moves(summary.friction),
+        friction_limited(summary),
         relaxation_jump(summary),
         collapse_by_timeout(summary),
         unresolved_warning(summary.increments_check),
