@@ -65,5 +65,6 @@ def capacity(
     click.echo(
         f"{len(done)} of {len(table)} directions done"
         + (f"; the weakest {weakest.direction_deg:g} deg, du {weakest.du_mm:.2f} mm" if weakest is not None else "")
-        + f" -> {folder / TABLE}, {folder / REPORT}, {folder / FIGURE}.pdf"
+        + f" -> {folder / TABLE}, {folder / REPORT}"
+        + (f", {folder / FIGURE}.pdf" if figures else "")
     )

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import math
 from pathlib import Path
 from typing import Any
 
@@ -54,6 +55,7 @@ def rigid_limits(
             " ".join(result.collapse_hinges),
             result.mirror_du_rigid_mm,
             " ".join(result.mirror_collapse_hinges or ()),
+            result.collapse_mode,
         )
         rows.append({"arch": key, "direction_deg": direction, "solved": True, **vars(limits[direction])})
     if cache is not None and rows:
@@ -63,7 +65,7 @@ def rigid_limits(
     return {d: limits[d] for d in direction_values if d in limits}
 
 
-RIGID_COLUMNS = ("arch", "direction_deg", "solved", "du_mm", "hinges", "other_du_mm", "other_hinges")
+RIGID_COLUMNS = ("arch", "direction_deg", "solved", "du_mm", "hinges", "other_du_mm", "other_hinges", "mode")
 
 
 def rigid_key(case: ArchCase) -> str:
@@ -83,7 +85,8 @@ def _limit(row: Any) -> RigidLimit:
     def text(value: Any) -> str:
         return "" if pd.isna(value) else str(value)
 
-    return RigidLimit(mm(row.du_mm), text(row.hinges), mm(row.other_du_mm), text(row.other_hinges))
+    mode = text(getattr(row, "mode", math.nan))  # a cache from before the mode: not recorded
+    return RigidLimit(mm(row.du_mm), text(row.hinges), mm(row.other_du_mm), text(row.other_hinges), mode)
 
 
 def run_capacity(

@@ -28,6 +28,7 @@ def directions(step_deg: float = DIRECTION_STEP_DEG) -> tuple[float, ...]:
 
 DIRECTIONS_DEG = directions()
 DIRECTION_PARAMETER = "support_direction_deg"
+HINGING = "hinging"  # the rigid collapse mode the map leaves unsaid
 MAP_COLUMNS = (
     "set",
     "direction_deg",
@@ -39,6 +40,7 @@ MAP_COLUMNS = (
     "mechanism",
     "du_rigid_mm",
     "rigid_hinges",
+    "rigid_mode",
     "du_over_rigid",
     "du_rigid_other_mm",
     "rigid_other_hinges",
@@ -58,6 +60,7 @@ class RigidLimit:
     hinges: str
     other_du_mm: float | None = None
     other_hinges: str = ""
+    mode: str = ""  # how it collapses (`LimitResult.collapse_mode`: hinging, sliding, snap); "": not recorded
 
 
 def du_components(du_mm: float, direction_deg: float) -> tuple[float, float]:
@@ -103,10 +106,11 @@ def with_rigid(table: pd.DataFrame, rigid: dict[float, RigidLimit]) -> pd.DataFr
     table = table.assign(
         du_rigid_mm=[math.nan if r.du_mm is None else r.du_mm for r in limits],
         rigid_hinges=[r.hinges for r in limits],
+        rigid_mode=[r.mode for r in limits],
         du_rigid_other_mm=[math.nan if r.other_du_mm is None else r.other_du_mm for r in limits],
         rigid_other_hinges=[r.other_hinges for r in limits],
     )
-    table["du_over_rigid"] = table["du_mm"] / table["du_rigid_mm"]
+    table["du_over_rigid"] = table["du_mm"] / table["du_rigid_mm"].where(table["du_rigid_mm"] > 0.0)  # 0: no ratio
     return table.reindex(columns=list(MAP_COLUMNS))  # a table from before du_first: its column empty
 
 
@@ -143,8 +147,9 @@ def map_markdown(table: pd.DataFrame) -> list[str]:
             r = row.iloc[0]
             cells += [_mm(r.du_first_mm), f"{r.du_mm:.2f}", f"({r.du_x_mm:.1f}, {r.du_y_mm:.1f})", r.hinges or "-"]
         first = rows.iloc[0]
+        mode = first.rigid_mode if isinstance(first.rigid_mode, str) and first.rigid_mode else ""
         cells += [
-            _mm(first.du_rigid_mm),
+            _mm(first.du_rigid_mm) + (f" ({mode})" if mode and mode != HINGING else ""),  # sliding, a snap
             first.rigid_hinges or "-",
             _mm(first.du_rigid_other_mm),
             first.rigid_other_hinges or "-",
