@@ -24,6 +24,7 @@ from yadearch.studies.sensitivity.indices import (
     sobol_indices,
     sobol_rows,
     stable_base_points,
+    tornado_table,
 )
 
 ISHIGAMI = (
@@ -186,3 +187,24 @@ def test_the_figures_are_drawn_again_from_the_tables_a_study_wrote(tmp_path):
         shutil.copy(REPO / "reports" / "sensitivity" / name, tmp_path / name)
     redraw_figures(tmp_path)
     assert all((tmp_path / f"{name}.png").stat().st_size > 1000 for name in ("tornado", "indices", "convergence"))
+
+
+def test_a_tornado_end_where_the_arch_cannot_stand_is_du_zero_and_swings_most():
+    """A ring 50 mm thick stands, 30 mm does not (fourth user trial: its bar was missing and sorted
+    last, though its total index was the largest): du 0 there, its swing the base's du."""
+    from yadearch.errors import CANNOT_STAND
+
+    thickness = Factor("geometry.thickness_mm", "thickness_mm", 30.0, 50.0)
+    friction = Factor("material.friction_deg", "friction_deg", 35.0, 45.0)
+    results = pd.DataFrame(
+        {
+            RUN_COLUMN: ["base", "thickness_mm_low", "thickness_mm_high", "friction_deg_low", "friction_deg_high"],
+            "status": ["done", "failed", "done", "done", "done"],
+            "collapsed": [True, None, True, True, True],
+            "reason": ["", f"run failed: {CANNOT_STAND}", "", "", ""],
+            "du_mm": [40.0, np.nan, 55.0, 38.0, 41.0],
+        }
+    )
+    table = tornado_table(ya.preset("set2"), (thickness, friction), results)
+    assert table["factor"].tolist() == ["thickness_mm", "friction_deg"]
+    assert table.loc[0, "du_low_mm"] == 0.0 and table.loc[0, "swing_mm"] == 55.0

@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from yadearch.analysis.samples import collapse_displacement
 from yadearch.case.bounds import MIN_BASE_POINTS
 from yadearch.case.config import ArchCase
 from yadearch.errors import CampaignError
@@ -141,8 +142,9 @@ def tornado_rows(base: ArchCase, factors: tuple[Factor, ...]) -> list[dict[str, 
 
 
 def tornado_table(base: ArchCase, factors: tuple[Factor, ...], results: pd.DataFrame) -> pd.DataFrame:
-    """du at each end of each factor's range beside the base du, largest swing first."""
-    du = dict(zip(results[RUN_COLUMN], results["du_mm"]))
+    """du at each end of each factor's range beside the base du, largest swing first; an end where the
+    arch cannot stand counts as du 0, as in the indices (it had no bar and sorted last)."""
+    du = dict(zip(results[RUN_COLUMN], collapse_displacement(results)))
     rows = []
     for factor in factors:
         if factor.in_tornado:
