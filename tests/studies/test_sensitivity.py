@@ -173,6 +173,9 @@ def test_static_sensitivity_of_a_small_arch_puts_thickness_before_friction(tmp_p
         assert (tmp_path / f"{figure}.png").stat().st_size > 0
     assert pd.read_csv(tmp_path / "convergence.csv")["base_points"].tolist() == [8]
     assert "## Sobol indices" in (tmp_path / "sensitivity.md").read_text()
+    assert "![tornado](tornado.png)" in (tmp_path / "sensitivity.md").read_text()
+    ya.sensitivity(case, tmp_path, base_points=8, factors=factors, engine="static", jobs=2, figures=False)
+    assert "![" not in (tmp_path / "sensitivity.md").read_text()  # resumed without figures: no links to old ones
 
 
 def test_the_figures_are_drawn_again_from_the_tables_a_study_wrote(tmp_path):

@@ -132,7 +132,10 @@ def run_sensitivity(
     write_csv_atomically(out / SAMPLES_TABLE, samples)
     if figures:
         draw_figures(out, tornado, indices, result.convergence, factors)
-    write_text_atomically(out / REPORT, sensitivity_markdown(base, factors, result, time.time() - started, pool.slots))
+    text = sensitivity_markdown(base, factors, result, time.time() - started, pool.slots)
+    if not figures:  # no links to figures not drawn (or to a resumed folder's older ones)
+        text = "\n".join(line for line in text.split("\n") if not line.startswith("![")) + "\n"
+    write_text_atomically(out / REPORT, text)
     return result
 
 
