@@ -2,7 +2,7 @@
 
 The public API (`yadearch.api`): `preset`, `movement`, `run`, `reproduce`, `report`, `open_run`, `sweep`,
 `montecarlo`, `calibrate`, `robustness`, `capacity`, `sensitivity`, `limit`, `loads`, `load_influence`,
-`load_path`, `residual_curve`, `measured_case`, `on_piers`, imported on first use so that
+`load_path`, `residual_curve`, `measured_case`, `on_piers` (and `RunResult`, `Factor`), imported on first use so that
 `import yadearch` stays light (no pandas, no YADE); type checkers and IDEs see them through the
 TYPE_CHECKING import below."""
 
@@ -12,6 +12,7 @@ __version__ = "0.1.0"
 
 if TYPE_CHECKING:
     from yadearch.api import (
+        Factor,
         HingeAtCollapse,
         RunResult,
         calibrate,
@@ -58,6 +59,7 @@ __all__ = [
     "on_piers",
     "RunResult",
     "HingeAtCollapse",
+    "Factor",
 ]
 
 
@@ -67,3 +69,8 @@ def __getattr__(name: str):
 
         return getattr(api, name)
     raise AttributeError(f"module 'yadearch' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    """The API's names for tab completion (they are imported on first use, so not yet in the module)."""
+    return sorted(__all__)

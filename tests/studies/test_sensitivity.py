@@ -211,3 +211,14 @@ def test_a_tornado_end_where_the_arch_cannot_stand_is_du_zero_and_swings_most():
     table = tornado_table(ya.preset("set2"), (thickness, friction), results)
     assert table["factor"].tolist() == ["thickness_mm", "friction_deg"]
     assert table.loc[0, "du_low_mm"] == 0.0 and table.loc[0, "swing_mm"] == 55.0
+
+
+def test_factors_are_taken_as_the_command_line_writes_them_or_by_a_paper_factors_name():
+    """ya.sensitivity(..., factors=("kn_N_per_mm3",)) was an AttributeError from inside the library."""
+    from yadearch.studies.sensitivity.indices import as_factor
+
+    assert as_factor("thickness_mm=22:26") == parse_factor("thickness_mm=22:26")
+    assert as_factor("kn_N_per_mm3") is next(f for f in PAPER_FACTORS if f.name == "kn_N_per_mm3")
+    assert as_factor(PAPER_FACTORS[0]) is PAPER_FACTORS[0] and ya.Factor is Factor and "sensitivity" in dir(ya)
+    with pytest.raises(CampaignError, match=r"factor 'bogus' must be a Factor, 'NAME=LOW:HIGH"):
+        as_factor("bogus")

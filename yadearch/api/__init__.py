@@ -15,14 +15,14 @@ from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from yadearch.api.campaigns import calibrate, capacity, montecarlo, robustness, sensitivity, sweep
+    from yadearch.api.campaigns import Factor, calibrate, capacity, montecarlo, robustness, sensitivity, sweep
     from yadearch.api.live_loads import load_influence, load_path, loads, residual_curve
     from yadearch.api.measured import measured_case, on_piers
     from yadearch.api.results import HingeAtCollapse, RunResult, open_run
     from yadearch.api.runs import as_case, limit, movement, preset, report, reproduce, run, with_engine
 
 _MODULES = {  # the module of each name
-    "campaigns": ("calibrate", "capacity", "montecarlo", "robustness", "sensitivity", "sweep"),
+    "campaigns": ("Factor", "calibrate", "capacity", "montecarlo", "robustness", "sensitivity", "sweep"),
     "live_loads": ("load_influence", "load_path", "loads", "residual_curve"),
     "measured": ("measured_case", "on_piers"),
     "results": ("HingeAtCollapse", "RunResult", "open_run"),
@@ -31,6 +31,7 @@ _MODULES = {  # the module of each name
 _MODULE_OF = {name: module for module, names in _MODULES.items() for name in names}
 
 __all__ = [
+    "Factor",
     "preset",
     "movement",
     "as_case",

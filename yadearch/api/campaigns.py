@@ -17,6 +17,7 @@ from yadearch.case.config import ArchCase
 from yadearch.case.names import FILE, output_path
 from yadearch.errors import ArgumentTypeError, CampaignError
 from yadearch.studies.campaigns.grid import check_campaign_size
+from yadearch.studies.sensitivity.indices import Factor  # a sensitivity factor, for the API's users too
 
 if TYPE_CHECKING:
     from yadearch.studies.calibration import Calibration
@@ -212,7 +213,7 @@ def sensitivity(
     case: ArchCase | str,
     out: str | Path,
     base_points: int | None = None,
-    factors: tuple | None = None,
+    factors: tuple[Factor | str, ...] | None = None,
     engine: str | None = None,
     jobs: int | None = None,
     scheduler: str | None = None,
@@ -224,20 +225,21 @@ def sensitivity(
     """What du of `case` is sensitive to: each factor alone at the ends of its range (a tornado) and
     Sobol indices from Saltelli's sample of `base_points` (a power of two; default
     `sensitivity_campaign.DEFAULT_BASE_POINTS`, 128), both resumable campaigns in
-    `out`; `factors` (`yadearch.studies.sensitivity.indices.Factor`s) default to the paper arch's plausible
-    ranges; the `check_runs` one-at-a-time runs that move du most are made again on the other engine
-    (the DEM for a static study), with the numerical `check_settings` ({"numerics.KEY": value}, e.g. the
-    DEM's `numerics.support_path_states`). Writes the tables, figures (unless not `figures`) and
+    `out`; `factors` (`Factor`s, "NAME=LOW:HIGH[:log|:int]" texts as the command line's --factor, or the
+    names of the paper's factors) default to the paper arch's plausible ranges; the `check_runs`
+    one-at-a-time runs that move du most are made again on the other engine (the DEM for a static
+    study), with the numerical `check_settings` ({"numerics.KEY": value}, e.g. the DEM's
+    `numerics.support_path_states`). Writes the tables, figures (unless not `figures`) and
     sensitivity.md; returns the `SensitivityResult`."""
     from yadearch.studies.campaigns.executors import open_pool
     from yadearch.studies.dem_settings import checked_settings
     from yadearch.studies.sensitivity.checks import check_count
-    from yadearch.studies.sensitivity.indices import PAPER_FACTORS, check_base_points, check_factors
+    from yadearch.studies.sensitivity.indices import PAPER_FACTORS, as_factor, check_base_points, check_factors
     from yadearch.studies.sensitivity.study import DEFAULT_BASE_POINTS, run_sensitivity
 
     check_arguments(base_points=base_points, check_runs=check_runs, jobs=jobs, timeout_s=timeout_s, figures=figures)
     folder, case = output_path(out, "out"), with_engine(case, engine)
-    chosen = tuple(factors) if factors else PAPER_FACTORS
+    chosen = tuple(as_factor(f) for f in factors) if factors else PAPER_FACTORS
     base_points = DEFAULT_BASE_POINTS if base_points is None else base_points
     check_base_points(base_points)  # refused before a pool starts
     check_factors(case, chosen)

@@ -46,7 +46,8 @@ def check_drawn(base: ArchCase, levels: Mapping[str, Sequence[float]]) -> None:
         return
     raise CampaignError(
         "no imperfection is drawn at random (every imperfections.*_sd_* is 0): every sample would be the same "
-        "arch; give a standard deviation, e.g. --set face_bump_sd_mm=0.1 (face_bump_sd_mm=0.1)"
+        "arch; give a standard deviation: --set face_bump_sd_mm=0.1 on the command line, "
+        "case.replace(face_bump_sd_mm=0.1) in Python"
     )
 
 
