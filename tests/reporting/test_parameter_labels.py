@@ -50,3 +50,24 @@ def test_a_sweep_figure_labels_its_axis_and_lines_without_raw_names(monkeypatch,
     ax = figures[0].axes[0]
     assert ax.get_xlabel() == "thickness (mm)"
     assert [t.get_text() for t in ax.get_legend().get_texts()] == ["$k_n$ = 1 N/mm³", "$k_n$ = 5.2 N/mm³"]
+
+
+def test_many_lines_of_one_setting_take_a_colour_scale_not_a_legend(monkeypatch, tmp_path):
+    """40 kn levels against friction drew a 40-entry legend over the data (fourth user trial): more
+    than MAX_LEGEND_LINES lines of one numeric setting are shaded on a colour bar named by it."""
+    figures: list = []
+    monkeypatch.setattr(sweep, "save_figure", lambda fig, stem: figures.append(fig) or (stem, stem))
+    kn = [2.0 * 10 ** (k / 4) for k in range(12)]
+    table = pd.DataFrame(
+        {
+            "run": [f"r{i}" for i in range(24)],
+            "status": ["done"] * 24,
+            "collapsed": [True] * 24,
+            "du_mm": [30.0 + i for i in range(24)],
+            "friction_deg": [34.0, 38.0] * 12,
+            "kn_N_per_mm3": [k for k in kn for _ in range(2)],
+        }
+    )
+    sweep.parameter_sweep_figure(table, "friction_deg", tmp_path / "f", ["friction_deg", "kn_N_per_mm3"])
+    ax, bar = figures[0].axes
+    assert ax.get_legend() is None and len(ax.lines) == 12 and bar.get_ylabel() == "$k_n$ (N/mm³)"

@@ -11,6 +11,8 @@ from pathlib import Path
 import matplotlib
 import pandas as pd
 from matplotlib.axes import Axes
+from matplotlib.cm import ScalarMappable
+from matplotlib.colors import LogNorm, Normalize
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
@@ -29,6 +31,8 @@ LEGEND_HEADROOM = 1.45  # hinge panel's y range as a multiple of the last interf
 PAPER_MECHANISM = "E-I-E-E"  # hinges D, A, B, C from left to right (paper: collapse when D opens)
 DECADE = 10.0
 BASE_CASE = "as the base case"  # a parameter a sweep's row leaves empty
+MAX_LEGEND_LINES = 8  # more lines than this, of one numeric setting: a colour scale instead of a legend
+SHADES = "viridis"
 LEGEND_SETTINGS = 2  # more parameters differing between a sweep's lines: each line named by its runs
 SWEEP_STYLE = {
     "font.size": 8,
@@ -165,22 +169,37 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path, paramet
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
         ax = fig.subplots()
+        shade = _shades(others, groups)  # many lines of one numeric setting: a colour scale, not a legend
         for key, group in groups:
             group = group.sort_values(column)
             values_of = key if isinstance(key, tuple) else (key,)
             label = ", ".join(_setting(c, v) for c, v in zip(others, values_of))
             if len(others) > LEGEND_SETTINGS and "run" in group:  # a table of unlike arches: name its runs
                 label = ", ".join(group["run"].astype(str))
-            ax.plot(group[column], group["du_mm"], "o-", ms=3.5, lw=1, label=label or None)
+            style = {"color": shade.to_rgba(values_of[0])} if shade is not None else {"label": label or None}
+            ax.plot(group[column], group["du_mm"], "o-", ms=3.5 if shade is None else 2.0, lw=1, **style)
         values = runs[column].astype(float)
         if (values > 0).all() and values.max() > DECADE * values.min():
             ax.set_xscale("log")
         ax.set_xlabel(parameter_label(column))
         ax.set_ylabel(r"collapse displacement $d_u$ (mm)")
-        if others:
+        if shade is not None:
+            fig.colorbar(shade, ax=ax, label=parameter_label(others[0]))
+        elif others:
             ax.legend(frameon=False)
         ax.grid(True, lw=0.3, alpha=0.5)
         return list(save_figure(fig, stem))
+
+
+def _shades(others: list[str], groups: list[tuple[object, pd.DataFrame]]) -> ScalarMappable | None:
+    """A colour scale for the lines where there are more than MAX_LEGEND_LINES of them, all of one
+    numeric setting (a legend of 40 kn levels covered the data); None: a legend names them."""
+    values = pd.to_numeric(pd.Series([key for key, _ in groups]), errors="coerce")
+    if len(others) != 1 or len(groups) <= MAX_LEGEND_LINES or values.isna().any():
+        return None
+    low, high = float(values.min()), float(values.max())
+    norm = LogNorm(low, high) if low > 0 and high > DECADE * low else Normalize(low, high)
+    return ScalarMappable(norm=norm, cmap=SHADES)
 
 
 def _lines(runs: pd.DataFrame, others: list[str]) -> list[tuple[object, pd.DataFrame]]:
