@@ -100,6 +100,7 @@ def probes() -> list[list[str]]:
         ["calibrate", "--preset", "set1", "--target-du", "-5", "--out", "OUT/c.json"],
         ["calibrate", "--preset", "set1", "--target-du", "48", "--kn-min", "5", "--kn-max", "1", "--out", "OUT/c.json"],
         ["report", "OUT/not-a-run", "--out", "OUT/r"],
+        ["report", f"{REPO}/reports/set2", f"{REPO}/reports/set2/", "--out", "OUT/r"],  # one run twice
         ["piers", "--preset", "set2", "--height-mm", "100", "--width-mm", "10", "--out", "OUT/p.toml"],
         ["piers", "--preset", "set2", "--height-mm", "0", "--width-mm", "60", "--out", "OUT/p.toml"],
         ["limit", "--set", "friction_deg=95"],

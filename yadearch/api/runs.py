@@ -163,6 +163,11 @@ def report(runs: Sequence[str | Path], out: str | Path) -> Path:
         raise ArgumentTypeError(f"runs must be a list of run folders, got {type(runs).__name__} {str(runs)!r:.40}")
     if not runs:
         raise RunFolderError("runs must list at least one run folder, got none")
+    seen: set[Path] = set()
+    for run in runs:
+        if Path(run).resolve() in seen:  # the same run's section twice, and its figures copied twice
+            raise RunFolderError(f"runs lists {str(run)!r} twice; give each run folder once")
+        seen.add(Path(run).resolve())
     return write_report(list(runs), output_path(out, "out"))
 
 
