@@ -78,3 +78,17 @@ def test_json_record(tmp_path):
         assert key in data
     assert data["runs"] == len(data["history"]) and data["history"][0]["kn_N_per_mm3"] == 0.1
     assert sum(line.startswith("run ") for line in lines) == data["runs"]
+
+
+def test_the_api_names_the_case_and_the_engine_it_calibrated(tmp_path):
+    """A 9-voussoir arch on the static engine: the kn that gives the du of kn 10 is found near 10, and
+    the record says which case and engine (the calibration JSON named neither; fourth user trial)."""
+    import yadearch as ya
+
+    case = ya.preset("set2").replace(n_voussoirs=9, kn_N_per_mm3=10.0, engine="static")
+    target = ya.run(case, out=tmp_path / "target", figures=False, quiet=True).du_mm
+    found = ya.calibrate(case.replace(name="nine"), target, tmp_path / "runs", kn_min=1.0, kn_max=100.0, jobs=1)
+    assert found.converged and found.case == "nine" and found.engine == "static"
+    assert abs(found.du_mm - target) <= found.tolerance_mm
+    found.write(tmp_path / "nine.json")
+    assert '"engine": "static"' in (tmp_path / "nine.json").read_text()

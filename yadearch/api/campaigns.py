@@ -4,6 +4,7 @@ what it starts and draws its figures, and the command line prints and exits on w
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable
 from pathlib import Path
@@ -148,7 +149,7 @@ def calibrate(
         raise CampaignError(f"kn_min must be below kn_max, got {kn_min:g} and {kn_max:g}")
     folder, base = output_path(out, "out"), with_engine(case, engine)
     with open_pool(jobs, scheduler) as pool:
-        return calibrate_kn(
+        found = calibrate_kn(
             campaign_evaluator(base, folder, pool, timeout_s),
             target_du_mm,
             tolerance_mm,
@@ -157,6 +158,7 @@ def calibrate(
             max_runs,
             log=log,
         )
+    return dataclasses.replace(found, case=base.name, engine=base.numerics.engine)
 
 
 def robustness(

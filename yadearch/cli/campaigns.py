@@ -186,7 +186,7 @@ def calibrate(
     out_path = Path(out)
     runs = Path(runs_dir) if runs_dir else out_path.with_suffix("")
     click.echo(
-        f"calibrating kn of {base.name} to du = {target_du:g} +- {tolerance_mm:g} mm, "
+        f"calibrating kn of {base.name} ({base.numerics.engine} engine) to du = {target_du:g} +- {tolerance_mm:g} mm, "
         f"kn in [{kn_min:g}, {kn_max:g}] N/mm3; runs in {runs}"
     )
     result = api.calibrate(

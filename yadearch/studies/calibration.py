@@ -57,6 +57,8 @@ class Calibration:
     runs: int
     new_runs: int
     history: list[Evaluation]
+    case: str = ""  # the case calibrated, by name
+    engine: str = ""  # the engine whose du was matched
 
     def to_json(self) -> dict[str, Any]:
         return asdict(self)
