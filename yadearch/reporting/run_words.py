@@ -22,8 +22,9 @@ def arch_text(case: dict[str, Any]) -> str:
     its shape, voussoirs, ring and size."""
     g = as_ran(case)["geometry"]
     shape, ring = g["shape"], f"{g['n_voussoirs']} voussoirs, ring {g['thickness_mm']:g} mm"
-    if shape == "measured":
-        return f"surveyed arch of {len(g['joint_points_mm']) - 1} voussoirs"
+    if shape == "measured":  # a survey, or an arch put on piers (`yadearch piers`): its joints' corners
+        blocks = len(g["joint_points_mm"]) - 1
+        return f"arch of {blocks} blocks given by its joints' corners, ring {g['thickness_mm']:.3g} mm"
     if shape == "segmental":
         return f"segmental arch, {ring}, intrados radius {g['internal_radius_mm']:g} mm, embrace {g['embrace_deg']:g}°"
     size = f"span {g['span_mm']:g} mm" + (f", rise {g['rise_mm']:g} mm" if shape != "pointed" else "")
