@@ -71,3 +71,25 @@ def test_many_lines_of_one_setting_take_a_colour_scale_not_a_legend(monkeypatch,
     sweep.parameter_sweep_figure(table, "friction_deg", tmp_path / "f", ["friction_deg", "kn_N_per_mm3"])
     ax, bar = figures[0].axes
     assert ax.get_legend() is None and len(ax.lines) == 12 and bar.get_ylabel() == "$k_n$ (N/mm³)"
+
+
+def test_an_arch_that_cannot_stand_is_drawn_at_du_zero_and_marked(monkeypatch, tmp_path):
+    """The sweep figures left such runs out silently (fourth user trial); the studies count them as 0."""
+    from yadearch.errors import CANNOT_STAND
+
+    figures: list = []
+    monkeypatch.setattr(sweep, "save_figure", lambda fig, stem: figures.append(fig) or (stem, stem))
+    table = pd.DataFrame(
+        {
+            "run": list("abc"),
+            "status": ["failed", "done", "done"],
+            "collapsed": [None, True, True],
+            "reason": [f"run failed: {CANNOT_STAND}", "", ""],
+            "du_mm": [float("nan"), 40.0, 55.0],
+            "thickness_mm": [20.0, 30.0, 40.0],
+        }
+    )
+    sweep.parameter_sweep_figure(table, "thickness_mm", tmp_path / "t", ["thickness_mm"])
+    ax = figures[0].axes[0]
+    assert list(ax.lines[0].get_ydata()) == [0.0, 40.0, 55.0]
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == ["cannot stand (du 0)"]

@@ -16,6 +16,7 @@ from matplotlib.colors import LogNorm, Normalize
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
+from yadearch.analysis.samples import collapse_displacement
 from yadearch.case import reference
 from yadearch.plotting.house import MIN_TEXT_PT, hinge_colour, save_figure
 from yadearch.plotting.parameter_labels import parameter_label, parameter_name, parameter_setting
@@ -159,8 +160,9 @@ def _hinge_panel(ax: Axes, runs: pd.DataFrame, paper: bool) -> None:
 def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path, parameters: Sequence[str]) -> list[Path]:
     """du against one swept `column` (results.csv's name for it), one line per combination of the
     other swept `parameters` that vary, numbers or not (a shape, a movement); log scale when the values
-    span more than a decade. Writes STEM.pdf/.png."""
-    runs = _collapsed(table)
+    span more than a decade; an arch that cannot stand is drawn at du 0 and marked. Writes STEM.pdf/.png."""
+    runs = table.assign(du_mm=collapse_displacement(table))  # cannot stand: 0, as the studies count it
+    runs = _collapsed(runs.assign(status="done", collapsed=runs["du_mm"].notna()))
     # a parameter left at the base case in some rows (an empty cell) takes a value of its own there
     others = [c for c in parameters if c != column and c in table and table[c].nunique(dropna=False) > 1]
     groups = _lines(runs, others)
@@ -183,9 +185,12 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path, paramet
             ax.set_xscale("log")
         ax.set_xlabel(parameter_label(column))
         ax.set_ylabel(r"collapse displacement $d_u$ (mm)")
+        fell = runs[runs["du_mm"] == 0.0]
+        if not fell.empty:
+            ax.plot(fell[column], fell["du_mm"], "x", color="C3", ms=5, label="cannot stand (du 0)")
         if shade is not None:
             fig.colorbar(shade, ax=ax, label=parameter_label(others[0]))
-        elif others:
+        if ax.get_legend_handles_labels()[0]:
             ax.legend(frameon=False)
         ax.grid(True, lw=0.3, alpha=0.5)
         return list(save_figure(fig, stem))
