@@ -13,6 +13,7 @@ from yadearch.dem.runner import Runner
 from yadearch.model import units
 from yadearch.model.loads import UNITS
 from yadearch.results.summary import HingeRef, RunSummary, collapse_fields
+from yadearch.solve.collapse_mode import FoldMode, fold_mode
 from yadearch.solve.stages import Stage
 
 
@@ -29,8 +30,10 @@ def run_stages(runner: Runner) -> RunSummary:
     loading = EquilibriumPath(runner)
     path = loading.follow()
     outcome = collapse_fields(path, runner.movement, loading.first_loss)
+    mode = None
     if path.collapsed:
         hinges = loading.collapse_state(path.upper)
+        mode = collapse_mode(runner, loading, path.lower)
         runner.log(
             f"[{name}] du = {outcome['du_mm']:.2f} mm (no equilibrium at "
             f"{units.to_mm(path.upper):.2f}, equilibrium at {units.to_mm(path.lower):.2f})"
@@ -59,6 +62,8 @@ def run_stages(runner: Runner) -> RunSummary:
         snaps=loading.snaps,
         hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges) if path.collapsed else (),
         hinges_detail=[h.to_json() for h in hinges],
+        collapse_kind=mode.kind if mode is not None else None,
+        collapse_mode_hinges=mode.labels if mode is not None else None,
         steps=runner.total_steps,
         steps_by_stage=dict(runner.steps_by_stage),
         dt_s=O.dt,
@@ -66,3 +71,19 @@ def run_stages(runner: Runner) -> RunSummary:
         steps_per_s=runner.total_steps / wall if wall > 0 else None,
         profile=runner.clock.profile(wall),
     )
+
+
+def collapse_mode(runner: Runner, loading: EquilibriumPath, lower: float) -> FoldMode | None:
+    """The collapse's mode as the static engine reads its own (`solve.collapse_mode.fold_mode`): the
+    motion from the last equilibrium (the static model's, from the DEM's last accepted state at `lower`)
+    toward the runaway the scene shows now; None where the static model is not the scene's (CGAL) or
+    finds no stable equilibrium there. Leaves the scene at the last accepted state."""
+    check = runner.static_check
+    if check is None:
+        return None
+    failed = check.scene_u()
+    loading.back_to_accepted()
+    found = check.equilibrium(lower, runner.live_multiplier)
+    if found is None:
+        return None
+    return fold_mode(check.loading.arch, found.u, found.stiffness, failed, found.springs)
