@@ -10,6 +10,7 @@ from click.testing import CliRunner
 
 import yadearch as ya
 from yadearch.case.config import load_case, preset
+from yadearch.case.mechanics import arch_geometry
 from yadearch.cli.commands import cli
 from yadearch.errors import CampaignError, CaseError
 from yadearch.solve.limit import limit_analysis
@@ -73,3 +74,21 @@ def test_the_command_line_writes_the_case_on_its_piers(tmp_path):
     )
     assert result.exit_code == 0 and len(result.output.strip().splitlines()) == 1
     assert load_case(out) == ya.on_piers("set2", HEIGHT_MM, NARROW_MM)
+
+
+def test_a_case_on_piers_says_so_and_takes_no_second_pair(narrow):
+    """The piers are recorded (geometry.piers_mm): the report calls the arch an arch on piers (it said
+    'surveyed arch of 57 voussoirs'), its failure to stand names the piers, and piers on piers are
+    refused (they stacked silently; fourth user trial)."""
+    from yadearch.reporting.run_words import arch_text
+    from yadearch.solve.limit import why_not_standing
+
+    assert narrow.geometry.piers_mm == [[HEIGHT_MM, NARROW_MM]]
+    assert arch_text(narrow.to_dict()).endswith(f"on piers {HEIGHT_MM:g} mm tall and {NARROW_MM:g} mm wide")
+    assert arch_text(narrow.to_dict()).startswith("arch of 55 voussoirs")
+    with pytest.raises(CaseError, match=r"^the case is on piers already \(100 mm tall, 60 mm wide"):
+        ya.on_piers(narrow, HEIGHT_MM, NARROW_MM)
+    thin = narrow.with_overrides({"geometry.thickness_mm": 24.0, "material.friction_deg": 5.0})
+    assert "or its piers (60 mm wide) too narrow" in why_not_standing(thin)
+    with pytest.raises(CaseError, match="geometry.piers_mm is for shape 'measured' only"):
+        arch_geometry(preset("set2").with_overrides({"geometry.piers_mm": [[100.0, 60.0]]}))

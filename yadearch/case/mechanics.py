@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from yadearch.case.config import ArchCase
 from yadearch.case.imperfect import amplitudes, imperfect_geometry
-from yadearch.case.shape import build_arch
+from yadearch.case.shape import SIZES, build_arch
 from yadearch.errors import CaseError
 from yadearch.model import units
 from yadearch.model.backfill import Backfill, fill_surface
@@ -43,10 +43,12 @@ def standing_parameters(case: ArchCase) -> str:
     one that does not: the ring's proportions, the friction, the joints' stiffness and any defects."""
     g = case.geometry
     terms = [f"{g.shape} arch, thickness_mm {g.thickness_mm:g}", f"n_voussoirs {g.n_voussoirs}"]
-    if g.shape == "segmental":
-        terms.insert(1, f"internal_radius_mm {g.internal_radius_mm:g}, embrace_deg {g.embrace_deg:g}")
-    else:
-        terms.insert(1, f"span_mm {g.span_mm:g}, rise_mm {g.rise_mm:g}")
+    read = [name for name in SIZES.get(g.shape, ()) if not isinstance(getattr(g, name), list)]
+    sizes = ", ".join(f"{name} {getattr(g, name):g}" for name in read)
+    if sizes:  # the sizes this shape reads (a measured arch's are its joints)
+        terms.insert(1, sizes)
+    if g.piers_mm:
+        terms.append(f"on piers {g.piers_mm[0][0]:g} x {g.piers_mm[0][1]:g} mm")
     terms += [f"friction_deg {case.material.friction_deg:g}", f"kn {case.interface.kn_N_per_mm3:g} N/mm3"]
     defects = [
         f"{name} {value:g}"

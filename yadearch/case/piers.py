@@ -21,6 +21,12 @@ def pier_case(case: ArchCase, pier_height_mm: float, pier_width_mm: float) -> Ar
     its outer face runs from its base to the springing joint's extrados corner, and its base is a joint
     on the ground (the support); the case's nominal ring thickness stays (the runaway bound and the
     snap floor scale with it). CaseError in one line for a size outside its range."""
+    if case.geometry.piers_mm:
+        (height, width), *_ = case.geometry.piers_mm
+        raise CaseError(
+            f"the case is on piers already ({height:g} mm tall, {width:g} mm wide, geometry.piers_mm): put the "
+            "arch without them on piers"
+        )
     geometry = arch_geometry(case)
     span_mm = units.to_mm(geometry.span)
     for name, value in (("pier_height_mm", pier_height_mm), ("pier_width_mm", pier_width_mm)):
@@ -43,6 +49,7 @@ def pier_case(case: ArchCase, pier_height_mm: float, pier_width_mm: float) -> Ar
             "geometry.shape": MEASURED,
             "geometry.joint_points_mm": np.asarray(rows, float).tolist(),
             "geometry.n_voussoirs": len(rows) - 1,
+            "geometry.piers_mm": [[float(pier_height_mm), float(pier_width_mm)]],
             # a measured voussoir's face corners: its number one further, the left pier first
             **{f"geometry.{face}": [[v + 1, x, y] for v, x, y in getattr(case.geometry, face)] for face in FACE_POINTS},
         }

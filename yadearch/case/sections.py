@@ -54,6 +54,14 @@ class GeometryConfig:
     )
     intrados_points_mm: list = _face_points("intrados", "a springer's upright face below the curve")
     extrados_points_mm: list = _face_points("extrados", "a curved extrados, a springer's back")
+    piers_mm: list = field(
+        default_factory=list,
+        metadata=table_meta(
+            ("height_mm", "width_mm"),
+            "shape 'measured': the piers `yadearch piers` put under the arch (one row; its first and last "
+            "blocks), a record that names them and refuses piers on piers; none: no piers",
+        ),
+    )
     n_voussoirs: int = field(default=55, metadata=number_meta(2, 1000, doc="number of voussoirs"))
     embrace_deg: float = field(
         default=125.0, metadata=number_meta(0, 180, low_open=True, doc="angle of embrace (deg; segmental)")

@@ -30,6 +30,7 @@ from yadearch.model.intrados import (
 
 MEASURED = "measured"  # geometry.shape of a surveyed arch (geometry.joint_points_mm)
 MIN_MEASURED_JOINTS = 3  # two voussoirs at least
+PIERS = "piers_mm"  # the piers a measured arch was put on (`case.piers`), recorded
 FACE_POINTS = ("intrados_points_mm", "extrados_points_mm")  # a measured voussoir's corners between its joints
 SIZES = {  # the [geometry] sizes each shape reads; thickness, depth, voussoirs and joints: every shape's
     "segmental": ("internal_radius_mm", "embrace_deg"),
@@ -93,7 +94,7 @@ def build_arch(g: GeometryConfig) -> ArchGeometry:
     (= radial) joints is the paper's construction, bit for bit."""
     if g.shape == MEASURED:
         return measured_arch(g)
-    given = [name for name in FACE_POINTS if getattr(g, name)]
+    given = [name for name in (*FACE_POINTS, PIERS) if getattr(g, name)]
     if given:
         raise CaseError(f"geometry.{given[0]} is for shape 'measured' only, got shape {g.shape!r}")
     intrados = checked_intrados(g)

@@ -22,7 +22,11 @@ def arch_text(case: dict[str, Any]) -> str:
     its shape, voussoirs, ring and size."""
     g = as_ran(case)["geometry"]
     shape, ring = g["shape"], f"{g['n_voussoirs']} voussoirs, ring {g['thickness_mm']:g} mm"
-    if shape == "measured":  # a survey, or an arch put on piers (`yadearch piers`): its joints' corners
+    if shape == "measured" and g["piers_mm"]:  # an arch put on piers (`yadearch piers`)
+        (height, width), *_ = g["piers_mm"]
+        arch = f"arch of {len(g['joint_points_mm']) - 3} voussoirs, ring {g['thickness_mm']:.3g} mm"
+        return f"{arch}, on piers {height:g} mm tall and {width:g} mm wide"
+    if shape == "measured":  # a survey: its joints' corners
         blocks = len(g["joint_points_mm"]) - 1
         return f"arch of {blocks} blocks given by its joints' corners, ring {g['thickness_mm']:.3g} mm"
     if shape == "segmental":

@@ -95,7 +95,9 @@ def why_not_standing(case: ArchCase) -> str:
             f"rigid blocks of this shape stand: its joints at kn {case.interface.kn_N_per_mm3:g} N/mm3 are too "
             "soft for it (their compliance folds the ring); a stiffer kn or a thicker ring stands"
         )
-    blocks = ", or (given by its joints: a survey, piers) a block too narrow" if case.geometry.shape == MEASURED else ""
+    blocks = ", or a surveyed block too narrow for the thrust" if case.geometry.shape == MEASURED else ""
+    if case.geometry.piers_mm:
+        blocks = f", or its piers ({case.geometry.piers_mm[0][1]:g} mm wide) too narrow for its thrust"
     return f"rigid blocks of this shape do not stand either: the ring is too thin or the friction too low{blocks}"
 
 
