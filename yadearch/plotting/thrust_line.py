@@ -38,7 +38,8 @@ from yadearch.solve.limit_result import LimitResult
 M_TO_MM = 1e3
 TITLE_CM = 0.4  # the title's row above the axes
 LEGEND_ROW_CM = 0.45  # the legend's row below the x label
-LEGEND_BELOW_AXES = -0.26  # the legend's top, in axes heights below the axes (under the x label)
+LEGEND_BELOW_AXES = -0.26  # the legend's top, in axes heights below the axes (under the x label), in a given axes
+X_LABEL_CM = 0.95  # the tick labels' and the x label's height under the axes
 
 
 def placed_outlines(result: LimitResult, geometry: ArchGeometry) -> list[np.ndarray]:
@@ -77,10 +78,14 @@ def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchC
         if ax is None:
             axes_width = COLUMN_CM - AXIS_MARGINS_CM[0]
             titles = TITLE_CM * (2 if held else 1)  # a held load's line under the title
-            height = axes_width * np.ptp(ylim) / np.ptp(xlim) + AXIS_MARGINS_CM[1] + titles + LEGEND_ROW_CM
-            fig = new_figure(height_cm=height)
+            drawing_cm = axes_width * np.ptp(ylim) / np.ptp(xlim)
+            fig = new_figure(height_cm=drawing_cm + AXIS_MARGINS_CM[1] + titles + LEGEND_ROW_CM)
             ax = fig.add_subplot()
+            below = -X_LABEL_CM / drawing_cm  # the legend's top under the x label, whatever the arch's height
+        else:
+            below = LEGEND_BELOW_AXES
         marks = _draw(ax, result, undeformed, outlines)
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, below), ncols=3, handlelength=1.5, frameon=False)
         ax.set_aspect("equal")
         ax.set_xlim(*xlim)
         ax.set_ylim(*ylim)
@@ -96,7 +101,7 @@ def plot_thrust_line(result: LimitResult, geometry_or_case: ArchGeometry | ArchC
 def _draw(
     ax: Axes, result: LimitResult, undeformed: list[np.ndarray], outlines: list[np.ndarray]
 ) -> list[tuple[Annotation, np.ndarray]]:
-    """Blocks, thrust line, hinges and legend; the hinges' labels with their preferred sides."""
+    """Blocks, thrust line, hinges and the legend's entries; the hinges' labels with their preferred sides."""
     draw_blocks(ax, outlines, undeformed)
     thrust = np.array([f.thrust_mm for f in result.forces])
     ax.plot(thrust[:, 0], thrust[:, 1], color=THRUST_COLOUR, lw=0.9, marker="o", ms=1.2, zorder=3, label="thrust line")
@@ -113,7 +118,6 @@ def _draw(
         for k, (label, point) in enumerate(points.items())
     ]
     block_legend_entries(ax, "at the limit")
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, LEGEND_BELOW_AXES), ncols=3, handlelength=1.5, frameon=False)
     return marks
 
 
