@@ -147,7 +147,7 @@ def map_markdown(table: pd.DataFrame) -> list[str]:
             r = row.iloc[0]
             cells += [_mm(r.du_first_mm), f"{r.du_mm:.2f}", f"({r.du_x_mm:.1f}, {r.du_y_mm:.1f})", r.hinges or "-"]
         first = rows.iloc[0]
-        mode = first.rigid_mode if isinstance(first.rigid_mode, str) and first.rigid_mode else ""
+        mode = first.rigid_mode if isinstance(first.rigid_mode, str) and np.isfinite(first.du_rigid_mm) else ""
         cells += [
             _mm(first.du_rigid_mm) + (f" ({mode})" if mode and mode != HINGING else ""),  # sliding, a snap
             first.rigid_hinges or "-",
