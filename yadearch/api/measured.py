@@ -121,4 +121,4 @@ def on_piers(case: ArchCase | str, pier_height_mm: float, pier_width_mm: float, 
     on their base joints, the supports moving the ground under them (`case.piers.pier_case`)."""
     check_arguments(pier_height_mm=pier_height_mm, pier_width_mm=pier_width_mm)
     on = pier_case(as_case(case), pier_height_mm, pier_width_mm)
-    return on.with_overrides({"name": name}) if name is not None else on
+    return on.with_overrides({"name": name}) if name is not None else off_the_paper(on, named=False)  # not set2

@@ -3,6 +3,7 @@ levels), resumable, with the distribution of du and of the hinges as a table, Ma
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import click
@@ -74,9 +75,13 @@ def montecarlo(
     )
     du = pd.Series(collapse_displacement(table), index=table.index)  # an arch that cannot stand: 0
     stats = du_statistics(du)
+    interval = (
+        f"95 % interval {stats['median_low']:.2f}-{stats['median_high']:.2f}"
+        if math.isfinite(stats["median_low"])
+        else "too few samples for its 95 % interval"
+    )
     click.echo(
-        f"{outcomes_text(du)}; median du {stats['median']:.2f} mm "
-        f"(95 % interval {stats['median_low']:.2f}-{stats['median_high']:.2f}), "
+        f"{outcomes_text(du)}; median du {stats['median']:.2f} mm ({interval}), "
         f"5-95 % {stats['low']:.2f}-{stats['high']:.2f} mm -> {folder / MONTECARLO_FILE}, "
         f"{folder / SUMMARY_FILE}"
     )

@@ -7,6 +7,7 @@ from 100 to 200 samples keeps its first 100 runs. docs/usage.md shows the comman
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import fields
 from pathlib import Path
@@ -158,9 +159,12 @@ def summary_markdown(table: pd.DataFrame, level_columns: list[str], about: str =
         group = table[(table[level_columns] == level).all(axis=1)] if level_columns else table
         stats = du_statistics(du[group.index])
         prefix = "".join(f"{value:g} | " for value in key)
+        interval = (
+            f"{stats['median_low']:.2f}-{stats['median_high']:.2f}" if math.isfinite(stats["median_low"]) else "—"
+        )  # too few samples for it
         lines.append(
-            f"| {prefix}{stats['n']} | {stats['median']:.2f} | {stats['median_low']:.2f}-"
-            f"{stats['median_high']:.2f} | {stats['low']:.2f}-{stats['high']:.2f} | {stats['mean']:.2f} |"
+            f"| {prefix}{stats['n']} | {stats['median']:.2f} | {interval} | {stats['low']:.2f}-{stats['high']:.2f} "
+            f"| {stats['mean']:.2f} |"
         )
     finished = int((table["status"] == "done").sum())
     lines += ["", f"Hinge positions (interface: share of the {finished} finished samples):", ""]

@@ -111,12 +111,12 @@ def run_capacity(
     write_csv_atomically(Path(out) / TABLE, table)
     if figures:
         capacity_polar_figure(table, Path(out) / FIGURE, engine=ENGINE_LABELS[case.numerics.engine])
-    write_text_atomically(Path(out) / REPORT, capacity_markdown(case, table, step_deg, FIGURE))
+    write_text_atomically(Path(out) / REPORT, capacity_markdown(case, table, step_deg, FIGURE if figures else ""))
     return table
 
 
 def capacity_markdown(case: ArchCase, table: pd.DataFrame, step_deg: float, figure: str) -> str:
-    """capacity.md: the map of `case` (kn, engine) every `step_deg`, its table and figure."""
+    """capacity.md: the map of `case` (kn, engine) every `step_deg`, its table and `figure` ("": none drawn)."""
     failed = table[table["status"] != "done"]
     lines = [
         f"# Capacity map of {case.name}",
@@ -128,8 +128,7 @@ def capacity_markdown(case: ArchCase, table: pd.DataFrame, step_deg: float, figu
         "",
         *map_markdown(table),
         "",
-        f"![capacity map]({figure}.png)",
-        "",
+        *([f"![capacity map]({figure}.png)", ""] if figure else []),
     ]
     lines += [f"- {r.direction_deg:g}°: {r.status} (see runs/{r.folder})." for r in failed.itertuples(index=False)]
     return "\n".join(lines) + "\n"
