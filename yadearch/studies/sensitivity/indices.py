@@ -103,13 +103,11 @@ def parse_factor(text: str) -> Factor:
 def as_factor(item: Factor | str) -> Factor:
     """A factor given as a Factor, as the command line's text (`parse_factor`), or as the name of one
     of PAPER_FACTORS (its plausible range); CampaignError in one line for anything else."""
-    if isinstance(item, Factor):
-        return item
+    named = {f.name: f for f in PAPER_FACTORS} | {f.key: f for f in PAPER_FACTORS}
+    if isinstance(item, Factor) or (isinstance(item, str) and item.strip() in named):
+        return item if isinstance(item, Factor) else named[item.strip()]
     if isinstance(item, str) and "=" in item:
         return parse_factor(item)
-    named = {f.name: f for f in PAPER_FACTORS} | {f.key: f for f in PAPER_FACTORS}
-    if isinstance(item, str) and item.strip() in named:
-        return named[item.strip()]
     raise CampaignError(
         f"factor {item!r} must be a Factor, 'NAME=LOW:HIGH[:log|:int]' or one of the paper's factors "
         f"({', '.join(f.name for f in PAPER_FACTORS)})"
