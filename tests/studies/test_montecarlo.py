@@ -102,4 +102,4 @@ def test_samples_that_cannot_stand_count_as_du_zero_as_in_the_sensitivity_study(
     text = summary_markdown(table, [])
     assert "40 samples: 18 collapsed, 21 cannot stand under their own weight" in text
     assert "| 39 | 0.00 |" in text  # the median of 21 zeros and 18 collapses (one sample has no du)
-    assert "share of the 18 finished samples" in text
+    assert "share of the 18 samples that collapsed" in text

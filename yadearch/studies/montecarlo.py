@@ -166,9 +166,9 @@ def summary_markdown(table: pd.DataFrame, level_columns: list[str], about: str =
             f"| {prefix}{stats['n']} | {stats['median']:.2f} | {interval} | {stats['low']:.2f}-{stats['high']:.2f} "
             f"| {stats['mean']:.2f} |"
         )
-    finished = int((table["status"] == "done").sum())
-    lines += ["", f"Hinge positions (interface: share of the {finished} finished samples):", ""]
-    frequencies = hinge_frequencies(table)
+    collapsed = table[(table["status"] == "done") & table["du_mm"].notna()]  # as the hinge figure counts them
+    lines += ["", f"Hinge positions (interface: share of the {len(collapsed)} samples that collapsed):", ""]
+    frequencies = hinge_frequencies(collapsed)
     for label in PAPER_LABELS:
         rows = frequencies[frequencies["hinge"] == label]
         listed = ", ".join(f"{r.interface}: {r.share:.0%}" for r in rows.itertuples())
