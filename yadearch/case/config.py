@@ -94,7 +94,8 @@ class ArchCase:
             if section is None:
                 data[name] = value
             else:
-                changed |= {name} if section == "geometry" and data[section][name] != value else set()
+                if section == "geometry" and data[section][name] != value:
+                    changed.add(name)
                 data[section][name] = value
                 given.add((section, name))
         if (MATERIAL_KEY, PRESET_FIELD) in given:  # a material named here replaces the values not set beside it

@@ -9,6 +9,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 import matplotlib
+import numpy as np
 import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.cm import ScalarMappable
@@ -161,8 +162,10 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path, paramet
     """du against one swept `column` (results.csv's name for it), one line per combination of the
     other swept `parameters` that vary, numbers or not (a shape, a movement); log scale when the values
     span more than a decade; an arch that cannot stand is drawn at du 0 and marked. Writes STEM.pdf/.png."""
-    runs = table.assign(du_mm=collapse_displacement(table))  # cannot stand: 0, as the studies count it
-    runs = _collapsed(runs.assign(status="done", collapsed=runs["du_mm"].notna()))
+    du = collapse_displacement(table)  # cannot stand: 0, as the studies count it
+    runs = table.assign(du_mm=du)[np.isfinite(du)]
+    if runs.empty:
+        raise ValueError("no collapsed run to plot")
     # a parameter left at the base case in some rows (an empty cell) takes a value of its own there
     others = [c for c in parameters if c != column and c in table and table[c].nunique(dropna=False) > 1]
     groups = _lines(runs, others)
