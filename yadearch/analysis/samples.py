@@ -72,11 +72,13 @@ def hinge_frequencies(table: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows, columns=["hinge", "interface", "count", "share"])
 
 
-def collapse_displacement(runs: pd.DataFrame) -> np.ndarray:
-    """du (mm) of each run for the indices: 0 for an arch that cannot stand under its own weight (it
-    carries no settlement), nan for a run that failed otherwise or stood to the end of its path."""
+def collapse_displacement(runs: pd.DataFrame) -> pd.Series:
+    """du (mm) of each run, on the runs' index, for statistics and indices: 0 for an arch that cannot
+    stand under its own weight (it carries no settlement), nan for a run that failed otherwise or stood
+    to the end of its path."""
     collapsed = runs["collapsed"] == True if "collapsed" in runs else runs["du_mm"].notna()  # noqa: E712
     reasons = runs["reason"].fillna("") if "reason" in runs else pd.Series("", index=runs.index)
     done = (runs["status"] == "done") & collapsed
     fell = (runs["status"] == "failed") & reasons.str.contains(CANNOT_STAND, regex=False)
-    return np.where(done, runs["du_mm"], np.where(fell, 0.0, np.nan)).astype(float)
+    du = np.where(done, runs["du_mm"], np.where(fell, 0.0, np.nan)).astype(float)
+    return pd.Series(du, index=runs.index, name="du_mm")

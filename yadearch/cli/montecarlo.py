@@ -7,7 +7,6 @@ import math
 from pathlib import Path
 
 import click
-import pandas as pd
 
 from yadearch import api
 from yadearch.analysis.samples import collapse_displacement, du_statistics
@@ -73,7 +72,7 @@ def montecarlo(
         figures=figures,
         **axes,
     )
-    du = pd.Series(collapse_displacement(table), index=table.index)  # an arch that cannot stand: 0
+    du = collapse_displacement(table)  # an arch that cannot stand: 0
     stats = du_statistics(du)
     interval = (
         f"95 % interval {stats['median_low']:.2f}-{stats['median_high']:.2f}"

@@ -136,7 +136,7 @@ def summary_markdown(table: pd.DataFrame, level_columns: list[str], about: str =
     (per amplitude level; an arch that cannot stand counts as du 0, as in the sensitivity study) and the
     hinge positions."""
     low, high = (f"{q:.0%}" for q in BAND)
-    du = pd.Series(collapse_displacement(table), index=table.index)  # an arch that cannot stand: 0
+    du = collapse_displacement(table)  # an arch that cannot stand: 0
     lines = [
         "# Monte Carlo of imperfect arches",
         "",

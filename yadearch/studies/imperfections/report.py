@@ -161,7 +161,7 @@ def report(out: Path, sweep: pd.DataFrame, perfect_du_mm: float, arguments: str 
 
 def _du_line(table: pd.DataFrame) -> str:
     """The final campaign's du in one sentence: median, its 95 % interval, the band, what failed."""
-    stats = du_statistics(pd.Series(collapse_displacement(table)))  # an arch that cannot stand: du 0
+    stats = du_statistics(collapse_displacement(table))  # an arch that cannot stand: du 0
     failed = table[table["status"] == "failed"]
     reasons = "; ".join(f"{row.folder}: {row.reason}" for row in failed.itertuples())
     return (
