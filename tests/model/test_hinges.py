@@ -1,8 +1,9 @@
 """Hinge detection at one state, on constructed joint openings."""
 
 import numpy as np
+import pytest
 
-from yadearch.model.hinges import hinge_rotation, hinges_at, mirror_hinge_labels, same_hinges
+from yadearch.model.hinges import hinge_rotation, hinge_zones, hinges_at, mirror_hinge_labels, same_hinges
 
 T = 0.024
 
@@ -51,3 +52,13 @@ def test_mirror_labels_face_each_other_across_the_crown_and_keep_their_pivot_sid
     # 55 voussoirs: interfaces 1..56; the keystone's joints 28 and 29 face each other
     assert mirror_hinge_labels(["1E", "9I", "28E", "47I"], 56) == ["10I", "29E", "48I", "56E"]
     assert mirror_hinge_labels(mirror_hinge_labels(["8I", "28E", "46I"], 56), 56) == ["8I", "28E", "46I"]
+
+
+def test_a_hinge_spread_over_many_joints_counts_by_its_summed_turn():
+    """A soft ring's fourth hinge: twenty joints each turning 0.012 of the crown's turn (0.24 in all)
+    are one hinge, though none alone reaches 0.025; a lone joint's 0.01 is not."""
+    turn = np.array([-0.35, 0.0, 1.0, 0.0, -0.7, 0.0, *[0.012] * 20, 0.0, -0.01])
+    hinges = hinge_zones(turn, 0.025)
+    assert [h.side for h in hinges] == ["E", "I", "E", "I"]
+    assert hinges[-1].rotation == pytest.approx(0.24) and hinges[0].interface == 1
+    assert [h.label for h in hinges_at(turn, 0.025)] == ["1E", "3I", "5E"]  # peaks alone miss it

@@ -49,26 +49,50 @@ def hinges_at(rotation: np.ndarray, threshold: float) -> list[Hinge]:
     """Hinges, left to right: runs of adjacent joints whose |rotation| exceeds `threshold` (rad)
     with the same sign, each reported at its peak; the hinge spans the contiguous joints around the
     peak that rotate at least SPREAD_FRACTION of it (the paper's "29-30-31-32")."""
-    sides = [None if abs(r) <= threshold else ("I" if r > 0 else "E") for r in rotation]
-    hinges: list[Hinge] = []
-    k = 0
+    return [_spread_hinge(rotation, first, last, None) for first, last in _same_sign_runs(rotation, threshold)]
+
+
+def hinge_zones(turn: np.ndarray, fraction: float) -> list[Hinge]:
+    """The hinges of a motion as zones, left to right: runs of adjacent joints turning the same way,
+    each turning the segments either side of it by the run's summed turn, kept where that sum is at
+    least `fraction` of the largest run's (a soft ring's hinge spreads over joints that each turn a
+    little); each reported at its peak with its spread, as `hinges_at` does, its rotation the sum."""
+    runs = [(first, last, float(np.sum(turn[first : last + 1]))) for first, last in _same_sign_runs(turn, 0.0)]
+    largest = max((abs(total) for _, _, total in runs), default=0.0)
+    return [
+        _spread_hinge(turn, a, b, total) for a, b, total in runs if largest > 0.0 and abs(total) >= fraction * largest
+    ]
+
+
+def _same_sign_runs(rotation: np.ndarray, threshold: float) -> list[tuple[int, int]]:
+    """The first and last index (0-based) of each run of adjacent joints whose |rotation| exceeds
+    `threshold` with the same sign."""
+    sides = [None if abs(r) <= threshold else r > 0 for r in rotation]
+    runs, k = [], 0
     while k < len(sides):
-        side = sides[k]
-        if side is None:
+        if sides[k] is None:
             k += 1
             continue
         end = k
-        while end + 1 < len(sides) and sides[end + 1] == side:
+        while end + 1 < len(sides) and sides[end + 1] == sides[k]:
             end += 1
-        peak = max(range(k, end + 1), key=lambda m: abs(rotation[m]))
-        first, last = peak, peak
-        while first > k and abs(rotation[first - 1]) >= SPREAD_FRACTION * abs(rotation[peak]):
-            first -= 1
-        while last < end and abs(rotation[last + 1]) >= SPREAD_FRACTION * abs(rotation[peak]):
-            last += 1
-        hinges.append(Hinge(tuple(range(first + 1, last + 2)), peak + 1, side, float(rotation[peak])))
+        runs.append((k, end))
         k = end + 1
-    return hinges
+    return runs
+
+
+def _spread_hinge(rotation: np.ndarray, k: int, end: int, total: float | None) -> Hinge:
+    """The hinge of the run k..end at its peak, spanning the joints around the peak that rotate at
+    least SPREAD_FRACTION of it; its rotation the peak's, or `total` where given."""
+    peak = max(range(k, end + 1), key=lambda m: abs(rotation[m]))
+    first, last = peak, peak
+    while first > k and abs(rotation[first - 1]) >= SPREAD_FRACTION * abs(rotation[peak]):
+        first -= 1
+    while last < end and abs(rotation[last + 1]) >= SPREAD_FRACTION * abs(rotation[peak]):
+        last += 1
+    side = "I" if rotation[peak] > 0 else "E"
+    value = float(rotation[peak]) if total is None else total
+    return Hinge(tuple(range(first + 1, last + 2)), peak + 1, side, value)
 
 
 def same_hinges(a: list[dict], b: list[dict]) -> bool:

@@ -9,7 +9,7 @@ from enum import StrEnum
 
 import numpy as np
 
-from yadearch.model.hinges import Hinge, hinges_at
+from yadearch.model.hinges import Hinge, hinge_zones, hinges_at
 from yadearch.model.joint_tangent import BLOCK_DOFS
 from yadearch.model.joints import joint_states, rotate
 from yadearch.model.passive_fill import BLOCK, spring_state
@@ -17,8 +17,9 @@ from yadearch.solve import banded
 from yadearch.solve.statics import StaticArch
 
 MODE_PROBE = 1e-6  # the mode is applied at this largest block displacement (m): linear, clear of round-off
-# A joint turning at least this fraction of the mode's largest turn is a hinge: over the atlas's falls
-# the count of hinges holds between 0.02 and 0.03 and a tenth dropped the springings' turns (docs/atlas.md).
+# A joint turning at least this fraction of the largest turn is a hinge of the motion, and so is a run of
+# joints turning one way by this fraction of the largest run's summed turn: a tenth dropped the
+# springings' smaller turns (docs/atlas.md, "The collapse's kind").
 MODE_HINGE_FRACTION = 0.025
 MECHANISM_HINGES = 4  # a rigid arch becomes a mechanism with four hinges (or three and a sliding joint)
 OPEN_GAP_FRACTION = 1e-4  # a joint whose faces part by this x its length already pivots on its closed end
@@ -57,8 +58,7 @@ def fold_mode(
     """The collapse mode at the last stable state `u` (the fill's `springs` as it holds them): the
     softest mode of `stiffness` (band storage, free dofs), or, given the state the collapse ran away to
     (`failed`), the motion towards it (the same mode carried to a finite amplitude; a stiff arch's
-    softest linear mode can be one joint's own); which joints turn (MODE_HINGE_FRACTION of the largest
-    turn) and whether it slides."""
+    softest linear mode can be one joint's own); its hinges (`motion_hinges`) and whether it slides."""
     if failed is not None:
         mode = (failed - u)[arch.free_dofs]  # the way the arch ran away: the loads' work released
     else:
@@ -91,9 +91,9 @@ def _fill_holds(arch: StaticArch, u: np.ndarray, mode: np.ndarray, springs: np.n
 
 
 def motion_hinges(arch: StaticArch, u: np.ndarray, mode: np.ndarray) -> tuple[tuple[Hinge, ...], bool]:
-    """The joints that turn when the free blocks at `u` move along `mode` (free dofs; MODE_HINGE_FRACTION
-    of the largest turn, probed at MODE_PROBE), and whether the motion slides the joints more than it
-    opens them: a collapse's hinges, or those of a branch's last step."""
+    """The hinges the free blocks at `u` turn moving along `mode` (free dofs, probed at MODE_PROBE;
+    `_hinges`), and whether the motion slides the joints more than it opens them: a collapse's hinges,
+    or those of a branch's last step."""
     moved = u.copy()
     translations = mode.reshape(-1, BLOCK_DOFS)[:, 0:2]
     moved[arch.free_dofs] += MODE_PROBE / float(np.hypot(*translations.T).max() or 1.0) * mode
@@ -103,8 +103,17 @@ def motion_hinges(arch: StaticArch, u: np.ndarray, mode: np.ndarray) -> tuple[tu
     parted = np.abs(open_now) > OPEN_GAP_FRACTION * arch.table.length
     turn = np.where(parted, np.abs(turn) * np.sign(open_now), turn)
     largest = float(np.abs(turn).max())
-    hinges = tuple(hinges_at(turn / largest, MODE_HINGE_FRACTION)) if largest > 0.0 else ()
+    hinges = _hinges(turn / largest) if largest > 0.0 else ()
     return hinges, float(np.abs(slide).max()) > float(np.abs(opening).max())
+
+
+def _hinges(turn: np.ndarray) -> tuple[Hinge, ...]:
+    """The joints whose turn peaks at MODE_HINGE_FRACTION of the largest (`hinges_at`), or, where they
+    are fewer, the runs of joints turning one way by MODE_HINGE_FRACTION of the largest run's summed
+    turn (`hinge_zones`): a hinge spread over many soft joints, each turning a little, is one."""
+    peaks = hinges_at(turn, MODE_HINGE_FRACTION)
+    zones = hinge_zones(turn, MODE_HINGE_FRACTION)
+    return tuple(zones if len(zones) > len(peaks) else peaks)
 
 
 def _joint_motion(arch: StaticArch, u: np.ndarray, moved: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
