@@ -59,9 +59,7 @@ def hinge_zones(turn: np.ndarray, fraction: float) -> list[Hinge]:
     little); each reported at its peak with its spread, as `hinges_at` does, its rotation the sum."""
     runs = [(first, last, float(np.sum(turn[first : last + 1]))) for first, last in _same_sign_runs(turn, 0.0)]
     largest = max((abs(total) for _, _, total in runs), default=0.0)
-    return [
-        _spread_hinge(turn, a, b, total) for a, b, total in runs if largest > 0.0 and abs(total) >= fraction * largest
-    ]
+    return [_spread_hinge(turn, a, b, total) for a, b, total in runs if abs(total) >= fraction * largest]
 
 
 def _same_sign_runs(rotation: np.ndarray, threshold: float) -> list[tuple[int, int]]:
