@@ -3,7 +3,15 @@
 import numpy as np
 import pytest
 
-from yadearch.model.hinges import hinge_rotation, hinge_zones, hinges_at, mirror_hinge_labels, same_hinges
+from yadearch.model.hinges import (
+    HINGE_CHANGES,
+    hinge_change,
+    hinge_rotation,
+    hinge_zones,
+    hinges_at,
+    mirror_hinge_labels,
+    same_hinges,
+)
 
 T = 0.024
 
@@ -62,3 +70,18 @@ def test_a_hinge_spread_over_many_joints_counts_by_its_summed_turn():
     assert [h.side for h in hinges] == ["E", "I", "E", "I"]
     assert hinges[-1].rotation == pytest.approx(0.24) and hinges[0].interface == 1
     assert [h.label for h in hinges_at(turn, 0.025)] == ["1E", "3I", "5E"]  # peaks alone miss it
+
+
+def test_hinge_change_tells_a_mirror_tie_from_a_neighbour_and_another_mechanism():
+    """The semicircle closing at kn 5.2 (docs/atlas.md): 1E 12I 27E 44I by default and its mirror image
+    13I 30E 45I 56E with the increments doubled are one answer of a symmetric problem; a hinge moved a
+    joint, a fifth hinge and another linkage are not."""
+    same, mirror, neighbour, count, other = HINGE_CHANGES
+    default = "1E 12I 27E 44I"
+    assert hinge_change(default, default, 56) == same
+    assert hinge_change(default, "13I 30E 45I 56E", 56) == mirror
+    assert hinge_change(default, "1E 13I 27E 44I", 56) == neighbour
+    assert hinge_change(default, "13I 30E 46I 56E", 56) == neighbour  # the mirror image, a hinge a joint on
+    assert hinge_change(default, "1E 12I 27E 44I 56E", 56) == count
+    assert hinge_change(default, "1E 20I 35E 56E", 56) == other
+    assert hinge_change(default, "1E 12E 27E 44I", 56) == other  # a pivot on the other side

@@ -74,6 +74,24 @@ def test_a_collapse_of_another_kind_is_named_by_its_variant_and_counted_by_setti
     assert "collapse kind" not in invariance_markdown(invariance_table(results(du, {BASE: 60.0}, {})))
 
 
+def test_other_hinges_are_named_by_their_variant_and_counted_by_their_largest_change():
+    """A mirror image of the default's mechanism (a symmetric problem's tie) is told apart from a hinge
+    a joint away and from another mechanism; a variant that stands is not compared."""
+    du = {BASE: 100.0, "bracket_x2": 100.1, "increments_x2": 100.0, "runaway_x2": 100.0, "runaway_x0.5": math.nan}
+    hinges = {BASE: "1E 12I 27E 44I", "bracket_x2": "13I 30E 45I 56E", "increments_x2": "1E 13I 27E 44I"}
+    table = results(du, {BASE: 60.0}, {"runaway_x0.5": "stands"})
+    table["hinges"] = [hinges.get(v, "1E 12I 27E 44I") for v in du]
+    table["n_voussoirs"] = 55
+    row = invariance_table(table).iloc[0]
+    assert row["hinges_changed_by"] == "bracket_x2 (the mirror image) increments_x2 (a joint away)"
+    text = invariance_markdown(invariance_table(table))
+    assert (
+        "- hinges at collapse changed by a variant: 1 of 1; at most to 0 the mirror image, 1 a joint away, "
+        "0 another count, 0 another mechanism (`hinges_changed_by`)." in text
+    )
+    assert "hinges at collapse" not in invariance_markdown(invariance_table(results(du, {BASE: 60.0}, {})))
+
+
 def test_refined_increments_are_kept_apart_from_the_spread_and_compared_with_the_finest():
     du = {BASE: 100.0, "bracket_x2": 100.2, "increments_x0.25": 90.0, "increments_x0.125": 90.5}
     first = {BASE: 60.0, "increments_x0.25": 50.0, "increments_x0.125": 50.2}

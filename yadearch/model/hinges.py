@@ -115,6 +115,31 @@ def mirror_hinge_labels(labels: list[str] | tuple[str, ...], last_interface: int
     return [f"{interface}{side}" for interface, side in sorted(mirrored)]
 
 
+HINGE_CHANGES = ("the same", "the mirror image", "a joint away", "another count", "another mechanism")
+# how one run's hinges differ from another's, from the least change to the most (`hinge_change`)
+
+
+def hinge_change(reference: str, other: str, last_interface: int) -> str:
+    """How `other`'s hinges ("1E 12I 28E 56E") differ from `reference`'s, one of HINGE_CHANGES: the
+    same; the mirror image (a symmetric problem's tie, which the path's increments decide); each hinge
+    at most a joint away on its side (of the hinges or of their mirror image); another count; another
+    mechanism."""
+    ours, theirs = reference.split(), other.split()
+    mirrored = mirror_hinge_labels(theirs, last_interface)
+    if ours == theirs:
+        return HINGE_CHANGES[0]
+    if ours == mirrored:
+        return HINGE_CHANGES[1]
+    if _within_a_joint(ours, theirs) or _within_a_joint(ours, mirrored):
+        return HINGE_CHANGES[2]
+    return HINGE_CHANGES[3] if len(ours) != len(theirs) else HINGE_CHANGES[4]
+
+
+def _within_a_joint(a: list[str], b: list[str]) -> bool:
+    """As many hinges, left to right on the same sides, each at most one interface from its partner."""
+    return len(a) == len(b) and all(x[-1] == y[-1] and abs(int(x[:-1]) - int(y[:-1])) <= 1 for x, y in zip(a, b))
+
+
 PAPER_LABELS = ("A", "B", "C", "D")  # the paper's positional hinge labels, assigned by `paper_labels`
 
 

@@ -15,6 +15,7 @@ import pandas as pd
 
 from yadearch.case.config import ArchCase
 from yadearch.markdown import markdown_table
+from yadearch.model.hinges import HINGE_CHANGES, hinge_change
 from yadearch.studies.atlas.grid import geometries
 from yadearch.studies.campaigns.grid import RUN_COLUMN
 
@@ -31,6 +32,7 @@ TOLERANCE = 0.01  # the standard: a result that moves by more than 1 % is not a 
 BASE = "base"
 INVARIANCE_COMMAND = ".venv/bin/python scripts/atlas.py --invariance"
 KIND = "collapse_kind"  # the collapse's kind (four-hinge mechanism, snap-through, ...) where the results have it
+HINGES = "hinges"  # the hinges at collapse ("1E 12I 28E 56E") where the results have them
 
 
 def variants(base: ArchCase) -> dict[str, dict[str, float]]:
@@ -92,6 +94,8 @@ def invariance_table(results: pd.DataFrame) -> pd.DataFrame:
         row["outcome_changed_by"] = " ".join(others.loc[others["outcome"] != base["outcome"], "variant"])
         if KIND in group:
             row["kind_changed_by"] = _kind_changed_by(others, base)
+        if HINGES in group:
+            row["hinges_changed_by"] = _hinges_changed_by(others, base)
         row.update(_refinement(group, base))
         refinements = group[group["variant"].isin(list(map(refined, REFINED)))]
         row["outcome_refined_by"] = " ".join(refinements.loc[refinements["outcome"] != base["outcome"], "variant"])
@@ -106,6 +110,20 @@ def _kind_changed_by(others: pd.DataFrame, base: pd.Series) -> str:
         return ""
     collapsed = others[others["outcome"] == "collapse"]
     return " ".join(collapsed.loc[collapsed[KIND].fillna("") != (base[KIND] or ""), "variant"])
+
+
+def _hinges_changed_by(others: pd.DataFrame, base: pd.Series) -> str:
+    """The variants that collapse on other hinges than the default's, each with how they differ
+    ("bracket_x0.5 (the mirror image)"; `model.hinges.hinge_change`); "" where the default stands."""
+    if base["outcome"] != "collapse":
+        return ""
+    last_interface = int(base["n_voussoirs"]) + 1
+    collapsed = others[others["outcome"] == "collapse"]
+    changes = {
+        variant: hinge_change(str(base[HINGES]), str(hinges), last_interface)
+        for variant, hinges in zip(collapsed["variant"], collapsed[HINGES].fillna(""))
+    }
+    return " ".join(f"{variant} ({change})" for variant, change in changes.items() if change != HINGE_CHANGES[0])
 
 
 def held_within(arches: pd.DataFrame, spread: str) -> int:
@@ -147,6 +165,7 @@ def invariance_markdown(table: pd.DataFrame, command: str = INVARIANCE_COMMAND, 
         f"- du_first within {TOLERANCE * 100:g} %: {held['du_first_mm']} of {len(collapsed)}.",
         f"- outcome changed by a variant: {len(changed)} arches.",
         *_kind_lines(collapsed),
+        *_hinge_lines(collapsed),
         "",
     ]
     outside = collapsed[
@@ -192,6 +211,23 @@ def _kind_lines(collapsed: pd.DataFrame) -> list[str]:
     }
     counts = ", ".join(f"{setting} {count}" for setting, count in by_setting.items())
     return [f"- collapse kind changed by a variant: {int((changed != '').sum())} of {len(collapsed)} ({counts})."]
+
+
+def _hinge_lines(collapsed: pd.DataFrame) -> list[str]:
+    """How many collapses list other hinges under some variant, by their largest change (HINGE_CHANGES:
+    a mirror image is a symmetric problem's tie, a joint away the same linkage; none without them)."""
+    if "hinges_changed_by" not in collapsed:
+        return []
+    largest = (
+        collapsed["hinges_changed_by"]
+        .fillna("")
+        .map(lambda text: max((HINGE_CHANGES.index(c) for c in HINGE_CHANGES[1:] if f"({c})" in text), default=0))
+    )
+    counts = ", ".join(f"{int((largest == i).sum())} {change}" for i, change in enumerate(HINGE_CHANGES) if i)
+    return [
+        f"- hinges at collapse changed by a variant: {int((largest > 0).sum())} of {len(collapsed)}; at most to "
+        f"{counts} (`hinges_changed_by`)."
+    ]
 
 
 def _refinement_markdown(collapsed: pd.DataFrame) -> list[str]:
