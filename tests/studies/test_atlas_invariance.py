@@ -90,6 +90,8 @@ def test_other_hinges_are_named_by_their_variant_and_counted_by_their_largest_ch
         "0 another count, 0 another mechanism (`hinges_changed_by`)." in text
     )
     assert "hinges at collapse" not in invariance_markdown(invariance_table(results(du, {BASE: 60.0}, {})))
+    unnumbered = table.drop(columns="n_voussoirs")  # the fill's arches (loads.passive_arches) hold no count
+    assert "hinges at collapse" not in invariance_markdown(invariance_table(unnumbered))
 
 
 def test_refined_increments_are_kept_apart_from_the_spread_and_compared_with_the_finest():

@@ -32,7 +32,8 @@ TOLERANCE = 0.01  # the standard: a result that moves by more than 1 % is not a 
 BASE = "base"
 INVARIANCE_COMMAND = ".venv/bin/python scripts/atlas.py --invariance"
 KIND = "collapse_kind"  # the collapse's kind (four-hinge mechanism, snap-through, ...) where the results have it
-HINGES = "hinges"  # the hinges at collapse ("1E 12I 28E 56E") where the results have them
+HINGES = "hinges"  # the hinges at collapse ("1E 12I 28E 56E") where the results have them ...
+VOUSSOIRS = "n_voussoirs"  # ... and the voussoir count, which numbers the mirror image's joints
 
 
 def variants(base: ArchCase) -> dict[str, dict[str, float]]:
@@ -94,7 +95,7 @@ def invariance_table(results: pd.DataFrame) -> pd.DataFrame:
         row["outcome_changed_by"] = " ".join(others.loc[others["outcome"] != base["outcome"], "variant"])
         if KIND in group:
             row["kind_changed_by"] = _kind_changed_by(others, base)
-        if HINGES in group:
+        if HINGES in group and VOUSSOIRS in group:
             row["hinges_changed_by"] = _hinges_changed_by(others, base)
         row.update(_refinement(group, base))
         refinements = group[group["variant"].isin(list(map(refined, REFINED)))]
@@ -117,7 +118,7 @@ def _hinges_changed_by(others: pd.DataFrame, base: pd.Series) -> str:
     ("bracket_x0.5 (the mirror image)"; `model.hinges.hinge_change`); "" where the default stands."""
     if base["outcome"] != "collapse":
         return ""
-    last_interface = int(base["n_voussoirs"]) + 1
+    last_interface = int(base[VOUSSOIRS]) + 1
     collapsed = others[others["outcome"] == "collapse"]
     changes = {
         variant: hinge_change(str(base[HINGES]), str(hinges), last_interface)
