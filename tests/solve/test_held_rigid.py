@@ -58,7 +58,7 @@ def test_a_held_value_of_another_load_is_refused_and_a_held_load_is_not_mirrored
 
     from yadearch.case.plan import plan_run
     from yadearch.errors import CaseError
-    from yadearch.solve.limit import has_other_branch
+    from yadearch.solve.mirror import has_other_branch
 
     with pytest.raises(CaseError, match="loads.held_load_N = 2 holds a vertical load, but loads.live_load is 'none'"):
         plan_run(preset("set2").with_overrides({"held_load_N": 2.0, "numerics.engine": "static"}))

@@ -31,7 +31,7 @@ def _report_summary(out: Path) -> None:
     reach = f"no collapse up to {summary.loading.max_displacement_mm:g} mm" if summary.loading else "no collapse"
     click.echo(
         f"{summary.name}: du = {reach if du is None else f'{du:.2f} mm'}, "
-        f"hinges at collapse {summary.hinge_labels or '-'}, {summary.cost}, "
+        f"hinges at collapse {summary.hinge_text or '-'}, {summary.cost}, "
         f"{seconds_text(summary.wall_s)} -> {out}"
     )
     if summary.increments_check and summary.increments_check.get("resolved", True):  # else a warning says it

@@ -91,7 +91,7 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
     )
     du = summary.du_mm
     log(
-        f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} hinges={summary.hinge_labels or '-'} "
+        f"[{case.name}] done: du={'none' if du is None else f'{du:.2f} mm'} hinges={summary.hinge_text or '-'} "
         f"steps={summary.steps} wall={summary.wall_s:.0f} s -> {final_folder(out)}"
     )
     log_file.close()

@@ -14,6 +14,7 @@ from yadearch.model import units
 from yadearch.model.loads import UNITS
 from yadearch.results.summary import HingeRef, RunSummary, collapse_fields
 from yadearch.solve.collapse_mode import FoldMode, fold_mode
+from yadearch.solve.mirror import mirror_hinges
 from yadearch.solve.stages import Stage
 
 
@@ -49,6 +50,8 @@ def run_stages(runner: Runner) -> RunSummary:
         runner.log(f"[{name}] no collapse up to {units.to_mm(loading.settings.max_displacement):g} mm")
         runner.stage = Stage.END
         hinges = runner.recorder.joints(Stage.END)
+    refs = tuple(HingeRef.of(h) for h in hinges) if path.collapsed else ()
+    mode_hinges = mode.labels if mode is not None else None
     wall = time.time() - runner.wall0
     runner.progress("done", force=True)
     return RunSummary(
@@ -60,10 +63,12 @@ def run_stages(runner: Runner) -> RunSummary:
         friction=dict(runner.recorder.friction),
         relaxations=loading.relaxations,
         snaps=loading.snaps,
-        hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges) if path.collapsed else (),
+        hinges_at_collapse=refs,
         hinges_detail=[h.to_json() for h in hinges],
         collapse_kind=mode.kind if mode is not None else None,
-        collapse_mode_hinges=mode.labels if mode is not None else None,
+        collapse_mode_hinges=mode_hinges,
+        mirror_hinges=mirror_hinges(runner.case, runner.movement, [h.label for h in refs]),
+        mirror_mode_hinges=mirror_hinges(runner.case, runner.movement, mode_hinges),
         steps=runner.total_steps,
         steps_by_stage=dict(runner.steps_by_stage),
         dt_s=O.dt,

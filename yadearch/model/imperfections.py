@@ -88,6 +88,21 @@ class ImperfectionAmplitudes:
         """Every voussoir of its designed length and thickness."""
         return not any((self.voussoir_length_sd, self.voussoir_thickness, self.voussoir_thickness_sd))
 
+    @property
+    def mirror_symmetric(self) -> bool:
+        """Every defect its own mirror image about the crown's axis: nothing drawn at random, no face
+        tilted or bumped (a tilt turns the same way at every joint), both supports set alike."""
+        drawn = (
+            self.edge_size_sd,
+            self.face_angle_sd,
+            self.face_bump_sd,
+            self.voussoir_offset_sd,
+            self.voussoir_length_sd,
+            self.voussoir_thickness_sd,
+        )
+        tilted = self.face_angle or self.face_bump
+        return not (any(drawn) or tilted) and self.left_support_angle == self.right_support_angle
+
 
 @dataclass(frozen=True)
 class JointDefects:

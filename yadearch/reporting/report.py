@@ -127,7 +127,7 @@ def run_section(reported: ReportedRun) -> list[str]:
     run, analysis = reported.run, reported.analysis
     summary = run.summary
     du = summary.du_mm
-    hinges = summary.hinge_labels or "—"
+    hinges = summary.hinge_text or "—"
     lines = [
         f"## {reported.title or summary.name or run.path.name}",
         "",

@@ -42,6 +42,8 @@ OPTIONAL_KEYS = frozenset(
         "du_first_bracket_mm",
         "collapse_kind",
         "collapse_mode_hinges",
+        "mirror_hinges",
+        "mirror_mode_hinges",
         "du_components_mm",
         "du_rotation_mrad",
         "iterations",
@@ -143,6 +145,9 @@ class RunSummary:
     collapse_verdict: str | None = None
     collapse_kind: str | None = None  # solve.collapse_mode.CollapseKind: mechanism, snap-through, fill-held, sliding
     collapse_mode_hinges: list[str] | None = None  # joints that turn in the fold's softest mode
+    # where the problem is its own mirror image (solve.mirror): both lists mirrored, as much the answer
+    mirror_hinges: list[str] | None = None
+    mirror_mode_hinges: list[str] | None = None
     du_components_mm: tuple[float, float] | None = None
     du_rotation_mrad: float | None = None
     hinges_at_collapse: tuple[HingeRef, ...]
@@ -179,6 +184,12 @@ class RunSummary:
     def hinge_labels(self) -> str:
         """The hinges at collapse as "1E 12I 30E 56E" ("" if none)."""
         return " ".join(h.label for h in self.hinges_at_collapse)
+
+    @property
+    def hinge_text(self) -> str:
+        """The hinges at collapse with their mirror image where that is as much the answer ("" if none)."""
+        mirror = f" (or the mirror image {' '.join(self.mirror_hinges)})" if self.mirror_hinges else ""
+        return self.hinge_labels + mirror if self.hinge_labels else ""
 
     @property
     def hinge_rotations_mrad(self) -> dict[HingeRef, float | None]:

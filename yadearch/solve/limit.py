@@ -25,7 +25,6 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.held import HELD_SETTINGS, held_multiplier, unheld
-from yadearch.case.imperfect import amplitudes
 from yadearch.case.shape import MEASURED
 from yadearch.errors import ArgumentTypeError, CaseError, YadearchError
 from yadearch.model import units
@@ -33,32 +32,13 @@ from yadearch.model.hinges import mirror_hinge_labels
 from yadearch.solve.limit_lp import solve_statics
 from yadearch.solve.limit_result import LimitResult, interface_forces
 from yadearch.solve.march import March
+from yadearch.solve.mirror import has_other_branch, mirror_image
 from yadearch.solve.reseat import DEFAULT_RUNAWAY_THICKNESSES, penetrates
 from yadearch.solve.rigid import SIDES, LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, rigid_arch
 
 DEFAULT_STEP_MM = 0.5  # support step between equilibrium checks
 DEFAULT_TOLERANCE_MM = 1e-3  # width of the bisection bracket that locates a limit
-MIRRORED = {"right": "left", "left": "right"}  # the moving support of a case's mirror image
 HINGE_LABEL = re.compile(r"(\d+)([IE])")  # a hinge as the results name it: interface (1-based) and side
-
-
-def mirror_image(case: ArchCase) -> ArchCase:
-    """`case` with the other support moving the mirrored way: on a symmetric arch, the keystone's
-    tie broken toward its other joint (the other branch of the rigid march)."""
-    return case.with_overrides({"moving_support": MIRRORED[case.loading.moving_support]})
-
-
-def has_other_branch(case: ArchCase) -> bool:
-    """Whether the rigid march of `case` has a second branch, the keystone's tie broken toward its
-    other joint: an odd number of voussoirs without dimension errors (else there is no mirror image),
-    one support moving, and a movement that is not its own mirror image (it moves vertically or turns)."""
-    if not (case.geometry.n_voussoirs % 2 and case.loading.moving_support in MIRRORED):
-        return False
-    if case.geometry.shape == MEASURED:  # a surveyed arch is not its own mirror image
-        return False
-    if held_multiplier(case) > 0.0:  # a held live load is not mirrored with the movement
-        return False
-    return amplitudes(case).perfect_dimensions and not rigid_arch(case).movement.mirror_is_itself
 
 
 def stands(case: ArchCase) -> bool:

@@ -7,8 +7,9 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.model import units
-from yadearch.solve.limit import limit_analysis, mirror_image
+from yadearch.solve.limit import limit_analysis
 from yadearch.solve.limit_result import LimitResult
+from yadearch.solve.mirror import mirror_image
 from yadearch.solve.rigid import SIDES, LimitError, Pivot, Placement, at_rest, close_linkage, rigid_arch
 
 FLIP_X = np.array([-1.0, 1.0])

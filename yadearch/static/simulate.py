@@ -26,6 +26,7 @@ from yadearch.results.run_log import stamped_log
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSummary, collapse_fields, loading_info
 from yadearch.solve.limit import why_not_standing
+from yadearch.solve.mirror import mirror_hinges
 from yadearch.solve.path import PathStep, bracket_text
 from yadearch.solve.stages import Stage
 from yadearch.solve.static_path import StaticLoading
@@ -106,6 +107,8 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         records.add(collapse, label=Stage.COLLAPSE)
         hinges = records.hinges(collapse)
     mode = loading.fold_mode(path.upper) if path.collapsed else None
+    mode_hinges = mode.labels if mode is not None else None
+    collapse_labels = [HingeRef.of(h).label for h in hinges] if path.collapsed else []
     solver_wall = time.time() - solver_start
     check = None
     if num.increments_check == HALVED_INCREMENTS_CHECK:
@@ -128,7 +131,9 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         imperfections=arch.imperfections.summary() if arch.imperfections is not None else None,
         **collapse_fields(path, arch.movement, loading.first_loss),
         collapse_kind=mode.kind if mode is not None else None,
-        collapse_mode_hinges=mode.labels if mode is not None else None,
+        collapse_mode_hinges=mode_hinges,
+        mirror_hinges=mirror_hinges(case, arch.movement, collapse_labels),
+        mirror_mode_hinges=mirror_hinges(case, arch.movement, mode_hinges),
         increments=len(path.steps),
         equilibria=len(path.equilibria),
         hinges_last_equilibrium=[h.to_json() for h in hinges_last],
@@ -168,7 +173,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
     log(
         f"[{case.name}] done ({summary.outcome}): du={'none' if du is None else f'{du:.2f} mm'} "
         f"du_first={'none' if first is None else f'{first:.2f} mm'} "
-        f"hinges={summary.hinge_labels or '-'} iterations={loading.iterations} "
+        f"hinges={summary.hinge_text or '-'} iterations={loading.iterations} "
         f"wall={summary.wall_s:.2f} s" + (f" -> {final_folder(out)}" if out is not None else "")
     )
     return summary

@@ -14,8 +14,9 @@ from yadearch.model import units
 from yadearch.model.hinges import mirror_hinge_labels
 from yadearch.results.rundir import CASE_FILE, hinge_list, read_summary
 from yadearch.results.summary import RunSummary
-from yadearch.solve.limit import has_other_branch, limit_analysis, mirror_image
+from yadearch.solve.limit import limit_analysis
 from yadearch.solve.limit_result import LimitResult
+from yadearch.solve.mirror import has_other_branch, mirror_image
 from yadearch.studies.robustness import same_hinge_set
 
 HINGE_SHIFT = 1  # interfaces a DEM hinge may sit from the rigid one
