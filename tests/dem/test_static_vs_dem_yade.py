@@ -8,6 +8,7 @@ import pytest
 from conftest import needs_yade
 
 from yadearch.case.config import preset
+from yadearch.model.hinges import mirror_hinge_labels
 from yadearch.static.simulate import simulate_static
 
 pytestmark = [needs_yade, pytest.mark.yade]
@@ -65,3 +66,20 @@ def test_the_dem_read_at_static_equilibria_takes_the_static_paths_snap(tmp_path)
     assert dem.du_first_mm == pytest.approx(static.du_first_mm, rel=AGREEMENT)
     assert dem.du_mm == pytest.approx(static.du_mm, rel=AGREEMENT)
     assert static.hinge_labels == dem.hinge_labels
+
+
+def test_a_spreading_arch_names_its_mirror_mechanism_in_both_engines(tmp_path):
+    """Spreading is its own mirror image (solve/mirror.py): both engines name the mechanism they met
+    and its mirror, either of them the answer. Measured at kn 0.5: DEM / static 19.398 / 19.398 mm,
+    the mode on 1E 3I 6E 9I in both, its mirror 2I 5E 8I 10E (DEM 10 s)."""
+    from yadearch.dem.runner import Runner
+
+    case = preset("set2").with_overrides({**COARSE, "kn_N_per_mm3": 0.5, "support_direction_deg": 0.0})
+    dem = Runner(case, log=lambda line: None).run()
+    static = simulate_static(case.with_overrides({"numerics.engine": "static"}), tmp_path, log=lambda line: None)
+    assert dem.collapsed and static.collapsed
+    assert static.du_mm == pytest.approx(dem.du_mm, rel=AGREEMENT)
+    last_interface = case.geometry.n_voussoirs + 1
+    assert dem.mirror_hinges == mirror_hinge_labels(dem.hinge_labels.split(), last_interface)
+    assert dem.mirror_mode_hinges == mirror_hinge_labels(dem.collapse_mode_hinges, last_interface)
+    assert static.collapse_mode_hinges in (dem.collapse_mode_hinges, dem.mirror_mode_hinges)
