@@ -98,3 +98,23 @@ def test_a_snap_before_collapse_is_located_to_the_relative_bracket() -> None:
     low, high = found["du_first_bracket_mm"]
     assert found["outcome"] == Outcome.COLLAPSE and high < 0.6 * found["du_mm"]  # a snap survived first
     assert high - low <= RELATIVE_BRACKET * high < 0.1
+
+
+@pytest.mark.parametrize("ratio", [0.25, 1.0])
+def test_the_mechanism_at_collapse_does_not_move_with_the_runaway_bound(ratio: float) -> None:
+    """The thick segmental arch spreading at kn 5.2 (t/R 0.25; the atlas's
+    segmental-spreading-t75-kn5.2): read where the run's own bound stopped the fall, half the bound
+    read three hinges and a snap-through, the default four; read where the fall has moved a block
+    half the ring's thickness whatever the bound, the hinges at collapse, the mode and the kind are
+    the default's (`StaticLoading.collapse_fall`)."""
+    from yadearch.static.simulate import simulate_static
+
+    case = Geometry("segmental", "spreading", 0.25).row(5.2)
+    case.pop("run")
+    base = preset("set2").with_overrides({**case, "numerics.engine": "static", "numerics.increments_check": "none"})
+    default = simulate_static(base, None, log=lambda _: None)
+    other = simulate_static(base.with_overrides({"numerics.runaway_thickness_ratio": ratio}), None, log=lambda _: None)
+    assert other.du_mm == default.du_mm
+    assert other.collapse_kind == default.collapse_kind == "four-hinge mechanism"
+    assert other.collapse_mode_hinges == default.collapse_mode_hinges
+    assert other.hinge_labels == default.hinge_labels

@@ -16,6 +16,7 @@ from yadearch.dem.live_arch import JOINT_CONTACTS
 from yadearch.dem.scene import ArchScene, body_states
 from yadearch.model.joint_tangent import BLOCK_DOFS
 from yadearch.solve.newton import Equilibrium
+from yadearch.solve.prediction import tangent_prediction
 from yadearch.solve.stages import Verdict
 from yadearch.solve.static_path import StaticLoading
 
@@ -72,12 +73,12 @@ class StaticCheck:
     def support_slope(self, found: Equilibrium, delta: float, multiplier: float) -> np.ndarray | None:
         """How the voussoirs' centroids (n, 3) move per metre of the support's path from the stable
         equilibrium `found` at `delta` with the live load held at `multiplier` (the static engine's
-        prediction from one state, `StaticLoading.tangent_prediction`; x and y), None where its tangent
+        prediction from one state, `solve.prediction.tangent_prediction`; x and y), None where its tangent
         is singular."""
         shear = found.joints.forces.shear_force
         try:
-            ahead = self.loading.tangent_prediction(
-                found.u, delta, shear, found.springs, delta + SLOPE_STEP, held=multiplier
+            ahead = tangent_prediction(
+                self.loading, found.u, delta, shear, found.springs, delta + SLOPE_STEP, held=multiplier
             )
         except (np.linalg.LinAlgError, ValueError):
             return None

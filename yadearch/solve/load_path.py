@@ -280,4 +280,4 @@ def _go_on(loading: StaticLoading, parameter: PathParameter, settings: PathSetti
     """`loading`'s path goes on from its last accepted state, now at `lam` of the new `parameter`."""
     loading.parameter, loading.settings = parameter, settings
     loading.accepted = [replace(loading.accepted[-1], lam=lam)]
-    loading.failures, loading.snaps = {}, []
+    loading.failures, loading.falls, loading.readings, loading.snaps = {}, {}, {}, []

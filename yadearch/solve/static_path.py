@@ -13,6 +13,7 @@ increment unresolved, never collapsed.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
@@ -21,15 +22,16 @@ import numpy as np
 
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import runaway_length
+from yadearch.case.numerics_section import RUNAWAY_THICKNESS_RATIO
 from yadearch.case.support import path_end_mm
 from yadearch.model import units
 from yadearch.model.joint_law import JointForces
-from yadearch.solve import banded
 from yadearch.solve.collapse_mode import FoldMode, fold_mode
 from yadearch.solve.falls import fall
 from yadearch.solve.gravity_ramp import CONFIRMING_STEPS, GRAVITY_STEPS, ramps_to_stand
 from yadearch.solve.newton import Equilibrium, Solver, SolverSettings
 from yadearch.solve.path import PathResult, PathSettings, PathStep, extrapolate, first_snap, follow_path, path_settings
+from yadearch.solve.prediction import tangent_prediction
 from yadearch.solve.stages import Stage, Verdict
 from yadearch.solve.static_state import PathParameter, StaticState
 from yadearch.solve.statics import StaticArch, static_arch
@@ -59,6 +61,8 @@ class StaticLoading:
         self.solver = Solver(self.arch, self.solver_settings)
         self.accepted: list[StaticState] = []
         self.failures: dict[float, Equilibrium] = {}
+        self.falls: dict[float, tuple[list[StaticState], float]] = {}  # each failure's descent: history, where
+        self.readings: dict[float, Equilibrium] = {}  # each failure fallen the default bound (`collapse_fall`)
         self.snaps: list[dict] = []  # snaps survived on the accepted path: where, how far the blocks moved
         self.descents = 0  # descents made (Newton's continuation failed)
         self.retries = 0  # descents that found neither equilibrium nor runaway and went on
@@ -126,7 +130,7 @@ class StaticLoading:
             history, fold = self._locate_fold(history, ahead)
             landed = self._descend(history, fold[1])
             if landed.verdict != Verdict.STABLE:
-                self.failures[target] = landed
+                self.failures[target], self.falls[target] = landed, (history, fold[1])
                 return landed.verdict
             if landed.moved > self.snap_floor:
                 self._trial_snaps.append({"fold_mm": [1e3 * fold[0], 1e3 * fold[1]], "move_mm": 1e3 * landed.moved})
@@ -151,21 +155,23 @@ class StaticLoading:
                 low = middle
         return history, (low, high)
 
-    def _descend(self, history: list[StaticState], lam: float) -> Equilibrium:
+    def _descend(self, history: list[StaticState], lam: float, bound: float | None = None) -> Equilibrium:
         """The descent at support position `lam` from the state predicted there, going on while it falls
-        (`solve.falls.fall`), then again from the last state with only the support moved: a solver's
-        failure is retried before it is reported (Verdict.TIMEOUT), never read as collapse."""
+        (`solve.falls.fall`) to the runaway `bound` (the path's by default), then again from the last state
+        with only the support moved: a solver's failure is retried before it is reported (Verdict.TIMEOUT),
+        never read as collapse."""
         last = history[-1]
         shear = last.forces.shear_force
         start = self.predict(lam, history)
         multiplier = self.parameter.multiplier(lam)
         springs = last.springs
-        found = self._fall(start, last.u, shear, self.runaway, multiplier=multiplier, springs=springs)
+        bound = self.runaway if bound is None else bound
+        found = self._fall(start, last.u, shear, bound, multiplier=multiplier, springs=springs)
         self.descents += 1
         if found.verdict == Verdict.TIMEOUT:
             self.retries += 1
             found = self.solver.descend(
-                self.place(last.u, lam), last.u, shear, self.runaway, multiplier=multiplier, springs=springs
+                self.place(last.u, lam), last.u, shear, bound, multiplier=multiplier, springs=springs
             )
         return found
 
@@ -215,11 +221,26 @@ class StaticLoading:
         self.snaps = [s for s in self.snaps if units.mm(s["fold_mm"][1]) <= self.accepted[-1].lam]
 
     def fold_mode(self, upper: float) -> FoldMode:
-        """The collapse mode from the last accepted state towards the runaway at du's upper end
-        `upper`: the collapse's hinges and kind (`solve.collapse_mode`)."""
+        """The collapse mode from the last accepted state towards the collapse at du's upper end
+        `upper` (`collapse_fall`): the collapse's hinges and kind (`solve.collapse_mode`)."""
         state = self.accepted[-1]
         assert state.stiffness is not None  # every state is made from the solver's equilibrium
-        return fold_mode(self.arch, state.u, state.stiffness, self.failures[self._failure_at(upper)].u, state.springs)
+        return fold_mode(self.arch, state.u, state.stiffness, self.collapse_fall(upper).u, state.springs)
+
+    def collapse_fall(self, upper: float) -> Equilibrium:
+        """Where the failure at du's upper end `upper` has fallen a block the default runaway bound
+        (RUNAWAY_THICKNESS_RATIO ring thickness), whatever bound the path counts runaway by: the
+        mechanism is the arch's, not the bound's (docs/numerics.md). Its own fall where that bound is
+        the default, or where the fall to the default bound lands (a long snap the path's shorter bound
+        counted as runaway)."""
+        lam = self._failure_at(upper)
+        reading = RUNAWAY_THICKNESS_RATIO * self.arch.length
+        if math.isclose(self.runaway, reading, rel_tol=1e-12) or lam not in self.falls:
+            return self.failures[lam]
+        if lam not in self.readings:
+            probe = self._descend(*self.falls[lam], bound=reading)
+            self.readings[lam] = probe if probe.verdict == Verdict.RUNAWAY else self.failures[lam]
+        return self.readings[lam]
 
     def predict(self, target: float, history: list[StaticState]) -> np.ndarray:
         """Where the arch should be at `target`: a parabola (or a line) through `history`'s last states, or
@@ -229,33 +250,9 @@ class StaticLoading:
         if len(set(lams)) == len(lams) >= 2:
             return self.place(extrapolate(lams, [s.u for s in recent], target), target)
         try:
-            return self.tangent_prediction(last.u, last.lam, last.forces.shear_force, last.springs, target)
+            return tangent_prediction(self, last.u, last.lam, last.forces.shear_force, last.springs, target)
         except (np.linalg.LinAlgError, ValueError):
             return self.place(last.u, target)
-
-    def tangent_prediction(
-        self,
-        u: np.ndarray,
-        lam: float,
-        shear: np.ndarray,
-        springs: np.ndarray | None,
-        target: float,
-        held: float | None = None,
-    ) -> np.ndarray:
-        """Where the free blocks' whole tangent (the joints, the loads' turning arms, the fill's springs) at
-        the equilibrium `u` (at `lam`, its joints' `shear`, the fill's `springs`) puts the arch at `target`,
-        with the path's live load or one `held` (LinAlgError or ValueError where the tangent is singular)."""
-        moved = self.place(u, target)
-        multiplier = self.parameter.multiplier(lam) if held is None else held
-        joints, _, tangent = self.solver.state(u, u, shear, multiplier=multiplier, springs=springs)
-        free = self.arch.free_dofs
-        driven = np.setdiff1d(np.arange(len(moved)), free)
-        load = -self.arch.stiffness(joints)[np.ix_(free, driven)] @ (moved - u)[driven]
-        more = self.parameter.multiplier(target) - multiplier if held is None else 0.0
-        if more:
-            load = load + more * self.arch.live_forces(u)
-        moved[free] += banded.solve(tangent, load)
-        return moved
 
     def place(self, u: np.ndarray, lam: float) -> np.ndarray:
         """`u` with the supports where the path's parameter `lam` puts them."""
@@ -267,10 +264,10 @@ class StaticLoading:
         return follow_path(self, self.settings, on_step=on_step)
 
     def collapse_state(self, upper: float) -> StaticState:
-        """The mechanism at collapse: the state of the failure at du's upper bracket end, where a
-        block has run away by the runaway bound."""
+        """The mechanism at collapse: the state of the failure at du's upper bracket end, fallen a
+        block the default runaway bound (`collapse_fall`)."""
         lam = self._failure_at(upper)
-        end = self.failures[lam]
+        end = self.collapse_fall(upper)
         base = self.accepted[-1]
         return self._state(Stage.COLLAPSE, lam, end, base.slip + end.joints.forces.plastic_slip, end.joints.forces)
 
