@@ -125,3 +125,31 @@ def _out_of_order(corners: list) -> list:
     a_in, b_in, b_out, a_out = np.asarray(corners)
     beyond = (b_out + a_out) / 2.0 + (b_out + a_out - a_in - b_in) / 2.0
     return [a_in.tolist(), beyond.tolist(), b_in.tolist(), b_out.tolist(), a_out.tolist()]
+
+
+def test_a_survey_file_is_read_as_a_spreadsheet_writes_it_and_its_sizes_stay_surveyed(tmp_path, capsys):
+    """Found in a user trial: a non-numeric or empty cell is named by row and column, not a traceback;
+    a header with spaces after its commas is read; a file of one column hints at its separator; the
+    case `survey` writes leaves the increments check to `run` (on); a surveyed arch's thickness and
+    joints' orientation, set by its survey, are refused when changed by hand."""
+    base = preset("set2").with_overrides(SMALL)
+    joints = surveyed_joints(base)
+    bad = joints.astype(object)
+    bad.iloc[1, 0] = "abc"
+    with pytest.raises(CaseError, match="row 3, column x_intrados_mm: 'abc' is not a number"):
+        measured_case(bad)
+    spaced = tmp_path / "spaced.csv"
+    spaced.write_text(joints.to_csv(index=False).replace(",", ", "))
+    assert measured_case(spaced, base=base).geometry.n_voussoirs == 15
+    semicolons = tmp_path / "semicolons.csv"
+    semicolons.write_text(joints.to_csv(index=False, sep=";"))
+    with pytest.raises(CaseError, match="is the file separated by commas"):
+        measured_case(semicolons)
+    out = tmp_path / "arch.toml"
+    assert main(["survey", str(spaced), "--preset", "set2", "--out", str(out)]) == 0
+    assert "increments_check" not in out.read_text()
+    case = measured_case(spaced, base=base)
+    for key in ("geometry.thickness_mm", "geometry.joint_orientation"):
+        value = 100.0 if key.endswith("_mm") else "vertical"
+        with pytest.raises(CaseError, match=f"{key} of a surveyed arch is .*survey it again"):
+            case.with_overrides({key: value})

@@ -144,6 +144,18 @@ def test_explicit_table(tmp_path):
         read_table(table)
 
 
+def test_a_table_names_a_movement_and_a_material_as_set_does(tmp_path):
+    """Found in a user trial: `--set movement=spreading` worked where a `movement` column was an unknown
+    parameter; a named movement (and a named material) stands for its parameters in a table too."""
+    table = tmp_path / "runs.csv"
+    table.write_text("run,movement,material\nspread,spreading,\nclose,closing,\n")
+    specs = plan(BASE, read_table(table), tmp_path / "c")
+    assert [s.case.loading.support_direction_deg for s in specs] == [0.0, 180.0]
+    table.write_text("run,movement\nx,sideways\n")
+    with pytest.raises(CaseError, match="movement must be one of .*got 'sideways'"):
+        plan(BASE, read_table(table), tmp_path / "d")
+
+
 def test_a_table_naming_two_runs_alike_is_refused_naming_them(tmp_path):
     rows = [{"run": "a", "kn_N_per_mm3": 1}, {"run": "b", "kn_N_per_mm3": 2}, {"run": "a", "kn_N_per_mm3": 3}]
     with pytest.raises(YadearchError, match=r"duplicate runs \['a'\]"):

@@ -45,11 +45,14 @@ def measured_case(
     table, faces = _read(joints)
     missing = [c for c in JOINT_COLUMNS if c not in table.columns]
     if missing:
+        found = ", ".join(map(str, table.columns))
+        one = " (one column: is the file separated by commas?)" if len(table.columns) == 1 else ""
         raise CaseError(
             f"joints: the table needs the columns {', '.join(JOINT_COLUMNS)} (a row a joint) or "
-            f"{', '.join(BLOCK_COLUMNS)} (a row a block's corner); missing {', '.join(missing)}"
+            f"{', '.join(BLOCK_COLUMNS)} (a row a block's corner); missing {', '.join(missing)}, found "
+            f"{found}{one}"
         )
-    rows = table[list(JOINT_COLUMNS)].to_numpy(float)
+    rows = numbers(table, JOINT_COLUMNS)
     if len(rows) < MIN_MEASURED_JOINTS:
         raise CaseError(
             f"joints: a surveyed arch needs {MIN_MEASURED_JOINTS} joints at least (two voussoirs), got {len(rows)}"
@@ -93,11 +96,25 @@ def _read(joints: str | Path | pd.DataFrame | dict[str, Any]) -> tuple[pd.DataFr
             if not isinstance(data, dict):
                 raise ValueError("a JSON survey is an object with 'blocks'")
             return _read(data)
-        return _read(pd.read_csv(joints))
+        table = pd.read_csv(joints, skipinitialspace=True)
+        return _read(table.rename(columns=lambda column: str(column).strip()))
     except CaseError:
         raise
     except (OSError, ValueError, pd.errors.ParserError) as exc:
         raise CaseError(f"joints: cannot read {joints}: {exc}") from None
+
+
+def numbers(table: pd.DataFrame, columns: tuple[str, ...]) -> np.ndarray:
+    """`table`'s `columns` as floats; CaseError in one line naming the first cell that is not a number
+    (its row as a spreadsheet numbers it, the header being row 1)."""
+    values = table[list(columns)].apply(pd.to_numeric, errors="coerce")
+    bad = values.isna()
+    if bad.to_numpy().any():
+        row, column = np.argwhere(bad.to_numpy())[0]
+        value = table[columns[column]].iloc[row]
+        what = "is empty" if pd.isna(value) else f"{value!r} is not a number (mm)"
+        raise CaseError(f"joints: row {row + 2}, column {columns[column]}: {what}")
+    return values.to_numpy(float)
 
 
 def blocks_from_table(table: pd.DataFrame) -> dict[str, Any]:
@@ -106,7 +123,7 @@ def blocks_from_table(table: pd.DataFrame) -> dict[str, Any]:
     each block named by its label; CaseError for a block marked twice."""
     blocks = []
     for label, rows in table.groupby("block", sort=False):
-        block: dict[str, Any] = {"name": str(label), "corners": rows[["x_mm", "y_mm"]].to_numpy(float).tolist()}
+        block: dict[str, Any] = {"name": str(label), "corners": numbers(rows, ("x_mm", "y_mm")).tolist()}
         marks = set(rows[SUPPORT_COLUMN].dropna().astype(str).str.strip()) - {""} if SUPPORT_COLUMN in rows else set()
         if len(marks) > 1:
             raise CaseError(f"survey: block {label} is marked {' and '.join(sorted(marks))}; mark one support a block")

@@ -39,6 +39,10 @@ SIZES = {  # the [geometry] sizes each shape reads; thickness, depth, voussoirs 
     "three_centred": ("span_mm", "rise_mm"),
     MEASURED: ("joint_points_mm", *FACE_POINTS),
 }
+SURVEYED = {  # a surveyed arch's [geometry] values its survey sets, and how
+    "thickness_mm": "its joints' mean length",
+    "joint_orientation": "where its surveyed joints lie",
+}
 MIN_JOINT_ANGLE_DEG = 20.0  # a joint nearer the intrados tangent makes a sliver voussoir (joint > 2.9 t)
 
 INTRADOS: dict[str, Callable[[GeometryConfig], Intrados]] = {
@@ -173,7 +177,16 @@ def face_points(g: GeometryConfig) -> dict[int, FacePoints]:
 
 def refuse_unread_sizes(shape: str, given: set[str]) -> None:
     """CaseError in one line for a size `given` (a [geometry] key changed by hand) that `shape` does not
-    read: `span_mm` on a segmental arch built the paper's arch unchanged, silently."""
+    read: `span_mm` on a segmental arch built the paper's arch unchanged, silently; on a surveyed arch
+    (not being surveyed: its shape unchanged) the thickness and the joints' orientation its survey
+    sets (the thickness, the joints' mean length, scales its runaway bound and snap floor)."""
+    if shape == MEASURED and "shape" not in given:
+        surveyed = sorted(given & set(SURVEYED))
+        if surveyed:
+            raise CaseError(
+                f"geometry.{surveyed[0]} of a surveyed arch is {SURVEYED[surveyed[0]]}; survey it again "
+                "(`yadearch survey`) to change it, or drop it"
+            )
     reads = SIZES.get(shape, ())
     for name in sorted(given):
         if any(name in sizes for sizes in SIZES.values()) and name not in reads:

@@ -56,3 +56,14 @@ def _states_the_check(case_file: str | None, settings: tuple[str, ...]) -> bool:
     if case_file is None:
         return False
     return "increments_check" in tomllib.loads(Path(case_file).read_text()).get("numerics", {})
+
+
+def case_file_text(case: ArchCase, case_file: str | None, settings: tuple[str, ...]) -> str:
+    """`case` as the TOML a command writes for a later `run --case`: without numerics.increments_check
+    unless the case file or a --set it came from names it, so that `run` checks by default."""
+    import tomli_w
+
+    data = case.to_dict()
+    if not _states_the_check(case_file, settings):
+        data["numerics"].pop("increments_check", None)
+    return tomli_w.dumps(data)

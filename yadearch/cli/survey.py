@@ -9,6 +9,7 @@ import click
 from yadearch import api
 from yadearch.atomic import write_text_atomically
 from yadearch.case.names import FILE, output_path
+from yadearch.cli.check import case_file_text
 from yadearch.cli.options import case_options, resolve_case
 from yadearch.cli.param_types import OUT_FILE, argument_type
 
@@ -36,7 +37,7 @@ def survey(
     joints, loading and numerics of --preset/--case/--set; run it with `yadearch run --case OUT`."""
     case = api.measured_case(joints, base=resolve_case(preset_name, case_file, kn, settings), name=name)
     path = output_path(out, "--out", FILE)
-    write_text_atomically(path, case.to_toml())
+    write_text_atomically(path, case_file_text(case, case_file, settings))
     geometry = case.geometry
     faces = {int(row[0]) for row in geometry.intrados_points_mm + geometry.extrados_points_mm}
     polygons = f", {len(faces)} of more than four corners" if faces else ""
@@ -67,7 +68,7 @@ def piers(
     tall below its springing, --width-mm wide at its base; run it with `yadearch run --case OUT`."""
     case = api.on_piers(resolve_case(preset_name, case_file, kn, settings), height_mm, width_mm, name=name)
     path = output_path(out, "--out", FILE)
-    write_text_atomically(path, case.to_toml())
+    write_text_atomically(path, case_file_text(case, case_file, settings))
     click.echo(
         f"{case.name}: {case.geometry.n_voussoirs - 2} voussoirs on two piers {height_mm:g} x {width_mm:g} mm -> {path}"
     )

@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 
 from yadearch.case.bounds import MAX_RUNS
+from yadearch.case.materials import MATERIAL_KEY, PRESET_FIELD
 from yadearch.case.sections import parameter_docs
 from yadearch.errors import ArgumentTypeError, CampaignError, CaseError, YadearchError
 
@@ -28,6 +29,9 @@ MAX_TAG = 64
 MAX_RUNS_VARIABLE = "YADEARCH_MAX_RUNS"
 _UNIT_SUFFIXES = ("_N_per_mm3", "_mm_per_s", "_g_per_cm3", "_m_per_s2", "_mm", "_deg", "_MPa", "_s")
 _BARE_NAMES = {q.split(".")[-1]: q for q, _, _ in parameter_docs()}
+
+MOVEMENT_KEY = "movement"  # a named support movement (case.support.MOVEMENT_PRESETS) as one column
+NAMED_KEYS = (MOVEMENT_KEY, MATERIAL_KEY)  # columns that stand for several parameters
 
 
 def check_campaign_size(runs: int) -> None:
@@ -81,10 +85,24 @@ def parse_values(spec: str) -> list[Any]:
     return [round_sig(v) for v in values]
 
 
+def named_overrides(overrides: dict[str, Any]) -> dict[str, Any]:
+    """`overrides` with a named movement (`movement`: its [loading] parameters) and a named material
+    (`material`: material.preset) spelt out, as `--set movement=NAME` and `--set material=NAME` read."""
+    from yadearch.case.support import movement_overrides
+
+    spelt = {k: v for k, v in overrides.items() if k not in NAMED_KEYS}
+    if MATERIAL_KEY in overrides:
+        spelt[f"{MATERIAL_KEY}.{PRESET_FIELD}"] = str(overrides[MATERIAL_KEY]).strip()
+    if MOVEMENT_KEY in overrides:
+        spelt.update(movement_overrides(str(overrides[MOVEMENT_KEY]).strip()))
+    return spelt
+
+
 def check_parameter(key: str) -> None:
-    """Raise CaseError unless `key` names a case parameter (`section.key` or a bare key)."""
+    """Raise CaseError unless `key` names a case parameter (`section.key` or a bare key) or a named
+    movement or material."""
     qualified = {q for q, _, _ in parameter_docs()}
-    if key not in qualified and key not in _BARE_NAMES:
+    if key not in qualified and key not in _BARE_NAMES and key not in NAMED_KEYS:
         raise CaseError(f"unknown parameter {key!r}; see `yadearch params` for the list")
 
 

@@ -30,7 +30,7 @@ from yadearch.static.records import dem_only_keys
 from yadearch.studies.campaigns.batches import BATCHES_DIR
 from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.failures import FAILED_FILE, failure_stands, record_failure
-from yadearch.studies.campaigns.grid import RUN_COLUMN, check_campaign_size, check_parameter, run_tag
+from yadearch.studies.campaigns.grid import RUN_COLUMN, check_campaign_size, check_parameter, named_overrides, run_tag
 from yadearch.studies.campaigns.lean import known_rows, run_batches
 from yadearch.studies.campaigns.progress import campaign_bar
 from yadearch.studies.campaigns.sessions import record_session
@@ -62,7 +62,7 @@ def plan(base: ArchCase, rows: list[dict[str, Any]], out: Path) -> list[RunSpec]
         overrides = {k: v for k, v in row.items() if k != RUN_COLUMN}
         name = str(row.get(RUN_COLUMN) or (run_tag(overrides) if overrides else base.name))
         try:
-            case = base.with_overrides({**overrides, "name": name})
+            case = base.with_overrides({**named_overrides(overrides), "name": name})
             _check_engine_reads(case, overrides)
             spec = RunSpec(name, overrides, out / confined_folder_name(name), case)
             if is_complete(spec.folder):
