@@ -103,3 +103,25 @@ def test_samples_that_cannot_stand_count_as_du_zero_as_in_the_sensitivity_study(
     assert "40 samples: 18 collapsed, 21 cannot stand under their own weight" in text
     assert "| 39 | 0.00 |" in text  # the median of 21 zeros and 18 collapses (one sample has no du)
     assert "share of the 18 samples that collapsed" in text
+
+
+def test_a_hinge_without_a_paper_letter_is_counted_too(tmp_path):
+    """Found in a user trial: a spreading mechanism 1E 5I 12E 18I 22E has two intrados hinges, A the
+    more turned one; the other was in no statistic. Every hinge counts, the unlettered ones apart."""
+    n = 10
+    table = pd.DataFrame(
+        {
+            "run": [f"s{i}" for i in range(n)],
+            "status": ["done"] * n,
+            "du_mm": np.linspace(500.0, 520.0, n),
+            "hinges": ["1E 5I 12E 18I 22E"] * n,
+            "hinge_A": pd.array([18 if i == 0 else 5 for i in range(n)], dtype="Int64"),
+            "hinge_B": pd.array([12] * n, dtype="Int64"),
+            "hinge_C": pd.array([22] * n, dtype="Int64"),
+            "hinge_D": pd.array([1] * n, dtype="Int64"),
+        }
+    )
+    text = summary_markdown(table, [])
+    assert "- A: 5: 90%, 18: 10%" in text
+    assert "- without a letter (a second intrados hinge, a fifth hinge): 5I: 10%, 18I: 90%" in text
+    assert all(p.stat().st_size > 0 for p in hinge_frequency_figure(table, tmp_path / "hinges"))

@@ -10,6 +10,7 @@ import numpy as np
 import pandas as pd
 from scipy.stats import binom
 
+from yadearch.case.reference import HINGE_SIDES
 from yadearch.errors import CANNOT_STAND
 from yadearch.model.hinges import PAPER_LABELS
 
@@ -70,6 +71,23 @@ def hinge_frequencies(table: pd.DataFrame) -> pd.DataFrame:
                 }
             )
     return pd.DataFrame(rows, columns=["hinge", "interface", "count", "share"])
+
+
+def unlettered_hinges(table: pd.DataFrame) -> pd.DataFrame:
+    """How often each hinge without a paper letter (a second intrados hinge, a fifth hinge) formed at
+    each interface and side: one row an (interface, side), as `hinge_frequencies` counts the lettered."""
+    done = table[table["status"] == "done"]
+    counts: dict[tuple[int, str], int] = {}
+    for row in done.itertuples():
+        lettered = {(getattr(row, f"hinge_{label}"), HINGE_SIDES[f"hinge_{label}"]) for label in PAPER_LABELS}
+        for token in str(getattr(row, "hinges", "") or "").split():
+            hinge = (int(token[:-1]), token[-1])
+            if hinge not in lettered:
+                counts[hinge] = counts.get(hinge, 0) + 1
+    rows = [
+        {"interface": i, "side": side, "count": n, "share": n / len(done)} for (i, side), n in sorted(counts.items())
+    ]
+    return pd.DataFrame(rows, columns=["interface", "side", "count", "share"])
 
 
 def collapse_displacement(runs: pd.DataFrame) -> pd.Series:

@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
-from yadearch.analysis.samples import BAND, du_statistics, hinge_frequencies
+from yadearch.analysis.samples import BAND, du_statistics, hinge_frequencies, unlettered_hinges
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.plotting.house import hinge_colour, save_figure
 from yadearch.plotting.parameter_labels import parameter_label, parameter_setting
@@ -24,6 +24,7 @@ BINS = 20  # histogram bins at most
 PANELS_PER_ROW = 3  # du against amplitude: panels side by side
 PANEL_HEIGHT_IN = 2.4
 DU_LABEL = "collapse displacement $d_u$ (mm)"
+UNLETTERED_COLOUR = "0.6"  # hinges without a paper letter, in grey
 REFERENCE_STYLES = ("--", ":", "-.")  # one reference du each, in black
 
 
@@ -66,24 +67,27 @@ def du_distribution_figure(
 
 
 def hinge_frequency_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
-    """Share of the samples whose hinge A, B, C or D formed at each interface: STEM.pdf, STEM.png."""
+    """Share of the samples whose hinge A, B, C or D formed at each interface, and of those whose hinge
+    without a letter did (stacked where they share an interface): STEM.pdf, STEM.png."""
     frequencies = hinge_frequencies(_done(table))
+    others = unlettered_hinges(_done(table))
     with matplotlib.rc_context(SWEEP_STYLE):
-        fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
+        fig = Figure(figsize=(COLUMN_WIDTH_IN, 3.0), layout="constrained")
         ax = fig.subplots()
-        for label in PAPER_LABELS:
-            rows = frequencies[frequencies["hinge"] == label]
-            ax.bar(
-                rows["interface"],
-                rows["share"],
-                width=0.8,
-                color=hinge_colour(label),
-                label=f"{label} ({HINGE_SIDES[label]})",
-            )
+        stacked: dict[int, float] = {}
+        groups = [(f"{label} ({HINGE_SIDES[label]})", hinge_colour(label), frequencies[frequencies["hinge"] == label])
+                  for label in PAPER_LABELS]  # fmt: skip
+        if len(others):
+            groups.append(("no letter", UNLETTERED_COLOUR, others.groupby("interface", as_index=False)["share"].sum()))
+        for name, colour, rows in groups:
+            bottom = [stacked.get(int(i), 0.0) for i in rows["interface"]]
+            ax.bar(rows["interface"], rows["share"], bottom=bottom, width=0.8, color=colour, label=name)
+            for i, share in zip(rows["interface"], rows["share"]):
+                stacked[int(i)] = stacked.get(int(i), 0.0) + float(share)
         ax.set_xlabel("interface (1 = left springing)")
         ax.set_ylabel("share of samples")
-        ax.set_ylim(0, 1.3)
-        ax.legend(loc="upper center", ncol=2, frameon=False)
+        ax.set_ylim(0, max(1.0, *stacked.values()) * 1.05 if stacked else 1.0)
+        ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=2, frameon=False)  # above the bars
         return list(save_figure(fig, stem))
 
 

@@ -21,6 +21,7 @@ from yadearch.analysis.samples import (
     collapse_displacement,
     du_statistics,
     hinge_frequencies,
+    unlettered_hinges,
 )
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import ArchCase
@@ -173,4 +174,8 @@ def summary_markdown(table: pd.DataFrame, level_columns: list[str], about: str =
         rows = frequencies[frequencies["hinge"] == label]
         listed = ", ".join(f"{r.interface}: {r.share:.0%}" for r in rows.itertuples())
         lines.append(f"- {label}: {listed or 'none'}")
+    others = unlettered_hinges(collapsed)
+    if len(others):
+        listed = ", ".join(f"{r.interface}{r.side}: {r.share:.0%}" for r in others.itertuples())
+        lines.append(f"- without a letter (a second intrados hinge, a fifth hinge): {listed}")
     return "\n".join(lines) + "\n"
