@@ -108,11 +108,17 @@ def _chain(corners: list[np.ndarray], left: int, right: int, tolerance: float, n
     order, remaining = [left], set(range(len(corners))) - {left}
     while order[-1] != right:
         after = [k for k in remaining if len(_touching(corners[order[-1]], corners[k], tolerance)) == 2]
-        if len(after) != 1:
-            said = "no block" if not after else f"blocks {', '.join(names[k] for k in sorted(after))}"
+        if not after and remaining:
+            gap, nearest = min((_joint_gap(corners[order[-1]], corners[k]), k) for k in remaining)
             raise CaseError(
-                f"survey: block {names[order[-1]]} shares a joint (two corners within {tolerance:g} mm) with {said}; "
-                "each block must share one with the next only (set joint_tolerance_mm to the survey's gaps)"
+                f"survey: block {names[order[-1]]} shares a joint (two corners within {tolerance:g} mm) with no "
+                f"block; the nearest, {names[nearest]}, is {gap:.3g} mm off (its second-closest corners): move "
+                'their corners together, or give a JSON survey a "joint_tolerance_mm" above that gap'
+            )
+        if len(after) != 1:
+            raise CaseError(
+                f"survey: block {names[order[-1]]} shares a joint (two corners within {tolerance:g} mm) with "
+                f"blocks {', '.join(names[k] for k in sorted(after))}; each block must share one with the next only"
             )
         order.append(after[0])
         remaining.discard(after[0])
@@ -121,6 +127,12 @@ def _chain(corners: list[np.ndarray], left: int, right: int, tolerance: float, n
             f"survey: blocks {', '.join(names[k] for k in sorted(remaining))} are not on the ring between the supports"
         )
     return order
+
+
+def _joint_gap(a: np.ndarray, b: np.ndarray) -> float:
+    """How far blocks a and b are from sharing a joint (mm): the second-smallest distance between a
+    corner of a and one of b (a joint needs two pairs of corners)."""
+    return float(np.sort(np.linalg.norm(a[:, None, :] - b[None, :, :], axis=2), axis=None)[1])
 
 
 def _shared(a: np.ndarray, b: np.ndarray, tolerance: float) -> np.ndarray:
