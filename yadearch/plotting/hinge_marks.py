@@ -12,6 +12,8 @@ from yadearch.plotting.house import MIN_TEXT_PT
 from yadearch.plotting.labels import layout, place_label
 
 HINGE_LABEL_OFFSET_PT = 5  # a hinge's label from its dot (points)
+WIDENINGS = 2  # times the axes are widened for a label reaching past their side
+LABEL_PAD_PX = 4.0  # room left beside such a label
 
 
 def mark_hinge(ax: Axes, point: np.ndarray, text: str, side: str, colour: str) -> tuple[Annotation, np.ndarray]:
@@ -36,7 +38,18 @@ def mark_hinge(ax: Axes, point: np.ndarray, text: str, side: str, colour: str) -
 
 def place_hinge_labels(ax: Axes, marks: list[tuple[Annotation, np.ndarray]]) -> None:
     """Each hinge label of `marks` moved round its dot, from its preferred side, to where it clears the
-    blocks, the labels placed before it and the axes' edge (call once the axes' limits are set)."""
-    layout(ax.figure)
-    for label, direction in marks:
-        place_label(ax, label, direction, HINGE_LABEL_OFFSET_PT)
+    blocks, the labels placed before it and the axes' edge (call once the axes' limits are set); where
+    one still reaches past a side of the axes (a wide arch's labels at its springings), the axes widened
+    by that much each side and the labels placed again."""
+    for _ in range(WIDENINGS + 1):
+        layout(ax.figure)
+        for label, direction in marks:
+            place_label(ax, label, direction, HINGE_LABEL_OFFSET_PT)
+        layout(ax.figure)
+        box = ax.get_window_extent()
+        over_px = max([0.0] + [max(box.x0 - b.x0, b.x1 - box.x1) for b in (m.get_window_extent() for m, _ in marks)])
+        if over_px <= 0.0:
+            return
+        low, high = ax.get_xlim()
+        more = (over_px + LABEL_PAD_PX) * (high - low) / box.width
+        ax.set_xlim(low - more, high + more)

@@ -13,6 +13,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from yadearch.analysis.blocks import case_geometry, joint_points, snapshot_outlines
 from yadearch.analysis.run import RunAnalysis
@@ -37,6 +38,7 @@ from yadearch.solve.stages import Stage
 LEFT_COLOUR, RIGHT_COLOUR = "#0072B2", "#D55E00"
 PAST_DU_ALPHA = 0.35
 LEGEND_ROWS_CM = 0.9  # the collapse figure's two legend rows above the arch
+COORDINATE_TICKS = 6  # the collapse figure's x ticks at most: a wide arch's coordinates in mm are long labels
 PATH_HEADROOM = 1.15  # the hinge figure's scale: the largest value on the path, with this room
 SETTLEMENT_DEG = -90.0  # a support moving straight down settles; any other direction is a displacement
 
@@ -144,6 +146,7 @@ def collapse_figure(
     ax.set_ylim(*ylim)
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
+    ax.xaxis.set_major_locator(MaxNLocator(nbins=COORDINATE_TICKS))  # a wide arch's ticks in mm stay apart
     place_hinge_labels(ax, marks)
     return cast(Figure, ax.get_figure())
 
