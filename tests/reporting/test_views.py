@@ -227,3 +227,10 @@ def test_a_movie_that_cannot_be_written_is_refused_before_drawing(run, tmp_path,
     with pytest.raises(YadearchError, match=message) as error:
         run.animate(target, fmt=fmt)
     assert "\n" not in str(error.value)
+
+
+def test_a_long_path_is_drawn_at_every_kth_state_ending_on_the_collapse():
+    """Found in a user trial: a static run's 636 states made a 13.5 MB GIF in 2.5 minutes."""
+    kept = animation.every_kth(list(range(636)), animation.MAX_PATH_FRAMES)
+    assert len(kept) <= animation.MAX_PATH_FRAMES and kept[0] == 0 and kept[-1] == 635
+    assert animation.every_kth(list(range(10)), animation.MAX_PATH_FRAMES) == list(range(10))

@@ -21,6 +21,7 @@ from yadearch.results.states import LOAD_DIGITS
 FORMATS = ("mp4", "gif")
 FRAMES_PER_S = 8
 HOLD_COLLAPSE_S = 2.0  # the last state stays on screen this long: the mechanism at collapse
+MAX_PATH_FRAMES = 240  # a path of more states is drawn at every k-th (30 s at 8 frames a second), its last kept
 FRAME_CM = (17.0, 9.5)
 FRAME_DPI = 150
 
@@ -49,18 +50,27 @@ def movie_title(run: RunFolder) -> str:
     return f"{title}, live load: {answer['outcome']} up to {answer['largest_multiplier_tried']:.{LOAD_DIGITS}g} {unit}"
 
 
+def every_kth(states: list[int], most: int) -> list[int]:
+    """`states` thinned evenly to at most `most`, the last kept (the collapse): a static run records
+    hundreds of states, and a movie of each would run minutes and weigh tens of megabytes."""
+    kept = states[:: -(-len(states) // most)]  # every ceil(n / most)-th
+    kept[-1] = states[-1]  # the collapse, in place of the state kept nearest it
+    return kept
+
+
 @house_style
 def animate_run(
     run: RunFolder, analysis: RunAnalysis, out: Path, fmt: str = "mp4", fps: int = FRAMES_PER_S, progress: bool = True
 ) -> Path:
-    """Write the run's movie to `out` (atomically): every state of the loading path, self-weight to
-    collapse, then the collapse held for HOLD_COLLAPSE_S; returns `out`. `progress`: bars over the
-    states read and the frames drawn (a long run's movie takes a minute)."""
+    """Write the run's movie to `out` (atomically): the states of the loading path, self-weight to
+    collapse (at most MAX_PATH_FRAMES, `every_kth`), then the collapse held for HOLD_COLLAPSE_S;
+    returns `out`. `progress`: bars over the states read and the frames drawn (a long run's movie
+    takes a minute)."""
     check_format(fmt)
     states = run_states(run)
     geometry = case_geometry(run.case)
     limits = drawing_limits(geometry)
-    path = list(states.path())
+    path = every_kth(list(states.path()), MAX_PATH_FRAMES)
     frames = path + [path[-1]] * int(HOLD_COLLAPSE_S * fps)
     views = {
         i: state_view(run, geometry, analysis, i) for i in tqdm(path, desc="states", unit="state", disable=not progress)
