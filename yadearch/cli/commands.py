@@ -11,7 +11,7 @@ import click
 
 from yadearch.cli.check import check_option, with_increments_check
 from yadearch.cli.lazy import LAZY_COMMANDS, LazyGroup
-from yadearch.cli.options import ENGINES, case_options, figures_option, resolve_case
+from yadearch.cli.options import ENGINES, FURTHER, case_options, figures_option, resolve_case
 from yadearch.cli.param_types import OUT_FOLDER, argument_type
 from yadearch.errors import YadearchError
 from yadearch.markdown import seconds_text
@@ -28,7 +28,9 @@ def _report_summary(out: Path) -> None:
 
     summary: RunSummary = read_summary(out)
     du = summary.du_mm
-    reach = f"no collapse up to {summary.loading.max_displacement_mm:g} mm" if summary.loading else "no collapse"
+    reach = (
+        f"no collapse up to {summary.loading.max_displacement_mm:g} mm{FURTHER}" if summary.loading else "no collapse"
+    )
     click.echo(
         f"{summary.name}: du = {reach if du is None else f'{du:.2f} mm'}, "
         f"hinges at collapse {summary.hinge_text or '-'}, {summary.cost}, "

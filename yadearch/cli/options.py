@@ -20,6 +20,7 @@ PRESETS = ("set1", "set2")
 ENGINES = ("dem", "static")
 RIGID = "rigid"  # the rigid-block analyses (`limit`, `loads --engine rigid`): no joint stiffness, no numerics
 ENGINE_META = "yadearch_engine"  # where --engine leaves its choice for `resolve_case` (click's context)
+FURTHER = " (loading.max_support_displacement_mm; set it larger to follow the path further)"  # a path that stood
 MOVEMENT_KEY = "movement"  # --set movement=NAME: a named support movement (case.support.MOVEMENT_PRESETS)
 
 
