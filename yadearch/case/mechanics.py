@@ -42,8 +42,8 @@ def standing_parameters(case: ArchCase) -> str:
     """The parameters that decide whether an arch stands under its own weight, for the message of
     one that does not: the ring's proportions, the friction, the joints' stiffness and any defects."""
     g = case.geometry
-    voussoirs = g.n_voussoirs - 2 * bool(g.piers_mm)  # a pier is a block of the arch, not a voussoir
-    terms = [f"{g.shape} arch, thickness_mm {g.thickness_mm:g}", f"{voussoirs} voussoirs"]
+    piers = " (2 of them its piers)" if g.piers_mm else ""  # a pier is a block of the arch, not a voussoir
+    terms = [f"{g.shape} arch, thickness_mm {g.thickness_mm:g}", f"n_voussoirs {g.n_voussoirs}{piers}"]
     read = [name for name in SIZES.get(g.shape, ()) if not isinstance(getattr(g, name), list)]
     sizes = ", ".join(f"{name} {getattr(g, name):g}" for name in read)
     if sizes:  # the sizes this shape reads (a measured arch's are its joints)
