@@ -53,6 +53,8 @@ def movie_title(run: RunFolder) -> str:
 def every_kth(states: list[int], most: int) -> list[int]:
     """`states` thinned evenly to at most `most`, the last kept (the collapse): a static run records
     hundreds of states, and a movie of each would run minutes and weigh tens of megabytes."""
+    if len(states) <= most:
+        return states
     kept = states[:: -(-len(states) // most)]  # every ceil(n / most)-th
     kept[-1] = states[-1]  # the collapse, in place of the state kept nearest it
     return kept
