@@ -156,3 +156,10 @@ def test_a_survey_file_is_read_as_a_spreadsheet_writes_it_and_its_sizes_stay_sur
         value = 100.0 if key.endswith("_mm") else "vertical"
         with pytest.raises(CaseError, match=f"{key} of a surveyed arch is .*survey it again"):
             case.with_overrides({key: value})
+
+
+def test_a_surveyed_case_surveyed_again_takes_the_new_surveys_thickness():
+    base = preset("set2").with_overrides(SMALL)
+    first = measured_case(surveyed_joints(base), base=base)
+    again = measured_case(thicker_at_the_haunches(base), base=first)
+    assert again.geometry.thickness_mm > first.geometry.thickness_mm

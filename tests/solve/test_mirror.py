@@ -59,3 +59,8 @@ def test_the_named_mirror_mechanism_is_what_other_increments_meet():
     assert default.hinge_labels.split() == doubled.mirror_hinges
     assert abs(doubled.du_mm / default.du_mm - 1.0) < DU_TOLERANCE  # 11.20 / 11.18 mm
     assert "or the mirror image" in default.hinge_text
+
+
+def test_a_mechanism_that_is_its_own_mirror_image_names_no_other():
+    case = preset("set2").with_overrides({"support_direction_deg": 0.0})
+    assert mirror_hinges(case, rigid_arch(case).movement, ["1E", "20I", "37I", "56E"]) is None

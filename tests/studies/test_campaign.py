@@ -154,6 +154,13 @@ def test_a_table_names_a_movement_and_a_material_as_set_does(tmp_path):
     table.write_text("run,movement\nx,sideways\n")
     with pytest.raises(CaseError, match="movement must be one of .*got 'sideways'"):
         plan(BASE, read_table(table), tmp_path / "d")
+    table.write_text("run,movement,support_direction_deg\nx,spreading,-45\n")  # which one wins? neither
+    with pytest.raises(CaseError, match="support_direction_deg is given beside a named movement"):
+        plan(BASE, read_table(table), tmp_path / "e")
+    from yadearch.studies.campaigns.grid import check_parameter
+
+    with pytest.raises(CaseError, match="movement names a choice, not a number"):
+        check_parameter("movement", numeric=True)
 
 
 def test_a_table_naming_two_runs_alike_is_refused_naming_them(tmp_path):

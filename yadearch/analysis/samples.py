@@ -80,7 +80,8 @@ def unlettered_hinges(table: pd.DataFrame) -> pd.DataFrame:
     counts: dict[tuple[int, str], int] = {}
     for row in done.itertuples():
         lettered = {(getattr(row, f"hinge_{label}"), HINGE_SIDES[f"hinge_{label}"]) for label in PAPER_LABELS}
-        for token in str(getattr(row, "hinges", "") or "").split():
+        hinges = getattr(row, "hinges", "")
+        for token in (hinges if isinstance(hinges, str) else "").split():
             hinge = (int(token[:-1]), token[-1])
             if hinge not in lettered:
                 counts[hinge] = counts.get(hinge, 0) + 1

@@ -104,16 +104,16 @@ def _read(joints: str | Path | pd.DataFrame | dict[str, Any]) -> tuple[pd.DataFr
         raise CaseError(f"joints: cannot read {joints}: {exc}") from None
 
 
-def numbers(table: pd.DataFrame, columns: tuple[str, ...]) -> np.ndarray:
+def numbers(table: pd.DataFrame, columns: tuple[str, ...], what: str = "joints") -> np.ndarray:
     """`table`'s `columns` as floats; CaseError in one line naming the first cell that is not a number
-    (its row as a spreadsheet numbers it, the header being row 1)."""
+    (its row as a spreadsheet numbers it, the header being row 1: the table's own index, as read)."""
     values = table[list(columns)].apply(pd.to_numeric, errors="coerce")
-    bad = values.isna()
-    if bad.to_numpy().any():
-        row, column = np.argwhere(bad.to_numpy())[0]
+    bad = values.isna().to_numpy()
+    if bad.any():
+        row, column = np.argwhere(bad)[0]
         value = table[columns[column]].iloc[row]
-        what = "is empty" if pd.isna(value) else f"{value!r} is not a number (mm)"
-        raise CaseError(f"joints: row {row + 2}, column {columns[column]}: {what}")
+        said = "is empty" if pd.isna(value) else f"{value!r} is not a number (mm)"
+        raise CaseError(f"{what}: row {table.index[row] + 2}, column {columns[column]}: {said}")
     return values.to_numpy(float)
 
 
@@ -123,7 +123,7 @@ def blocks_from_table(table: pd.DataFrame) -> dict[str, Any]:
     each block named by its label; CaseError for a block marked twice."""
     blocks = []
     for label, rows in table.groupby("block", sort=False):
-        block: dict[str, Any] = {"name": str(label), "corners": numbers(rows, ("x_mm", "y_mm")).tolist()}
+        block: dict[str, Any] = {"name": str(label), "corners": numbers(rows, ("x_mm", "y_mm"), "survey").tolist()}
         marks = set(rows[SUPPORT_COLUMN].dropna().astype(str).str.strip()) - {""} if SUPPORT_COLUMN in rows else set()
         if len(marks) > 1:
             raise CaseError(f"survey: block {label} is marked {' and '.join(sorted(marks))}; mark one support a block")

@@ -180,12 +180,12 @@ def refuse_unread_sizes(shape: str, given: set[str]) -> None:
     read: `span_mm` on a segmental arch built the paper's arch unchanged, silently; on a surveyed arch
     (not being surveyed: its shape unchanged) the thickness and the joints' orientation its survey
     sets (the thickness, the joints' mean length, scales its runaway bound and snap floor)."""
-    if shape == MEASURED and "shape" not in given:
+    if shape == MEASURED and not given & {"shape", "joint_points_mm"}:  # not a survey being made
         surveyed = sorted(given & set(SURVEYED))
         if surveyed:
             raise CaseError(
-                f"geometry.{surveyed[0]} of a surveyed arch is {SURVEYED[surveyed[0]]}; survey it again "
-                "(`yadearch survey`) to change it, or drop it"
+                f"geometry.{surveyed[0]} of a surveyed arch is {SURVEYED[surveyed[0]]}, not set by hand; survey "
+                "it again (`yadearch survey`) to change it, or drop it"
             )
     reads = SIZES.get(shape, ())
     for name in sorted(given):

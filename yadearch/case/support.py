@@ -12,6 +12,8 @@ from yadearch.model import units
 from yadearch.model.geometry import ArchGeometry
 from yadearch.model.movement import Movement, support_movement
 
+MOVEMENT_KEY = "movement"  # --set movement=NAME, a table's column: a named movement (MOVEMENT_PRESETS)
+
 
 def case_movement(case: ArchCase, geometry: ArchGeometry) -> Movement:
     """The movement of `case`'s supports along its path, for the scene's driver and the limit analysis."""

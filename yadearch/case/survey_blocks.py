@@ -108,7 +108,7 @@ def _chain(corners: list[np.ndarray], left: int, right: int, tolerance: float, n
     order, remaining = [left], set(range(len(corners))) - {left}
     while order[-1] != right:
         after = [k for k in remaining if len(_touching(corners[order[-1]], corners[k], tolerance)) == 2]
-        if not after and remaining:
+        if not after:
             gap, nearest = min((_joint_gap(corners[order[-1]], corners[k]), k) for k in remaining)
             raise CaseError(
                 f"survey: block {names[order[-1]]} shares a joint (two corners within {tolerance:g} mm) with no "

@@ -25,11 +25,13 @@ FIGURE_JOBS = 2  # a single run's figures are drawn in two processes (where the 
 def _report_summary(out: Path) -> None:
     from yadearch.analysis.mechanism import run_warnings
     from yadearch.results.rundir import read_summary
+    from yadearch.results.summary import PATH
 
     summary: RunSummary = read_summary(out)
     du = summary.du_mm
+    further = FURTHER if summary.loading and summary.loading.motion != PATH else ""  # a path ends where it ends
     reach = (
-        f"no collapse up to {summary.loading.max_displacement_mm:g} mm{FURTHER}" if summary.loading else "no collapse"
+        f"no collapse up to {summary.loading.max_displacement_mm:g} mm{further}" if summary.loading else "no collapse"
     )
     click.echo(
         f"{summary.name}: du = {reach if du is None else f'{du:.2f} mm'}, "

@@ -82,7 +82,8 @@ def limit(
     path, _ = limit_files(case, compliant, out, result.start_hinges, result.start_mm)
     stood = result.du_rigid_mm is None
     du = (
-        f"no collapse up to {case.loading.max_support_displacement_mm:g} mm{FURTHER}"
+        f"no collapse up to {case.loading.max_support_displacement_mm:g} mm"
+        + (FURTHER if case.loading.support_motion != "path" else "")
         if stood
         else f"{result.du_rigid_mm:.2f} mm"
     )

@@ -21,7 +21,6 @@ ENGINES = ("dem", "static")
 RIGID = "rigid"  # the rigid-block analyses (`limit`, `loads --engine rigid`): no joint stiffness, no numerics
 ENGINE_META = "yadearch_engine"  # where --engine leaves its choice for `resolve_case` (click's context)
 FURTHER = " (loading.max_support_displacement_mm; set it larger to follow the path further)"  # a path that stood
-MOVEMENT_KEY = "movement"  # --set movement=NAME: a named support movement (case.support.MOVEMENT_PRESETS)
 
 
 def resolve_case(
@@ -31,7 +30,7 @@ def resolve_case(
     from yadearch.case.config import load_case, preset
     from yadearch.case.paper import off_the_paper
     from yadearch.case.plan import static_only_refusal
-    from yadearch.case.support import movement_overrides
+    from yadearch.case.support import MOVEMENT_KEY, movement_overrides
     from yadearch.results.summary import STATIC
     from yadearch.studies.campaigns.grid import parse_scalar
 
@@ -109,6 +108,7 @@ def refuse_unread(
     (the hint names --compliant where the command has it, `can_comply`); the static engine reads no DEM
     numerics."""
     from yadearch.case.config import parameter_section
+    from yadearch.case.support import MOVEMENT_KEY
     from yadearch.results.summary import STATIC
 
     if engine == STATIC:

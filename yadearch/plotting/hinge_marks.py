@@ -41,14 +41,14 @@ def place_hinge_labels(ax: Axes, marks: list[tuple[Annotation, np.ndarray]]) -> 
     blocks, the labels placed before it and the axes' edge (call once the axes' limits are set); where
     one still reaches past a side of the axes (a wide arch's labels at its springings), the axes widened
     by that much each side and the labels placed again."""
-    for _ in range(WIDENINGS + 1):
+    for widened in range(WIDENINGS + 1):
         layout(ax.figure)
         for label, direction in marks:
             place_label(ax, label, direction, HINGE_LABEL_OFFSET_PT)
         layout(ax.figure)
         box = ax.get_window_extent()
         over_px = max([0.0] + [max(box.x0 - b.x0, b.x1 - box.x1) for b in (m.get_window_extent() for m, _ in marks)])
-        if over_px <= 0.0:
+        if over_px <= 0.0 or widened == WIDENINGS:
             return
         low, high = ax.get_xlim()
         more = (over_px + LABEL_PAD_PX) * (high - low) / box.width

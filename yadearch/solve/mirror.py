@@ -46,7 +46,9 @@ def is_own_mirror_image(case: ArchCase, movement: Movement) -> bool:
 
 def mirror_hinges(case: ArchCase, movement: Movement, labels: list[str] | None) -> list[str] | None:
     """The mirror image of the hinges `labels` ("9I", "28E") where `case` is its own mirror image
-    (`is_own_mirror_image`), as much the arch's answer as `labels`; None elsewhere or without hinges."""
+    (`is_own_mirror_image`), as much the arch's answer as `labels`; None elsewhere, without hinges or
+    for a mechanism that is its own mirror image."""
     if not labels or not is_own_mirror_image(case, movement):
         return None
-    return mirror_hinge_labels(labels, case.geometry.n_voussoirs + 1)
+    mirrored = mirror_hinge_labels(labels, case.geometry.n_voussoirs + 1)
+    return None if set(mirrored) == set(labels) else mirrored  # a mechanism that is its own mirror image

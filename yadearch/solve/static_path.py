@@ -131,6 +131,7 @@ class StaticLoading:
             landed = self._descend(history, fold[1])
             if landed.verdict != Verdict.STABLE:
                 self.failures[target], self.falls[target] = landed, (history, fold[1])
+                self.readings.pop(target, None)  # read again from this failure if asked
                 return landed.verdict
             if landed.moved > self.snap_floor:
                 self._trial_snaps.append({"fold_mm": [1e3 * fold[0], 1e3 * fold[1]], "move_mm": 1e3 * landed.moved})

@@ -20,6 +20,7 @@ import numpy as np
 from yadearch.case.bounds import MAX_RUNS
 from yadearch.case.materials import MATERIAL_KEY, PRESET_FIELD
 from yadearch.case.sections import parameter_docs
+from yadearch.case.support import MOVEMENT_KEY
 from yadearch.errors import ArgumentTypeError, CampaignError, CaseError, YadearchError
 
 TEXT_ENCODING = "utf-8-sig"  # UTF-8, with or without the byte-order mark Excel's "CSV UTF-8" writes
@@ -30,7 +31,6 @@ MAX_RUNS_VARIABLE = "YADEARCH_MAX_RUNS"
 _UNIT_SUFFIXES = ("_N_per_mm3", "_mm_per_s", "_g_per_cm3", "_m_per_s2", "_mm", "_deg", "_MPa", "_s")
 _BARE_NAMES = {q.split(".")[-1]: q for q, _, _ in parameter_docs()}
 
-MOVEMENT_KEY = "movement"  # a named support movement (case.support.MOVEMENT_PRESETS) as one column
 NAMED_KEYS = (MOVEMENT_KEY, MATERIAL_KEY)  # columns that stand for several parameters
 
 
@@ -91,16 +91,26 @@ def named_overrides(overrides: dict[str, Any]) -> dict[str, Any]:
     from yadearch.case.support import movement_overrides
 
     spelt = {k: v for k, v in overrides.items() if k not in NAMED_KEYS}
+    named: dict[str, Any] = {}
     if MATERIAL_KEY in overrides:
-        spelt[f"{MATERIAL_KEY}.{PRESET_FIELD}"] = str(overrides[MATERIAL_KEY]).strip()
+        named[f"{MATERIAL_KEY}.{PRESET_FIELD}"] = str(overrides[MATERIAL_KEY]).strip()
     if MOVEMENT_KEY in overrides:
-        spelt.update(movement_overrides(str(overrides[MOVEMENT_KEY]).strip()))
-    return spelt
+        named.update(movement_overrides(str(overrides[MOVEMENT_KEY]).strip()))
+    given = {key.split(".")[-1]: key for key in spelt}
+    clash = next((given[key.split(".")[-1]] for key in named if key.split(".")[-1] in given), None)
+    if clash is not None:
+        raise CaseError(
+            f"{clash} is given beside a named {' and '.join(k for k in NAMED_KEYS if k in overrides)} that sets it "
+            "too; give it by name or by its parameters, not both"
+        )
+    return spelt | named
 
 
-def check_parameter(key: str) -> None:
-    """Raise CaseError unless `key` names a case parameter (`section.key` or a bare key) or a named
-    movement or material."""
+def check_parameter(key: str, numeric: bool = False) -> None:
+    """Raise CaseError unless `key` names a case parameter (`section.key` or a bare key) or, unless a
+    `numeric` one is wanted (a factor of the sensitivity study), a named movement or material."""
+    if numeric and key in NAMED_KEYS:
+        raise CaseError(f"{key} names a choice, not a number; vary the parameters it stands for")
     qualified = {q for q, _, _ in parameter_docs()}
     if key not in qualified and key not in _BARE_NAMES and key not in NAMED_KEYS:
         raise CaseError(f"unknown parameter {key!r}; see `yadearch params` for the list")

@@ -88,7 +88,7 @@ def parse_factor(text: str) -> Factor:
     parts = spec.split(":")
     if not name.strip() or len(parts) not in (2, 3) or (len(parts) == 3 and parts[2] not in ("log", "int")):
         raise CampaignError(f"factor {text!r} must read NAME=LOW:HIGH, NAME=LOW:HIGH:log or NAME=LOW:HIGH:int")
-    check_parameter(name.strip())
+    check_parameter(name.strip(), numeric=True)
     try:
         low, high = float(parts[0]), float(parts[1])
     except ValueError:
