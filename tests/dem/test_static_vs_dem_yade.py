@@ -83,3 +83,21 @@ def test_a_spreading_arch_names_its_mirror_mechanism_in_both_engines(tmp_path):
     assert dem.mirror_hinges == mirror_hinge_labels(dem.hinge_labels.split(), last_interface)
     assert dem.mirror_mode_hinges == mirror_hinge_labels(dem.collapse_mode_hinges, last_interface)
     assert static.collapse_mode_hinges in (dem.collapse_mode_hinges, dem.mirror_mode_hinges)
+
+
+def test_the_dem_reads_the_mechanism_where_the_static_engine_does_whatever_the_runaway_bound():
+    """The DEM shows the collapse where a block has moved the default bound (half the ring's
+    thickness), its failing relaxation made again to that bound where the run's differs, as the static
+    engine reads it (`EquilibriumPath.collapse_state`, `StaticLoading.collapse_fall`). Set 2's arch at
+    kn 0.25 with the bound doubled read 1E 12I 28E 33I 42I 56E at its own bound (reports/robustness),
+    the default 1E 12I 29E 56E; now the same (DEM 2 x 25 s)."""
+    from yadearch.dem.runner import Runner
+
+    case = preset("set2").with_overrides(
+        {"kn_N_per_mm3": 0.25, "progress_every_s": 1e9, "numerics.support_path_states": "static"}
+    )
+    default = Runner(case, log=lambda line: None).run()
+    doubled = Runner(case.with_overrides({"numerics.runaway_thickness_ratio": 1.0}), log=lambda line: None).run()
+    assert doubled.du_mm == pytest.approx(default.du_mm, rel=AGREEMENT)
+    assert doubled.hinge_labels == default.hinge_labels
+    assert doubled.collapse_mode_hinges == default.collapse_mode_hinges

@@ -24,13 +24,14 @@ class StaticAcceptance:
         self.said = said
         self.off = False  # the last `accept` ended where the static model still moves the blocks
 
-    def accept(self, verdict: Verdict, near_holds: int) -> Verdict:
+    def accept(self, verdict: Verdict, near_holds: int, runaway: float | None = None) -> Verdict:
         """A hold's `verdict`, its 'stable' kept only on the static model's equilibrium: a state off it is
-        held on, the blocks in their motion, up to `near_holds` times (on while they creep); one still
-        off is not an equilibrium (Verdict.TIMEOUT, `off` set)."""
+        held on, the blocks in their motion, up to `near_holds` times (on while they creep), a block
+        `runaway` away running away (the case's bound by default); one still off is not an equilibrium
+        (Verdict.TIMEOUT, `off` set)."""
         holds, off = 0, self.distance() if verdict == Verdict.STABLE else None
         while (off is not None or (holds and verdict == Verdict.TIMEOUT)) and holds < near_holds:
-            verdict = stable_tangent(self.arch, self.hold(off))
+            verdict = stable_tangent(self.arch, self.hold(off, runaway))
             holds += 1
             off = self.next_distance(verdict, off)
         self.off = off is not None and verdict != Verdict.RUNAWAY

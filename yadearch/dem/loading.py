@@ -3,9 +3,12 @@ increments, relaxations, acceptance and settling, played on the runner's live sc
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from yadearch.case.mechanics import runaway_length
+from yadearch.case.numerics_section import RUNAWAY_THICKNESS_RATIO
 from yadearch.case.support import path_end_mm
 from yadearch.dem.acceptance import StaticAcceptance
 from yadearch.dem.live_arch import LiveArch, hold_on, stable_tangent
@@ -35,20 +38,16 @@ class EquilibriumPath:
         self._at_accepted = True  # the live scene is that state
         self._records: list[tuple[int, int, int]] = []  # where each accepted state's records begin
         self._failures: dict[float, dict] = {}  # support displacement -> state a failure ended in
+        self._falls: dict[float, tuple[dict, float, float, int]] = {}  # ... and its relaxation (`collapse_state`)
         self.last_equilibrium_hinges: list[dict] = []
         # how far the relaxation of each accepted increment moved the blocks (mm), for summary.json
         self.runaway = runaway_length(arch.case)
         # a relaxation moving a block this far (numerics.snap_thickness_ratio x the ring's thickness) and further
         # than its increment moves it quasi-statically (`LiveArch.reach`) is a snap (m)
         self.snap_floor = self.num.snap_thickness_ratio * units.mm(arch.case.geometry.thickness_mm)
-        self.relaxations: dict = {
-            "runaway_mm": units.to_mm(self.runaway),
-            "delta_mm": [],
-            "increment_mm": [],
-            "move_mm": [],
-            # states a hold called equilibria that the static model moved: [delta_mm, move_mm (None: no stable state)]
-            "off_equilibrium": [],
-        }
+        # off_equilibrium: states a hold called equilibria that the static model moved, [delta_mm, move_mm or None]
+        self.relaxations: dict = {"runaway_mm": units.to_mm(self.runaway), "delta_mm": [], "increment_mm": []}
+        self.relaxations |= {"move_mm": [], "off_equilibrium": []}
         self.snaps: list[dict] = []  # relaxations that carried the arch to another branch
         self._start = 0.0  # where the last increment started (m)
         self._trial_snaps: list[dict] = []  # snaps located on the way of the last increment tried
@@ -75,12 +74,14 @@ class EquilibriumPath:
         start = self._start = self.arch.delta()
         base, trend = self._accepted[-1], self._trends[-1]
         self._trial_snaps = []
+        fall = (base, start, target, NEAR_EQUILIBRIUM_HOLDS)  # the last relaxation: its start, from, to, holds
         verdict = self._relax_at(start, target)
         while (self.static.off or (verdict == Verdict.STABLE and self._snapped(trend, start, target))) and (
             target - start > self.settings.bracket(target)
         ):
             low, low_state, high, trend = self._locate_fold(base, trend, start, target)
             self.arch.restore(low_state)
+            fall = (low_state, low, high, MAX_DESCENT_GOES)
             verdict = self._relax_at(low, high, MAX_DESCENT_GOES)  # the snap, from the last state before the fold
             if verdict != Verdict.STABLE:
                 break
@@ -90,20 +91,24 @@ class EquilibriumPath:
             start, base, trend = high, self.arch.snapshot(), Trend.start(high, *self.arch.branch_start())
             if high >= target:
                 break
+            fall = (base, start, target, NEAR_EQUILIBRIUM_HOLDS)
             verdict = self._relax_at(start, target)
         if verdict != Verdict.STABLE:
-            self._failures[target] = self.arch.snapshot()
+            self._failures[target], self._falls[target] = self.arch.snapshot(), fall
         elif start < target:
             trend = trend.then(target, self.arch.path_positions())
         self._trial_trend = trend
         return verdict
 
-    def _relax_at(self, start: float, target: float, near_holds: int = NEAR_EQUILIBRIUM_HOLDS) -> Verdict:
+    def _relax_at(
+        self, start: float, target: float, near_holds: int = NEAR_EQUILIBRIUM_HOLDS, bound: float | None = None
+    ) -> Verdict:
         """From the live state at `start`, move the support to `target` and hold it: the verdict, an
         equilibrium counted only where the static tangent at the poses is positive definite and the
         static model does not move the blocks; a hold that finds neither equilibrium nor runaway goes
         on, and so does one off the static model's equilibrium, up to `near_holds` times (at least
-        HOLD_RETRIES) and `StaticAcceptance.accept`."""
+        HOLD_RETRIES) and `StaticAcceptance.accept`; a block `bound` away is a runaway (the path's bound)."""
+        bound = self.runaway if bound is None else bound
         self.arch.stage = Stage.INCREMENT
         # every move lasts as long as the largest increment's: the short moves near collapse are
         # gentle, and the arch ends them close to its equilibrium configuration
@@ -111,14 +116,14 @@ class EquilibriumPath:
         self.arch.move_support(target, min(1.0, fraction))
         self.arch.stage = Stage.RELAX
         origin = self.arch.path_positions()
-        verdict = self.arch.hold()
+        verdict = self.arch.hold(runaway=bound)
         first_move = self.arch.hold_move
         for _ in range(max(HOLD_RETRIES, near_holds)):  # the hold goes on before it is called unresolved
             if verdict != Verdict.TIMEOUT:
                 break
-            left = self.runaway - self._moved_from(origin)
+            left = bound - self._moved_from(origin)
             verdict = self.arch.hold(runaway=left, from_rest=False) if left > 0.0 else Verdict.RUNAWAY
-        verdict = self.static.accept(stable_tangent(self.arch, verdict), near_holds)
+        verdict = self.static.accept(stable_tangent(self.arch, verdict), near_holds, bound)
         self._relax_move = max(first_move, self._moved_from(origin))
         if verdict == Verdict.STABLE:
             self.arch.yield_fill()  # an equilibrium: the fill yields for good where the faces pushed it past u_p
@@ -284,8 +289,17 @@ class EquilibriumPath:
         return f"{units.to_mm(value):7.3f} mm" if self.moves_support else f"{value:7.4g} {self.unit}"
 
     def collapse_state(self, upper: float) -> list[Hinge]:
-        """Show the mechanism: the state of the failure at du's upper bracket end `upper`, where a
-        block has run away by the runaway bound (as the static engine shows it), and its hinges."""
+        """Show the mechanism: the failure at du's upper bracket end `upper` where a block has moved the
+        default runaway bound whatever the path's, its relaxation made again to that bound where they
+        differ (`StaticLoading.collapse_fall` alike); its own state where that relaxation lands."""
+        target = min(self._failures, key=lambda d: abs(d - upper))
+        reading = RUNAWAY_THICKNESS_RATIO * units.mm(self.arch.case.geometry.thickness_mm)
+        shown = False
+        if not math.isclose(self.runaway, reading, rel_tol=1e-12) and target in self._falls:
+            before, start, end, holds = self._falls[target]
+            self.arch.restore(before)
+            shown = self._relax_at(start, end, holds, bound=reading) == Verdict.RUNAWAY
+        if not shown:
+            self.arch.restore(self._failures[target])
         self.arch.stage = Stage.COLLAPSE
-        self.arch.restore(self._failures[min(self._failures, key=lambda d: abs(d - upper))])
         return self.arch.recorder.record_collapse()
