@@ -81,9 +81,9 @@ def run_stages(runner: Runner) -> RunSummary:
 def collapse_mode(runner: Runner, loading: EquilibriumPath, lower: float) -> FoldMode | None:
     """The collapse's mode as the static engine reads its own (`solve.collapse_mode.fold_mode`): the
     motion from the last equilibrium (the static model's, from the DEM's last accepted state at `lower`)
-    toward the runaway the scene shows now, where the run's own bound stopped it (the static engine's
-    reading at the default bound; docs/numerics.md); None where the static model is not the scene's
-    (CGAL) or finds no stable equilibrium there. Leaves the scene at the last accepted state."""
+    toward the runaway the scene shows now (`EquilibriumPath.collapse_state`: at the default bound, as
+    the static engine reads it); None where the static model is not the scene's (CGAL) or finds no
+    stable equilibrium there. Leaves the scene at the last accepted state."""
     check = runner.static_check
     if check is None:
         return None
