@@ -123,5 +123,8 @@ def test_a_hinge_without_a_paper_letter_is_counted_too(tmp_path):
     )
     text = summary_markdown(table, [])
     assert "- A: 5: 90%, 18: 10%" in text
-    assert "- without a letter (a second intrados hinge, a fifth hinge): 5I: 10%, 18I: 90%" in text
+    assert (
+        "- without a letter (a second intrados hinge, a fifth hinge): 18I: 90%; 1 other position, each in under 50%"
+        in text
+    )
     assert all(p.stat().st_size > 0 for p in hinge_frequency_figure(table, tmp_path / "hinges"))

@@ -16,6 +16,7 @@ from yadearch.model.hinges import PAPER_LABELS
 
 BAND = (0.05, 0.95)  # the quantiles of du's band
 MEDIAN_CONFIDENCE = 0.95  # of the interval that brackets the median du
+COMMON_SHARE = 0.5  # a hinge without a paper letter is shown where at least this share of the samples form it
 
 
 def du_statistics(du: pd.Series) -> dict[str, float]:

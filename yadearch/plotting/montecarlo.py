@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
-from yadearch.analysis.samples import BAND, du_statistics, hinge_frequencies, unlettered_hinges
+from yadearch.analysis.samples import BAND, COMMON_SHARE, du_statistics, hinge_frequencies, unlettered_hinges
 from yadearch.model.hinges import PAPER_LABELS
 from yadearch.plotting.house import hinge_colour, save_figure
 from yadearch.plotting.parameter_labels import parameter_label, parameter_setting
@@ -68,9 +68,11 @@ def du_distribution_figure(
 
 def hinge_frequency_figure(table: pd.DataFrame, stem: Path) -> list[Path]:
     """Share of the samples whose hinge A, B, C or D formed at each interface, and of those whose hinge
-    without a letter did (stacked where they share an interface): STEM.pdf, STEM.png."""
+    without a letter did where half of them or more do (stacked where they share an interface):
+    STEM.pdf, STEM.png."""
     frequencies = hinge_frequencies(_done(table))
     others = unlettered_hinges(_done(table))
+    others = others[others["share"] >= COMMON_SHARE]  # the rare ones would hide the lettered
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(COLUMN_WIDTH_IN, 3.0), layout="constrained")
         ax = fig.subplots()

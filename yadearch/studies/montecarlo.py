@@ -17,6 +17,7 @@ import pandas as pd
 
 from yadearch.analysis.samples import (
     BAND,
+    COMMON_SHARE,
     MEDIAN_CONFIDENCE,
     collapse_displacement,
     du_statistics,
@@ -176,6 +177,13 @@ def summary_markdown(table: pd.DataFrame, level_columns: list[str], about: str =
         lines.append(f"- {label}: {listed or 'none'}")
     others = unlettered_hinges(collapsed)
     if len(others):
-        listed = ", ".join(f"{r.interface}{r.side}: {r.share:.0%}" for r in others.itertuples())
-        lines.append(f"- without a letter (a second intrados hinge, a fifth hinge): {listed}")
+        common = others[others["share"] >= COMMON_SHARE]
+        listed = ", ".join(f"{r.interface}{r.side}: {r.share:.0%}" for r in common.itertuples()) or "none"
+        rest = len(others) - len(common)
+        rare = (
+            f"; {rest} other position{'s' * (rest > 1)}, each in under {COMMON_SHARE:.0%} of the samples"
+            if rest
+            else ""
+        )
+        lines.append(f"- without a letter (a second intrados hinge, a fifth hinge): {listed}{rare}")
     return "\n".join(lines) + "\n"
