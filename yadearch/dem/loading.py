@@ -45,9 +45,14 @@ class EquilibriumPath:
         # a relaxation moving a block this far (numerics.snap_thickness_ratio x the ring's thickness) and further
         # than its increment moves it quasi-statically (`LiveArch.reach`) is a snap (m)
         self.snap_floor = self.num.snap_thickness_ratio * units.mm(arch.case.geometry.thickness_mm)
-        # off_equilibrium: states a hold called equilibria that the static model moved, [delta_mm, move_mm or None]
-        self.relaxations: dict = {"runaway_mm": units.to_mm(self.runaway), "delta_mm": [], "increment_mm": []}
-        self.relaxations |= {"move_mm": [], "off_equilibrium": []}
+        self.relaxations: dict = {
+            "runaway_mm": units.to_mm(self.runaway),
+            "delta_mm": [],
+            "increment_mm": [],
+            "move_mm": [],
+            # states a hold called equilibria that the static model moved: [delta_mm, move_mm (None: no stable state)]
+            "off_equilibrium": [],
+        }
         self.snaps: list[dict] = []  # relaxations that carried the arch to another branch
         self._start = 0.0  # where the last increment started (m)
         self._trial_snaps: list[dict] = []  # snaps located on the way of the last increment tried
