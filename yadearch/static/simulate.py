@@ -108,7 +108,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         hinges = records.hinges(collapse)
     mode = loading.fold_mode(path.upper) if path.collapsed else None
     mode_hinges = mode.labels if mode is not None else None
-    collapse_labels = [HingeRef.of(h).label for h in hinges] if path.collapsed else []
+    refs = tuple(HingeRef.of(h) for h in hinges) if path.collapsed else ()
     solver_wall = time.time() - solver_start
     check = None
     if num.increments_check == HALVED_INCREMENTS_CHECK:
@@ -132,7 +132,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         **collapse_fields(path, arch.movement, loading.first_loss),
         collapse_kind=mode.kind if mode is not None else None,
         collapse_mode_hinges=mode_hinges,
-        mirror_hinges=mirror_hinges(case, arch.movement, collapse_labels),
+        mirror_hinges=mirror_hinges(case, arch.movement, [h.label for h in refs]),
         mirror_mode_hinges=mirror_hinges(case, arch.movement, mode_hinges),
         increments=len(path.steps),
         equilibria=len(path.equilibria),
@@ -148,7 +148,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         increments_check=check,
         descents=loading.descents,
         descent_retries=loading.retries,
-        hinges_at_collapse=tuple(HingeRef.of(h) for h in hinges) if path.collapsed else (),
+        hinges_at_collapse=refs,
         hinges_detail=[h.to_json() for h in hinges],
         iterations=loading.iterations,
         steps=loading.iterations,
