@@ -92,3 +92,12 @@ def test_a_case_on_piers_says_so_and_takes_no_second_pair(narrow):
     assert "or its piers (60 mm wide) too narrow" in why_not_standing(thin)
     with pytest.raises(CaseError, match="geometry.piers_mm is for shape 'measured' only"):
         arch_geometry(preset("set2").with_overrides({"geometry.piers_mm": [[100.0, 60.0]]}))
+
+
+def test_piers_too_narrow_to_stand_are_named_by_the_limit_analysis():
+    """Piers 22 mm wide (the case accepts more than 21.29 mm) cannot carry the thrust at rest; the
+    message said only "too thin, or too little friction" (fifth user trial)."""
+    from yadearch.solve.rigid import LimitError
+
+    with pytest.raises(LimitError, match=r"at rest: .* or its piers \(22 mm wide\) too narrow for its thrust$"):
+        limit_analysis(ya.on_piers("set2", HEIGHT_MM, 22.0))

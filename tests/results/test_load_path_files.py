@@ -43,7 +43,7 @@ def _path(engine: str) -> LoadPath:
         reach=7.95,
         iterations=103_320,
         rigid=math.nan,
-        rigid_hinges="",
+        rigid_hinges=(),
         rigid_note="the arch does not stand",
         engine=engine,
     )

@@ -435,9 +435,32 @@ def test_a_sweep_of_unlike_arches_draws_a_line_per_arch_and_no_answer_as_an_axis
     assert swept_columns(table, swept) == ["support_direction_deg"]  # du_first_mm varies too: an answer
     paths = parameter_sweep_figure(table, "support_direction_deg", tmp_path / "du_vs_direction", swept)
     assert all(p.stat().st_size > 1000 for p in paths)
-    alone = table.assign(embrace_deg=[float("nan"), 150.0, 160.0, 180.0])  # no two runs alike but for the axis
-    with pytest.raises(ValueError, match="no two on one line"):
-        parameter_sweep_figure(alone, "support_direction_deg", tmp_path / "none", swept)
+    failed = table.assign(status=["done", "failed", "done", "failed"], du_mm=[25.5, float("nan"), 13.3, float("nan")])
+    with pytest.raises(ValueError, match="no two finished runs differ in it alone"):
+        parameter_sweep_figure(failed, "support_direction_deg", tmp_path / "none", swept)
+
+
+def test_a_table_that_is_not_a_grid_draws_one_named_point_a_run_unjoined(monkeypatch, tmp_path):
+    """A line through runs that differ in other parameters too suggested a trend (fifth user trial):
+    such a table's runs are open points, unjoined, and coinciding points share one name label."""
+    from yadearch.plotting import sweep
+
+    figures: list = []
+    monkeypatch.setattr(sweep, "save_figure", lambda fig, stem: figures.append(fig) or (stem, stem))
+    table = pd.DataFrame(
+        {
+            "run": list("abcd"),
+            "status": ["done"] * 4,
+            "collapsed": [True] * 4,
+            "du_mm": [67.1, 88.0, 87.6, 119.8],
+            "thickness_mm": [20.0, 24.0, 24.0, 30.0],
+            "n_voussoirs": [41, 55, 41, 71],
+        }
+    )
+    sweep.parameter_sweep_figure(table, "thickness_mm", tmp_path / "t", ["thickness_mm", "n_voussoirs"])
+    ax = figures[0].axes[0]
+    assert [line.get_linestyle() for line in ax.lines] == ["None"] and len(ax.lines[0].get_xdata()) == 4
+    assert sorted(t.get_text() for t in ax.texts) == ["a", "c, b", "d"]
 
 
 def test_a_resumed_campaign_says_how_many_runs_it_kept(tmp_path, capsys):

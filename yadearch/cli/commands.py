@@ -11,7 +11,7 @@ import click
 
 from yadearch.cli.check import check_option, with_increments_check
 from yadearch.cli.lazy import LAZY_COMMANDS, LazyGroup
-from yadearch.cli.options import ENGINES, FURTHER, case_options, figures_option, resolve_case
+from yadearch.cli.options import ENGINES, case_options, figures_option, resolve_case, stood_text
 from yadearch.cli.param_types import OUT_FOLDER, argument_type
 from yadearch.errors import YadearchError
 from yadearch.markdown import seconds_text
@@ -25,14 +25,11 @@ FIGURE_JOBS = 2  # a single run's figures are drawn in two processes (where the 
 def _report_summary(out: Path) -> None:
     from yadearch.analysis.mechanism import run_warnings
     from yadearch.results.rundir import read_summary
-    from yadearch.results.summary import PATH
 
     summary: RunSummary = read_summary(out)
     du = summary.du_mm
-    further = FURTHER if summary.loading and summary.loading.motion != PATH else ""  # a path ends where it ends
-    reach = (
-        f"no collapse up to {summary.loading.max_displacement_mm:g} mm{further}" if summary.loading else "no collapse"
-    )
+    loading = summary.loading
+    reach = stood_text(loading.max_displacement_mm, loading.motion) if loading else "no collapse"
     click.echo(
         f"{summary.name}: du = {reach if du is None else f'{du:.2f} mm'}, "
         f"hinges at collapse {summary.hinge_text or '-'}, {summary.cost}, "

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import click
 
-from yadearch.cli.options import FURTHER, RIGID, case_options, figures_option, refuse_unread, resolve_case
+from yadearch.cli.options import RIGID, case_options, figures_option, refuse_unread, resolve_case, stood_text
 from yadearch.cli.param_types import OUT_FOLDER, argument_type
 
 
@@ -81,9 +81,9 @@ def limit(
     )
     path, _ = limit_files(case, compliant, out, result.start_hinges, result.start_mm)
     stood = result.du_rigid_mm is None
+    loading = case.loading
     du = (
-        f"no collapse up to {case.loading.max_support_displacement_mm:g} mm"
-        + (FURTHER if case.loading.support_motion != "path" else "")
+        stood_text(loading.max_support_displacement_mm, loading.support_motion)
         if stood
         else f"{result.du_rigid_mm:.2f} mm"
     )

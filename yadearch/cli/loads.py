@@ -193,7 +193,7 @@ def _on_path(
     else:
         outcome = f"no collapse up to {path.reach:.4g} {unit}"
     if math.isfinite(path.rigid):
-        rigid = f"{path.rigid:.4g} {unit} on {path.rigid_hinges}"
+        rigid = f"{path.rigid:.4g} {unit} on {' '.join(path.rigid_hinges)}"
     else:
         rigid = f"none ({path.rigid_note})" if path.rigid_note else "no collapse however large"
     states = f" and its states {out}/{case.name}_load_path/ (yadearch animate, export)"

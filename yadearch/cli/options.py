@@ -23,6 +23,14 @@ ENGINE_META = "yadearch_engine"  # where --engine leaves its choice for `resolve
 FURTHER = " (loading.max_support_displacement_mm; set it larger to follow the path further)"  # a path that stood
 
 
+def stood_text(max_displacement_mm: float, motion: str) -> str:
+    """What a run whose arch stood to the end of its movement says in place of du, with the setting
+    that follows the movement further (none for a prescribed path: it ends where it ends)."""
+    from yadearch.results.summary import PATH
+
+    return f"no collapse up to {max_displacement_mm:g} mm" + (FURTHER if motion != PATH else "")
+
+
 def resolve_case(
     preset_name: str | None, case_file: str | None, kn: float | None, settings: tuple[str, ...]
 ) -> ArchCase:

@@ -12,6 +12,7 @@ from yadearch.case.numerics_section import RUNAWAY_THICKNESS_RATIO
 from yadearch.case.support import path_end_mm
 from yadearch.dem.acceptance import StaticAcceptance
 from yadearch.dem.live_arch import LiveArch, hold_on, stable_tangent
+from yadearch.dem.relaxations import Relaxations
 from yadearch.dem.trend import Trend
 from yadearch.model import units
 from yadearch.model.hinges import Hinge
@@ -40,19 +41,11 @@ class EquilibriumPath:
         self._failures: dict[float, dict] = {}  # support displacement -> state a failure ended in
         self._falls: dict[float, tuple[dict, float, float, int]] = {}  # ... and its relaxation (`collapse_state`)
         self.last_equilibrium_hinges: list[dict] = []
-        # how far the relaxation of each accepted increment moved the blocks (mm), for summary.json
         self.runaway = runaway_length(arch.case)
         # a relaxation moving a block this far (numerics.snap_thickness_ratio x the ring's thickness) and further
         # than its increment moves it quasi-statically (`LiveArch.reach`) is a snap (m)
         self.snap_floor = self.num.snap_thickness_ratio * units.mm(arch.case.geometry.thickness_mm)
-        self.relaxations: dict = {
-            "runaway_mm": units.to_mm(self.runaway),
-            "delta_mm": [],
-            "increment_mm": [],
-            "move_mm": [],
-            # states a hold called equilibria that the static model moved: [delta_mm, move_mm (None: no stable state)]
-            "off_equilibrium": [],
-        }
+        self.relaxations = Relaxations(self.runaway)  # how far each accepted relaxation moved the blocks
         self.snaps: list[dict] = []  # relaxations that carried the arch to another branch
         self._start = 0.0  # where the last increment started (m)
         self._trial_snaps: list[dict] = []  # snaps located on the way of the last increment tried
@@ -183,10 +176,7 @@ class EquilibriumPath:
     def accept(self) -> None:
         """The state the last increment relaxed to is the new equilibrium state: keep and record it,
         with how far its relaxation moved the blocks and the snaps located on its way."""
-        increment = self.arch.delta() - self._start
-        self.relaxations["delta_mm"].append(units.to_mm(self.arch.delta()))
-        self.relaxations["increment_mm"].append(units.to_mm(increment))
-        self.relaxations["move_mm"].append(units.to_mm(self._relax_move))
+        self.relaxations.record(self.arch.delta(), self.arch.delta() - self._start, self._relax_move)
         self.snaps += self._trial_snaps
         self._trial_snaps = []
         self._accepted.append(self.arch.snapshot())
@@ -265,9 +255,7 @@ class EquilibriumPath:
         self._trends.pop()
         self._at_accepted = False
         self.arch.recorder.discard_since(self._records.pop())
-        discarded = self.relaxations["delta_mm"][-1]
-        for key in ("delta_mm", "increment_mm", "move_mm"):
-            self.relaxations[key].pop()
+        discarded = self.relaxations.drop_last()
         self.snaps = [s for s in self.snaps if s["fold_mm"][1] < discarded]  # those on its way are off the path
 
     @property

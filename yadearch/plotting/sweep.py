@@ -36,6 +36,8 @@ BASE_CASE = "as the base case"  # a parameter a sweep's row leaves empty
 MAX_LEGEND_LINES = 8  # more lines than this, of one numeric setting: a colour scale instead of a legend
 SHADES = "viridis"
 LEGEND_SETTINGS = 2  # more parameters differing between a sweep's lines: each line named by its runs
+MAX_NAMED_POINTS = 12  # a table that is not a grid: its runs named beside their points up to this many
+NEAR_FRACTION = 0.03  # points this close (a fraction of the du range) at one value share a name label
 SWEEP_STYLE = {
     "font.size": 8,
     "axes.labelsize": 8,
@@ -160,7 +162,8 @@ def _hinge_panel(ax: Axes, runs: pd.DataFrame, paper: bool) -> None:
 
 def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path, parameters: Sequence[str]) -> list[Path]:
     """du against one swept `column` (results.csv's name for it), one line per combination of the
-    other swept `parameters` that vary, numbers or not (a shape, a movement); log scale when the values
+    other swept `parameters` that vary, numbers or not (a shape, a movement), where the runs form a grid
+    of them; else (a table of unlike cases) one unjoined point a run, named; log scale when the values
     span more than a decade; an arch that cannot stand is drawn at du 0 and marked. Writes STEM.pdf/.png."""
     du = collapse_displacement(table)  # cannot stand: 0, as the studies count it
     runs = table.assign(du_mm=du)[np.isfinite(du)]
@@ -168,13 +171,16 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path, paramet
         raise ValueError("no collapsed run to plot")
     # a parameter left at the base case in some rows (an empty cell) takes a value of its own there
     others = [c for c in parameters if c != column and c in table and table[c].nunique(dropna=False) > 1]
-    groups = _lines(runs, others)
-    if all(len(group) < 2 for _, group in groups):
-        raise ValueError(f"du against {column}: every run differs in another parameter too, no two on one line")
+    grid = _is_grid(table, [column, *others])
+    groups = _lines(runs, others) if grid else []
+    if grid and all(len(group) < 2 for _, group in groups):
+        raise ValueError(f"du against {column}: no two finished runs differ in it alone")
     with matplotlib.rc_context(SWEEP_STYLE):
         fig = Figure(figsize=(COLUMN_WIDTH_IN, 2.6), layout="constrained")
         ax = fig.subplots()
-        shade = _shades(others, groups)  # many lines of one numeric setting: a colour scale, not a legend
+        if not grid:
+            _run_points(ax, runs, column)
+        shade = _shades(others, groups) if grid else None  # many lines of one setting: a colour scale
         for key, group in groups:
             group = group.sort_values(column)
             values_of = key if isinstance(key, tuple) else (key,)
@@ -197,6 +203,33 @@ def parameter_sweep_figure(table: pd.DataFrame, column: str, stem: Path, paramet
             ax.legend(frameon=False)
         ax.grid(True, lw=0.3, alpha=0.5)
         return list(save_figure(fig, stem))
+
+
+def _is_grid(table: pd.DataFrame, columns: list[str]) -> bool:
+    """Whether the table's rows hold every combination of `columns`' values (an empty cell, the base
+    case's value, one of its own): then a line through the runs alike but for one column means a trend."""
+    values = table[columns].astype(object).where(table[columns].notna(), BASE_CASE)
+    return len(values.drop_duplicates()) == int(np.prod([values[c].nunique() for c in columns]))
+
+
+def _run_points(ax: Axes, runs: pd.DataFrame, column: str) -> None:
+    """A table's runs that are no grid as points, unjoined (a line would suggest a trend the other
+    parameters break) and open (coinciding points stay visible), named where there are few: the names
+    of points at one value and within NEAR_FRACTION of the du range of each other in one label."""
+    ax.plot(runs[column], runs["du_mm"], "o", mfc="none", color="C0", ms=4, mew=0.8)
+    ax.margins(x=0.08, y=0.12)  # room for the names above and right of the outer points
+    if "run" not in runs or len(runs) > MAX_NAMED_POINTS:
+        return
+    near = NEAR_FRACTION * max(float(np.ptp(runs["du_mm"])), 1e-9)
+    labels: list[tuple[float, float, list[str]]] = []  # x, du and the names drawn there
+    for _, run in runs.sort_values([column, "du_mm"]).iterrows():
+        x, du = float(run[column]), float(run["du_mm"])
+        if labels and labels[-1][0] == x and du - labels[-1][1] <= near:
+            labels[-1][2].append(str(run["run"]))
+        else:
+            labels.append((x, du, [str(run["run"])]))
+    for x, du, names in labels:
+        ax.annotate(", ".join(names), (x, du), xytext=(4, 3), textcoords="offset points", fontsize=MIN_TEXT_PT)
 
 
 def _shades(others: list[str], groups: list[tuple[object, pd.DataFrame]]) -> ScalarMappable | None:

@@ -75,10 +75,16 @@ def why_not_standing(case: ArchCase) -> str:
             f"rigid blocks of this shape stand: its joints at kn {case.interface.kn_N_per_mm3:g} N/mm3 are too "
             "soft for it (their compliance folds the ring); a stiffer kn or a thicker ring stands"
         )
-    blocks = ", or a surveyed block too narrow for the thrust" if case.geometry.shape == MEASURED else ""
+    return f"rigid blocks of this shape do not stand either: {_too_weak(case)}"
+
+
+def _too_weak(case: ArchCase) -> str:
+    """Why rigid blocks of `case` do not stand, for its message: the ring or the friction, or blocks
+    other than a parametric ring's (its piers, a surveyed block) too narrow for the thrust."""
+    weak = "the ring is too thin or the friction too low"
     if case.geometry.piers_mm:
-        blocks = f", or its piers ({case.geometry.piers_mm[0][1]:g} mm wide) too narrow for its thrust"
-    return f"rigid blocks of this shape do not stand either: the ring is too thin or the friction too low{blocks}"
+        return f"{weak}, or its piers ({case.geometry.piers_mm[0][1]:g} mm wide) too narrow for its thrust"
+    return f"{weak}, or a surveyed block too narrow for the thrust" if case.geometry.shape == MEASURED else weak
 
 
 def limit_analysis(
@@ -161,7 +167,10 @@ def _solve(
         march.progress = lambda delta: progress(units.to_mm(delta))
     limit = min(units.mm(max_displacement_mm or case.loading.max_support_displacement_mm), arch.movement.length)
     placed = _check_start(march, start_pivots, units.mm(start_mm), limit) if start_pivots or start_mm else None
-    last, read_at, mechanism, chain = march.run(limit, placed)
+    origin = placed if placed is not None else at_rest(arch)
+    if not march.admissible(origin):
+        raise LimitError(f"the arch admits no equilibrium at rest: {_too_weak(case)}")
+    last, read_at, mechanism, chain = march.run(limit, origin)
     if read_at is None and last.delta < limit - units.mm(tolerance_mm):
         raise LimitError(
             f"the march stopped at {units.to_mm(last.delta):.3f} mm, short of {units.to_mm(limit):g} mm: its "

@@ -61,7 +61,7 @@ class LoadPath:
     reach: float  # the largest multiplier the path tried (the arch stands at least to it without collapse)
     iterations: int  # the static engine's Newton iterations, or the DEM's time steps
     rigid: float  # the rigid-block capacity of the same state (`solve.load_lp`; NaN where there is none)
-    rigid_hinges: str
+    rigid_hinges: tuple[str, ...]
     rigid_note: str = ""  # why there is no rigid answer, where there is none
     engine: str = "static"
     descent_end: str = ""  # why the branch past the peak ends (`solve.descending.DescentEnd`); "": not traced
@@ -161,8 +161,8 @@ def rigid_answer(case: ArchCase, after_mm: float, at_rest: LoadCapacity) -> dict
     try:
         rigid = residual_capacity(case, after_mm) if after_mm > 0.0 else at_rest
     except LimitError as exc:
-        return {"rigid": math.nan, "rigid_hinges": "", "rigid_note": str(exc)}
-    return {"rigid": rigid.multiplier, "rigid_hinges": rigid.hinge_labels}
+        return {"rigid": math.nan, "rigid_hinges": (), "rigid_note": str(exc)}
+    return {"rigid": rigid.multiplier, "rigid_hinges": tuple(p.label for p in rigid.pivots)}
 
 
 def load_scale(rigid: LoadCapacity) -> float:

@@ -29,7 +29,7 @@ from yadearch.solve.compliant import Margin, folds, joint_margins, opening_chain
 from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
 from yadearch.solve.limit_result import HingeRecord, SnapRecord
 from yadearch.solve.reseat import closing_path, descending_chains, follow_tie, land, migrates
-from yadearch.solve.rigid import LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, contacts
+from yadearch.solve.rigid import LimitError, Pivot, Placement, RigidArch, close_linkage, contacts
 from yadearch.solve.snap_rules import climbs, largest_accepted, moves_a_hinge
 
 COLLAPSE_PROBE_MM = 0.05  # past a limit, where the four-hinge chains are read (clear of LP tolerances)
@@ -118,15 +118,11 @@ class March:
         placement = close_linkage(self.arch, base, mechanism.pivots, base.delta + offset)
         return placement if self.valid(placement, base) else None
 
-    def run(
-        self, limit: float, start: Placement | None = None
-    ) -> tuple[Placement, Placement | None, Mechanism, Mechanism | None]:
-        """March to collapse or to `limit` from rest (or from `start`, placed on the `start` linkage): the
-        last admissible placement, the one where the collapse mechanism was read, the mechanism followed
-        last and the collapse mechanism."""
-        state = start if start is not None else at_rest(self.arch)
-        if not self.admissible(state):
-            raise LimitError("the arch admits no equilibrium at rest (too thin, or too little friction)")
+    def run(self, limit: float, start: Placement) -> tuple[Placement, Placement | None, Mechanism, Mechanism | None]:
+        """March to collapse or to `limit` from the admissible placement `start` (at rest, or placed on the
+        `start` linkage): the last admissible placement, the one where the collapse mechanism was read, the
+        mechanism followed last and the collapse mechanism."""
+        state = start
         mechanism = self.switch(state, None, 0.0)
         corners = [c for c in self.arch.movement.corners if c < limit]
         while state.delta < limit - 1e-12:

@@ -175,7 +175,7 @@ def dem_influence_line(base: ArchCase, positions: Iterable[float], out: Path, jo
             "hinges": " ".join(path.hinges),
             "outcome": path.outcome,
             "rigid_load_N": path.rigid,
-            "rigid_hinges": path.rigid_hinges,
+            "rigid_hinges": " ".join(path.rigid_hinges),
         }
 
     with ThreadPoolExecutor(max_workers=jobs) as pool:

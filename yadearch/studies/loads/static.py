@@ -34,7 +34,7 @@ def static_row(case: ArchCase, after_mm: float = 0.0) -> dict:
         "static_hinges": " ".join(path.hinges),
         "collapse_kind": path.kind,
         "rigid_capacity": path.rigid,
-        "rigid_hinges": path.rigid_hinges,
+        "rigid_hinges": " ".join(path.rigid_hinges),
         "static_over_rigid": path.capacity / path.rigid - 1.0,
         "iterations": path.iterations,
     }
@@ -94,6 +94,6 @@ def static_influence_line(base: ArchCase, positions: Iterable[float]) -> pd.Data
         rows.append(
             {"position_over_span": x, "collapse_load_N": path.capacity, "first_loss_N": path.first_loss,
              "hinges": " ".join(path.hinges), "outcome": path.outcome, "rigid_load_N": path.rigid,
-             "rigid_hinges": path.rigid_hinges}
+             "rigid_hinges": " ".join(path.rigid_hinges)}
         )  # fmt: skip
     return pd.DataFrame(rows)
