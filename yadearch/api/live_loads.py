@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import math
 import os
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -194,12 +195,17 @@ def load_influence(
 
 
 def residual_curve(
-    case: ArchCase | str, points: int = 4, out: str | Path | None = None, figures: bool = True
+    case: ArchCase | str,
+    points: int = 4,
+    out: str | Path | None = None,
+    figures: bool = True,
+    on_row: Callable[[dict], None] | None = None,
 ) -> pd.DataFrame:
     """The live load's capacity after the case's support movement to `points` fractions of its static
     du (k / points for k = 0 ... points - 1; 4: 0, 25, 50 and 75 %): the static path's first loss and
-    collapse and the load that first moves rigid blocks in the settled state, by settlement; with `out`,
-    OUT/NAME_residual.csv and (with `figures`) its figure OUT/NAME_residual.pdf/.png."""
+    collapse and the load that first moves rigid blocks in the settled state, by settlement, each row
+    given to `on_row` as it is made; with `out`, OUT/NAME_residual.csv and (with `figures`) its figure
+    OUT/NAME_residual.pdf/.png."""
     from yadearch.plotting.loads import plot_residual
     from yadearch.studies.loads.rigid import residual_capacities
 
@@ -210,7 +216,7 @@ def residual_curve(
     require_live_load(case)
     refuse_held(case)
     folder = output_path(out, "out") if out is not None else None
-    table = residual_capacities(case, [k / points for k in range(points)])
+    table = residual_capacities(case, [k / points for k in range(points)], on_row)
     if folder is not None:
         write_csv_atomically(folder / f"{case.name}_residual.csv", table)
         if figures:

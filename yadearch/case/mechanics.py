@@ -17,11 +17,11 @@ from yadearch.case.imperfect import amplitudes, imperfect_geometry
 from yadearch.case.shape import SIZES, build_arch
 from yadearch.errors import CaseError
 from yadearch.model import units
-from yadearch.model.backfill import Backfill, fill_surface
+from yadearch.model.backfill import Backfill, fill_inertia, fill_surface
 from yadearch.model.dispersal import NONE as NOT_DISPERSED
 from yadearch.model.dispersal import Dispersal
 from yadearch.model.geometry import ArchGeometry
-from yadearch.model.loads import VERTICAL, LiveLoad
+from yadearch.model.loads import ACCELERATION, VERTICAL, LiveLoad
 
 
 @dataclass(frozen=True)
@@ -197,6 +197,7 @@ def live_load(case: ArchCase, geometry: ArchGeometry) -> LiveLoad:
         shape=loads.load_shape,
         inclination=math.radians(loads.load_inclination_deg),
         further=further_loads(case, geometry.span),
+        fill_inertia=fill_inertia(geometry, backfill(case)) if loads.live_load == ACCELERATION else (),
     )
 
 

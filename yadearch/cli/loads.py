@@ -13,6 +13,7 @@ from yadearch import api
 from yadearch.api.live_loads import loads_file
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import load_place
+from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.plan import unread_by_rigid_blocks
 from yadearch.cli.check import check_option, with_increments_check
 from yadearch.cli.options import RIGID, case_options, figures_option, refuse_unread, resolve_case
@@ -110,12 +111,29 @@ def loads(
     """A live load's capacity: the load (N) or acceleration (g) at collapse with the self-weight held, and
     its mechanism ([loads] of the case, or --set live_load=...), by rigid-block limit analysis, on the
     static engine's path, or on the DEM's (YADE); --after-mm first moves the support."""
-    refuse_unread(settings, kn, load_engine, can_comply=False)
     _refuse_pairs(load_engine, after_mm, positions, residual)
+    refuse_unread(settings, kn, STATIC if residual is not None else load_engine, can_comply=False)
     case = resolve_case(preset_name, case_file, kn, settings)
     if residual is not None:
         _residual(case, residual, out, figures)
-        return
+    else:
+        path_check = check, case_file, settings
+        _capacity(case, out, load_engine, after_mm, descend_to if descending else None, positions, figures, path_check)
+    _warn_model_values(case, joints_read=load_engine != RIGID or residual is not None)
+
+
+def _capacity(
+    case: ArchCase,
+    out: str,
+    load_engine: str,
+    after_mm: float,
+    descend_to: float | None,
+    positions: int | None,
+    figures: bool,
+    path_check: tuple[bool | None, str | None, tuple[str, ...]],
+) -> None:
+    """The capacity in one line (and the influence line's with `positions`) by `load_engine`; a static
+    path checked with its increments halved as `path_check` (--check, the case file, --set) says."""
     if positions is not None:
         table = api.load_influence(case, positions, out=out, engine=load_engine, figures=figures)
         click.echo(
@@ -126,8 +144,8 @@ def loads(
     what = _what(case) + (f" after {after_mm:g} mm of support movement" if after_mm else "")
     if load_engine in (STATIC, DEM):
         if load_engine == STATIC:  # one path: checked with the increments halved unless told otherwise
-            case = with_increments_check(case.with_overrides({"numerics.engine": STATIC}), check, case_file, settings)
-        _on_path(case, out, after_mm, what, load_engine, descend_to if descending else None, figures)
+            case = with_increments_check(case.with_overrides({"numerics.engine": STATIC}), *path_check)
+        _on_path(case, out, after_mm, what, load_engine, descend_to, figures)
         return
     result = api.loads(case, out=out, after_mm=after_mm, figures=figures)
     unused = unread_by_rigid_blocks(case)
@@ -140,6 +158,18 @@ def loads(
     if math.isnan(result.multiplier):  # as a run of an arch that cannot stand: an error, its answer written
         raise RunFailedError(f"{case.name}: {what}: {outcome} -> {loads_file(case, out)}")
     click.echo(f"{case.name}: {what}: {outcome} -> {loads_file(case, out)}")
+
+
+def _warn_model_values(case: ArchCase, joints_read: bool) -> None:
+    """The warning a run gives (`case.paper.paper_model_values`): a new arch that takes the 1:10 model's
+    material, or its joints where the engine reads them (`joints_read`), says so after its answer."""
+    taken = {
+        name: value
+        for name, value in (paper_model_values(case) or {}).items()
+        if joints_read or not name.startswith("interface.")
+    }
+    if taken:
+        click.echo(f"warning: {model_values_text(taken)}")
 
 
 def _least(table: pd.DataFrame) -> str:
@@ -158,6 +188,8 @@ def _refuse_pairs(engine: str, after_mm: float, positions: int | None, residual:
     if residual is not None and (after_mm or positions is not None):
         other = "--after-mm" if after_mm else "--positions"
         raise click.UsageError(f"--residual makes its own settlements, at rest and after; drop {other}")
+    if residual is not None and engine != STATIC and given("load_engine") != DEFAULT:
+        raise click.UsageError(f"--residual runs the static engine, the rigid blocks beside it; drop --engine {engine}")
     if positions is not None and after_mm:
         raise click.UsageError("--positions: the influence line is of the arch at rest; drop --after-mm")
     flags = {"descending": "--descending/--no-descending", "descend_to": "--descend-to"}
@@ -167,14 +199,17 @@ def _refuse_pairs(engine: str, after_mm: float, positions: int | None, residual:
 
 
 def _residual(case: ArchCase, points: int, out: str, figures: bool) -> None:
-    """The residual capacity curve, said one settlement a line."""
-    table = api.residual_curve(case, points, out=out, figures=figures)
-    for row in table.itertuples():
+    """The residual capacity curve, said one settlement a line as it is made."""
+
+    def said(row: dict) -> None:
         click.echo(
-            f"after {row.settlement_mm:6.2f} mm ({row.settlement_over_du:.0%} of du): collapse "
-            f"{row.static_capacity:.4g} {row.unit} on {row.static_hinges} (first loss {row.static_first_loss:.4g}), "
-            f"rigid blocks move at {row.rigid_capacity:.4g}"
+            f"after {row['settlement_mm']:6.2f} mm ({row['settlement_over_du']:.0%} of du): collapse "
+            f"{row['static_capacity']:.4g} {row['unit']} on {row['static_hinges']} (first loss "
+            f"{row['static_first_loss']:.4g}), rigid blocks first move at {row['rigid_capacity']:.4g}"
         )
+
+    click.echo(f"{case.name}: the support movement's static path to du, then the live load after {points} settlements")
+    api.residual_curve(case, points, out=out, figures=figures, on_row=said)
     click.echo(f"-> {out}/{case.name}_residual.csv")
 
 

@@ -68,6 +68,7 @@ class FillFace:
     width: float
     height: float
     inward: float
+    column_y: float  # the height of the centroid of the fill's column over the face (m)
 
 
 def fill_faces(geometry: ArchGeometry, fill: Backfill) -> list[FillFace]:
@@ -89,5 +90,17 @@ def fill_faces(geometry: ArchGeometry, fill: Backfill) -> list[FillFace]:
             mean = 0.5 * (h_a + h_b) * fill.unit_weight * geometry.depth
             point = a + (h_a + 2.0 * h_b) / (3.0 * (h_a + h_b)) * (b - a)
             inward = float(np.sign(q[1] - p[1]))  # the fill faces the chain's left side: a rise is pushed to +x
-            faces.append(FillFace(block, point, mean, abs(b[0] - a[0]), abs(b[1] - a[1]), inward))
+            # the column between the level surface and the face: its centroid (h_a^2 + h_a h_b + h_b^2) /
+            # (3 (h_a + h_b)) below the surface
+            column_y = surface - (h_a * h_a + h_a * h_b + h_b * h_b) / (3.0 * (h_a + h_b))
+            faces.append(FillFace(block, point, mean, abs(b[0] - a[0]), abs(b[1] - a[1]), inward, column_y))
     return faces
+
+
+def fill_inertia(geometry: ArchGeometry, fill: Backfill) -> tuple[tuple[int, float, float, float], ...]:
+    """The fill's columns the voussoirs carry, as a horizontal acceleration of 1 g pushes them: per face
+    (block, x, y of the column's centroid, its weight N), the pseudo-static equivalent of the fill's mass
+    moving with the arch (docs/loads.md, "Backfill"); none without fill."""
+    return tuple(
+        (face.block, float(face.point[0]), face.column_y, face.mean * face.width) for face in fill_faces(geometry, fill)
+    )

@@ -4,7 +4,8 @@ A vertical load of 1 N stands on the extrados, centred at a horizontal position 
 left springing's intrados point, spread uniformly over a width (0: concentrated; a width covering
 the span: a uniform load); each voussoir takes the part of it above its own extrados, at that part's
 centre. A horizontal acceleration of 1 g pushes each voussoir by its weight at its centroid (the
-quasi-static seismic check, the tilting table). Each is a set of point forces on the blocks, and the
+quasi-static seismic check, the tilting table), and the fill each voussoir carries by that fill's weight
+at its centroid (`model.backfill.fill_inertia`). Each is a set of point forces on the blocks, and the
 generalised forces it puts on every block (force x, force y, moment about the origin) are the form the
 limit analysis balances, so its multiplier at collapse is the collapse load in N or the collapse
 acceleration in g.
@@ -40,6 +41,9 @@ class LiveLoad:
     inclination: float = 0.0  # a load on the extrados: its angle from the downward vertical (rad, + toward +x)
     further: tuple[tuple[float, float], ...] = ()  # more such loads: (offset of its centre (m), magnitude ratio)
     dispersal: Dispersal | None = None  # a load on the fill's surface, spread through it (None: on the extrados)
+    # an acceleration: the fill's columns the voussoirs carry, pushed by their weight at their centroids,
+    # as (block, x, y, weight N) (`model.backfill.fill_inertia`; none without fill)
+    fill_inertia: tuple[tuple[int, float, float, float], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -55,9 +59,11 @@ class LoadPoints:
 def live_load_points(geometry: ArchGeometry, centroids: np.ndarray, weight: np.ndarray, load: LiveLoad) -> LoadPoints:
     """The unit live `load` as point forces on the voussoirs (none for `none`)."""
     if load.kind == ACCELERATION:
-        push = weight[1:-1] * (1.0 if load.toward_right else -1.0)
-        force = np.column_stack([push, np.zeros_like(push)])
-        return LoadPoints(np.arange(1, len(weight) - 1), centroids[1:-1, :2].copy(), force)
+        fill = np.array(load.fill_inertia, float).reshape(-1, 4)
+        blocks = np.concatenate([np.arange(1, len(weight) - 1), fill[:, 0].astype(int)])
+        points = np.vstack([centroids[1:-1, :2], fill[:, 1:3]])
+        push = np.concatenate([weight[1:-1], fill[:, 3]]) * (1.0 if load.toward_right else -1.0)
+        return LoadPoints(blocks, points, np.column_stack([push, np.zeros_like(push)]))
     if load.kind == VERTICAL:
         shares = [
             (block, ratio * newtons, point)

@@ -78,25 +78,28 @@ class StaticRecords:
     states: list[dict[str, Any]] = field(default_factory=list)
     friction: dict[str, Any] = field(default_factory=dict)
     iterations: int = 0
+    step: int = 0  # the last recorded state's `step`: the Newton iterations so far, at least one more a state
 
     def add(self, state: StaticState, label: str | None = None) -> None:
         """Record `state`: where the run keeps its tables, a series row, its joints and the snapshot
         under `label`; an equilibrium's friction extremes always (the summary's `friction`)."""
         self.iterations += state.iterations
+        # a state its predictor reached without an iteration still has a step of its own (the tables key on it)
+        self.step = max(self.step + 1, self.iterations)
         delta_mm = self.after_mm if self.load_unit else units.to_mm(state.lam)
         load = (state.lam, self.load_unit) if self.load_unit else None
         f = state.forces
         if self.keep_tables:
             pos, rot = self.arch.poses(state.u)
             snap, hinges = self._snapshot(state, pos, rot)
-            common = {"stage": state.stage, "step": self.iterations, "delta_mm": delta_mm}
+            common = {"stage": state.stage, "step": self.step, "delta_mm": delta_mm}
             if load is not None:
                 common[f"{LOAD_COLUMN}_{self.load_unit}"] = state.lam
             self.series.append({**common, **self.series_columns(state, pos)})
             self.joints.extend(joint_rows(snap, common))
-            self.states.append(state_entry(state.stage, self.iterations, delta_mm, pos, rot, load))
+            self.states.append(state_entry(state.stage, self.step, delta_mm, pos, rot, load))
             if label:
-                self.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, self.iterations)
+                self.snapshots[label] = snapshot_entry(snap, hinges, delta_mm, self.step)
         if state.stage == Stage.EQUILIBRIUM:
             use = mobilised_friction(f.normal_force, f.shear_force, self.arch.law.tan_friction)
             friction_extremes(self.friction, {"friction_use": use, "slip": state.slip}, delta_mm)

@@ -5,11 +5,12 @@ collapse acceleration against t/R, the residual capacity after a settlement."""
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 
 import pandas as pd
 
 from yadearch.case.config import ArchCase, preset
+from yadearch.errors import CaseError, RunFailedError
 from yadearch.model import units
 from yadearch.solve.limit_lp import weight_load
 from yadearch.solve.load_lp import live_forces, load_analysis, load_capacity
@@ -102,10 +103,13 @@ def semicircle_thickness_mm(t_over_r: float) -> float:
     return 2.0 * SEMICIRCLE_RADIUS_MM * t_over_r / (2.0 - t_over_r)
 
 
-def residual_capacities(base: ArchCase, fractions: Iterable[float] = SETTLEMENT_FRACTIONS) -> pd.DataFrame:
+def residual_capacities(
+    base: ArchCase, fractions: Iterable[float] = SETTLEMENT_FRACTIONS, on_row: Callable[[dict], None] | None = None
+) -> pd.DataFrame:
     """The live load after the base case's support movement to fractions of its static du (the end
     of its path at its own kn): on the static path (first loss, collapse) and by rigid blocks in the
-    rigid march's state there (the load that first moves them: their open hinges are pins)."""
+    rigid march's state there (the load that first moves them: their open hinges are pins); `on_row`
+    is given each row as it is made (a large arch's take tens of seconds)."""
     du = static_du_mm(base)
     rows = []
     for fraction in fractions:
@@ -117,14 +121,28 @@ def residual_capacities(base: ArchCase, fractions: Iterable[float] = SETTLEMENT_
              "static_capacity": static["static_capacity"], "static_hinges": static["static_hinges"],
              "unit": static["unit"]}
         )  # fmt: skip
+        if on_row is not None:
+            on_row(rows[-1])
     return pd.DataFrame(rows)
 
 
 def static_du_mm(case: ArchCase) -> float:
-    """The end of the case's support-movement path on the static engine (mm; inf if it stands)."""
+    """The end of the case's support-movement path on the static engine (mm); an error where it has
+    none to take fractions of: the arch stands to the movement's end, or the path is unresolved."""
     loading = StaticLoading.of(case)
     loading.selfweight()
-    return units.to_mm(loading.follow().du)
+    path = loading.follow()
+    if path.collapsed:
+        return units.to_mm(path.du)
+    if path.unresolved:
+        raise RunFailedError(
+            f"the support movement's static path is unresolved past {units.to_mm(path.lower):.2f} mm: no du to "
+            "take the settlements from"
+        )
+    raise CaseError(
+        f"loading.max_support_displacement_mm = {case.loading.max_support_displacement_mm:g}: the arch stands to "
+        "the end of its support movement, no du to take the settlements from; set it larger to follow the path further"
+    )
 
 
 def paper_arch() -> ArchCase:
