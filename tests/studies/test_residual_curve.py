@@ -33,3 +33,23 @@ def test_a_count_outside_its_range_is_refused(points):
 def test_an_arch_without_a_live_load_is_refused():
     with pytest.raises(CaseError, match="loads.live_load is .none.: say which load grows"):
         ya.residual_curve(ya.preset("set2"), 2)
+
+
+def test_an_arch_that_stands_to_the_end_of_its_movement_names_the_setting():
+    """It said "does not carry its support movement to inf mm (collapse at 3172.45 mm)" (sixth user trial)."""
+    with pytest.raises(CaseError, match=r"^loading.max_support_displacement_mm = 20: the arch stands to the end"):
+        ya.residual_curve(CASE.replace(max_support_displacement_mm=20.0), 2)
+
+
+def test_the_command_takes_a_joint_stiffness_and_says_each_settlement_as_it_is_made(tmp_path):
+    """--residual runs the static engine: --kn is read without --engine static (it was refused)."""
+    from click.testing import CliRunner
+
+    from yadearch.cli.commands import cli
+
+    options = ["--set", "n_voussoirs=15", "--set", "live_load=vertical", "--kn", "10", "--residual", "2"]
+    result = CliRunner().invoke(cli, ["loads", "--preset", "set2", *options, "--out", str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    said = result.output.splitlines()
+    assert said[1].startswith("after   0.00 mm (0% of du): collapse") and said[2].startswith("after ")
+    assert (tmp_path / "custom_residual.csv").is_file()  # a new arch is not filed as the paper's
