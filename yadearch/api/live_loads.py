@@ -33,6 +33,7 @@ from yadearch.solve.rigid import rigid_arch
 from yadearch.solve.static_state import StaticEngineError
 from yadearch.static.records import load_path_records
 from yadearch.static.simulate import selfweight_failure
+from yadearch.studies.loads.critical import over_joint_positions, with_critical
 from yadearch.studies.loads.engines import dem_influence_line
 from yadearch.studies.loads.rigid import influence_line
 from yadearch.studies.loads.static import static_influence_line
@@ -144,7 +145,9 @@ def load_json(result: LoadCapacity, case: ArchCase, after_mm: float = 0.0) -> di
         "outcome": moved if finite else ("cannot stand" if math.isnan(result.multiplier) else "no collapse"),
         "unused": unread_by_rigid_blocks(case),  # the case's settings rigid blocks do not read
         "arch_weight_N": result.arch_weight_N,
+        **({"fill_weight_N": result.fill_weight_N} if result.fill_weight_N else {}),
         f"hinges_at_{moved.replace(' ', '_')}": [p.label for p in result.pivots],
+        "sliding_interfaces": list(result.sliding),
         "case": case.to_dict(),
     }
 
@@ -164,7 +167,9 @@ def load_influence(
     figures: bool = True,
 ) -> pd.DataFrame:
     """The influence line of `case`'s arch: a concentrated vertical load's capacity (N) at `positions`
-    points evenly across the span (k / (positions + 1)), with each mechanism's hinges, by `engine`:
+    points evenly across the span (k / (positions + 1)), with each mechanism's hinges, and for rigid blocks
+    and the static engine the critical position refined between the least one's neighbours (`sampled`
+    False; `studies.loads.critical`), by `engine`:
     'rigid' blocks, or on the 'static' engine's or the 'dem''s path (their first loss and the rigid line
     beside it; the DEM's load paths in child processes, `jobs` at a time, under OUT/NAME_influence_runs,
     so it needs `out`); with `out`, OUT/NAME_influence.csv and (with `figures`) its figure
@@ -185,7 +190,9 @@ def load_influence(
         cores = max(1, (os.cpu_count() or 1) // case.numerics.threads)  # one core a process by default
         table = dem_influence_line(case, where, folder / f"{case.name}_influence_runs", jobs or cores)
     else:
-        table = static_influence_line(case, where) if engine == "static" else influence_line(case, where)
+        line = static_influence_line if engine == "static" else influence_line
+        at = case.with_overrides({"live_load": "vertical"})  # the line's own load, whatever the case's
+        table = with_critical(line(case, where), lambda x: line(case, (x,)).iloc[0].to_dict(), over_joint_positions(at))
     if folder is not None:
         write_csv_atomically(folder / f"{case.name}_influence.csv", table)
         if figures:

@@ -179,7 +179,10 @@ def _least(table: pd.DataFrame) -> str:
         return "no collapse at any position (the load carried however large, or no answer)"
     weakest = table[table["collapse_load_N"] <= least * (1.0 + TIED_LOADS)]  # a symmetric arch: mirror positions
     where = [f"{p:.3g}" for p in weakest["position_over_span"]]
-    return f"least {least:.4g} N at {' and '.join(where)} of the span ({weakest['hinges'].iloc[0]} at {where[0]})"
+    refined = " (refined between the positions)" if "sampled" in weakest and not weakest["sampled"].all() else ""
+    return (
+        f"least {least:.4g} N at {' and '.join(where)} of the span{refined} ({weakest['hinges'].iloc[0]} at {where[0]})"
+    )
 
 
 def _refuse_pairs(engine: str, after_mm: float, positions: int | None, residual: int | None) -> None:
@@ -205,7 +208,7 @@ def _residual(case: ArchCase, points: int, out: str, figures: bool) -> None:
         click.echo(
             f"after {row['settlement_mm']:6.2f} mm ({row['settlement_over_du']:.0%} of du): collapse "
             f"{row['static_capacity']:.4g} {row['unit']} on {row['static_hinges']} (first loss "
-            f"{row['static_first_loss']:.4g}), rigid blocks first move at {row['rigid_capacity']:.4g}"
+            f"{row['static_first_loss']:.4g}), rigid blocks first move at {row['rigid_first_motion']:.4g}"
         )
 
     click.echo(f"{case.name}: the support movement's static path to du, then the live load after {points} settlements")
@@ -227,8 +230,8 @@ def _on_path(
         outcome = f"unresolved: no equilibrium nor runaway found past {path.reach:.4g} {unit} (no capacity)"
     else:
         outcome = f"no collapse up to {path.reach:.4g} {unit}"
-    if math.isfinite(path.rigid):
-        rigid = f"{path.rigid:.4g} {unit} on {' '.join(path.rigid_hinges)}"
+    if math.isfinite(path.rigid):  # after a movement, the settled arch's open hinges are pins: its first motion
+        rigid = f"{'first move at ' if after_mm else ''}{path.rigid:.4g} {unit} on {' '.join(path.rigid_hinges)}"
     else:
         rigid = f"none ({path.rigid_note})" if path.rigid_note else "no collapse however large"
     states = f" and its states {out}/{case.name}_load_path/ (yadearch animate, export)"
@@ -272,6 +275,11 @@ def _rigid_outcome(result: LoadCapacity) -> str:
     elif math.isinf(result.multiplier):
         outcome = "no collapse however large (its thrust line stays within the ring; rigid blocks do not crush)"
     else:
-        share = f" ({result.multiplier / result.arch_weight_N:.3f} of the arch's weight)" if result.unit == "N" else ""
-        outcome = f"collapse at {result.multiplier:.4g} {result.unit}{share} on {result.hinge_labels}"
+        share = ""
+        if result.unit == "N":
+            with_fill = result.arch_weight_N + result.fill_weight_N
+            fill = f", {result.multiplier / with_fill:.3f} of arch and fill" if result.fill_weight_N else ""
+            share = f" ({result.multiplier / result.arch_weight_N:.3f} of the arch's weight{fill})"
+        slides = f", sliding at {' and '.join(map(str, result.sliding))}" if result.sliding else ""
+        outcome = f"collapse at {result.multiplier:.4g} {result.unit}{share} on {result.hinge_labels}{slides}"
     return outcome

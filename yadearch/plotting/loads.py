@@ -73,7 +73,7 @@ def _draw_residual(ax, residual: pd.DataFrame, ylabel: str, title: str | None = 
     settled = residual["settlement_mm"]
     ax.plot(settled, residual["static_capacity"], "o-", ms=3.0, color="C0", label="static: collapse")
     ax.plot(settled, residual["static_first_loss"], "o", ms=3.0, mfc="none", color="C0", label="static: first loss")
-    ax.plot(settled, residual["rigid_capacity"], "^", ms=4.0, color="C2", label="rigid blocks: first motion")
+    ax.plot(settled, residual["rigid_first_motion"], "^", ms=4.0, color="C2", label="rigid blocks: first motion")
     # no line through the rigid points: their value drops at once when the hinges open, not along a slope
     ax.set_xlabel(r"support movement before loading $\delta$ (mm)")
     ax.set_ylabel(ylabel)
@@ -104,6 +104,10 @@ def _draw_influence(ax, influence: pd.DataFrame, arch_weight_N: float, engine: s
         ax.plot(
             influence["position_over_span"], influence["rigid_load_N"], "--", lw=0.8, color="0.4", label="rigid blocks"
         )
+    if "sampled" in influence and not influence["sampled"].all():  # the critical positions found between samples
+        critical = influence[~influence["sampled"].astype(bool)]
+        x, load = critical["position_over_span"], critical["collapse_load_N"]
+        ax.plot(x, load, "v", ms=5.0, mfc="none", color="C3", label=f"critical: {load.min():.4g} N")
     if not np.isfinite(influence["collapse_load_N"]).any():  # a load spread over the span, say: nothing to draw
         ax.text(0.5, 0.5, "no collapse at any position", transform=ax.transAxes, ha="center", va="center")
         ax.set_xlim(0.0, 1.0)

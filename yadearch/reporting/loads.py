@@ -151,8 +151,8 @@ def _markdown(
         "",
         "Residual capacity to a point load at the quarter span after a settlement of the right support "
         "to fractions of du (the static engine's, kn 5.2 N/mm3): on the static path from the settled "
-        "state (its first loss of stability and its collapse), and by rigid blocks in the rigid march's "
-        "state at the same settlement:",
+        "state (its first loss of stability and its collapse), and the load that first moves rigid blocks in "
+        "the rigid march's state at the same settlement (its open hinges act as pins; at rest, their collapse):",
         "",
         *markdown_table(
             [
@@ -161,7 +161,7 @@ def _markdown(
                 "static first loss (N)",
                 "static collapse (N)",
                 "static hinges",
-                "rigid blocks (N)",
+                "rigid blocks first move (N)",
                 "rigid hinges",
             ],
             [
@@ -171,7 +171,7 @@ def _markdown(
                     f"{r.static_first_loss:.3f}",
                     f"{r.static_capacity:.3f}",
                     r.static_hinges,
-                    f"{r.rigid_capacity:.3f}",
+                    f"{r.rigid_first_motion:.3f}",
                     r.rigid_hinges,
                 ]
                 for r in residual.itertuples()

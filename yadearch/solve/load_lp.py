@@ -19,6 +19,7 @@ from yadearch.case.held import require_live_load, unheld
 from yadearch.case.mechanics import live_load
 from yadearch.model.loads import UNITS, LoadPoints, generalised, live_load_points
 from yadearch.solve.limit_lp import (
+    HINGE_RATE_FRACTION,
     LP_METHOD,
     LP_OPTIONS,
     STATUS_INFEASIBLE,
@@ -31,6 +32,8 @@ from yadearch.solve.limit_lp import (
 )
 from yadearch.solve.pose import march_placement
 from yadearch.solve.rigid import LimitError, Pivot, Placement, RigidArch, at_rest, contacts, rigid_arch
+
+FRICTION_CAP_TOLERANCE = 1e-6  # a joint whose shear is within this fraction of its friction cap is at it
 
 
 @dataclass(frozen=True)
@@ -45,6 +48,8 @@ class LoadCapacity:
     shear: np.ndarray = field(repr=False)
     unit: str = "N"  # of the multiplier: the live load is 1 N, or 1 g
     arch_weight_N: float = math.nan  # the voussoirs' weight, to read a load against
+    fill_weight_N: float = 0.0  # the backfill's weight the voussoirs carry
+    sliding: tuple[int, ...] = ()  # the interfaces (numbered from 1) the mechanism slides, at their friction cap
 
     @property
     def hinge_labels(self) -> str:
@@ -59,7 +64,8 @@ def load_analysis(case: ArchCase, placement: Placement | None = None) -> LoadCap
     load = live_load(case, arch.geometry)
     placement = placement or at_rest(arch)
     found = load_capacity(arch, live_forces(case, arch, placement), placement)
-    return replace(found, unit=UNITS[load.kind], arch_weight_N=float(arch.weight[1:-1].sum()))
+    fill = -float(arch.fixed.force[:, 1].sum())  # the fixed loads: the fill's, the live load unheld
+    return replace(found, unit=UNITS[load.kind], arch_weight_N=float(arch.weight[1:-1].sum()), fill_weight_N=fill)
 
 
 def live_forces(case: ArchCase, arch: RigidArch, placement: Placement | None = None) -> np.ndarray:
@@ -119,7 +125,9 @@ def load_capacity(
     velocity = result.eqlin.marginals * rows  # the dual: the voussoirs' virtual velocities
     pivots = _hinges(arch, a_v, velocity, c.touching)
     normal = np.column_stack([x[:m], x[m : 2 * m]])
-    return LoadCapacity(float(result.x[-1] * scale), pivots, normal, x[2 * m : 3 * m])
+    shear = x[2 * m : 3 * m]
+    sliding = _sliding(arch, a_v.T @ velocity, normal, shear)
+    return LoadCapacity(float(result.x[-1] * scale), pivots, normal, shear, sliding=sliding)
 
 
 def _hinges(arch: RigidArch, a_v: np.ndarray, velocity: np.ndarray, touching: np.ndarray) -> tuple[Pivot, ...]:
@@ -129,6 +137,16 @@ def _hinges(arch: RigidArch, a_v: np.ndarray, velocity: np.ndarray, touching: np
     rates = a_v.T @ velocity
     gaps = np.abs(np.column_stack([rates[:m], rates[m : 2 * m]]))  # the dual's sign is the programme's
     return mechanism_pivots(arch, omega, gaps, touching)[1]
+
+
+def _sliding(arch: RigidArch, rates: np.ndarray, normal: np.ndarray, shear: np.ndarray) -> tuple[int, ...]:
+    """The interfaces (from 1) the mechanism slides: a sliding rate above HINGE_RATE_FRACTION of the
+    largest rate (the dual's, of every corner and shear force), the friction at its cap."""
+    m = arch.n_joints
+    slide = np.abs(rates[2 * m : 3 * m])
+    largest = max(float(np.abs(rates).max()), 1e-300)
+    capped = np.abs(shear) >= (1.0 - FRICTION_CAP_TOLERANCE) * arch.tan_phi * normal.sum(axis=1)
+    return tuple(int(k) + 1 for k in np.flatnonzero((slide > HINGE_RATE_FRACTION * largest) & capped))
 
 
 def residual_capacity(case: ArchCase, at_mm: float) -> LoadCapacity:

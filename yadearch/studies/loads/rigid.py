@@ -116,7 +116,7 @@ def residual_capacities(
         at_mm = fraction * du
         static = static_row(base, at_mm)  # with the rigid answer of the same state
         rows.append(
-            {"settlement_over_du": fraction, "settlement_mm": at_mm, "rigid_capacity": static["rigid_capacity"],
+            {"settlement_over_du": fraction, "settlement_mm": at_mm, "rigid_first_motion": static["rigid_capacity"],
              "rigid_hinges": static["rigid_hinges"], "static_first_loss": static["static_first_loss"],
              "static_capacity": static["static_capacity"], "static_hinges": static["static_hinges"],
              "unit": static["unit"]}
