@@ -55,6 +55,18 @@ def test_unknown_keys_are_refused():
         case_from_dict({"interface": {"kn": 3}})
 
 
+def test_a_misspelt_parameter_is_named_with_the_one_meant():
+    """Sixth user trial: a misspelling got no suggestion (and a case file's section no pointer to params)."""
+    with pytest.raises(CaseError, match=r"^unknown parameter 'load_positon_over_span' \(did you mean 'load_position_"):
+        preset("set2").with_overrides({"load_positon_over_span": 0.3})
+    with pytest.raises(
+        CaseError, match=r"'geometry.thicknes_mm' \(did you mean 'geometry.thickness_mm'\?\); see `yadearch"
+    ):
+        case_from_dict({"geometry": {"thicknes_mm": 30.0}})
+    with pytest.raises(CaseError, match=r"^unknown parameter 'geometry.bogus'; see `yadearch params` for the list$"):
+        preset("set2").with_overrides({"geometry.bogus": 1})
+
+
 def test_cli_reports_bad_input_in_one_line_without_traceback(capsys):
     code = main(["run", "--preset", "set2", "--kn", "-1"])
     err = capsys.readouterr().err

@@ -151,6 +151,7 @@ def probes() -> list[list[str]]:
         ["loads", "--preset", "set2", "--set", "live_load=vertical", "--positions", "3", "--after-mm", "20"],
         ["loads", "--preset", "set2", "--set", "live_load=vertical", "--residual", "2", "--after-mm", "10"],
         ["loads", "--preset", "set2", "--set", "live_load=vertical", "--residual", "2", "--engine", "dem"],
+        ["loads", "--preset", "set2", "--set", "live_load=vertical", "--residual", "0"],
         ["loads", "--preset", "set2", "--set", "live_load=vertical", "--no-descending"],
         ["loads", "--preset", "set2", "--set", "live_load=vertical", "--set", "load_voussoir=10", "--positions", "3"],
         ["loads", "--preset", "set2", "--set", "live_load=horizontal_acceleration", "--positions", "3"],

@@ -7,9 +7,10 @@ converts them to SI in one place. Every field is overridable from TOML or the CL
 from __future__ import annotations
 
 import dataclasses
+import difflib
 import math
 import tomllib
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Any
@@ -34,6 +35,7 @@ from yadearch.case.sections import (
 from yadearch.case.shape import refuse_unread_sizes
 from yadearch.errors import CaseError
 
+SPELLING_CUTOFF = 0.8  # difflib's similarity from which an unknown parameter is taken for a misspelling
 TEXT_ENCODING = "utf-8-sig"  # UTF-8, with or without the byte-order mark some editors (Excel, Notepad) write
 
 
@@ -121,7 +123,7 @@ def _resolve_key(key: str) -> tuple[str | None, str]:
         name = RENAMED.get((section, name), name)
         _refuse_retired(section, name)
         if section not in SECTIONS or name not in {f.name for f in fields(SECTIONS[section])}:
-            raise CaseError(f"unknown parameter {key!r}")
+            raise unknown_parameter(key, (f"{s}.{f.name}" for s, cls in SECTIONS.items() for f in fields(cls)))
         return section, name
     key = next((new for (_, old), new in RENAMED.items() if old == key), key)
     for section, name in RETIRED:
@@ -129,8 +131,16 @@ def _resolve_key(key: str) -> tuple[str | None, str]:
             _refuse_retired(section, name)
     owners = [s for s, cls in SECTIONS.items() if key in {f.name for f in fields(cls)}]
     if not owners:
-        raise CaseError(f"unknown parameter {key!r}; see `yadearch params` for the list")
+        raise unknown_parameter(key, (f.name for cls in SECTIONS.values() for f in fields(cls)))
     return owners[0], key
+
+
+def unknown_parameter(key: str, names: Iterable[str]) -> CaseError:
+    """The error for a parameter `key` the case does not have, naming the closest of `names` where one
+    is near (a misspelling)."""
+    close = difflib.get_close_matches(key, list(names), n=1, cutoff=SPELLING_CUTOFF)
+    hint = f" (did you mean {close[0]!r}?)" if close else ""
+    return CaseError(f"unknown parameter {key!r}{hint}; see `yadearch params` for the list")
 
 
 def parameter_section(key: str) -> str | None:
@@ -215,7 +225,7 @@ def case_from_dict(data: dict[str, Any]) -> ArchCase:
         names = {f.name for f in fields(cls)}
         bad = set(values) - names
         if bad:
-            raise CaseError(f"unknown parameter(s) {sorted(bad)} in [{section_name}]")
+            raise unknown_parameter(f"{section_name}.{sorted(bad)[0]}", (f"{section_name}.{n}" for n in names))
         for f in fields(cls):
             if f.name in values and f.type in ("int", int) and isinstance(values[f.name], float):
                 if values[f.name].is_integer():

@@ -10,7 +10,7 @@ import pandas as pd
 from click.core import ParameterSource
 
 from yadearch import api
-from yadearch.api.live_loads import loads_file
+from yadearch.api.live_loads import RESIDUAL_POINTS_RANGE, loads_file
 from yadearch.case.config import ArchCase
 from yadearch.case.mechanics import load_place
 from yadearch.case.paper import model_values_text, paper_model_values
@@ -188,6 +188,9 @@ def _least(table: pd.DataFrame) -> str:
 def _refuse_pairs(engine: str, after_mm: float, positions: int | None, residual: int | None) -> None:
     """UsageError in one line for options that do not go together (or that the engine does not read)."""
     given = click.get_current_context().get_parameter_source
+    low, high = RESIDUAL_POINTS_RANGE
+    if residual is not None and not low <= residual <= high:  # the API names its argument `points`
+        raise click.UsageError(f"--residual must be an integer in [{low}, {high}], got {residual}")
     if residual is not None and (after_mm or positions is not None):
         other = "--after-mm" if after_mm else "--positions"
         raise click.UsageError(f"--residual makes its own settlements, at rest and after; drop {other}")

@@ -14,14 +14,19 @@ from yadearch import __version__
 def git_revision() -> str | None:
     """The git commit of the yadearch source tree (with '+dirty' if modified), or None: asked once a
     process, as the code a process runs is the code it imported (a static worker serves a campaign)."""
-    root = Path(__file__).resolve().parent.parent
+    return tree_revision(Path(__file__).resolve().parents[1])
+
+
+def tree_revision(package: Path) -> str | None:
+    """The git commit checked out where the folder `package` is, with '+dirty' where a tracked file in
+    that folder is modified; None outside a git checkout."""
     try:
         rev = subprocess.run(
-            ["git", "rev-parse", "--short=12", "HEAD"], cwd=root, capture_output=True, text=True, check=True
+            ["git", "rev-parse", "--short=12", "HEAD"], cwd=package, capture_output=True, text=True, check=True
         ).stdout.strip()
         dirty = subprocess.run(
-            ["git", "status", "--porcelain", "--untracked-files=no", "--", "yadearch"],
-            cwd=root,
+            ["git", "status", "--porcelain", "--untracked-files=no", "--", "."],
+            cwd=package,
             capture_output=True,
             text=True,
             check=True,

@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 
 from yadearch.case.bounds import MAX_RUNS
+from yadearch.case.config import unknown_parameter
 from yadearch.case.materials import MATERIAL_KEY, PRESET_FIELD
 from yadearch.case.sections import parameter_docs
 from yadearch.case.support import MOVEMENT_KEY
@@ -113,7 +114,7 @@ def check_parameter(key: str, numeric: bool = False) -> None:
         raise CaseError(f"{key} names a choice, not a number; vary the parameters it stands for")
     qualified = {q for q, _, _ in parameter_docs()}
     if key not in qualified and key not in _BARE_NAMES and key not in NAMED_KEYS:
-        raise CaseError(f"unknown parameter {key!r}; see `yadearch params` for the list")
+        raise unknown_parameter(key, [*qualified, *_BARE_NAMES, *NAMED_KEYS])
 
 
 def qualified_name(key: str) -> str:
