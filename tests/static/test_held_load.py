@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -64,3 +65,31 @@ def test_a_load_the_arch_does_not_carry_or_that_the_dem_would_hold_is_refused_in
         assert main(args) != 0
         message = capsys.readouterr().err.strip()  # the run's own log lines go to standard output
         assert words in message and len(message.splitlines()) == 1, message
+
+
+def test_the_collapse_figure_draws_the_held_load_where_its_block_carried_it(tmp_path):
+    """The run's collapse figure did not show the load it held (sixth user trial): an arrow now ends just
+    above the load's point as its voussoir carried it to the collapse, and says the load."""
+    from matplotlib.patches import FancyArrow
+
+    from yadearch.analysis.blocks import block_centroids, case_geometry, placed_points
+    from yadearch.case.config import case_from_dict
+    from yadearch.case.mechanics import live_load
+    from yadearch.model.loads import live_load_points
+    from yadearch.analysis.run import analyse_run, load_run
+    from yadearch.plotting.run_figures import collapse_figure
+
+    _run(tmp_path, "held", "held_load_N=4")
+    run = load_run(tmp_path / "held")
+    figure = collapse_figure(run, analyse_run(run))
+    ax = figure.axes[0]
+    arrows = [p for p in ax.patches if isinstance(p, FancyArrow)]
+    assert len(arrows) == 1 and any(t.get_text() == "held load 4 N" for t in ax.texts)
+    geometry = case_geometry(run.case)
+    points = live_load_points(geometry, block_centroids(geometry), 0 * block_centroids(geometry)[:, 0],
+                              live_load(case_from_dict(run.case), geometry))  # fmt: skip
+    carried = placed_points(geometry, run.snapshots["collapse"], points.block, points.point) * 1e3
+    tip = arrows[0].get_xy()  # the arrow's outline: its head is the lowest vertex
+    head = tip[np.argmin(tip[:, 1])]
+    assert head[0] == pytest.approx(carried[:, 0].mean(), abs=0.5)
+    assert 0.0 < head[1] - carried[:, 1].mean() < 0.02 * geometry.span * 1e3

@@ -38,6 +38,15 @@ def _placed(point: np.ndarray, block: int, pos0: np.ndarray, pos: np.ndarray, ro
     return pos[block] + np.array([c * d[0] - s * d[1], s * d[0] + c * d[1]])
 
 
+def placed_points(
+    geometry: ArchGeometry, snapshot: dict[str, Any], blocks: np.ndarray, points: np.ndarray
+) -> np.ndarray:
+    """(k, 2) points (m) given on the undeformed blocks `blocks`, carried by them to the snapshot's poses."""
+    pos0 = block_centroids(geometry)
+    pos, rot = np.asarray(snapshot["pos_m"], float), np.asarray(snapshot["rot_rad"], float)
+    return np.array([_placed(p, int(b), pos0, pos, rot) for b, p in zip(blocks, points)]).reshape(-1, 2)
+
+
 def joint_points(geometry: ArchGeometry, snapshot: dict[str, Any], side: str) -> np.ndarray:
     """(n_joints, 2) intrados (side "I") or extrados ("E") end of every joint, carried by the block on
     its left, as placed in the snapshot (m): where a hinge's pivot is drawn."""

@@ -20,6 +20,7 @@ from yadearch.analysis.run import RunAnalysis
 from yadearch.errors import RunFolderError
 from yadearch.model.geometry import front_face
 from yadearch.plotting.blocks import block_legend_entries, draw_blocks
+from yadearch.plotting.held_load import draw_held_arrow, held_arrow
 from yadearch.plotting.hinge_marks import mark_hinge, place_hinge_labels
 from yadearch.plotting.house import (
     AXIS_MARGINS_CM,
@@ -110,6 +111,9 @@ def collapse_figure(
         raise RunFolderError(f"{run.path} has no {snapshot!r} or 'end' snapshot to draw")
     outlines = snapshot_outlines(geometry, state)
     all_xy = np.vstack([front_face(b) for b in geometry.blocks] + outlines) * 1e3
+    held = held_arrow(run.case, geometry, state, np.vstack(outlines) * 1e3)  # a load held while the support moved
+    if held is not None:
+        all_xy = np.vstack([all_xy, [held.tail]])
     span = np.ptp(all_xy[:, 0])
     xlim = (all_xy[:, 0].min() - LABEL_ROOM * span, all_xy[:, 0].max() + LABEL_ROOM * span)
     ylim = (all_xy[:, 1].min() - 0.03 * span, all_xy[:, 1].max() + 0.07 * span)
@@ -137,6 +141,8 @@ def collapse_figure(
     if snapshot == "collapse" and analysis.du_mm is not None:  # the first state past the path's end
         blocks += rf", past $d_u$ = {analysis.du_mm:.2f} mm"
     block_legend_entries(ax, blocks)
+    if held is not None:
+        draw_held_arrow(ax, held, span)
     if own_figure:  # rows above the drawing, room made for them: inside, a free corner may be a hinge label's
         ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), handlelength=1.5, frameon=False)
     else:  # a caller's axes: inside, under the crown, clear of a title or a panel above
