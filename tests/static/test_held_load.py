@@ -73,10 +73,10 @@ def test_the_collapse_figure_draws_the_held_load_where_its_block_carried_it(tmp_
     from matplotlib.patches import FancyArrow
 
     from yadearch.analysis.blocks import block_centroids, case_geometry, placed_points
+    from yadearch.analysis.run import analyse_run, load_run
     from yadearch.case.config import case_from_dict
     from yadearch.case.mechanics import live_load
     from yadearch.model.loads import live_load_points
-    from yadearch.analysis.run import analyse_run, load_run
     from yadearch.plotting.run_figures import collapse_figure
 
     _run(tmp_path, "held", "held_load_N=4")
