@@ -65,6 +65,8 @@ def test_a_misspelt_parameter_is_named_with_the_one_meant():
         case_from_dict({"geometry": {"thicknes_mm": 30.0}})
     with pytest.raises(CaseError, match=r"^unknown parameter 'geometry.bogus'; see `yadearch params` for the list$"):
         preset("set2").with_overrides({"geometry.bogus": 1})
+    with pytest.raises(CaseError, match=r"^unknown parameters \['a', 'b'\] in \[geometry\]; see `yadearch params`"):
+        case_from_dict({"geometry": {"a": 1, "b": 2}})
 
 
 def test_cli_reports_bad_input_in_one_line_without_traceback(capsys):

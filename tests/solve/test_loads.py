@@ -166,7 +166,7 @@ def test_the_influence_lines_least_is_said_at_every_position_that_ties_with_it(t
     args = ["loads", "--preset", "set2", "--set", "live_load=vertical", "--positions", "3", "--no-figures"]
     assert main([*args, "--out", str(tmp_path)]) == 0
     said = [line for line in capsys.readouterr().out.splitlines() if "influence line" in line]
-    least = "least 8.557 N at 0.368 and 0.632 of the span (refined between the positions) (10I 23E 41I 56E at 0.368)"
+    least = "least 8.557 N at 0.368 and 0.632 of the span (refined between the positions; 10I 23E 41I 56E at 0.368)"
     assert len(said) == 1 and least in said[0], said
 
 
@@ -185,3 +185,25 @@ def test_rigid_loads_name_the_case_settings_they_do_not_read(tmp_path):
     written = json.loads((tmp_path / "set2_loads.json").read_text())
     assert written["unused"] == ["interface.kn_N_per_mm3", "loads.fill_passive_displacement_mm"]
     assert told.multiplier == quiet.multiplier
+
+
+def test_the_answer_gives_the_fills_weight_the_sliding_joints_and_warns_of_the_models_values(tmp_path, capsys):
+    """NAME_loads.json gives the fill's weight (the arch's alone was given) and the sliding joints; the
+    command reads the load over arch and fill, and warns of a new arch's 1:10 model material."""
+    import json
+
+    from yadearch.case.mechanics import arch_geometry, backfill
+    from yadearch.cli.commands import main
+    from yadearch.model.backfill import backfill_points
+
+    case = preset("set2").with_overrides({"live_load": "vertical", "fill_depth_mm": 20.0})
+    fill = -backfill_points(arch_geometry(case), backfill(case)).force[:, 1].sum()
+    args = ["loads", "--preset", "set2", "--set", "live_load=vertical", "--no-figures", "--out", str(tmp_path)]
+    assert main([*args, "--set", "fill_depth_mm=20", "--set", "friction_deg=10"]) == 0
+    written = json.loads((tmp_path / "set2_loads.json").read_text())
+    assert written["fill_weight_N"] == pytest.approx(fill, rel=1e-12) and written["sliding_interfaces"]
+    share = written["collapse_multiplier"] / (written["arch_weight_N"] + fill)
+    assert f"{share:.3f} of arch and fill" in capsys.readouterr().out
+    assert main([*args, "--set", "n_voussoirs=15"]) == 0
+    said = capsys.readouterr().out.splitlines()
+    assert said[-1].startswith("warning: this arch is not the paper's") and "interface." not in said[-1]

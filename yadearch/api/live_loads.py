@@ -168,8 +168,8 @@ def load_influence(
 ) -> pd.DataFrame:
     """The influence line of `case`'s arch: a concentrated vertical load's capacity (N) at `positions`
     points evenly across the span (k / (positions + 1)), with each mechanism's hinges, and for rigid blocks
-    and the static engine the critical position refined between the least one's neighbours (`sampled`
-    False; `studies.loads.critical`), by `engine`:
+    and the static engine the critical position (`sampled` False: the positions over joints around each
+    sampled least tried, the best polished; `studies.loads.critical`), by `engine`:
     'rigid' blocks, or on the 'static' engine's or the 'dem''s path (their first loss and the rigid line
     beside it; the DEM's load paths in child processes, `jobs` at a time, under OUT/NAME_influence_runs,
     so it needs `out`); with `out`, OUT/NAME_influence.csv and (with `figures`) its figure

@@ -223,9 +223,11 @@ def case_from_dict(data: dict[str, Any]) -> ArchCase:
         if section_name == MATERIAL_KEY:  # a named material gives the values the case does not
             values = fill_from_preset(values, given=set(values))
         names = {f.name for f in fields(cls)}
-        bad = set(values) - names
-        if bad:
-            raise unknown_parameter(f"{section_name}.{sorted(bad)[0]}", (f"{section_name}.{n}" for n in names))
+        bad = sorted(set(values) - names)
+        if len(bad) == 1:
+            raise unknown_parameter(f"{section_name}.{bad[0]}", (f"{section_name}.{n}" for n in names))
+        if bad:  # every one named at once: a file with several typos is mended in one go
+            raise CaseError(f"unknown parameters {bad} in [{section_name}]; see `yadearch params` for the list")
         for f in fields(cls):
             if f.name in values and f.type in ("int", int) and isinstance(values[f.name], float):
                 if values[f.name].is_integer():

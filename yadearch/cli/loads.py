@@ -179,9 +179,9 @@ def _least(table: pd.DataFrame) -> str:
         return "no collapse at any position (the load carried however large, or no answer)"
     weakest = table[table["collapse_load_N"] <= least * (1.0 + TIED_LOADS)]  # a symmetric arch: mirror positions
     where = [f"{p:.3g}" for p in weakest["position_over_span"]]
-    refined = " (refined between the positions)" if "sampled" in weakest and not weakest["sampled"].all() else ""
+    refined = "refined between the positions; " if "sampled" in weakest and not weakest["sampled"].all() else ""
     return (
-        f"least {least:.4g} N at {' and '.join(where)} of the span{refined} ({weakest['hinges'].iloc[0]} at {where[0]})"
+        f"least {least:.4g} N at {' and '.join(where)} of the span ({refined}{weakest['hinges'].iloc[0]} at {where[0]})"
     )
 
 
@@ -283,6 +283,8 @@ def _rigid_outcome(result: LoadCapacity) -> str:
             with_fill = result.arch_weight_N + result.fill_weight_N
             fill = f", {result.multiplier / with_fill:.3f} of arch and fill" if result.fill_weight_N else ""
             share = f" ({result.multiplier / result.arch_weight_N:.3f} of the arch's weight{fill})"
-        slides = f", sliding at {' and '.join(map(str, result.sliding))}" if result.sliding else ""
+        joints = [str(k) for k in result.sliding]
+        listed = f"{', '.join(joints[:-1])} and {joints[-1]}" if len(joints) > 1 else "".join(joints)
+        slides = f", sliding at {listed}" if joints else ""
         outcome = f"collapse at {result.multiplier:.4g} {result.unit}{share} on {result.hinge_labels}{slides}"
     return outcome

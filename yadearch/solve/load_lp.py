@@ -64,7 +64,7 @@ def load_analysis(case: ArchCase, placement: Placement | None = None) -> LoadCap
     load = live_load(case, arch.geometry)
     placement = placement or at_rest(arch)
     found = load_capacity(arch, live_forces(case, arch, placement), placement)
-    fill = -float(arch.fixed.force[:, 1].sum())  # the fixed loads: the fill's, the live load unheld
+    fill = max(-float(arch.fixed.force[:, 1].sum()), 0.0)  # the fixed loads: the fill's, the live load unheld
     return replace(found, unit=UNITS[load.kind], arch_weight_N=float(arch.weight[1:-1].sum()), fill_weight_N=fill)
 
 
@@ -123,18 +123,19 @@ def load_capacity(
         raise LimitError(f"load multiplier LP failed: {result.message}")
     x = result.x[:-1] * scale
     velocity = result.eqlin.marginals * rows  # the dual: the voussoirs' virtual velocities
-    pivots = _hinges(arch, a_v, velocity, c.touching)
+    rates = a_v.T @ velocity  # each force's work-conjugate rate: the corners' opening, the joints' sliding
+    pivots = _hinges(arch, velocity, rates, c.touching)
     normal = np.column_stack([x[:m], x[m : 2 * m]])
     shear = x[2 * m : 3 * m]
-    sliding = _sliding(arch, a_v.T @ velocity, normal, shear)
+    sliding = _sliding(arch, rates, normal, shear)
     return LoadCapacity(float(result.x[-1] * scale), pivots, normal, shear, sliding=sliding)
 
 
-def _hinges(arch: RigidArch, a_v: np.ndarray, velocity: np.ndarray, touching: np.ndarray) -> tuple[Pivot, ...]:
-    """The joints the mechanism turns, each about the corner that stays closed."""
+def _hinges(arch: RigidArch, velocity: np.ndarray, rates: np.ndarray, touching: np.ndarray) -> tuple[Pivot, ...]:
+    """The joints the mechanism (the voussoirs' `velocity`, its forces' `rates`) turns, each about the
+    corner that stays closed."""
     m = arch.n_joints
     omega = np.concatenate([[0.0], velocity[2::3], [0.0]])
-    rates = a_v.T @ velocity
     gaps = np.abs(np.column_stack([rates[:m], rates[m : 2 * m]]))  # the dual's sign is the programme's
     return mechanism_pivots(arch, omega, gaps, touching)[1]
 
@@ -145,7 +146,8 @@ def _sliding(arch: RigidArch, rates: np.ndarray, normal: np.ndarray, shear: np.n
     m = arch.n_joints
     slide = np.abs(rates[2 * m : 3 * m])
     largest = max(float(np.abs(rates).max()), 1e-300)
-    capped = np.abs(shear) >= (1.0 - FRICTION_CAP_TOLERANCE) * arch.tan_phi * normal.sum(axis=1)
+    closed = normal.sum(axis=1)
+    capped = (closed > 0.0) & (np.abs(shear) >= (1.0 - FRICTION_CAP_TOLERANCE) * arch.tan_phi * closed)
     return tuple(int(k) + 1 for k in np.flatnonzero((slide > HINGE_RATE_FRACTION * largest) & capped))
 
 

@@ -55,12 +55,15 @@ def with_critical(table: pd.DataFrame, row_at: Callable[[float], dict], over_joi
     options = {"xatol": POSITION_TOLERANCE, "maxiter": POLISH_ITERATIONS}
     minimize_scalar(capacity_at, bounds=(low, high), method="bounded", options=options)
     best = min(tried, key=capacity_at)
+    capacity_at(1.0 - best)  # the mirror position: a symmetric arch's tie, or less
+    best = min(tried, key=capacity_at)
     critical = capacity_at(best)
     if not critical < capacity.min():
         return sampled  # the sampled least is the critical position
     found = [best]
-    if abs(capacity_at(1.0 - best) - critical) <= TIED * critical:  # a symmetric arch: its mirror position too
-        found.append(1.0 - best)
+    mirror = 1.0 - best
+    if mirror != best and abs(capacity_at(mirror) - critical) <= TIED * critical:  # a symmetric arch: both
+        found.append(mirror)
     refined = pd.DataFrame([{**tried[x], SAMPLED: False} for x in found])
     return pd.concat([sampled, refined], ignore_index=True).sort_values(POSITION, kind="stable", ignore_index=True)
 

@@ -12,6 +12,7 @@ import pandas as pd
 from yadearch.case.config import ArchCase, preset
 from yadearch.errors import CaseError, RunFailedError
 from yadearch.model import units
+from yadearch.results.summary import PATH
 from yadearch.solve.limit_lp import weight_load
 from yadearch.solve.load_lp import live_forces, load_analysis, load_capacity
 from yadearch.solve.mechanisms import mechanism_multiplier
@@ -138,6 +139,11 @@ def static_du_mm(case: ArchCase) -> float:
         raise RunFailedError(
             f"the support movement's static path is unresolved past {units.to_mm(path.lower):.2f} mm: no du to "
             "take the settlements from"
+        )
+    if case.loading.support_motion == PATH:  # a prescribed path ends where it ends
+        raise CaseError(
+            f"the arch stands to the end of its prescribed path ({units.to_mm(path.lower):g} mm): no du to take "
+            "the settlements from"
         )
     raise CaseError(
         f"loading.max_support_displacement_mm = {case.loading.max_support_displacement_mm:g}: the arch stands to "
