@@ -381,3 +381,19 @@ def test_the_command_takes_a_named_material(tmp_path, capsys):
     )
     written = json.loads((tmp_path / "set2.json").read_text())  # the paper's arch of another material keeps its name
     assert written["case"]["material"]["preset"] == "limestone" and written["du_rigid_mm"] > 0
+
+
+def test_a_programme_highs_leaves_unsolved_is_made_again_and_the_march_goes_on():
+    """A shallow ring (embrace 70, 20 mm, 30 voussoirs): HiGHS's dual simplex at 1e-10 ended its first
+    kinematic programme in an unknown model status and `limit` stopped with the solver's message (seventh
+    user trial); made again at 1e-9 it solves, and the stiff static engine lands within 2 % of it."""
+    from yadearch.solve.static_path import StaticLoading
+
+    case = preset("set2").with_overrides(
+        {"embrace_deg": 70.0, "internal_radius_mm": 300.0, "thickness_mm": 20.0, "n_voussoirs": 30}
+    )
+    rigid = limit_analysis(case)
+    loading = StaticLoading.of(case.with_overrides({"kn_N_per_mm3": 10_000.0}))
+    loading.selfweight()
+    static_mm = loading.follow().du * 1e3
+    assert static_mm == pytest.approx(rigid.du_mm, rel=0.02)

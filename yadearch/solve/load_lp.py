@@ -20,11 +20,10 @@ from yadearch.case.mechanics import live_load
 from yadearch.model.loads import UNITS, LoadPoints, generalised, live_load_points
 from yadearch.solve.limit_lp import (
     HINGE_RATE_FRACTION,
-    LP_METHOD,
-    LP_OPTIONS,
     STATUS_INFEASIBLE,
     STATUS_UNBOUNDED,
     equilibrium_matrix,
+    linear_programme,
     mechanism_pivots,
     static_constraints,
     weight_load,
@@ -103,18 +102,7 @@ def load_capacity(
     bounds = bounds + [(0.0, None)]  # the multiplier
     if a_ub is not None:
         a_ub = np.column_stack([a_ub, np.zeros(2 * m)])
-    from scipy.optimize import linprog  # here, not at import: scipy.optimize costs a run ~50 ms
-
-    result = linprog(
-        objective,
-        A_ub=a_ub,
-        b_ub=b_ub,
-        A_eq=a_eq,
-        b_eq=held * rows / scale,
-        bounds=bounds,
-        method=LP_METHOD,
-        options=LP_OPTIONS,
-    )
+    result = linear_programme(objective, A_ub=a_ub, b_ub=b_ub, A_eq=a_eq, b_eq=held * rows / scale, bounds=bounds)
     if result.status == STATUS_UNBOUNDED:
         return LoadCapacity(math.inf, (), np.zeros((m, 2)), np.zeros(m))
     if result.status == STATUS_INFEASIBLE:

@@ -22,7 +22,14 @@ from yadearch.plotting.sweep import ENGINE_LABELS
 from yadearch.solve.limit import limit_analysis
 from yadearch.studies.campaigns.executors import Pool
 from yadearch.studies.campaigns.runner import run_campaign
-from yadearch.studies.capacity.directions import DIRECTION_PARAMETER, RigidLimit, directions, map_markdown, map_table
+from yadearch.studies.capacity.directions import (
+    DIRECTION_PARAMETER,
+    RIGID_FAILED,
+    RigidLimit,
+    directions,
+    map_markdown,
+    map_table,
+)
 
 RUNS = "runs"
 RIGID_CACHE = "rigid_limits.csv"  # the rigid limits solved so far, by arch and direction: a rerun reuses them
@@ -35,20 +42,22 @@ def rigid_limits(
     case: ArchCase, direction_values: tuple[float, ...], cache: Path | None = None, progress: bool = True
 ) -> dict[float, RigidLimit]:
     """The rigid limit of every direction on both branches of the keystone's tie where the movement
-    is not its own mirror image (kn plays no part); a direction the analysis cannot follow is left
-    empty. With a `cache` (a CSV), directions solved before for the same arch are read back and the
-    new ones added: a rerun redoes nothing; `progress` shows a bar over those it solves."""
+    is not its own mirror image (kn plays no part); a direction the analysis cannot follow has no du
+    and its reason as the mode ("failed: ..."). With a `cache` (a CSV), directions solved before for
+    the same arch are read back and the new ones added: a rerun redoes nothing; `progress` shows a bar
+    over those it solves."""
     key = rigid_key(case)
     kept = pd.read_csv(cache) if cache is not None and cache.is_file() else pd.DataFrame(columns=RIGID_COLUMNS)
     mine = kept[kept["arch"] == key]
-    limits = {float(r.direction_deg): _limit(r) for r in mine.itertuples() if bool(r.solved)}
+    limits = {float(r.direction_deg): _limit(r) for r in mine.itertuples()}  # a failure: its reason as the mode
     missing = [d for d in direction_values if d not in set(mine["direction_deg"].astype(float))]
     rows = []
     for direction in tqdm(missing, desc="rigid limits", unit="direction", disable=not (progress and missing)):
         try:
             result = limit_analysis(case.with_overrides({DIRECTION_PARAMETER: direction}))
-        except YadearchError:
-            rows.append({"arch": key, "direction_deg": direction, "solved": False})
+        except YadearchError as exc:  # said in the table (rigid_mode), not left empty
+            limits[direction] = RigidLimit(None, "", mode=f"{RIGID_FAILED}{exc}")
+            rows.append({"arch": key, "direction_deg": direction, "solved": False, "mode": limits[direction].mode})
             continue
         limits[direction] = RigidLimit(
             result.du_rigid_mm,

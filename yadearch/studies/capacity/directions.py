@@ -51,6 +51,9 @@ MAP_COLUMNS = (
 )
 
 
+RIGID_FAILED = "failed: "  # a RigidLimit's mode where the analysis could not follow the direction, its reason after
+
+
 @dataclass(frozen=True)
 class RigidLimit:
     """The rigid-block limit of one direction (mm) and its collapse hinges ("9I 28E ..."), and those of
@@ -147,9 +150,10 @@ def map_markdown(table: pd.DataFrame) -> list[str]:
             r = row.iloc[0]
             cells += [_mm(r.du_first_mm), f"{r.du_mm:.2f}", f"({r.du_x_mm:.1f}, {r.du_y_mm:.1f})", r.hinges or "-"]
         first = rows.iloc[0]
-        mode = first.rigid_mode if isinstance(first.rigid_mode, str) and np.isfinite(first.du_rigid_mm) else ""
+        mode = first.rigid_mode if isinstance(first.rigid_mode, str) else ""
+        said = f" ({mode})" if mode and mode != HINGING and np.isfinite(first.du_rigid_mm) else ""  # sliding, a snap
         cells += [
-            _mm(first.du_rigid_mm) + (f" ({mode})" if mode and mode != HINGING else ""),  # sliding, a snap
+            "failed (rigid_mode in the CSV)" if mode.startswith(RIGID_FAILED) else _mm(first.du_rigid_mm) + said,
             first.rigid_hinges or "-",
             _mm(first.du_rigid_other_mm),
             first.rigid_other_hinges or "-",
