@@ -110,3 +110,20 @@ def test_the_figures_are_written_as_pdf_and_png(tmp_path):
     written += reaction_curves_figure({"set1": {-90.0: curve}, "set2": {0.0: curve}}, tmp_path / "reactions")
     assert sorted(p.name for p in written) == ["map.pdf", "map.png", "reactions.pdf", "reactions.png"]
     assert all(p.stat().st_size > 1000 for p in written)
+
+
+def test_a_direction_the_rigid_analysis_cannot_follow_says_why(monkeypatch, tmp_path):
+    """Four rigid directions of a shallow ring stood empty in capacity.csv with no word (seventh user
+    trial): a failure is kept with its reason as the rigid mode, in the cache and in the table."""
+    from yadearch.case.config import preset
+    from yadearch.solve.rigid import LimitError
+    from yadearch.studies.capacity import campaign
+
+    def refuse(case):
+        raise LimitError("kinematic LP failed at 0.000 mm: as a test says")
+
+    monkeypatch.setattr(campaign, "limit_analysis", refuse)
+    cache = tmp_path / "rigid.csv"
+    limits = campaign.rigid_limits(preset("set2"), (-90.0,), cache, progress=False)
+    assert limits[-90.0].du_mm is None and limits[-90.0].mode == "failed: kinematic LP failed at 0.000 mm: as a test says"
+    assert campaign.rigid_limits(preset("set2"), (-90.0,), cache, progress=False) == limits  # read back

@@ -68,9 +68,8 @@ def rigid_limits(
         )
         rows.append({"arch": key, "direction_deg": direction, "solved": True, **vars(limits[direction])})
     if cache is not None and rows:
-        write_csv_atomically(
-            cache, pd.concat([kept, pd.DataFrame(rows)], ignore_index=True) if len(kept) else pd.DataFrame(rows)
-        )
+        new = pd.DataFrame(rows).reindex(columns=list(RIGID_COLUMNS))  # every column, a failure's empty
+        write_csv_atomically(cache, pd.concat([kept, new], ignore_index=True) if len(kept) else new)
     return {d: limits[d] for d in direction_values if d in limits}
 
 
