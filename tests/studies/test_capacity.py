@@ -125,5 +125,6 @@ def test_a_direction_the_rigid_analysis_cannot_follow_says_why(monkeypatch, tmp_
     monkeypatch.setattr(campaign, "limit_analysis", refuse)
     cache = tmp_path / "rigid.csv"
     limits = campaign.rigid_limits(preset("set2"), (-90.0,), cache, progress=False)
-    assert limits[-90.0].du_mm is None and limits[-90.0].mode == "failed: kinematic LP failed at 0.000 mm: as a test says"
+    assert limits[-90.0].du_mm is None
+    assert limits[-90.0].mode == "failed: kinematic LP failed at 0.000 mm: as a test says"
     assert campaign.rigid_limits(preset("set2"), (-90.0,), cache, progress=False) == limits  # read back
