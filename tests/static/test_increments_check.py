@@ -114,3 +114,14 @@ def test_a_static_load_path_checks_its_capacity_with_the_increments_halved(tmp_p
     assert check["resolved"] and abs(check["capacity_moved"]) <= 0.01  # set 2's quarter-span capacity
     assert main([*common, "--no-check", "--out", str(tmp_path / "once")]) == 0
     assert "increments_check" not in json.loads((tmp_path / "once" / "custom_load_path.json").read_text())
+
+
+def test_a_move_within_the_two_brackets_of_du_is_laid_to_the_brackets_not_to_a_branch():
+    """A 2.7 mm du checked at +1.9 % moves 0.05 mm, less than two brackets of 0.07 mm (seventh user trial:
+    the warning blamed a branch, and a bracket relative to du resolves it); a 1.5 mm move is a branch."""
+    check = {"outcome": "collapse", "du_mm": 2.73, "du_mm_moved": 0.019, "du_first_mm": 2.73,
+             "du_first_mm_moved": 0.019, "tolerance": 0.01, "resolved": False}  # fmt: skip
+    assert "numerics.du_tolerance_ratio" in unresolved_warning(check, bracket_mm=0.0703)
+    assert "a branch chosen near a critical state" in unresolved_warning(check)  # no bracket known
+    branch = {**check, "du_mm": 39.68, "du_mm_moved": -0.0369, "du_first_mm": 39.68, "du_first_mm_moved": -0.0369}
+    assert "a branch chosen near a critical state" in unresolved_warning(branch, bracket_mm=0.0703)

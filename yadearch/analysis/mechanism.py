@@ -116,9 +116,15 @@ def run_warnings(summary: RunSummary) -> list[str]:
         friction_limited(summary),
         relaxation_jump(summary),
         collapse_by_timeout(summary),
-        unresolved_warning(summary.increments_check),
+        unresolved_warning(summary.increments_check, _bracket_width(summary)),
     )
     return [w for w in warnings if w]
+
+
+def _bracket_width(summary: RunSummary) -> float | None:
+    """How wide the run's bracket of du is (mm; None without one)."""
+    bracket = summary.du_bracket_mm
+    return None if bracket is None or None in bracket else float(bracket[1]) - float(bracket[0])
 
 
 def sliding_joints(

@@ -8,9 +8,12 @@ from typing import Any
 RUN_ANSWERS = (("du", "du_mm", "mm"), ("du_first", "du_first_mm", "mm"))  # (said as, key, unit) of a run's
 
 
-def check_line(check: dict[str, Any], answers: tuple[tuple[str, str, str], ...] = RUN_ANSWERS) -> str:
+def check_line(
+    check: dict[str, Any], answers: tuple[tuple[str, str, str], ...] = RUN_ANSWERS, bracket_mm: float | None = None
+) -> str:
     """One line for the log and the command line: the check's `answers` (said as, key, unit) and its
-    verdict."""
+    verdict; an unresolved run's moves all within both paths' brackets of du (each `bracket_mm` wide)
+    are laid to the brackets, not to the branch."""
     if "skipped" in check:
         return f"increments check skipped: {check['skipped']}"
     moved = ", ".join(
@@ -18,17 +21,34 @@ def check_line(check: dict[str, Any], answers: tuple[tuple[str, str, str], ...] 
         for said, key, unit in answers
         if check[f"{key}_moved"] is not None
     )
+    cause = "a branch chosen near a critical state, docs/numerics.md"
+    if bracket_mm is not None and _within_brackets(check, answers, bracket_mm):
+        cause = (
+            f"within the two paths' brackets of du, {bracket_mm:.3g} mm wide each (numerics.du_tolerance_mm): "
+            "numerics.du_tolerance_ratio narrows them to a share of du"
+        )
     verdict = (
         "resolved"
         if check["resolved"]
-        else f"NOT resolved: the answer moves more than {check['tolerance']:.0%} with the increments "
-        "(a branch chosen near a critical state, docs/numerics.md)"
+        else f"NOT resolved: the answer moves more than {check['tolerance']:.0%} with the increments ({cause})"
     )
     return f"increments halved: {check['outcome']}" + (f", {moved}" if moved else "") + f": {verdict}"
 
 
-def unresolved_warning(check: dict[str, Any] | None) -> str | None:
-    """The warning of a run whose answer its increments check moved (None: no check, or resolved)."""
+def _within_brackets(check: dict[str, Any], answers: tuple[tuple[str, str, str], ...], bracket_mm: float) -> bool:
+    """Whether the same outcome's every answer (mm) moved by no more than two brackets of `bracket_mm`."""
+    moves = []
+    for _, key, unit in answers:
+        moved, value = check.get(f"{key}_moved"), check.get(key)
+        if unit != "mm" or moved is None or value is None:
+            continue
+        moves.append(abs(value - value / (1.0 + moved)))  # the check's answer less the run's
+    return bool(moves) and max(moves) <= 2.0 * bracket_mm
+
+
+def unresolved_warning(check: dict[str, Any] | None, bracket_mm: float | None = None) -> str | None:
+    """The warning of a run whose answer its increments check moved (None: no check, or resolved); the
+    run's bracket of du `bracket_mm` wide (`check_line`)."""
     if not check or check.get("resolved", True):
         return None
-    return f"the answer is not resolved by the numerics: {check_line(check)}"
+    return f"the answer is not resolved by the numerics: {check_line(check, bracket_mm=bracket_mm)}"

@@ -113,7 +113,8 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
     check = None
     if num.increments_check == HALVED_INCREMENTS_CHECK:
         check = increments_check(loading, start, path, loading.first_loss)
-        log(f"[{case.name}] {check_line(check)}")
+        width = units.to_mm(path.upper - path.lower) if path.collapsed else None
+        log(f"[{case.name}] {check_line(check, bracket_mm=width)}")
     summary = RunSummary(
         name=case.name,
         started=started,
