@@ -202,6 +202,7 @@ def test_an_accepted_relaxation_that_moved_a_block_far_is_flagged_as_a_jump():
     )
     warning = relaxation_jump(jumped)
     assert warning is not None and "to 17.25 mm moved a block 2.69 mm (2 such" in warning and "\n" not in warning
+    assert "54% of the runaway bound (5 mm): the bound halved would end the path there" in warning
     soft = _summary(
         du_mm=47.13,
         relaxations={

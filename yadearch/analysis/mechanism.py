@@ -19,6 +19,7 @@ SLIP_THRESHOLD_MM = 0.2  # tangential slip that is sliding, not elastic shear (k
 JUMP_FRACTION = 0.5  # a relaxation moving a block this fraction of its increment...
 JUMP_FLOOR = 0.1  # ...and at least this fraction of runaway_mm is a jump to another state
 NEAR_LIMIT = 0.9  # beyond this fraction of du the path's states move fast (a fold): no jump is judged there
+NEAR_BOUND = 0.5  # a jump this fraction of the runaway bound: the bound halved (an invariance check) ends the path
 HINGE_COUNT_NAMES = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
 
 
@@ -84,10 +85,16 @@ def relaxation_jump(summary: RunSummary, fraction: float = JUMP_FRACTION, near_l
     if not jumps:
         return None
     move, delta, step = max(jumps)
+    bound = (  # a snap nearly as long as the bound: a shorter bound would have called it the collapse
+        f"; it is {move / runaway_mm:.0%} of the runaway bound ({runaway_mm:g} mm): the bound halved would end "
+        "the path there, so du rests on numerics.runaway_thickness_ratio"
+        if move >= NEAR_BOUND * runaway_mm
+        else ""
+    )
     return (
         f"the relaxation after the {step:.2f} mm increment to {delta:.2f} mm moved a block {move:.2f} mm "
         f"({len(jumps)} such before {near_limit:g} du): the arch snapped rather than followed its path there "
-        "(survived: du_first_mm and summary.json's snaps mark the snaps, du is where the path ends)"
+        f"(survived: du_first_mm and summary.json's snaps mark the snaps, du is where the path ends){bound}"
     )
 
 

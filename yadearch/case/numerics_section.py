@@ -166,8 +166,8 @@ class NumericsConfig:
                 100,
                 low_open=True,
                 doc="a block moving this many ring thicknesses at a fixed support has run away (no "
-                "equilibrium); a snap that re-settles closer is survived however far it moves, so du does "
-                "not depend on it (docs/numerics.md)",
+                "equilibrium); a snap that re-settles closer is survived however far it moves, so du rests "
+                "on it only where a snap lands nearly that far (the run warns; docs/numerics.md)",
             ),
             "predates": None,
         },
