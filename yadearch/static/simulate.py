@@ -88,8 +88,18 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         unit = UNITS[case.loads.live_load]
         log(f"[{case.name}] the live load held at {records.held:g} {unit} (iterations {loading.iterations})")
 
+    said_snaps = 0  # the snaps survived that the log has said, as the DEM's log says them
+
+    def say_snaps() -> None:
+        nonlocal said_snaps
+        for snap in loading.snaps[said_snaps:]:
+            low, high = snap["fold_mm"]
+            log(f"[{case.name}] a snap between {low:.3f} and {high:.3f} mm: a block moved {snap['move_mm']:.3f} mm")
+        said_snaps = len(loading.snaps)
+
     def progress(step: PathStep) -> None:
         wall = time.time() - wall0
+        say_snaps()
         log(
             f"[{case.name}] increment {units.to_mm(step.start):7.3f} -> {units.to_mm(step.target):7.3f} mm: "
             f"{step.verdict} (iterations {loading.iterations}, {loading.iterations / wall:6.0f} it/s, "
@@ -98,6 +108,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
 
     start = loading.accepted[0]  # the path's first state, where the increments check starts again
     path = loading.follow(on_step=progress)
+    say_snaps()
     for state in loading.accepted[1:]:
         records.add(state)
     hinges_last = records.hinges(loading.accepted[-1]) if len(loading.accepted) > 1 else []
