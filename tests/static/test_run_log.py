@@ -1,5 +1,6 @@
-"""A static run's log (the command line and run.log) says each snap it survived where the path makes it, as the DEM's log
-does (seventh user trial: a 10 m arch's 33 and 49 mm snaps showed there as "stable" increments)."""
+"""A static run's log (the command line and run.log) says each snap it survived where the path makes
+it, as the DEM's log does (seventh user trial: a 10 m arch's 33 and 49 mm snaps showed there as
+"stable" increments)."""
 
 from __future__ import annotations
 
