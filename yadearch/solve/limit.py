@@ -39,6 +39,7 @@ from yadearch.solve.rigid import SIDES, LimitError, Pivot, Placement, RigidArch,
 DEFAULT_STEP_MM = 0.5  # support step between equilibrium checks
 DEFAULT_TOLERANCE_MM = 1e-3  # width of the bisection bracket that locates a limit
 HINGE_LABEL = re.compile(r"(\d+)([IE])")  # a hinge as the results name it: interface (1-based) and side
+FRICTION_MARGIN = 0.9  # rigid blocks that fall with this share of tan(friction) stand by friction alone
 
 
 def stands(case: ArchCase) -> bool:
@@ -70,6 +71,13 @@ def why_not_standing(case: ArchCase) -> str:
         rigid = stands(case)
     except (LimitError, YadearchError):
         return ""
+    less = math.degrees(math.atan(FRICTION_MARGIN * math.tan(math.radians(case.material.friction_deg))))
+    if rigid and not stands(case.with_overrides({"friction_deg": less})):
+        return (
+            f"rigid blocks of this shape stand only by friction (with {FRICTION_MARGIN:.0%} of tan(friction_deg) "
+            "they do not): joints that slide as they deform carry less than the rigid analysis's; a higher "
+            "friction_deg, or joints closer to radial, stand"
+        )
     if rigid:
         return (
             f"rigid blocks of this shape stand: its joints at kn {case.interface.kn_N_per_mm3:g} N/mm3 are too "
