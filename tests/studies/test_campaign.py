@@ -470,3 +470,16 @@ def test_a_resumed_campaign_says_how_many_runs_it_kept(tmp_path, capsys):
     assert "sweep: 2 of 3 runs already made in" in capsys.readouterr().out
     campaign_bar(tmp_path / "fresh", 3, 3, progress=True).close()
     assert "already made" not in capsys.readouterr().out
+
+
+def test_an_arch_that_cannot_stand_is_an_answer_not_a_failed_campaign(tmp_path):
+    """A table with a ring too thin to stand: the campaign says so and exits 0 (seventh user trial: it
+    ended "error: 1 of 2 runs failed" for the arch's own answer); the run is still recorded as it was."""
+    from yadearch.cli.commands import main
+
+    table = tmp_path / "t.csv"
+    table.write_text("name,thickness_mm\nthin,8\nok,24\n")
+    args = ["sweep", "--preset", "set2", "--engine", "static", "--table", str(table), "--jobs", "1"]
+    assert main([*args, "--no-figures", "--out", str(tmp_path / "out")]) == 0
+    results = pd.read_csv(tmp_path / "out" / "results.csv")
+    assert results.set_index("run").loc["thin", "outcome"] == "cannot stand"
