@@ -162,3 +162,4 @@ def test_two_runs_of_one_name_get_headings_a_reader_can_tell_apart(tmp_path):
     make_run(tmp_path / "b", name="mine")
     markdown = write_report([tmp_path / "a", tmp_path / "b"], tmp_path / "out").read_text()
     assert "## mine (a)" in markdown and "## mine (b)" in markdown
+    assert "| mine (a) |" in markdown and "| mine (b) |" in markdown  # the overview's rows too (seventh trial)

@@ -233,7 +233,7 @@ def overview(reported: list[ReportedRun]) -> list[str]:
     for r in reported:
         s = r.run.summary
         du = "no collapse" if s.du_mm is None else f"{s.du_mm:.2f}"
-        cells = [s.name or r.run.path.name, s.engine, movement_text(s), du, s.hinge_labels or "—"]
+        cells = [r.title or s.name or r.run.path.name, s.engine, movement_text(s), du, s.hinge_labels or "—"]
         if paper:
             ref = reference.SETS.get(r.reference_name or "", {})
             cells += [r.reference_name or "—"]
