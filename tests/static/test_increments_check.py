@@ -35,6 +35,9 @@ def test_set2_is_resolved_with_the_increments_halved():
     assert check["du_mm"] == pytest.approx(summary.du_mm, rel=0.01)  # 87.99 -> 88.04 mm
     assert abs(check["du_mm_moved"]) <= 0.01 and "resolved" in check_line(check)
     assert unresolved_warning(check) is None
+    # the collapse mode checked too (seventh user trial: the check compared du and du_first only)
+    assert check["collapse_mode_hinges"] == summary.collapse_mode_hinges and check["mode_hinges_change"] == "the same"
+    assert ", collapse mode the same: resolved" in check_line(check)
 
 
 def test_a_branch_chosen_by_the_increments_is_reported_not_resolved():

@@ -32,6 +32,10 @@ def check_line(
         if check["resolved"]
         else f"NOT resolved: the answer moves more than {check['tolerance']:.0%} with the increments ({cause})"
     )
+    change = check.get("mode_hinges_change")  # the collapse mode's hinges beside the run's
+    if change is not None:
+        hinges = f" ({' '.join(check['collapse_mode_hinges'])})" if change != "the same" else ""
+        moved = ", ".join(part for part in (moved, f"collapse mode {change}{hinges}") if part)
     return f"increments halved: {check['outcome']}" + (f", {moved}" if moved else "") + f": {verdict}"
 
 

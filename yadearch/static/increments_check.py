@@ -6,6 +6,7 @@ from __future__ import annotations
 import time
 from typing import Any
 
+from yadearch.model.hinges import hinge_change
 from yadearch.results.summary import collapse_fields
 from yadearch.solve.path import PathResult
 from yadearch.solve.refined import SKIPPED, check_record, halved_loading
@@ -16,11 +17,16 @@ ANSWERS = ("du_mm", "du_first_mm")
 
 
 def increments_check(
-    loading: StaticLoading, start: StaticState, path: PathResult, first_loss: tuple[float, float] | None
+    loading: StaticLoading,
+    start: StaticState,
+    path: PathResult,
+    first_loss: tuple[float, float] | None,
+    mode_hinges: list[str] | None = None,
 ) -> dict[str, Any]:
     """summary.json's `increments_check` of `loading`'s followed `path` from `start`: the outcome, du and
     du_first (mm) with the increments halved, their relative moves from the run's, whether the answer is
-    resolved, and the check's own iterations and wall time."""
+    resolved, the check's own iterations and wall time, and where both collapse, the check's collapse
+    mode's hinges and how they differ from the run's `mode_hinges` (`model.hinges.hinge_change`)."""
     wall0 = time.time()
     again = halved_loading(loading, start)
     if again is None:
@@ -28,7 +34,15 @@ def increments_check(
     checked = again.follow()
     ours = _answers(loading, path, first_loss)
     theirs = _answers(again, checked, again.first_loss)
-    return check_record(ours, theirs, ANSWERS, again.iterations, time.time() - wall0)
+    mode: dict[str, Any] = {}
+    if mode_hinges is not None and checked.collapsed:  # the mechanism: a fact up to a joint and a mirror image
+        hinges = again.fold_mode(checked.upper).labels
+        last = len(loading.arch.geometry.joints)
+        mode = {
+            "collapse_mode_hinges": hinges,
+            "mode_hinges_change": hinge_change(" ".join(mode_hinges), " ".join(hinges), last),
+        }
+    return {**check_record(ours, theirs, ANSWERS, again.iterations, time.time() - wall0), **mode}
 
 
 def _answers(loading: StaticLoading, path: PathResult, first_loss: tuple[float, float] | None) -> dict[str, Any]:

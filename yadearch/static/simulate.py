@@ -123,7 +123,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
     solver_wall = time.time() - solver_start
     check = None
     if num.increments_check == HALVED_INCREMENTS_CHECK:
-        check = increments_check(loading, start, path, loading.first_loss)
+        check = increments_check(loading, start, path, loading.first_loss, mode_hinges)
         width = units.to_mm(path.upper - path.lower) if path.collapsed else None
         log(f"[{case.name}] {check_line(check, bracket_mm=width)}")
     summary = RunSummary(
