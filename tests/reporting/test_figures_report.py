@@ -163,3 +163,13 @@ def test_two_runs_of_one_name_get_headings_a_reader_can_tell_apart(tmp_path):
     markdown = write_report([tmp_path / "a", tmp_path / "b"], tmp_path / "out").read_text()
     assert "## mine (a)" in markdown and "## mine (b)" in markdown
     assert "| mine (a) |" in markdown and "| mine (b) |" in markdown  # the overview's rows too (seventh trial)
+
+
+def test_a_report_names_the_numerics_a_run_changed_from_their_defaults():
+    """A run with the runaway bound halved read in its report like a default one (seventh user trial);
+    the engine is said elsewhere and the increments check leaves the answer alone."""
+    from yadearch.reporting.run_words import numerics_text
+
+    given = {"runaway_thickness_ratio": 0.25, "engine": "static", "increments_check": "halved", "damping": 0.2}
+    assert numerics_text({"numerics": given}) == "runaway_thickness_ratio 0.25 (default 0.5)"
+    assert numerics_text({"numerics": {"damping": 0.2}}) == "" and numerics_text({}) == ""

@@ -27,7 +27,7 @@ from yadearch.reporting.paper_match import (
     match_hinges,
     match_reference,
 )
-from yadearch.reporting.run_words import arch_text, movement_text
+from yadearch.reporting.run_words import arch_text, movement_text, numerics_text
 from yadearch.results.rundir import FIGURES_DIR, RunFolder
 from yadearch.results.summary import DEM
 
@@ -135,6 +135,7 @@ def run_section(reported: ReportedRun) -> list[str]:
         f"- kn = {summary.kn_N_per_mm3} N/mm3, ks = {summary.ks_N_per_mm3} N/mm3, "
         f"joints computed by {CONTACT_MODEL_NAMES.get(summary.contact_model or 'cgal')}",
         f"- solved by {ENGINE_NAMES[summary.engine]}",
+        *([f"- numerics not at their defaults: {changed}"] if (changed := numerics_text(run.case)) else []),
         f"- du = {'no collapse' if du is None else f'{du:.2f} mm'}"
         + (
             f" (bracket {summary.du_bracket_mm[0]:.2f}–{summary.du_bracket_mm[1]:.2f} mm)"

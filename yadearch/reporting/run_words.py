@@ -6,8 +6,15 @@ from __future__ import annotations
 from typing import Any
 
 from yadearch.case.comparison import as_ran
+from yadearch.case.config import ArchCase
 from yadearch.case.support import MOVEMENT_PRESETS
 from yadearch.results.summary import TRANSLATION, LoadingInfo, RunSummary
+
+SAID_ELSEWHERE = {
+    "engine",
+    "run_files",
+    "increments_check",
+}  # said in other words (the engine), or no answer rests on them
 
 # the named movements that translate a support (`--set movement=NAME`), by (support, direction in deg)
 NAMED_TRANSLATIONS = {
@@ -33,6 +40,18 @@ def arch_text(case: dict[str, Any]) -> str:
         return f"segmental arch, {ring}, intrados radius {g['internal_radius_mm']:g} mm, embrace {g['embrace_deg']:g}°"
     size = f"span {g['span_mm']:g} mm" + (f", rise {g['rise_mm']:g} mm" if shape != "pointed" else "")
     return f"{shape.replace('_', '-')} arch, {ring}, {size}"
+
+
+def numerics_text(case: dict[str, Any]) -> str:
+    """The numerical settings a run's case (its case.toml) gives other than the defaults, as "name value
+    (default d)"; "" where it keeps them all (a setting the case predates counts as kept)."""
+    defaults = ArchCase().to_dict()["numerics"]
+    given = case.get("numerics", {})
+    return ", ".join(
+        f"{name} {given[name]} (default {value})"
+        for name, value in defaults.items()
+        if name not in SAID_ELSEWHERE and name in given and given[name] != value
+    )
 
 
 def movement_text(summary: RunSummary) -> str:
