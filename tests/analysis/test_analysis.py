@@ -227,3 +227,23 @@ def test_an_unresolved_end_is_flagged_with_its_engines_own_numerics_and_a_runawa
     assert len(static) == 1 and "unresolved" in static[0] and "hold_max_s" not in static[0]  # ignored there
     assert run_warnings(_summary(du_mm=27.3, collapse_verdict=Verdict.RUNAWAY)) == []
     assert run_warnings(_summary(du_mm=27.3)) == []  # a run from before the record
+
+
+def test_a_du_first_that_rests_on_the_snap_floor_is_said():
+    """The pointed arch at kn 10 000 (seventh user trial): a state landed 0.35 mm from its prediction at
+    14.75 mm, under the 0.4 mm floor, and the floor halved moved du_first from 31.82 to 13.38 mm; set 2 at
+    kn 1000: its first snap moved 0.277 mm, 1.2 floors, which the floor doubled would not count."""
+    from yadearch.analysis.mechanism import snap_floor_near
+
+    record = {"runaway_mm": 20.0, "snap_floor_mm": 0.4, "delta_mm": [5.0, 14.75, 30.0, 58.0],
+              "increment_mm": [2.5] * 4, "move_mm": [0.05, 0.35, 0.1, 0.3]}  # fmt: skip
+    near = _summary(du_mm=58.77, du_first_mm=31.82, relaxations=record, snaps=[])
+    said = snap_floor_near(near)
+    assert said is not None and "14.75 mm landed 0.350 mm from its prediction, 87% of the snap floor" in said
+    far = _summary(du_mm=58.77, du_first_mm=31.82, relaxations={**record, "move_mm": [0.05, 0.1, 0.1, 0.3]})
+    assert snap_floor_near(far) is None  # 0.3 mm at 58 mm is the fold's own, past 0.9 du
+    first = {"fold_mm": [23.74, 23.80], "move_mm": 0.277}
+    small = _summary(du_mm=111.51, du_first_mm=23.77, snaps=[first],
+                     relaxations={**record, "snap_floor_mm": 0.24, "move_mm": [0.01] * 4})  # fmt: skip
+    assert "1.2 times the snap floor (0.24 mm): the floor doubled would not count it" in snap_floor_near(small)
+    assert snap_floor_near(_summary(du_mm=58.77, du_first_mm=31.82, relaxations={"runaway_mm": 20.0})) is None

@@ -98,6 +98,40 @@ def relaxation_jump(summary: RunSummary, fraction: float = JUMP_FRACTION, near_l
     )
 
 
+def snap_floor_near(summary: RunSummary, near: float = NEAR_BOUND, near_limit: float = NEAR_LIMIT) -> str | None:
+    """A warning when du_first rests on the snap floor (`relaxations.snap_floor_mm`, the static engine's):
+    before it (and short of `near_limit` x du, where the fold's own states move fast) an accepted state
+    landed at least `near` of the floor from its prediction, which the floor halved counts as a snap;
+    or the snap that sets du_first moved less than the floor / `near`, which the floor doubled does not."""
+    relaxations = summary.relaxations or {}
+    floor, first = relaxations.get("snap_floor_mm"), summary.du_first_mm
+    if floor is None or first is None or summary.du_mm is None:
+        return None
+    end = min(first, near_limit * summary.du_mm)
+    below = [
+        (move, delta)
+        for delta, move in zip(relaxations["delta_mm"], relaxations["move_mm"])
+        if delta < end and near * floor <= move < floor
+    ]
+    setting = "so du_first rests on numerics.snap_thickness_ratio"
+    if below:
+        move, delta = max(below)
+        return (
+            f"the state at {delta:.2f} mm landed {move:.3f} mm from its prediction, {move / floor:.0%} of the snap "
+            f"floor ({floor:.3g} mm): the floor halved would count it as a snap before du_first ({first:.2f} mm), "
+            f"{setting}"
+        )
+    snaps = summary.snaps or []
+    snap = snaps[0] if snaps and math.isclose(0.5 * sum(snaps[0]["fold_mm"]), first, abs_tol=1e-9) else None
+    if snap is not None and snap["move_mm"] < floor / near:
+        return (
+            f"the snap that sets du_first ({first:.2f} mm) moved a block {snap['move_mm']:.3f} mm, "
+            f"{snap['move_mm'] / floor:.1f} times the snap floor ({floor:.3g} mm): the floor doubled would not "
+            f"count it, {setting}"
+        )
+    return None
+
+
 def collapse_by_timeout(summary: RunSummary) -> str | None:
     """A warning when the path ended where the engine found neither an equilibrium nor a runaway: an
     unresolved run (no du, never a collapse), with the numerics that decide it in the engine that ran."""
@@ -122,6 +156,7 @@ def run_warnings(summary: RunSummary) -> list[str]:
         slip_during_moves(summary.friction),
         friction_limited(summary),
         relaxation_jump(summary),
+        snap_floor_near(summary),
         collapse_by_timeout(summary),
         unresolved_warning(summary.increments_check, _bracket_width(summary)),
     )

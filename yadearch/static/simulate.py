@@ -152,6 +152,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
         friction=records.friction,
         relaxations={
             "runaway_mm": units.to_mm(loading.runaway),
+            "snap_floor_mm": units.to_mm(loading.snap_floor),  # a landing this far from the prediction is a snap
             "delta_mm": [units.to_mm(s.lam) for s in loading.accepted[1:]],
             "increment_mm": _increments_mm(loading),
             "move_mm": [units.to_mm(s.move) for s in loading.accepted[1:]],
