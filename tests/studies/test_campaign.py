@@ -440,29 +440,6 @@ def test_a_sweep_of_unlike_arches_draws_a_line_per_arch_and_no_answer_as_an_axis
         parameter_sweep_figure(failed, "support_direction_deg", tmp_path / "none", swept)
 
 
-def test_a_table_that_is_not_a_grid_draws_one_named_point_a_run_unjoined(monkeypatch, tmp_path):
-    """A line through runs that differ in other parameters too suggested a trend (fifth user trial):
-    such a table's runs are open points, unjoined, and coinciding points share one name label."""
-    from yadearch.plotting import sweep
-
-    figures: list = []
-    monkeypatch.setattr(sweep, "save_figure", lambda fig, stem: figures.append(fig) or (stem, stem))
-    table = pd.DataFrame(
-        {
-            "run": list("abcd"),
-            "status": ["done"] * 4,
-            "collapsed": [True] * 4,
-            "du_mm": [67.1, 88.0, 87.6, 119.8],
-            "thickness_mm": [20.0, 24.0, 24.0, 30.0],
-            "n_voussoirs": [41, 55, 41, 71],
-        }
-    )
-    sweep.parameter_sweep_figure(table, "thickness_mm", tmp_path / "t", ["thickness_mm", "n_voussoirs"])
-    ax = figures[0].axes[0]
-    assert [line.get_linestyle() for line in ax.lines] == ["None"] and len(ax.lines[0].get_xdata()) == 4
-    assert sorted(t.get_text() for t in ax.texts) == ["a", "c, b", "d"]
-
-
 def test_a_resumed_campaign_says_how_many_runs_it_kept(tmp_path, capsys):
     from yadearch.studies.campaigns.progress import campaign_bar
 
