@@ -50,11 +50,8 @@ def placed_points(
 def joint_points(geometry: ArchGeometry, snapshot: dict[str, Any], side: str) -> np.ndarray:
     """(n_joints, 2) intrados (side "I") or extrados ("E") end of every joint, carried by the block on
     its left, as placed in the snapshot (m): where a hinge's pivot is drawn."""
-    pos0 = block_centroids(geometry)
-    pos, rot = np.asarray(snapshot["pos_m"], float), np.asarray(snapshot["rot_rad"], float)
-    return np.array(
-        [_placed(j.intrados if side == "I" else j.extrados, j.left, pos0, pos, rot) for j in geometry.joints]
-    )
+    corners = np.array([j.intrados if side == "I" else j.extrados for j in geometry.joints])
+    return placed_points(geometry, snapshot, np.array([j.left for j in geometry.joints]), corners)
 
 
 def tangential_slip_mm(geometry: ArchGeometry, snapshot: dict[str, Any]) -> np.ndarray:

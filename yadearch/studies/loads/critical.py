@@ -38,7 +38,8 @@ def with_critical(table: pd.DataFrame, row_at: Callable[[float], dict], over_joi
     def capacity_at(x: float) -> float:
         if x not in tried:
             tried[x] = row_at(x)
-        return float(_capacity(pd.Series([tried[x][CAPACITY]]))[0])
+        value = float(tried[x][CAPACITY])
+        return value if np.isfinite(value) else np.inf  # as `_capacity` reads the table
 
     ends = np.concatenate([[0.0], positions, [1.0]])
     for k in _local_leasts(capacity):
