@@ -37,6 +37,7 @@ def test_set2_is_resolved_with_the_increments_halved():
     assert unresolved_warning(check) is None
     # the collapse mode checked too (seventh user trial: the check compared du and du_first only)
     assert check["collapse_mode_hinges"] == summary.collapse_mode_hinges and check["mode_hinges_change"] == "the same"
+    assert check["mode_resolved"]
     assert ", collapse mode the same: resolved" in check_line(check)
 
 
@@ -48,6 +49,17 @@ def test_a_branch_chosen_by_the_increments_is_reported_not_resolved():
     assert abs(check["du_mm_moved"]) > 0.01  # 41.20 -> 39.68 mm in the atlas's invariance study
     warning = unresolved_warning(check)
     assert warning is not None and "NOT resolved" in warning and "du 39." in warning
+
+
+def test_a_mechanism_the_increments_change_is_not_resolved_though_du_is():
+    """du within 1 % but another mechanism with the increments halved: a warning, never a plain 'resolved'
+    (the hinges are part of the collapse answer; a hinge a joint away keeps the mechanism)."""
+    check = {"factor": 0.5, "outcome": "collapse", "du_mm": 50.1, "du_first_mm": 40.0, "du_mm_moved": 0.002}
+    check |= {"du_first_mm_moved": 0.0, "tolerance": 0.01, "resolved": True, "iterations": 10, "wall_s": 0.1}
+    moved = check | {"collapse_mode_hinges": ["1E", "20I", "40E", "56E"], "mode_hinges_change": "another mechanism"}
+    warning = unresolved_warning(moved | {"mode_resolved": False})
+    assert warning is not None and "collapse mode NOT" in warning and "1E 20I 40E 56E" in warning
+    assert unresolved_warning(moved | {"mode_hinges_change": "a joint away", "mode_resolved": True}) is None
 
 
 def test_a_check_whose_halved_increment_would_not_exceed_the_bracket_is_skipped():

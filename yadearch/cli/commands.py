@@ -35,10 +35,11 @@ def _report_summary(out: Path) -> None:
         f"hinges at collapse {summary.hinge_text or '-'}, {summary.cost}, "
         f"{seconds_text(summary.wall_s)} -> {out}"
     )
-    if summary.increments_check and summary.increments_check.get("resolved", True):  # else a warning says it
-        from yadearch.results.check_text import check_line
+    if summary.increments_check:
+        from yadearch.results.check_text import check_line, unresolved_warning
 
-        click.echo(check_line(summary.increments_check))
+        if unresolved_warning(summary.increments_check) is None:  # else a warning says it
+            click.echo(check_line(summary.increments_check))
     for warning in run_warnings(summary):
         click.echo(f"warning: {warning}")
 

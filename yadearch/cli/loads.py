@@ -245,7 +245,8 @@ def _on_path(
     if path.increments_check is not None:
         answers = (("capacity", "capacity", unit), ("first loss", "first_loss", unit))
         said = check_line(path.increments_check, answers)
-        click.echo(said if path.increments_check.get("resolved", True) else f"warning: {said}")
+        kept = path.increments_check.get("resolved", True) and path.increments_check.get("mode_resolved", True)
+        click.echo(said if kept else f"warning: {said}")
 
 
 def _descent(path: LoadPath) -> str:

@@ -117,6 +117,7 @@ def mirror_hinge_labels(labels: list[str] | tuple[str, ...], last_interface: int
 
 HINGE_CHANGES = ("the same", "the mirror image", "a joint away", "another count", "another mechanism")
 # how one run's hinges differ from another's, from the least change to the most (`hinge_change`)
+SAME_MECHANISM = HINGE_CHANGES[:3]  # changes that keep the mechanism: a tie's mirror image, a hinge a joint away
 
 
 def hinge_change(reference: str, other: str, last_interface: int) -> str:

@@ -36,6 +36,8 @@ def check_line(
     if change is not None:
         hinges = f" ({' '.join(check['collapse_mode_hinges'])})" if change != "the same" else ""
         moved = ", ".join(part for part in (moved, f"collapse mode {change}{hinges}") if part)
+        if check["resolved"] and not check.get("mode_resolved", True):
+            verdict = "du resolved, the collapse mode NOT (the increments pick the mechanism)"
     return f"increments halved: {check['outcome']}" + (f", {moved}" if moved else "") + f": {verdict}"
 
 
@@ -51,8 +53,8 @@ def _within_brackets(check: dict[str, Any], answers: tuple[tuple[str, str, str],
 
 
 def unresolved_warning(check: dict[str, Any] | None, bracket_mm: float | None = None) -> str | None:
-    """The warning of a run whose answer its increments check moved (None: no check, or resolved); the
-    run's bracket of du `bracket_mm` wide (`check_line`)."""
-    if not check or check.get("resolved", True):
+    """The warning of a run whose answer or collapse mode its increments check moved (None: no check, or
+    both resolved); the run's bracket of du `bracket_mm` wide (`check_line`)."""
+    if not check or (check.get("resolved", True) and check.get("mode_resolved", True)):
         return None
     return f"the answer is not resolved by the numerics: {check_line(check, bracket_mm=bracket_mm)}"

@@ -22,10 +22,11 @@ from yadearch.case.numerics_section import HALVED_INCREMENTS_CHECK
 from yadearch.errors import CaseError, RunFailedError
 from yadearch.model import units
 from yadearch.model.loads import UNITS, VERTICAL, load_displacement
+from yadearch.solve.collapse_mode import FoldMode
 from yadearch.solve.descending import DESCEND_TO, descend
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
 from yadearch.solve.path import PathResult, PathSettings, first_snap, follow_path, path_settings
-from yadearch.solve.refined import SKIPPED, check_record, halved_loading
+from yadearch.solve.refined import SKIPPED, check_record, halved_loading, mode_record
 from yadearch.solve.rigid import LimitError
 from yadearch.solve.stages import Outcome
 from yadearch.solve.static_path import StaticLoading
@@ -109,7 +110,7 @@ def static_load_path(
     mode = loading.fold_mode(path.upper) if path.collapsed else None
     collapse = [loading.collapse_state(path.upper)] if path.collapsed else []
     first = first_snap(loading.snaps)
-    check = _load_check(loading, start, path, first) if num.increments_check == HALVED_INCREMENTS_CHECK else None
+    check = _load_check(loading, start, path, first, mode) if num.increments_check == HALVED_INCREMENTS_CHECK else None
     descent = descend(loading, path.du, descend_to) if path.collapsed and descend_to is not None else None
     branches = loading.accepted + (descent.states if descent is not None else [])
     return LoadPath(
@@ -135,17 +136,23 @@ LOAD_ANSWERS = ("capacity", "first_loss")  # a load path's answers in its increm
 
 
 def _load_check(
-    loading: StaticLoading, start: StaticState, path: PathResult, first: tuple[float, float] | None
+    loading: StaticLoading,
+    start: StaticState,
+    path: PathResult,
+    first: tuple[float, float] | None,
+    mode: FoldMode | None,
 ) -> dict[str, Any]:
     """The load path solved again from `start` with its increments halved (`solve.refined`): its outcome,
-    capacity and first loss of stability (N or g), their moves and whether the answer is resolved."""
+    capacity and first loss of stability (N or g), their moves, whether the answer is resolved and,
+    where both collapse, the collapse mode beside the path's `mode` (`solve.refined.mode_record`)."""
     wall0 = time.time()
     again = halved_loading(loading, start)
     if again is None:
         return {"skipped": SKIPPED}
     checked = follow_path(again, again.settings)
     ours, theirs = _load_answers(path, first), _load_answers(checked, first_snap(again.snaps))
-    return check_record(ours, theirs, LOAD_ANSWERS, again.iterations, time.time() - wall0)
+    modes = mode_record(loading, mode.labels, again, checked) if mode is not None else {}
+    return {**check_record(ours, theirs, LOAD_ANSWERS, again.iterations, time.time() - wall0), **modes}
 
 
 def _load_answers(path: PathResult, first: tuple[float, float] | None) -> dict[str, Any]:

@@ -9,6 +9,8 @@ import math
 from dataclasses import replace
 from typing import Any
 
+from yadearch.model.hinges import SAME_MECHANISM, hinge_change
+from yadearch.solve.path import PathResult
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.static_state import StaticState
 
@@ -71,3 +73,16 @@ def relative(value: float | None, reference: float | None) -> float | None:
 
 def _missing(value: float | None) -> bool:
     return value is None or not math.isfinite(value)
+
+
+def mode_record(
+    loading: StaticLoading, mode_hinges: tuple[str, ...] | list[str], checked: StaticLoading, path: PathResult
+) -> dict[str, Any]:
+    """Where the halved path `path` of `checked` collapses, its collapse mode's hinges, how they differ
+    from `mode_hinges` of `loading`'s (`model.hinges.hinge_change`) and whether the mechanism is kept
+    (`mode_resolved`: the same up to a mirror image or a hinge a joint away); else nothing."""
+    if not path.collapsed:
+        return {}
+    hinges = checked.fold_mode(path.upper).labels
+    change = hinge_change(" ".join(mode_hinges), " ".join(hinges), len(loading.arch.geometry.joints))
+    return {"collapse_mode_hinges": hinges, "mode_hinges_change": change, "mode_resolved": change in SAME_MECHANISM}

@@ -6,10 +6,9 @@ from __future__ import annotations
 import time
 from typing import Any
 
-from yadearch.model.hinges import hinge_change
 from yadearch.results.summary import collapse_fields
 from yadearch.solve.path import PathResult
-from yadearch.solve.refined import SKIPPED, check_record, halved_loading
+from yadearch.solve.refined import SKIPPED, check_record, halved_loading, mode_record
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.static_state import StaticState
 
@@ -26,7 +25,7 @@ def increments_check(
     """summary.json's `increments_check` of `loading`'s followed `path` from `start`: the outcome, du and
     du_first (mm) with the increments halved, their relative moves from the run's, whether the answer is
     resolved, the check's own iterations and wall time, and where both collapse, the check's collapse
-    mode's hinges and how they differ from the run's `mode_hinges` (`model.hinges.hinge_change`)."""
+    mode beside the run's `mode_hinges` (`solve.refined.mode_record`)."""
     wall0 = time.time()
     again = halved_loading(loading, start)
     if again is None:
@@ -34,14 +33,7 @@ def increments_check(
     checked = again.follow()
     ours = _answers(loading, path, first_loss)
     theirs = _answers(again, checked, again.first_loss)
-    mode: dict[str, Any] = {}
-    if mode_hinges is not None and checked.collapsed:  # the mechanism: a fact up to a joint and a mirror image
-        hinges = again.fold_mode(checked.upper).labels
-        last = len(loading.arch.geometry.joints)
-        mode = {
-            "collapse_mode_hinges": hinges,
-            "mode_hinges_change": hinge_change(" ".join(mode_hinges), " ".join(hinges), last),
-        }
+    mode = mode_record(loading, mode_hinges, again, checked) if mode_hinges is not None else {}
     return {**check_record(ours, theirs, ANSWERS, again.iterations, time.time() - wall0), **mode}
 
 
