@@ -86,7 +86,7 @@ def test_runaway_is_a_multiple_of_the_thickness_that_does_not_move_du():
 
 
 def test_du_first_is_the_first_snap_and_every_snap_is_in_the_history():
-    """Each snap survived is a limit point of the path: the first is du_first_mm, each moves the
+    """Each snap survived is a limit point of the path: the first (past the snap floor) is du_first_mm, each moves the
     hinges it names, and the hinges that start there carry its largest block move."""
     result = limit_analysis(coarse(0.0), mirror=False)
     assert result.du_first_mm == pytest.approx(result.snaps[0].at_mm)
@@ -94,6 +94,19 @@ def test_du_first_is_the_first_snap_and_every_snap_is_in_the_history():
     for snap in result.snaps:
         started = {h.label for h in result.hinge_history if h.jump_mm == pytest.approx(snap.largest_move_mm)}
         assert started and started <= set(snap.hinges_after.split()) - set(snap.hinges_before.split())
+
+
+def test_a_re_seating_under_the_snap_floor_is_no_loss_of_stability_as_in_the_other_engines():
+    """du_first has one definition in the three solvers: the first snap that moves a block further than
+    numerics.snap_thickness_ratio ring thicknesses (the static engine's and the DEM's floor), or the
+    collapse. The paper's arch re-seats 33E -> 32E at 8.38 mm moving a block 0.11 mm, under its 0.24 mm
+    floor: du_first = du, as the static engine's set 2 (87.99 = 87.99 mm); a tenth of the floor counts it."""
+    result = limit_analysis(ya.preset("set2"), mirror=False)
+    (snap,) = result.snaps
+    assert snap.largest_move_mm < result.snap_floor_mm == pytest.approx(0.01 * 24.0)
+    assert result.du_first_mm == result.du_mm
+    finer = limit_analysis(ya.preset("set2").replace(snap_thickness_ratio=0.001), mirror=False)
+    assert finer.du_first_mm == pytest.approx(snap.at_mm) and finer.du_mm == result.du_mm
 
 
 def test_json_and_cli_report_du_first_and_the_snaps(tmp_path, capsys):

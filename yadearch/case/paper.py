@@ -82,7 +82,7 @@ def model_values_text(taken: dict[str, Any]) -> str:
     values = ", ".join(f"{name} {value:g}" for name, value in taken.items())
     named = any(name.startswith(f"{MATERIAL_KEY}.") for name in taken)
     return (
-        f"this arch is not the paper's but takes the paper's 1:10 model's values (the defaults): {values}; "
-        "give your arch's own in the case file ([material], [interface]) or with --set"
+        f"this arch is not the paper's but has the paper's 1:10 model's values (the defaults): {values}; "
+        "unless they are your arch's too, give its own in the case file ([material], [interface]) or with --set"
         + (", or name a material (--set material=NAME, docs/materials.md)" if named else "")
     )

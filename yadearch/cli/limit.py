@@ -100,7 +100,10 @@ def limit(
     )
     if result.du_first_mm is not None and result.snaps:
         snaps = ", ".join(f"{s.at_mm:.2f} mm ({s.largest_move_mm:.2f} mm)" for s in result.snaps)
-        click.echo(f"du_first = {result.du_first_mm:.2f} mm; snaps survived at (largest block move): {snaps}")
+        click.echo(
+            f"du_first = {result.du_first_mm:.2f} mm (the first snap past the {result.snap_floor_mm:.3g} mm floor, "
+            f"or the collapse); snaps survived at (largest block move): {snaps}"
+        )
     if result.closest_edge_joint is not None:
         click.echo(
             f"nearest edge: joint {result.closest_edge_joint} beside a hinge held its thrust "

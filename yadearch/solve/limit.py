@@ -1,15 +1,17 @@
-"""Rigid-block limit analysis of the arch under a moving support: the kn -> infinity reference of the
-DEM (Gilbert's rigid-block LP as in LimitState RING; Portioli & Cascini 2017 for settlements).
+"""Rigid-block limit analysis of the arch under a moving support: the kn -> infinity reference of the DEM
+(Gilbert's rigid-block LP as in LimitState RING; Portioli & Cascini 2017 for settlements).
 
-The march (`solve.march`) follows the three-hinge mechanism the support drives; at each limit point
-(no admissible equilibrium further on) the hinges re-seat at the fixed support where an energy check
-finds a new equilibrium (`solve.reseat`), until none does. A DEM run at kn 300 loaded gently passes
-snaps of 1.1-1.3 mm (docs/validation.md), so every re-seating is survived, however far it moves,
-unless a block moves further than `runaway_thicknesses` ring thicknesses first (geometry, not a
-millimetre constant). du (du_mm, also du_rigid_mm) is the end of that quasi-static path, du_first_mm
-its first limit point. Without the snaps the paper arch would "collapse" at 8.4 mm, where its
-extrados hinge moves from 33E to 32E. With `kn_N_per_mm3` the joints beside the hinges fold at their
-finite-stiffness margin (`solve.compliant`): the DEM's du at that stiffness.
+The march (`solve.march`) follows the three-hinge mechanism the support drives; at each limit point (no
+admissible equilibrium further on) the hinges re-seat at the fixed support where an energy check finds a
+new equilibrium (`solve.reseat`), until none does. A DEM run at kn 300 loaded gently passes snaps of
+1.1-1.3 mm (docs/validation.md), so every re-seating is survived, however far it moves, unless a block
+moves further than `runaway_thicknesses` ring thicknesses first (geometry, not a millimetre constant).
+du (du_mm, also du_rigid_mm) is the end of that quasi-static path, du_first_mm its first limit point
+whose snap moves a block further than the static engine's and the DEM's snap floor
+(`numerics.snap_thickness_ratio` ring thicknesses), or the collapse. Without the snaps the paper arch
+would "collapse" at 8.4 mm, where its extrados hinge moves from 33E to 32E. With `kn_N_per_mm3` the
+joints beside the hinges fold at their finite-stiffness margin (`solve.compliant`): the DEM's du at that
+stiffness.
 """
 
 from __future__ import annotations
@@ -170,7 +172,8 @@ def _solve(
         raise ValueError(f"runaway_thicknesses must be positive, got {runaway_thicknesses}")
     runaway = runaway_thicknesses * arch.geometry.thickness
     start_pivots = () if start_hinges is None else named_linkage(start_hinges, arch.n_joints)
-    march = March(arch, units.mm(step_mm), units.mm(tolerance_mm), runaway, kn, snap_cap, start_pivots)
+    floor_mm = units.to_mm(case.numerics.snap_thickness_ratio * arch.geometry.thickness)  # the engines' snap floor
+    march = March(arch, units.mm(step_mm), units.mm(tolerance_mm), runaway, kn, snap_cap, start_pivots, floor_mm)
     if progress is not None:
         march.progress = lambda delta: progress(units.to_mm(delta))
     limit = min(units.mm(max_displacement_mm or case.loading.max_support_displacement_mm), arch.movement.length)
@@ -216,6 +219,7 @@ def _solve(
         runaway_thicknesses=runaway_thicknesses,
         max_snap_mm=None if math.isinf(snap_cap) else snap_cap,
         snap_collapse_mm=march.snap_collapse_mm,
+        snap_floor_mm=floor_mm,
         step_mm=step_mm,
         tolerance_mm=tolerance_mm,
         compliant_kn_N_per_mm3=case.interface.kn_N_per_mm3 if compliant else None,

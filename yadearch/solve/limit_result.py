@@ -72,8 +72,9 @@ class LimitResult:
     # at the fixed support, re-seat into an admissible equilibrium (None: standing at the largest
     # displacement tried); du_rigid_mm is the same number under its older name
     du_mm: float | None
-    # the first limit point: where the three-hinge path first loses its equilibrium (a snap survived
-    # or the collapse; None: none met). du_first_mm <= du_mm; equal when the first is the collapse
+    # the first limit point: where the three-hinge path first loses its equilibrium by a snap that
+    # moves a block further than the snap floor (numerics.snap_thickness_ratio ring thicknesses, as the
+    # static engine and the DEM count a snap) or by the collapse; None: none met. du_first_mm <= du_mm
     du_first_mm: float | None
     du_rigid_mm: float | None  # = du_mm
     collapse_mode: str  # "hinging", "snap" (a hinge snap beyond max_snap_mm), "sliding", or "none"
@@ -93,6 +94,7 @@ class LimitResult:
     # runaway distance (None: every snap that re-seats within the runaway bound is survived)
     max_snap_mm: float | None
     snap_collapse_mm: float | None  # the largest block movement of the snap that was the collapse
+    snap_floor_mm: float  # a snap moving no block further is no loss of stability (du_first), as in every engine
     step_mm: float
     tolerance_mm: float
     compliant_kn_N_per_mm3: float | None  # the joints fold at this kn's margin (None: rigid)

@@ -1,19 +1,20 @@
-"""The incremental rigid-block march of `solve.limit`: follow the three-hinge mechanism that the
-support drives, locate where equilibrium is lost, re-seat the hinges at the fixed support, read the
-collapse.
+"""The incremental rigid-block march of `solve.limit`: follow the three-hinge mechanism that the support
+drives, locate where equilibrium is lost, re-seat the hinges at the fixed support, read the collapse.
 
 The kinematic LP gives the mechanism that follows the support (ties to first order told apart by the
-weights' energy a step on, `reseat.follow_tie`); each step closes the linkage exactly (no drift) and
-the static LP checks that an admissible equilibrium remains with forces only at touching corners; a
-corner that closes on the way ends the step and the mechanism is solved again. Where equilibrium is
-lost (a fourth corner, located by bisection), the four-hinge chains that lower the weights at the
-fixed support are followed until one closes one of its open hinges (`reseat`): the admissible landing
-with the lowest weights is kept (ties toward the left) and the march goes on from it; a chain that
-closes none before a block has moved `runaway` (a multiple of the ring's thickness), or no chain at
-all (sliding), is the collapse. `first_limit` is the first limit point, `snaps` the re-seatings
-survived. With a joint stiffness `kn` the joints beside the hinges must also keep their fold margin
-(`solve.compliant`): a folded joint's chain may climb first and take a hinge to any joint (a snap
-that lands is survived however far it moves); where it finds no landing the weights decide.
+weights' energy a step on, `reseat.follow_tie`); each step closes the linkage exactly (no drift) and the
+static LP checks that an admissible equilibrium remains with forces only at touching corners; a corner
+that closes on the way ends the step and the mechanism is solved again. Where equilibrium is lost (a
+fourth corner, located by bisection), the four-hinge chains that lower the weights at the fixed support
+are followed until one closes one of its open hinges (`reseat`): the admissible landing with the lowest
+weights is kept (ties toward the left) and the march goes on from it; a chain that closes none before a
+block has moved `runaway` (a multiple of the ring's thickness), or no chain at all (sliding), is the
+collapse. `first_limit` is the first limit point whose snap moves a block further than the snap floor
+(the static engine's and the DEM's: a re-seating under it is no loss of stability in any engine) or the
+collapse, `snaps` the re-seatings survived. With a joint stiffness `kn` the joints beside the hinges
+must also keep their fold margin (`solve.compliant`): a folded joint's chain may climb first and take a
+hinge to any joint (a snap that lands is survived however far it moves); where it finds no landing the
+weights decide.
 """
 
 from __future__ import annotations
@@ -48,6 +49,7 @@ class March:
         kn: float | None = None,
         max_snap_mm: float = math.inf,
         start: tuple[Pivot, ...] = (),
+        snap_floor_mm: float = 0.0,
     ) -> None:
         self.arch, self.step, self.tolerance, self.n_lp = arch, step, tolerance, 0
         self.start = Mechanism(start, (0.0,) * len(start), 0.0) if start else None  # None: leave rest on the LP's
@@ -58,7 +60,8 @@ class March:
         self.largest_margin = 0.0  # the largest fold margin met (m)
         self.max_snap_mm = max_snap_mm  # a larger snap counts as collapse, as a DEM run's runaway (inf: none)
         self.snap_collapse_mm: float | None = None  # the snap that ended the march, if one did
-        self.first_limit: float | None = None  # the first limit point met (m of support path)
+        self.snap_floor_mm = snap_floor_mm  # a re-seating moving no block further is no loss of stability
+        self.first_limit: float | None = None  # the first limit point met whose snap passes the floor (m)
         self.reseated: list[SnapRecord] = []  # the re-seatings survived
         self.history: list[HingeRecord] = []
         self.pivots: tuple[Pivot, ...] = ()  # the hinges of the mechanism followed now
@@ -155,10 +158,10 @@ class March:
             if last is None:  # the bisection accepted `offset`, so the linkage reaches it
                 at = f"at {units.to_mm(state.delta + offset):.3f} mm"
                 raise RuntimeError(f"{at} the last admissible placement found by bisection can no longer be reached")
-            self.first_limit = last.delta if self.first_limit is None else self.first_limit
             past = self.moved(state, mechanism, offset + self.tolerance)
             read_at = self.moved(last, mechanism, units.mm(COLLAPSE_PROBE_MM)) or past
             if past is None:
+                self.first_limit = last.delta if self.first_limit is None else self.first_limit
                 return last, read_at, mechanism, self.kinematics(read_at, 0.0) if read_at is not None else None
             chain, snapped = self.fold_chain(past), None
             if chain is not None:
@@ -169,6 +172,8 @@ class March:
                 chain = chain or descending
             if snapped is not None and jump > self.max_snap_mm:
                 self.snap_collapse_mm = jump
+            if snapped is None or self.snap_collapse_mm is not None or jump > self.snap_floor_mm:
+                self.first_limit = last.delta if self.first_limit is None else self.first_limit
             if snapped is None or self.snap_collapse_mm is not None:
                 if chain is None and read_at is not None:
                     chain = self.kinematics(read_at, support_speed=0.0)
