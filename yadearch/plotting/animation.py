@@ -15,6 +15,7 @@ from yadearch.atomic import write_atomically
 from yadearch.errors import CaseError, YadearchError
 from yadearch.plotting.house import ENGINE_NAMES, house_style, new_figure
 from yadearch.plotting.states import draw_state, drawing_limits, place_texts, run_states, state_view
+from yadearch.results.load_path import last_stable_multiplier
 from yadearch.results.rundir import RunFolder
 from yadearch.results.states import LOAD_DIGITS
 
@@ -47,7 +48,7 @@ def movie_title(run: RunFolder) -> str:
     unit, capacity = answer["unit"], answer["collapse_multiplier"]
     if capacity is not None:
         return f"{title}, live load: collapse at {capacity:.{LOAD_DIGITS}g} {unit}"
-    return f"{title}, live load: {answer['outcome']} up to {answer['largest_multiplier_tried']:.{LOAD_DIGITS}g} {unit}"
+    return f"{title}, live load: {answer['outcome']} up to {last_stable_multiplier(answer):.{LOAD_DIGITS}g} {unit}"
 
 
 def every_kth(states: list[int], most: int) -> list[int]:

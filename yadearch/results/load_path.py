@@ -30,6 +30,13 @@ from yadearch.solve.stages import Outcome
 
 LOAD_PATH_SUFFIX = "_load_path"
 
+OLD_REACH_KEY = "largest_multiplier_tried"  # last_stable_multiplier's name in files written before (read both)
+
+
+def last_stable_multiplier(data: dict[str, Any]) -> float:
+    """A load path JSON's last stable multiplier, under its name or the one files written before used."""
+    return float(data["last_stable_multiplier"] if "last_stable_multiplier" in data else data[OLD_REACH_KEY])
+
 
 def load_path_file(folder: Path, name: str, suffix: str = "") -> Path:
     """OUT/NAME_load_path + `suffix` (no suffix: the stem of the figure), whatever dots NAME holds."""
@@ -51,7 +58,7 @@ def load_path_json(result: LoadPath, case: ArchCase) -> dict[str, Any]:
         "outcome": result.outcome,
         "collapse_multiplier": number(result.capacity),
         "first_loss_multiplier": number(result.first_loss),
-        "largest_multiplier_tried": result.reach,
+        "last_stable_multiplier": result.reach,
         "hinges_at_collapse": list(result.hinges),
         "collapse_kind": result.kind,
         "rigid_multiplier": number(result.rigid),
@@ -146,7 +153,7 @@ def read_load_path(folder: Path, name: str) -> LoadPath:
         kind=data["collapse_kind"],
         curve=read_curve(load_path_file(folder, name, ".csv")),
         after_mm=float(data["after_mm"]),
-        reach=float(data["largest_multiplier_tried"]),
+        reach=last_stable_multiplier(data),
         iterations=int(data.get("iterations", data.get("steps", 0))),
         rigid=number("rigid_multiplier"),
         rigid_hinges=tuple(data["rigid_hinges"]),

@@ -59,7 +59,7 @@ class LoadPath:
     kind: str | None
     curve: pd.DataFrame
     after_mm: float
-    reach: float  # the largest multiplier the path tried (the arch stands at least to it without collapse)
+    reach: float  # the last stable multiplier of the path (the arch stands at least to it without collapse)
     iterations: int  # the static engine's Newton iterations, or the DEM's time steps
     rigid: float  # the rigid-block capacity of the same state (`solve.load_lp`; NaN where there is none)
     rigid_hinges: tuple[str, ...]
