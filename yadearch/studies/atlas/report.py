@@ -19,11 +19,13 @@ from yadearch.studies.atlas.rigid import COMPLIANT_TABLE, KEY
 from yadearch.studies.atlas.rigid import TABLE as TABLE_RIGID
 from yadearch.studies.atlas.table import (
     ENGINES_TARGET_PCT,
+    FIRST_WIDE_PCT,
     RISE_TOLERANCE_PCT,
     STIFF_TARGET_PCT,
     atlas_table,
     engine_rows,
     rising,
+    stiff_first_gaps,
     stiff_rows,
 )
 from yadearch.studies.dem_settings import NO_DEM_SETTINGS, dem_arguments
@@ -134,6 +136,7 @@ def _stiff_section(table: pd.DataFrame) -> list[str]:
         "",
         f"{len(stiff) - len(outside)} of {len(stiff)} arches where both collapse are within {STIFF_TARGET_PCT:g} %"
         " (the rigid branch of the keystone's tie nearest the static du).",
+        *_stiff_first_line(stiff),
     ]
     if "static_compliant_gap_pct" in outside:
         explained = outside[outside["static_compliant_gap_pct"].abs() <= ENGINES_TARGET_PCT]
@@ -149,6 +152,13 @@ def _stiff_section(table: pd.DataFrame) -> list[str]:
     )
     rows = _gap_rows(outside, "static_rigid_gap_pct", ("rigid_branch_du_mm", "rigid_hinges"), "rigid", extra)
     return lines + ["", "Outside:", ""] + rows
+
+
+def _stiff_first_line(stiff: pd.DataFrame) -> list[str]:
+    """How near the static du_first at the stiffest kn lies to the march's (`stiff_first_gaps`)."""
+    gaps, bounds = stiff_first_gaps(stiff), (STIFF_TARGET_PCT, FIRST_WIDE_PCT)
+    counts = ", ".join(f"{int((gaps <= pct).sum())} of {len(gaps)} within {pct:g} %" for pct in bounds)
+    return [f"du_first (both the first snap past the snap floor, or the collapse): {counts}."] if len(gaps) else []
 
 
 def _engines_section(table: pd.DataFrame) -> list[str]:

@@ -14,6 +14,7 @@ from yadearch.studies.atlas.rigid import KEY
 from yadearch.studies.campaigns.grid import RUN_COLUMN
 
 STIFF_TARGET_PCT = 2.0  # static at the stiffest kn against the rigid march
+FIRST_WIDE_PCT = 10.0  # a wider reading of the stiff du_first gap (the snap floor counts snaps alike, not at one place)
 ENGINES_TARGET_PCT = 1.0  # static against the DEM, on du and on du_first
 RISE_TOLERANCE_PCT = 1.0  # du may fall this much from one kn to the next stiffer and still count as rising
 ENGINE_COLUMNS = ("outcome", "du_first_mm", "du_mm", "collapse_kind", "hinges", "reason")
@@ -102,6 +103,12 @@ def atlas_table(
         for s, r, o in zip(table["static_du_mm"], table["rigid_du_mm"], table.get("rigid_other_du_mm", np.nan))
     ]
     table["static_rigid_gap_pct"] = [gap_pct(s, r) for s, r in zip(table["static_du_mm"], table["rigid_branch_du_mm"])]
+    table["static_rigid_first_gap_pct"] = [  # du_first on the case's own branch (the mirror's is not tabulated)
+        gap_pct(s, f) if b == r else math.nan
+        for s, f, b, r in zip(
+            table["static_du_first_mm"], table["rigid_du_first_mm"], table["rigid_branch_du_mm"], table["rigid_du_mm"]
+        )
+    ]
     table["dem_static_gap_pct"] = [gap_pct(d, s) for d, s in zip(table["dem_du_mm"], table["static_du_mm"])]
     table["dem_static_first_gap_pct"] = [
         gap_pct(d, s) for d, s in zip(table["dem_du_first_mm"], table["static_du_first_mm"])
@@ -146,3 +153,11 @@ def rising(table: pd.DataFrame) -> pd.DataFrame:
             {KEY: name, "largest_fall_pct": float(falls.max()), "rises": bool(falls.max() <= RISE_TOLERANCE_PCT)}
         )
     return pd.DataFrame(rows, columns=[KEY, "largest_fall_pct", "rises"])
+
+
+def stiff_first_gaps(stiff: pd.DataFrame) -> pd.Series:
+    """The static du_first's gap (%, absolute) to the rigid march's at the stiffest kn (`stiff_rows`), where
+    the rigid du is the case's own branch (the mirror branch's du_first is not tabulated)."""
+    if "static_rigid_first_gap_pct" not in stiff:
+        return pd.Series(dtype=float)
+    return stiff["static_rigid_first_gap_pct"].dropna().abs()
