@@ -81,7 +81,7 @@ def test_a_case_on_piers_says_so_and_takes_no_second_pair(narrow):
     'surveyed arch of 57 voussoirs'), its failure to stand names the piers, and piers on piers are
     refused (they stacked silently; fourth user trial)."""
     from yadearch.reporting.run_words import arch_text
-    from yadearch.solve.limit import why_not_standing
+    from yadearch.solve.standing import why_not_standing
 
     assert narrow.geometry.piers_mm == [[HEIGHT_MM, NARROW_MM]]
     assert arch_text(narrow.to_dict()).endswith(f"on piers {HEIGHT_MM:g} mm tall and {NARROW_MM:g} mm wide")

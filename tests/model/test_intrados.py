@@ -25,7 +25,8 @@ from yadearch.cli.commands import main
 from yadearch.errors import CaseError
 from yadearch.model.geometry import arch_on_intrados, block_volume, segmental_arch
 from yadearch.model.intrados import ORIENTATIONS, circular, three_centred
-from yadearch.solve.limit import limit_analysis, stands
+from yadearch.solve.limit import limit_analysis
+from yadearch.solve.standing import stands
 
 REFERENCE = DATA / "paper_arch.npz"
 ROUNDOFF_M = 1e-15  # about 20 ulp of a coordinate of the paper arch

@@ -10,6 +10,7 @@ from conftest import REPO
 
 from yadearch.case.config import load_case, preset
 from yadearch.solve.limit import limit_analysis
+from yadearch.solve.rigid import LimitError
 
 COARSE_45 = {"n_voussoirs": 15, "support_direction_deg": -45.0}
 DEM_RUN = REPO / "reports/movements/validation-fine/paper_inclined45_kn3000_inc0.5"  # 0.5 mm increments
@@ -120,3 +121,15 @@ def test_a_fold_that_takes_a_hinge_far_is_a_snap_followed_to_its_landing(tmp_pat
     static_folds = [s["fold_mm"] for s in summary.snaps]
     assert any(low - 0.1 < far.at_mm < high + 0.1 for low, high in static_folds), static_folds  # the same snap
     assert summary.collapsed and compliant.du_mm == pytest.approx(summary.du_mm, rel=0.03)
+
+
+def test_joints_too_soft_for_the_arch_to_stand_give_no_compliant_du():
+    """A semicircle 35 mm thick (t/R 0.11, near the least thickness that stands) does not stand on
+    joints of kn 100 in the static engine; the compliant march, which folds only the joints beside its
+    hinges, gave 2.02 mm there (seventh user trial). It now refuses in one line; at kn 10 000, where
+    the static engine stands and collapses at 4.57 mm, it answers (4.73 mm; rigid 5.96)."""
+    thin = preset("set2").with_overrides({"embrace_deg": 180.0, "thickness_mm": 35.0})
+    with pytest.raises(LimitError, match="kn_N_per_mm3 = 100: the static engine finds .* do not let this arch stand"):
+        limit_analysis(thin.with_overrides({"kn_N_per_mm3": 100.0}), mirror=False, compliant=True)
+    stiff = limit_analysis(thin.with_overrides({"kn_N_per_mm3": 10_000.0}), mirror=False, compliant=True)
+    assert stiff.du_mm == pytest.approx(4.73, abs=0.01)

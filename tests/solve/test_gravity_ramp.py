@@ -16,8 +16,8 @@ import yadearch.solve.static_path as static_path
 from yadearch.case.config import load_case, preset
 from yadearch.errors import CANNOT_STAND
 from yadearch.solve import banded
-from yadearch.solve.limit import stands
 from yadearch.solve.stages import Verdict
+from yadearch.solve.standing import stands
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.static_state import StaticEngineError
 from yadearch.static.records import StaticRecords

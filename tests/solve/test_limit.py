@@ -15,8 +15,9 @@ from yadearch.case.config import ArchCase, preset
 from yadearch.cli.commands import main
 from yadearch.model.geometry import block_volume, segmental_arch
 from yadearch.model.hinges import mirror_hinge_labels
-from yadearch.solve.limit import limit_analysis, stands
+from yadearch.solve.limit import limit_analysis
 from yadearch.solve.rigid import LimitError
+from yadearch.solve.standing import stands
 
 TOLERANCE_MM = 1e-3  # limit_analysis's default bisection width
 DEM_STIFFEST_DU_MM = 109.09  # reports/kn-sweep/kn100: DEM du at kn = 100 N/mm3, 1E 8I 30E 56E

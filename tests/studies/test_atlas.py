@@ -11,7 +11,7 @@ import pytest
 
 from yadearch.case.config import preset
 from yadearch.case.numerics_section import SCENE_PATH_STATES, STATIC_PATH_STATES
-from yadearch.solve.limit import stands
+from yadearch.solve.standing import stands
 from yadearch.studies.atlas.grid import (
     KNS_N_PER_MM3,
     MOVEMENTS,

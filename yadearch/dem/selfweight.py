@@ -14,8 +14,8 @@ from yadearch.dem.scene import body_states
 from yadearch.dem.stepping import CHECK_EVERY_STEPS
 from yadearch.errors import CANNOT_STAND, RunFailedError
 from yadearch.model import units
-from yadearch.solve.limit import why_not_standing
 from yadearch.solve.stages import Stage
+from yadearch.solve.standing import why_not_standing
 
 if TYPE_CHECKING:
     from yadearch.dem.runner import Runner

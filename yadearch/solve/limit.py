@@ -26,75 +26,19 @@ from typing import Any
 import numpy as np
 
 from yadearch.case.config import ArchCase
-from yadearch.case.held import HELD_SETTINGS, held_multiplier, unheld
-from yadearch.case.shape import MEASURED
-from yadearch.errors import ArgumentTypeError, CaseError, YadearchError
+from yadearch.errors import ArgumentTypeError, CaseError
 from yadearch.model import units
 from yadearch.model.hinges import mirror_hinge_labels
-from yadearch.solve.limit_lp import solve_statics
 from yadearch.solve.limit_result import LimitResult, interface_forces
 from yadearch.solve.march import March
 from yadearch.solve.mirror import has_other_branch, mirror_image
 from yadearch.solve.reseat import DEFAULT_RUNAWAY_THICKNESSES, penetrates
 from yadearch.solve.rigid import SIDES, LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, rigid_arch
+from yadearch.solve.standing import refuse_compliant_that_cannot_stand, refuse_uncarried_held_load, too_weak
 
 DEFAULT_STEP_MM = 0.5  # support step between equilibrium checks
 DEFAULT_TOLERANCE_MM = 1e-3  # width of the bisection bracket that locates a limit
 HINGE_LABEL = re.compile(r"(\d+)([IE])")  # a hinge as the results name it: interface (1-based) and side
-FRICTION_MARGIN = 0.9  # rigid blocks that fall with this share of tan(friction) stand by friction alone
-
-
-def stands(case: ArchCase) -> bool:
-    """Whether the undeformed arch admits an equilibrium (thrust line inside, friction enough)."""
-    arch = rigid_arch(unheld(case))  # under its own weight (and the fill's), as a run's self-weight
-    return solve_statics(arch, at_rest(arch)).feasible
-
-
-def _refuse_uncarried_held_load(case: ArchCase, arch: RigidArch) -> None:
-    """CaseError in one line for a held live load larger than the rigid arch's capacity (it stood
-    without it): the march would say the arch admits no equilibrium at rest."""
-    held = held_multiplier(case)
-    if held == 0.0 or solve_statics(arch, at_rest(arch)).feasible or not stands(case):
-        return
-    from yadearch.solve.load_lp import load_analysis  # a capacity's LP, for this message only
-
-    capacity = load_analysis(unheld(case))
-    raise CaseError(
-        f"loads.{HELD_SETTINGS[case.loads.live_load]} = {held:g}: rigid blocks do not carry it (they collapse at "
-        f"{capacity.multiplier:.4g} {capacity.unit} on {capacity.hinge_labels}: `yadearch loads`); hold less"
-    )
-
-
-def why_not_standing(case: ArchCase) -> str:
-    """For the message of an arch that does not stand under its own weight: whether rigid blocks of
-    the same shape would (then its joints are too soft for it: the compliance folds the ring) or not
-    (then the ring is too thin or the friction too low for its shape, whatever the joints)."""
-    try:
-        rigid = stands(case)
-    except (LimitError, YadearchError):
-        return ""
-    less = math.degrees(math.atan(FRICTION_MARGIN * math.tan(math.radians(case.material.friction_deg))))
-    if rigid and not stands(case.with_overrides({"friction_deg": less})):
-        return (
-            f"rigid blocks of this shape stand only by friction (with {FRICTION_MARGIN:.0%} of tan(friction_deg) "
-            "they do not): joints that slide as they deform carry less than the rigid analysis's; a higher "
-            "friction_deg, or joints closer to radial, stand"
-        )
-    if rigid:
-        return (
-            f"rigid blocks of this shape stand: its joints at kn {case.interface.kn_N_per_mm3:g} N/mm3 are too "
-            "soft for it (their compliance folds the ring); a stiffer kn or a thicker ring stands"
-        )
-    return f"rigid blocks of this shape do not stand either: {_too_weak(case)}"
-
-
-def _too_weak(case: ArchCase) -> str:
-    """Why rigid blocks of `case` do not stand, for its message: the ring or the friction, or blocks
-    other than a parametric ring's (its piers, a surveyed block) too narrow for the thrust."""
-    weak = "the ring is too thin or the friction too low"
-    if case.geometry.piers_mm:
-        return f"{weak}, or its piers ({case.geometry.piers_mm[0][1]:g} mm wide) too narrow for its thrust"
-    return f"{weak}, or a surveyed block too narrow for the thrust" if case.geometry.shape == MEASURED else weak
 
 
 def limit_analysis(
@@ -127,6 +71,8 @@ def limit_analysis(
     admissible only there. `progress` is told each admitted support position (mm), the mirrored
     branch's after the case's."""
     settings = (step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant, runaway_thicknesses, progress)
+    if compliant:
+        refuse_compliant_that_cannot_stand(case)
     result, arch = _solve(case, *settings, start_hinges, start_mm)
     if start_hinges is not None or not (mirror and has_other_branch(case)):
         return result
@@ -165,7 +111,7 @@ def _solve(
             "support movement does not take the fill's passive resistance (the load capacity, the static "
             "engine and the DEM do); set it to 0 for the rigid march"
         )
-    _refuse_uncarried_held_load(case, arch)
+    refuse_uncarried_held_load(case, arch)
     snap_cap = math.inf if max_snap_mm is None else max_snap_mm
     kn = units.stiffness_per_volume(case.interface.kn_N_per_mm3) if compliant else None
     if not runaway_thicknesses > 0.0:
@@ -180,7 +126,7 @@ def _solve(
     placed = _check_start(march, start_pivots, units.mm(start_mm), limit) if start_pivots or start_mm else None
     origin = placed if placed is not None else at_rest(arch)
     if not march.admissible(origin):
-        raise LimitError(f"the arch admits no equilibrium at rest: {_too_weak(case)}")
+        raise LimitError(f"the arch admits no equilibrium at rest: {too_weak(case)}")
     last, read_at, mechanism, chain = march.run(limit, origin)
     if read_at is None and last.delta < limit - units.mm(tolerance_mm):
         raise LimitError(

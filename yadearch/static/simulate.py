@@ -25,10 +25,10 @@ from yadearch.results.provenance import provenance
 from yadearch.results.run_log import stamped_log
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSummary, collapse_fields, loading_info
-from yadearch.solve.limit import why_not_standing
 from yadearch.solve.mirror import mirror_hinges
 from yadearch.solve.path import PathStep, bracket_text
 from yadearch.solve.stages import Stage
+from yadearch.solve.standing import why_not_standing
 from yadearch.solve.static_path import StaticLoading
 from yadearch.solve.static_state import StaticEngineError
 from yadearch.static.increments_check import increments_check

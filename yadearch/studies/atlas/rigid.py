@@ -15,7 +15,8 @@ import pandas as pd
 from yadearch.atomic import write_csv_atomically
 from yadearch.case.config import ArchCase
 from yadearch.errors import YadearchError
-from yadearch.solve.limit import limit_analysis, stands
+from yadearch.solve.limit import limit_analysis
+from yadearch.solve.standing import stands
 from yadearch.studies.atlas.grid import Geometry
 
 TABLE = "rigid.csv"

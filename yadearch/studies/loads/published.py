@@ -14,8 +14,8 @@ import pandas as pd
 
 from yadearch.case.config import ArchCase, preset
 from yadearch.model import units
-from yadearch.solve.limit import stands
 from yadearch.solve.load_lp import load_analysis
+from yadearch.solve.standing import stands
 from yadearch.studies.loads.rigid import semicircle_thickness_mm
 
 SLIDING_FRICTION_DEG = 17.1824  # mu_ms = 0.309215: below it no thickness stands (purely sliding modes)
