@@ -85,6 +85,23 @@ def test_runaway_is_a_multiple_of_the_thickness_that_does_not_move_du():
         limit_analysis(case, runaway_thicknesses=0.0)
 
 
+def test_the_march_takes_the_engines_runaway_bound_and_says_when_du_rests_on_it(tmp_path, capsys):
+    """du has one definition in the three solvers: the march's runaway bound is the case's
+    numerics.runaway_thickness_ratio (0.5 ring thickness), as the static engine's and the DEM's (it was
+    1.0 of its own). The shallow arch (embrace 75 deg) re-seats at 108.44 mm moving a block 15.11 mm:
+    past half of its 24 mm ring, so the default bound ends the path there; at one thickness it lands
+    and collapses at 112.88 mm, and `limit` warns that du rests on the bound."""
+    shallow = ya.preset("set2").replace(embrace_deg=75.0)
+    assert limit_analysis(shallow, mirror=False).du_mm == pytest.approx(108.44, abs=0.01)
+    wide = limit_analysis(shallow.replace(runaway_thickness_ratio=1.0), mirror=False)
+    assert wide.du_mm == pytest.approx(112.88, abs=0.01) and wide.snaps[0].largest_move_mm == pytest.approx(
+        15.11, abs=0.01
+    )
+    args = ["limit", "--preset", "set2", "--set", "embrace_deg=75", "--set", "numerics.runaway_thickness_ratio=1"]
+    assert main([*args, "--no-figures", "--out", str(tmp_path)]) == 0
+    assert "du rests on numerics.runaway_thickness_ratio" in capsys.readouterr().out
+
+
 def test_du_first_is_the_first_snap_and_every_snap_is_in_the_history():
     """Each snap survived is a limit point of the path: the first (past the snap floor) is du_first_mm, each moves the
     hinges it names, and the hinges that start there carry its largest block move."""

@@ -5,7 +5,15 @@ from __future__ import annotations
 
 import click
 
-from yadearch.cli.options import RIGID, case_options, figures_option, refuse_unread, resolve_case, stood_text
+from yadearch.cli.options import (
+    MARCH_NUMERICS,
+    RIGID,
+    case_options,
+    figures_option,
+    refuse_unread,
+    resolve_case,
+    stood_text,
+)
 from yadearch.cli.param_types import OUT_FOLDER, argument_type
 
 
@@ -60,12 +68,13 @@ def limit(
     figures: bool,
 ) -> None:
     """Rigid-block limit analysis, no YADE: du_rigid, hinges, thrust-line figure (kn only with --compliant)."""
+    from yadearch.analysis.mechanism import NEAR_BOUND
     from yadearch.api.runs import limit as limit_analysis
     from yadearch.api.runs import limit_files
     from yadearch.case.imperfect import amplitudes
     from yadearch.solve.compliant import VALID_MARGIN_FRACTION
 
-    refuse_unread(settings, kn, RIGID, compliant)
+    refuse_unread(settings, kn, RIGID, compliant, reads=MARCH_NUMERICS)
     case = resolve_case(preset_name, case_file, kn, settings)
     if compliant:  # a march of LPs with the fold margins at every step: seconds to tens of seconds, said first
         kn_text = f"{case.interface.kn_N_per_mm3:g} N/mm^3"
@@ -103,6 +112,14 @@ def limit(
         click.echo(
             f"du_first = {result.du_first_mm:.2f} mm (the first snap past the {result.snap_floor_mm:.3g} mm floor, "
             f"or the collapse); snaps survived at (largest block move): {snaps}"
+        )
+    bound_mm = result.runaway_thicknesses * case.geometry.thickness_mm
+    near = [snap for snap in result.snaps if snap.largest_move_mm >= NEAR_BOUND * bound_mm]
+    if near:  # a snap nearly as long as the bound: a shorter bound would have called it the collapse
+        click.echo(
+            f"warning: the snap at {near[0].at_mm:.2f} mm moved a block {near[0].largest_move_mm:.2f} mm, "
+            f"{near[0].largest_move_mm / bound_mm:.0%} of the runaway bound ({bound_mm:g} mm): the bound halved "
+            "would end the path there, so du rests on numerics.runaway_thickness_ratio"
         )
     if result.closest_edge_joint is not None:
         click.echo(

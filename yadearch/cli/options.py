@@ -108,13 +108,21 @@ def _refuse_dem_numerics(keys: list[str]) -> None:
 PASSIVE_DISPLACEMENT_KEY = "fill_passive_displacement_mm"  # the fill's spring, which rigid blocks do not have
 
 
+MARCH_NUMERICS = ("snap_thickness_ratio", "runaway_thickness_ratio")  # what the rigid march reads as the engines do
+
+
 def refuse_unread(
-    settings: tuple[str, ...], kn: float | None, engine: str, compliant: bool = False, can_comply: bool = True
+    settings: tuple[str, ...],
+    kn: float | None,
+    engine: str,
+    compliant: bool = False,
+    can_comply: bool = True,
+    reads: tuple[str, ...] = (),
 ) -> None:
     """UsageError in one line when --set (or --kn) names a parameter `engine` does not read: the
-    rigid-block analysis reads no numerics, no fill spring and, unless `compliant`, no joint stiffness
-    (the hint names --compliant where the command has it, `can_comply`); the static engine reads no DEM
-    numerics."""
+    rigid-block analysis reads no numerics but those it `reads` (the march: MARCH_NUMERICS), no fill
+    spring and, unless `compliant`, no joint stiffness (the hint names --compliant where the command
+    has it, `can_comply`); the static engine reads no DEM numerics."""
     from yadearch.case.config import parameter_section
     from yadearch.case.support import MOVEMENT_KEY
     from yadearch.results.summary import STATIC
@@ -135,6 +143,8 @@ def refuse_unread(
         if key in (MOVEMENT_KEY, MATERIAL_KEY):  # a named movement or material: parameters rigid blocks read
             continue
         section = parameter_section(key)
+        if section == "numerics" and key.split(".")[-1] in reads:
+            continue
         if section == "numerics" or (section == "interface" and not compliant):
             why = "a numerical setting of the engines" if section == "numerics" else "the joints are rigid"
             raise click.UsageError(f"--set {key} plays no part in the rigid-block analysis ({why}); drop it")

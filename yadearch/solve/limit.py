@@ -5,7 +5,8 @@ The march (`solve.march`) follows the three-hinge mechanism the support drives; 
 admissible equilibrium further on) the hinges re-seat at the fixed support where an energy check finds a
 new equilibrium (`solve.reseat`), until none does. A DEM run at kn 300 loaded gently passes snaps of
 1.1-1.3 mm (docs/validation.md), so every re-seating is survived, however far it moves, unless a block
-moves further than `runaway_thicknesses` ring thicknesses first (geometry, not a millimetre constant).
+moves further than `numerics.runaway_thickness_ratio` ring thicknesses first, the static engine's and
+the DEM's bound (geometry, not a millimetre constant).
 du (du_mm, also du_rigid_mm) is the end of that quasi-static path, du_first_mm its first limit point
 whose snap moves a block further than the static engine's and the DEM's snap floor
 (`numerics.snap_thickness_ratio` ring thicknesses), or the collapse. Without the snaps the paper arch
@@ -32,7 +33,7 @@ from yadearch.model.hinges import mirror_hinge_labels
 from yadearch.solve.limit_result import LimitResult, interface_forces
 from yadearch.solve.march import March
 from yadearch.solve.mirror import has_other_branch, mirror_image
-from yadearch.solve.reseat import DEFAULT_RUNAWAY_THICKNESSES, penetrates
+from yadearch.solve.reseat import penetrates
 from yadearch.solve.rigid import SIDES, LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, rigid_arch
 from yadearch.solve.standing import refuse_compliant_that_cannot_stand, refuse_uncarried_held_load, too_weak
 
@@ -49,27 +50,26 @@ def limit_analysis(
     max_snap_mm: float | None = None,
     mirror: bool = True,
     compliant: bool = False,
-    runaway_thicknesses: float = DEFAULT_RUNAWAY_THICKNESSES,
+    runaway_thicknesses: float | None = None,
     start_hinges: Sequence[str] | str | None = None,
     start_mm: float = 0.0,
     progress: Callable[[float], None] | None = None,
 ) -> LimitResult:
-    """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible
-    equilibrium, its hinge history and its last admissible state (see the module docstring). A
-    re-seating that moves a block further than `runaway_thicknesses` ring thicknesses runs away (the
-    collapse). `max_snap_mm` is for comparing with a DEM run only: a snap moving a block further than
-    the run's runaway distance is then the collapse, as the run counts it (default: every snap that
-    re-seats is survived; docs/validation.md). On an odd number of voussoirs a movement
-    whose mirror image differs (a support that turns or moves vertically) is solved mirrored too
-    (`mirror_du_rigid_mm`; `mirror` false: not): the keystone's two joints tie, and each branch has
-    its own limit. `compliant`: the joints beside the hinges fold at the margin the case's kn allows
+    """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible equilibrium,
+    its hinge history and its last admissible state (see the module docstring). A re-seating that moves a block
+    further than `runaway_thicknesses` ring thicknesses (default: the case's numerics.runaway_thickness_ratio,
+    as the other engines) runs away (the collapse). `max_snap_mm` is for comparing with a DEM run only: a snap
+    moving a block further than the run's runaway distance is then the collapse, as the run counts it (default:
+    every snap that re-seats is survived; docs/validation.md). On an odd number of voussoirs a movement whose
+    mirror image differs (a support that turns or moves vertically) is solved mirrored too
+    (`mirror_du_rigid_mm`; `mirror` false: not): the keystone's two joints tie, and each branch has its own
+    limit. `compliant`: the joints beside the hinges fold at the margin the case's kn allows
     (`solve.compliant`), giving the du a DEM run of that stiffness should find instead of the rigid one.
-    `start_hinges` ("1E 35I 56E"): leave rest on that linkage instead of the LP's (another engine's, to
-    see where the rigid blocks take it), refused in one line unless the support drives it with an
-    admissible equilibrium; its hinges name this branch, so the mirror image is not solved. `start_mm`:
-    placed that far along it from rest (the path before is not followed), for a linkage that becomes
-    admissible only there. `progress` is told each admitted support position (mm), the mirrored
-    branch's after the case's."""
+    `start_hinges` ("1E 35I 56E"): leave rest on that linkage instead of the LP's (another engine's, to see
+    where the rigid blocks take it), refused in one line unless the support drives it with an admissible
+    equilibrium; its hinges name this branch, so the mirror image is not solved. `start_mm`: placed that far
+    along it from rest (the path before is not followed), for a linkage that becomes admissible only there.
+    `progress` is told each admitted support position (mm), the mirrored branch's after the case's."""
     settings = (step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant, runaway_thicknesses, progress)
     if compliant:
         refuse_compliant_that_cannot_stand(case)
@@ -96,7 +96,7 @@ def _solve(
     max_displacement_mm: float | None,
     max_snap_mm: float | None,
     compliant: bool,
-    runaway_thicknesses: float,
+    runaway_thicknesses: float | None,
     progress: Callable[[float], None] | None,
     start_hinges: Sequence[str] | str | None = None,
     start_mm: float = 0.0,
@@ -114,6 +114,8 @@ def _solve(
     refuse_uncarried_held_load(case, arch)
     snap_cap = math.inf if max_snap_mm is None else max_snap_mm
     kn = units.stiffness_per_volume(case.interface.kn_N_per_mm3) if compliant else None
+    if runaway_thicknesses is None:  # the static engine's and the DEM's bound: one definition of du
+        runaway_thicknesses = case.numerics.runaway_thickness_ratio
     if not runaway_thicknesses > 0.0:
         raise ValueError(f"runaway_thicknesses must be positive, got {runaway_thicknesses}")
     runaway = runaway_thicknesses * arch.geometry.thickness

@@ -36,7 +36,6 @@ from yadearch.solve.rigid import Pivot, Placement, RigidArch, close_linkage, con
 # ties that matter (the keystone's two joints under an inclined movement) differ by ~1e-5: 1e-9
 # sits three decades from both, so a perturbed input breaks a tie the same way on any machine.
 TIE_FRACTION = 1e-9
-DEFAULT_RUNAWAY_THICKNESSES = 1.0  # a snap moving a block further than this many ring thicknesses runs away
 # a chain whose energy rate is below this fraction of (weight x thickness) per radian neither lowers
 # nor raises the weights: 100 times the central difference's round-off, 1e-4 of the rate 0.05 mm past a limit
 RATE_FRACTION = 1e-7
