@@ -24,15 +24,25 @@ FIGURE_JOBS = 2  # a single run's figures are drawn in two processes (where the 
 
 def _report_summary(out: Path) -> None:
     from yadearch.analysis.mechanism import run_warnings
-    from yadearch.results.rundir import read_summary
+    from yadearch.model.hinges import SAME_MECHANISM, hinge_change
+    from yadearch.results.rundir import read_run, read_summary
 
     summary: RunSummary = read_summary(out)
     du = summary.du_mm
     loading = summary.loading
     reach = stood_text(loading.max_displacement_mm, loading.motion) if loading else "no collapse"
+    mode = " ".join(summary.collapse_mode_hinges or [])
+    fold = (  # the fold's own motion where the joints open after the runaway make another mechanism
+        f" (the fold's mode: {mode}, {summary.collapse_kind})"
+        if mode
+        and summary.hinge_labels
+        and hinge_change(summary.hinge_labels, mode, read_run(out).case["geometry"]["n_voussoirs"] + 1)
+        not in SAME_MECHANISM
+        else ""
+    )
     click.echo(
         f"{summary.name}: du = {reach if du is None else f'{du:.2f} mm'}, "
-        f"hinges at collapse {summary.hinge_text or '-'}, {summary.cost}, "
+        f"hinges at collapse {summary.hinge_text or '-'}{fold}, {summary.cost}, "
         f"{seconds_text(summary.wall_s)} -> {out}"
     )
     if summary.increments_check:
