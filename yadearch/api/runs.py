@@ -186,7 +186,7 @@ def limit(
     stiffness should find; docs/validation.md); `max_snap_mm`: a hinge snap moving a block further
     is collapse, as in a run; `start_hinges` ("1E 35I 56E"): leave rest on that linkage (another
     engine's) instead of the LP's, placed `start_mm` along it. With `out`, writes OUT/NAME.json and
-    (with `figures`) the thrust-line figure (NAME_compliant.* when compliant, NAME_start-1E-35I-56E.*
+    (with `figures`) the thrust-line figure (NAME_compliant-knKN.* when compliant, NAME_start-1E-35I-56E.*
     from a named linkage). Unless `quiet`, a march longer than a few seconds prints where it is."""
     from yadearch.plotting.thrust_line import save_thrust_line
     from yadearch.solve.limit import limit_analysis
@@ -219,10 +219,10 @@ def limit_files(
     start_hinges: Sequence[str] | None = None,
     start_mm: float | None = None,
 ) -> tuple[Path, Path]:
-    """Where `limit(..., out=out)` writes: OUT/NAME.json and the figure's stem OUT/NAME (NAME_compliant
-    when compliant, then _start-1E-35I-56E from a named linkage, -at2.5mm placed along it; a name may
-    hold dots, as kn5.2)."""
-    name = f"{case.name}_compliant" if compliant else case.name
+    """Where `limit(..., out=out)` writes: OUT/NAME.json and the figure's stem OUT/NAME (NAME_compliant-kn100
+    when compliant at kn 100, so that two stiffnesses keep two files, then _start-1E-35I-56E from a named
+    linkage, -at2.5mm placed along it; a name may hold dots, as kn5.2)."""
+    name = f"{case.name}_compliant-kn{case.interface.kn_N_per_mm3:g}" if compliant else case.name
     if start_hinges:
         name += "_start-" + "-".join(start_hinges) + (f"-at{start_mm:g}mm" if start_mm else "")
     return Path(out) / f"{name}.json", Path(out) / name

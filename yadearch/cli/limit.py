@@ -38,7 +38,7 @@ from yadearch.cli.param_types import OUT_FOLDER, argument_type
     "--compliant",
     is_flag=True,
     help="let the joints fold at the margin the case's kn allows (compliant hinges): the du a DEM "
-    "run of that stiffness should find, written as NAME_compliant.json",
+    "run of that stiffness should find, written as NAME_compliant-knKN.json",
 )
 @click.option(
     "--start-hinges",
