@@ -96,15 +96,14 @@ def limit(
         if stood
         else f"{result.du_rigid_mm:.2f} mm"
     )
-    if compliant:
-        du += f" with compliant hinges at kn {case.interface.kn_N_per_mm3:g} N/mm^3"
+    quantity = f"du (compliant march, kn {case.interface.kn_N_per_mm3:g} N/mm^3)" if compliant else "du_rigid"
     new = f" (new: {' '.join(result.new_at_collapse)})" if result.new_at_collapse else ""
     if result.start_hinges:
         where = f"{result.start_mm:g} mm along" if result.start_mm else "from rest on"
         new += f", {where} {' '.join(result.start_hinges)}"
     mechanism = "hinges at the end:" if stood else f"{result.collapse_mode} on"
     click.echo(
-        f"{case.name}: du_rigid = {du}, {mechanism} {' '.join(result.collapse_hinges)}"
+        f"{case.name}: {quantity} = {du}, {mechanism} {' '.join(result.collapse_hinges)}"
         f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}"
     )
     if result.du_first_mm is not None and result.snaps:
