@@ -26,7 +26,7 @@ def test_a_case_is_replaced_by_bare_parameter_names():
 def test_an_opened_run_gives_du_and_hinges_with_the_papers_labels(tmp_path):
     summary = make_run(tmp_path / "run")
     result = ya.open_run(tmp_path / "run")
-    assert result.du_mm == summary.du_mm and result.collapsed
+    assert result.du_mm == summary.du_mm and result.du_first_mm == summary.du_first_mm and result.collapsed
     assert [(h.label, h.paper_label) for h in result.hinges] == [("1E", "D"), ("12I", "A"), ("30E", "B"), ("56E", "C")]
 
 

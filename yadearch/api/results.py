@@ -54,6 +54,12 @@ class RunResult:
         return self.summary.du_mm
 
     @property
+    def du_first_mm(self) -> float | None:
+        """Where the path first lost stability (mm; a fold, or a snap past the snap floor): du where the
+        path made no snap; None if the arch did not collapse (docs/numerics.md)."""
+        return self.summary.du_first_mm
+
+    @property
     def engine(self) -> str:
         """The engine that made this run: 'dem' (YADE) or 'static' (Newton's method)."""
         return self.summary.engine
