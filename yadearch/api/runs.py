@@ -232,14 +232,20 @@ PROGRESS_EVERY_S = 2.0  # a progress line at most this often, the first after as
 
 
 def position_lines(name: str, limit_mm: float) -> Callable[[float], None]:
-    """A march's progress: its support position (mm), at most every PROGRESS_EVERY_S."""
+    """A march's progress: its support position (mm), at most every PROGRESS_EVERY_S; a position behind
+    the last is the mirror image's march, which `limit` solves after the case's, and is named so."""
     started = last = time.perf_counter()
+    reached, branch = 0.0, ""
 
     def tell(delta_mm: float) -> None:
-        nonlocal last
+        nonlocal last, reached, branch
+        if delta_mm < reached:  # one march only moves the support on: the mirrored branch has begun
+            branch = " (the mirror image)"
+        reached = delta_mm
         now = time.perf_counter()
         if now - last >= PROGRESS_EVERY_S:
             last = now
-            print(f"{name}: at {delta_mm:.2f} mm of at most {limit_mm:g} mm, {now - started:.0f} s", flush=True)
+            at = f"at {delta_mm:.2f} mm of at most {limit_mm:g} mm{branch}"
+            print(f"{name}: {at}, {now - started:.0f} s", flush=True)
 
     return tell
