@@ -112,6 +112,8 @@ def limit(
             f"du_first = {result.du_first_mm:.2f} mm (the first snap past the {result.snap_floor_mm:.3g} mm floor, "
             f"or the collapse); snaps survived at (largest block move): {snaps}"
         )
+    elif result.du_first_mm is not None:
+        click.echo(f"du_first = du = {result.du_first_mm:.2f} mm: no snap before the collapse")
     bound_mm = result.runaway_thicknesses * case.geometry.thickness_mm
     near = [snap for snap in result.snaps if snap.largest_move_mm >= NEAR_BOUND * bound_mm]
     if near:  # a snap nearly as long as the bound: a shorter bound would have called it the collapse

@@ -44,6 +44,8 @@ def refuse_compliant_that_cannot_stand(case: ArchCase) -> None:
     from yadearch.solve.static_path import StaticLoading  # the compliant model's self-weight, for this check only
     from yadearch.solve.static_state import StaticEngineError
 
+    if not stands(case):  # rigid blocks do not stand either: the march says why, joints apart
+        return
     try:
         StaticLoading.of(case).selfweight()
     except StaticEngineError as exc:
