@@ -106,6 +106,7 @@ def test_du_first_is_the_first_snap_and_every_snap_is_in_the_history():
     """Each snap survived is a limit point of the path: the first (past the snap floor) is du_first_mm, each moves the
     hinges it names, and the hinges that start there carry its largest block move."""
     result = limit_analysis(coarse(0.0), mirror=False)
+    assert result.snaps[0].largest_move_mm > result.snap_floor_mm  # past the floor: a loss of stability
     assert result.du_first_mm == pytest.approx(result.snaps[0].at_mm)
     assert result.du_first_mm <= result.du_mm == result.du_rigid_mm
     for snap in result.snaps:

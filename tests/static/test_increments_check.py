@@ -127,6 +127,7 @@ def test_a_static_load_path_checks_its_capacity_with_the_increments_halved(tmp_p
     assert "increments halved: collapse, capacity" in capsys.readouterr().out
     check = json.loads((tmp_path / "checked" / "custom_load_path.json").read_text())["increments_check"]
     assert check["resolved"] and abs(check["capacity_moved"]) <= 0.01  # set 2's quarter-span capacity
+    assert check["mode_resolved"] and check["mode_hinges_change"] in ("the same", "the mirror image", "a joint away")
     assert main([*common, "--no-check", "--out", str(tmp_path / "once")]) == 0
     assert "increments_check" not in json.loads((tmp_path / "once" / "custom_load_path.json").read_text())
 

@@ -152,6 +152,10 @@ def test_the_static_answers_the_halved_increments_move_are_counted_listed_and_st
     assert "1 do not:" in text
     assert f"| {moved} | collapse | 40.50 | 40.00 |" in text  # listed with the halved du beside its own
     assert "40.50 (30.00)*" in text  # starred in the du table
+    assert "The collapse mode changes its mechanism" not in text  # a table made before the mode's column
+    other = static[RUN_COLUMN].iloc[1]
+    static = static.assign(increments_mode_resolved=static[RUN_COLUMN] != other)
+    assert f"The collapse mode changes its mechanism in 1: {other}." in atlas_markdown(atlas_table(static, rigid, dem))
     unchecked = atlas_markdown(atlas_table(_synthetic()[0], rigid, dem))
     assert "Not checked" in unchecked and not re.search(r"\d\*", unchecked)
 

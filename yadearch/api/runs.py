@@ -203,6 +203,7 @@ def limit(
         start_hinges=start_hinges,
         start_mm=start_mm,
         progress=None if quiet else position_lines(case.name, case.loading.max_support_displacement_mm),
+        mirror_progress=None if quiet else position_lines(case.name, case.loading.max_support_displacement_mm, True),
     )
     if folder is not None:
         json_path, figure_stem = limit_files(case, compliant, folder, result.start_hinges, result.start_mm)
@@ -231,17 +232,14 @@ def limit_files(
 PROGRESS_EVERY_S = 2.0  # a progress line at most this often, the first after as long
 
 
-def position_lines(name: str, limit_mm: float) -> Callable[[float], None]:
-    """A march's progress: its support position (mm), at most every PROGRESS_EVERY_S; a position behind
-    the last is the mirror image's march, which `limit` solves after the case's, and is named so."""
+def position_lines(name: str, limit_mm: float, mirrored: bool = False) -> Callable[[float], None]:
+    """A march's progress: its support position (mm), at most every PROGRESS_EVERY_S; the `mirrored`
+    branch's (which `limit` solves after the case's) named so."""
     started = last = time.perf_counter()
-    reached, branch = 0.0, ""
+    branch = " (the mirror image)" if mirrored else ""
 
     def tell(delta_mm: float) -> None:
-        nonlocal last, reached, branch
-        if delta_mm < reached:  # one march only moves the support on: the mirrored branch has begun
-            branch = " (the mirror image)"
-        reached = delta_mm
+        nonlocal last
         now = time.perf_counter()
         if now - last >= PROGRESS_EVERY_S:
             last = now

@@ -179,9 +179,9 @@ class NumericsConfig:
             0.5,
             low_open=True,
             doc="a state that puts a block further than this many ring thicknesses from where its branch "
-            "predicts it (the static engine's continuation, the DEM's trend and static check) is on "
-            "another branch: the path snapped, and the fold before it is du_first; the resolution of "
-            "du_first, snaps smaller than it go uncounted (docs/numerics.md)",
+            "predicts it (the static engine's continuation, the DEM's trend and static check; the rigid "
+            "march's re-seating) is on another branch: the path snapped, and the fold before it is "
+            "du_first; the resolution of du_first, snaps smaller than it go uncounted (docs/numerics.md)",
         ),
     )
     first_increment_mm: float = field(

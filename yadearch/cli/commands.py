@@ -24,8 +24,9 @@ FIGURE_JOBS = 2  # a single run's figures are drawn in two processes (where the 
 
 def _report_summary(out: Path) -> None:
     from yadearch.analysis.mechanism import run_warnings
+    from yadearch.case.config import load_case
     from yadearch.model.hinges import SAME_MECHANISM, hinge_change
-    from yadearch.results.rundir import read_run, read_summary
+    from yadearch.results.rundir import CASE_FILE, read_summary
 
     summary: RunSummary = read_summary(out)
     du = summary.du_mm
@@ -36,7 +37,7 @@ def _report_summary(out: Path) -> None:
         f" (the fold's mode: {mode}, {summary.collapse_kind})"
         if mode
         and summary.hinge_labels
-        and hinge_change(summary.hinge_labels, mode, read_run(out).case["geometry"]["n_voussoirs"] + 1)
+        and hinge_change(summary.hinge_labels, mode, load_case(out / CASE_FILE).geometry.n_voussoirs + 1)
         not in SAME_MECHANISM
         else ""
     )

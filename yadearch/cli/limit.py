@@ -106,14 +106,15 @@ def limit(
         f"{case.name}: {quantity} = {du}, {mechanism} {' '.join(result.collapse_hinges)}"
         f"{new}, {result.n_lp} LPs, {result.wall_s:.1f} s -> {path}"
     )
-    if result.du_first_mm is not None and result.snaps:
-        snaps = ", ".join(f"{s.at_mm:.2f} mm ({s.largest_move_mm:.2f} mm)" for s in result.snaps)
+    snaps = ", ".join(f"{s.at_mm:.2f} mm ({s.largest_move_mm:.2f} mm)" for s in result.snaps)
+    first = "none" if result.du_first_mm is None else f"{result.du_first_mm:.2f} mm"
+    if snaps:
         click.echo(
-            f"du_first = {result.du_first_mm:.2f} mm (the first snap past the {result.snap_floor_mm:.3g} mm floor, "
-            f"or the collapse); snaps survived at (largest block move): {snaps}"
+            f"du_first = {first} (the first snap past the {result.snap_floor_mm:.3g} mm floor, or the collapse); "
+            f"snaps survived at (largest block move): {snaps}"
         )
-    elif result.du_first_mm is not None:
-        click.echo(f"du_first = du = {result.du_first_mm:.2f} mm: no snap before the collapse")
+    elif result.du_mm is not None:
+        click.echo(f"du_first = du = {result.du_mm:.2f} mm: no snap before the collapse")
     bound_mm = result.runaway_thicknesses * case.geometry.thickness_mm
     near = [snap for snap in result.snaps if snap.largest_move_mm >= NEAR_BOUND * bound_mm]
     if near:  # a snap nearly as long as the bound: a shorter bound would have called it the collapse
@@ -137,7 +138,7 @@ def limit(
         click.echo(
             "mirrored: the same branch (the keystone's tie decided alike both ways)"
             if same
-            else f"mirrored (the keystone's other joint): du_rigid = {mirrored} ({result.mirror_collapse_mode}"
+            else f"mirrored (the keystone's other joint): {quantity} = {mirrored} ({result.mirror_collapse_mode}"
             f"{' on ' + hinges if hinges else ''})"
         )
     largest = result.compliant_largest_margin_mm

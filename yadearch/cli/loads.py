@@ -19,7 +19,7 @@ from yadearch.cli.check import check_option, with_increments_check
 from yadearch.cli.options import RIGID, case_options, figures_option, refuse_unread, resolve_case
 from yadearch.cli.param_types import OUT_FOLDER, argument_type
 from yadearch.errors import RunFailedError
-from yadearch.results.check_text import check_line
+from yadearch.results.check_text import check_line, unresolved_warning
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_lp import LoadCapacity
 from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath
@@ -245,8 +245,7 @@ def _on_path(
     if path.increments_check is not None:
         answers = (("capacity", "capacity", unit), ("first loss", "first_loss", unit))
         said = check_line(path.increments_check, answers)
-        kept = path.increments_check.get("resolved", True) and path.increments_check.get("mode_resolved", True)
-        click.echo(said if kept else f"warning: {said}")
+        click.echo(f"warning: {said}" if unresolved_warning(path.increments_check) else said)
 
 
 def _descent(path: LoadPath) -> str:

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from yadearch.model.hinges import HINGE_CHANGES, SAME_MECHANISM
+
 RUN_ANSWERS = (("du", "du_mm", "mm"), ("du_first", "du_first_mm", "mm"))  # (said as, key, unit) of a run's
 
 
@@ -36,8 +38,9 @@ def check_line(
     if change is not None:
         hinges = f" ({' '.join(check['collapse_mode_hinges'])})" if change != "the same" else ""
         moved = ", ".join(part for part in (moved, f"collapse mode {change}{hinges}") if part)
-        if check["resolved"] and not check.get("mode_resolved", True):
-            verdict = "du resolved, the collapse mode NOT (the increments pick the mechanism)"
+        if check["resolved"] and not mode_kept(check):
+            answers_said = " and ".join(said for said, key, _ in answers if check.get(f"{key}_moved") is not None)
+            verdict = f"{answers_said} resolved, the collapse mode NOT (the increments pick the mechanism)"
     return f"increments halved: {check['outcome']}" + (f", {moved}" if moved else "") + f": {verdict}"
 
 
@@ -55,6 +58,14 @@ def _within_brackets(check: dict[str, Any], answers: tuple[tuple[str, str, str],
 def unresolved_warning(check: dict[str, Any] | None, bracket_mm: float | None = None) -> str | None:
     """The warning of a run whose answer or collapse mode its increments check moved (None: no check, or
     both resolved); the run's bracket of du `bracket_mm` wide (`check_line`)."""
-    if not check or (check.get("resolved", True) and check.get("mode_resolved", True)):
+    if not check or (check.get("resolved", True) and mode_kept(check)):
         return None
     return f"the answer is not resolved by the numerics: {check_line(check, bracket_mm=bracket_mm)}"
+
+
+def mode_kept(check: dict[str, Any]) -> bool:
+    """Whether the check's collapse mode keeps the run's mechanism: `mode_resolved`, or for a check
+    recorded before that field, its `mode_hinges_change` (none recorded: nothing to contradict)."""
+    if "mode_resolved" in check:
+        return bool(check["mode_resolved"])
+    return check.get("mode_hinges_change", HINGE_CHANGES[0]) in SAME_MECHANISM

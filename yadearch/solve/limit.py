@@ -54,6 +54,7 @@ def limit_analysis(
     start_hinges: Sequence[str] | str | None = None,
     start_mm: float = 0.0,
     progress: Callable[[float], None] | None = None,
+    mirror_progress: Callable[[float], None] | None = None,
 ) -> LimitResult:
     """The support displacement du_rigid at which the rigid arch of `case` loses its last admissible equilibrium,
     its hinge history and its last admissible state (see the module docstring). A re-seating that moves a block
@@ -69,7 +70,8 @@ def limit_analysis(
     where the rigid blocks take it), refused in one line unless the support drives it with an admissible
     equilibrium; its hinges name this branch, so the mirror image is not solved. `start_mm`: placed that far
     along it from rest (the path before is not followed), for a linkage that becomes admissible only there.
-    `progress` is told each admitted support position (mm), the mirrored branch's after the case's."""
+    `progress` is told each admitted support position (mm), `mirror_progress` the mirrored branch's, solved
+    after the case's (default: `progress`)."""
     settings = (step_mm, tolerance_mm, max_displacement_mm, max_snap_mm, compliant, runaway_thicknesses, progress)
     if compliant:
         refuse_compliant_that_cannot_stand(case)
@@ -77,7 +79,8 @@ def limit_analysis(
     if start_hinges is not None or not (mirror and has_other_branch(case)):
         return result
     try:
-        mirrored, _ = _solve(mirror_image(case), *settings)
+        told = mirror_progress if mirror_progress is not None else progress
+        mirrored, _ = _solve(mirror_image(case), *settings[:-1], told)
     except LimitError as exc:
         return replace(result, mirror_collapse_mode=f"failed: {exc}")
     return replace(

@@ -9,9 +9,8 @@ fourth corner, located by bisection), the four-hinge chains that lower the weigh
 are followed until one closes one of its open hinges (`reseat`): the admissible landing with the lowest
 weights is kept (ties toward the left) and the march goes on from it; a chain that closes none before a
 block has moved `runaway` (a multiple of the ring's thickness), or no chain at all (sliding), is the
-collapse. `first_limit` is the first limit point whose snap moves a block further than the snap floor
-(the static engine's and the DEM's: a re-seating under it is no loss of stability in any engine) or the
-collapse, `snaps` the re-seatings survived. With a joint stiffness `kn` the joints beside the hinges
+collapse. `first_limit` is the first limit point whose snap passes the engines' snap floor, or the
+collapse; `snaps` the re-seatings survived. With a joint stiffness `kn` the joints beside the hinges
 must also keep their fold margin (`solve.compliant`): a folded joint's chain may climb first and take a
 hinge to any joint (a snap that lands is survived however far it moves); where it finds no landing the
 weights decide.

@@ -76,13 +76,14 @@ def _missing(value: float | None) -> bool:
 
 
 def mode_record(
-    loading: StaticLoading, mode_hinges: tuple[str, ...] | list[str], checked: StaticLoading, path: PathResult
+    loading: StaticLoading, mode_hinges: tuple[str, ...] | list[str], halved: StaticLoading, halved_path: PathResult
 ) -> dict[str, Any]:
-    """Where the halved path `path` of `checked` collapses, its collapse mode's hinges, how they differ
-    from `mode_hinges` of `loading`'s (`model.hinges.hinge_change`) and whether the mechanism is kept
-    (`mode_resolved`: the same up to a mirror image or a hinge a joint away); else nothing."""
-    if not path.collapsed:
+    """Where `halved`'s path `halved_path` (the increments halved) collapses, its collapse mode's hinges,
+    how they differ from `loading`'s `mode_hinges` (`model.hinges.hinge_change`) and whether the
+    mechanism is kept (`mode_resolved`: the same up to a mirror image or a hinge a joint away); else
+    nothing."""
+    if not halved_path.collapsed:
         return {}
-    hinges = checked.fold_mode(path.upper).labels
+    hinges = halved.fold_mode(halved_path.upper).labels
     change = hinge_change(" ".join(mode_hinges), " ".join(hinges), len(loading.arch.geometry.joints))
     return {"collapse_mode_hinges": hinges, "mode_hinges_change": change, "mode_resolved": change in SAME_MECHANISM}

@@ -52,9 +52,9 @@ def refuse_compliant_that_cannot_stand(case: ArchCase) -> None:
         if CANNOT_STAND not in str(exc):
             return  # the static engine's self-weight unresolved: no claim either way
         raise LimitError(
-            f"kn_N_per_mm3 = {case.interface.kn_N_per_mm3:g}: the static engine finds that joints this soft do not "
-            f"let this arch stand under its own weight, so the compliant march (which ignores the whole arch's "
-            f"deformation) has no du here; rigid blocks: `yadearch limit` without --compliant"
+            f"kn_N_per_mm3 = {case.interface.kn_N_per_mm3:g}: the static engine finds that on these joints this arch "
+            f"does not stand under its own weight ({why_not_standing(case)}), so the compliant march (which ignores "
+            "the whole arch's deformation) has no du here; rigid blocks: `yadearch limit` without --compliant"
         ) from None
 
 

@@ -14,6 +14,7 @@ from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import preset
 from yadearch.markdown import markdown_table, text_cell
 from yadearch.plotting.atlas import atlas_figure
+from yadearch.studies.atlas.check_report import check_section, mm_cell
 from yadearch.studies.atlas.grid import DEM_KN_N_PER_MM3, KNS_N_PER_MM3, MOVEMENTS, SHAPES, THICKNESS_OVER_RADIUS
 from yadearch.studies.atlas.rigid import COMPLIANT_TABLE, KEY
 from yadearch.studies.atlas.rigid import TABLE as TABLE_RIGID
@@ -66,10 +67,6 @@ def _results(folder: Path) -> pd.DataFrame | None:
     return pd.read_csv(path) if path.is_file() else None
 
 
-def _mm(value: float) -> str:
-    return "-" if value is None or (isinstance(value, float) and math.isnan(value)) else f"{value:.2f}"
-
-
 def _pct(value: float) -> str:
     return "-" if math.isnan(value) else f"{value:+.1f} %"
 
@@ -102,7 +99,7 @@ def atlas_markdown(table: pd.DataFrame, arguments: str = "") -> str:
         "",
         *_unresolved_section(table),
         "",
-        *_check_section(table),
+        *check_section(table),
         "",
         "## du of every arch (static, mm) against kn, and the rigid march",
         "",
@@ -146,7 +143,7 @@ def _stiff_section(table: pd.DataFrame) -> list[str]:
             "that stiffness's margin): their gap is the joints' compliance, which this kn still has, not numerics.",
         ]
     extra = (
-        {"compliant du": ("compliant_branch_du_mm", _mm), "gap to compliant": ("static_compliant_gap_pct", _pct)}
+        {"compliant du": ("compliant_branch_du_mm", mm_cell), "gap to compliant": ("static_compliant_gap_pct", _pct)}
         if "compliant_branch_du_mm" in outside
         else {}
     )
@@ -182,8 +179,8 @@ def _engines_section(table: pd.DataFrame) -> list[str]:
             [
                 [
                     r.run,
-                    f"{text_cell(r.static_outcome) or 'pending'} {_mm(r.static_du_mm)}",
-                    f"{r.dem_outcome} {_mm(r.dem_du_mm)} {text_cell(r.dem_reason)}",
+                    f"{text_cell(r.static_outcome) or 'pending'} {mm_cell(r.static_du_mm)}",
+                    f"{r.dem_outcome} {mm_cell(r.dem_du_mm)} {text_cell(r.dem_reason)}",
                 ]
                 for r in disagree.itertuples()
             ],
@@ -204,10 +201,10 @@ def _gap_rows(
         [
             [
                 r["run"],
-                _mm(r["static_du_first_mm"]),
-                _mm(r["static_du_mm"]),
+                mm_cell(r["static_du_first_mm"]),
+                mm_cell(r["static_du_mm"]),
                 text_cell(r["static_hinges"]),
-                _mm(r[other[0]]),
+                mm_cell(r[other[0]]),
                 text_cell(r[other[1]]),
                 _pct(r[gap]),
                 *(shown(r[column]) for column, shown in extra.values()),
@@ -242,45 +239,10 @@ def _unresolved_section(table: pd.DataFrame) -> list[str]:
     return lines + markdown_table(
         ["run", "outcome", "reason", "rigid du_first", "rigid du"],
         [
-            [r.run, r.static_outcome, text_cell(r.static_reason), _mm(r.rigid_du_first_mm), _mm(r.rigid_du_mm)]
+            [r.run, r.static_outcome, text_cell(r.static_reason), mm_cell(r.rigid_du_first_mm), mm_cell(r.rigid_du_mm)]
             for r in rows.itertuples()
         ],
     )
-
-
-def _check_section(table: pd.DataFrame) -> list[str]:
-    """How many static runs keep their answer with the increments halved (`numerics.increments_check`):
-    their outcome, du and du_first within 1 %; and each one that does not, with both answers."""
-    checked = table[table["static_increments_resolved"].notna()]
-    moved = checked[~checked["static_increments_resolved"].astype(bool)]
-    lines = ["## The static answers with the increments halved", ""]
-    if checked.empty:
-        return lines + ["Not checked (the static runs ran without numerics.increments_check)."]
-    collapses = int(checked["static_outcome"].eq("collapse").sum())
-    lines.append(
-        "Every static run is solved again from its self-weight with the increments halved: of the "
-        f"{len(checked)} with an answer ({collapses} collapse), {len(checked) - len(moved)} keep their outcome, du "
-        f"and du_first within 1 % (resolved); {len(moved)} do not" + (":" if len(moved) else ".")
-    )
-    if moved.empty:
-        return lines
-    return lines + [
-        "",
-        *markdown_table(
-            ["run", "outcome", "du", "halved", "du_first", "halved"],
-            [
-                [
-                    r.run,
-                    text_cell(r.static_outcome),
-                    _mm(r.static_du_mm),
-                    _mm(r.static_du_halved_increments_mm),
-                    _mm(r.static_du_first_mm),
-                    _mm(r.static_du_first_halved_increments_mm),
-                ]
-                for r in moved.itertuples()
-            ],
-        ),
-    ]
 
 
 def _du_table(table: pd.DataFrame) -> list[str]:
@@ -290,7 +252,9 @@ def _du_table(table: pd.DataFrame) -> list[str]:
         by_kn = runs.set_index("kn_N_per_mm3")
         cells = [_cell(by_kn.loc[k]) for k in KNS_N_PER_MM3]
         first = runs.iloc[0]
-        rigid = _mm(first["rigid_du_mm"]) if first["rigid_outcome"] == "collapse" else text_cell(first["rigid_outcome"])
+        rigid = (
+            mm_cell(first["rigid_du_mm"]) if first["rigid_outcome"] == "collapse" else text_cell(first["rigid_outcome"])
+        )
         rows.append([name, *cells, rigid, text_cell(first.get("rigid_hinges"))])
     return markdown_table(columns, rows)
 
@@ -301,4 +265,4 @@ def _cell(row: pd.Series) -> str:
         return text_cell(row["static_outcome"]) or "pending"
     first, du = row["static_du_first_mm"], row["static_du_mm"]
     moved = "*" if row.get("static_increments_resolved") is False or row.get("static_increments_resolved") == 0 else ""
-    return (_mm(du) if abs(first - du) < 0.01 else f"{_mm(du)} ({_mm(first)})") + moved
+    return (mm_cell(du) if abs(first - du) < 0.01 else f"{mm_cell(du)} ({mm_cell(first)})") + moved

@@ -22,6 +22,7 @@ CHECK_COLUMNS = (
     "du_halved_increments_mm",
     "du_first_halved_increments_mm",
     "increments_resolved",
+    "increments_mode_resolved",
 )  # the static check's
 
 

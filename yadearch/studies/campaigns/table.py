@@ -14,6 +14,7 @@ import pandas as pd
 from yadearch.case.config import ArchCase
 from yadearch.errors import CANNOT_STAND, UNRESOLVED
 from yadearch.model.hinges import PAPER_LABELS
+from yadearch.results.check_text import mode_kept
 from yadearch.results.reuse import current_summary, outdated
 from yadearch.results.rundir import CAMPAIGN_TABLE
 from yadearch.results.summary import RunSummary
@@ -121,7 +122,8 @@ def done_row(spec: RunSpec, summary: RunSummary) -> dict[str, Any]:
 
 def _check_columns(summary: RunSummary) -> dict[str, Any]:
     """A static run's increments check (numerics.increments_check) as columns: du and du_first with the
-    increments halved, and whether both stayed within 1 % (none without a check)."""
+    increments halved, whether both stayed within 1 % and whether the collapse mode kept its mechanism
+    (`results.check_text.mode_kept`; none without a check)."""
     check = summary.increments_check
     if not check or "resolved" not in check:
         return {}
@@ -129,6 +131,7 @@ def _check_columns(summary: RunSummary) -> dict[str, Any]:
         "du_halved_increments_mm": math.nan if check["du_mm"] is None else check["du_mm"],
         "du_first_halved_increments_mm": math.nan if check["du_first_mm"] is None else check["du_first_mm"],
         "increments_resolved": check["resolved"],
+        "increments_mode_resolved": mode_kept(check),
     }
 
 
