@@ -21,6 +21,11 @@ def text_cell(value: object) -> str:
     return "" if value is None or (isinstance(value, float) and math.isnan(value)) else str(value)
 
 
+def mm_cell(value: float | None) -> str:
+    """A length (mm) for a report's table to the hundredth, "-" where there is none (None or NaN)."""
+    return "-" if value is None or (isinstance(value, float) and math.isnan(value)) else f"{value:.2f}"
+
+
 def seconds_text(seconds: float) -> str:
     """A duration as a run reports it: hundredths below ten seconds (a static run's 0.37 s is not
     "0 s"), whole seconds above."""

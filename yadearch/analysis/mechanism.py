@@ -66,6 +66,18 @@ def friction_limited(summary: RunSummary, cap_tolerance: float = CAP_TOLERANCE) 
     )
 
 
+def near_bound(move_mm: float, runaway_mm: float) -> str | None:
+    """The words for a snap that moved a block `move_mm`, at least NEAR_BOUND of the runaway bound
+    `runaway_mm` (a shorter bound would have called it the collapse, so du rests on the bound); None
+    for a shorter snap. A static run's relaxations and the rigid march's re-seatings alike."""
+    if move_mm < NEAR_BOUND * runaway_mm:
+        return None
+    return (
+        f"{move_mm / runaway_mm:.0%} of the runaway bound ({runaway_mm:g} mm): the bound halved would end "
+        "the path there, so du rests on numerics.runaway_thickness_ratio"
+    )
+
+
 def relaxation_jump(summary: RunSummary, fraction: float = JUMP_FRACTION, near_limit: float = NEAR_LIMIT) -> str | None:
     """A warning when, short of `near_limit` x du, the relaxation of an accepted increment moved a
     block by at least `fraction` of the increment (and JUMP_FLOOR of the runaway distance; summary.json's
@@ -85,12 +97,8 @@ def relaxation_jump(summary: RunSummary, fraction: float = JUMP_FRACTION, near_l
     if not jumps:
         return None
     move, delta, step = max(jumps)
-    bound = (  # a snap nearly as long as the bound: a shorter bound would have called it the collapse
-        f"; it is {move / runaway_mm:.0%} of the runaway bound ({runaway_mm:g} mm): the bound halved would end "
-        "the path there, so du rests on numerics.runaway_thickness_ratio"
-        if move >= NEAR_BOUND * runaway_mm
-        else ""
-    )
+    near = near_bound(move, runaway_mm)
+    bound = f"; it is {near}" if near else ""
     return (
         f"the relaxation after the {step:.2f} mm increment to {delta:.2f} mm moved a block {move:.2f} mm "
         f"({len(jumps)} such before {near_limit:g} du): the arch snapped rather than followed its path there "

@@ -68,7 +68,7 @@ def limit(
     figures: bool,
 ) -> None:
     """Rigid-block limit analysis, no YADE: du_rigid, hinges, thrust-line figure (kn only with --compliant)."""
-    from yadearch.analysis.mechanism import NEAR_BOUND
+    from yadearch.analysis.mechanism import near_bound
     from yadearch.api.runs import limit as limit_analysis
     from yadearch.api.runs import limit_files
     from yadearch.case.imperfect import amplitudes
@@ -116,13 +116,10 @@ def limit(
     elif result.du_mm is not None:
         click.echo(f"du_first = du = {result.du_mm:.2f} mm: no snap before the collapse")
     bound_mm = result.runaway_thicknesses * case.geometry.thickness_mm
-    near = [snap for snap in result.snaps if snap.largest_move_mm >= NEAR_BOUND * bound_mm]
-    if near:  # a snap nearly as long as the bound: a shorter bound would have called it the collapse
-        click.echo(
-            f"warning: the snap at {near[0].at_mm:.2f} mm moved a block {near[0].largest_move_mm:.2f} mm, "
-            f"{near[0].largest_move_mm / bound_mm:.0%} of the runaway bound ({bound_mm:g} mm): the bound halved "
-            "would end the path there, so du rests on numerics.runaway_thickness_ratio"
-        )
+    near = [(snap, said) for snap in result.snaps if (said := near_bound(snap.largest_move_mm, bound_mm))]
+    if near:
+        snap, said = near[0]
+        click.echo(f"warning: the snap at {snap.at_mm:.2f} mm moved a block {snap.largest_move_mm:.2f} mm, {said}")
     if result.closest_edge_joint is not None:
         click.echo(
             f"nearest edge: joint {result.closest_edge_joint} beside a hinge held its thrust "

@@ -4,16 +4,9 @@ each answer that moves."""
 
 from __future__ import annotations
 
-import math
-
 import pandas as pd
 
-from yadearch.markdown import markdown_table, text_cell
-
-
-def mm_cell(value: float) -> str:
-    """A length (mm) for a report's table, "-" where there is none."""
-    return "-" if value is None or (isinstance(value, float) and math.isnan(value)) else f"{value:.2f}"
+from yadearch.markdown import markdown_table, mm_cell, text_cell
 
 
 def _mode_words(checked: pd.DataFrame) -> list[str]:

@@ -12,9 +12,9 @@ import pandas as pd
 
 from yadearch.atomic import write_csv_atomically, write_text_atomically
 from yadearch.case.config import preset
-from yadearch.markdown import markdown_table, text_cell
+from yadearch.markdown import markdown_table, mm_cell, text_cell
 from yadearch.plotting.atlas import atlas_figure
-from yadearch.studies.atlas.check_report import check_section, mm_cell
+from yadearch.studies.atlas.check_report import check_section
 from yadearch.studies.atlas.grid import DEM_KN_N_PER_MM3, KNS_N_PER_MM3, MOVEMENTS, SHAPES, THICKNESS_OVER_RADIUS
 from yadearch.studies.atlas.rigid import COMPLIANT_TABLE, KEY
 from yadearch.studies.atlas.rigid import TABLE as TABLE_RIGID

@@ -8,7 +8,7 @@ import math
 
 import pandas as pd
 
-from yadearch.markdown import markdown_table
+from yadearch.markdown import markdown_table, mm_cell
 
 INVARIANCE_PCT = 1.0  # the standard: a result moving more than this with a numerical setting is not one
 OPENING_SIDE = (-60.0, 0.0)  # directions (deg) where the support moves away from the arch
@@ -17,10 +17,6 @@ OPENING_SIDE = (-60.0, 0.0)  # directions (deg) where the support moves away fro
 def _ratio_range(rows: pd.DataFrame) -> str:
     ratio = (rows["du_mm"] / rows["du_rigid_mm"]).dropna()
     return f"{ratio.min():.2f}-{ratio.max():.2f}" if not ratio.empty else "-"
-
-
-def _mm(value: float) -> str:
-    return "-" if pd.isna(value) else f"{value:.2f}"
 
 
 def stiffness_markdown(static: pd.DataFrame, dem: pd.DataFrame, static_wall_s: float, figure: str) -> str:
@@ -82,10 +78,10 @@ def _invariance_section(static: pd.DataFrame, ratios: list[float]) -> list[str]:
                 [
                     f"{r.kn_N_per_mm3:g}",
                     f"{r.direction_deg:g}",
-                    _mm(r.du_mm),
-                    _mm(r.du_mm_high),
-                    _mm(r.du_first_mm),
-                    _mm(r.du_first_mm_high),
+                    mm_cell(r.du_mm),
+                    mm_cell(r.du_mm_high),
+                    mm_cell(r.du_first_mm),
+                    mm_cell(r.du_first_mm_high),
                 ]
                 for r in moved.itertuples()
             ],
@@ -119,16 +115,16 @@ def _dem_section(static: pd.DataFrame, dem: pd.DataFrame) -> list[str]:
         match = static[
             (static["kn_N_per_mm3"] == point.kn_N_per_mm3) & (static["direction_deg"] == point.direction_deg)
         ]
-        cells = ", ".join(_mm(v) for v in match["du_mm"])
+        cells = ", ".join(mm_cell(v) for v in match["du_mm"])
         gap = (100 * (match["du_mm"].mean() - point.du_mm) / point.du_mm) if len(match) else math.nan
         rows.append(
             [
                 f"{point.kn_N_per_mm3:g}",
                 f"{point.direction_deg:g}",
-                _mm(point.du_mm),
+                mm_cell(point.du_mm),
                 cells,
                 "-" if pd.isna(gap) else f"{gap:+.1f} %",
-                _mm(point.du_rigid_mm),
+                mm_cell(point.du_rigid_mm),
             ]
         )
     return (
@@ -144,9 +140,9 @@ def _every_direction(static: pd.DataFrame) -> list[str]:
     cells: dict[float, list[str]] = {}
     for label in labels:
         for r in static[static["label"] == label].itertuples():
-            text = _mm(r.du_mm)
+            text = mm_cell(r.du_mm)
             if pd.notna(r.du_first_mm) and pd.notna(r.du_mm) and abs(r.du_first_mm - r.du_mm) > 0.01:
-                text += f" ({_mm(r.du_first_mm)})"
+                text += f" ({mm_cell(r.du_first_mm)})"
             cells.setdefault(r.direction_deg, []).append(text)
-    rows = [[f"{d:g}", _mm(rigid[d]), *cells[d]] for d in sorted(cells, reverse=True)]
+    rows = [[f"{d:g}", mm_cell(rigid[d]), *cells[d]] for d in sorted(cells, reverse=True)]
     return markdown_table(["direction (deg)", "rigid", *labels], rows)
