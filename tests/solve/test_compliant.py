@@ -133,3 +133,26 @@ def test_joints_too_soft_for_the_arch_to_stand_give_no_compliant_du():
         limit_analysis(thin.with_overrides({"kn_N_per_mm3": 100.0}), mirror=False, compliant=True)
     stiff = limit_analysis(thin.with_overrides({"kn_N_per_mm3": 10_000.0}), mirror=False, compliant=True)
     assert stiff.du_mm == pytest.approx(4.73, abs=0.01)
+
+
+def test_a_fold_whose_chain_climbs_to_the_runaway_bound_holds_whatever_the_bound():
+    """An elliptical arch (span 600, rise 200, t 75 mm) moved down and in at kn 10 000: at 63.40 mm the
+    joint beside hinge 40I folds, and its chain climbs (the weights rise 0.2 J) until it closes hinge
+    39 after a block has moved 37.9 mm, just past the default runaway bound (0.5 t, 37.5 mm). A chain
+    that climbs cannot run away at a fixed support, so the fold holds and the march goes on to the
+    same collapse with the bound at 0.5 and 1 ring thickness (it stopped at 63.40 mm at 0.5 t)."""
+    elliptical = {
+        "shape": "elliptical",
+        "span_mm": 600.0,
+        "rise_mm": 200.0,
+        "thickness_mm": 75.0,
+        "support_motion": "translation",
+        "support_direction_deg": -135.0,
+        "kn_N_per_mm3": 10_000.0,
+    }
+    case = preset("set2").with_overrides(elliptical)
+    default = limit_analysis(case, mirror=False, compliant=True)
+    doubled = limit_analysis(case, mirror=False, compliant=True, runaway_thicknesses=1.0)
+    assert case.numerics.runaway_thickness_ratio == 0.5
+    assert default.du_mm == pytest.approx(doubled.du_mm, rel=1e-6)
+    assert default.du_mm > 100.0 and set(default.collapse_hinges) == set(doubled.collapse_hinges)

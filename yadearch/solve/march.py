@@ -103,9 +103,9 @@ class March:
         return opening_chain(self.arch, placement, self.pivots, fold)
 
     def snaps(self, placement: Placement, chain: Mechanism) -> bool:
-        """Whether a folded joint's opening `chain` snaps (ends lower than it starts) or collapses the arch
-        (closes no hinge); else it climbs, and the two joints share the hinge until the chain descends."""
-        path = closing_path(self.arch, placement, chain, placement, self.runaway)
+        """Whether a folded joint's opening `chain` snaps (ends lower where it closes a hinge or reaches the
+        runaway bound) or straightens; else it climbs, and the two joints share the hinge until it descends."""
+        path = closing_path(self.arch, placement, chain, placement, self.runaway, to_bound=True)
         return path is None or not climbs([potential(self.arch, p) for p in path], past_fold=True)
 
     def valid(self, placement: Placement | None, base: Placement) -> bool:

@@ -145,11 +145,11 @@ def migrates(chain: Mechanism, pivots: tuple[Pivot, ...]) -> bool:
 
 
 def closing_path(
-    arch: RigidArch, state: Placement, chain: Mechanism, origin: Placement, runaway: float
+    arch: RigidArch, state: Placement, chain: Mechanism, origin: Placement, runaway: float, to_bound: bool = False
 ) -> list[Placement] | None:
     """SNAP_SAMPLES placements along `chain` at a fixed support from `state` until a hinge it turns
-    back closes; None if it runs away first (a block further than `runaway` (m) from `origin`) or
-    straightens."""
+    back closes; None if it straightens, or runs away first (a block further than `runaway` (m) from
+    `origin`) unless `to_bound`, which then ends the placements where a block reaches `runaway`."""
     sign = float(np.sign(chain.rates[0]))
     start = origin.centroids(arch)
 
@@ -163,16 +163,21 @@ def closing_path(
         return float(np.linalg.norm(placement.centroids(arch) - start, axis=1).max()) > runaway
 
     angle = FIRST_TURN_RAD
-    while (reached := turned(angle)) is not None:
-        if far(reached):
-            return None
+    while (reached := turned(angle)) is not None and not far(reached):
         angle *= 2.0
+    if reached is not None and not to_bound:
+        return None
+
+    def within(angle: float) -> bool:
+        placement = turned(angle)
+        return placement is not None and not (to_bound and far(placement))
+
     low, high = 0.0, angle
     for _ in range(CLOSURE_BISECTIONS):
         mid = 0.5 * (low + high)
         if mid in (low, high):
             break
-        low, high = (mid, high) if turned(mid) is not None else (low, mid)
+        low, high = (mid, high) if within(mid) else (low, mid)
     reached_path = [turned(a) for a in np.linspace(0.0, low, SNAP_SAMPLES)]
     path = [p for p in reached_path if p is not None]
     if len(path) < len(reached_path) or far(path[-1]):

@@ -78,12 +78,13 @@ def compliant_row(base: ArchCase, geometry: Geometry, kn_N_per_mm3: float) -> di
     try:
         case = base.with_overrides({**geometry.overrides(), "kn_N_per_mm3": kn_N_per_mm3})
         if not stands(case):
-            return row
+            return {**row, "compliant_outcome": "cannot stand"}
         result = limit_analysis(case, compliant=True)
-    except YadearchError:
-        return row
+    except YadearchError as exc:
+        return {**row, "compliant_outcome": f"failed: {exc}"}
     return {
         **row,
+        "compliant_outcome": "stands" if result.du_mm is None else "collapse",
         "compliant_du_mm": _mm(result.du_mm),
         "compliant_hinges": " ".join(result.collapse_hinges),
         "compliant_other_du_mm": _mm(result.mirror_du_rigid_mm),
