@@ -156,3 +156,18 @@ def test_a_fold_whose_chain_climbs_to_the_runaway_bound_holds_whatever_the_bound
     assert case.numerics.runaway_thickness_ratio == 0.5
     assert default.du_mm == pytest.approx(doubled.du_mm, rel=1e-6)
     assert default.du_mm > 100.0 and set(default.collapse_hinges) == set(doubled.collapse_hinges)
+
+
+def test_a_shallow_arch_whose_hinges_walk_to_the_springing_collapses_where_the_static_engine_does(tmp_path):
+    """The paper's arch cut to an embrace of 75 deg, settling at kn 1000: the intrados hinge walks to
+    joint 2 while joint 1 holds its thrust a few micrometres from its corner, and the new crown hinge
+    41E opens just before 1I folds. The fold's chain closes 41E first (it turns back 2I too); the march
+    took that for a collapse at 29.58 mm. It lands there and goes on to collapse where the static
+    engine of the same kn does (117.60 mm on 4I 39E 56E)."""
+    from yadearch.static.simulate import simulate_static
+
+    shallow = preset("set2").with_overrides({"embrace_deg": 75.0, "kn_N_per_mm3": 1000.0})
+    compliant = limit_analysis(shallow, mirror=False, compliant=True)
+    summary = simulate_static(shallow.with_overrides({"numerics.engine": "static"}), tmp_path / "run", log=print)
+    assert summary.collapsed and compliant.du_mm == pytest.approx(summary.du_mm, rel=0.005)
+    assert {h.label for h in summary.hinges_at_collapse} <= set(compliant.collapse_hinges)

@@ -28,7 +28,7 @@ from yadearch.solve import compliant
 from yadearch.solve.compliant import Margin, folds, joint_margins, opening_chain, potential
 from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
 from yadearch.solve.limit_result import HingeRecord, SnapRecord
-from yadearch.solve.reseat import closing_path, descending_chains, follow_tie, land, migrates
+from yadearch.solve.reseat import closing_path, descending_chains, energy_tolerance, follow_tie, land, migrates
 from yadearch.solve.rigid import LimitError, Pivot, Placement, RigidArch, close_linkage, contacts
 from yadearch.solve.snap_rules import climbs, largest_accepted, moves_a_hinge
 
@@ -106,7 +106,7 @@ class March:
         """Whether a folded joint's opening `chain` snaps (ends lower where it closes a hinge or reaches the
         runaway bound) or straightens; else it climbs, and the two joints share the hinge until it descends."""
         path = closing_path(self.arch, placement, chain, placement, self.runaway, to_bound=True)
-        return path is None or not climbs([potential(self.arch, p) for p in path], past_fold=True)
+        return path is None or not climbs([potential(self.arch, p) for p in path], True, energy_tolerance(self.arch))
 
     def valid(self, placement: Placement | None, base: Placement) -> bool:
         """Reached, and no corner open in `base` passed through its neighbour."""
@@ -247,7 +247,7 @@ class March:
             if path is None:
                 return None, 0.0, chain
             height = [potential(self.arch, p) for p in path]
-            if climbs(height, self.folding):
+            if climbs(height, self.folding, energy_tolerance(self.arch)):
                 raise LimitError(
                     f"at {units.to_mm(start.delta):.3f} mm the arch comes to rest on four "
                     "open hinges, which this analysis does not follow"
@@ -255,10 +255,10 @@ class March:
             closed = np.flatnonzero(
                 (contacts(self.arch, path[-1]).touching & ~contacts(self.arch, state).touching).any(axis=1)
             )
-            if list(closed) != list(chain.closing):
-                return None, 0.0, chain  # the chain straightened, or closed another corner first
-            state = path[-1]
-            pivots = self.pivots = tuple(p for p in chain.pivots if p.joint not in chain.closing)
+            if not len(closed) or not set(closed) <= {p.joint for p in chain.pivots}:
+                return None, 0.0, chain  # the chain straightened, or closed a corner off its hinges
+            state = path[-1]  # landed where a hinge closed: the one it turned back, or another first
+            pivots = self.pivots = tuple(p for p in chain.pivots if p.joint not in closed)
             if self.admissible(state):
                 moved = np.linalg.norm(state.centroids(self.arch) - start.centroids(self.arch), axis=1)
                 return state, units.to_mm(float(moved.max())), chain

@@ -12,25 +12,27 @@ from yadearch.solve.limit_lp import Mechanism
 from yadearch.solve.rigid import Pivot
 
 
-def climbs(height: list[float], past_fold: bool) -> bool:
-    """Whether the weights rise along a snap where they may not (heights of its samples): a rigid
-    arch snaps only downhill, else it would rest on four open hinges; past a fold the chain may
-    first climb the rigid barrier the fold removed, but must end lower and descend from its top."""
+def climbs(height: list[float], past_fold: bool, tie: float = 0.0) -> bool:
+    """Whether the weights rise along a snap where they may not (heights of its samples; J, closer
+    than `tie` being equal): a rigid arch snaps only downhill, else it would rest on four open hinges;
+    past a fold the chain may first climb the rigid barrier the fold removed, but must end lower and
+    descend from its top."""
     if not past_fold:
-        return bool(np.any(np.diff(height) > 0))
+        return bool(np.any(np.diff(height) > tie))
     top = int(np.argmax(height))
-    return height[-1] >= height[0] or bool(np.any(np.diff(height[top:]) > 0))
+    return height[-1] >= height[0] - tie or bool(np.any(np.diff(height[top:]) > tie))
 
 
 def moves_a_hinge(chain: Mechanism | None, pivots: tuple[Pivot, ...], reach: int = 1) -> TypeGuard[Mechanism]:
-    """Whether a fixed-support `chain` moves a hinge of `pivots` to another interface: one new
-    hinge, at most `reach` interfaces from the one hinge it turns back (to close; 1 for a rigid
-    snap, the next interface). Any other lowering chain is a collapse."""
-    if chain is None or chain.power >= 0 or len(chain.pivots) != 4 or len(chain.closing) != 1:
+    """Whether a fixed-support `chain` moves a hinge of `pivots` to another interface: one new hinge,
+    at most `reach` interfaces from a hinge it turns back (to close; 1 for a rigid snap, the next
+    interface; where it turns back two, the one that closes first re-seats). Any other lowering
+    chain is a collapse."""
+    if chain is None or chain.power >= 0 or len(chain.pivots) != 4 or not chain.closing:
         return False
     new = [p for p in chain.pivots if p not in pivots]
-    back = chain.closing[0]
-    return len(new) == 1 and back in {p.joint for p in pivots} and 1 <= abs(new[0].joint - back) <= reach
+    hinged = {p.joint for p in pivots}
+    return len(new) == 1 and any(b in hinged and 1 <= abs(new[0].joint - b) <= reach for b in chain.closing)
 
 
 def largest_accepted(ok, high: float, width: float) -> float:
