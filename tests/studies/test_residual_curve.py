@@ -53,3 +53,25 @@ def test_the_command_takes_a_joint_stiffness_and_says_each_settlement_as_it_is_m
     said = result.output.splitlines()
     assert said[1].startswith("after   0.00 mm (0% of du): collapse") and said[2].startswith("after ")
     assert (tmp_path / "custom_residual.csv").is_file()  # a new arch is not filed as the paper's
+
+
+FILLED = {"live_load": "vertical", "fill_depth_mm": 20.0, "fill_lateral_coefficient": 0.3}
+
+
+def _capacity(after_mm: float, **overrides) -> float:
+    case = ya.preset("set2").with_overrides({**FILLED, **overrides})
+    return ya.load_path(case, engine="static", after_mm=after_mm, descend_to=None).capacity
+
+
+def test_a_small_settlement_raises_a_soft_arch_capacity_where_it_recentres_the_loaded_joint():
+    """Under 20 mm of fill a quarter-span load's static capacity rises with the first millimetres of
+    settlement (19.86 -> 20.67 N after 5 mm at kn 5.2): the settlement moves the thrust at the loaded
+    joint (18, which pivots on its extrados at collapse) away from that corner more than it brings
+    the other three hinges' joints toward theirs. Mechanics of soft joints, not numerics: it fades
+    as kn grows (none at kn 10 000), and the same settlement lowers the capacity of a load at the
+    other quarter, whose joint it pushes toward its corner (docs/loads.md)."""
+    left, right = 0.25, 0.75
+    assert _capacity(5.0, load_position_over_span=left) > 1.03 * _capacity(0.0, load_position_over_span=left)
+    assert _capacity(5.0, load_position_over_span=right) < 0.95 * _capacity(0.0, load_position_over_span=right)
+    stiff = {"load_position_over_span": left, "kn_N_per_mm3": 10_000.0}
+    assert _capacity(5.0, **stiff) < _capacity(0.0, **stiff)
