@@ -171,3 +171,21 @@ def test_a_shallow_arch_whose_hinges_walk_to_the_springing_collapses_where_the_s
     summary = simulate_static(shallow.with_overrides({"numerics.engine": "static"}), tmp_path / "run", log=print)
     assert summary.collapsed and compliant.du_mm == pytest.approx(summary.du_mm, rel=0.005)
     assert {h.label for h in summary.hinges_at_collapse} <= set(compliant.collapse_hinges)
+
+
+def test_the_march_carries_the_static_engines_answer_and_warns_where_they_part(tmp_path, capsys):
+    """The compliant march estimates the compliant model that the static engine solves: `limit
+    --compliant` solves it too and says both. A semicircle 45 mm thick spreading at kn 100: the march
+    28.40 mm, the static engine 24.40 mm on 1E 12I 28E 45I 56E, 16 % apart, which was not said
+    (eighth user trial); the JSON keeps both answers."""
+    from yadearch.cli.commands import main
+
+    args = ["limit", "--preset", "set2", "--set", "embrace_deg=180", "--set", "thickness_mm=45"]
+    args += ["--set", "movement=spreading", "--kn", "100", "--compliant", "--out", str(tmp_path), "--no-figures"]
+    assert main(args) == 0
+    out = capsys.readouterr().out
+    assert "static engine (same blocks and joints): du = 24.40 mm on 1E 12I 28E 45I 56E" in out
+    assert "warning: the compliant march is +16.4% from the static engine" in out
+    saved = json.loads((tmp_path / "custom_compliant-kn100.json").read_text())
+    assert saved["static_outcome"] == "collapse" and saved["static_du_mm"] == pytest.approx(24.40, abs=0.01)
+    assert saved["du_mm"] == pytest.approx(28.40, abs=0.01)

@@ -115,6 +115,7 @@ ARGUMENTS = {
         Argument("overwrite", bool),
         Argument("figures", bool),
         Argument("quiet", bool),
+        Argument("static_beside", bool),
         Argument("retry_failed", bool),
         Argument("rigid", bool),
         Argument("static", bool),

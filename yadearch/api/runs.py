@@ -15,7 +15,7 @@ from yadearch.case.config import preset as _preset
 from yadearch.case.names import check_name, output_path
 from yadearch.case.numerics_section import NO_INCREMENTS_CHECK
 from yadearch.case.plan import static_only_refusal
-from yadearch.errors import ArgumentTypeError, CaseError, RunFolderError
+from yadearch.errors import ArgumentTypeError, CaseError, RunFolderError, YadearchError
 from yadearch.results.reuse import case_differences, is_current
 
 if TYPE_CHECKING:
@@ -180,6 +180,7 @@ def limit(
     start_mm: float = 0.0,
     figures: bool = True,
     quiet: bool = False,
+    static_beside: bool = True,
 ) -> LimitResult:
     """Rigid-block limit analysis of `case` (no YADE, seconds): du_rigid and the hinge history;
     `compliant`: with the joints folding at the margin the case's kn allows (what a DEM run of that
@@ -187,12 +188,20 @@ def limit(
     is collapse, as in a run; `start_hinges` ("1E 35I 56E"): leave rest on that linkage (another
     engine's) instead of the LP's, placed `start_mm` along it. With `out`, writes OUT/NAME.json and
     (with `figures`) the thrust-line figure (NAME_compliant-knKN.* when compliant, NAME_start-1E-35I-56E.*
-    from a named linkage). Unless `quiet`, a march longer than a few seconds prints where it is."""
+    from a named linkage). Unless `quiet`, a march longer than a few seconds prints where it is. A
+    compliant march carries the static engine's answer on the same joints beside it (`static_beside`)."""
     from yadearch.plotting.thrust_line import save_thrust_line
     from yadearch.solve.limit import limit_analysis
     from yadearch.solve.limit_result import write_result_json
 
-    check_arguments(compliant=compliant, max_snap_mm=max_snap_mm, start_mm=start_mm, figures=figures, quiet=quiet)
+    check_arguments(
+        compliant=compliant,
+        max_snap_mm=max_snap_mm,
+        start_mm=start_mm,
+        figures=figures,
+        quiet=quiet,
+        static_beside=static_beside,
+    )
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
@@ -205,12 +214,35 @@ def limit(
         progress=None if quiet else position_lines(case.name, case.loading.max_support_displacement_mm),
         mirror_progress=None if quiet else position_lines(case.name, case.loading.max_support_displacement_mm, True),
     )
+    if compliant and static_beside:
+        result = with_static_answer(result, case)
     if folder is not None:
         json_path, figure_stem = limit_files(case, compliant, folder, result.start_hinges, result.start_mm)
         write_result_json(result, case, json_path)
         if figures:
             save_thrust_line(result, case, figure_stem)
     return result
+
+
+def with_static_answer(result: LimitResult, case: ArchCase) -> LimitResult:
+    """`result` (a compliant march) with the static engine's answer on the same blocks and joints beside
+    it: the compliant model the march estimates, solved in seconds (no run folder, no increments check)."""
+    from dataclasses import replace
+
+    from yadearch.static.simulate import simulate_static
+
+    static = case.with_overrides({"numerics.engine": "static", "numerics.increments_check": NO_INCREMENTS_CHECK})
+    try:
+        summary = simulate_static(static, None, log=lambda _line: None)
+    except YadearchError as exc:
+        return replace(result, static_outcome=f"failed: {exc}")
+    return replace(
+        result,
+        static_outcome=str(summary.path_outcome),
+        static_du_mm=summary.du_mm,
+        static_du_first_mm=summary.du_first_mm,
+        static_hinges=tuple(h.label for h in summary.hinges_at_collapse),
+    )
 
 
 def limit_files(

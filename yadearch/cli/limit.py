@@ -3,6 +3,8 @@ with compliant hinges the du a run at the case's kn should find; imported when i
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import click
 
 from yadearch.cli.options import (
@@ -15,6 +17,9 @@ from yadearch.cli.options import (
     stood_text,
 )
 from yadearch.cli.param_types import OUT_FOLDER, argument_type
+
+if TYPE_CHECKING:
+    from yadearch.solve.limit_result import LimitResult
 
 
 @click.command()
@@ -115,6 +120,9 @@ def limit(
         )
     elif result.du_mm is not None:
         click.echo(f"du_first = du = {result.du_mm:.2f} mm: no snap before the collapse")
+    if result.static_outcome is not None:
+        for line in static_beside_lines(result):
+            click.echo(line)
     bound_mm = result.runaway_thicknesses * case.geometry.thickness_mm
     near = [(snap, said) for snap in result.snaps if (said := near_bound(snap.largest_move_mm, bound_mm))]
     if near:
@@ -152,3 +160,27 @@ def limit(
             "faces' angles, bumps or offsets: its du is that of flat, aligned faces",
             err=True,
         )
+
+
+MARCH_STATIC_TOLERANCE = 0.02  # the march estimates the static engine's compliant model; further apart is said
+
+
+def static_beside_lines(result: LimitResult) -> list[str]:
+    """The static engine's answer on the same joints beside a compliant march, and a warning where the
+    two part by more than MARCH_STATIC_TOLERANCE (the march follows rigid linkages whose joints fold)."""
+    said = "static engine (same blocks and joints):"
+    why = "the static engine solves the compliant model itself (docs/validation-compliant.md)"
+    if result.static_du_mm is None:
+        line = f"{said} {result.static_outcome}" + ("" if result.static_outcome == "stands" else ", no du")
+        if result.du_mm is not None and result.static_outcome == "stands":
+            return [line, f"warning: the compliant march collapses where the static engine stands; {why}"]
+        return [line]
+    du, first = result.static_du_mm, result.static_du_first_mm
+    first_text = "" if first in (None, du) else f", du_first {first:.2f} mm"
+    line = f"{said} du = {du:.2f} mm{first_text} on {' '.join(result.static_hinges or ())}"
+    if result.du_mm is None:
+        return [line, f"warning: the static engine collapses where the compliant march stands; {why}"]
+    gap = result.du_mm / du - 1.0
+    if abs(gap) <= MARCH_STATIC_TOLERANCE:
+        return [f"{line}; the march {gap:+.1%} from it"]
+    return [line, f"warning: the compliant march is {gap:+.1%} from the static engine; {why}"]

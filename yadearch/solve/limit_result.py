@@ -115,6 +115,12 @@ class LimitResult:
     closest_edge_at_mm: float | None = None
     start_hinges: tuple[str, ...] | None = None  # the linkage named to leave rest on (None: the LP's)
     start_mm: float | None = None  # ... placed this far along it from rest (0: from rest)
+    # beside a compliant march, the static engine on the same blocks and joints (the compliant model it
+    # estimates): outcome (collapse, stands, unresolved, or "failed: why"), du, du_first and hinges
+    static_outcome: str | None = None
+    static_du_mm: float | None = None
+    static_du_first_mm: float | None = None
+    static_hinges: tuple[str, ...] | None = None
 
     @property
     def references(self) -> list[str]:
