@@ -207,3 +207,17 @@ def test_the_answer_gives_the_fills_weight_the_sliding_joints_and_warns_of_the_m
     assert main([*args, "--set", "n_voussoirs=15"]) == 0
     said = capsys.readouterr().out.splitlines()
     assert said[-1].startswith("warning: this arch is not the paper's") and "interface." not in said[-1]
+
+
+def test_a_capacity_in_newtons_is_also_said_per_metre_of_the_arch_width(tmp_path, capsys):
+    """Bridge assessment quotes a line load per metre of width (RING, a kN/m axle line): the 1:10 arch's
+    9.919 N over its 120 mm depth is 82.65 N/m; a bridge's hundreds of kN a metre read in kN/m."""
+    from yadearch.cli.commands import main
+    from yadearch.cli.loads import per_width
+
+    rigid = load_analysis(preset("set2").with_overrides({"live_load": "vertical"}))
+    assert per_width(rigid.multiplier, 120.0) == f"{rigid.multiplier / 0.12:.4g} N/m of width"
+    assert per_width(412_500.0, 1000.0) == "412.5 kN/m of width"
+    args = ["loads", "--preset", "set2", "--set", "live_load=vertical", "--no-figures", "--out", str(tmp_path)]
+    assert main(args) == 0
+    assert f"collapse at 9.919 N ({rigid.multiplier / 0.12:.4g} N/m of width; 0.315" in capsys.readouterr().out

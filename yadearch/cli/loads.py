@@ -19,6 +19,7 @@ from yadearch.cli.check import check_option, with_increments_check
 from yadearch.cli.options import RIGID, case_options, figures_option, refuse_unread, resolve_case
 from yadearch.cli.param_types import OUT_FOLDER, argument_type
 from yadearch.errors import RunFailedError
+from yadearch.model import units
 from yadearch.results.check_text import check_line, unresolved_warning
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_lp import LoadCapacity
@@ -151,7 +152,7 @@ def _capacity(
     unused = unread_by_rigid_blocks(case)
     if unused:  # a case file's (a --set of them is refused): said, not read
         click.echo(f"{case.name}: not used by rigid blocks: {', '.join(unused)}")
-    outcome = _rigid_outcome(result)
+    outcome = _rigid_outcome(result, case.geometry.depth_mm)
     if after_mm and math.isfinite(result.multiplier):  # the settled rigid arch's open hinges are pins
         outcome = outcome.replace("collapse at", "rigid blocks first move at", 1)
         outcome += " (the settled arch's open hinges act as pins: no figure; --engine static follows it to collapse)"
@@ -228,7 +229,9 @@ def _on_path(
     if path.outcome == Outcome.COLLAPSE:
         first = f", first loss of stability at {path.first_loss:.4g} {unit}" if path.first_loss < path.capacity else ""
         kind = f" ({path.kind})" if path.kind else ""
-        outcome = f"collapse at {path.capacity:.4g} {unit} on {' '.join(path.hinges)}{kind}{first}{_descent(path)}"
+        width = f" ({per_width(path.capacity, case.geometry.depth_mm)})" if unit == "N" else ""
+        capacity = f"{path.capacity:.4g} {unit}{width}"
+        outcome = f"collapse at {capacity} on {' '.join(path.hinges)}{kind}{first}{_descent(path)}"
     elif path.outcome == Outcome.UNRESOLVED:
         outcome = f"unresolved: no equilibrium nor runaway found past {path.reach:.4g} {unit} (no capacity)"
     else:
@@ -271,8 +274,20 @@ def _what(case: ArchCase) -> str:
     return what
 
 
-def _rigid_outcome(result: LoadCapacity) -> str:
-    """The rigid analysis's answer in words."""
+KN_FROM_N_PER_M = 1000.0  # a line load from this many N per metre of width up is said in kN/m
+
+
+def per_width(force_N: float, depth_mm: float) -> str:
+    """A capacity (N, carried by the arch's whole out-of-plane depth) per metre of width, as bridge
+    assessment quotes it: "82.66 N/m of width", "412.5 kN/m of width"."""
+    line = force_N / units.mm(depth_mm)
+    if line >= KN_FROM_N_PER_M:
+        return f"{line / KN_FROM_N_PER_M:.4g} kN/m of width"
+    return f"{line:.4g} N/m of width"
+
+
+def _rigid_outcome(result: LoadCapacity, depth_mm: float) -> str:
+    """The rigid analysis's answer in words (a load in N also per metre of the arch's `depth_mm`)."""
     if math.isnan(result.multiplier):
         outcome = "the arch does not stand under its own weight"
     elif math.isinf(result.multiplier):
@@ -282,7 +297,8 @@ def _rigid_outcome(result: LoadCapacity) -> str:
         if result.unit == "N":
             with_fill = result.arch_weight_N + result.fill_weight_N
             fill = f", {result.multiplier / with_fill:.3f} of arch and fill" if result.fill_weight_N else ""
-            share = f" ({result.multiplier / result.arch_weight_N:.3f} of the arch's weight{fill})"
+            width = per_width(result.multiplier, depth_mm)
+            share = f" ({width}; {result.multiplier / result.arch_weight_N:.3f} of the arch's weight{fill})"
         joints = [str(k) for k in result.sliding]
         listed = f"{', '.join(joints[:-1])} and {joints[-1]}" if len(joints) > 1 else "".join(joints)
         slides = f", sliding at {listed}" if joints else ""
