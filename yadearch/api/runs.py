@@ -194,14 +194,8 @@ def limit(
     from yadearch.solve.limit import limit_analysis
     from yadearch.solve.limit_result import write_result_json
 
-    check_arguments(
-        compliant=compliant,
-        max_snap_mm=max_snap_mm,
-        start_mm=start_mm,
-        figures=figures,
-        quiet=quiet,
-        static_beside=static_beside,
-    )
+    check_arguments(compliant=compliant, figures=figures, quiet=quiet, static_beside=static_beside)
+    check_arguments(max_snap_mm=max_snap_mm, start_mm=start_mm)
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
