@@ -132,7 +132,7 @@ def limit(
         click.echo(
             f"nearest edge: joint {result.closest_edge_joint} beside a hinge held its thrust "
             f"{result.closest_edge_mm:.3f} mm from its corner (at {result.closest_edge_at_mm:.2f} mm); a joint of "
-            "finite kn shares the hinge within its fold margin (--compliant)"
+            f"finite kn shares the hinge within its fold margin{'' if compliant else ' (--compliant)'}"
         )
     if result.mirror_collapse_mode is not None:
         mirrored = "no collapse" if result.mirror_du_rigid_mm is None else f"{result.mirror_du_rigid_mm:.2f} mm"
