@@ -115,12 +115,15 @@ def _outcome_counts(table: pd.DataFrame) -> list[str]:
     rigid = table.drop_duplicates(KEY)
     columns = ["solver", "runs", *OUTCOMES]
     rows = []
-    for label, frame, column in (
+    solvers = [
         ("static", table, "static_outcome"),
         ("DEM", table[table["dem_outcome"].notna()], "dem_outcome"),
         ("rigid march", rigid, "rigid_outcome"),
-    ):
-        counts = frame[column].fillna("not run").value_counts()
+    ]
+    if "compliant_outcome" in rigid:
+        solvers.append((f"compliant march (kn {max(KNS_N_PER_MM3):g})", rigid, "compliant_outcome"))
+    for label, frame, column in solvers:
+        counts = frame[column].fillna("not run").str.split(":").str[0].value_counts()  # "failed: why" -> failed
         rows.append([label, str(int(frame[column].notna().sum())), *(str(int(counts.get(o, 0))) for o in OUTCOMES)])
     return markdown_table(columns, rows)
 
