@@ -189,3 +189,18 @@ def test_the_march_carries_the_static_engines_answer_and_warns_where_they_part(t
     saved = json.loads((tmp_path / "custom_compliant-kn100.json").read_text())
     assert saved["static_outcome"] == "collapse" and saved["static_du_mm"] == pytest.approx(24.40, abs=0.01)
     assert saved["du_mm"] == pytest.approx(28.40, abs=0.01)
+    assert saved["warnings"][0].startswith("the compliant march is +16.4% from the static engine (24.40 mm)")
+
+
+def test_a_notebook_sees_the_answer_and_its_warnings_in_a_few_lines():
+    """`ya.limit(...)` in a notebook cell showed some 10 000 characters of joint forces and no warning
+    where the march and the static engine part (ninth user trial); its repr is now the answer, the
+    static engine's beside it and the warnings, every field still an attribute."""
+    import yadearch as ya
+
+    semicircle = {"embrace_deg": 180.0, "thickness_mm": 45.0, "support_direction_deg": 0.0, "kn_N_per_mm3": 100.0}
+    result = ya.limit(preset("set2").with_overrides(semicircle), compliant=True, quiet=True)
+    shown = repr(result)
+    assert shown.splitlines()[0] == "LimitResult(set2, compliant march: du 28.40 mm, hinging on 1E 11I 28E 46I)"
+    assert "static engine beside it: collapse, du 24.40 mm" in shown and "warning: the compliant march is +16.4%" in shown
+    assert len(shown) < 600 and len(result.forces) == 56

@@ -56,7 +56,8 @@ class RunResult:
     @property
     def du_first_mm(self) -> float | None:
         """Where the path first lost stability (mm; a fold, or a snap past the snap floor): du where the
-        path made no snap; None if the arch did not collapse (docs/numerics.md)."""
+        path made no snap; an arch that survives its snaps and stands has one too; None where the path
+        neither snapped nor collapsed (docs/numerics.md)."""
         return self.summary.du_first_mm
 
     @property

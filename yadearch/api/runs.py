@@ -15,7 +15,7 @@ from yadearch.case.config import preset as _preset
 from yadearch.case.names import check_name, output_path
 from yadearch.case.numerics_section import NO_INCREMENTS_CHECK
 from yadearch.case.plan import static_only_refusal
-from yadearch.errors import ArgumentTypeError, CaseError, RunFolderError, YadearchError
+from yadearch.errors import ArgumentTypeError, CaseError, RunFolderError
 from yadearch.results.reuse import case_differences, is_current
 
 if TYPE_CHECKING:
@@ -189,7 +189,9 @@ def limit(
     engine's) instead of the LP's, placed `start_mm` along it. With `out`, writes OUT/NAME.json and
     (with `figures`) the thrust-line figure (NAME_compliant-knKN.* when compliant, NAME_start-1E-35I-56E.*
     from a named linkage). Unless `quiet`, a march longer than a few seconds prints where it is. A
-    compliant march carries the static engine's answer on the same joints beside it (`static_beside`)."""
+    compliant march carries the static engine's answer on the same joints beside it (`static_beside`)
+    and what its reader must know in `warnings` (`api.limit_notes`), shown when the result is printed."""
+    from yadearch.api.limit_notes import with_static_answer, with_warnings
     from yadearch.plotting.thrust_line import save_thrust_line
     from yadearch.solve.limit import limit_analysis
     from yadearch.solve.limit_result import write_result_json
@@ -208,35 +210,14 @@ def limit(
         progress=None if quiet else position_lines(case.name, case.loading.max_support_displacement_mm),
         mirror_progress=None if quiet else position_lines(case.name, case.loading.max_support_displacement_mm, True),
     )
-    if compliant and static_beside:
-        result = with_static_answer(result, case)
+    if compliant:
+        result = with_warnings(with_static_answer(result, case) if static_beside else result, case)
     if folder is not None:
         json_path, figure_stem = limit_files(case, compliant, folder, result.start_hinges, result.start_mm)
         write_result_json(result, case, json_path)
         if figures:
             save_thrust_line(result, case, figure_stem)
     return result
-
-
-def with_static_answer(result: LimitResult, case: ArchCase) -> LimitResult:
-    """`result` (a compliant march) with the static engine's answer on the same blocks and joints beside
-    it: the compliant model the march estimates, solved in seconds (no run folder, no increments check)."""
-    from dataclasses import replace
-
-    from yadearch.static.simulate import simulate_static
-
-    static = case.with_overrides({"numerics.engine": "static", "numerics.increments_check": NO_INCREMENTS_CHECK})
-    try:
-        summary = simulate_static(static, None, log=lambda _line: None)
-    except YadearchError as exc:
-        return replace(result, static_outcome=f"failed: {exc}")
-    return replace(
-        result,
-        static_outcome=str(summary.path_outcome),
-        static_du_mm=summary.du_mm,
-        static_du_first_mm=summary.du_first_mm,
-        static_hinges=tuple(h.label for h in summary.hinges_at_collapse),
-    )
 
 
 def limit_files(

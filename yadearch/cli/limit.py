@@ -3,8 +3,6 @@ with compliant hinges the du a run at the case's kn should find; imported when i
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import click
 
 from yadearch.cli.options import (
@@ -17,9 +15,6 @@ from yadearch.cli.options import (
     stood_text,
 )
 from yadearch.cli.param_types import OUT_FOLDER, argument_type
-
-if TYPE_CHECKING:
-    from yadearch.solve.limit_result import LimitResult
 
 
 @click.command()
@@ -74,10 +69,10 @@ def limit(
 ) -> None:
     """Rigid-block limit analysis, no YADE: du_rigid, hinges, thrust-line figure (kn only with --compliant)."""
     from yadearch.analysis.mechanism import near_bound
+    from yadearch.api.limit_notes import static_line
     from yadearch.api.runs import limit as limit_analysis
     from yadearch.api.runs import limit_files
     from yadearch.case.imperfect import amplitudes
-    from yadearch.solve.compliant import VALID_MARGIN_FRACTION
 
     refuse_unread(settings, kn, RIGID, compliant, reads=MARCH_NUMERICS)
     case = resolve_case(preset_name, case_file, kn, settings)
@@ -121,8 +116,9 @@ def limit(
     elif result.du_mm is not None:
         click.echo(f"du_first = du = {result.du_mm:.2f} mm: no snap before the collapse")
     if result.static_outcome is not None:
-        for line in static_beside_lines(result):
-            click.echo(line)
+        click.echo(static_line(result))
+    for warning in result.warnings:
+        click.echo(f"warning: {warning}")
     bound_mm = result.runaway_thicknesses * case.geometry.thickness_mm
     near = [(snap, said) for snap in result.snaps if (said := near_bound(snap.largest_move_mm, bound_mm))]
     if near:
@@ -146,41 +142,9 @@ def limit(
             else f"mirrored (the keystone's other joint): {quantity} = {mirrored} ({result.mirror_collapse_mode}"
             f"{' on ' + hinges if hinges else ''})"
         )
-    largest = result.compliant_largest_margin_mm
-    if largest is not None and largest > VALID_MARGIN_FRACTION * case.geometry.thickness_mm:
-        click.echo(
-            f"note: a joint folded {largest:.2f} mm from its edge, more than "
-            f"{VALID_MARGIN_FRACTION:.0%} of the joint: joints this soft deform the whole arch, which "
-            "the compliant march ignores (docs/validation.md)",
-            err=True,
-        )
     if not amplitudes(case).flat_aligned_faces:
         click.echo(
             "note: the rigid analysis takes the voussoirs' dimension errors and worn edges but not the "
             "faces' angles, bumps or offsets: its du is that of flat, aligned faces",
             err=True,
         )
-
-
-MARCH_STATIC_TOLERANCE = 0.02  # the march estimates the static engine's compliant model; further apart is said
-
-
-def static_beside_lines(result: LimitResult) -> list[str]:
-    """The static engine's answer on the same joints beside a compliant march, and a warning where the
-    two part by more than MARCH_STATIC_TOLERANCE (the march follows rigid linkages whose joints fold)."""
-    said = "static engine (same blocks and joints):"
-    why = "the static engine solves the compliant model itself (docs/validation-compliant.md)"
-    if result.static_du_mm is None:
-        line = f"{said} {result.static_outcome}" + ("" if result.static_outcome == "stands" else ", no du")
-        if result.du_mm is not None and result.static_outcome == "stands":
-            return [line, f"warning: the compliant march collapses where the static engine stands; {why}"]
-        return [line]
-    du, first = result.static_du_mm, result.static_du_first_mm
-    first_text = "" if first in (None, du) else f", du_first {first:.2f} mm"
-    line = f"{said} du = {du:.2f} mm{first_text} on {' '.join(result.static_hinges or ())}"
-    if result.du_mm is None:
-        return [line, f"warning: the static engine collapses where the compliant march stands; {why}"]
-    gap = result.du_mm / du - 1.0
-    if abs(gap) <= MARCH_STATIC_TOLERANCE:
-        return [f"{line}; the march {gap:+.1%} from it"]
-    return [line, f"warning: the compliant march is {gap:+.1%} from the static engine; {why}"]
