@@ -202,5 +202,7 @@ def test_a_notebook_sees_the_answer_and_its_warnings_in_a_few_lines():
     result = ya.limit(preset("set2").with_overrides(semicircle), compliant=True, quiet=True)
     shown = repr(result)
     assert shown.splitlines()[0] == "LimitResult(set2, compliant march: du 28.40 mm, hinging on 1E 11I 28E 46I)"
-    assert "static engine beside it: collapse, du 24.40 mm" in shown and "warning: the compliant march is +16.4%" in shown
+    assert (
+        "static engine beside it: collapse, du 24.40 mm" in shown and "warning: the compliant march is +16.4%" in shown
+    )
     assert len(shown) < 600 and len(result.forces) == 56

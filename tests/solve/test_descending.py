@@ -124,3 +124,18 @@ def test_a_fraction_outside_zero_to_one_is_refused_in_one_line(capsys):
     said = capsys.readouterr()
     message = (said.out + said.err).strip()
     assert "'--descend-to': must be a number in [0, 1], got '-0.1'" in message and len(message.splitlines()) == 1
+
+
+def test_a_branch_that_rises_above_the_capacity_puts_it_in_doubt_in_words():
+    """A 6 m limestone semicircle (ring 400 mm, 41 voussoirs, 1 m deep) on soft joints (kn 5) under a
+    quarter-span load: past the load control's peak (1180.36 N) the branch rises to 1182.46 N, so the
+    load control stopped short of its peak. `descent_end` said "rose" and nothing else did (ninth user
+    trial); the path's warnings (which `yadearch loads` prints) say that the capacity is in doubt."""
+    semicircle = {"internal_radius_mm": 3000.0, "embrace_deg": 180.0, "thickness_mm": 400.0, "n_voussoirs": 41}
+    semicircle |= {"depth_mm": 1000.0, "support_length_mm": 600.0, "kn_N_per_mm3": 5.0, "live_load": "vertical"}
+    case = preset("set2").with_overrides({**semicircle, "material.preset": "limestone"})
+    path = static_load_path(case)
+    assert path.descent_end == DescentEnd.ROSE and path.curve["multiplier"].max() > path.capacity
+    (said,) = path.warnings
+    assert said.startswith(f"past the peak the load rose to {path.curve['multiplier'].max():.4g} N, above the capacity")
+    assert static_load_path(preset("set2").with_overrides({"live_load": "vertical"})).warnings == ()

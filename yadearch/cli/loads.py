@@ -245,6 +245,8 @@ def _on_path(
         f"{case.name}: {what}: {ENGINE_NAMES[engine]}: {outcome}; rigid blocks: {rigid} "
         f"-> {out}/{case.name}_load_path.json{states}"
     )
+    for warning in path.warnings:
+        click.echo(f"warning: {warning}")
     if path.increments_check is not None:
         answers = (("capacity", "capacity", unit), ("first loss", "first_loss", unit))
         said = check_line(path.increments_check, answers)

@@ -23,7 +23,7 @@ from yadearch.errors import CaseError, RunFailedError
 from yadearch.model import units
 from yadearch.model.loads import UNITS, VERTICAL, load_displacement
 from yadearch.solve.collapse_mode import FoldMode
-from yadearch.solve.descending import DESCEND_TO, descend
+from yadearch.solve.descending import DESCEND_TO, DescentEnd, descend
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
 from yadearch.solve.path import PathResult, PathSettings, first_snap, follow_path, path_settings
 from yadearch.solve.refined import SKIPPED, check_record, halved_loading, mode_record
@@ -57,11 +57,13 @@ class LoadPath:
     unit: str
     hinges: tuple[str, ...]
     kind: str | None
-    curve: pd.DataFrame
+    curve: pd.DataFrame = field(repr=False)  # a notebook shows the answer; the curve stays an attribute
     after_mm: float
     reach: float  # the last stable multiplier of the path (the arch stands at least to it without collapse)
     iterations: int  # the static engine's Newton iterations, or the DEM's time steps
-    rigid: float  # the rigid-block capacity of the same state (`solve.load_lp`; NaN where there is none)
+    # the rigid-block capacity of the same state (`solve.load_lp`; NaN where there is none); after a support
+    # movement, the load that first moves the settled rigid arch, whose open hinges are pins: not a capacity
+    rigid: float
     rigid_hinges: tuple[str, ...]
     rigid_note: str = ""  # why there is no rigid answer, where there is none
     engine: str = "static"
@@ -72,6 +74,18 @@ class LoadPath:
     states: tuple[StaticState, ...] = field(default=(), repr=False, compare=False)
     # the static path again with the increments halved (numerics.increments_check; None: not checked)
     increments_check: dict | None = None
+
+    @property
+    def warnings(self) -> tuple[str, ...]:
+        """What a reader of the capacity must know: past the peak the load rose above it (the load control
+        stopped short of its peak, so the capacity is a lower bound, docs/loads.md)."""
+        if self.descent_end != DescentEnd.ROSE:
+            return ()
+        highest = float(self.curve["multiplier"].max()) if "multiplier" in self.curve else math.nan
+        return (
+            f"past the peak the load rose to {highest:.4g} {self.unit}, above the capacity {self.capacity:.4g} "
+            f"{self.unit}: the load control stopped short of its peak, so the capacity is in doubt (docs/loads.md)",
+        )
 
 
 def load_settings(scale: float, growth: float) -> PathSettings:
