@@ -19,3 +19,14 @@ def test_the_folds_mode_is_named_where_the_runaway_opens_another_mechanism(tmp_p
     assert main(["run", "--preset", "set2", *STATIC, "--out", str(tmp_path / "set2")]) == 0
     line = next(s for s in capsys.readouterr().out.splitlines() if " du = " in s)
     assert "hinges at collapse 1E 9I 29E 56E, static engine" in line
+
+
+def test_a_new_arch_on_the_models_values_is_warned_once_whether_the_run_is_made_or_reused(tmp_path, capfd):
+    """The warning that a new arch took the 1:10 model's values came twice from a run made now, once in
+    its log and once after its answer (open since the fifth user trial); a reused run, which logs
+    nothing, says it after its answer."""
+    coarse = ["run", "--preset", "set2", "--set", "n_voussoirs=15", *STATIC, "--out", str(tmp_path)]
+    for _made_then_reused in range(2):
+        assert main(coarse) == 0
+        said = capfd.readouterr()
+        assert (said.out + said.err).count("this arch is not the paper's but has the paper's 1:10 model's values") == 1

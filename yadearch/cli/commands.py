@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import signal
 import sys
+import time
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -22,11 +23,14 @@ if TYPE_CHECKING:
 FIGURE_JOBS = 2  # a single run's figures are drawn in two processes (where the platform forks)
 
 
-def _report_summary(out: Path) -> None:
+def _report_summary(out: Path, made_since: float | None = None) -> None:
+    """A finished run's answer in a line and its warnings; the 1:10 model's values not again for a run
+    written since `made_since` (time.time(): its log said them at its start)."""
     from yadearch.analysis.mechanism import run_warnings
     from yadearch.case.config import load_case
+    from yadearch.case.paper import model_values_text
     from yadearch.model.hinges import SAME_MECHANISM, hinge_change
-    from yadearch.results.rundir import CASE_FILE, read_summary
+    from yadearch.results.rundir import CASE_FILE, SUMMARY_FILE, read_summary
 
     summary: RunSummary = read_summary(out)
     du = summary.du_mm
@@ -51,8 +55,12 @@ def _report_summary(out: Path) -> None:
 
         if unresolved_warning(summary.increments_check) is None:  # else a warning says it
             click.echo(check_line(summary.increments_check))
+    taken = summary.paper_model_values
+    made = made_since is not None and (out / SUMMARY_FILE).stat().st_mtime >= made_since
+    logged = model_values_text(taken) if taken and made else None
     for warning in run_warnings(summary):
-        click.echo(f"warning: {warning}")
+        if warning != logged:
+            click.echo(f"warning: {warning}")
 
 
 @click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
@@ -89,8 +97,9 @@ def run(
     if name is not None:
         case = case.with_overrides({"name": check_name(name, "--name")})
     case = with_increments_check(case, check, case_file, settings)
+    started = time.time()
     result = run_case(case, out=out, rerun=rerun, overwrite=overwrite, figures=figures, figure_jobs=FIGURE_JOBS)
-    _report_summary(result.path)
+    _report_summary(result.path, made_since=started)
     if figures:
         click.echo(f"figures -> {result.path / 'figures'}")
 

@@ -22,7 +22,7 @@ from yadearch.case.paper import model_values_text, paper_model_values
 from yadearch.case.support import path_end_mm
 from yadearch.errors import YadearchError
 from yadearch.model import units
-from yadearch.results.provenance import provenance
+from yadearch.results.provenance import STARTED_FORMAT, provenance
 from yadearch.results.run_log import stamped_log
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
 from yadearch.results.summary import DEM, RunSummary, loading_info
@@ -59,7 +59,7 @@ def simulate(case: ArchCase, out: Path) -> RunSummary:
     origin = provenance(str(yade.config.version))  # now: the code that runs was imported at start
     runner = Runner(case, log=log)
     log(f"[{case.name}] dt={runner.scene.dt:.3e} s, {len(runner.scene.body_ids)} bodies")
-    started = time.strftime("%Y-%m-%dT%H:%M:%S")
+    started = time.strftime(STARTED_FORMAT)
     imperfections = runner.scene.imperfections
     found = runner.run()
     summary = dataclasses.replace(

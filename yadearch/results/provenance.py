@@ -9,6 +9,8 @@ from typing import Any
 
 from yadearch import __version__
 
+STARTED_FORMAT = "%Y-%m-%dT%H:%M:%S"  # summary.json's `started`: local time, sortable as text
+
 
 @functools.lru_cache(maxsize=1)
 def git_revision() -> str | None:

@@ -21,10 +21,17 @@ from yadearch.errors import CANNOT_STAND, YadearchError
 from yadearch.model import units
 from yadearch.model.loads import NONE, UNITS
 from yadearch.results.check_text import check_line
-from yadearch.results.provenance import provenance
+from yadearch.results.provenance import STARTED_FORMAT, provenance
 from yadearch.results.run_log import stamped_log
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
-from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSummary, collapse_fields, loading_info
+from yadearch.results.summary import (
+    STATIC,
+    STATIC_REVISION,
+    HingeRef,
+    RunSummary,
+    collapse_fields,
+    loading_info,
+)
 from yadearch.solve.mirror import mirror_hinges
 from yadearch.solve.path import PathStep, bracket_text
 from yadearch.solve.stages import Stage
@@ -60,7 +67,7 @@ def simulate_static(case: ArchCase, out: Path | None, log: Callable[[str], None]
     """Run `case` with the static engine and write its run folder to `out` (none if `out` is None: a
     campaign that keeps only its results table, `static.pool.solve_batch`); returns the summary."""
     wall0 = time.time()
-    started = time.strftime("%Y-%m-%dT%H:%M:%S")
+    started = time.strftime(STARTED_FORMAT)
     num = case.numerics
     loading = StaticLoading.of(case)
     arch = loading.arch
