@@ -206,3 +206,25 @@ def test_a_notebook_sees_the_answer_and_its_warnings_in_a_few_lines():
         "static engine beside it: collapse, du 24.40 mm" in shown and "warning: the compliant march is +16.4%" in shown
     )
     assert len(shown) < 600 and len(result.forces) == 56
+
+
+def test_a_march_that_stops_says_the_static_engines_answer_on_the_same_joints(monkeypatch):
+    """A compliant march that cannot follow the arch gives no du (the shallow arch at kn 100 stops at
+    56.35 mm on 2I 3I 53E); its error now carries the static engine's answer on the same joints, which
+    solves the model the march estimates. A rigid march's failure, and a refusal, are left as they are."""
+    import yadearch as ya
+    from yadearch.solve import limit
+    from yadearch.solve.rigid import MarchStopped
+
+    def stops(*args, **kwargs):
+        raise MarchStopped("the march stopped at 56.354 mm")
+
+    monkeypatch.setattr(limit, "limit_analysis", stops)
+    with pytest.raises(
+        MarchStopped,
+        match=r"^the march stopped at 56.354 mm; static engine \(same blocks and joints\): "
+        r"du = 87.99 mm on 1E 9I 29E 56E$",
+    ):
+        ya.limit(preset("set2"), compliant=True, quiet=True)
+    with pytest.raises(MarchStopped, match=r"^the march stopped at 56.354 mm$"):
+        ya.limit(preset("set2"), quiet=True)

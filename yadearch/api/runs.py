@@ -191,25 +191,33 @@ def limit(
     from a named linkage). Unless `quiet`, a march longer than a few seconds prints where it is. A
     compliant march carries the static engine's answer on the same joints beside it (`static_beside`)
     and what its reader must know in `warnings` (`api.limit_notes`), shown when the result is printed."""
-    from yadearch.api.limit_notes import with_static_answer, with_warnings
+    from yadearch.api.limit_notes import failed_march, with_static_answer, with_warnings
     from yadearch.plotting.thrust_line import save_thrust_line
     from yadearch.solve.limit import limit_analysis
     from yadearch.solve.limit_result import write_result_json
+    from yadearch.solve.rigid import MarchStopped
 
     check_arguments(compliant=compliant, figures=figures, quiet=quiet, static_beside=static_beside)
     check_arguments(max_snap_mm=max_snap_mm, start_mm=start_mm)
     case = as_case(case)
     check_name(case.name, "case.name")
     folder = output_path(out, "out") if out is not None else None
-    result = limit_analysis(
-        case,
-        max_snap_mm=max_snap_mm,
-        compliant=compliant,
-        start_hinges=start_hinges,
-        start_mm=start_mm,
-        progress=None if quiet else position_lines(case.name, case.loading.max_support_displacement_mm),
-        mirror_progress=None if quiet else position_lines(case.name, case.loading.max_support_displacement_mm, True),
-    )
+    try:
+        result = limit_analysis(
+            case,
+            max_snap_mm=max_snap_mm,
+            compliant=compliant,
+            start_hinges=start_hinges,
+            start_mm=start_mm,
+            progress=None if quiet else position_lines(case.name, case.loading.max_support_displacement_mm),
+            mirror_progress=None
+            if quiet
+            else position_lines(case.name, case.loading.max_support_displacement_mm, True),
+        )
+    except MarchStopped as exc:  # a compliant march that fails says the static engine's answer on the same joints
+        if not (compliant and static_beside):
+            raise
+        raise failed_march(exc, case) from None
     if compliant:
         result = with_warnings(with_static_answer(result, case) if static_beside else result, case)
     if folder is not None:

@@ -69,7 +69,7 @@ def limit(
 ) -> None:
     """Rigid-block limit analysis, no YADE: du_rigid, hinges, thrust-line figure (kn only with --compliant)."""
     from yadearch.analysis.mechanism import near_bound
-    from yadearch.api.limit_notes import static_line
+    from yadearch.api.limit_notes import StaticAnswer
     from yadearch.api.runs import limit as limit_analysis
     from yadearch.api.runs import limit_files
     from yadearch.case.imperfect import amplitudes
@@ -115,8 +115,9 @@ def limit(
         )
     elif result.du_mm is not None:
         click.echo(f"du_first = du = {result.du_mm:.2f} mm: no snap before the collapse")
-    if result.static_outcome is not None:
-        click.echo(static_line(result))
+    beside = StaticAnswer.beside(result)
+    if beside is not None:
+        click.echo(beside.line(result.du_mm))
     for warning in result.warnings:
         click.echo(f"warning: {warning}")
     bound_mm = result.runaway_thicknesses * case.geometry.thickness_mm

@@ -34,7 +34,17 @@ from yadearch.solve.limit_result import LimitResult, interface_forces
 from yadearch.solve.march import March
 from yadearch.solve.mirror import has_other_branch, mirror_image
 from yadearch.solve.reseat import penetrates
-from yadearch.solve.rigid import SIDES, LimitError, Pivot, Placement, RigidArch, at_rest, close_linkage, rigid_arch
+from yadearch.solve.rigid import (
+    SIDES,
+    LimitError,
+    MarchStopped,
+    Pivot,
+    Placement,
+    RigidArch,
+    at_rest,
+    close_linkage,
+    rigid_arch,
+)
 from yadearch.solve.standing import refuse_compliant_that_cannot_stand, refuse_uncarried_held_load, too_weak
 
 DEFAULT_STEP_MM = 0.5  # support step between equilibrium checks
@@ -134,7 +144,7 @@ def _solve(
         raise LimitError(f"the arch admits no equilibrium at rest: {too_weak(case)}")
     last, read_at, mechanism, chain = march.run(limit, origin)
     if read_at is None and last.delta < limit - units.mm(tolerance_mm):
-        raise LimitError(
+        raise MarchStopped(
             f"the march stopped at {units.to_mm(last.delta):.3f} mm, short of {units.to_mm(limit):g} mm: its "
             f"linkage {' '.join(p.label for p in mechanism.pivots)} can move no further and no limit was read"
         )

@@ -29,7 +29,7 @@ from yadearch.solve.compliant import Margin, folds, joint_margins, opening_chain
 from yadearch.solve.limit_lp import Mechanism, Statics, solve_kinematics, solve_statics
 from yadearch.solve.limit_result import HingeRecord, SnapRecord
 from yadearch.solve.reseat import closing_path, descending_chains, energy_tolerance, follow_tie, land, migrates
-from yadearch.solve.rigid import LimitError, Pivot, Placement, RigidArch, close_linkage, contacts
+from yadearch.solve.rigid import MarchStopped, Pivot, Placement, RigidArch, close_linkage, contacts
 from yadearch.solve.snap_rules import climbs, largest_accepted, moves_a_hinge
 
 COLLAPSE_PROBE_MM = 0.05  # past a limit, where the four-hinge chains are read (clear of LP tolerances)
@@ -144,7 +144,7 @@ class March:
                 elif capped:  # a corner has closed (or the linkage straightened): solve the mechanism again
                     new = self.switch(state, mechanism, 0.0)
                     if set(new.pivots) == set(mechanism.pivots):
-                        raise LimitError(
+                        raise MarchStopped(
                             f"at {units.to_mm(state.delta):.3f} mm the mechanism can go no "
                             "further (its linkage straightens) and no other follows"
                         )
@@ -228,7 +228,7 @@ class March:
                 return None, 0.0, last
             state = probe = landings[0].placement
             pivots = self.pivots = landings[0].pivots
-        raise LimitError(
+        raise MarchStopped(
             f"at {units.to_mm(start.delta):.3f} mm the hinges re-seat more than {self.max_stages} "
             "times at the fixed support without finding an equilibrium"
         )
@@ -248,7 +248,7 @@ class March:
                 return None, 0.0, chain
             height = [potential(self.arch, p) for p in path]
             if climbs(height, self.folding, energy_tolerance(self.arch)):
-                raise LimitError(
+                raise MarchStopped(
                     f"at {units.to_mm(start.delta):.3f} mm the arch comes to rest on four "
                     "open hinges, which this analysis does not follow"
                 )
@@ -281,7 +281,7 @@ class March:
         new = self.start if named else self.kinematics(state)
         if new is None or len(new.pivots) != 3:
             found = "none" if new is None else " ".join(p.label for p in new.pivots) or "none"
-            raise LimitError(
+            raise MarchStopped(
                 f"at {units.to_mm(state.delta):.3f} mm the support is followed by no "
                 f"three-hinge mechanism (hinges: {found})"
             )

@@ -35,6 +35,10 @@ class LimitError(YadearchError):
     """The arch admits no equilibrium at rest, or moves in a way the limit analysis does not follow."""
 
 
+class MarchStopped(LimitError):
+    """The march started but could not follow the arch further: no du (a failure, never a collapse)."""
+
+
 def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """z component of the cross product of 2-D vectors (..., 2)."""
     return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
