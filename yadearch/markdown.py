@@ -30,3 +30,14 @@ def seconds_text(seconds: float) -> str:
     """A duration as a run reports it: hundredths below ten seconds (a static run's 0.37 s is not
     "0 s"), whole seconds above."""
     return f"{seconds:.2f} s" if seconds < 10.0 else f"{seconds:.0f} s"
+
+
+N_PER_KN = 1000.0  # a line load from 1 kN per metre of width up is said in kN/m
+MM_PER_M = 1000.0
+
+
+def per_width(force_N: float, depth_mm: float) -> str:
+    """A force (N) carried by the arch's whole out-of-plane depth (mm) per metre of width, as bridge
+    assessment quotes a line load: "82.65 N/m of width", "412.5 kN/m of width"."""
+    line = force_N / (depth_mm / MM_PER_M)
+    return f"{line / N_PER_KN:.4g} kN/m of width" if line >= N_PER_KN else f"{line:.4g} N/m of width"

@@ -228,3 +228,10 @@ def test_a_march_that_stops_says_the_static_engines_answer_on_the_same_joints(mo
         ya.limit(preset("set2"), compliant=True, quiet=True)
     with pytest.raises(MarchStopped, match=r"^the march stopped at 56.354 mm$"):
         ya.limit(preset("set2"), quiet=True)
+
+    def refuses(*args, **kwargs):
+        raise LimitError("the arch admits no equilibrium at rest")
+
+    monkeypatch.setattr(limit, "limit_analysis", refuses)
+    with pytest.raises(LimitError, match=r"^the arch admits no equilibrium at rest$"):
+        ya.limit(preset("set2"), compliant=True, quiet=True)

@@ -213,7 +213,7 @@ def test_a_capacity_in_newtons_is_also_said_per_metre_of_the_arch_width(tmp_path
     """Bridge assessment quotes a line load per metre of width (RING, a kN/m axle line): the 1:10 arch's
     9.919 N over its 120 mm depth is 82.65 N/m; a bridge's hundreds of kN a metre read in kN/m."""
     from yadearch.cli.commands import main
-    from yadearch.cli.loads import per_width
+    from yadearch.markdown import per_width
 
     rigid = load_analysis(preset("set2").with_overrides({"live_load": "vertical"}))
     assert per_width(rigid.multiplier, 120.0) == f"{rigid.multiplier / 0.12:.4g} N/m of width"

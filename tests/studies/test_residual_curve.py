@@ -1,7 +1,7 @@
 """The residual capacity curve (`ya.residual_curve`, `yadearch loads --residual N`, issue 44 item 3):
 the live load an arch carries after its support has moved part of the way to its du; at no
-settlement it is the static load path's capacity, and a settled arch carries less; bad counts are
-refused in one line."""
+settlement it is the static load path's capacity, a settled arch carries less (but a small settlement
+can raise a soft arch's capacity, below); bad counts are refused in one line."""
 
 from __future__ import annotations
 

@@ -11,7 +11,7 @@ from yadearch.case.numerics_section import NO_INCREMENTS_CHECK
 from yadearch.errors import YadearchError
 from yadearch.solve.compliant import VALID_MARGIN_FRACTION
 from yadearch.solve.limit_result import LimitResult
-from yadearch.solve.rigid import LimitError, MarchStopped
+from yadearch.solve.rigid import MarchStopped
 
 MARCH_STATIC_TOLERANCE = 0.02  # the march estimates the static engine's compliant model; further apart is said
 STATIC_SAID = "static engine (same blocks and joints):"
@@ -51,6 +51,7 @@ class StaticAnswer:
 
     @property
     def failed(self) -> bool:
+        """The static engine did not answer (its self-weight, or a solver, failed)."""
         return self.outcome.startswith("failed")
 
     def line(self, march_du_mm: float | None) -> str:
@@ -58,7 +59,8 @@ class StaticAnswer:
         if self.du_mm is None:
             return f"{STATIC_SAID} {self.outcome}" + ("" if self.outcome == "stands" else ", no du")
         first = "" if self.du_first_mm in (None, self.du_mm) else f", du_first {self.du_first_mm:.2f} mm"
-        line = f"{STATIC_SAID} du = {self.du_mm:.2f} mm{first} on {' '.join(self.hinges)}"
+        hinges = f" on {' '.join(self.hinges)}" if self.hinges else ""
+        line = f"{STATIC_SAID} du = {self.du_mm:.2f} mm{first}{hinges}"
         if march_du_mm is not None and abs(march_du_mm / self.du_mm - 1.0) <= MARCH_STATIC_TOLERANCE:
             line += f"; the march {march_du_mm / self.du_mm - 1.0:+.1%} from it"
         return line
@@ -93,7 +95,7 @@ def with_static_answer(result: LimitResult, case: ArchCase) -> LimitResult:
     )
 
 
-def failed_march(error: MarchStopped, case: ArchCase) -> LimitError:
+def failed_march(error: MarchStopped, case: ArchCase) -> MarchStopped:
     """A compliant march's failure with the static engine's answer on the same blocks and joints beside
     it, where that engine has one (the march estimates the compliant model; the static engine solves it)."""
     answer = StaticAnswer.of(case)

@@ -110,7 +110,9 @@ def run(
     if is_current(folder) and not rerun:
         differences = case_differences(folder, case)
         if not differences and not _lacks_its_check(folder, case):
-            return open_run(folder)
+            reused = open_run(folder)
+            reused.reused = True
+            return reused
         if differences and not overwrite:  # the same case without its check is run again
             raise RunFolderError(
                 f"{folder} holds a finished run of another case ({differences[0]}"

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import signal
 import sys
-import time
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -23,14 +22,14 @@ if TYPE_CHECKING:
 FIGURE_JOBS = 2  # a single run's figures are drawn in two processes (where the platform forks)
 
 
-def _report_summary(out: Path, made_since: float | None = None) -> None:
-    """A finished run's answer in a line and its warnings; the 1:10 model's values not again for a run
-    written since `made_since` (time.time(): its log said them at its start)."""
+def _report_summary(out: Path, logged: bool = False) -> None:
+    """A finished run's answer in a line and its warnings; the 1:10 model's values not again where the
+    run was just made (`logged`: its log said them at its start)."""
     from yadearch.analysis.mechanism import run_warnings
     from yadearch.case.config import load_case
     from yadearch.case.paper import model_values_text
     from yadearch.model.hinges import SAME_MECHANISM, hinge_change
-    from yadearch.results.rundir import CASE_FILE, SUMMARY_FILE, read_summary
+    from yadearch.results.rundir import CASE_FILE, read_summary
 
     summary: RunSummary = read_summary(out)
     du = summary.du_mm
@@ -56,10 +55,9 @@ def _report_summary(out: Path, made_since: float | None = None) -> None:
         if unresolved_warning(summary.increments_check) is None:  # else a warning says it
             click.echo(check_line(summary.increments_check))
     taken = summary.paper_model_values
-    made = made_since is not None and (out / SUMMARY_FILE).stat().st_mtime >= made_since
-    logged = model_values_text(taken) if taken and made else None
+    said = model_values_text(taken) if taken and logged else None
     for warning in run_warnings(summary):
-        if warning != logged:
+        if warning != said:
             click.echo(f"warning: {warning}")
 
 
@@ -97,9 +95,8 @@ def run(
     if name is not None:
         case = case.with_overrides({"name": check_name(name, "--name")})
     case = with_increments_check(case, check, case_file, settings)
-    started = time.time()
     result = run_case(case, out=out, rerun=rerun, overwrite=overwrite, figures=figures, figure_jobs=FIGURE_JOBS)
-    _report_summary(result.path, made_since=started)
+    _report_summary(result.path, logged=not result.reused)
     if figures:
         click.echo(f"figures -> {result.path / 'figures'}")
 

@@ -19,7 +19,7 @@ from yadearch.cli.check import check_option, with_increments_check
 from yadearch.cli.options import RIGID, case_options, figures_option, refuse_unread, resolve_case
 from yadearch.cli.param_types import OUT_FOLDER, argument_type
 from yadearch.errors import RunFailedError
-from yadearch.model import units
+from yadearch.markdown import per_width
 from yadearch.results.check_text import check_line, unresolved_warning
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_lp import LoadCapacity
@@ -274,18 +274,6 @@ def _what(case: ArchCase) -> str:
     else:
         what += f" toward the {case.loads.acceleration_toward}"
     return what
-
-
-KN_FROM_N_PER_M = 1000.0  # a line load from this many N per metre of width up is said in kN/m
-
-
-def per_width(force_N: float, depth_mm: float) -> str:
-    """A capacity (N, carried by the arch's whole out-of-plane depth) per metre of width, as bridge
-    assessment quotes it: "82.66 N/m of width", "412.5 kN/m of width"."""
-    line = force_N / units.mm(depth_mm)
-    if line >= KN_FROM_N_PER_M:
-        return f"{line / KN_FROM_N_PER_M:.4g} kN/m of width"
-    return f"{line:.4g} N/m of width"
 
 
 def _rigid_outcome(result: LoadCapacity, depth_mm: float) -> str:

@@ -19,7 +19,18 @@ import numpy as np
 
 from yadearch.model.loads import LoadPoints, generalised
 from yadearch.model.passive_fill import BLOCK, CAPACITY, OUTWARD, spring_points
-from yadearch.solve.rigid import EXTRADOS, INTRADOS, Contacts, LimitError, Pivot, Placement, RigidArch, contacts, cross
+from yadearch.solve.rigid import (
+    EXTRADOS,
+    INTRADOS,
+    Contacts,
+    LimitError,
+    MarchStopped,
+    Pivot,
+    Placement,
+    RigidArch,
+    contacts,
+    cross,
+)
 
 LP_METHOD = "highs-ds"  # dual simplex: vertex solutions, i.e. mechanisms with the fewest hinges
 # HiGHS's default 1e-7 lets a corner force of 1e-6 of the arch's weight go negative: 0.02 mm of support
@@ -237,9 +248,9 @@ def solve_kinematics(arch: RigidArch, placement: Placement, support_speed: float
     if result.status == STATUS_UNBOUNDED:
         return None
     if result.status == STATUS_INFEASIBLE:
-        raise LimitError(f"at {placement.delta * 1e3:.3f} mm no mechanism can follow the support")
+        raise MarchStopped(f"at {placement.delta * 1e3:.3f} mm no mechanism can follow the support")
     if result.status != 0:
-        raise LimitError(f"kinematic LP failed at {placement.delta * 1e3:.3f} mm: {result.message}")
+        raise MarchStopped(f"kinematic LP failed at {placement.delta * 1e3:.3f} mm: {result.message}")
     rates = a_v.T @ result.x + support  # gap rates (2m) and slip rates (m) of every interface
     gaps = np.column_stack([rates[:m], rates[m : 2 * m]])
     omega = np.concatenate(

@@ -125,13 +125,16 @@ class LimitResult:
 
     def __repr__(self) -> str:
         """The answer in a few lines (a notebook shows it; every field stays an attribute)."""
-        du = "stands" if self.du_mm is None else f"du {self.du_mm:.2f} mm"
+        hinges = " ".join(self.collapse_hinges)
         first = "" if self.du_first_mm in (None, self.du_mm) else f", du_first {self.du_first_mm:.2f} mm"
+        answer = (
+            f"stands, hinges at the end {hinges}"
+            if self.du_mm is None
+            else f"du {self.du_mm:.2f} mm{first}, {self.collapse_mode} on {hinges}"
+        )
         kind = "compliant march" if self.compliant_kn_N_per_mm3 is not None else "rigid march"
-        lines = [
-            f"LimitResult({self.name}, {kind}: {du}{first}, {self.collapse_mode} on {' '.join(self.collapse_hinges)})"
-        ]
-        if self.static_du_mm is not None or self.static_outcome is not None:
+        lines = [f"LimitResult({self.name}, {kind}: {answer})"]
+        if self.static_outcome is not None:
             static = "no du" if self.static_du_mm is None else f"du {self.static_du_mm:.2f} mm"
             lines.append(f"  static engine beside it: {self.static_outcome}, {static}")
         return "\n".join([*lines, *(f"  warning: {w}" for w in self.warnings)])

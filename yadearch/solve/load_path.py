@@ -79,13 +79,10 @@ class LoadPath:
     def warnings(self) -> tuple[str, ...]:
         """What a reader of the capacity must know: past the peak the load rose above it (the load control
         stopped short of its peak, so the capacity is a lower bound, docs/loads.md)."""
-        if self.descent_end != DescentEnd.ROSE:
-            return ()
         highest = float(self.curve["multiplier"].max()) if "multiplier" in self.curve else math.nan
-        return (
-            f"past the peak the load rose to {highest:.4g} {self.unit}, above the capacity {self.capacity:.4g} "
-            f"{self.unit}: the load control stopped short of its peak, so the capacity is in doubt (docs/loads.md)",
-        )
+        said = f"past the peak the load rose to {highest:.4g} {self.unit}, above the capacity {self.capacity:.4g} "
+        said += f"{self.unit}: the load control stopped short of its peak, so the capacity is in doubt (docs/loads.md)"
+        return (said,) if self.descent_end == DescentEnd.ROSE else ()
 
 
 def load_settings(scale: float, growth: float) -> PathSettings:

@@ -24,14 +24,7 @@ from yadearch.results.check_text import check_line
 from yadearch.results.provenance import STARTED_FORMAT, provenance
 from yadearch.results.run_log import stamped_log
 from yadearch.results.rundir import LOG_FILE, final_folder, write_run
-from yadearch.results.summary import (
-    STATIC,
-    STATIC_REVISION,
-    HingeRef,
-    RunSummary,
-    collapse_fields,
-    loading_info,
-)
+from yadearch.results.summary import STATIC, STATIC_REVISION, HingeRef, RunSummary, collapse_fields, loading_info
 from yadearch.solve.mirror import mirror_hinges
 from yadearch.solve.path import PathStep, bracket_text
 from yadearch.solve.stages import Stage

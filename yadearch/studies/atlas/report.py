@@ -123,7 +123,9 @@ def _outcome_counts(table: pd.DataFrame) -> list[str]:
     if "compliant_outcome" in rigid:
         solvers.append((f"compliant march (kn {max(KNS_N_PER_MM3):g})", rigid, "compliant_outcome"))
     for label, frame, column in solvers:
-        counts = frame[column].fillna("not run").str.split(":").str[0].value_counts()  # "failed: why" -> failed
+        counts = (
+            frame[column].astype("string").fillna("not run").str.split(":").str[0].value_counts()
+        )  # "failed: why" -> failed
         rows.append([label, str(int(frame[column].notna().sum())), *(str(int(counts.get(o, 0))) for o in OUTCOMES)])
     return markdown_table(columns, rows)
 
