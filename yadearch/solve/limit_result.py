@@ -76,7 +76,7 @@ class LimitResult:
     # moves a block further than the snap floor (numerics.snap_thickness_ratio ring thicknesses, as the
     # static engine and the DEM count a snap) or by the collapse; None: none met. du_first_mm <= du_mm
     du_first_mm: float | None
-    du_rigid_mm: float | None  # = du_mm
+    du_rigid_mm: float | None  # = du_mm, its older name (a compliant march's du too: not the rigid blocks' there)
     collapse_mode: str  # "hinging", "snap" (a hinge snap beyond max_snap_mm), "sliding", or "none"
     hinge_history: tuple[HingeRecord, ...]
     collapse_hinges: tuple[str, ...]  # hinges of the collapse mechanism, left to right, e.g. "9I"
