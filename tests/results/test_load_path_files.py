@@ -22,7 +22,7 @@ from yadearch.results.load_path import (
 )
 from yadearch.results.rundir import LOAD_PATH_FILE, is_load_path_folder
 from yadearch.results.states import read_states, state_entry, write_states
-from yadearch.solve.load_path import LoadPath
+from yadearch.solve.load_path_result import LoadPath
 
 CASE = ArchCase(name="point_0.3").with_overrides({"live_load": "vertical", "n_voussoirs": 15})
 

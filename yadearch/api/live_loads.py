@@ -28,7 +28,8 @@ from yadearch.plotting.loads import plot_influence, plot_load_path
 from yadearch.results.load_path import load_path_file, write_load_path, write_load_path_folder
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
-from yadearch.solve.load_path import LoadPath, static_load_path
+from yadearch.solve.load_path import static_load_path
+from yadearch.solve.load_path_result import LoadPath
 from yadearch.solve.rigid import rigid_arch
 from yadearch.solve.static_state import StaticEngineError
 from yadearch.static.records import load_path_records

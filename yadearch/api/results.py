@@ -36,9 +36,9 @@ class HingeAtCollapse(HingeRef):
 class RunResult:
     """A finished run folder read back: its summary as attributes, its tables as DataFrames."""
 
-    def __init__(self, folder: RunFolder, reused: bool = False):
+    def __init__(self, folder: RunFolder):
         self.folder = folder
-        self.reused = reused  # `run` found this run finished in its folder and made none (its log said nothing)
+        self.reused = False  # `run` found this run finished in its folder and made none (its log said nothing)
 
     @property
     def path(self) -> Path:

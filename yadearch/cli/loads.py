@@ -23,7 +23,8 @@ from yadearch.markdown import per_width
 from yadearch.results.check_text import check_line, unresolved_warning
 from yadearch.solve.descending import DESCEND_TO
 from yadearch.solve.load_lp import LoadCapacity
-from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath
+from yadearch.solve.load_path import BRANCH, DESCENDING
+from yadearch.solve.load_path_result import LoadPath
 from yadearch.solve.stages import Outcome
 
 STATIC, DEM = "static", "dem"

@@ -28,7 +28,6 @@ from yadearch.solve.descending import DescentEnd
 from yadearch.solve.load_lp import load_analysis
 from yadearch.solve.load_path import (
     BRANCH,
-    LoadPath,
     branches,
     check_carried,
     check_held,
@@ -38,6 +37,7 @@ from yadearch.solve.load_path import (
     load_settings,
     rigid_answer,
 )
+from yadearch.solve.load_path_result import LoadPath
 from yadearch.solve.path import PathSettings, first_snap, path_settings
 from yadearch.solve.stages import Stage
 

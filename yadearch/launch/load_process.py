@@ -21,7 +21,7 @@ from yadearch.launch.process import check_yade_installed, exit_reason, run_child
 from yadearch.model.load_control import DisplacementControl
 from yadearch.results.load_path import load_path_file, read_load_path
 from yadearch.results.rundir import CASE_FILE
-from yadearch.solve.load_path import LoadPath
+from yadearch.solve.load_path_result import LoadPath
 
 LOAD_PATH_FILES = (".csv", ".log", ".json")  # the JSON last: it marks the result complete
 

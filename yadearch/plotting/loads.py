@@ -11,7 +11,8 @@ import numpy as np
 import pandas as pd
 
 from yadearch.plotting.house import CM, COLUMN_CM, ENGINE_NAMES, house_style, new_figure, save_figure
-from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath
+from yadearch.solve.load_path import BRANCH, DESCENDING
+from yadearch.solve.load_path_result import LoadPath
 
 HEIGHT_CM = 15.0
 INFLUENCE_HEIGHT_CM = 6.0

@@ -25,7 +25,8 @@ from yadearch.results.rundir import (
     write_tables,
 )
 from yadearch.results.summary import HingeRef, RunSummary
-from yadearch.solve.load_path import BRANCH, LoadPath
+from yadearch.solve.load_path import BRANCH
+from yadearch.solve.load_path_result import LoadPath
 from yadearch.solve.stages import Outcome
 
 LOAD_PATH_SUFFIX = "_load_path"

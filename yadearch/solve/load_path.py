@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -23,8 +23,9 @@ from yadearch.errors import CaseError, RunFailedError
 from yadearch.model import units
 from yadearch.model.loads import UNITS, VERTICAL, load_displacement
 from yadearch.solve.collapse_mode import FoldMode
-from yadearch.solve.descending import DESCEND_TO, DescentEnd, descend
+from yadearch.solve.descending import DESCEND_TO, descend
 from yadearch.solve.load_lp import LoadCapacity, load_analysis, residual_capacity
+from yadearch.solve.load_path_result import LoadPath
 from yadearch.solve.path import PathResult, PathSettings, first_snap, follow_path, path_settings
 from yadearch.solve.refined import SKIPPED, check_record, halved_loading, mode_record
 from yadearch.solve.rigid import LimitError
@@ -42,47 +43,6 @@ TOLERANCE_FRACTION = 1e-3  # ... the bracket that ends the search (0.1 % of the 
 REACH = 4.0  # ... and the path stops, the arch standing, at this many times the scale
 BRANCH, ASCENDING, DESCENDING = "branch", "ascending", "descending"  # the curve's column of branches: up
 # to the peak, past it
-
-
-@dataclass(frozen=True)
-class LoadPath:
-    """An engine's answer for a live load (the static engine's, or the DEM's: `engine`): the multiplier
-    at the end of the path (`capacity`, NaN unless it collapsed) and at its first loss of stability, in
-    `unit`; the outcome; the collapse's hinges and kind; the load-displacement curve; after a support
-    movement of `after_mm`."""
-
-    capacity: float
-    first_loss: float
-    outcome: str
-    unit: str
-    hinges: tuple[str, ...]
-    kind: str | None
-    curve: pd.DataFrame = field(repr=False)  # a notebook shows the answer; the curve stays an attribute
-    after_mm: float
-    reach: float  # the last stable multiplier of the path (the arch stands at least to it without collapse)
-    iterations: int  # the static engine's Newton iterations, or the DEM's time steps
-    # the rigid-block capacity of the same state (`solve.load_lp`; NaN where there is none); after a support
-    # movement, the load that first moves the settled rigid arch, whose open hinges are pins: not a capacity
-    rigid: float
-    rigid_hinges: tuple[str, ...]
-    rigid_note: str = ""  # why there is no rigid answer, where there is none
-    engine: str = "static"
-    descent_end: str = ""  # why the branch past the peak ends (`solve.descending.DescentEnd`); "": not traced
-    descent_hinges: tuple[str, ...] = ()  # the hinges turning where it ends
-    # the static engine's states in the path's order: its start (the self-weight's or the movement's end),
-    # each accepted state, the descending branch's, the collapse's; none from the DEM or read from disk
-    states: tuple[StaticState, ...] = field(default=(), repr=False, compare=False)
-    # the static path again with the increments halved (numerics.increments_check; None: not checked)
-    increments_check: dict | None = None
-
-    @property
-    def warnings(self) -> tuple[str, ...]:
-        """What a reader of the capacity must know: past the peak the load rose above it (the load control
-        stopped short of its peak, so the capacity is a lower bound, docs/loads.md)."""
-        highest = float(self.curve["multiplier"].max()) if "multiplier" in self.curve else math.nan
-        said = f"past the peak the load rose to {highest:.4g} {self.unit}, above the capacity {self.capacity:.4g} "
-        said += f"{self.unit}: the load control stopped short of its peak, so the capacity is in doubt (docs/loads.md)"
-        return (said,) if self.descent_end == DescentEnd.ROSE else ()
 
 
 def load_settings(scale: float, growth: float) -> PathSettings:

@@ -28,7 +28,7 @@ from yadearch.solve.static_state import StaticState
 from yadearch.solve.statics import StaticArch, static_arch
 
 if TYPE_CHECKING:
-    from yadearch.solve.load_path import LoadPath  # a live load's records only: its solver is not imported for a run
+    from yadearch.solve.load_path_result import LoadPath  # a live load's records only
 
 # numerics of the DEM that a static run does not use: time stepping, damping, holds, the support's speed
 DEM_ONLY_NUMERICS = (

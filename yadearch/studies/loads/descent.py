@@ -22,7 +22,8 @@ from yadearch.launch.load_process import run_load_process
 from yadearch.model.load_control import DisplacementControl
 from yadearch.results.load_path import stored_load_path
 from yadearch.solve.descending import DESCEND_TO
-from yadearch.solve.load_path import BRANCH, DESCENDING, LoadPath, static_load_path
+from yadearch.solve.load_path import BRANCH, DESCENDING, static_load_path
+from yadearch.solve.load_path_result import LoadPath
 from yadearch.studies.dem_settings import NO_DEM_SETTINGS, with_dem_settings
 from yadearch.studies.loads.engines import NUMERICS_VARIANTS, case_label, engine_cases, setting_value
 

@@ -17,7 +17,8 @@ from yadearch.errors import YadearchError
 from yadearch.launch.load_process import run_load_process
 from yadearch.model.loads import VERTICAL
 from yadearch.results.load_path import stored_load_path
-from yadearch.solve.load_path import LoadPath, static_load_path
+from yadearch.solve.load_path import static_load_path
+from yadearch.solve.load_path_result import LoadPath
 from yadearch.studies.dem_settings import NO_DEM_SETTINGS, with_dem_settings
 from yadearch.studies.loads.rigid import check_cases, paper_arch
 from yadearch.studies.loads.static import PAPER_LOADS, QUARTER_SPAN

@@ -26,7 +26,8 @@ from yadearch.results.load_path import stored_load_path
 from yadearch.results.reuse import holds_case
 from yadearch.results.rundir import read_summary
 from yadearch.solve.load_lp import load_analysis
-from yadearch.solve.load_path import LoadPath, static_load_path
+from yadearch.solve.load_path import static_load_path
+from yadearch.solve.load_path_result import LoadPath
 from yadearch.solve.static_path import StaticLoading
 from yadearch.static.simulate import simulate_static
 from yadearch.studies.dem_settings import NO_DEM_SETTINGS, with_dem_settings
